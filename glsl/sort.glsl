@@ -1,0 +1,10 @@
+// Radix sort parameters shared by sort_count and sort_scatter (mirrored to Rust by build.rs).
+const uint SORT_BLOCK = 2048u; // export
+// 8-bit digits: four passes sort 32-bit keys.
+const uint SORT_RADIX = 256u; // export
+// Workgroup sizes: the count kernel gives one thread per digit; the scatter keeps its per-subgroup
+// digit counters (WG / 8 subgroups x 256 digits x 4 bytes = 16 KiB) under lavapipe's 32 KiB.
+const uint SORT_COUNT_WG = 256u; // export
+const uint SORT_SCATTER_WG = 128u; // export
+// Smallest subgroup the scatter supports (lavapipe's is 8).
+const uint SORT_MIN_SUBGROUP = 8u; // export

@@ -1,0 +1,5 @@
+//! dreamscene: text to editable 3D Gaussian-splat scenes on any Vulkan GPU.
+#![deny(unsafe_op_in_unsafe_fn)]
+
+pub mod gpu;
+pub mod splat;
