@@ -60,10 +60,16 @@ fn main() {
         let text = fs::read_to_string(src).expect("readable GLSL source");
         for line in text.lines().filter(|l| l.trim_end().ends_with("// export")) {
             let decl = line.split("//").next().unwrap_or("").trim();
-            let rest = decl.strip_prefix("const uint ").unwrap_or_else(|| panic!("{}: export only `const uint NAME = N;`", src.display()));
+            let (ty, rest) = if let Some(r) = decl.strip_prefix("const uint ") {
+                ("u32", r)
+            } else if let Some(r) = decl.strip_prefix("const float ") {
+                ("f32", r)
+            } else {
+                panic!("{}: export only `const uint|float NAME = N;`", src.display())
+            };
             let (name, value) = rest.split_once('=').expect("`NAME = value`");
             let value = value.trim().trim_end_matches(';').trim().trim_end_matches('u');
-            writeln!(table, "pub const {}: u32 = {};", name.trim(), value).expect("write to string");
+            writeln!(table, "pub const {}: {ty} = {};", name.trim(), value).expect("write to string");
         }
     }
     for job in &jobs {

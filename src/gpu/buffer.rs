@@ -146,8 +146,15 @@ impl Buffer {
 
     /// Reads the first `len` elements of `T` back to the host.
     pub fn read<T: bytemuck::Pod>(&self, len: usize) -> Result<Vec<T>> {
-        let nbytes = len * std::mem::size_of::<T>();
-        if nbytes as u64 > self.size {
+        self.read_at(0, len)
+    }
+
+    /// Reads `len` elements of `T` starting at element `first`.
+    pub fn read_at<T: bytemuck::Pod>(&self, first: usize, len: usize) -> Result<Vec<T>> {
+        let elem = std::mem::size_of::<T>();
+        let start = (first * elem) as u64;
+        let nbytes = len * elem;
+        if start + nbytes as u64 > self.size {
             return Err(GpuError::Kernel {
                 kernel: "readback".into(),
                 msg: format!("{nbytes} bytes asked of buffer `{}` of {} bytes", self.name, self.size),
@@ -160,14 +167,18 @@ impl Buffer {
         if let Some(ptr) = self.mapped() {
             // SAFETY: the mapping covers `size` bytes; the device is idle for this buffer.
             unsafe {
-                std::ptr::copy_nonoverlapping(ptr.as_ptr() as *const u8, bytemuck::cast_slice_mut::<T, u8>(&mut out).as_mut_ptr(), nbytes)
+                std::ptr::copy_nonoverlapping(
+                    (ptr.as_ptr() as *const u8).add(start as usize),
+                    bytemuck::cast_slice_mut::<T, u8>(&mut out).as_mut_ptr(),
+                    nbytes,
+                )
             };
             return Ok(out);
         }
         let ctx = Context { shared: self.shared.clone() };
         let staging = Buffer::new(&ctx, &format!("{} (readback)", self.name), nbytes as u64, BufferUsage::Readback)?;
         let mut s = super::Stream::new(&ctx)?;
-        s.copy(self, &staging, nbytes as u64);
+        s.copy_region(self, start, &staging, 0, nbytes as u64);
         s.submit()?;
         staging.read(len)
     }

@@ -193,11 +193,16 @@ impl Stream {
 
     /// Copies `bytes` from the start of `src` to the start of `dst`.
     pub fn copy(&mut self, src: &Buffer, dst: &Buffer, bytes: u64) {
+        self.copy_region(src, 0, dst, 0, bytes)
+    }
+
+    /// Copies `bytes` from `src` at byte `src_offset` to `dst` at byte `dst_offset`.
+    pub fn copy_region(&mut self, src: &Buffer, src_offset: u64, dst: &Buffer, dst_offset: u64, bytes: u64) {
         if bytes == 0 {
             return;
         }
         self.labels.push("copy");
-        let region = [vk::BufferCopy { src_offset: 0, dst_offset: 0, size: bytes }];
+        let region = [vk::BufferCopy { src_offset, dst_offset, size: bytes }];
         // SAFETY: both buffers are live and at least `bytes` long (callers check).
         unsafe { self.shared.device.cmd_copy_buffer(self.cb, src.raw, dst.raw, &region) };
         self.barrier();

@@ -1,4 +1,9 @@
 //! Gaussian splats: the differentiable rasterizer's orchestration, its kernels' typed wrappers,
 //! the CPU reference, and file formats. Knows nothing of diffusion.
+pub mod cloud;
+pub mod raster;
+pub mod reference;
 pub mod scan;
 pub mod sort;
+
+pub use cloud::Gaussians;

@@ -1,0 +1,102 @@
+//! Pinhole cameras in the 3DGS/COLMAP convention (x right, y down, z forward; principal point at
+//! the image centre; pixel (i, j) centred at (i + 0.5, j + 0.5)) and the INRIA `cameras.json` format.
+//! Never imports `ash`.
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// One camera. `rotation` is camera-to-world (rows), `position` the camera centre in world space.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Camera {
+    pub id: u32,
+    pub img_name: String,
+    pub width: u32,
+    pub height: u32,
+    pub position: [f64; 3],
+    pub rotation: [[f64; 3]; 3],
+    pub fx: f64,
+    pub fy: f64,
+}
+
+/// Errors reading or validating cameras.
+#[derive(Debug, thiserror::Error)]
+pub enum CameraError {
+    #[error("{path}: {msg}")]
+    Invalid { path: String, msg: String },
+}
+
+impl Camera {
+    /// A camera at `eye` looking at `target` with world `up`, vertical field of view `fov_y` radians.
+    pub fn look_at(eye: [f64; 3], target: [f64; 3], up: [f64; 3], width: u32, height: u32, fov_y: f64) -> Camera {
+        let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let norm = |a: [f64; 3]| {
+            let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+            [a[0] / l, a[1] / l, a[2] / l]
+        };
+        let z = norm(sub(target, eye));
+        let mut x = cross(z, up);
+        if x.iter().map(|v| v * v).sum::<f64>() < 1e-12 {
+            x = cross(z, [1.0, 0.0, 0.0]);
+        }
+        let x = norm(x);
+        let y = cross(z, x);
+        let f = 0.5 * height as f64 / (0.5 * fov_y).tan();
+        Camera {
+            id: 0,
+            img_name: "view".into(),
+            width,
+            height,
+            position: eye,
+            // camera-to-world: its columns are the camera axes in world space.
+            rotation: [[x[0], y[0], z[0]], [x[1], y[1], z[1]], [x[2], y[2], z[2]]],
+            fx: f,
+            fy: f,
+        }
+    }
+
+    /// World-to-camera rotation (rows) and translation: `p_cam = R * p_world + t`.
+    pub fn world_to_camera(&self) -> ([[f64; 3]; 3], [f64; 3]) {
+        let r = &self.rotation;
+        let rt = [[r[0][0], r[1][0], r[2][0]], [r[0][1], r[1][1], r[2][1]], [r[0][2], r[1][2], r[2][2]]];
+        let p = self.position;
+        let t = [
+            -(rt[0][0] * p[0] + rt[0][1] * p[1] + rt[0][2] * p[2]),
+            -(rt[1][0] * p[0] + rt[1][1] * p[1] + rt[1][2] * p[2]),
+            -(rt[2][0] * p[0] + rt[2][1] * p[1] + rt[2][2] * p[2]),
+        ];
+        (rt, t)
+    }
+
+    fn validate(&self) -> Result<(), String> {
+        if self.width == 0 || self.height == 0 || self.width > 16384 || self.height > 16384 {
+            return Err(format!("camera {} has size {}x{} (1..16384 allowed)", self.id, self.width, self.height));
+        }
+        if !(self.fx.is_finite() && self.fy.is_finite() && self.fx > 0.0 && self.fy > 0.0) {
+            return Err(format!("camera {} has focal lengths {} {}", self.id, self.fx, self.fy));
+        }
+        if !self.position.iter().chain(self.rotation.iter().flatten()).all(|v| v.is_finite()) {
+            return Err(format!("camera {} has a non-finite pose", self.id));
+        }
+        Ok(())
+    }
+}
+
+/// Reads an INRIA `cameras.json`.
+pub fn read_cameras(path: &Path) -> Result<Vec<Camera>, CameraError> {
+    let err = |msg: String| CameraError::Invalid { path: path.display().to_string(), msg };
+    let text = std::fs::read_to_string(path).map_err(|e| err(e.to_string()))?;
+    let cams: Vec<Camera> = serde_json::from_str(&text).map_err(|e| err(format!("not a cameras.json list: {e}")))?;
+    if cams.is_empty() {
+        return Err(err("no cameras in the file".into()));
+    }
+    for c in &cams {
+        c.validate().map_err(err)?;
+    }
+    Ok(cams)
+}
+
+/// Writes an INRIA `cameras.json`.
+pub fn write_cameras(path: &Path, cams: &[Camera]) -> std::io::Result<()> {
+    let text = serde_json::to_string_pretty(cams).map_err(std::io::Error::other)?;
+    crate::util::write_atomic(path, text.as_bytes())
+}
