@@ -1,1 +1,227 @@
-fn main(){}
+//! The `dreamscene` command line: a thin layer over the library.
+use anyhow::{bail, Context as _, Result};
+use clap::{Parser, Subcommand};
+use dreamscene::camera::{read_cameras, write_cameras, Camera};
+use dreamscene::gpu::Context;
+use dreamscene::splat::ply::{read_ply, write_ply};
+use dreamscene::splat::raster::{GpuGaussians, Rasterizer, RenderOutput};
+use dreamscene::splat::Gaussians;
+use indicatif::{ProgressBar, ProgressStyle};
+use rand::SeedableRng;
+use std::path::{Path, PathBuf};
+
+/// Text to editable 3D Gaussian-splat scenes on any Vulkan GPU (DreamScene method).
+///
+/// The Vulkan device is chosen automatically (discrete GPU, then integrated, then a CPU device
+/// such as Mesa lavapipe); set DREAMSCENE_DEVICE to a name fragment or index to choose.
+#[derive(Parser)]
+#[command(name = "dreamscene", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a splat PLY from every camera of an INRIA cameras.json into <out>/<img_name>.png.
+    Render {
+        /// Splat PLY (INRIA 3DGS layout, SH degree 0 to 3).
+        #[arg(long)]
+        ply: PathBuf,
+        /// INRIA cameras.json.
+        #[arg(long)]
+        cameras: PathBuf,
+        /// Output directory (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+        /// Background colour as R,G,B in [0, 1].
+        #[arg(long, default_value = "0,0,0", value_parser = parse_rgb)]
+        background: [f32; 3],
+    },
+    /// Write a random demo scene (scene.ply, cameras.json on an orbit) and render it.
+    Demo {
+        /// Output directory.
+        #[arg(long, default_value = "out/demo")]
+        out: PathBuf,
+        /// Number of Gaussians.
+        #[arg(long, default_value_t = 20_000)]
+        gaussians: usize,
+        /// Seed of the random scene.
+        #[arg(long, default_value_t = 7)]
+        seed: u64,
+    },
+    /// Check the Vulkan device and what the engine needs of it.
+    Doctor,
+    /// Measure kernel throughput at fixed sizes on the selected device.
+    Bench {
+        /// Print one JSON object instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Gaussians in the forward benchmark.
+        #[arg(long, default_value_t = 100_000)]
+        gaussians: usize,
+        /// Image size of the forward benchmark.
+        #[arg(long, default_value_t = 512)]
+        size: u32,
+        /// Key/value pairs in the sort benchmark.
+        #[arg(long, default_value_t = 1 << 20)]
+        pairs: u32,
+        /// Timed runs per figure (median reported).
+        #[arg(long, default_value_t = 5)]
+        runs: usize,
+    },
+}
+
+fn parse_rgb(s: &str) -> Result<[f32; 3], String> {
+    let v: Vec<f32> = s.split(',').map(|x| x.trim().parse::<f32>()).collect::<Result<_, _>>().map_err(|e| format!("`{s}`: {e}"))?;
+    match v.as_slice() {
+        [r, g, b] if v.iter().all(|c| (0.0..=1.0).contains(c)) => Ok([*r, *g, *b]),
+        _ => Err(format!("`{s}`: expected three numbers in [0, 1] such as 1,1,1")),
+    }
+}
+
+fn main() {
+    let cli = Cli::parse();
+    if let Err(e) = run(cli) {
+        let chain: Vec<String> = e.chain().map(|c| c.to_string().replace('\n', " ")).collect();
+        eprintln!("error: {}", chain.join(": "));
+        std::process::exit(1);
+    }
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Render { ply, cameras, out, background } => {
+            let g = read_ply(&ply)?;
+            let cams = read_cameras(&cameras)?;
+            render_all(&g, &cams, &out, background)
+        }
+        Command::Demo { out, gaussians, seed } => demo(&out, gaussians, seed),
+        Command::Doctor => doctor(),
+        Command::Bench { json, gaussians, size, pairs, runs } => bench(json, gaussians, size, pairs, runs),
+    }
+}
+
+fn open_device() -> Result<Context> {
+    Context::new().context("opening the Vulkan device (run `dreamscene doctor`)")
+}
+
+fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 3]) -> Result<()> {
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let ctx = open_device()?;
+    let r = Rasterizer::new(&ctx)?;
+    let gg = GpuGaussians::upload(&ctx, g)?;
+    let bar = ProgressBar::new(cams.len() as u64)
+        .with_style(ProgressStyle::with_template("{bar:40} {pos}/{len} views {msg}").expect("valid template"));
+    for c in cams {
+        let img = r.forward(&ctx, &gg, c, background)?.read()?;
+        let name = if c.img_name.is_empty() { format!("{:05}", c.id) } else { c.img_name.clone() };
+        let path = out.join(format!("{name}.png"));
+        save_png(&img, &path)?;
+        bar.set_message(name);
+        bar.inc(1);
+    }
+    bar.finish();
+    Ok(())
+}
+
+fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
+    let mut buf = image::RgbImage::new(img.width, img.height);
+    for (i, p) in buf.pixels_mut().enumerate() {
+        let c = img.color[i];
+        *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
+    }
+    let tmp = path.with_extension("png.tmp");
+    buf.save_with_format(&tmp, image::ImageFormat::Png).with_context(|| format!("writing {}", path.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))?;
+    Ok(())
+}
+
+fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {
+    if n == 0 {
+        bail!("--gaussians must be at least 1");
+    }
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let g = Gaussians::random(&mut rng, n, [-1.0; 3], [1.0; 3], 0.03, 1);
+    let cams: Vec<Camera> = (0..8)
+        .map(|i| {
+            let a = i as f64 * std::f64::consts::TAU / 8.0;
+            let mut c = Camera::look_at([4.0 * a.cos(), 4.0 * a.sin(), 1.5], [0.0; 3], [0.0, 0.0, 1.0], 256, 256, 0.8);
+            c.id = i;
+            c.img_name = format!("view_{i:02}");
+            c
+        })
+        .collect();
+    write_ply(&out.join("scene.ply"), &g)?;
+    write_cameras(&out.join("cameras.json"), &cams)?;
+    render_all(&g, &cams, &out.join("renders"), [1.0, 1.0, 1.0])?;
+    println!("wrote {}/scene.ply, cameras.json and renders/*.png", out.display());
+    Ok(())
+}
+
+fn doctor() -> Result<()> {
+    let mut ok = true;
+    match Context::list_devices() {
+        Ok(devs) if !devs.is_empty() => {
+            for (i, (name, ty)) in devs.iter().enumerate() {
+                println!("vulkan device {i}: {name} ({ty})");
+            }
+        }
+        Ok(_) => {
+            println!("vulkan: no device (install mesa-vulkan-drivers for the lavapipe CPU device)");
+            ok = false;
+        }
+        Err(e) => {
+            println!("vulkan: {e}");
+            ok = false;
+        }
+    }
+    match Context::new() {
+        Ok(ctx) => {
+            let i = ctx.info();
+            println!("selected: {} ({}), Vulkan {}, driver {}", i.name, i.device_type, i.api_version, i.driver);
+            println!("  subgroup size {}, float atomics {}, storage buffer range {} MiB, shared memory {} KiB",
+                i.subgroup_size, if i.float_atomics { "native" } else { "compare-and-swap fallback" },
+                i.max_storage_buffer_range >> 20, i.max_shared_memory >> 10);
+            println!("  validation layer: {}", if i.validation { "on" } else { "off" });
+            match Rasterizer::new(&ctx) {
+                Ok(_) => println!("  kernels: all pipelines built"),
+                Err(e) => {
+                    println!("  kernels: {e}");
+                    ok = false;
+                }
+            }
+        }
+        Err(e) => {
+            println!("selected: none: {e}");
+            ok = false;
+        }
+    }
+    if !ok {
+        bail!("the engine cannot run here (see above)");
+    }
+    Ok(())
+}
+
+fn bench(json: bool, gaussians: usize, size: u32, pairs: u32, runs: usize) -> Result<()> {
+    use dreamscene::bench::*;
+    let ctx = open_device()?;
+    let sort = bench_sort(&ctx, pairs, runs)?;
+    let forward = bench_forward(&ctx, gaussians, size, size, runs)?;
+    let cpu_forward = bench_cpu_forward(gaussians, size, size, forward.intersections, runs.min(3));
+    let report = BenchReport { device: ctx.info().name.clone(), sort, forward, cpu_forward };
+    if json {
+        println!("{}", serde_json::to_string(&report)?);
+    } else {
+        println!("device: {}", report.device);
+        println!("sort:        {:>9} pairs  {:>9.2} ms  {:>8.2} M pairs/s", report.sort.pairs, report.sort.ms, report.sort.pairs_per_s / 1e6);
+        for (name, f) in [("forward", &report.forward), ("cpu forward", &report.cpu_forward)] {
+            println!(
+                "{name:<12} {:>9} gaussians {}x{}  {} intersections  {:>9.2} ms  {:>8.2} M gaussian-pixels/s",
+                f.gaussians, f.width, f.height, f.intersections, f.ms, f.gaussian_pixels_per_s / 1e6
+            );
+        }
+    }
+    Ok(())
+}

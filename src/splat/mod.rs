@@ -1,6 +1,7 @@
 //! Gaussian splats: the differentiable rasterizer's orchestration, its kernels' typed wrappers,
 //! the CPU reference, and file formats. Knows nothing of diffusion.
 pub mod cloud;
+pub mod ply;
 pub mod raster;
 pub mod reference;
 pub mod scan;

@@ -1,0 +1,91 @@
+//! PLY and cameras.json round trips and clear errors on malformed files.
+mod common;
+use dreamscene::camera::{read_cameras, write_cameras, Camera};
+use dreamscene::splat::ply::{read_ply, write_ply};
+use dreamscene::splat::Gaussians;
+
+#[test]
+fn ply_round_trips_every_sh_degree() {
+    let dir = tempdir("ply");
+    let mut rng = common::rng(20);
+    for deg in 0..=3 {
+        let g = Gaussians::random(&mut rng, 37, [-1.0; 3], [1.0; 3], 0.1, deg);
+        let p = dir.join(format!("d{deg}.ply"));
+        write_ply(&p, &g).unwrap();
+        assert_eq!(read_ply(&p).unwrap(), g, "degree {deg}");
+    }
+}
+
+#[test]
+fn ply_f_rest_is_channel_major() {
+    let dir = tempdir("plyorder");
+    let mut g = Gaussians { sh_degree: 1, ..Default::default() };
+    g.means.push([0.0; 3]);
+    g.scales.push([0.0; 3]);
+    g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+    g.opacities.push(0.0);
+    // [coeff][rgb]: value = 10 * coeff + channel
+    for c in 0..4 {
+        for ch in 0..3 {
+            g.sh.push((10 * c + ch) as f32);
+        }
+    }
+    let p = dir.join("o.ply");
+    write_ply(&p, &g).unwrap();
+    let bytes = std::fs::read(&p).unwrap();
+    let body = &bytes[bytes.windows(11).position(|w| w == b"end_header\n").unwrap() + 11..];
+    let f = |i: usize| f32::from_le_bytes(body[4 * i..4 * i + 4].try_into().unwrap());
+    // x y z nx ny nz f_dc_0..2 then f_rest_0.. = red coefficients 1..3, then green, then blue.
+    assert_eq!([f(6), f(7), f(8)], [0.0, 1.0, 2.0]);
+    assert_eq!((9..18).map(f).collect::<Vec<_>>(), vec![10.0, 20.0, 30.0, 11.0, 21.0, 31.0, 12.0, 22.0, 32.0]);
+}
+
+#[test]
+fn malformed_ply_gets_a_one_line_error_naming_the_file() {
+    let dir = tempdir("plybad");
+    let mut rng = common::rng(21);
+    let g = Gaussians::random(&mut rng, 10, [-1.0; 3], [1.0; 3], 0.1, 0);
+    let good = dir.join("good.ply");
+    write_ply(&good, &g).unwrap();
+    let bytes = std::fs::read(&good).unwrap();
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        ("truncated.ply", bytes[..bytes.len() - 10].to_vec(), "truncated"),
+        ("notply.ply", b"hello\n".to_vec(), "not a PLY"),
+        ("ascii.ply", String::from_utf8_lossy(&bytes[..40]).replace("binary_little_endian", "ascii").into_bytes(), "ascii"),
+        ("noheader.ply", b"ply\nformat binary_little_endian 1.0\n".to_vec(), "end_header"),
+        (
+            "noopacity.ply",
+            b"ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n".to_vec(),
+            "missing property",
+        ),
+    ];
+    for (name, data, want) in cases {
+        let p = dir.join(name);
+        std::fs::write(&p, data).unwrap();
+        let e = read_ply(&p).unwrap_err().to_string();
+        assert!(e.contains(name) && e.contains(want), "{name}: `{e}`");
+        assert!(!e.contains('\n'), "{name}: error spans lines: `{e}`");
+    }
+}
+
+#[test]
+fn cameras_json_round_trips_and_rejects_bad_files() {
+    let dir = tempdir("cams");
+    let mut c = Camera::look_at([1.0, 2.0, 3.0], [0.0; 3], [0.0, 0.0, 1.0], 64, 48, 0.8);
+    c.img_name = "a".into();
+    let p = dir.join("cameras.json");
+    write_cameras(&p, &[c.clone()]).unwrap();
+    assert_eq!(read_cameras(&p).unwrap(), vec![c]);
+    for (name, text) in [("empty.json", "[]"), ("junk.json", "{not json"), ("zero.json", r#"[{"id":0,"img_name":"a","width":0,"height":4,"position":[0,0,0],"rotation":[[1,0,0],[0,1,0],[0,0,1]],"fx":1,"fy":1}]"#)] {
+        let q = dir.join(name);
+        std::fs::write(&q, text).unwrap();
+        let e = read_cameras(&q).unwrap_err().to_string();
+        assert!(e.contains(name), "{name}: `{e}`");
+    }
+}
+
+fn tempdir(tag: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("dreamscene-test-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
