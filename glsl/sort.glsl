@@ -1,5 +1,5 @@
 // Radix sort parameters shared by sort_count and sort_scatter (mirrored to Rust by build.rs).
-const uint SORT_BLOCK = 2048u; // export
+const uint SORT_BLOCK = 4096u; // export
 // 8-bit digits: four passes sort 32-bit keys.
 const uint SORT_RADIX = 256u; // export
 // Workgroup sizes: the count kernel gives one thread per digit; the scatter keeps its per-subgroup

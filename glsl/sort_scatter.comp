@@ -4,6 +4,7 @@
 // ranks its keys round by round: lanes with the same digit are found with eight ballots (one per
 // digit bit), so the rank needs no atomics and works for any subgroup size from 8 to 128.
 // Three workgroup barriers per block, which matters on lavapipe where a barrier costs ~1 us.
+#extension GL_EXT_control_flow_attributes : require
 #include "common.glsl"
 #include "sort.glsl"
 
@@ -36,27 +37,29 @@ void main() {
     uint seg = block * SORT_BLOCK + sg * seg_len;
     uint lkey[KPT];
     uint lrank[KPT];
-    for (uint r = 0u; r < KPT; r++) {
+    [[unroll]] for (uint r = 0u; r < KPT; r++) {
         uint idx = seg + r * gl_SubgroupSize + lane;
         bool valid = idx < pc.n;
         uint key = valid ? keys_in.data[idx] : 0u;
         uint digit = (key >> pc.shift) & 255u;
         uvec4 peers = subgroupBallot(valid);
-        for (uint b = 0u; b < 8u; b++) {
+        [[unroll]] for (uint b = 0u; b < 8u; b++) {
             bool bit = ((digit >> b) & 1u) != 0u;
             uvec4 bal = subgroupBallot(bit);
             peers &= bit ? bal : ~bal;
         }
         uint before = subgroupBallotExclusiveBitCount(peers);
         uint count = subgroupBallotBitCount(peers);
-        bool leader = valid && subgroupBallotFindLSB(peers) == lane;
+        uint leader_lane = valid ? subgroupBallotFindLSB(peers) : lane;
+        // Only the digit's leader lane touches the subgroup's counter, and it hands the running
+        // count to its peers by shuffle: no execution barrier inside the loop (on lavapipe a
+        // subgroup barrier costs as much as a workgroup one). The next round's ballots
+        // reconverge the subgroup; the memory barrier makes the write visible to the next leader.
         uint slot = sg * SORT_RADIX + digit;
-        uint run = valid ? s_cnt[slot] : 0u;
+        uint run = 0u;
+        if (valid && leader_lane == lane) { run = s_cnt[slot]; s_cnt[slot] = run + count; }
+        run = subgroupShuffle(run, leader_lane);
         subgroupMemoryBarrierShared();
-        subgroupBarrier();
-        if (leader) s_cnt[slot] = run + count;
-        subgroupMemoryBarrierShared();
-        subgroupBarrier();
         lkey[r] = key;
         lrank[r] = run + before;
     }
@@ -66,7 +69,7 @@ void main() {
         for (uint s = 0u; s < nsg; s++) { uint c = s_cnt[s * SORT_RADIX + d]; s_cnt[s * SORT_RADIX + d] = run; run += c; }
     }
     barrier();
-    for (uint r = 0u; r < KPT; r++) {
+    [[unroll]] for (uint r = 0u; r < KPT; r++) {
         uint idx = seg + r * gl_SubgroupSize + lane;
         if (idx < pc.n) {
             uint digit = (lkey[r] >> pc.shift) & 255u;
