@@ -7,7 +7,9 @@
 //! bytes and the push-constant size read back by reflection, so the Rust structs can be checked
 //! against the GLSL at compile time.
 use std::{
-    env, fmt::Write as _, fs,
+    env,
+    fmt::Write as _,
+    fs,
     path::{Path, PathBuf},
     process::Command,
 };
@@ -27,7 +29,12 @@ fn main() {
     let mut sources: Vec<PathBuf> = fs::read_dir("glsl")
         .expect("the glsl/ directory holds the kernels")
         .map(|e| e.expect("readable glsl/ entry").path())
-        .filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("comp" | "glsl")))
+        .filter(|p| {
+            matches!(
+                p.extension().and_then(|e| e.to_str()),
+                Some("comp" | "glsl")
+            )
+        })
         .collect();
     sources.sort();
     for s in &sources {
@@ -36,18 +43,39 @@ fn main() {
     }
 
     let mut jobs = Vec::new();
-    for src in sources.iter().filter(|p| p.extension().is_some_and(|e| e == "comp")) {
-        let stem = src.file_stem().and_then(|s| s.to_str()).expect("utf-8 kernel name").to_string();
+    for src in sources
+        .iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "comp"))
+    {
+        let stem = src
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .expect("utf-8 kernel name")
+            .to_string();
         let text = fs::read_to_string(src).expect("readable kernel source");
-        jobs.push(Job { name: stem.clone(), src: src.clone(), defines: vec![] });
+        jobs.push(Job {
+            name: stem.clone(),
+            src: src.clone(),
+            defines: vec![],
+        });
         if text.contains("FLOAT_ATOMIC_ADD") {
-            jobs.push(Job { name: format!("{stem}_cas"), src: src.clone(), defines: vec!["CAS_ATOMICS"] });
+            jobs.push(Job {
+                name: format!("{stem}_cas"),
+                src: src.clone(),
+                defines: vec!["CAS_ATOMICS"],
+            });
         }
     }
 
     let results: Vec<Result<(), String>> = std::thread::scope(|s| {
-        let handles: Vec<_> = jobs.iter().map(|job| s.spawn(|| compile(&validator, job, &out))).collect();
-        handles.into_iter().map(|h| h.join().expect("compile thread")).collect()
+        let handles: Vec<_> = jobs
+            .iter()
+            .map(|job| s.spawn(|| compile(&validator, job, &out)))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("compile thread"))
+            .collect()
     });
     let errors: Vec<String> = results.into_iter().filter_map(Result::err).collect();
     if !errors.is_empty() {
@@ -65,11 +93,19 @@ fn main() {
             } else if let Some(r) = decl.strip_prefix("const float ") {
                 ("f32", r)
             } else {
-                panic!("{}: export only `const uint|float NAME = N;`", src.display())
+                panic!(
+                    "{}: export only `const uint|float NAME = N;`",
+                    src.display()
+                )
             };
             let (name, value) = rest.split_once('=').expect("`NAME = value`");
-            let value = value.trim().trim_end_matches(';').trim().trim_end_matches('u');
-            writeln!(table, "pub const {}: {ty} = {};", name.trim(), value).expect("write to string");
+            let value = value
+                .trim()
+                .trim_end_matches(';')
+                .trim()
+                .trim_end_matches('u');
+            writeln!(table, "pub const {}: {ty} = {};", name.trim(), value)
+                .expect("write to string");
         }
     }
     for job in &jobs {
@@ -95,7 +131,8 @@ fn main() {
 fn compile(validator: &str, job: &Job, out: &Path) -> Result<(), String> {
     let dst = out.join(format!("{}.spv", job.name));
     let mut cmd = Command::new(validator);
-    cmd.args(["--target-env", "vulkan1.2", "-S", "comp", "-Iglsl", "-o"]).arg(&dst);
+    cmd.args(["--target-env", "vulkan1.2", "-S", "comp", "-Iglsl", "-o"])
+        .arg(&dst);
     for d in &job.defines {
         cmd.arg(format!("-D{d}"));
     }

@@ -4,7 +4,10 @@ use dreamscene::splat::sort::{RadixSort, SortScratch};
 use rand::{Rng, SeedableRng};
 
 fn main() -> anyhow::Result<()> {
-    let n: u32 = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(1 << 20);
+    let n: u32 = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1 << 20);
     let ctx = Context::new()?;
     let sort = RadixSort::new(&ctx)?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);

@@ -63,7 +63,14 @@ pub fn bench_scene(n: usize, width: u32, height: u32) -> (Gaussians, Camera) {
     // Scale shrinks with density so that coverage stays comparable across sizes.
     let scale = 0.02 * (10_000.0 / n.max(1) as f32).sqrt().clamp(0.1, 3.0);
     let g = Gaussians::random(&mut rng, n, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], scale, 0);
-    let cam = Camera::look_at([0.0; 3], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0], width, height, 60f64.to_radians());
+    let cam = Camera::look_at(
+        [0.0; 3],
+        [0.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0],
+        width,
+        height,
+        60f64.to_radians(),
+    );
     (g, cam)
 }
 
@@ -92,11 +99,21 @@ pub fn bench_sort(ctx: &Context, pairs: u32, runs: usize) -> Result<SortFigures>
         sort.record(&mut s, &k, &v, pairs, 32, &scratch)?;
         s.submit().map(|_| ())
     })? - copy_ms;
-    Ok(SortFigures { pairs, ms, pairs_per_s: pairs as f64 / (ms * 1e-3) })
+    Ok(SortFigures {
+        pairs,
+        ms,
+        pairs_per_s: pairs as f64 / (ms * 1e-3),
+    })
 }
 
 /// Full GPU forward pass on the bench scene.
-pub fn bench_forward(ctx: &Context, n: usize, width: u32, height: u32, runs: usize) -> Result<RasterFigures> {
+pub fn bench_forward(
+    ctx: &Context,
+    n: usize,
+    width: u32,
+    height: u32,
+    runs: usize,
+) -> Result<RasterFigures> {
     let (g, cam) = bench_scene(n, width, height);
     let r = Rasterizer::new(ctx)?;
     let gg = GpuGaussians::upload(ctx, &g)?;
@@ -117,7 +134,13 @@ pub fn bench_forward(ctx: &Context, n: usize, width: u32, height: u32, runs: usi
 }
 
 /// The multithreaded CPU reference on the same scene, with the GPU's intersection count.
-pub fn bench_cpu_forward(n: usize, width: u32, height: u32, intersections: u32, runs: usize) -> RasterFigures {
+pub fn bench_cpu_forward(
+    n: usize,
+    width: u32,
+    height: u32,
+    intersections: u32,
+    runs: usize,
+) -> RasterFigures {
     let (g, cam) = bench_scene(n, width, height);
     let ms = time(runs, || {
         std::hint::black_box(reference::render(&g, &cam, [0.0; 3]));

@@ -73,17 +73,26 @@ enum Command {
 }
 
 fn parse_rgb(s: &str) -> Result<[f32; 3], String> {
-    let v: Vec<f32> = s.split(',').map(|x| x.trim().parse::<f32>()).collect::<Result<_, _>>().map_err(|e| format!("`{s}`: {e}"))?;
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f32>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("`{s}`: {e}"))?;
     match v.as_slice() {
         [r, g, b] if v.iter().all(|c| (0.0..=1.0).contains(c)) => Ok([*r, *g, *b]),
-        _ => Err(format!("`{s}`: expected three numbers in [0, 1] such as 1,1,1")),
+        _ => Err(format!(
+            "`{s}`: expected three numbers in [0, 1] such as 1,1,1"
+        )),
     }
 }
 
 fn main() {
     let cli = Cli::parse();
     if let Err(e) = run(cli) {
-        let chain: Vec<String> = e.chain().map(|c| c.to_string().replace('\n', " ")).collect();
+        let chain: Vec<String> = e
+            .chain()
+            .map(|c| c.to_string().replace('\n', " "))
+            .collect();
         eprintln!("error: {}", chain.join(": "));
         std::process::exit(1);
     }
@@ -91,14 +100,29 @@ fn main() {
 
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Command::Render { ply, cameras, out, background } => {
+        Command::Render {
+            ply,
+            cameras,
+            out,
+            background,
+        } => {
             let g = read_ply(&ply)?;
             let cams = read_cameras(&cameras)?;
             render_all(&g, &cams, &out, background)
         }
-        Command::Demo { out, gaussians, seed } => demo(&out, gaussians, seed),
+        Command::Demo {
+            out,
+            gaussians,
+            seed,
+        } => demo(&out, gaussians, seed),
         Command::Doctor => doctor(),
-        Command::Bench { json, gaussians, size, pairs, runs } => bench(json, gaussians, size, pairs, runs),
+        Command::Bench {
+            json,
+            gaussians,
+            size,
+            pairs,
+            runs,
+        } => bench(json, gaussians, size, pairs, runs),
     }
 }
 
@@ -111,11 +135,16 @@ fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 3]) 
     let ctx = open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
-    let bar = ProgressBar::new(cams.len() as u64)
-        .with_style(ProgressStyle::with_template("{bar:40} {pos}/{len} views {msg}").expect("valid template"));
+    let bar = ProgressBar::new(cams.len() as u64).with_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} views {msg}").expect("valid template"),
+    );
     for c in cams {
         let img = r.forward(&ctx, &gg, c, background)?.read()?;
-        let name = if c.img_name.is_empty() { format!("{:05}", c.id) } else { c.img_name.clone() };
+        let name = if c.img_name.is_empty() {
+            format!("{:05}", c.id)
+        } else {
+            c.img_name.clone()
+        };
         let path = out.join(format!("{name}.png"));
         save_png(&img, &path)?;
         bar.set_message(name);
@@ -132,7 +161,8 @@ fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
         *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
     }
     let tmp = path.with_extension("png.tmp");
-    buf.save_with_format(&tmp, image::ImageFormat::Png).with_context(|| format!("writing {}", path.display()))?;
+    buf.save_with_format(&tmp, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))?;
     std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))?;
     Ok(())
 }
@@ -147,7 +177,14 @@ fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {
     let cams: Vec<Camera> = (0..8)
         .map(|i| {
             let a = i as f64 * std::f64::consts::TAU / 8.0;
-            let mut c = Camera::look_at([4.0 * a.cos(), 4.0 * a.sin(), 1.5], [0.0; 3], [0.0, 0.0, 1.0], 256, 256, 0.8);
+            let mut c = Camera::look_at(
+                [4.0 * a.cos(), 4.0 * a.sin(), 1.5],
+                [0.0; 3],
+                [0.0, 0.0, 1.0],
+                256,
+                256,
+                0.8,
+            );
             c.id = i;
             c.img_name = format!("view_{i:02}");
             c
@@ -156,7 +193,10 @@ fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {
     write_ply(&out.join("scene.ply"), &g)?;
     write_cameras(&out.join("cameras.json"), &cams)?;
     render_all(&g, &cams, &out.join("renders"), [1.0, 1.0, 1.0])?;
-    println!("wrote {}/scene.ply, cameras.json and renders/*.png", out.display());
+    println!(
+        "wrote {}/scene.ply, cameras.json and renders/*.png",
+        out.display()
+    );
     Ok(())
 }
 
@@ -180,11 +220,17 @@ fn doctor() -> Result<()> {
     match Context::new() {
         Ok(ctx) => {
             let i = ctx.info();
-            println!("selected: {} ({}), Vulkan {}, driver {}", i.name, i.device_type, i.api_version, i.driver);
+            println!(
+                "selected: {} ({}), Vulkan {}, driver {}",
+                i.name, i.device_type, i.api_version, i.driver
+            );
             println!("  subgroup size {}, float atomics {}, storage buffer range {} MiB, shared memory {} KiB",
                 i.subgroup_size, if i.float_atomics { "native" } else { "compare-and-swap fallback" },
                 i.max_storage_buffer_range >> 20, i.max_shared_memory >> 10);
-            println!("  validation layer: {}", if i.validation { "on" } else { "off" });
+            println!(
+                "  validation layer: {}",
+                if i.validation { "on" } else { "off" }
+            );
             match Rasterizer::new(&ctx) {
                 Ok(_) => println!("  kernels: all pipelines built"),
                 Err(e) => {
@@ -210,13 +256,26 @@ fn bench(json: bool, gaussians: usize, size: u32, pairs: u32, runs: usize) -> Re
     let sort = bench_sort(&ctx, pairs, runs)?;
     let forward = bench_forward(&ctx, gaussians, size, size, runs)?;
     let cpu_forward = bench_cpu_forward(gaussians, size, size, forward.intersections, runs.min(3));
-    let report = BenchReport { device: ctx.info().name.clone(), sort, forward, cpu_forward };
+    let report = BenchReport {
+        device: ctx.info().name.clone(),
+        sort,
+        forward,
+        cpu_forward,
+    };
     if json {
         println!("{}", serde_json::to_string(&report)?);
     } else {
         println!("device: {}", report.device);
-        println!("sort:        {:>9} pairs  {:>9.2} ms  {:>8.2} M pairs/s", report.sort.pairs, report.sort.ms, report.sort.pairs_per_s / 1e6);
-        for (name, f) in [("forward", &report.forward), ("cpu forward", &report.cpu_forward)] {
+        println!(
+            "sort:        {:>9} pairs  {:>9.2} ms  {:>8.2} M pairs/s",
+            report.sort.pairs,
+            report.sort.ms,
+            report.sort.pairs_per_s / 1e6
+        );
+        for (name, f) in [
+            ("forward", &report.forward),
+            ("cpu forward", &report.cpu_forward),
+        ] {
             println!(
                 "{name:<12} {:>9} gaussians {}x{}  {} intersections  {:>9.2} ms  {:>8.2} M gaussian-pixels/s",
                 f.gaussians, f.width, f.height, f.intersections, f.ms, f.gaussian_pixels_per_s / 1e6

@@ -19,7 +19,10 @@ fn ply_round_trips_every_sh_degree() {
 #[test]
 fn ply_f_rest_is_channel_major() {
     let dir = tempdir("plyorder");
-    let mut g = Gaussians { sh_degree: 1, ..Default::default() };
+    let mut g = Gaussians {
+        sh_degree: 1,
+        ..Default::default()
+    };
     g.means.push([0.0; 3]);
     g.scales.push([0.0; 3]);
     g.rotations.push([1.0, 0.0, 0.0, 0.0]);
@@ -33,11 +36,18 @@ fn ply_f_rest_is_channel_major() {
     let p = dir.join("o.ply");
     write_ply(&p, &g).unwrap();
     let bytes = std::fs::read(&p).unwrap();
-    let body = &bytes[bytes.windows(11).position(|w| w == b"end_header\n").unwrap() + 11..];
+    let body = &bytes[bytes
+        .windows(11)
+        .position(|w| w == b"end_header\n")
+        .unwrap()
+        + 11..];
     let f = |i: usize| f32::from_le_bytes(body[4 * i..4 * i + 4].try_into().unwrap());
     // x y z nx ny nz f_dc_0..2 then f_rest_0.. = red coefficients 1..3, then green, then blue.
     assert_eq!([f(6), f(7), f(8)], [0.0, 1.0, 2.0]);
-    assert_eq!((9..18).map(f).collect::<Vec<_>>(), vec![10.0, 20.0, 30.0, 11.0, 21.0, 31.0, 12.0, 22.0, 32.0]);
+    assert_eq!(
+        (9..18).map(f).collect::<Vec<_>>(),
+        vec![10.0, 20.0, 30.0, 11.0, 21.0, 31.0, 12.0, 22.0, 32.0]
+    );
 }
 
 #[test]
@@ -76,7 +86,14 @@ fn cameras_json_round_trips_and_rejects_bad_files() {
     let p = dir.join("cameras.json");
     write_cameras(&p, &[c.clone()]).unwrap();
     assert_eq!(read_cameras(&p).unwrap(), vec![c]);
-    for (name, text) in [("empty.json", "[]"), ("junk.json", "{not json"), ("zero.json", r#"[{"id":0,"img_name":"a","width":0,"height":4,"position":[0,0,0],"rotation":[[1,0,0],[0,1,0],[0,0,1]],"fx":1,"fy":1}]"#)] {
+    for (name, text) in [
+        ("empty.json", "[]"),
+        ("junk.json", "{not json"),
+        (
+            "zero.json",
+            r#"[{"id":0,"img_name":"a","width":0,"height":4,"position":[0,0,0],"rotation":[[1,0,0],[0,1,0],[0,0,1]],"fx":1,"fy":1}]"#,
+        ),
+    ] {
         let q = dir.join(name);
         std::fs::write(&q, text).unwrap();
         let e = read_cameras(&q).unwrap_err().to_string();

@@ -6,7 +6,14 @@ use dreamscene::splat::reference::{self, RefImage};
 use dreamscene::splat::Gaussians;
 
 fn front_camera(w: u32, h: u32) -> Camera {
-    Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0], w, h, 60f64.to_radians())
+    Camera::look_at(
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0],
+        w,
+        h,
+        60f64.to_radians(),
+    )
 }
 
 /// Largest absolute differences (colour, transmittance, depth / max depth) between GPU and CPU.
@@ -21,18 +28,31 @@ fn compare(gpu: &RenderOutput, cpu: &RefImage) -> (f64, f64, f64) {
         }
         dt = dt.max((gpu.transmittance[i] as f64 - cpu.transmittance[i]).abs());
         dd = dd.max((gpu.depth[i] as f64 - cpu.depth[i]).abs() / 4.0);
-        assert!(gpu.color[i].iter().all(|v| v.is_finite()), "non-finite pixel {i}");
+        assert!(
+            gpu.color[i].iter().all(|v| v.is_finite()),
+            "non-finite pixel {i}"
+        );
     }
     (dc, dt, dd)
 }
 
-fn check_scene(r: &Rasterizer, ctx: &dreamscene::gpu::Context, g: &Gaussians, cam: &Camera, bg: [f32; 3], what: &str) -> RenderOutput {
+fn check_scene(
+    r: &Rasterizer,
+    ctx: &dreamscene::gpu::Context,
+    g: &Gaussians,
+    cam: &Camera,
+    bg: [f32; 3],
+    what: &str,
+) -> RenderOutput {
     let gpu = r.render(ctx, g, cam, bg).unwrap();
     let cpu = reference::render(g, cam, bg.map(f64::from));
     let (dc, dt, dd) = compare(&gpu, &cpu);
     // f32 against f64: measured ~5e-7 on lavapipe; 2e-5 leaves room for other drivers.
     eprintln!("{what}: max diff colour {dc:e}, T {dt:e}, depth {dd:e}");
-    assert!(dc < 2e-5 && dt < 2e-5 && dd < 2e-5, "{what}: max |diff| colour {dc:e}, T {dt:e}, depth {dd:e}");
+    assert!(
+        dc < 2e-5 && dt < 2e-5 && dd < 2e-5,
+        "{what}: max |diff| colour {dc:e}, T {dt:e}, depth {dd:e}"
+    );
     gpu
 }
 
@@ -41,12 +61,27 @@ fn forward_matches_reference_on_random_scenes_all_sh_degrees() {
     let ctx = common::gpu();
     let r = Rasterizer::new(&ctx).unwrap();
     let mut rng = common::rng(10);
-    for (deg, (w, h), n) in [(0u32, (64u32, 48u32), 300usize), (1, (77, 50), 500), (2, (128, 96), 800), (3, (100, 131), 500)] {
+    for (deg, (w, h), n) in [
+        (0u32, (64u32, 48u32), 300usize),
+        (1, (77, 50), 500),
+        (2, (128, 96), 800),
+        (3, (100, 131), 500),
+    ] {
         let g = Gaussians::random(&mut rng, n, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, deg);
-        let out = check_scene(&r, &ctx, &g, &front_camera(w, h), [0.2, 0.5, 0.9], &format!("degree {deg}, {w}x{h}"));
+        let out = check_scene(
+            &r,
+            &ctx,
+            &g,
+            &front_camera(w, h),
+            [0.2, 0.5, 0.9],
+            &format!("degree {deg}, {w}x{h}"),
+        );
         // The scene is not trivially empty: most pixels are covered.
         let covered = out.transmittance.iter().filter(|&&t| t < 0.5).count();
-        assert!(covered > out.transmittance.len() / 4, "degree {deg}: only {covered} covered pixels");
+        assert!(
+            covered > out.transmittance.len() / 4,
+            "degree {deg}: only {covered} covered pixels"
+        );
     }
     ctx.check_validation().unwrap();
 }
@@ -58,10 +93,17 @@ fn empty_offscreen_and_behind_scenes_render_background() {
     let mut rng = common::rng(11);
     let cam = front_camera(40, 33);
     let bg = [0.25f32, 0.5, 0.75];
-    let empty = Gaussians { sh_degree: 0, ..Default::default() };
+    let empty = Gaussians {
+        sh_degree: 0,
+        ..Default::default()
+    };
     let behind = Gaussians::random(&mut rng, 200, [-1.0, -1.0, -4.0], [1.0, 1.0, 0.1], 0.1, 1);
     let offscreen = Gaussians::random(&mut rng, 200, [30.0, 30.0, 2.0], [40.0, 40.0, 3.0], 0.1, 0);
-    for (g, what) in [(empty, "empty"), (behind, "behind the near plane"), (offscreen, "off-screen")] {
+    for (g, what) in [
+        (empty, "empty"),
+        (behind, "behind the near plane"),
+        (offscreen, "off-screen"),
+    ] {
         let out = r.render(&ctx, &g, &cam, bg).unwrap();
         for (i, c) in out.color.iter().enumerate() {
             assert_eq!(*c, bg, "{what}: pixel {i}");
@@ -83,7 +125,14 @@ fn huge_splats_and_mixed_sizes_match_reference() {
     g.rotations.extend(big.rotations);
     g.opacities.extend(big.opacities);
     g.sh.extend(big.sh);
-    check_scene(&r, &ctx, &g, &front_camera(90, 70), [0.0, 0.0, 0.0], "huge splats");
+    check_scene(
+        &r,
+        &ctx,
+        &g,
+        &front_camera(90, 70),
+        [0.0, 0.0, 0.0],
+        "huge splats",
+    );
     ctx.check_validation().unwrap();
 }
 
@@ -129,7 +178,10 @@ fn tile_with_100k_splats_renders_past_the_loop_limit() {
     let mut rng = common::rng(14);
     let cam = front_camera(16, 16);
     let f = cam.fx as f32;
-    let mut g = Gaussians { sh_degree: 0, ..Default::default() };
+    let mut g = Gaussians {
+        sh_degree: 0,
+        ..Default::default()
+    };
     use rand::Rng;
     for _ in 0..100_000 {
         let z = rng.gen_range(2.0f32..2.5);
@@ -141,7 +193,8 @@ fn tile_with_100k_splats_renders_past_the_loop_limit() {
         g.sh.extend([rng.gen_range(-1.0f32..1.0), 0.5, -0.5]);
     }
     for k in 0..4 {
-        g.means.push([0.05 * k as f32, -0.05 * k as f32, 3.5 + 0.1 * k as f32]);
+        g.means
+            .push([0.05 * k as f32, -0.05 * k as f32, 3.5 + 0.1 * k as f32]);
         g.scales.push([(3.0f32).ln(); 3]);
         g.rotations.push([1.0, 0.0, 0.0, 0.0]);
         g.opacities.push(-1.0);
@@ -150,11 +203,23 @@ fn tile_with_100k_splats_renders_past_the_loop_limit() {
     let gpu = r.render(&ctx, &g, &cam, [0.0, 0.0, 0.0]).unwrap();
     let gg = dreamscene::splat::raster::GpuGaussians::upload(&ctx, &g).unwrap();
     let frame = r.forward(&ctx, &gg, &cam, [0.0; 3]).unwrap();
-    assert!(frame.max_tile_len > 100_000, "the tile holds {} splats", frame.max_tile_len);
+    assert!(
+        frame.max_tile_len > 100_000,
+        "the tile holds {} splats",
+        frame.max_tile_len
+    );
     let cpu = reference::render(&g, &cam, [0.0; 3]);
     let far = 15 * 16 + 15;
-    assert!(cpu.transmittance[far] < 0.9, "the far pixel is covered in the reference: T {} {:?}", cpu.transmittance[far], &cpu.transmittance[..20]);
+    assert!(
+        cpu.transmittance[far] < 0.9,
+        "the far pixel is covered in the reference: T {} {:?}",
+        cpu.transmittance[far],
+        &cpu.transmittance[..20]
+    );
     let (dc, dt, dd) = compare(&gpu, &cpu);
-    assert!(dc < 2e-5 && dt < 2e-5 && dd < 2e-5, "colour {dc:e}, T {dt:e}, depth {dd:e}");
+    assert!(
+        dc < 2e-5 && dt < 2e-5 && dd < 2e-5,
+        "colour {dc:e}, T {dt:e}, depth {dd:e}"
+    );
     ctx.check_validation().unwrap();
 }

@@ -7,7 +7,13 @@ use rand::Rng;
 
 fn cpu_exclusive_scan(v: &[u32]) -> Vec<u32> {
     let mut run = 0u32;
-    v.iter().map(|&x| { let r = run; run = run.wrapping_add(x); r }).collect()
+    v.iter()
+        .map(|&x| {
+            let r = run;
+            run = run.wrapping_add(x);
+            r
+        })
+        .collect()
 }
 
 #[test]
@@ -27,16 +33,27 @@ fn exclusive_scan_matches_cpu_at_block_edges() {
         s.submit().unwrap();
         let got: Vec<u32> = buf.read(n + 5).unwrap();
         assert_eq!(&got[..n], &cpu_exclusive_scan(&data)[..], "scan of {n}");
-        assert_eq!(&got[n..], &[0xDEAD_BEEFu32; 5], "scan of {n} wrote past its end");
+        assert_eq!(
+            &got[n..],
+            &[0xDEAD_BEEFu32; 5],
+            "scan of {n} wrote past its end"
+        );
     }
     ctx.check_validation().unwrap();
 }
 
 fn cpu_sort(keys: &[u32], vals: &[u32], bits: u32) -> (Vec<u32>, Vec<u32>) {
-    let mask = if bits >= 32 { u32::MAX } else { (1u32 << bits) - 1 };
+    let mask = if bits >= 32 {
+        u32::MAX
+    } else {
+        (1u32 << bits) - 1
+    };
     let mut idx: Vec<usize> = (0..keys.len()).collect();
     idx.sort_by_key(|&i| keys[i] & mask); // stable
-    (idx.iter().map(|&i| keys[i]).collect(), idx.iter().map(|&i| vals[i]).collect())
+    (
+        idx.iter().map(|&i| keys[i]).collect(),
+        idx.iter().map(|&i| vals[i]).collect(),
+    )
 }
 
 #[test]
@@ -61,9 +78,16 @@ fn sort_is_stable_with_many_equal_keys_and_partial_bits() {
     let sort = RadixSort::new(&ctx).unwrap();
     let mut rng = common::rng(3);
     // Few distinct keys: most pairs tie, so any instability reorders values.
-    for (n, bits, range) in [(100_003usize, 32u32, 16u32), (50_000, 12, 4096), (70_001, 20, 1 << 20), (9_999, 8, 3)] {
+    for (n, bits, range) in [
+        (100_003usize, 32u32, 16u32),
+        (50_000, 12, 4096),
+        (70_001, 20, 1 << 20),
+        (9_999, 8, 3),
+    ] {
         let keys: Vec<u32> = (0..n).map(|_| rng.gen_range(0..range)).collect();
-        let vals: Vec<u32> = (0..n as u32).map(|i| i.wrapping_mul(2_654_435_761)).collect();
+        let vals: Vec<u32> = (0..n as u32)
+            .map(|i| i.wrapping_mul(2_654_435_761))
+            .collect();
         let (gk, gv) = sort.sort_pairs(&ctx, &keys, &vals, bits).unwrap();
         let (ck, cv) = cpu_sort(&keys, &vals, bits);
         assert_eq!(gk, ck, "keys, n = {n}, bits = {bits}");

@@ -26,9 +26,22 @@ pub enum CameraError {
 
 impl Camera {
     /// A camera at `eye` looking at `target` with world `up`, vertical field of view `fov_y` radians.
-    pub fn look_at(eye: [f64; 3], target: [f64; 3], up: [f64; 3], width: u32, height: u32, fov_y: f64) -> Camera {
+    pub fn look_at(
+        eye: [f64; 3],
+        target: [f64; 3],
+        up: [f64; 3],
+        width: u32,
+        height: u32,
+        fov_y: f64,
+    ) -> Camera {
         let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-        let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let cross = |a: [f64; 3], b: [f64; 3]| {
+            [
+                a[1] * b[2] - a[2] * b[1],
+                a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0],
+            ]
+        };
         let norm = |a: [f64; 3]| {
             let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
             [a[0] / l, a[1] / l, a[2] / l]
@@ -57,7 +70,11 @@ impl Camera {
     /// World-to-camera rotation (rows) and translation: `p_cam = R * p_world + t`.
     pub fn world_to_camera(&self) -> ([[f64; 3]; 3], [f64; 3]) {
         let r = &self.rotation;
-        let rt = [[r[0][0], r[1][0], r[2][0]], [r[0][1], r[1][1], r[2][1]], [r[0][2], r[1][2], r[2][2]]];
+        let rt = [
+            [r[0][0], r[1][0], r[2][0]],
+            [r[0][1], r[1][1], r[2][1]],
+            [r[0][2], r[1][2], r[2][2]],
+        ];
         let p = self.position;
         let t = [
             -(rt[0][0] * p[0] + rt[0][1] * p[1] + rt[0][2] * p[2]),
@@ -69,12 +86,23 @@ impl Camera {
 
     fn validate(&self) -> Result<(), String> {
         if self.width == 0 || self.height == 0 || self.width > 16384 || self.height > 16384 {
-            return Err(format!("camera {} has size {}x{} (1..16384 allowed)", self.id, self.width, self.height));
+            return Err(format!(
+                "camera {} has size {}x{} (1..16384 allowed)",
+                self.id, self.width, self.height
+            ));
         }
         if !(self.fx.is_finite() && self.fy.is_finite() && self.fx > 0.0 && self.fy > 0.0) {
-            return Err(format!("camera {} has focal lengths {} {}", self.id, self.fx, self.fy));
+            return Err(format!(
+                "camera {} has focal lengths {} {}",
+                self.id, self.fx, self.fy
+            ));
         }
-        if !self.position.iter().chain(self.rotation.iter().flatten()).all(|v| v.is_finite()) {
+        if !self
+            .position
+            .iter()
+            .chain(self.rotation.iter().flatten())
+            .all(|v| v.is_finite())
+        {
             return Err(format!("camera {} has a non-finite pose", self.id));
         }
         Ok(())
@@ -83,9 +111,13 @@ impl Camera {
 
 /// Reads an INRIA `cameras.json`.
 pub fn read_cameras(path: &Path) -> Result<Vec<Camera>, CameraError> {
-    let err = |msg: String| CameraError::Invalid { path: path.display().to_string(), msg };
+    let err = |msg: String| CameraError::Invalid {
+        path: path.display().to_string(),
+        msg,
+    };
     let text = std::fs::read_to_string(path).map_err(|e| err(e.to_string()))?;
-    let cams: Vec<Camera> = serde_json::from_str(&text).map_err(|e| err(format!("not a cameras.json list: {e}")))?;
+    let cams: Vec<Camera> =
+        serde_json::from_str(&text).map_err(|e| err(format!("not a cameras.json list: {e}")))?;
     if cams.is_empty() {
         return Err(err("no cameras in the file".into()));
     }

@@ -40,16 +40,25 @@ impl Buffer {
         let shared = ctx.shared.clone();
         let limit = shared.info.max_storage_buffer_range;
         if size > limit {
-            return Err(GpuError::BufferTooLarge { name: name.to_string(), size, limit });
+            return Err(GpuError::BufferTooLarge {
+                name: name.to_string(),
+                size,
+                limit,
+            });
         }
         // Vulkan forbids empty buffers; an empty one still gets 16 bytes of backing.
         let alloc_size = size.max(16).next_multiple_of(4);
         let info = vk::BufferCreateInfo::default()
             .size(alloc_size)
-            .usage(vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST)
+            .usage(
+                vk::BufferUsageFlags::STORAGE_BUFFER
+                    | vk::BufferUsageFlags::TRANSFER_SRC
+                    | vk::BufferUsageFlags::TRANSFER_DST,
+            )
             .sharing_mode(vk::SharingMode::EXCLUSIVE);
         // SAFETY: valid create info on a live device.
-        let raw = unsafe { shared.device.create_buffer(&info, None) }.map_err(vk_err("vkCreateBuffer"))?;
+        let raw = unsafe { shared.device.create_buffer(&info, None) }
+            .map_err(vk_err("vkCreateBuffer"))?;
         // SAFETY: `raw` was just created on this device.
         let requirements = unsafe { shared.device.get_buffer_memory_requirements(raw) };
         let location = match usage {
@@ -59,7 +68,9 @@ impl Buffer {
         };
         let alloc = {
             let mut guard = shared.allocator.lock().unwrap_or_else(|e| e.into_inner());
-            let allocator = guard.as_mut().expect("allocator lives as long as the device");
+            let allocator = guard
+                .as_mut()
+                .expect("allocator lives as long as the device");
             allocator.allocate(&AllocationCreateDesc {
                 name,
                 requirements,
@@ -73,25 +84,49 @@ impl Buffer {
             Err(e) => {
                 // SAFETY: the buffer has no memory bound and is unused.
                 unsafe { shared.device.destroy_buffer(raw, None) };
-                return Err(GpuError::OutOfMemory { name: name.to_string(), size, detail: e.to_string() });
+                return Err(GpuError::OutOfMemory {
+                    name: name.to_string(),
+                    size,
+                    detail: e.to_string(),
+                });
             }
         };
         // SAFETY: memory from the allocator satisfies the buffer's requirements.
-        if let Err(e) = unsafe { shared.device.bind_buffer_memory(raw, alloc.memory(), alloc.offset()) } {
+        if let Err(e) = unsafe {
+            shared
+                .device
+                .bind_buffer_memory(raw, alloc.memory(), alloc.offset())
+        } {
             // SAFETY: as above.
             unsafe { shared.device.destroy_buffer(raw, None) };
-            if let Some(a) = shared.allocator.lock().unwrap_or_else(|e| e.into_inner()).as_mut() {
+            if let Some(a) = shared
+                .allocator
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .as_mut()
+            {
                 let _ = a.free(alloc);
             }
             return Err(vk_err("vkBindBufferMemory")(e));
         }
         shared.name_object(raw, name);
-        Ok(Buffer { shared, raw, alloc: Some(alloc), size, name: name.to_string() })
+        Ok(Buffer {
+            shared,
+            raw,
+            alloc: Some(alloc),
+            size,
+            name: name.to_string(),
+        })
     }
 
     /// A device buffer holding `data`.
     pub fn from_slice<T: bytemuck::Pod>(ctx: &Context, name: &str, data: &[T]) -> Result<Buffer> {
-        let b = Buffer::new(ctx, name, std::mem::size_of_val(data) as u64, BufferUsage::Device)?;
+        let b = Buffer::new(
+            ctx,
+            name,
+            std::mem::size_of_val(data) as u64,
+            BufferUsage::Device,
+        )?;
         b.write(data)?;
         Ok(b)
     }
@@ -99,7 +134,12 @@ impl Buffer {
     /// A device buffer of `len` elements of `T`, filled with a recognisable garbage pattern
     /// (NaN-like words) in debug builds so a kernel that forgets to write is caught.
     pub fn zeroed<T: bytemuck::Pod>(ctx: &Context, name: &str, len: usize) -> Result<Buffer> {
-        let b = Buffer::new(ctx, name, (len * std::mem::size_of::<T>()) as u64, BufferUsage::Device)?;
+        let b = Buffer::new(
+            ctx,
+            name,
+            (len * std::mem::size_of::<T>()) as u64,
+            BufferUsage::Device,
+        )?;
         b.write(&vec![0u8; len * std::mem::size_of::<T>()])?;
         Ok(b)
     }
@@ -124,7 +164,12 @@ impl Buffer {
         if bytes.len() as u64 > self.size {
             return Err(GpuError::Kernel {
                 kernel: "upload".into(),
-                msg: format!("{} bytes do not fit buffer `{}` of {} bytes", bytes.len(), self.name, self.size),
+                msg: format!(
+                    "{} bytes do not fit buffer `{}` of {} bytes",
+                    bytes.len(),
+                    self.name,
+                    self.size
+                ),
             });
         }
         if bytes.is_empty() {
@@ -132,11 +177,20 @@ impl Buffer {
         }
         if let Some(ptr) = self.mapped() {
             // SAFETY: the mapping covers `size` bytes and no submission is in flight (synchronous model).
-            unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), ptr.as_ptr() as *mut u8, bytes.len()) };
+            unsafe {
+                std::ptr::copy_nonoverlapping(bytes.as_ptr(), ptr.as_ptr() as *mut u8, bytes.len())
+            };
             return Ok(());
         }
-        let ctx = Context { shared: self.shared.clone() };
-        let staging = Buffer::new(&ctx, &format!("{} (upload)", self.name), bytes.len() as u64, BufferUsage::Upload)?;
+        let ctx = Context {
+            shared: self.shared.clone(),
+        };
+        let staging = Buffer::new(
+            &ctx,
+            &format!("{} (upload)", self.name),
+            bytes.len() as u64,
+            BufferUsage::Upload,
+        )?;
         staging.write(bytes)?;
         let mut s = super::Stream::new(&ctx)?;
         s.copy(&staging, self, bytes.len() as u64);
@@ -157,7 +211,10 @@ impl Buffer {
         if start + nbytes as u64 > self.size {
             return Err(GpuError::Kernel {
                 kernel: "readback".into(),
-                msg: format!("{nbytes} bytes asked of buffer `{}` of {} bytes", self.name, self.size),
+                msg: format!(
+                    "{nbytes} bytes asked of buffer `{}` of {} bytes",
+                    self.name, self.size
+                ),
             });
         }
         let mut out = vec![T::zeroed(); len];
@@ -175,8 +232,15 @@ impl Buffer {
             };
             return Ok(out);
         }
-        let ctx = Context { shared: self.shared.clone() };
-        let staging = Buffer::new(&ctx, &format!("{} (readback)", self.name), nbytes as u64, BufferUsage::Readback)?;
+        let ctx = Context {
+            shared: self.shared.clone(),
+        };
+        let staging = Buffer::new(
+            &ctx,
+            &format!("{} (readback)", self.name),
+            nbytes as u64,
+            BufferUsage::Readback,
+        )?;
         let mut s = super::Stream::new(&ctx)?;
         s.copy_region(self, start, &staging, 0, nbytes as u64);
         s.submit()?;
@@ -194,7 +258,13 @@ impl Drop for Buffer {
         // SAFETY: synchronous submission means the device no longer uses this buffer.
         unsafe { self.shared.device.destroy_buffer(self.raw, None) };
         if let Some(a) = self.alloc.take() {
-            if let Some(al) = self.shared.allocator.lock().unwrap_or_else(|e| e.into_inner()).as_mut() {
+            if let Some(al) = self
+                .shared
+                .allocator
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .as_mut()
+            {
                 let _ = al.free(a);
             }
         }

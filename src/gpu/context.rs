@@ -47,8 +47,12 @@ impl Shared {
     /// Names a Vulkan object so that validation messages say which one is meant.
     pub fn name_object<H: vk::Handle>(&self, handle: H, name: &str) {
         if let Some(dd) = &self.debug_device {
-            let Ok(cname) = std::ffi::CString::new(name) else { return };
-            let info = vk::DebugUtilsObjectNameInfoEXT::default().object_handle(handle).object_name(&cname);
+            let Ok(cname) = std::ffi::CString::new(name) else {
+                return;
+            };
+            let info = vk::DebugUtilsObjectNameInfoEXT::default()
+                .object_handle(handle)
+                .object_name(&cname);
             // SAFETY: the handle belongs to this device; naming is best effort.
             let _ = unsafe { dd.set_debug_utils_object_name(&info) };
         }
@@ -67,7 +71,12 @@ impl Drop for Shared {
         // SAFETY: teardown order: idle, allocator, device, messenger, instance; nothing is in flight.
         unsafe {
             let _ = self.device.device_wait_idle();
-            drop(self.allocator.lock().unwrap_or_else(|e| e.into_inner()).take());
+            drop(
+                self.allocator
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .take(),
+            );
             self.device.destroy_device(None);
             if let Some((di, m)) = self.debug_instance.take() {
                 di.destroy_debug_utils_messenger(m, None);
@@ -93,8 +102,16 @@ unsafe extern "system" fn on_message(
     // SAFETY: the layer passes valid callback data; `user` is our leaked Mutex.
     let (id, msg) = unsafe {
         let d = &*data;
-        let id = if d.p_message_id_name.is_null() { "".into() } else { CStr::from_ptr(d.p_message_id_name).to_string_lossy() };
-        let msg = if d.p_message.is_null() { "".into() } else { CStr::from_ptr(d.p_message).to_string_lossy() };
+        let id = if d.p_message_id_name.is_null() {
+            "".into()
+        } else {
+            CStr::from_ptr(d.p_message_id_name).to_string_lossy()
+        };
+        let msg = if d.p_message.is_null() {
+            "".into()
+        } else {
+            CStr::from_ptr(d.p_message).to_string_lossy()
+        };
         (id.into_owned(), msg.into_owned())
     };
     // The layer's shader-cache notice is not about our use of the API.
@@ -110,7 +127,9 @@ unsafe extern "system" fn on_message(
 }
 
 fn env_flag(name: &str) -> Option<bool> {
-    std::env::var(name).ok().map(|v| !matches!(v.trim(), "" | "0" | "false" | "no" | "off"))
+    std::env::var(name)
+        .ok()
+        .map(|v| !matches!(v.trim(), "" | "0" | "false" | "no" | "off"))
 }
 
 fn type_rank(t: vk::PhysicalDeviceType) -> u32 {
@@ -132,16 +151,25 @@ impl Context {
     pub fn new() -> Result<Self> {
         let want_validation = env_flag("DREAMSCENE_VALIDATION").unwrap_or(cfg!(debug_assertions));
         let require_validation = env_flag("DREAMSCENE_REQUIRE_VALIDATION").unwrap_or(false);
-        let selector = std::env::var("DREAMSCENE_DEVICE").ok().filter(|s| !s.trim().is_empty());
+        let selector = std::env::var("DREAMSCENE_DEVICE")
+            .ok()
+            .filter(|s| !s.trim().is_empty());
         Self::create(want_validation, require_validation, selector.as_deref())
     }
 
-    fn create(want_validation: bool, require_validation: bool, selector: Option<&str>) -> Result<Self> {
+    fn create(
+        want_validation: bool,
+        require_validation: bool,
+        selector: Option<&str>,
+    ) -> Result<Self> {
         // SAFETY: loading the system Vulkan loader.
         let entry = unsafe { ash::Entry::load() }.map_err(|e| GpuError::Loader(e.to_string()))?;
         // SAFETY: plain queries on a loaded entry.
-        let layers = unsafe { entry.enumerate_instance_layer_properties() }.map_err(vk_err("vkEnumerateInstanceLayerProperties"))?;
-        let has_layer = layers.iter().any(|l| l.layer_name_as_c_str().is_ok_and(|n| n == VALIDATION_LAYER));
+        let layers = unsafe { entry.enumerate_instance_layer_properties() }
+            .map_err(vk_err("vkEnumerateInstanceLayerProperties"))?;
+        let has_layer = layers
+            .iter()
+            .any(|l| l.layer_name_as_c_str().is_ok_and(|n| n == VALIDATION_LAYER));
         if want_validation && !has_layer {
             if require_validation {
                 return Err(GpuError::NoDevice(
@@ -158,19 +186,27 @@ impl Context {
         let layer_names = [VALIDATION_LAYER.as_ptr()];
         let ext_names = [ash::ext::debug_utils::NAME.as_ptr()];
         let enables = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
-        let mut vfeatures = vk::ValidationFeaturesEXT::default().enabled_validation_features(&enables);
+        let mut vfeatures =
+            vk::ValidationFeaturesEXT::default().enabled_validation_features(&enables);
         let mut ici = vk::InstanceCreateInfo::default().application_info(&app);
         if validation {
-            ici = ici.enabled_layer_names(&layer_names).enabled_extension_names(&ext_names).push_next(&mut vfeatures);
+            ici = ici
+                .enabled_layer_names(&layer_names)
+                .enabled_extension_names(&ext_names)
+                .push_next(&mut vfeatures);
         }
         // SAFETY: create info points at live locals.
-        let instance = unsafe { entry.create_instance(&ici, None) }.map_err(vk_err("vkCreateInstance"))?;
+        let instance =
+            unsafe { entry.create_instance(&ici, None) }.map_err(vk_err("vkCreateInstance"))?;
 
         let messages: *mut Mutex<Vec<String>> = Box::into_raw(Box::new(Mutex::new(Vec::new())));
         let debug_instance = if validation {
             let di = ash::ext::debug_utils::Instance::new(&entry, &instance);
             let mci = vk::DebugUtilsMessengerCreateInfoEXT::default()
-                .message_severity(vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
+                .message_severity(
+                    vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
+                        | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+                )
                 .message_type(
                     vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
                         | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
@@ -179,22 +215,24 @@ impl Context {
                 .pfn_user_callback(Some(on_message))
                 .user_data(messages as *mut c_void);
             // SAFETY: the callback and user data outlive the messenger (destroyed in Shared::drop).
-            let m = unsafe { di.create_debug_utils_messenger(&mci, None) }.map_err(vk_err("vkCreateDebugUtilsMessengerEXT"))?;
+            let m = unsafe { di.create_debug_utils_messenger(&mci, None) }
+                .map_err(vk_err("vkCreateDebugUtilsMessengerEXT"))?;
             Some((di, m))
         } else {
             None
         };
 
-        let cleanup = |di: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>| {
-            // SAFETY: nothing else was created from the instance yet.
-            unsafe {
-                if let Some((di, m)) = di {
-                    di.destroy_debug_utils_messenger(m, None);
+        let cleanup =
+            |di: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>| {
+                // SAFETY: nothing else was created from the instance yet.
+                unsafe {
+                    if let Some((di, m)) = di {
+                        di.destroy_debug_utils_messenger(m, None);
+                    }
+                    instance.destroy_instance(None);
+                    drop(Box::from_raw(messages));
                 }
-                instance.destroy_instance(None);
-                drop(Box::from_raw(messages));
-            }
-        };
+            };
 
         let physical = match select_device(&instance, selector) {
             Ok(p) => p,
@@ -205,7 +243,8 @@ impl Context {
         };
         match open_device(entry.clone(), instance.clone(), physical, validation) {
             Ok((device, queue_family, info, push_descriptor, float_atomics)) => {
-                let debug_device = validation.then(|| ash::ext::debug_utils::Device::new(&instance, &device));
+                let debug_device =
+                    validation.then(|| ash::ext::debug_utils::Device::new(&instance, &device));
                 // SAFETY: the queue family was requested at device creation.
                 let queue = unsafe { device.get_device_queue(queue_family, 0) };
                 let allocator = Allocator::new(&AllocatorCreateDesc {
@@ -234,7 +273,9 @@ impl Context {
                     messages,
                     info,
                 };
-                Ok(Context { shared: Arc::new(shared) })
+                Ok(Context {
+                    shared: Arc::new(shared),
+                })
             }
             Err(e) => {
                 cleanup(debug_instance);
@@ -265,7 +306,10 @@ impl Context {
             let entry = ash::Entry::load().map_err(|e| GpuError::Loader(e.to_string()))?;
             let app = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_2);
             let instance = entry
-                .create_instance(&vk::InstanceCreateInfo::default().application_info(&app), None)
+                .create_instance(
+                    &vk::InstanceCreateInfo::default().application_info(&app),
+                    None,
+                )
                 .map_err(vk_err("vkCreateInstance"))?;
             let out = instance
                 .enumerate_physical_devices()
@@ -274,7 +318,10 @@ impl Context {
                 .map(|p| {
                     let props = instance.get_physical_device_properties(p);
                     (
-                        props.device_name_as_c_str().map(|c| c.to_string_lossy().into_owned()).unwrap_or_default(),
+                        props
+                            .device_name_as_c_str()
+                            .map(|c| c.to_string_lossy().into_owned())
+                            .unwrap_or_default(),
                         format!("{:?}", props.device_type),
                     )
                 })
@@ -287,13 +334,17 @@ impl Context {
 
 fn select_device(instance: &ash::Instance, selector: Option<&str>) -> Result<vk::PhysicalDevice> {
     // SAFETY: queries on a live instance.
-    let devices = unsafe { instance.enumerate_physical_devices() }.map_err(vk_err("vkEnumeratePhysicalDevices"))?;
+    let devices = unsafe { instance.enumerate_physical_devices() }
+        .map_err(vk_err("vkEnumeratePhysicalDevices"))?;
     let mut named: Vec<(vk::PhysicalDevice, String, vk::PhysicalDeviceType)> = devices
         .iter()
         .map(|&p| {
             // SAFETY: as above.
             let props = unsafe { instance.get_physical_device_properties(p) };
-            let name = props.device_name_as_c_str().map(|c| c.to_string_lossy().into_owned()).unwrap_or_default();
+            let name = props
+                .device_name_as_c_str()
+                .map(|c| c.to_string_lossy().into_owned())
+                .unwrap_or_default();
             (p, name, props.device_type)
         })
         .filter(|(_, _, _)| true)
@@ -306,84 +357,141 @@ fn select_device(instance: &ash::Instance, selector: Option<&str>) -> Result<vk:
     if let Some(sel) = selector {
         if let Ok(i) = sel.trim().parse::<usize>() {
             return named.get(i).map(|d| d.0).ok_or_else(|| {
-                GpuError::NoDevice(format!("DREAMSCENE_DEVICE={sel}: only {} device(s) present", named.len()))
+                GpuError::NoDevice(format!(
+                    "DREAMSCENE_DEVICE={sel}: only {} device(s) present",
+                    named.len()
+                ))
             });
         }
         let low = sel.to_lowercase();
-        return named.iter().find(|d| d.1.to_lowercase().contains(&low)).map(|d| d.0).ok_or_else(|| {
-            let names: Vec<&str> = named.iter().map(|d| d.1.as_str()).collect();
-            GpuError::NoDevice(format!("DREAMSCENE_DEVICE={sel} matches none of {names:?}"))
-        });
+        return named
+            .iter()
+            .find(|d| d.1.to_lowercase().contains(&low))
+            .map(|d| d.0)
+            .ok_or_else(|| {
+                let names: Vec<&str> = named.iter().map(|d| d.1.as_str()).collect();
+                GpuError::NoDevice(format!("DREAMSCENE_DEVICE={sel} matches none of {names:?}"))
+            });
     }
     named.sort_by_key(|d| type_rank(d.2));
     Ok(named[0].0)
 }
 
-type Opened = (ash::Device, u32, DeviceInfo, ash::khr::push_descriptor::Device, bool);
+type Opened = (
+    ash::Device,
+    u32,
+    DeviceInfo,
+    ash::khr::push_descriptor::Device,
+    bool,
+);
 
-fn open_device(_entry: ash::Entry, instance: ash::Instance, physical: vk::PhysicalDevice, validation: bool) -> Result<Opened> {
+fn open_device(
+    _entry: ash::Entry,
+    instance: ash::Instance,
+    physical: vk::PhysicalDevice,
+    validation: bool,
+) -> Result<Opened> {
     // SAFETY: queries on a live physical device.
     let (props, sg, exts, qfams, af) = unsafe {
         let mut sg = vk::PhysicalDeviceSubgroupProperties::default();
         let mut drv = vk::PhysicalDeviceDriverProperties::default();
-        let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut sg).push_next(&mut drv);
+        let mut p2 = vk::PhysicalDeviceProperties2::default()
+            .push_next(&mut sg)
+            .push_next(&mut drv);
         instance.get_physical_device_properties2(physical, &mut p2);
         let props = p2.properties;
-        let exts = instance.enumerate_device_extension_properties(physical).map_err(vk_err("vkEnumerateDeviceExtensionProperties"))?;
+        let exts = instance
+            .enumerate_device_extension_properties(physical)
+            .map_err(vk_err("vkEnumerateDeviceExtensionProperties"))?;
         let qfams = instance.get_physical_device_queue_family_properties(physical);
-        let has_af = exts.iter().any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == ash::ext::shader_atomic_float::NAME));
+        let has_af = exts.iter().any(|e| {
+            e.extension_name_as_c_str()
+                .is_ok_and(|n| n == ash::ext::shader_atomic_float::NAME)
+        });
         let mut af = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default();
         if has_af {
             let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut af);
             instance.get_physical_device_features2(physical, &mut f2);
         }
         let af_ok = has_af && af.shader_buffer_float32_atomic_add == vk::TRUE;
-        let sg_copy = (sg.subgroup_size, sg.supported_stages, sg.supported_operations);
-        let drv_name = drv.driver_info_as_c_str().map(|c| c.to_string_lossy().into_owned()).unwrap_or_default();
+        let sg_copy = (
+            sg.subgroup_size,
+            sg.supported_stages,
+            sg.supported_operations,
+        );
+        let drv_name = drv
+            .driver_info_as_c_str()
+            .map(|c| c.to_string_lossy().into_owned())
+            .unwrap_or_default();
         (props, (sg_copy, drv_name), exts, qfams, af_ok)
     };
     let ((subgroup_size, sg_stages, sg_ops), driver) = sg;
-    let name = props.device_name_as_c_str().map(|c| c.to_string_lossy().into_owned()).unwrap_or_default();
+    let name = props
+        .device_name_as_c_str()
+        .map(|c| c.to_string_lossy().into_owned())
+        .unwrap_or_default();
     let need_ops = vk::SubgroupFeatureFlags::BASIC
         | vk::SubgroupFeatureFlags::VOTE
         | vk::SubgroupFeatureFlags::ARITHMETIC
         | vk::SubgroupFeatureFlags::BALLOT
         | vk::SubgroupFeatureFlags::SHUFFLE;
     if !sg_stages.contains(vk::ShaderStageFlags::COMPUTE) || !sg_ops.contains(need_ops) {
-        return Err(GpuError::NoDevice(format!("`{name}` lacks compute subgroup operations (basic, vote, arithmetic, ballot, shuffle)")));
+        return Err(GpuError::NoDevice(format!(
+            "`{name}` lacks compute subgroup operations (basic, vote, arithmetic, ballot, shuffle)"
+        )));
     }
-    if vk::api_version_minor(props.api_version) < 2 && vk::api_version_major(props.api_version) == 1 {
-        return Err(GpuError::NoDevice(format!("`{name}` supports only Vulkan {}.{}; 1.2 is needed",
-            vk::api_version_major(props.api_version), vk::api_version_minor(props.api_version))));
+    if vk::api_version_minor(props.api_version) < 2 && vk::api_version_major(props.api_version) == 1
+    {
+        return Err(GpuError::NoDevice(format!(
+            "`{name}` supports only Vulkan {}.{}; 1.2 is needed",
+            vk::api_version_major(props.api_version),
+            vk::api_version_minor(props.api_version)
+        )));
     }
     if !(4..=128).contains(&subgroup_size) {
-        return Err(GpuError::NoDevice(format!("`{name}` has subgroup size {subgroup_size}; 4 to 128 supported")));
+        return Err(GpuError::NoDevice(format!(
+            "`{name}` has subgroup size {subgroup_size}; 4 to 128 supported"
+        )));
     }
-    let has_push = exts.iter().any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == ash::khr::push_descriptor::NAME));
+    let has_push = exts.iter().any(|e| {
+        e.extension_name_as_c_str()
+            .is_ok_and(|n| n == ash::khr::push_descriptor::NAME)
+    });
     if !has_push {
-        return Err(GpuError::NoDevice(format!("`{name}` lacks VK_KHR_push_descriptor")));
+        return Err(GpuError::NoDevice(format!(
+            "`{name}` lacks VK_KHR_push_descriptor"
+        )));
     }
     let queue_family = qfams
         .iter()
         .position(|q| q.queue_flags.contains(vk::QueueFlags::COMPUTE))
-        .ok_or_else(|| GpuError::NoDevice(format!("`{name}` has no compute queue")))? as u32;
-    let timestamps = qfams[queue_family as usize].timestamp_valid_bits > 0 && props.limits.timestamp_compute_and_graphics == vk::TRUE;
+        .ok_or_else(|| GpuError::NoDevice(format!("`{name}` has no compute queue")))?
+        as u32;
+    let timestamps = qfams[queue_family as usize].timestamp_valid_bits > 0
+        && props.limits.timestamp_compute_and_graphics == vk::TRUE;
 
     let prio = [1.0f32];
-    let qci = [vk::DeviceQueueCreateInfo::default().queue_family_index(queue_family).queue_priorities(&prio)];
+    let qci = [vk::DeviceQueueCreateInfo::default()
+        .queue_family_index(queue_family)
+        .queue_priorities(&prio)];
     let mut dev_exts = vec![ash::khr::push_descriptor::NAME.as_ptr()];
     if af {
         dev_exts.push(ash::ext::shader_atomic_float::NAME.as_ptr());
     }
-    let mut afe = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default().shader_buffer_float32_atomic_add(true);
+    let mut afe = vk::PhysicalDeviceShaderAtomicFloatFeaturesEXT::default()
+        .shader_buffer_float32_atomic_add(true);
     let mut f12 = vk::PhysicalDeviceVulkan12Features::default().host_query_reset(true);
     let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut f12);
     if af {
         f2 = f2.push_next(&mut afe);
     }
-    let dci = vk::DeviceCreateInfo::default().queue_create_infos(&qci).enabled_extension_names(&dev_exts).push_next(&mut f2);
+    let dci = vk::DeviceCreateInfo::default()
+        .queue_create_infos(&qci)
+        .enabled_extension_names(&dev_exts)
+        .push_next(&mut f2);
     // SAFETY: create info points at live locals; the physical device is valid.
-    let device = unsafe { instance.create_device(physical, &dci, None) }.map_err(vk_err("vkCreateDevice"))?;
+    let device = unsafe { instance.create_device(physical, &dci, None) }
+        .map_err(vk_err("vkCreateDevice"))?;
     let push_descriptor = ash::khr::push_descriptor::Device::new(&instance, &device);
     let info = DeviceInfo {
         name,
@@ -399,7 +507,11 @@ fn open_device(_entry: ash::Entry, instance: ash::Instance, physical: vk::Physic
         float_atomics: af,
         max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
         max_shared_memory: props.limits.max_compute_shared_memory_size,
-        timestamp_period_ns: if timestamps { props.limits.timestamp_period } else { 0.0 },
+        timestamp_period_ns: if timestamps {
+            props.limits.timestamp_period
+        } else {
+            0.0
+        },
         validation,
     };
     Ok((device, queue_family, info, push_descriptor, af))

@@ -12,7 +12,11 @@ pub enum GpuError {
     #[error("no usable Vulkan device: {0}")]
     NoDevice(String),
     #[error("out of memory allocating `{name}` ({size} bytes): {detail}")]
-    OutOfMemory { name: String, size: u64, detail: String },
+    OutOfMemory {
+        name: String,
+        size: u64,
+        detail: String,
+    },
     #[error("buffer `{name}` needs {size} bytes, over the device's {limit}-byte storage-buffer limit; split the work")]
     BufferTooLarge { name: String, size: u64, limit: u64 },
     #[error("device lost while running [{kernels}]")]
@@ -22,16 +26,25 @@ pub enum GpuError {
     #[error("kernel `{kernel}`: {msg}")]
     Kernel { kernel: String, msg: String },
     #[error("{call} failed: {result}")]
-    Vk { call: &'static str, result: vk::Result },
+    Vk {
+        call: &'static str,
+        result: vk::Result,
+    },
 }
 
 /// Maps a raw `vk::Result` of `call` to a [`GpuError`].
 pub(crate) fn vk_err(call: &'static str) -> impl Fn(vk::Result) -> GpuError {
     move |result| match result {
         vk::Result::ERROR_OUT_OF_DEVICE_MEMORY | vk::Result::ERROR_OUT_OF_HOST_MEMORY => {
-            GpuError::OutOfMemory { name: call.to_string(), size: 0, detail: result.to_string() }
+            GpuError::OutOfMemory {
+                name: call.to_string(),
+                size: 0,
+                detail: result.to_string(),
+            }
         }
-        vk::Result::ERROR_DEVICE_LOST => GpuError::DeviceLost { kernels: call.to_string() },
+        vk::Result::ERROR_DEVICE_LOST => GpuError::DeviceLost {
+            kernels: call.to_string(),
+        },
         _ => GpuError::Vk { call, result },
     }
 }

@@ -32,22 +32,34 @@ impl Kernel {
     /// Builds the pipeline of `src` with `workgroup_size` invocations per workgroup.
     pub fn new(ctx: &Context, src: KernelSource, workgroup_size: u32) -> Result<Kernel> {
         let shared = ctx.shared.clone();
-        let kerr = |msg: String| GpuError::Kernel { kernel: src.name.to_string(), msg };
-        let refl = rspirv_reflect::Reflection::new_from_spirv(src.spv).map_err(|e| kerr(format!("reflection: {e:?}")))?;
-        let sets = refl.get_descriptor_sets().map_err(|e| kerr(format!("reflection: {e:?}")))?;
+        let kerr = |msg: String| GpuError::Kernel {
+            kernel: src.name.to_string(),
+            msg,
+        };
+        let refl = rspirv_reflect::Reflection::new_from_spirv(src.spv)
+            .map_err(|e| kerr(format!("reflection: {e:?}")))?;
+        let sets = refl
+            .get_descriptor_sets()
+            .map_err(|e| kerr(format!("reflection: {e:?}")))?;
         let mut bindings = Vec::new();
         let mut vk_bindings = Vec::new();
         for (set, binds) in &sets {
             if *set != 0 {
-                return Err(kerr(format!("descriptor set {set} used; kernels use set 0 only")));
+                return Err(kerr(format!(
+                    "descriptor set {set} used; kernels use set 0 only"
+                )));
             }
             for (binding, info) in binds {
                 let ty = vk::DescriptorType::from_raw(info.ty.0 as i32);
                 if ty != vk::DescriptorType::STORAGE_BUFFER {
-                    return Err(kerr(format!("binding {binding} is {ty:?}; only storage buffers are supported")));
+                    return Err(kerr(format!(
+                        "binding {binding} is {ty:?}; only storage buffers are supported"
+                    )));
                 }
                 if info.name.is_empty() {
-                    return Err(kerr(format!("binding {binding} has no instance name; declare `buffer T {{..}} name;`")));
+                    return Err(kerr(format!(
+                        "binding {binding} has no instance name; declare `buffer T {{..}} name;`"
+                    )));
                 }
                 bindings.push((info.name.clone(), *binding));
                 vk_bindings.push(
@@ -59,7 +71,8 @@ impl Kernel {
                 );
             }
         }
-        let words = ash::util::read_spv(&mut std::io::Cursor::new(src.spv)).map_err(|e| kerr(format!("SPIR-V: {e}")))?;
+        let words = ash::util::read_spv(&mut std::io::Cursor::new(src.spv))
+            .map_err(|e| kerr(format!("SPIR-V: {e}")))?;
         let dev = &shared.device;
         // SAFETY: all create infos reference live locals; objects are destroyed in Drop.
         unsafe {
@@ -71,25 +84,37 @@ impl Kernel {
                     None,
                 )
                 .map_err(vk_err("vkCreateDescriptorSetLayout"))?;
-            let ranges = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(src.push_size)];
+            let ranges = [vk::PushConstantRange::default()
+                .stage_flags(vk::ShaderStageFlags::COMPUTE)
+                .size(src.push_size)];
             let set_layouts = [set_layout];
             let mut pli = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
             if src.push_size > 0 {
                 pli = pli.push_constant_ranges(&ranges);
             }
-            let layout = dev.create_pipeline_layout(&pli, None).map_err(vk_err("vkCreatePipelineLayout"))?;
+            let layout = dev
+                .create_pipeline_layout(&pli, None)
+                .map_err(vk_err("vkCreatePipelineLayout"))?;
             let module = dev
                 .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None)
                 .map_err(vk_err("vkCreateShaderModule"))?;
-            let map = [vk::SpecializationMapEntry { constant_id: 0, offset: 0, size: 4 }];
+            let map = [vk::SpecializationMapEntry {
+                constant_id: 0,
+                offset: 0,
+                size: 4,
+            }];
             let data = workgroup_size.to_ne_bytes();
-            let spec = vk::SpecializationInfo::default().map_entries(&map).data(&data);
+            let spec = vk::SpecializationInfo::default()
+                .map_entries(&map)
+                .data(&data);
             let stage = vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::COMPUTE)
                 .module(module)
                 .name(c"main")
                 .specialization_info(&spec);
-            let ci = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(layout)];
+            let ci = [vk::ComputePipelineCreateInfo::default()
+                .stage(stage)
+                .layout(layout)];
             let res = dev.create_compute_pipelines(vk::PipelineCache::null(), &ci, None);
             dev.destroy_shader_module(module, None);
             let pipeline = match res {
@@ -101,7 +126,16 @@ impl Kernel {
                 }
             };
             shared.name_object(pipeline, src.name);
-            Ok(Kernel { shared, name: src.name, pipeline, layout, set_layout, bindings, push_size: src.push_size, workgroup_size })
+            Ok(Kernel {
+                shared,
+                name: src.name,
+                pipeline,
+                layout,
+                set_layout,
+                bindings,
+                push_size: src.push_size,
+                workgroup_size,
+            })
         }
     }
 
@@ -121,8 +155,12 @@ impl Drop for Kernel {
         // SAFETY: synchronous submission: the pipeline is idle.
         unsafe {
             self.shared.device.destroy_pipeline(self.pipeline, None);
-            self.shared.device.destroy_pipeline_layout(self.layout, None);
-            self.shared.device.destroy_descriptor_set_layout(self.set_layout, None);
+            self.shared
+                .device
+                .destroy_pipeline_layout(self.layout, None);
+            self.shared
+                .device
+                .destroy_descriptor_set_layout(self.set_layout, None);
         }
     }
 }

@@ -29,7 +29,11 @@ pub struct Timings {
 impl Timings {
     /// Total milliseconds spent in kernels named `name`.
     pub fn ms(&self, name: &str) -> f64 {
-        self.entries.iter().filter(|e| e.0 == name).map(|e| e.1).sum()
+        self.entries
+            .iter()
+            .filter(|e| e.0 == name)
+            .map(|e| e.1)
+            .sum()
     }
     /// Total milliseconds of all timed commands.
     pub fn total_ms(&self) -> f64 {
@@ -72,7 +76,10 @@ impl Stream {
                 )
                 .map_err(vk_err("vkCreateCommandPool"))?;
             let cb = match dev.allocate_command_buffers(
-                &vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1),
+                &vk::CommandBufferAllocateInfo::default()
+                    .command_pool(pool)
+                    .level(vk::CommandBufferLevel::PRIMARY)
+                    .command_buffer_count(1),
             ) {
                 Ok(v) => v[0],
                 Err(e) => {
@@ -80,12 +87,18 @@ impl Stream {
                     return Err(vk_err("vkAllocateCommandBuffers")(e));
                 }
             };
-            dev.begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))
-                .map_err(vk_err("vkBeginCommandBuffer"))?;
+            dev.begin_command_buffer(
+                cb,
+                &vk::CommandBufferBeginInfo::default()
+                    .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+            )
+            .map_err(vk_err("vkBeginCommandBuffer"))?;
             let queries = if max_timed > 0 && shared.info.timestamp_period_ns > 0.0 {
                 let qp = dev
                     .create_query_pool(
-                        &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2 * max_timed),
+                        &vk::QueryPoolCreateInfo::default()
+                            .query_type(vk::QueryType::TIMESTAMP)
+                            .query_count(2 * max_timed),
                         None,
                     )
                     .map_err(vk_err("vkCreateQueryPool"))?;
@@ -94,7 +107,14 @@ impl Stream {
             } else {
                 None
             };
-            Ok(Stream { shared, pool, cb, labels: Vec::new(), queries, timed: Vec::new() })
+            Ok(Stream {
+                shared,
+                pool,
+                cb,
+                labels: Vec::new(),
+                queries,
+                timed: Vec::new(),
+            })
         }
     }
 
@@ -106,7 +126,12 @@ impl Stream {
             | vk::AccessFlags::HOST_READ
             | vk::AccessFlags::HOST_WRITE;
         let b = [vk::MemoryBarrier::default()
-            .src_access_mask(vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE | vk::AccessFlags::SHADER_READ | vk::AccessFlags::TRANSFER_READ)
+            .src_access_mask(
+                vk::AccessFlags::SHADER_WRITE
+                    | vk::AccessFlags::TRANSFER_WRITE
+                    | vk::AccessFlags::SHADER_READ
+                    | vk::AccessFlags::TRANSFER_READ,
+            )
             .dst_access_mask(all)];
         let stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
         // SAFETY: recording into our command buffer.
@@ -127,9 +152,17 @@ impl Stream {
         if let Some((qp, max)) = self.queries {
             let i = self.timed.len() as u32;
             if i < max {
-                let stage = if end { vk::PipelineStageFlags::BOTTOM_OF_PIPE } else { vk::PipelineStageFlags::TOP_OF_PIPE };
+                let stage = if end {
+                    vk::PipelineStageFlags::BOTTOM_OF_PIPE
+                } else {
+                    vk::PipelineStageFlags::TOP_OF_PIPE
+                };
                 // SAFETY: query index within the pool.
-                unsafe { self.shared.device.cmd_write_timestamp(self.cb, stage, qp, 2 * i + end as u32) };
+                unsafe {
+                    self.shared
+                        .device
+                        .cmd_write_timestamp(self.cb, stage, qp, 2 * i + end as u32)
+                };
                 if end {
                     self.timed.push(label);
                 }
@@ -139,10 +172,23 @@ impl Stream {
 
     /// Records `kernel` over `groups` workgroups, binding each named buffer to the binding of that
     /// name in the kernel; `push` must be exactly the kernel's push-constant size.
-    pub fn dispatch(&mut self, kernel: &Kernel, buffers: &[(&str, &Buffer)], push: &[u8], groups: [u32; 3]) -> Result<()> {
-        let kerr = |msg: String| GpuError::Kernel { kernel: kernel.name.to_string(), msg };
+    pub fn dispatch(
+        &mut self,
+        kernel: &Kernel,
+        buffers: &[(&str, &Buffer)],
+        push: &[u8],
+        groups: [u32; 3],
+    ) -> Result<()> {
+        let kerr = |msg: String| GpuError::Kernel {
+            kernel: kernel.name.to_string(),
+            msg,
+        };
         if push.len() as u32 != kernel.push_size {
-            return Err(kerr(format!("push constants are {} bytes, the kernel declares {}", push.len(), kernel.push_size)));
+            return Err(kerr(format!(
+                "push constants are {} bytes, the kernel declares {}",
+                push.len(),
+                kernel.push_size
+            )));
         }
         if buffers.len() != kernel.bindings.len() {
             let want: Vec<&str> = kernel.bindings.iter().map(|b| b.0.as_str()).collect();
@@ -156,7 +202,11 @@ impl Stream {
                 .find(|b| b.0 == name)
                 .ok_or_else(|| kerr(format!("buffer `{name}` not bound")))?
                 .1;
-            infos.push(vk::DescriptorBufferInfo { buffer: buf.raw, offset: 0, range: vk::WHOLE_SIZE });
+            infos.push(vk::DescriptorBufferInfo {
+                buffer: buf.raw,
+                offset: 0,
+                range: vk::WHOLE_SIZE,
+            });
         }
         let writes: Vec<vk::WriteDescriptorSet> = kernel
             .bindings
@@ -169,7 +219,7 @@ impl Stream {
                     .buffer_info(std::slice::from_ref(info))
             })
             .collect();
-        if groups.iter().any(|&g| g == 0) {
+        if groups.contains(&0) {
             return Ok(());
         }
         self.labels.push(kernel.name);
@@ -179,10 +229,22 @@ impl Stream {
         unsafe {
             dev.cmd_bind_pipeline(self.cb, vk::PipelineBindPoint::COMPUTE, kernel.pipeline);
             if !writes.is_empty() {
-                self.shared.push_descriptor.cmd_push_descriptor_set(self.cb, vk::PipelineBindPoint::COMPUTE, kernel.layout, 0, &writes);
+                self.shared.push_descriptor.cmd_push_descriptor_set(
+                    self.cb,
+                    vk::PipelineBindPoint::COMPUTE,
+                    kernel.layout,
+                    0,
+                    &writes,
+                );
             }
             if !push.is_empty() {
-                dev.cmd_push_constants(self.cb, kernel.layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+                dev.cmd_push_constants(
+                    self.cb,
+                    kernel.layout,
+                    vk::ShaderStageFlags::COMPUTE,
+                    0,
+                    push,
+                );
             }
             dev.cmd_dispatch(self.cb, groups[0], groups[1], groups[2]);
         }
@@ -197,14 +259,29 @@ impl Stream {
     }
 
     /// Copies `bytes` from `src` at byte `src_offset` to `dst` at byte `dst_offset`.
-    pub fn copy_region(&mut self, src: &Buffer, src_offset: u64, dst: &Buffer, dst_offset: u64, bytes: u64) {
+    pub fn copy_region(
+        &mut self,
+        src: &Buffer,
+        src_offset: u64,
+        dst: &Buffer,
+        dst_offset: u64,
+        bytes: u64,
+    ) {
         if bytes == 0 {
             return;
         }
         self.labels.push("copy");
-        let region = [vk::BufferCopy { src_offset, dst_offset, size: bytes }];
+        let region = [vk::BufferCopy {
+            src_offset,
+            dst_offset,
+            size: bytes,
+        }];
         // SAFETY: both buffers are live and at least `bytes` long (callers check).
-        unsafe { self.shared.device.cmd_copy_buffer(self.cb, src.raw, dst.raw, &region) };
+        unsafe {
+            self.shared
+                .device
+                .cmd_copy_buffer(self.cb, src.raw, dst.raw, &region)
+        };
         self.barrier();
     }
 
@@ -212,7 +289,11 @@ impl Stream {
     pub fn fill(&mut self, buf: &Buffer, value: u32) {
         self.labels.push("fill");
         // SAFETY: live buffer; whole-size fill of a 4-byte-multiple allocation.
-        unsafe { self.shared.device.cmd_fill_buffer(self.cb, buf.raw, 0, vk::WHOLE_SIZE, value) };
+        unsafe {
+            self.shared
+                .device
+                .cmd_fill_buffer(self.cb, buf.raw, 0, vk::WHOLE_SIZE, value)
+        };
         self.barrier();
     }
 
@@ -222,8 +303,11 @@ impl Stream {
         let dev = &self.shared.device;
         // SAFETY: the command buffer is in the recording state; the fence is waited on before return.
         unsafe {
-            dev.end_command_buffer(self.cb).map_err(vk_err("vkEndCommandBuffer"))?;
-            let fence = dev.create_fence(&vk::FenceCreateInfo::default(), None).map_err(vk_err("vkCreateFence"))?;
+            dev.end_command_buffer(self.cb)
+                .map_err(vk_err("vkEndCommandBuffer"))?;
+            let fence = dev
+                .create_fence(&vk::FenceCreateInfo::default(), None)
+                .map_err(vk_err("vkCreateFence"))?;
             let cbs = [self.cb];
             let submit = [vk::SubmitInfo::default().command_buffers(&cbs)];
             let res = {
@@ -234,7 +318,9 @@ impl Stream {
             dev.destroy_fence(fence, None);
             if let Err(e) = res {
                 return Err(match e {
-                    vk::Result::ERROR_DEVICE_LOST => GpuError::DeviceLost { kernels: self.labels.join(", ") },
+                    vk::Result::ERROR_DEVICE_LOST => GpuError::DeviceLost {
+                        kernels: self.labels.join(", "),
+                    },
                     other => vk_err("vkQueueSubmit")(other),
                 });
             }
@@ -245,8 +331,15 @@ impl Stream {
             if n > 0 {
                 let mut data = vec![0u64; 2 * n];
                 // SAFETY: the queries were written by the completed submission.
-                unsafe { dev.get_query_pool_results(qp, 0, &mut data, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT) }
-                    .map_err(vk_err("vkGetQueryPoolResults"))?;
+                unsafe {
+                    dev.get_query_pool_results(
+                        qp,
+                        0,
+                        &mut data,
+                        vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+                    )
+                }
+                .map_err(vk_err("vkGetQueryPoolResults"))?;
                 let period = self.shared.info.timestamp_period_ns as f64;
                 for (i, label) in self.timed.iter().enumerate() {
                     let dt = data[2 * i + 1].saturating_sub(data[2 * i]) as f64 * period * 1e-6;

@@ -42,33 +42,57 @@ impl Gaussians {
     pub fn check(&self) -> Result<(), String> {
         let n = self.len();
         if self.scales.len() != n || self.rotations.len() != n || self.opacities.len() != n {
-            return Err(format!("inconsistent Gaussian arrays: {n} means, {} scales, {} rotations, {} opacities",
-                self.scales.len(), self.rotations.len(), self.opacities.len()));
+            return Err(format!(
+                "inconsistent Gaussian arrays: {n} means, {} scales, {} rotations, {} opacities",
+                self.scales.len(),
+                self.rotations.len(),
+                self.opacities.len()
+            ));
         }
         if self.sh_degree > 3 {
             return Err(format!("SH degree {} (0 to 3 supported)", self.sh_degree));
         }
         if self.sh.len() != n * self.coeffs() * 3 {
-            return Err(format!("{} SH values for {n} Gaussians of degree {}", self.sh.len(), self.sh_degree));
+            return Err(format!(
+                "{} SH values for {n} Gaussians of degree {}",
+                self.sh.len(),
+                self.sh_degree
+            ));
         }
         Ok(())
     }
 
     /// Random Gaussians with centres uniform in the box `[lo, hi]`, isotropic-ish scales around
     /// `scale`, random rotations, opacities in (0.1, 0.9) and random colours.
-    pub fn random(rng: &mut impl Rng, n: usize, lo: [f32; 3], hi: [f32; 3], scale: f32, sh_degree: u32) -> Gaussians {
+    pub fn random(
+        rng: &mut impl Rng,
+        n: usize,
+        lo: [f32; 3],
+        hi: [f32; 3],
+        scale: f32,
+        sh_degree: u32,
+    ) -> Gaussians {
         let k = sh_coeffs(sh_degree);
-        let mut g = Gaussians { sh_degree, ..Default::default() };
+        let mut g = Gaussians {
+            sh_degree,
+            ..Default::default()
+        };
         for _ in 0..n {
-            g.means.push([0, 1, 2].map(|i| rng.gen_range(lo[i]..=hi[i])));
-            g.scales.push([0, 1, 2].map(|_| (scale * rng.gen_range(0.5f32..1.5)).ln()));
+            g.means
+                .push([0, 1, 2].map(|i| rng.gen_range(lo[i]..=hi[i])));
+            g.scales
+                .push([0, 1, 2].map(|_| (scale * rng.gen_range(0.5f32..1.5)).ln()));
             let q = [0, 1, 2, 3].map(|_| rng.gen_range(-1.0f32..1.0));
             g.rotations.push(q);
             let o: f32 = rng.gen_range(0.1..0.9);
             g.opacities.push((o / (1.0 - o)).ln());
             for c in 0..k {
                 for _ in 0..3 {
-                    let v = if c == 0 { rng.gen_range(-1.5f32..1.5) } else { rng.gen_range(-0.3f32..0.3) };
+                    let v = if c == 0 {
+                        rng.gen_range(-1.5f32..1.5)
+                    } else {
+                        rng.gen_range(-0.3f32..0.3)
+                    };
                     g.sh.push(v);
                 }
             }

@@ -15,7 +15,10 @@ pub struct PlyError {
 
 /// Reads a splat PLY.
 pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
-    let err = |msg: String| PlyError { path: path.display().to_string(), msg };
+    let err = |msg: String| PlyError {
+        path: path.display().to_string(),
+        msg,
+    };
     let file = std::fs::File::open(path).map_err(|e| err(e.to_string()))?;
     let mut r = BufReader::new(file);
     let mut line = String::new();
@@ -25,7 +28,9 @@ pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
     let mut first = true;
     loop {
         line.clear();
-        let n = r.read_line(&mut line).map_err(|e| err(format!("header: {e}")))?;
+        let n = r
+            .read_line(&mut line)
+            .map_err(|e| err(format!("header: {e}")))?;
         if n == 0 {
             return Err(err("header ends before `end_header`".into()));
         }
@@ -39,17 +44,22 @@ pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
         }
         let parts: Vec<&str> = l.split_whitespace().collect();
         match parts.as_slice() {
-            ["format", fmt, _] => {
-                if *fmt != "binary_little_endian" {
-                    return Err(err(format!("format `{fmt}` is not supported; splat PLYs are binary_little_endian")));
-                }
+            ["format", fmt, _] if *fmt != "binary_little_endian" => {
+                return Err(err(format!(
+                    "format `{fmt}` is not supported; splat PLYs are binary_little_endian"
+                )));
             }
             ["element", name, n] => {
                 in_vertex = *name == "vertex";
                 if in_vertex {
-                    count = Some(n.parse().map_err(|_| err(format!("bad vertex count `{n}`")))?);
+                    count = Some(
+                        n.parse()
+                            .map_err(|_| err(format!("bad vertex count `{n}`")))?,
+                    );
                 } else if count.is_none() {
-                    return Err(err(format!("element `{name}` before `vertex` is not supported")));
+                    return Err(err(format!(
+                        "element `{name}` before `vertex` is not supported"
+                    )));
                 }
             }
             ["property", ty, name] if in_vertex => {
@@ -62,11 +72,15 @@ pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
                     _ => return Err(err(format!("property `{name}` has unknown type `{ty}`"))),
                 };
                 if size != 4 || !(ty.starts_with("float")) {
-                    return Err(err(format!("property `{name}` is `{ty}`; splat properties must be float")));
+                    return Err(err(format!(
+                        "property `{name}` is `{ty}`; splat properties must be float"
+                    )));
                 }
                 props.push((name.to_string(), size));
             }
-            ["property", "list", ..] if in_vertex => return Err(err("list properties in `vertex` are not supported".into())),
+            ["property", "list", ..] if in_vertex => {
+                return Err(err("list properties in `vertex` are not supported".into()))
+            }
             ["end_header"] => break,
             _ => {}
         }
@@ -78,12 +92,19 @@ pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
         let mut v: Vec<(usize, usize)> = props
             .iter()
             .enumerate()
-            .filter_map(|(i, p)| p.0.strip_prefix("f_rest_").and_then(|s| s.parse::<usize>().ok()).map(|k| (k, i)))
+            .filter_map(|(i, p)| {
+                p.0.strip_prefix("f_rest_")
+                    .and_then(|s| s.parse::<usize>().ok())
+                    .map(|k| (k, i))
+            })
             .collect();
         v.sort();
         for (expect, (k, _)) in v.iter().enumerate() {
             if *k != expect {
-                return Err(err(format!("f_rest_ properties are not numbered 0..{}", v.len())));
+                return Err(err(format!(
+                    "f_rest_ properties are not numbered 0..{}",
+                    v.len()
+                )));
             }
         }
         v.into_iter().map(|x| x.1).collect()
@@ -93,35 +114,61 @@ pub fn read_ply(path: &Path) -> Result<Gaussians, PlyError> {
         9 => 1,
         24 => 2,
         45 => 3,
-        k => return Err(err(format!("{k} f_rest properties: expected 0, 9, 24 or 45 (SH degree 0 to 3)"))),
+        k => {
+            return Err(err(format!(
+                "{k} f_rest properties: expected 0, 9, 24 or 45 (SH degree 0 to 3)"
+            )))
+        }
     };
     let pos = [need("x")?, need("y")?, need("z")?];
     let dc = [need("f_dc_0")?, need("f_dc_1")?, need("f_dc_2")?];
     let op = need("opacity")?;
     let sc = [need("scale_0")?, need("scale_1")?, need("scale_2")?];
-    let rot = [need("rot_0")?, need("rot_1")?, need("rot_2")?, need("rot_3")?];
+    let rot = [
+        need("rot_0")?,
+        need("rot_1")?,
+        need("rot_2")?,
+        need("rot_3")?,
+    ];
     let stride = props.len() * 4;
-    let total = n.checked_mul(stride).ok_or_else(|| err("vertex count overflows".into()))?;
+    let total = n
+        .checked_mul(stride)
+        .ok_or_else(|| err("vertex count overflows".into()))?;
     let mut data = Vec::new();
-    r.take(total as u64).read_to_end(&mut data).map_err(|e| err(format!("data: {e}")))?;
+    r.take(total as u64)
+        .read_to_end(&mut data)
+        .map_err(|e| err(format!("data: {e}")))?;
     if data.len() < total {
-        return Err(err(format!("truncated: {} vertices need {total} bytes of data, the file has {}", n, data.len())));
+        return Err(err(format!(
+            "truncated: {} vertices need {total} bytes of data, the file has {}",
+            n,
+            data.len()
+        )));
     }
     let k = sh_coeffs(degree);
     let per = k - 1;
-    let mut g = Gaussians { sh_degree: degree, ..Default::default() };
+    let mut g = Gaussians {
+        sh_degree: degree,
+        ..Default::default()
+    };
     g.means.reserve(n);
     g.sh.reserve(n * k * 3);
     for v in 0..n {
         let row = &data[v * stride..(v + 1) * stride];
-        let f = |i: usize| f32::from_le_bytes([row[4 * i], row[4 * i + 1], row[4 * i + 2], row[4 * i + 3]]);
+        let f = |i: usize| {
+            f32::from_le_bytes([row[4 * i], row[4 * i + 1], row[4 * i + 2], row[4 * i + 3]])
+        };
         g.means.push(pos.map(f));
         g.scales.push(sc.map(f));
         g.rotations.push(rot.map(f));
         g.opacities.push(f(op));
         for c in 0..k {
             for ch in 0..3 {
-                g.sh.push(if c == 0 { f(dc[ch]) } else { f(rest[ch * per + c - 1]) });
+                g.sh.push(if c == 0 {
+                    f(dc[ch])
+                } else {
+                    f(rest[ch * per + c - 1])
+                });
             }
         }
     }
@@ -135,7 +182,12 @@ pub fn write_ply(path: &Path, g: &Gaussians) -> std::io::Result<()> {
     let per = k - 1;
     let mut header = String::from("ply\nformat binary_little_endian 1.0\n");
     header += &format!("element vertex {}\n", g.len());
-    let mut names: Vec<String> = ["x", "y", "z", "nx", "ny", "nz", "f_dc_0", "f_dc_1", "f_dc_2"].iter().map(|s| s.to_string()).collect();
+    let mut names: Vec<String> = [
+        "x", "y", "z", "nx", "ny", "nz", "f_dc_0", "f_dc_1", "f_dc_2",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
     names.extend((0..3 * per).map(|i| format!("f_rest_{i}")));
     names.push("opacity".into());
     names.extend((0..3).map(|i| format!("scale_{i}")));

@@ -5,7 +5,9 @@ use super::cloud::Gaussians;
 use super::scan::ScanScratch;
 use super::sort::{RadixSort, SortScratch};
 use crate::camera::Camera;
-use crate::gpu::{groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings};
+use crate::gpu::{
+    groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings,
+};
 use bytemuck::{Pod, Zeroable};
 
 /// Threads per workgroup of the per-Gaussian and per-intersection kernels.
@@ -31,7 +33,12 @@ impl CameraData {
             row0: row(0),
             row1: row(1),
             row2: row(2),
-            campos: [cam.position[0] as f32, cam.position[1] as f32, cam.position[2] as f32, 0.0],
+            campos: [
+                cam.position[0] as f32,
+                cam.position[1] as f32,
+                cam.position[2] as f32,
+                0.0,
+            ],
             focal: [cam.fx as f32, cam.fy as f32],
             size: [cam.width as f32, cam.height as f32],
         }
@@ -83,7 +90,10 @@ pub struct GpuGaussians {
 impl GpuGaussians {
     /// Uploads `g` (checked for consistent array sizes).
     pub fn upload(ctx: &Context, g: &Gaussians) -> Result<GpuGaussians> {
-        g.check().map_err(|msg| GpuError::Kernel { kernel: "upload gaussians".into(), msg })?;
+        g.check().map_err(|msg| GpuError::Kernel {
+            kernel: "upload gaussians".into(),
+            msg,
+        })?;
         Ok(GpuGaussians {
             means: Buffer::from_slice(ctx, "means", &g.means)?,
             scales: Buffer::from_slice(ctx, "log scales", &g.scales)?,
@@ -152,7 +162,16 @@ impl Frame {
         Ok(RenderOutput {
             width: self.width,
             height: self.height,
-            color: c.iter().map(|p| [p[0] + p[3] * bg[0], p[1] + p[3] * bg[1], p[2] + p[3] * bg[2]]).collect(),
+            color: c
+                .iter()
+                .map(|p| {
+                    [
+                        p[0] + p[3] * bg[0],
+                        p[1] + p[3] * bg[1],
+                        p[2] + p[3] * bg[2],
+                    ]
+                })
+                .collect(),
             transmittance: c.iter().map(|p| p[3]).collect(),
             depth: self.depth.read(np)?,
         })
@@ -201,7 +220,13 @@ impl Rasterizer {
     }
 
     /// Renders `g` from `cam` over `background`.
-    pub fn forward(&self, ctx: &Context, g: &GpuGaussians, cam: &Camera, background: [f32; 3]) -> Result<Frame> {
+    pub fn forward(
+        &self,
+        ctx: &Context,
+        g: &GpuGaussians,
+        cam: &Camera,
+        background: [f32; 3],
+    ) -> Result<Frame> {
         let n = g.n;
         let tiles_x = cam.width.div_ceil(kernels::TILE);
         let tiles_y = cam.height.div_ceil(kernels::TILE);
@@ -219,7 +244,13 @@ impl Rasterizer {
         let mut timings = Timings::default();
 
         let mut s = self.stream(ctx, 64)?;
-        let push = ProjectPush { cam: CameraData::new(cam), n, sh_degree: g.sh_degree, tiles_x, tiles_y };
+        let push = ProjectPush {
+            cam: CameraData::new(cam),
+            n,
+            sh_degree: g.sh_degree,
+            tiles_x,
+            tiles_y,
+        };
         s.dispatch(
             &self.project,
             &[
@@ -237,14 +268,17 @@ impl Rasterizer {
             bytemuck::bytes_of(&push),
             groups_for(n.div_ceil(WG)),
         )?;
-        self.sort.record(&mut s, &depth_keys, &ids, n, 32, &depth_scratch)?;
+        self.sort
+            .record(&mut s, &depth_keys, &ids, n, 32, &depth_scratch)?;
         s.dispatch(
             &self.gather,
             &[("ids", &ids), ("counts", &counts), ("offsets", &offsets)],
             bytemuck::bytes_of(&n),
             groups_for((n + 1).div_ceil(WG)),
         )?;
-        self.sort.scan().record(&mut s, &offsets, n + 1, &scan_scratch)?;
+        self.sort
+            .scan()
+            .record(&mut s, &offsets, n + 1, &scan_scratch)?;
         timings.entries.extend(s.submit()?.entries);
         let m = offsets.read_at::<u32>(n as usize, 1)?[0];
         drop(depth_scratch);
@@ -255,7 +289,11 @@ impl Rasterizer {
         let tile_scratch = SortScratch::new(ctx, m)?;
         let mut s = self.stream(ctx, 64)?;
         s.fill(&ranges, 0);
-        let push = EmitPush { n, tiles_x, num_tiles };
+        let push = EmitPush {
+            n,
+            tiles_x,
+            num_tiles,
+        };
         s.dispatch(
             &self.emit,
             &[
@@ -270,12 +308,28 @@ impl Rasterizer {
             bytemuck::bytes_of(&push),
             groups_for(n.div_ceil(WG)),
         )?;
-        self.sort.record(&mut s, &tile_keys, &isect_ids, m, bits_for(num_tiles), &tile_scratch)?;
+        self.sort.record(
+            &mut s,
+            &tile_keys,
+            &isect_ids,
+            m,
+            bits_for(num_tiles),
+            &tile_scratch,
+        )?;
         let push = [m, num_tiles];
-        s.dispatch(&self.ranges, &[("tile_keys", &tile_keys), ("ranges", &ranges)], bytemuck::bytes_of(&push), groups_for(m.div_ceil(WG)))?;
+        s.dispatch(
+            &self.ranges,
+            &[("tile_keys", &tile_keys), ("ranges", &ranges)],
+            bytemuck::bytes_of(&push),
+            groups_for(m.div_ceil(WG)),
+        )?;
         timings.entries.extend(s.submit()?.entries);
         let r: Vec<[u32; 2]> = ranges.read(num_tiles as usize)?;
-        let max_tile_len = r.iter().map(|x| x[1].saturating_sub(x[0])).max().unwrap_or(0);
+        let max_tile_len = r
+            .iter()
+            .map(|x| x[1].saturating_sub(x[0]))
+            .max()
+            .unwrap_or(0);
 
         let np = cam.width as u64 * cam.height as u64;
         let color = Buffer::new(ctx, "pixel colour and T", np * 16, dev)?;
@@ -284,10 +338,23 @@ impl Rasterizer {
         let segments = max_tile_len.div_ceil(kernels::SEGMENT).max(1);
         let mut s = self.stream(ctx, segments + 1)?;
         for seg in 0..segments {
-            let push = BlendPush { width: cam.width, height: cam.height, tiles_x, seg_begin: seg * kernels::SEGMENT, first: (seg == 0) as u32 };
+            let push = BlendPush {
+                width: cam.width,
+                height: cam.height,
+                tiles_x,
+                seg_begin: seg * kernels::SEGMENT,
+                first: (seg == 0) as u32,
+            };
             s.dispatch(
                 &self.blend,
-                &[("proj", &proj), ("isect_ids", &isect_ids), ("ranges", &ranges), ("color", &color), ("depth", &depth), ("last", &last)],
+                &[
+                    ("proj", &proj),
+                    ("isect_ids", &isect_ids),
+                    ("ranges", &ranges),
+                    ("color", &color),
+                    ("depth", &depth),
+                    ("last", &last),
+                ],
                 bytemuck::bytes_of(&push),
                 groups_for(num_tiles),
             )?;
@@ -313,7 +380,13 @@ impl Rasterizer {
     }
 
     /// Renders host Gaussians: upload, forward, read back.
-    pub fn render(&self, ctx: &Context, g: &Gaussians, cam: &Camera, background: [f32; 3]) -> Result<RenderOutput> {
+    pub fn render(
+        &self,
+        ctx: &Context,
+        g: &Gaussians,
+        cam: &Camera,
+        background: [f32; 3],
+    ) -> Result<RenderOutput> {
         let gg = GpuGaussians::upload(ctx, g)?;
         self.forward(ctx, &gg, cam, background)?.read()
     }

@@ -4,6 +4,9 @@
 //! 1.3 x tan(fov/2), +0.3 on the 2D covariance diagonal, 3-sigma tile rectangle narrowed to tiles
 //! the splat's alpha cutoff actually reaches, depth order front to back (ties by index),
 //! alpha = min(0.99, o * exp(power)), skipped below 1/255, stop before T < 1e-4.
+
+// `!(x > 0.0)` is deliberate throughout: it is also true for NaN, which must cull.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::cloud::{Gaussians, SH_C0};
 use crate::camera::Camera;
 use crate::gpu::kernels as k;
@@ -35,7 +38,13 @@ pub struct RefImage {
 }
 
 const SH_C1: f64 = 0.488_602_511_902_919_9;
-const SH_C2: [f64; 5] = [1.092_548_430_592_079_2, -1.092_548_430_592_079_2, 0.315_391_565_252_520_05, -1.092_548_430_592_079_2, 0.546_274_215_296_039_6];
+const SH_C2: [f64; 5] = [
+    1.092_548_430_592_079_2,
+    -1.092_548_430_592_079_2,
+    0.315_391_565_252_520_05,
+    -1.092_548_430_592_079_2,
+    0.546_274_215_296_039_6,
+];
 const SH_C3: [f64; 7] = [
     -0.590_043_589_926_643_5,
     2.890_611_442_640_554,
@@ -89,9 +98,21 @@ pub fn quat_to_mat(q: [f64; 4]) -> Option<[[f64; 3]; 3]> {
     }
     let [r, x, y, z] = q.map(|v| v / n);
     Some([
-        [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - r * z), 2.0 * (x * z + r * y)],
-        [2.0 * (x * y + r * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - r * x)],
-        [2.0 * (x * z - r * y), 2.0 * (y * z + r * x), 1.0 - 2.0 * (x * x + y * y)],
+        [
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y - r * z),
+            2.0 * (x * z + r * y),
+        ],
+        [
+            2.0 * (x * y + r * z),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z - r * x),
+        ],
+        [
+            2.0 * (x * z - r * y),
+            2.0 * (y * z + r * x),
+            1.0 - 2.0 * (x * x + y * y),
+        ],
     ])
 }
 
@@ -125,16 +146,30 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
     let tx = (p[0] / p[2]).clamp(-limx, limx) * p[2];
     let ty = (p[1] / p[2]).clamp(-limy, limy) * p[2];
     let z = p[2];
-    let j = [[cam.fx / z, 0.0, -cam.fx * tx / (z * z)], [0.0, cam.fy / z, -cam.fy * ty / (z * z)]];
+    let j = [
+        [cam.fx / z, 0.0, -cam.fx * tx / (z * z)],
+        [0.0, cam.fy / z, -cam.fy * ty / (z * z)],
+    ];
     // T = J * Rcw (2x3), cov2 = T Sigma T^T
-    let tm: [[f64; 3]; 2] = [0, 1].map(|r| [0, 1, 2].map(|c| (0..3).map(|q| j[r][q] * rcw[q][c]).sum()));
+    let tm: [[f64; 3]; 2] =
+        [0, 1].map(|r| [0, 1, 2].map(|c| (0..3).map(|q| j[r][q] * rcw[q][c]).sum()));
     let mut cov = [[0.0; 2]; 2];
     for a in 0..2 {
         for b in 0..2 {
-            cov[a][b] = (0..3).map(|u| (0..3).map(|v| tm[a][u] * sigma[u][v] * tm[b][v]).sum::<f64>()).sum();
+            cov[a][b] = (0..3)
+                .map(|u| {
+                    (0..3)
+                        .map(|v| tm[a][u] * sigma[u][v] * tm[b][v])
+                        .sum::<f64>()
+                })
+                .sum();
         }
     }
-    let (a, b, c) = (cov[0][0] + k::COV_BLUR as f64, cov[0][1], cov[1][1] + k::COV_BLUR as f64);
+    let (a, b, c) = (
+        cov[0][0] + k::COV_BLUR as f64,
+        cov[0][1],
+        cov[1][1] + k::COV_BLUR as f64,
+    );
     let det = a * c - b * b;
     if !(det > 0.0) {
         return None;
@@ -146,7 +181,10 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
     let l2 = mid - (mid * mid - det).max(0.1).sqrt();
     let radius = (3.0 * l1.max(l2).sqrt()).ceil();
     let ts = k::TILE as f64;
-    let (gx, gy) = (cam.width.div_ceil(k::TILE) as f64, cam.height.div_ceil(k::TILE) as f64);
+    let (gx, gy) = (
+        cam.width.div_ceil(k::TILE) as f64,
+        cam.height.div_ceil(k::TILE) as f64,
+    );
     // INRIA's rectangle, in its pixel coordinates (centre of pixel i at i).
     let (px, py) = (xy[0] - 0.5, xy[1] - 0.5);
     let rect = [
@@ -159,14 +197,22 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
         return None;
     }
     let dir = {
-        let d = [m[0] - cam.position[0], m[1] - cam.position[1], m[2] - cam.position[2]];
+        let d = [
+            m[0] - cam.position[0],
+            m[1] - cam.position[1],
+            m[2] - cam.position[2],
+        ];
         let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         d.map(|v| v / l)
     };
     let basis = sh_basis(g.sh_degree, dir);
     let kc = g.coeffs();
     let rgb = [0, 1, 2].map(|ch| {
-        let v: f64 = basis.iter().enumerate().map(|(ci, bv)| bv * g.sh[(i * kc + ci) * 3 + ch] as f64).sum();
+        let v: f64 = basis
+            .iter()
+            .enumerate()
+            .map(|(ci, bv)| bv * g.sh[(i * kc + ci) * 3 + ch] as f64)
+            .sum();
         v + 0.5
     });
     // A non-finite colour culls the splat (checked before the clamp, which would hide -inf).
@@ -175,10 +221,22 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
     }
     let rgb = rgb.map(|v| v.max(0.0));
     let opacity = sigmoid(g.opacities[i] as f64);
-    if !(opacity.is_finite() && rgb.iter().all(|v| v.is_finite()) && conic.iter().all(|v| v.is_finite())) {
+    if !(opacity.is_finite()
+        && rgb.iter().all(|v| v.is_finite())
+        && conic.iter().all(|v| v.is_finite()))
+    {
         return None;
     }
-    let pr = Projected { index: i, xy, conic, depth: z, opacity, rgb, radius, rect };
+    let pr = Projected {
+        index: i,
+        xy,
+        conic,
+        depth: z,
+        opacity,
+        rgb,
+        radius,
+        rect,
+    };
     if tile_count(&pr) == 0 {
         return None;
     }
@@ -211,7 +269,10 @@ pub fn tile_touched(p: &Projected, tx: u32, ty: u32) -> bool {
         return false;
     }
     let ts = k::TILE as f64;
-    let lo = [tx as f64 * ts + 0.5 - p.xy[0], ty as f64 * ts + 0.5 - p.xy[1]];
+    let lo = [
+        tx as f64 * ts + 0.5 - p.xy[0],
+        ty as f64 * ts + 0.5 - p.xy[1],
+    ];
     let hi = [lo[0] + ts - 1.0, lo[1] + ts - 1.0];
     0.5 * box_min_quadratic(p.conic, lo, hi) <= thr
 }
@@ -248,12 +309,16 @@ pub fn bin(projected: &[Projected], cam: &Camera) -> Vec<Vec<Projected>> {
 
 /// Renders `g` from `cam` over background `bg` (multithreaded over tiles).
 pub fn render(g: &Gaussians, cam: &Camera, bg: [f64; 3]) -> RefImage {
-    let projected: Vec<Projected> = (0..g.len()).into_par_iter().filter_map(|i| project(g, i, cam)).collect();
+    let projected: Vec<Projected> = (0..g.len())
+        .into_par_iter()
+        .filter_map(|i| project(g, i, cam))
+        .collect();
     let tiles = bin(&projected, cam);
     let (w, h) = (cam.width as usize, cam.height as usize);
     let gx = cam.width.div_ceil(k::TILE) as usize;
     let ts = k::TILE as usize;
-    let rows: Vec<(Vec<[f64; 3]>, Vec<f64>, Vec<f64>)> = (0..h)
+    type Row = (Vec<[f64; 3]>, Vec<f64>, Vec<f64>);
+    let rows: Vec<Row> = (0..h)
         .into_par_iter()
         .map(|y| {
             let mut row = (vec![[0.0; 3]; w], vec![0.0; w], vec![0.0; w]);
@@ -267,7 +332,13 @@ pub fn render(g: &Gaussians, cam: &Camera, bg: [f64; 3]) -> RefImage {
             row
         })
         .collect();
-    let mut img = RefImage { width: cam.width, height: cam.height, color: vec![], transmittance: vec![], depth: vec![] };
+    let mut img = RefImage {
+        width: cam.width,
+        height: cam.height,
+        color: vec![],
+        transmittance: vec![],
+        depth: vec![],
+    };
     for (c, t, d) in rows {
         img.color.extend(c);
         img.transmittance.extend(t);
@@ -296,8 +367,8 @@ pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64)
         if next < k::T_MIN as f64 {
             break;
         }
-        for ch in 0..3 {
-            c[ch] += p.rgb[ch] * alpha * t;
+        for (cc, rgb) in c.iter_mut().zip(p.rgb) {
+            *cc += rgb * alpha * t;
         }
         d += p.depth * alpha * t;
         t = next;

@@ -1,7 +1,9 @@
 //! Stable GPU radix sort of `u32` key / `u32` value pairs, 8 bits per pass, reduce-then-scan
 //! (no forward-progress assumptions, so it runs on lavapipe's subgroup size of 8).
 use super::scan::{Scan, ScanScratch};
-use crate::gpu::{groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream};
+use crate::gpu::{
+    groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream,
+};
 
 /// The radix-sort kernels.
 pub struct RadixSort {
@@ -26,9 +28,24 @@ impl SortScratch {
         let hist_len = blocks * kernels::SORT_RADIX;
         Ok(SortScratch {
             capacity: cap,
-            keys: Buffer::new(ctx, "sort keys (ping-pong)", cap as u64 * 4, BufferUsage::Device)?,
-            vals: Buffer::new(ctx, "sort values (ping-pong)", cap as u64 * 4, BufferUsage::Device)?,
-            hist: Buffer::new(ctx, "sort histogram", hist_len as u64 * 4, BufferUsage::Device)?,
+            keys: Buffer::new(
+                ctx,
+                "sort keys (ping-pong)",
+                cap as u64 * 4,
+                BufferUsage::Device,
+            )?,
+            vals: Buffer::new(
+                ctx,
+                "sort values (ping-pong)",
+                cap as u64 * 4,
+                BufferUsage::Device,
+            )?,
+            hist: Buffer::new(
+                ctx,
+                "sort histogram",
+                hist_len as u64 * 4,
+                BufferUsage::Device,
+            )?,
             scan: ScanScratch::new(ctx, hist_len)?,
         })
     }
@@ -64,9 +81,20 @@ impl RadixSort {
     /// Records a stable sort of the first `n` pairs of (`keys`, `vals`) by the low `bits` bits of
     /// the keys (higher bits must be zero or are ignored in order). The result is left in `keys`
     /// and `vals`.
-    pub fn record(&self, s: &mut Stream, keys: &Buffer, vals: &Buffer, n: u32, bits: u32, scratch: &SortScratch) -> Result<()> {
+    pub fn record(
+        &self,
+        s: &mut Stream,
+        keys: &Buffer,
+        vals: &Buffer,
+        n: u32,
+        bits: u32,
+        scratch: &SortScratch,
+    ) -> Result<()> {
         if n > scratch.capacity {
-            return Err(GpuError::Kernel { kernel: "sort".into(), msg: format!("{n} pairs with scratch for {}", scratch.capacity) });
+            return Err(GpuError::Kernel {
+                kernel: "sort".into(),
+                msg: format!("{n} pairs with scratch for {}", scratch.capacity),
+            });
         }
         if n <= 1 || bits == 0 {
             return Ok(());
@@ -75,14 +103,29 @@ impl RadixSort {
         let num_blocks = n.div_ceil(kernels::SORT_BLOCK);
         let hist_len = num_blocks * kernels::SORT_RADIX;
         for pass in 0..passes {
-            let (src_k, src_v, dst_k, dst_v) =
-                if pass % 2 == 0 { (keys, vals, &scratch.keys, &scratch.vals) } else { (&scratch.keys, &scratch.vals, keys, vals) };
+            let (src_k, src_v, dst_k, dst_v) = if pass % 2 == 0 {
+                (keys, vals, &scratch.keys, &scratch.vals)
+            } else {
+                (&scratch.keys, &scratch.vals, keys, vals)
+            };
             let push = [n, pass * 8, num_blocks];
-            s.dispatch(&self.count, &[("keys", src_k), ("hist", &scratch.hist)], bytemuck::bytes_of(&push), groups_for(num_blocks))?;
-            self.scan.record(s, &scratch.hist, hist_len, &scratch.scan)?;
+            s.dispatch(
+                &self.count,
+                &[("keys", src_k), ("hist", &scratch.hist)],
+                bytemuck::bytes_of(&push),
+                groups_for(num_blocks),
+            )?;
+            self.scan
+                .record(s, &scratch.hist, hist_len, &scratch.scan)?;
             s.dispatch(
                 &self.scatter,
-                &[("keys_in", src_k), ("vals_in", src_v), ("keys_out", dst_k), ("vals_out", dst_v), ("offsets", &scratch.hist)],
+                &[
+                    ("keys_in", src_k),
+                    ("vals_in", src_v),
+                    ("keys_out", dst_k),
+                    ("vals_out", dst_v),
+                    ("offsets", &scratch.hist),
+                ],
                 bytemuck::bytes_of(&push),
                 groups_for(num_blocks),
             )?;
@@ -95,7 +138,13 @@ impl RadixSort {
     }
 
     /// Sorts host data on the device: a convenience for tests and tools.
-    pub fn sort_pairs(&self, ctx: &Context, keys: &[u32], vals: &[u32], bits: u32) -> Result<(Vec<u32>, Vec<u32>)> {
+    pub fn sort_pairs(
+        &self,
+        ctx: &Context,
+        keys: &[u32],
+        vals: &[u32],
+        bits: u32,
+    ) -> Result<(Vec<u32>, Vec<u32>)> {
         assert_eq!(keys.len(), vals.len(), "keys and values differ in length");
         let n = keys.len() as u32;
         let kb = Buffer::from_slice(ctx, "sort keys", keys)?;

@@ -6,9 +6,13 @@ use rand::SeedableRng;
 /// Opens the Vulkan device. A GPU test never passes without one: no device is a failure, with
 /// the reason (install mesa-vulkan-drivers for lavapipe).
 pub fn gpu() -> Context {
-    let ctx = Context::new().unwrap_or_else(|e| panic!("GPU test needs a Vulkan device and found none: {e}"));
+    let ctx = Context::new()
+        .unwrap_or_else(|e| panic!("GPU test needs a Vulkan device and found none: {e}"));
     if std::env::var("DREAMSCENE_REQUIRE_VALIDATION").is_ok_and(|v| v == "1") {
-        assert!(ctx.info().validation, "validation layer required but not active");
+        assert!(
+            ctx.info().validation,
+            "validation layer required but not active"
+        );
     }
     ctx
 }
