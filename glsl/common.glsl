@@ -5,6 +5,20 @@
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_shuffle : require
 
+// Float atomic add on a storage buffer declared with ATOMIC_FLOAT element type. build.rs also
+// compiles every kernel using it with CAS_ATOMICS, for devices without shaderBufferFloat32AtomicAdd.
+#ifdef CAS_ATOMICS
+#define ATOMIC_FLOAT uint
+// Bounded retries (lavapipe cuts long loops); updates are pre-reduced per subgroup, so contention is low.
+#define FLOAT_ATOMIC_ADD(buf, idx, val) { uint i_ = (idx); float v_ = (val); uint old_ = buf.data[i_]; \
+    for (uint k_ = 0u; k_ < 4096u; k_++) { uint prev_ = atomicCompSwap(buf.data[i_], old_, floatBitsToUint(uintBitsToFloat(old_) + v_)); \
+        if (prev_ == old_) break; old_ = prev_; } }
+#else
+#extension GL_EXT_shader_atomic_float : require
+#define ATOMIC_FLOAT float
+#define FLOAT_ATOMIC_ADD(buf, idx, val) atomicAdd(buf.data[idx], (val))
+#endif
+
 layout(local_size_x_id = 0) in;
 
 // Storage buffers are declared with an instance name: the host binds them by that name.

@@ -5,6 +5,7 @@ pub mod ply;
 pub mod raster;
 pub mod reference;
 pub mod scan;
+pub mod score;
 pub mod sort;
 
 pub use cloud::Gaussians;

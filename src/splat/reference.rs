@@ -375,3 +375,51 @@ pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64)
     }
     (c, t, d)
 }
+
+/// The filtering score of one view (see `splat::score`): `paper` selects
+/// sum V / (z^2 maxV(ray)), otherwise the code's sum 1 / z^2, over contributing (pixel, Gaussian) pairs.
+pub fn score(g: &Gaussians, cam: &Camera, paper: bool) -> Vec<f64> {
+    let projected: Vec<Projected> = (0..g.len()).filter_map(|i| project(g, i, cam)).collect();
+    let tiles = bin(&projected, cam);
+    let gx = cam.width.div_ceil(k::TILE) as usize;
+    let ts = k::TILE as usize;
+    let volume = |i: usize| g.scales[i].iter().map(|&s| s as f64).sum::<f64>().exp();
+    let mut out = vec![0.0; g.len()];
+    for y in 0..cam.height as usize {
+        for x in 0..cam.width as usize {
+            let list = &tiles[(y / ts) * gx + x / ts];
+            let contrib = contributors(list, x as f64 + 0.5, y as f64 + 0.5);
+            let maxv = contrib.iter().map(|p| volume(p.index)).fold(0.0, f64::max);
+            for p in contrib {
+                let w = 1.0 / (p.depth * p.depth);
+                out[p.index] += if paper { volume(p.index) * w / maxv } else { w };
+            }
+        }
+    }
+    out
+}
+
+/// The splats that contribute to a pixel under the blending rules, front to back.
+pub fn contributors(list: &[Projected], px: f64, py: f64) -> Vec<Projected> {
+    let mut t = 1.0;
+    let mut out = Vec::new();
+    for p in list {
+        let dx = p.xy[0] - px;
+        let dy = p.xy[1] - py;
+        let power = -0.5 * (p.conic[0] * dx * dx + p.conic[2] * dy * dy) - p.conic[1] * dx * dy;
+        if power > 0.0 {
+            continue;
+        }
+        let alpha = (p.opacity * power.exp()).min(k::ALPHA_MAX as f64);
+        if alpha < k::ALPHA_MIN as f64 {
+            continue;
+        }
+        let next = t * (1.0 - alpha);
+        if next < k::T_MIN as f64 {
+            break;
+        }
+        out.push(*p);
+        t = next;
+    }
+    out
+}
