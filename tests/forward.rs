@@ -19,15 +19,21 @@ fn front_camera(w: u32, h: u32) -> Camera {
 /// Largest absolute differences (colour, transmittance, depth / max depth) between GPU and CPU.
 fn compare(gpu: &RenderOutput, cpu: &RefImage) -> (f64, f64, f64) {
     assert_eq!(gpu.color.len(), cpu.color.len());
+    // A NaN difference (e.g. an output the kernel never wrote) counts as infinitely wrong;
+    // f64::max alone would skip it.
+    let worst = |m: f64, d: f64| if d.is_nan() { f64::INFINITY } else { m.max(d) };
     let mut dc: f64 = 0.0;
     let mut dt: f64 = 0.0;
     let mut dd: f64 = 0.0;
     for i in 0..gpu.color.len() {
         for c in 0..3 {
-            dc = dc.max((gpu.color[i][c] as f64 - cpu.color[i][c]).abs());
+            dc = worst(dc, (gpu.color[i][c] as f64 - cpu.color[i][c]).abs());
         }
-        dt = dt.max((gpu.transmittance[i] as f64 - cpu.transmittance[i]).abs());
-        dd = dd.max((gpu.depth[i] as f64 - cpu.depth[i]).abs() / 4.0);
+        dt = worst(
+            dt,
+            (gpu.transmittance[i] as f64 - cpu.transmittance[i]).abs(),
+        );
+        dd = worst(dd, (gpu.depth[i] as f64 - cpu.depth[i]).abs() / 4.0);
         assert!(
             gpu.color[i].iter().all(|v| v.is_finite()),
             "non-finite pixel {i}"

@@ -6,6 +6,9 @@ use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 use gpu_allocator::MemoryLocation;
 use std::sync::Arc;
 
+/// The word fresh device buffers hold in debug builds: a quiet NaN as f32, huge as u32.
+pub const GARBAGE: u32 = 0x7fc0_dead;
+
 /// Where a buffer lives.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BufferUsage {
@@ -110,13 +113,19 @@ impl Buffer {
             return Err(vk_err("vkBindBufferMemory")(e));
         }
         shared.name_object(raw, name);
-        Ok(Buffer {
+        let buf = Buffer {
             shared,
             raw,
             alloc: Some(alloc),
             size,
             name: name.to_string(),
-        })
+        };
+        if cfg!(debug_assertions) && usage == BufferUsage::Device {
+            // Debug builds and tests fill fresh device buffers with a NaN pattern, so a kernel
+            // that forgets to write its output fails the comparison with the CPU reference.
+            buf.fill_words(GARBAGE)?;
+        }
+        Ok(buf)
     }
 
     /// A device buffer holding `data`.
@@ -131,8 +140,17 @@ impl Buffer {
         Ok(b)
     }
 
-    /// A device buffer of `len` elements of `T`, filled with a recognisable garbage pattern
-    /// (NaN-like words) in debug builds so a kernel that forgets to write is caught.
+    /// Fills the whole buffer with the 32-bit word `word`.
+    pub fn fill_words(&self, word: u32) -> Result<()> {
+        let ctx = Context {
+            shared: self.shared.clone(),
+        };
+        let mut s = super::Stream::new(&ctx)?;
+        s.fill(self, word);
+        s.submit().map(|_| ())
+    }
+
+    /// A device buffer of `len` zeroed elements of `T`.
     pub fn zeroed<T: bytemuck::Pod>(ctx: &Context, name: &str, len: usize) -> Result<Buffer> {
         let b = Buffer::new(
             ctx,

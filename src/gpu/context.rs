@@ -24,10 +24,10 @@ pub struct DeviceInfo {
 }
 
 pub(crate) struct Shared {
+    /// Keeps the Vulkan loader library loaded while the device lives.
     pub _entry: ash::Entry,
     pub instance: ash::Instance,
     pub device: ash::Device,
-    pub _physical: vk::PhysicalDevice,
     pub queue: Mutex<vk::Queue>,
     pub queue_family: u32,
     pub allocator: Mutex<Option<Allocator>>,
@@ -241,7 +241,7 @@ impl Context {
                 return Err(e);
             }
         };
-        match open_device(entry.clone(), instance.clone(), physical, validation) {
+        match open_device(instance.clone(), physical) {
             Ok((device, queue_family, info, push_descriptor, float_atomics)) => {
                 let debug_device =
                     validation.then(|| ash::ext::debug_utils::Device::new(&instance, &device));
@@ -257,13 +257,12 @@ impl Context {
                 })
                 .map_err(|e| GpuError::NoDevice(format!("gpu-allocator: {e}")))?;
                 let mut info = info;
-                info.float_atomics = float_atomics;
+                debug_assert_eq!(info.float_atomics, float_atomics);
                 info.validation = validation;
                 let shared = Shared {
                     _entry: entry,
                     instance,
                     device,
-                    _physical: physical,
                     queue: Mutex::new(queue),
                     queue_family,
                     allocator: Mutex::new(Some(allocator)),
@@ -347,7 +346,6 @@ fn select_device(instance: &ash::Instance, selector: Option<&str>) -> Result<vk:
                 .unwrap_or_default();
             (p, name, props.device_type)
         })
-        .filter(|(_, _, _)| true)
         .collect();
     if named.is_empty() {
         return Err(GpuError::NoDevice(
@@ -385,12 +383,7 @@ type Opened = (
     bool,
 );
 
-fn open_device(
-    _entry: ash::Entry,
-    instance: ash::Instance,
-    physical: vk::PhysicalDevice,
-    validation: bool,
-) -> Result<Opened> {
+fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<Opened> {
     // SAFETY: queries on a live physical device.
     let (props, sg, exts, qfams, af) = unsafe {
         let mut sg = vk::PhysicalDeviceSubgroupProperties::default();
@@ -512,7 +505,7 @@ fn open_device(
         } else {
             0.0
         },
-        validation,
+        validation: false, // set by the caller
     };
     Ok((device, queue_family, info, push_descriptor, af))
 }

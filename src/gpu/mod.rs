@@ -9,7 +9,7 @@ mod error;
 mod kernel;
 mod stream;
 
-pub use buffer::{Buffer, BufferUsage};
+pub use buffer::{Buffer, BufferUsage, GARBAGE};
 pub use context::{Context, DeviceInfo};
 pub use error::{GpuError, Result};
 pub use kernel::{Kernel, KernelSource};

@@ -347,11 +347,15 @@ pub fn render(g: &Gaussians, cam: &Camera, bg: [f64; 3]) -> RefImage {
     img
 }
 
-/// Front-to-back blend of one pixel centre: (colour without background, transmittance, depth).
-pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64) {
+/// Walks the splats that contribute to a pixel centre under the blending rules, front to back,
+/// calling `f(splat, alpha, T before it)`; returns the final transmittance.
+pub fn walk_pixel(
+    list: &[Projected],
+    px: f64,
+    py: f64,
+    mut f: impl FnMut(&Projected, f64, f64),
+) -> f64 {
     let mut t = 1.0;
-    let mut c = [0.0; 3];
-    let mut d = 0.0;
     for p in list {
         let dx = p.xy[0] - px;
         let dy = p.xy[1] - py;
@@ -367,12 +371,22 @@ pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64)
         if next < k::T_MIN as f64 {
             break;
         }
+        f(p, alpha, t);
+        t = next;
+    }
+    t
+}
+
+/// Front-to-back blend of one pixel centre: (colour without background, transmittance, depth).
+pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64) {
+    let mut c = [0.0; 3];
+    let mut d = 0.0;
+    let t = walk_pixel(list, px, py, |p, alpha, t| {
         for (cc, rgb) in c.iter_mut().zip(p.rgb) {
             *cc += rgb * alpha * t;
         }
         d += p.depth * alpha * t;
-        t = next;
-    }
+    });
     (c, t, d)
 }
 
@@ -401,25 +415,7 @@ pub fn score(g: &Gaussians, cam: &Camera, paper: bool) -> Vec<f64> {
 
 /// The splats that contribute to a pixel under the blending rules, front to back.
 pub fn contributors(list: &[Projected], px: f64, py: f64) -> Vec<Projected> {
-    let mut t = 1.0;
     let mut out = Vec::new();
-    for p in list {
-        let dx = p.xy[0] - px;
-        let dy = p.xy[1] - py;
-        let power = -0.5 * (p.conic[0] * dx * dx + p.conic[2] * dy * dy) - p.conic[1] * dx * dy;
-        if power > 0.0 {
-            continue;
-        }
-        let alpha = (p.opacity * power.exp()).min(k::ALPHA_MAX as f64);
-        if alpha < k::ALPHA_MIN as f64 {
-            continue;
-        }
-        let next = t * (1.0 - alpha);
-        if next < k::T_MIN as f64 {
-            break;
-        }
-        out.push(*p);
-        t = next;
-    }
+    walk_pixel(list, px, py, |p, _, _| out.push(*p));
     out
 }
