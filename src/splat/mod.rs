@@ -4,6 +4,7 @@ pub mod cloud;
 pub mod ply;
 pub mod raster;
 pub mod reference;
+pub mod reference_grad;
 pub mod scan;
 pub mod score;
 pub mod sort;

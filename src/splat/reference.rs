@@ -119,6 +119,17 @@ pub fn quat_to_mat(q: [f64; 4]) -> Option<[[f64; 3]; 3]> {
 /// Projects Gaussian `i`, or `None` when it is culled (behind the near plane, degenerate,
 /// non-finite, off-screen, or too transparent to touch any tile).
 pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
+    let pr = project_raw(g, i, cam)?;
+    if pr.rect[2] <= pr.rect[0] || pr.rect[3] <= pr.rect[1] || tile_count(&pr) == 0 {
+        return None;
+    }
+    Some(pr)
+}
+
+/// Projection without the screen-space culling (tile rectangle and alpha cutoff): `None` only
+/// behind the near plane or for degenerate or non-finite Gaussians. The smooth rendering mode of
+/// the gradient checks uses it.
+pub fn project_raw(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
     let (rcw, t) = cam.world_to_camera();
     let m = g.means[i].map(f64::from);
     if !m.iter().all(|v| v.is_finite()) {
@@ -193,9 +204,6 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
         ((px + radius + ts - 1.0) / ts).floor().clamp(0.0, gx) as u32,
         ((py + radius + ts - 1.0) / ts).floor().clamp(0.0, gy) as u32,
     ];
-    if rect[2] <= rect[0] || rect[3] <= rect[1] {
-        return None;
-    }
     let dir = {
         let d = [
             m[0] - cam.position[0],
@@ -227,7 +235,7 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
     {
         return None;
     }
-    let pr = Projected {
+    Some(Projected {
         index: i,
         xy,
         conic,
@@ -236,11 +244,7 @@ pub fn project(g: &Gaussians, i: usize, cam: &Camera) -> Option<Projected> {
         rgb,
         radius,
         rect,
-    };
-    if tile_count(&pr) == 0 {
-        return None;
-    }
-    Some(pr)
+    })
 }
 
 /// Minimum of `a dx^2 + 2 b dx dy + c dy^2` over the box `[lo, hi]` of offsets (a, c > 0).
@@ -309,11 +313,34 @@ pub fn bin(projected: &[Projected], cam: &Camera) -> Vec<Vec<Projected>> {
 
 /// Renders `g` from `cam` over background `bg` (multithreaded over tiles).
 pub fn render(g: &Gaussians, cam: &Camera, bg: [f64; 3]) -> RefImage {
-    let projected: Vec<Projected> = (0..g.len())
-        .into_par_iter()
-        .filter_map(|i| project(g, i, cam))
-        .collect();
-    let tiles = bin(&projected, cam);
+    render_with(g, cam, bg, Cutoffs::Exact)
+}
+
+/// Per-tile splat lists under `cutoffs`: binned and culled (exact), or every projectable splat
+/// in depth order for every tile (smooth).
+pub fn tile_lists(g: &Gaussians, cam: &Camera, cutoffs: Cutoffs) -> Vec<Vec<Projected>> {
+    match cutoffs {
+        Cutoffs::Exact => {
+            let projected: Vec<Projected> = (0..g.len())
+                .into_par_iter()
+                .filter_map(|i| project(g, i, cam))
+                .collect();
+            bin(&projected, cam)
+        }
+        Cutoffs::Smooth => {
+            let mut all: Vec<Projected> = (0..g.len())
+                .filter_map(|i| project_raw(g, i, cam))
+                .collect();
+            all.sort_by(|a, b| a.depth.total_cmp(&b.depth).then(a.index.cmp(&b.index)));
+            let n = (cam.width.div_ceil(k::TILE) * cam.height.div_ceil(k::TILE)) as usize;
+            vec![all; n]
+        }
+    }
+}
+
+/// [`render`] with a choice of cutoffs.
+pub fn render_with(g: &Gaussians, cam: &Camera, bg: [f64; 3], cutoffs: Cutoffs) -> RefImage {
+    let tiles = tile_lists(g, cam, cutoffs);
     let (w, h) = (cam.width as usize, cam.height as usize);
     let gx = cam.width.div_ceil(k::TILE) as usize;
     let ts = k::TILE as usize;
@@ -324,7 +351,7 @@ pub fn render(g: &Gaussians, cam: &Camera, bg: [f64; 3]) -> RefImage {
             let mut row = (vec![[0.0; 3]; w], vec![0.0; w], vec![0.0; w]);
             for x in 0..w {
                 let list = &tiles[(y / ts) * gx + x / ts];
-                let (c, t, d) = blend_pixel(list, x as f64 + 0.5, y as f64 + 0.5);
+                let (c, t, d) = blend_pixel_with(list, x as f64 + 0.5, y as f64 + 0.5, cutoffs);
                 row.0[x] = [0, 1, 2].map(|ch| c[ch] + t * bg[ch]);
                 row.1[x] = t;
                 row.2[x] = d;
@@ -355,6 +382,30 @@ pub fn walk_pixel(
     py: f64,
     mut f: impl FnMut(&Projected, f64, f64),
 ) -> f64 {
+    walk_pixel_with(list, px, py, Cutoffs::Exact, |p, alpha, t, _| {
+        f(p, alpha, t)
+    })
+}
+
+/// Which discontinuities blending has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cutoffs {
+    /// INRIA semantics: skip alpha < 1/255, stop before T < 1e-4 (and tile culling when binning).
+    Exact,
+    /// No alpha skip and no early stop, every splat in every tile: a differentiable function of
+    /// the parameters for finite-difference checks (the 0.99 clamp stays; keep opacities below it).
+    Smooth,
+}
+
+/// [`walk_pixel`] with a choice of cutoffs; `f` also gets whether alpha hit its 0.99 clamp.
+pub fn walk_pixel_with(
+    list: &[Projected],
+    px: f64,
+    py: f64,
+    cutoffs: Cutoffs,
+    mut f: impl FnMut(&Projected, f64, f64, bool),
+) -> f64 {
+    let exact = cutoffs == Cutoffs::Exact;
     let mut t = 1.0;
     for p in list {
         let dx = p.xy[0] - px;
@@ -363,15 +414,17 @@ pub fn walk_pixel(
         if power > 0.0 {
             continue;
         }
-        let alpha = (p.opacity * power.exp()).min(k::ALPHA_MAX as f64);
-        if alpha < k::ALPHA_MIN as f64 {
+        let raw = p.opacity * power.exp();
+        let clamped = raw > k::ALPHA_MAX as f64;
+        let alpha = raw.min(k::ALPHA_MAX as f64);
+        if exact && alpha < k::ALPHA_MIN as f64 {
             continue;
         }
         let next = t * (1.0 - alpha);
-        if next < k::T_MIN as f64 {
+        if exact && next < k::T_MIN as f64 {
             break;
         }
-        f(p, alpha, t);
+        f(p, alpha, t, clamped);
         t = next;
     }
     t
@@ -379,9 +432,19 @@ pub fn walk_pixel(
 
 /// Front-to-back blend of one pixel centre: (colour without background, transmittance, depth).
 pub fn blend_pixel(list: &[Projected], px: f64, py: f64) -> ([f64; 3], f64, f64) {
+    blend_pixel_with(list, px, py, Cutoffs::Exact)
+}
+
+/// [`blend_pixel`] with a choice of cutoffs.
+pub fn blend_pixel_with(
+    list: &[Projected],
+    px: f64,
+    py: f64,
+    cutoffs: Cutoffs,
+) -> ([f64; 3], f64, f64) {
     let mut c = [0.0; 3];
     let mut d = 0.0;
-    let t = walk_pixel(list, px, py, |p, alpha, t| {
+    let t = walk_pixel_with(list, px, py, cutoffs, |p, alpha, t, _| {
         for (cc, rgb) in c.iter_mut().zip(p.rgb) {
             *cc += rgb * alpha * t;
         }
