@@ -11,6 +11,8 @@ const float CULL_MARGIN = 0.01; // export
 // Splats of one tile blended per dispatch: lavapipe cuts every invocation after 65,535 loop
 // iterations, and the blend loop makes about SEGMENT * (1 + 1/subgroup) of them.
 const uint SEGMENT = 16384u; // export
+// The same for the blend backward built with CAS atomics (nine CAS loops per splat per subgroup).
+const uint SEGMENT_CAS = 2048u; // export
 // Floats per projected splat: (x, y, depth, opacity), (conic a, b, c, radius), (r, g, b, 0).
 const uint PROJ_STRIDE = 12u; // export
 

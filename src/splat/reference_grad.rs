@@ -98,6 +98,46 @@ pub fn backward(
     (g2, out)
 }
 
+/// Gaussians that sit within relative distance `rel` of a blending cutoff (alpha = 1/255,
+/// alpha = 0.99, T = 1e-4) at some pixel. Whether such a splat counts there depends on rounding,
+/// so f32 and f64 may legitimately disagree about its gradient; tests leave these out.
+pub fn near_cutoffs(g: &Gaussians, cam: &Camera, rel: f64) -> Vec<bool> {
+    let tiles = r::tile_lists(g, cam, Cutoffs::Exact);
+    let gx = cam.width.div_ceil(k::TILE) as usize;
+    let ts = k::TILE as usize;
+    let near = |v: f64, at: f64| (v / at - 1.0).abs() < rel;
+    let mut out = vec![false; g.len()];
+    for y in 0..cam.height as usize {
+        for x in 0..cam.width as usize {
+            let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+            let mut t = 1.0;
+            for p in &tiles[(y / ts) * gx + x / ts] {
+                let dx = p.xy[0] - px;
+                let dy = p.xy[1] - py;
+                let power =
+                    -0.5 * (p.conic[0] * dx * dx + p.conic[2] * dy * dy) - p.conic[1] * dx * dy;
+                let raw = p.opacity * power.exp();
+                let alpha = raw.min(k::ALPHA_MAX as f64);
+                let next = t * (1.0 - alpha);
+                if near(raw, k::ALPHA_MIN as f64)
+                    || near(raw, k::ALPHA_MAX as f64)
+                    || (alpha >= k::ALPHA_MIN as f64 && near(next, k::T_MIN as f64))
+                {
+                    out[p.index] = true;
+                }
+                if power > 0.0 || alpha < k::ALPHA_MIN as f64 {
+                    continue;
+                }
+                if next < k::T_MIN as f64 {
+                    break;
+                }
+                t = next;
+            }
+        }
+    }
+    out
+}
+
 /// The blend backward: per-Gaussian screen-space gradients summed over all pixels.
 pub fn blend_backward(
     tiles: &[Vec<Projected>],

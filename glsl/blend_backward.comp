@@ -1,0 +1,120 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Backward of the alpha blend for one segment (seg_len splats) of every tile's list: one
+// workgroup per 16x16 tile, one pixel per invocation, splats broadcast by subgroupShuffle as in
+// the forward. Each pixel walks front to back again (same decisions as the forward, bounded by
+// its last contributor) and needs no division by T: with C_full the final colour (background
+// included) and C_j the colour up to and including splat j,
+//     dC/dalpha_j = T_j c_j - (C_full - C_j) / (1 - alpha_j).
+// A splat's nine screen-space gradients are summed over the subgroup's pixels (subgroupAdd) and
+// added to its per-Gaussian slot with one float atomic per value. Running colour and T carry over
+// to the next segment through `state`. Segments are SEGMENT splats long, or SEGMENT_CAS where
+// atomics are compare-and-swap loops, whose iterations count against lavapipe's loop limit too.
+#include "common.glsl"
+#include "raster.glsl"
+
+BUF_RO(0, vec4, proj);
+BUF_RO(1, uint, isect_ids);
+BUF_RO(2, uvec2, ranges);
+BUF_RO(3, vec4, color);       // forward: rgb without background, final T
+BUF_RO(4, uint, last);        // forward: one past the last contributor; bit 31 = done
+BUF_RO(5, vec4, grad_color);  // dL/d(pixel colour over the background), rgb
+BUF_RW(6, vec4, state);       // running colour and T between segments
+BUF_RW(7, ATOMIC_FLOAT, grad2d); // per Gaussian: d xy (2), d conic (3), d opacity, d rgb (3)
+layout(push_constant) uniform Push { uint width; uint height; uint tiles_x; uint seg_begin; uint seg_len; uint first;
+                                     float bg_r; float bg_g; float bg_b; } pc;
+
+void main() {
+    uint tile = group_linear();
+    uint t = gl_LocalInvocationID.x;
+    uint tx = tile % pc.tiles_x, ty = tile / pc.tiles_x;
+    uint px = tx * TILE + (t % TILE), py = ty * TILE + (t / TILE);
+    bool inside = px < pc.width && py < pc.height;
+    uint pix = py * pc.width + px;
+    vec2 pf = vec2(px, py) + 0.5;
+
+    vec3 full = vec3(0.0), gc = vec3(0.0), run = vec3(0.0);
+    float T = 1.0;
+    uint lastc = 0u;
+    if (inside) {
+        vec4 c = color.data[pix];
+        full = c.rgb + c.a * vec3(pc.bg_r, pc.bg_g, pc.bg_b);
+        gc = grad_color.data[pix].rgb;
+        lastc = last.data[pix] & 0x7fffffffu;
+        if (pc.first == 0u) { vec4 s = state.data[pix]; run = s.rgb; T = s.a; }
+    }
+    uvec2 range = ranges.data[tile];
+    uint begin = range.x + pc.seg_begin;
+    uint end = min(range.y, begin + pc.seg_len);
+    uint n = begin < end ? end - begin : 0u;
+    // Tile-relative index of this segment's first splat; pixels are done past their last contributor.
+    uint rel0 = pc.seg_begin;
+    bool done = !inside || rel0 >= lastc;
+    uint sg = gl_SubgroupSize;
+    uint lane = gl_SubgroupInvocationID;
+    for (uint b = 0u; b < n; b += sg) {
+        if (subgroupAll(done)) break;
+        vec4 p0 = vec4(0.0), p1 = vec4(0.0), p2 = vec4(0.0);
+        uint gid = 0u;
+        if (b + lane < n) {
+            gid = isect_ids.data[begin + b + lane];
+            p0 = proj.data[3u * gid]; p1 = proj.data[3u * gid + 1u]; p2 = proj.data[3u * gid + 2u];
+        }
+        uint cnt = min(sg, n - b);
+        for (uint j = 0u; j < cnt; j++) {
+            vec4 q0 = subgroupShuffle(p0, j);
+            vec4 q1 = subgroupShuffle(p1, j);
+            vec3 q2 = subgroupShuffle(p2.xyz, j);
+            uint g = subgroupShuffle(gid, j);
+            if (!done && rel0 + b + j >= lastc) done = true;
+            vec4 v0 = vec4(0.0), v1 = vec4(0.0);
+            float v2 = 0.0;
+            bool contrib = false;
+            if (!done) {
+                vec2 d = q0.xy - pf;
+                float power = -0.5 * (q1.x * d.x * d.x + q1.z * d.y * d.y) - q1.y * d.x * d.y;
+                float gauss = exp(power);
+                float raw = q0.w * gauss;
+                float alpha = min(ALPHA_MAX, raw);
+                float nextT = T * (1.0 - alpha);
+                if (power <= 0.0 && alpha >= ALPHA_MIN) {
+                    if (nextT < T_MIN) {
+                        done = true;
+                    } else {
+                        contrib = true;
+                        float w = alpha * T;
+                        run += q2 * w;
+                        vec3 behind = (full - run) / (1.0 - alpha);
+                        float dalpha = dot(gc, q2 * T - behind);
+                        vec3 grgb = gc * w;
+                        float dopa = 0.0, dpow = 0.0;
+                        if (raw <= ALPHA_MAX) { dopa = dalpha * gauss; dpow = dalpha * alpha; }
+                        vec2 dxy = -dpow * vec2(q1.x * d.x + q1.y * d.y, q1.z * d.y + q1.y * d.x);
+                        v0 = vec4(dxy, -0.5 * dpow * d.x * d.x, -dpow * d.x * d.y);
+                        v1 = vec4(-0.5 * dpow * d.y * d.y, dopa, grgb.rg);
+                        v2 = grgb.b;
+                        T = nextT;
+                    }
+                }
+            }
+            if (subgroupAny(contrib)) {
+                vec4 s0 = subgroupAdd(v0);
+                vec4 s1 = subgroupAdd(v1);
+                float s2 = subgroupAdd(v2);
+                if (subgroupElect()) {
+                    uint o = 9u * g;
+                    FLOAT_ATOMIC_ADD(grad2d, o, s0.x);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 1u, s0.y);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 2u, s0.z);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 3u, s0.w);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 4u, s1.x);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 5u, s1.y);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 6u, s1.z);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 7u, s1.w);
+                    FLOAT_ATOMIC_ADD(grad2d, o + 8u, s2);
+                }
+            }
+        }
+    }
+    if (inside) state.data[pix] = vec4(run, T);
+}
