@@ -75,7 +75,7 @@ fn run(ctx: &Context, bwd: &Backward, g: &Gaussians, cam: &Camera, bg: [f32; 3],
     let frame = r.forward(ctx, &gg, cam, bg).unwrap();
     let grads = GpuGrads::new(ctx, g.len() as u32, g.sh_degree).unwrap();
     let dlb = Buffer::from_slice(ctx, "dL/dcolour", &dl).unwrap();
-    bwd.run(ctx, &frame, &gg, cam, &dlb, &grads, false).unwrap();
+    bwd.run(ctx, &frame, &gg, cam, &dlb, &grads).unwrap();
     let gpu = grads.download().unwrap();
     // The screen-space slots are cleared for the next view.
     let g2: Vec<f32> = grads.grad2d.read(g.len() * 9).unwrap();

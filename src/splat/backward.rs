@@ -116,6 +116,7 @@ pub struct Backward {
     blend: Kernel,
     project: Kernel,
     seg_len: u32,
+    timed: bool,
 }
 
 impl Backward {
@@ -131,7 +132,13 @@ impl Backward {
             blend: Kernel::new(ctx, src, kernels::TILE * kernels::TILE)?,
             project: Kernel::new(ctx, kernels::PROJECT_BACKWARD, WG)?,
             seg_len,
+            timed: false,
         })
+    }
+
+    /// Records per-dispatch GPU times into the timings `run` returns.
+    pub fn set_timed(&mut self, timed: bool) {
+        self.timed = timed;
     }
 
     /// Records the backward of `frame` (rendered from `g` and `cam`) for the per-pixel colour
@@ -231,7 +238,7 @@ impl Backward {
     }
 
     /// Runs the backward of `frame` for the colour gradient `dl_dcolor` (`[f32; 4]` per pixel),
-    /// adding to `grads`; returns the GPU timings when `timed`.
+    /// adding to `grads`; returns the GPU timings (empty unless [`Backward::set_timed`]).
     pub fn run(
         &self,
         ctx: &Context,
@@ -240,11 +247,10 @@ impl Backward {
         cam: &Camera,
         dl_dcolor: &Buffer,
         grads: &GpuGrads,
-        timed: bool,
     ) -> Result<Timings> {
         let np = frame.width as u64 * frame.height as u64;
         let state = Buffer::new(ctx, "backward pixel state", np * 16, BufferUsage::Device)?;
-        let mut s = if timed {
+        let mut s = if self.timed {
             Stream::timed(ctx, 64)?
         } else {
             Stream::new(ctx)?
