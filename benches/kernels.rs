@@ -1,9 +1,9 @@
-//! Kernel throughput: radix sort and the full forward pass at 10k, 100k and 1M Gaussians
+//! Kernel throughput: radix sort, the full forward pass and the backward pass at 10k, 100k and 1M Gaussians
 //! (512x512), beside the multithreaded CPU reference. `cargo bench --bench kernels`.
 //!
 //! Sizes: 10k is a single object early in optimisation, 100k a finished object, 1M a whole scene.
 //! Under `cargo test` (no `--bench` argument) it runs one tiny size as a smoke test.
-use dreamscene::bench::{bench_cpu_forward, bench_forward, bench_sort};
+use dreamscene::bench::{bench_backward, bench_cpu_forward, bench_forward, bench_sort};
 use dreamscene::gpu::Context;
 
 fn main() -> anyhow::Result<()> {
@@ -39,6 +39,14 @@ fn main() -> anyhow::Result<()> {
             f.gaussian_pixels_per_s / 1e6,
             c.ms,
             c.gaussian_pixels_per_s / 1e6
+        );
+        let b = bench_backward(&ctx, n, 512, 512, runs)?;
+        println!(
+            "backward {:>7} gaussians 512x512 ({} intersections): GPU {:>8.2} ms {:>7.2} M gaussian-pixels/s",
+            n,
+            b.intersections,
+            b.ms,
+            b.gaussian_pixels_per_s / 1e6
         );
     }
     Ok(())

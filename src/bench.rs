@@ -3,6 +3,7 @@
 //! inside it. Each figure is the median of `runs` runs after two warm-ups.
 use crate::camera::Camera;
 use crate::gpu::{Buffer, Context, Result, Stream};
+use crate::splat::backward::{Backward, GpuGrads};
 use crate::splat::raster::{GpuGaussians, Rasterizer};
 use crate::splat::sort::{RadixSort, SortScratch};
 use crate::splat::{reference, Gaussians};
@@ -34,6 +35,8 @@ pub struct BenchReport {
     pub device: String,
     pub sort: SortFigures,
     pub forward: RasterFigures,
+    /// Blend and projection backward for a random colour gradient (the forward is not timed).
+    pub backward: RasterFigures,
     /// The same forward pass by the multithreaded CPU reference (rayon, f64).
     pub cpu_forward: RasterFigures,
 }
@@ -130,6 +133,46 @@ pub fn bench_forward(
         intersections: m,
         ms,
         gaussian_pixels_per_s: m as f64 * 256.0 / (ms * 1e-3),
+    })
+}
+
+/// GPU backward pass (blend backward and projection backward) on the bench scene, for a random
+/// per-pixel colour gradient; the forward it differentiates runs once, outside the timing.
+pub fn bench_backward(
+    ctx: &Context,
+    n: usize,
+    width: u32,
+    height: u32,
+    runs: usize,
+) -> Result<RasterFigures> {
+    let (g, cam) = bench_scene(n, width, height);
+    let r = Rasterizer::new(ctx)?;
+    let bwd = Backward::new(ctx, false)?;
+    let gg = GpuGaussians::upload(ctx, &g)?;
+    let frame = r.forward(ctx, &gg, &cam, [0.0; 3])?;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+    let dl: Vec<[f32; 4]> = (0..width as usize * height as usize)
+        .map(|_| {
+            [
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                0.0,
+            ]
+        })
+        .collect();
+    let dlb = Buffer::from_slice(ctx, "bench colour gradient", &dl)?;
+    let grads = GpuGrads::new(ctx, n as u32, g.sh_degree)?;
+    let ms = time(runs, || {
+        bwd.run(ctx, &frame, &gg, &cam, &dlb, &grads).map(|_| ())
+    })?;
+    Ok(RasterFigures {
+        gaussians: n as u32,
+        width,
+        height,
+        intersections: frame.intersections,
+        ms,
+        gaussian_pixels_per_s: frame.intersections as f64 * 256.0 / (ms * 1e-3),
     })
 }
 

@@ -255,11 +255,13 @@ fn bench(json: bool, gaussians: usize, size: u32, pairs: u32, runs: usize) -> Re
     let ctx = open_device()?;
     let sort = bench_sort(&ctx, pairs, runs)?;
     let forward = bench_forward(&ctx, gaussians, size, size, runs)?;
+    let backward = bench_backward(&ctx, gaussians, size, size, runs)?;
     let cpu_forward = bench_cpu_forward(gaussians, size, size, forward.intersections, runs.min(3));
     let report = BenchReport {
         device: ctx.info().name.clone(),
         sort,
         forward,
+        backward,
         cpu_forward,
     };
     if json {
@@ -274,6 +276,7 @@ fn bench(json: bool, gaussians: usize, size: u32, pairs: u32, runs: usize) -> Re
         );
         for (name, f) in [
             ("forward", &report.forward),
+            ("backward", &report.backward),
             ("cpu forward", &report.cpu_forward),
         ] {
             println!(
