@@ -1,5 +1,6 @@
 //! Gaussian splats: the differentiable rasterizer's orchestration, its kernels' typed wrappers,
 //! the CPU reference, and file formats. Knows nothing of diffusion.
+pub mod adam;
 pub mod backward;
 pub mod cloud;
 pub mod ply;
