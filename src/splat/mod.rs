@@ -11,5 +11,6 @@ pub mod reference_grad;
 pub mod scan;
 pub mod score;
 pub mod sort;
+pub mod train;
 
 pub use cloud::Gaussians;

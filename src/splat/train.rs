@@ -1,0 +1,509 @@
+//! Fitting Gaussians to posed images: the 3DGS optimisation loop on the GPU engine (forward,
+//! host loss, backward, fused Adam) with densification and pruning on the host between steps.
+//! The generator's reconstructive stage and `dreamscene fit` both run it.
+use super::adam::{Adam, AdamConfig, AdamState, LearningRates, Moments};
+use super::backward::{Backward, GpuGrads};
+use super::cloud::{sh_coeffs, Gaussians, SH_C0};
+use super::loss;
+use super::raster::{GpuGaussians, Rasterizer};
+use crate::camera::Camera;
+use crate::gpu::{Buffer, BufferUsage, Context, GpuError, Result, Stream};
+use glam::{DMat3, DVec3};
+use rand::seq::SliceRandom;
+use rand::{Rng, SeedableRng};
+
+/// Optimisation settings. Defaults are those of 3DGS, with the densification schedule expressed
+/// as fractions of the run so that short runs keep its shape (30,000 iterations: densify every
+/// 100 from 500 to 15,000, opacity reset every 3,000).
+#[derive(Debug, Clone)]
+pub struct FitConfig {
+    pub iterations: u32,
+    /// Weight of D-SSIM in the loss.
+    pub lambda_dssim: f64,
+    pub background: [f32; 3],
+    /// Initial and final learning rate of the means, times the scene extent.
+    pub lr_means: (f32, f32),
+    pub lr_scales: f32,
+    pub lr_rotations: f32,
+    pub lr_opacities: f32,
+    pub lr_sh: f32,
+    /// Densify and prune at all.
+    pub densify: bool,
+    /// Fraction of the run after which densification starts.
+    pub densify_from: f64,
+    /// Fraction of the run after which it stops.
+    pub densify_until: f64,
+    pub densify_every: u32,
+    /// Opacity reset period, as a fraction of the run (0 disables).
+    pub opacity_reset: f64,
+    /// Mean NDC centre-gradient norm above which a Gaussian is cloned or split.
+    pub grad_threshold: f32,
+    /// Gaussians larger than this fraction of the extent are split, smaller ones cloned.
+    pub percent_dense: f32,
+    pub min_opacity: f32,
+    /// Densification stops adding Gaussians beyond this count.
+    pub max_gaussians: usize,
+    pub seed: u64,
+}
+
+impl Default for FitConfig {
+    fn default() -> Self {
+        FitConfig {
+            iterations: 7000,
+            lambda_dssim: 0.2,
+            background: [0.0; 3],
+            lr_means: (0.000_16, 0.000_001_6),
+            lr_scales: 0.005,
+            lr_rotations: 0.001,
+            lr_opacities: 0.05,
+            lr_sh: 0.0025,
+            densify: true,
+            densify_from: 500.0 / 30_000.0,
+            densify_until: 0.5,
+            densify_every: 100,
+            opacity_reset: 0.1,
+            grad_threshold: 0.0002,
+            percent_dense: 0.01,
+            min_opacity: 0.005,
+            max_gaussians: 3_000_000,
+            seed: 0,
+        }
+    }
+}
+
+/// A posed training image.
+pub struct View {
+    pub camera: Camera,
+    /// Row-major RGB in [0, 1], `camera.width x camera.height` pixels.
+    pub pixels: Vec<[f32; 3]>,
+}
+
+/// What one step did.
+#[derive(Debug, Clone, Copy)]
+pub struct StepReport {
+    pub iteration: u32,
+    pub loss: f64,
+    pub psnr: f64,
+    pub gaussians: usize,
+}
+
+/// Centre and radius of the camera positions (3DGS's "cameras extent": 1.1 x the largest
+/// distance from their mean, at least a small positive value).
+pub fn camera_extent(cams: &[Camera]) -> (DVec3, f64) {
+    let n = cams.len().max(1) as f64;
+    let c = cams
+        .iter()
+        .fold(DVec3::ZERO, |a, cam| a + DVec3::from(cam.position))
+        / n;
+    let r = cams
+        .iter()
+        .map(|cam| (DVec3::from(cam.position) - c).length())
+        .fold(0.0, f64::max);
+    (c, (1.1 * r).max(1e-3))
+}
+
+/// The region the cameras look at: the point nearest to all optical axes (least squares), and
+/// the half-size of the median view at that point's distance.
+pub fn look_region(cams: &[Camera]) -> (DVec3, f64) {
+    let mut a = DMat3::ZERO;
+    let mut b = DVec3::ZERO;
+    for cam in cams {
+        let r = cam.rotation;
+        let d = DVec3::new(r[0][2], r[1][2], r[2][2]).normalize();
+        let p = DMat3::IDENTITY - DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+        a += p;
+        b += p * DVec3::from(cam.position);
+    }
+    let centre = if a.determinant().abs() > 1e-9 {
+        a.inverse() * b
+    } else {
+        // Parallel axes: a point in front of the mean camera.
+        let (c, ext) = camera_extent(cams);
+        let r = cams[0].rotation;
+        c + DVec3::new(r[0][2], r[1][2], r[2][2]) * ext
+    };
+    let mut half: Vec<f64> = cams
+        .iter()
+        .map(|cam| {
+            let dist = (DVec3::from(cam.position) - centre).length();
+            let tan_x = 0.5 * cam.width as f64 / cam.fx;
+            let tan_y = 0.5 * cam.height as f64 / cam.fy;
+            dist * tan_x.min(tan_y)
+        })
+        .collect();
+    half.sort_by(f64::total_cmp);
+    (centre, half[half.len() / 2].max(1e-3))
+}
+
+/// `n` random Gaussians filling the ball the cameras look at: random colours, opacity 0.1,
+/// isotropic scales about the mean spacing, identity rotations.
+pub fn random_init(cams: &[Camera], n: usize, sh_degree: u32, seed: u64) -> Gaussians {
+    let (centre, radius) = look_region(cams);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let k = sh_coeffs(sh_degree);
+    let spacing = radius * (4.0 / 3.0 * std::f64::consts::PI / n.max(1) as f64).cbrt();
+    let mut g = Gaussians {
+        sh_degree,
+        ..Default::default()
+    };
+    while g.len() < n {
+        let p = DVec3::new(
+            rng.gen_range(-1.0..1.0),
+            rng.gen_range(-1.0..1.0),
+            rng.gen_range(-1.0..1.0),
+        );
+        if p.length_squared() > 1.0 {
+            continue;
+        }
+        let m = centre + p * radius;
+        g.means.push([m.x as f32, m.y as f32, m.z as f32]);
+        g.scales.push([(0.5 * spacing).ln() as f32; 3]);
+        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+        g.opacities.push((0.1f32 / 0.9).ln());
+        for c in 0..k {
+            for _ in 0..3 {
+                let v: f64 = rng.gen_range(0.0..1.0);
+                g.sh.push(if c == 0 {
+                    ((v - 0.5) / SH_C0) as f32
+                } else {
+                    0.0
+                });
+            }
+        }
+    }
+    g
+}
+
+/// Per-Gaussian rows of a flat array with `stride` values each, gathered by `src` (None: zeros).
+fn gather(v: &[f32], stride: usize, src: &[Option<usize>]) -> Vec<f32> {
+    let mut out = Vec::with_capacity(src.len() * stride);
+    for s in src {
+        match s {
+            Some(i) => out.extend_from_slice(&v[i * stride..(i + 1) * stride]),
+            None => out.extend(std::iter::repeat_n(0.0, stride)),
+        }
+    }
+    out
+}
+
+fn sigmoid(x: f32) -> f32 {
+    1.0 / (1.0 + (-x).exp())
+}
+
+/// The optimisation state of one fit.
+pub struct Trainer {
+    ctx: Context,
+    raster: Rasterizer,
+    backward: Backward,
+    adam: Adam,
+    pub config: FitConfig,
+    views: Vec<View>,
+    gaussians: GpuGaussians,
+    grads: GpuGrads,
+    state: AdamState,
+    extent: f64,
+    iteration: u32,
+    order: Vec<usize>,
+    rng: rand_chacha::ChaCha8Rng,
+    /// Per-view scratch reused between steps: (pixels, colour gradient, backward state).
+    scratch: Option<(u64, Buffer, Buffer)>,
+}
+
+impl Trainer {
+    /// Starts a fit of `init` to `views`.
+    pub fn new(
+        ctx: &Context,
+        init: &Gaussians,
+        views: Vec<View>,
+        config: FitConfig,
+    ) -> Result<Trainer> {
+        if views.is_empty() {
+            return Err(GpuError::Kernel {
+                kernel: "fit".into(),
+                msg: "no training views".into(),
+            });
+        }
+        for v in &views {
+            if v.pixels.len() != (v.camera.width * v.camera.height) as usize {
+                return Err(GpuError::Kernel {
+                    kernel: "fit".into(),
+                    msg: format!(
+                        "view {}: {} pixels for a {}x{} camera",
+                        v.camera.img_name,
+                        v.pixels.len(),
+                        v.camera.width,
+                        v.camera.height
+                    ),
+                });
+            }
+        }
+        let cams: Vec<Camera> = views.iter().map(|v| v.camera.clone()).collect();
+        let (_, extent) = camera_extent(&cams);
+        let gaussians = GpuGaussians::upload(ctx, init)?;
+        let grads = GpuGrads::new(ctx, gaussians.n, gaussians.sh_degree)?;
+        let state = AdamState::new(ctx, &gaussians)?;
+        Ok(Trainer {
+            ctx: ctx.clone(),
+            raster: Rasterizer::new(ctx)?,
+            backward: Backward::new(ctx, false)?,
+            adam: Adam::new(ctx, AdamConfig::default())?,
+            rng: rand_chacha::ChaCha8Rng::seed_from_u64(config.seed),
+            config,
+            views,
+            gaussians,
+            grads,
+            state,
+            extent,
+            iteration: 0,
+            order: vec![],
+            scratch: None,
+        })
+    }
+
+    /// Iterations done so far.
+    pub fn iteration(&self) -> u32 {
+        self.iteration
+    }
+
+    /// The scene extent used for learning rates and densification.
+    pub fn extent(&self) -> f64 {
+        self.extent
+    }
+
+    /// Number of Gaussians now.
+    pub fn len(&self) -> usize {
+        self.gaussians.n as usize
+    }
+
+    /// True when there are no Gaussians.
+    pub fn is_empty(&self) -> bool {
+        self.gaussians.n == 0
+    }
+
+    /// The current Gaussians.
+    pub fn gaussians(&self) -> Result<Gaussians> {
+        self.gaussians.download()
+    }
+
+    /// The learning rates at the current iteration (means decay log-linearly).
+    pub fn learning_rates(&self) -> LearningRates {
+        let c = &self.config;
+        let t = (self.iteration as f64 / c.iterations.max(1) as f64).clamp(0.0, 1.0);
+        let (a, b) = (c.lr_means.0 as f64, c.lr_means.1 as f64);
+        let means = (a.ln() * (1.0 - t) + b.ln() * t).exp() * self.extent;
+        LearningRates {
+            means: means as f32,
+            scales: c.lr_scales,
+            rotations: c.lr_rotations,
+            opacities: c.lr_opacities,
+            sh_dc: c.lr_sh,
+            sh_rest: c.lr_sh / 20.0,
+        }
+    }
+
+    /// Renders the current Gaussians from `cam` (colour over the configured background).
+    pub fn render(&self, cam: &Camera) -> Result<Vec<[f32; 3]>> {
+        Ok(self
+            .raster
+            .forward(&self.ctx, &self.gaussians, cam, self.config.background)?
+            .read()?
+            .color)
+    }
+
+    fn next_view(&mut self) -> usize {
+        if self.order.is_empty() {
+            self.order = (0..self.views.len()).collect();
+            self.order.shuffle(&mut self.rng);
+        }
+        self.order.pop().expect("refilled")
+    }
+
+    /// One optimisation step on the next view (views are visited in a random order per epoch),
+    /// then densification, pruning and opacity reset when the schedule says.
+    pub fn step(&mut self) -> Result<StepReport> {
+        let vi = self.next_view();
+        let cam = self.views[vi].camera.clone();
+        let np = cam.width as u64 * cam.height as u64;
+        let frame =
+            self.raster
+                .forward(&self.ctx, &self.gaussians, &cam, self.config.background)?;
+        let out = frame.read()?;
+        let target = &self.views[vi].pixels;
+        let (w, h) = (cam.width as usize, cam.height as usize);
+        let (loss, dl) = loss::l1_dssim(&out.color, target, w, h, self.config.lambda_dssim);
+        let psnr = loss::psnr(&out.color, target);
+        if self.scratch.as_ref().is_none_or(|s| s.0 < np) {
+            self.scratch = Some((
+                np,
+                Buffer::new(&self.ctx, "colour gradient", np * 16, BufferUsage::Upload)?,
+                Buffer::new(
+                    &self.ctx,
+                    "backward pixel state",
+                    np * 16,
+                    BufferUsage::Device,
+                )?,
+            ));
+        }
+        let (_, dlb, state) = self.scratch.as_ref().expect("allocated");
+        dlb.write(&dl)?;
+        let lr = self.learning_rates();
+        let mut s = Stream::new(&self.ctx)?;
+        self.backward.record(
+            &mut s,
+            &frame,
+            &self.gaussians,
+            &cam,
+            dlb,
+            &self.grads,
+            state,
+        )?;
+        self.adam
+            .record(&mut s, &self.gaussians, &self.grads, &mut self.state, &lr)?;
+        s.submit()?;
+        drop(frame);
+        self.iteration += 1;
+
+        let c = &self.config;
+        let it = self.iteration;
+        let total = c.iterations as f64;
+        let from = (c.densify_from * total) as u32;
+        let until = (c.densify_until * total) as u32;
+        let reset_every = (c.opacity_reset * total) as u32;
+        if c.densify && it < until {
+            if it > from && it % c.densify_every.max(1) == 0 {
+                let prune_big = reset_every > 0 && it > reset_every;
+                self.densify_and_prune(prune_big)?;
+            }
+            if reset_every > 0 && it % reset_every == 0 {
+                self.reset_opacity()?;
+            }
+        }
+        Ok(StepReport {
+            iteration: it,
+            loss,
+            psnr,
+            gaussians: self.len(),
+        })
+    }
+
+    /// Clones small Gaussians and splits large ones whose mean NDC centre gradient exceeds the
+    /// threshold; prunes transparent ones (and, after the first opacity reset, those too large
+    /// on screen or in the world). Adam moments follow their Gaussians; new ones start at zero.
+    #[allow(clippy::needless_range_loop)]
+    pub fn densify_and_prune(&mut self, prune_big: bool) -> Result<()> {
+        let c = self.config.clone();
+        let g = self.gaussians.download()?;
+        let n = g.len();
+        let stats: Vec<[f32; 4]> = self.grads.stats.read(n)?;
+        let ext = self.extent as f32;
+        let k3 = g.coeffs() * 3;
+        let mut out = Gaussians {
+            sh_degree: g.sh_degree,
+            ..Default::default()
+        };
+        let mut src: Vec<Option<usize>> = vec![];
+        let mut room = c.max_gaussians.saturating_sub(n);
+        let normal = |rng: &mut rand_chacha::ChaCha8Rng| -> f64 {
+            // Box-Muller
+            let u1: f64 = rng.gen_range(f64::EPSILON..1.0);
+            let u2: f64 = rng.gen_range(0.0..1.0);
+            (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
+        };
+        let push = |out: &mut Gaussians,
+                    src: &mut Vec<Option<usize>>,
+                    i: usize,
+                    m: [f32; 3],
+                    s: [f32; 3],
+                    from: Option<usize>| {
+            out.means.push(m);
+            out.scales.push(s);
+            out.rotations.push(g.rotations[i]);
+            out.opacities.push(g.opacities[i]);
+            out.sh.extend_from_slice(&g.sh[i * k3..(i + 1) * k3]);
+            src.push(from);
+        };
+        for i in 0..n {
+            let st = stats[i];
+            let grad = if st[1] > 0.0 { st[0] / st[1] } else { 0.0 };
+            let smax = g.scales[i].iter().fold(f32::MIN, |a, &b| a.max(b)).exp();
+            let transparent = sigmoid(g.opacities[i]) < c.min_opacity;
+            let big_world = prune_big && smax > 0.1 * ext;
+            let big_screen = prune_big && st[2] > 20.0;
+            let dense = grad >= c.grad_threshold && !transparent && room > 0;
+            if dense && smax > c.percent_dense * ext {
+                // split into two samples of the Gaussian, 1.6 times smaller
+                let q = g.rotations[i].map(f64::from);
+                let rot = super::reference::quat_to_mat(q);
+                let s = g.scales[i].map(|v| (v as f64).exp());
+                let new_scale = g.scales[i].map(|v| v - (1.6f32).ln());
+                for _ in 0..2 {
+                    let z = [0, 1, 2].map(|a| normal(&mut self.rng) * s[a]);
+                    let off = match rot {
+                        Some(r) => {
+                            [0, 1, 2].map(|a| r[a][0] * z[0] + r[a][1] * z[1] + r[a][2] * z[2])
+                        }
+                        None => z,
+                    };
+                    let m = [0, 1, 2].map(|a| g.means[i][a] + off[a] as f32);
+                    push(&mut out, &mut src, i, m, new_scale, None);
+                }
+                room = room.saturating_sub(1);
+                continue;
+            }
+            if transparent || big_world || big_screen {
+                continue;
+            }
+            push(&mut out, &mut src, i, g.means[i], g.scales[i], Some(i));
+            if dense {
+                push(&mut out, &mut src, i, g.means[i], g.scales[i], None);
+                room -= 1;
+            }
+        }
+        self.rebuild(&out, &src)
+    }
+
+    /// Replaces the cloud by `g`, whose Gaussian j continues old Gaussian `src[j]` (its Adam
+    /// moments are kept) or is new (zero moments). Densification statistics restart.
+    fn rebuild(&mut self, g: &Gaussians, src: &[Option<usize>]) -> Result<()> {
+        let n_old = self.gaussians.n as usize;
+        let k3 = sh_coeffs(g.sh_degree) * 3;
+        let ctx = &self.ctx;
+        let moved = |m: &Moments, stride: usize, name: &str| -> Result<Moments> {
+            let m1: Vec<f32> = m.m1.read(n_old * stride)?;
+            let m2: Vec<f32> = m.m2.read(n_old * stride)?;
+            let (a, b) = (gather(&m1, stride, src), gather(&m2, stride, src));
+            Ok(Moments {
+                m1: Buffer::from_slice(ctx, &format!("{name} adam m1"), &a)?,
+                m2: Buffer::from_slice(ctx, &format!("{name} adam m2"), &b)?,
+            })
+        };
+        let state = AdamState {
+            means: moved(&self.state.means, 3, "means")?,
+            scales: moved(&self.state.scales, 3, "scales")?,
+            rotations: moved(&self.state.rotations, 4, "rotations")?,
+            opacities: moved(&self.state.opacities, 1, "opacities")?,
+            sh: moved(&self.state.sh, k3, "sh")?,
+            step: self.state.step,
+        };
+        self.gaussians = GpuGaussians::upload(ctx, g)?;
+        self.grads = GpuGrads::new(ctx, g.len() as u32, g.sh_degree)?;
+        self.state = state;
+        Ok(())
+    }
+
+    /// Clamps every opacity to at most 0.01 and clears the opacity moments (3DGS's reset).
+    pub fn reset_opacity(&mut self) -> Result<()> {
+        let n = self.gaussians.n as usize;
+        let mut o: Vec<f32> = self.gaussians.opacities.read(n)?;
+        let cap = (0.01f32 / 0.99).ln();
+        for v in &mut o {
+            *v = v.min(cap);
+        }
+        self.gaussians.opacities.write(&o)?;
+        let mut s = Stream::new(&self.ctx)?;
+        s.fill(&self.state.opacities.m1, 0);
+        s.fill(&self.state.opacities.m2, 0);
+        s.submit()?;
+        Ok(())
+    }
+}
