@@ -5,6 +5,7 @@ use dreamscene::camera::{read_cameras, write_cameras, Camera};
 use dreamscene::gpu::Context;
 use dreamscene::splat::ply::{read_ply, write_ply};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer, RenderOutput};
+use dreamscene::splat::train::{load_views, random_init, FitConfig, Trainer, View};
 use dreamscene::splat::Gaussians;
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::SeedableRng;
@@ -48,6 +49,46 @@ enum Command {
         gaussians: usize,
         /// Seed of the random scene.
         #[arg(long, default_value_t = 7)]
+        seed: u64,
+    },
+    /// Fit Gaussians to posed images (3DGS optimisation: Adam, densify and prune) and write a PLY.
+    ///
+    /// Images are found as <images>/<img_name>[.png|.jpg|.jpeg] for each camera. The model is
+    /// checkpointed to --out every --checkpoint-every iterations, so an interrupted fit can
+    /// continue with --init <out>.
+    Fit {
+        /// Directory of training images.
+        #[arg(long)]
+        images: PathBuf,
+        /// INRIA cameras.json with one camera per image.
+        #[arg(long)]
+        cameras: PathBuf,
+        /// Output PLY.
+        #[arg(long)]
+        out: PathBuf,
+        /// Optimisation steps (one view each).
+        #[arg(long, default_value_t = 7000)]
+        iterations: u32,
+        /// Start from this PLY instead of random Gaussians.
+        #[arg(long)]
+        init: Option<PathBuf>,
+        /// Random Gaussians to start from (without --init), placed in the region the cameras see.
+        #[arg(long, default_value_t = 10_000)]
+        init_gaussians: usize,
+        /// SH degree of a random start (0 to 3).
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(0..=3))]
+        sh_degree: u32,
+        /// Background colour as R,G,B in [0, 1] (transparent image pixels are composited over it).
+        #[arg(long, default_value = "0,0,0", value_parser = parse_rgb)]
+        background: [f32; 3],
+        /// Turn off densification and pruning.
+        #[arg(long)]
+        no_densify: bool,
+        /// Write the model every N iterations (0: only at the end).
+        #[arg(long, default_value_t = 1000)]
+        checkpoint_every: u32,
+        /// Seed of the random start and the view order.
+        #[arg(long, default_value_t = 0)]
         seed: u64,
     },
     /// Check the Vulkan device and what the engine needs of it.
@@ -115,6 +156,39 @@ fn run(cli: Cli) -> Result<()> {
             gaussians,
             seed,
         } => demo(&out, gaussians, seed),
+        Command::Fit {
+            images,
+            cameras,
+            out,
+            iterations,
+            init,
+            init_gaussians,
+            sh_degree,
+            background,
+            no_densify,
+            checkpoint_every,
+            seed,
+        } => {
+            let cams = read_cameras(&cameras)?;
+            let views = load_views(&images, &cams, background).map_err(anyhow::Error::msg)?;
+            let start = match init {
+                Some(p) => read_ply(&p)?,
+                None => {
+                    if init_gaussians == 0 {
+                        bail!("--init-gaussians must be at least 1");
+                    }
+                    random_init(&cams, init_gaussians, sh_degree, seed)
+                }
+            };
+            let config = FitConfig {
+                iterations,
+                background,
+                densify: !no_densify,
+                seed,
+                ..Default::default()
+            };
+            fit(&start, views, config, &out, checkpoint_every)
+        }
         Command::Doctor => doctor(),
         Command::Bench {
             json,
@@ -124,6 +198,61 @@ fn run(cli: Cli) -> Result<()> {
             runs,
         } => bench(json, gaussians, size, pairs, runs),
     }
+}
+
+fn fit(
+    start: &Gaussians,
+    views: Vec<View>,
+    config: FitConfig,
+    out: &Path,
+    checkpoint_every: u32,
+) -> Result<()> {
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    }
+    let ctx = open_device()?;
+    let n_views = views.len();
+    let iterations = config.iterations;
+    let mut t = Trainer::new(&ctx, start, views, config)?;
+    let bar = ProgressBar::new(iterations as u64).with_style(
+        ProgressStyle::with_template(
+            "{bar:40} {pos}/{len} [{elapsed_precise}<{eta_precise}] {msg}",
+        )
+        .expect("valid template"),
+    );
+    let save = |t: &Trainer| -> Result<()> {
+        let g = t.gaussians()?;
+        write_ply(out, &g).with_context(|| format!("writing {}", out.display()))
+    };
+    // Loss and PSNR averaged over the last epoch-sized window, for a steadier readout.
+    let mut window: std::collections::VecDeque<(f64, f64)> = Default::default();
+    for _ in 0..iterations {
+        let r = t.step()?;
+        window.push_back((r.loss, r.psnr));
+        if window.len() > n_views {
+            window.pop_front();
+        }
+        if r.iteration % 10 == 0 || r.iteration == iterations {
+            let k = window.len() as f64;
+            let (l, p) = window
+                .iter()
+                .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+            bar.set_message(format!(
+                "loss {:.4}  PSNR {:.2} dB  {} Gaussians",
+                l / k,
+                p / k,
+                r.gaussians
+            ));
+        }
+        bar.inc(1);
+        if checkpoint_every > 0 && r.iteration % checkpoint_every == 0 && r.iteration < iterations {
+            save(&t)?;
+        }
+    }
+    save(&t)?;
+    bar.finish();
+    println!("wrote {} ({} Gaussians)", out.display(), t.len());
+    Ok(())
 }
 
 fn open_device() -> Result<Context> {

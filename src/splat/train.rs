@@ -507,3 +507,56 @@ impl Trainer {
         Ok(())
     }
 }
+
+/// Loads the training image of every camera from `dir`: `<img_name>`, or `<img_name>` with a
+/// `.png`, `.jpg` or `.jpeg` extension. Transparent pixels are composited over `background`.
+/// Errors name the file and what is wrong (missing, unreadable, size differs from the camera's).
+pub fn load_views(
+    dir: &std::path::Path,
+    cams: &[Camera],
+    background: [f32; 3],
+) -> std::result::Result<Vec<View>, String> {
+    let mut views = Vec::with_capacity(cams.len());
+    for cam in cams {
+        let candidates = [
+            dir.join(&cam.img_name),
+            dir.join(format!("{}.png", cam.img_name)),
+            dir.join(format!("{}.jpg", cam.img_name)),
+            dir.join(format!("{}.jpeg", cam.img_name)),
+        ];
+        let path = candidates.iter().find(|p| p.is_file()).ok_or_else(|| {
+            format!(
+                "{}: no image for camera {} (looked for {}, .png, .jpg, .jpeg)",
+                dir.display(),
+                cam.id,
+                cam.img_name
+            )
+        })?;
+        let img = image::open(path)
+            .map_err(|e| format!("{}: {e}", path.display()))?
+            .to_rgba32f();
+        if img.width() != cam.width || img.height() != cam.height {
+            return Err(format!(
+                "{}: image is {}x{} but camera {} is {}x{}",
+                path.display(),
+                img.width(),
+                img.height(),
+                cam.id,
+                cam.width,
+                cam.height
+            ));
+        }
+        let pixels = img
+            .pixels()
+            .map(|p| {
+                let a = p[3];
+                [0, 1, 2].map(|c| p[c] * a + background[c] * (1.0 - a))
+            })
+            .collect();
+        views.push(View {
+            camera: cam.clone(),
+            pixels,
+        });
+    }
+    Ok(views)
+}
