@@ -24,7 +24,14 @@ fn main() -> anyhow::Result<()> {
     let dlb = Buffer::new(&ctx, "dl", np * 16, BufferUsage::Upload)?;
     let state = Buffer::new(&ctx, "state", np * 16, BufferUsage::Device)?;
     let target = vec![[0.5f32; 3]; np as usize];
-    let lr = LearningRates { means: 1e-4, scales: 5e-3, rotations: 1e-3, opacities: 5e-2, sh_dc: 2.5e-3, sh_rest: 1e-4 };
+    let lr = LearningRates {
+        means: 1e-4,
+        scales: 5e-3,
+        rotations: 1e-3,
+        opacities: 5e-2,
+        sh_dc: 2.5e-3,
+        sh_rest: 1e-4,
+    };
     let mut acc = [0.0f64; 5];
     let runs = 20;
     for it in 0..runs + 2 {
@@ -42,7 +49,10 @@ fn main() -> anyhow::Result<()> {
         s.submit()?;
         let t4 = Instant::now();
         if it >= 2 {
-            for (a, d) in acc.iter_mut().zip([t1 - t0, t2 - t1, t3 - t2, t4 - t3, t4 - t0]) {
+            for (a, d) in acc
+                .iter_mut()
+                .zip([t1 - t0, t2 - t1, t3 - t2, t4 - t3, t4 - t0])
+            {
                 *a += d.as_secs_f64() * 1e3 / runs as f64;
             }
         }

@@ -8,3 +8,12 @@ const uint SORT_COUNT_WG = 256u; // export
 const uint SORT_SCATTER_WG = 128u; // export
 // Smallest subgroup the scatter supports (lavapipe's is 8).
 const uint SORT_MIN_SUBGROUP = 8u; // export
+// Lane-serial variant for CPU devices (lavapipe): each invocation owns a contiguous chunk of
+// SORT_CHUNK keys and counts / scatters it sequentially with private counters, which keeps the
+// pass stable with no ballots, shared memory or barriers. Per invocation that is at most
+// 2 x SORT_SERIAL_RADIX + SORT_CHUNK loop iterations, far below lavapipe's 65,535. Digits are 8
+// bits wide: 11-bit digits (three passes) measured slower, as 2,048 streams per lane thrash the cache.
+const uint SORT_CHUNK = 8192u; // export
+const uint SORT_SERIAL_WG = 8u; // export
+const uint SORT_SERIAL_BITS = 8u; // export
+const uint SORT_SERIAL_RADIX = 256u; // export

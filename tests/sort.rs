@@ -2,7 +2,7 @@
 mod common;
 use dreamscene::gpu::{Buffer, Stream};
 use dreamscene::splat::scan::{Scan, ScanScratch};
-use dreamscene::splat::sort::RadixSort;
+use dreamscene::splat::sort::{RadixSort, SortVariant};
 use rand::Rng;
 
 fn cpu_exclusive_scan(v: &[u32]) -> Vec<u32> {
@@ -56,26 +56,41 @@ fn cpu_sort(keys: &[u32], vals: &[u32], bits: u32) -> (Vec<u32>, Vec<u32>) {
     )
 }
 
+/// Both variants: the subgroup-ballot one (GPUs) and the lane-serial one (CPU devices).
+const VARIANTS: [SortVariant; 2] = [SortVariant::Subgroup, SortVariant::Serial];
+
 #[test]
 fn sorted_pairs_match_cpu_stable_sort() {
+    for v in VARIANTS {
+        sorted_pairs_match_cpu_stable_sort_with(v);
+    }
+}
+
+fn sorted_pairs_match_cpu_stable_sort_with(variant: SortVariant) {
     let ctx = common::gpu();
-    let sort = RadixSort::new(&ctx).unwrap();
+    let sort = RadixSort::with_variant(&ctx, variant).unwrap();
     let mut rng = common::rng(2);
     for n in [0usize, 1, 7, 2047, 2048, 2049, (1 << 20) + 3] {
         let keys: Vec<u32> = (0..n).map(|_| rng.gen()).collect();
         let vals: Vec<u32> = (0..n as u32).collect();
         let (gk, gv) = sort.sort_pairs(&ctx, &keys, &vals, 32).unwrap();
         let (ck, cv) = cpu_sort(&keys, &vals, 32);
-        assert_eq!(gk, ck, "keys, n = {n}");
-        assert_eq!(gv, cv, "values, n = {n}");
+        assert_eq!(gk, ck, "{variant:?}: keys, n = {n}");
+        assert_eq!(gv, cv, "{variant:?}: values, n = {n}");
     }
     ctx.check_validation().unwrap();
 }
 
 #[test]
 fn sort_is_stable_with_many_equal_keys_and_partial_bits() {
+    for v in VARIANTS {
+        sort_is_stable_with(v);
+    }
+}
+
+fn sort_is_stable_with(variant: SortVariant) {
     let ctx = common::gpu();
-    let sort = RadixSort::new(&ctx).unwrap();
+    let sort = RadixSort::with_variant(&ctx, variant).unwrap();
     let mut rng = common::rng(3);
     // Few distinct keys: most pairs tie, so any instability reorders values.
     for (n, bits, range) in [
@@ -90,8 +105,8 @@ fn sort_is_stable_with_many_equal_keys_and_partial_bits() {
             .collect();
         let (gk, gv) = sort.sort_pairs(&ctx, &keys, &vals, bits).unwrap();
         let (ck, cv) = cpu_sort(&keys, &vals, bits);
-        assert_eq!(gk, ck, "keys, n = {n}, bits = {bits}");
-        assert_eq!(gv, cv, "values, n = {n}, bits = {bits}");
+        assert_eq!(gk, ck, "{variant:?}: keys, n = {n}, bits = {bits}");
+        assert_eq!(gv, cv, "{variant:?}: values, n = {n}, bits = {bits}");
     }
     ctx.check_validation().unwrap();
 }

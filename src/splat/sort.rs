@@ -5,11 +5,51 @@ use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream,
 };
 
+/// How a pass counts and scatters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SortVariant {
+    /// Workgroups of SORT_BLOCK keys ranked with subgroup ballots: for GPUs.
+    Subgroup,
+    /// One invocation per chunk of SORT_CHUNK keys, sequential: for CPU devices (lavapipe),
+    /// where it is several times faster.
+    Serial,
+}
+
+impl SortVariant {
+    /// The variant for a device: serial on CPU devices, unless `DREAMSCENE_SORT` says
+    /// `subgroup` or `serial`.
+    pub fn for_device(ctx: &Context) -> SortVariant {
+        match std::env::var("DREAMSCENE_SORT").as_deref() {
+            Ok("subgroup") => SortVariant::Subgroup,
+            Ok("serial") => SortVariant::Serial,
+            _ if ctx.info().device_type == "CPU" => SortVariant::Serial,
+            _ => SortVariant::Subgroup,
+        }
+    }
+
+    /// Keys per histogram column.
+    fn block(self) -> u32 {
+        match self {
+            SortVariant::Subgroup => kernels::SORT_BLOCK,
+            SortVariant::Serial => kernels::SORT_CHUNK,
+        }
+    }
+
+    /// Bits per pass and the number of digits.
+    fn digit(self) -> (u32, u32) {
+        match self {
+            SortVariant::Subgroup => (8, kernels::SORT_RADIX),
+            SortVariant::Serial => (kernels::SORT_SERIAL_BITS, kernels::SORT_SERIAL_RADIX),
+        }
+    }
+}
+
 /// The radix-sort kernels.
 pub struct RadixSort {
     count: Kernel,
     scatter: Kernel,
     scan: Scan,
+    variant: SortVariant,
 }
 
 /// Ping-pong and histogram buffers for sorting up to `capacity` pairs.
@@ -24,8 +64,9 @@ pub struct SortScratch {
 impl SortScratch {
     pub fn new(ctx: &Context, capacity: u32) -> Result<SortScratch> {
         let cap = capacity.max(1);
-        let blocks = cap.div_ceil(kernels::SORT_BLOCK);
-        let hist_len = blocks * kernels::SORT_RADIX;
+        // Room for either variant's histogram.
+        let hist_len = (cap.div_ceil(kernels::SORT_BLOCK) * kernels::SORT_RADIX)
+            .max(cap.div_ceil(kernels::SORT_CHUNK) * kernels::SORT_SERIAL_RADIX);
         Ok(SortScratch {
             capacity: cap,
             keys: Buffer::new(
@@ -57,7 +98,21 @@ impl SortScratch {
 }
 
 impl RadixSort {
+    /// The sort in the variant suited to the device ([`SortVariant::for_device`]).
     pub fn new(ctx: &Context) -> Result<RadixSort> {
+        Self::with_variant(ctx, SortVariant::for_device(ctx))
+    }
+
+    /// The sort in a given variant.
+    pub fn with_variant(ctx: &Context, variant: SortVariant) -> Result<RadixSort> {
+        if variant == SortVariant::Serial {
+            return Ok(RadixSort {
+                count: Kernel::new(ctx, kernels::SORT_COUNT_SERIAL, kernels::SORT_SERIAL_WG)?,
+                scatter: Kernel::new(ctx, kernels::SORT_SCATTER_SERIAL, kernels::SORT_SERIAL_WG)?,
+                scan: Scan::new(ctx)?,
+                variant,
+            });
+        }
         if ctx.info().subgroup_size < kernels::SORT_MIN_SUBGROUP {
             return Err(GpuError::NoDevice(format!(
                 "the radix sort needs subgroups of at least {} lanes; `{}` has {}",
@@ -70,7 +125,13 @@ impl RadixSort {
             count: Kernel::new(ctx, kernels::SORT_COUNT, kernels::SORT_COUNT_WG)?,
             scatter: Kernel::new(ctx, kernels::SORT_SCATTER, kernels::SORT_SCATTER_WG)?,
             scan: Scan::new(ctx)?,
+            variant,
         })
+    }
+
+    /// Which variant this is.
+    pub fn variant(&self) -> SortVariant {
+        self.variant
     }
 
     /// The scan used inside the sort, reusable by callers.
@@ -99,21 +160,27 @@ impl RadixSort {
         if n <= 1 || bits == 0 {
             return Ok(());
         }
-        let passes = bits.min(32).div_ceil(8);
-        let num_blocks = n.div_ceil(kernels::SORT_BLOCK);
-        let hist_len = num_blocks * kernels::SORT_RADIX;
+        let (digit_bits, radix) = self.variant.digit();
+        let passes = bits.min(32).div_ceil(digit_bits);
+        let num_blocks = n.div_ceil(self.variant.block());
+        let hist_len = num_blocks * radix;
+        // Workgroups: one per block, or one per SORT_SERIAL_WG chunks.
+        let groups = match self.variant {
+            SortVariant::Subgroup => num_blocks,
+            SortVariant::Serial => num_blocks.div_ceil(kernels::SORT_SERIAL_WG),
+        };
         for pass in 0..passes {
             let (src_k, src_v, dst_k, dst_v) = if pass % 2 == 0 {
                 (keys, vals, &scratch.keys, &scratch.vals)
             } else {
                 (&scratch.keys, &scratch.vals, keys, vals)
             };
-            let push = [n, pass * 8, num_blocks];
+            let push = [n, pass * digit_bits, num_blocks];
             s.dispatch(
                 &self.count,
                 &[("keys", src_k), ("hist", &scratch.hist)],
                 bytemuck::bytes_of(&push),
-                groups_for(num_blocks),
+                groups_for(groups),
             )?;
             self.scan
                 .record(s, &scratch.hist, hist_len, &scratch.scan)?;
@@ -127,7 +194,7 @@ impl RadixSort {
                     ("offsets", &scratch.hist),
                 ],
                 bytemuck::bytes_of(&push),
-                groups_for(num_blocks),
+                groups_for(groups),
             )?;
         }
         if passes % 2 == 1 {

@@ -1,0 +1,21 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Lane-serial digit histogram: one invocation counts one chunk of SORT_CHUNK keys into private
+// counters and writes hist[digit * num_chunks + chunk] (digit-major, ready for one exclusive scan).
+#include "common.glsl"
+#include "sort.glsl"
+
+BUF_RO(0, uint, keys);
+BUF_RW(1, uint, hist);
+layout(push_constant) uniform Push { uint n; uint shift; uint num_chunks; } pc;
+
+void main() {
+    uint chunk = group_linear() * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (chunk >= pc.num_chunks) return;
+    uint cnt[SORT_SERIAL_RADIX];
+    for (uint d = 0u; d < SORT_SERIAL_RADIX; d++) cnt[d] = 0u;
+    uint begin = chunk * SORT_CHUNK;
+    uint end = min(pc.n, begin + SORT_CHUNK);
+    for (uint i = begin; i < end; i++) cnt[(keys.data[i] >> pc.shift) & (SORT_SERIAL_RADIX - 1u)]++;
+    for (uint d = 0u; d < SORT_SERIAL_RADIX; d++) hist.data[d * pc.num_chunks + chunk] = cnt[d];
+}
