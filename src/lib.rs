@@ -4,5 +4,6 @@
 pub mod bench;
 pub mod camera;
 pub mod gpu;
+pub mod plan;
 pub mod splat;
 pub mod util;

@@ -1,0 +1,275 @@
+//! The meaning of relations, anchors and validity (ARCHITECTURE.md), as predicates on placed
+//! objects. The layout search filters candidates with them and the tests check layouts with them.
+use super::spec::{Anchor, Layout, PlacedObject, RelationKind, SceneType};
+
+/// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.
+#[derive(Debug, Clone, Copy)]
+pub struct Box2 {
+    pub c: [f64; 2],
+    pub ex: [f64; 2],
+    pub ey: [f64; 2],
+    pub half: [f64; 2],
+    pub z0: f64,
+    pub z1: f64,
+}
+
+impl Box2 {
+    pub fn of(o: &PlacedObject) -> Box2 {
+        Box2::new(
+            [o.position[0], o.position[1]],
+            o.yaw,
+            [o.size[0], o.size[1]],
+            o.position[2],
+            o.position[2] + o.size[2],
+        )
+    }
+
+    pub fn new(c: [f64; 2], yaw_deg: f64, size: [f64; 2], z0: f64, z1: f64) -> Box2 {
+        let (s, co) = yaw_deg.to_radians().sin_cos();
+        Box2 {
+            c,
+            // local +x (the object's right) and local +y (its facing)
+            ex: [co, s],
+            ey: [-s, co],
+            half: [0.5 * size[0], 0.5 * size[1]],
+            z0,
+            z1,
+        }
+    }
+
+    /// Point in this box's local frame.
+    pub fn local(&self, p: [f64; 2]) -> [f64; 2] {
+        let d = [p[0] - self.c[0], p[1] - self.c[1]];
+        [
+            d[0] * self.ex[0] + d[1] * self.ex[1],
+            d[0] * self.ey[0] + d[1] * self.ey[1],
+        ]
+    }
+
+    pub fn corners(&self) -> [[f64; 2]; 4] {
+        let [hx, hy] = self.half;
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(a, b)| {
+            [
+                self.c[0] + a * hx * self.ex[0] + b * hy * self.ey[0],
+                self.c[1] + a * hx * self.ex[1] + b * hy * self.ey[1],
+            ]
+        })
+    }
+
+    /// Interval of `other`'s footprint projected on this box's local axis `axis` (0: x, 1: y).
+    pub fn project_other(&self, other: &Box2, axis: usize) -> (f64, f64) {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for p in other.corners() {
+            let v = self.local(p)[axis];
+            lo = lo.min(v);
+            hi = hi.max(v);
+        }
+        (lo, hi)
+    }
+
+    /// World-axis bounding box [xmin, ymin, xmax, ymax].
+    pub fn aabb(&self) -> [f64; 4] {
+        let c = self.corners();
+        let xs = c.map(|p| p[0]);
+        let ys = c.map(|p| p[1]);
+        [
+            xs.iter().copied().fold(f64::INFINITY, f64::min),
+            ys.iter().copied().fold(f64::INFINITY, f64::min),
+            xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            ys.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        ]
+    }
+
+    pub fn contains(&self, p: [f64; 2]) -> bool {
+        let l = self.local(p);
+        l[0].abs() <= self.half[0] + 1e-9 && l[1].abs() <= self.half[1] + 1e-9
+    }
+}
+
+fn axes(a: &Box2, b: &Box2) -> [[f64; 2]; 4] {
+    [a.ex, a.ey, b.ex, b.ey]
+}
+
+fn proj(b: &Box2, axis: [f64; 2]) -> (f64, f64) {
+    let c = b.c[0] * axis[0] + b.c[1] * axis[1];
+    let r = b.half[0] * (b.ex[0] * axis[0] + b.ex[1] * axis[1]).abs()
+        + b.half[1] * (b.ey[0] * axis[0] + b.ey[1] * axis[1]).abs();
+    (c - r, c + r)
+}
+
+/// Depth of 2D overlap (smallest separating-axis overlap); <= 0 when the footprints are apart.
+pub fn overlap_depth(a: &Box2, b: &Box2) -> f64 {
+    let mut best = f64::INFINITY;
+    for ax in axes(a, b) {
+        let (a0, a1) = proj(a, ax);
+        let (b0, b1) = proj(b, ax);
+        best = best.min(a1.min(b1) - a0.max(b0));
+    }
+    best
+}
+
+/// Interpenetration of two boxes: the smaller of footprint overlap depth and z overlap.
+pub fn penetration(a: &Box2, b: &Box2) -> f64 {
+    let z = a.z1.min(b.z1) - a.z0.max(b.z0);
+    overlap_depth(a, b).min(z)
+}
+
+fn seg_point_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let ab = [b[0] - a[0], b[1] - a[1]];
+    let ap = [p[0] - a[0], p[1] - a[1]];
+    let l2 = ab[0] * ab[0] + ab[1] * ab[1];
+    let t = if l2 > 0.0 {
+        ((ap[0] * ab[0] + ap[1] * ab[1]) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let d = [ap[0] - t * ab[0], ap[1] - t * ab[1]];
+    (d[0] * d[0] + d[1] * d[1]).sqrt()
+}
+
+/// Gap between two footprints (0 when they touch or overlap).
+pub fn gap(a: &Box2, b: &Box2) -> f64 {
+    if overlap_depth(a, b) >= 0.0 {
+        return 0.0;
+    }
+    let (ca, cb) = (a.corners(), b.corners());
+    let mut best = f64::INFINITY;
+    for i in 0..4 {
+        for p in cb {
+            best = best.min(seg_point_dist(p, ca[i], ca[(i + 1) % 4]));
+        }
+        for p in ca {
+            best = best.min(seg_point_dist(p, cb[i], cb[(i + 1) % 4]));
+        }
+    }
+    best
+}
+
+/// Largest footprint gap of FRONT / BEHIND / LEFT / RIGHT.
+pub const DIRECTIONAL_GAP: f64 = 3.0;
+/// Largest footprint gap of NEXT.
+pub const NEXT_GAP: f64 = 0.5;
+
+/// Angle in degrees between the facing of `s` and the direction from `s` to `o`.
+pub fn facing_error(s: &Box2, o: &Box2) -> f64 {
+    let d = [o.c[0] - s.c[0], o.c[1] - s.c[1]];
+    let l = (d[0] * d[0] + d[1] * d[1]).sqrt();
+    if l == 0.0 {
+        return 180.0;
+    }
+    let c = (d[0] * s.ey[0] + d[1] * s.ey[1]) / l;
+    c.clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+/// Whether "s is `rel` of o" holds.
+pub fn relation_holds(s: &PlacedObject, rel: RelationKind, o: &PlacedObject) -> bool {
+    relation_holds_box(&Box2::of(s), rel, &Box2::of(o))
+}
+
+/// [`relation_holds`] on boxes.
+pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
+    let l = ob.local(sb.c);
+    let [hw, hd] = ob.half;
+    let band = |axis: usize, h: f64| {
+        let (lo, hi) = ob.project_other(sb, axis);
+        hi >= -h - 1e-9 && lo <= h + 1e-9
+    };
+    let top = ob.z1;
+    match rel {
+        RelationKind::Front => l[1] > hd && band(0, hw) && gap(sb, ob) <= DIRECTIONAL_GAP,
+        RelationKind::Behind => l[1] < -hd && band(0, hw) && gap(sb, ob) <= DIRECTIONAL_GAP,
+        RelationKind::Left => l[0] < -hw && band(1, hd) && gap(sb, ob) <= DIRECTIONAL_GAP,
+        RelationKind::Right => l[0] > hw && band(1, hd) && gap(sb, ob) <= DIRECTIONAL_GAP,
+        RelationKind::Next => gap(sb, ob) <= NEXT_GAP,
+        RelationKind::Opposite => {
+            let d = ((sb.c[0] - ob.c[0]).powi(2) + (sb.c[1] - ob.c[1]).powi(2)).sqrt();
+            l[1] > hd && band(0, hw) && (1.0..=5.0).contains(&d) && facing_error(sb, ob) <= 30.0
+        }
+        RelationKind::Over => ob.contains(sb.c) && (sb.z0 - top).abs() <= 0.05,
+        RelationKind::Under => ob.contains(sb.c) && sb.z1 <= top + 1e-6,
+    }
+}
+
+/// Distances from a footprint to the room's walls: [-x, +x, -y, +y] (negative: outside).
+pub fn wall_distances(b: &Box2, room: [f64; 3]) -> [f64; 4] {
+    let [x0, y0, x1, y1] = b.aabb();
+    let (hw, hd) = (0.5 * room[0], 0.5 * room[1]);
+    [x0 + hw, hw - x1, y0 + hd, hd - y1]
+}
+
+/// Inward normals of the walls in [`wall_distances`] order.
+pub const WALL_NORMALS: [[f64; 2]; 4] = [[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]];
+
+/// How close to a wall (or the outdoor ground boundary) a SIDE object must be.
+pub fn side_distance(scene: SceneType, room: [f64; 3]) -> f64 {
+    match scene {
+        SceneType::Indoor => 0.3,
+        SceneType::Outdoor => (0.05 * room[0].min(room[1])).max(0.3),
+    }
+}
+
+/// Largest distance to two walls of a CORNER object.
+pub const CORNER_DISTANCE: f64 = 0.5;
+
+/// Whether an object's anchor holds.
+pub fn anchor_holds(o: &PlacedObject, anchor: Anchor, scene: SceneType, room: [f64; 3]) -> bool {
+    anchor_holds_box(&Box2::of(o), anchor, scene, room)
+}
+
+/// [`anchor_holds`] on a box.
+pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 3]) -> bool {
+    let d = wall_distances(b, room);
+    let facing_dot = |w: usize| b.ey[0] * WALL_NORMALS[w][0] + b.ey[1] * WALL_NORMALS[w][1];
+    match anchor {
+        Anchor::Others => true,
+        Anchor::Center => {
+            (b.c[0].powi(2) + b.c[1].powi(2)).sqrt() <= 0.25 * room[0].min(room[1]) + 1e-9
+        }
+        Anchor::Side => {
+            let near: Vec<usize> = (0..4)
+                .filter(|&w| d[w] <= side_distance(scene, room) + 1e-9)
+                .collect();
+            near.len() == 1 && facing_dot(near[0]) >= 30f64.to_radians().cos() - 1e-9
+        }
+        Anchor::Corner => {
+            if scene == SceneType::Outdoor {
+                return false;
+            }
+            let near: Vec<usize> = (0..4).filter(|&w| d[w] <= CORNER_DISTANCE + 1e-9).collect();
+            near.len() == 2 && near.iter().all(|&w| facing_dot(w) > 0.0)
+        }
+    }
+}
+
+/// Tolerance of the validity rules (metres).
+pub const TOLERANCE: f64 = 0.01;
+
+/// Validity problems of a layout: outside the room, above the ceiling, interpenetrating (an
+/// OVER/UNDER pair excepted, per `stacked`). Empty when valid.
+pub fn validity_problems(layout: &Layout, stacked: &dyn Fn(&str, &str) -> bool) -> Vec<String> {
+    let room = layout.room.size;
+    let mut out = vec![];
+    let boxes: Vec<Box2> = layout.objects.iter().map(Box2::of).collect();
+    for (o, b) in layout.objects.iter().zip(&boxes) {
+        if wall_distances(b, room).iter().any(|&d| d < -TOLERANCE) {
+            out.push(format!("{} is outside the room", o.id));
+        }
+        if b.z1 > room[2] + TOLERANCE || b.z0 < -TOLERANCE {
+            out.push(format!("{} is above the ceiling or below the floor", o.id));
+        }
+    }
+    for i in 0..boxes.len() {
+        for j in i + 1..boxes.len() {
+            let (a, b) = (&layout.objects[i], &layout.objects[j]);
+            if stacked(&a.id, &b.id) {
+                continue;
+            }
+            let p = penetration(&boxes[i], &boxes[j]);
+            if p > TOLERANCE {
+                out.push(format!("{} and {} interpenetrate by {p:.3} m", a.id, b.id));
+            }
+        }
+    }
+    out
+}

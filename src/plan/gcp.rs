@@ -1,0 +1,568 @@
+//! Graph-based constraint placement (GCP, the paper's Algorithm 1), improved: the most connected
+//! object first (larger and wall-anchored ones first on ties), breadth-first over the constraint
+//! graph, candidate poses on a grid from the anchor regions plus poses derived from each placed
+//! partner, filtered by collision (oriented boxes) and scored by the relations and anchor they
+//! satisfy, walkway clearance and a seeded jitter; OVER subjects wait for their support; several
+//! seeded restarts keep the best layout. No object is ever dropped: when nothing satisfies its
+//! constraints it takes the best pose it can get and is marked `fallback`.
+use super::check::{
+    anchor_holds_box, penetration, relation_holds_box, wall_distances, Box2, CORNER_DISTANCE,
+};
+use super::spec::{
+    Anchor, Instance, Layout, PlacedBy, PlacedObject, Relation, RelationKind, Room, SceneSpec,
+    SceneType, SpecError,
+};
+use rand::{Rng, SeedableRng};
+use std::collections::{BTreeMap, BTreeSet, VecDeque};
+
+/// Layout search settings.
+#[derive(Debug, Clone, Copy)]
+pub struct LayoutOptions {
+    pub seed: u64,
+    /// Independent seeded attempts; the best is kept.
+    pub restarts: u32,
+}
+
+impl Default for LayoutOptions {
+    fn default() -> Self {
+        LayoutOptions {
+            seed: 0,
+            restarts: 6,
+        }
+    }
+}
+
+/// Occupancy the chosen room size aims at (footprint area / floor area).
+pub const INDOOR_OCCUPANCY: f64 = 0.4;
+const OUTDOOR_OCCUPANCY: f64 = 0.2;
+/// Gap kept from walls when placing against them.
+const WALL_MARGIN: f64 = 0.02;
+/// Preferred free space around unrelated objects (a walkway).
+const WALKWAY: f64 = 0.6;
+
+/// A room that fits the instances: floor area = footprints / occupancy (aspect 5:4), never
+/// narrower than the largest object plus a walkway, height above the tallest object.
+pub fn choose_room(instances: &[Instance], scene: SceneType) -> Room {
+    let occ = match scene {
+        SceneType::Indoor => INDOOR_OCCUPANCY,
+        SceneType::Outdoor => OUTDOOR_OCCUPANCY,
+    };
+    // Stacked things (a TV on a stand) still count: a slight overestimate is harmless.
+    let area: f64 = instances.iter().map(|i| i.size[0] * i.size[1]).sum::<f64>() / occ;
+    let min_side = match scene {
+        SceneType::Indoor => 3.0,
+        SceneType::Outdoor => 8.0,
+    };
+    let longest = instances
+        .iter()
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    let w = (area * 1.25)
+        .sqrt()
+        .max(min_side)
+        .max(longest + 2.0 * WALKWAY);
+    let d = (area / w).max(min_side).max(longest + 2.0 * WALKWAY);
+    let tallest = instances.iter().map(|i| i.size[2]).fold(0.0, f64::max);
+    let h = match scene {
+        SceneType::Indoor => (tallest + 0.3).max(2.8),
+        SceneType::Outdoor => (tallest + 2.0).max(10.0),
+    };
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    Room {
+        size: [r(w), r(d), r(h)],
+    }
+}
+
+struct Problem {
+    scene: SceneType,
+    room: [f64; 3],
+    inst: Vec<Instance>,
+    index: BTreeMap<String, usize>,
+    /// Per instance: (relation, other instance, true when this instance is the subject).
+    rels: Vec<Vec<(RelationKind, usize, bool)>>,
+    stacked: BTreeSet<(usize, usize)>,
+    step: f64,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Pose {
+    c: [f64; 2],
+    yaw: f64,
+    z: f64,
+}
+
+fn yaw_facing(d: [f64; 2]) -> f64 {
+    // facing (-sin yaw, cos yaw) = d / |d|
+    (-d[0]).atan2(d[1]).to_degrees()
+}
+
+impl Problem {
+    fn boxed(&self, i: usize, p: &Pose) -> Box2 {
+        let s = self.inst[i].size;
+        Box2::new(p.c, p.yaw, [s[0], s[1]], p.z, p.z + s[2])
+    }
+
+    fn is_stacked(&self, a: usize, b: usize) -> bool {
+        self.stacked.contains(&(a.min(b), a.max(b)))
+    }
+
+    /// Candidate poses for instance `i` given the placed ones.
+    fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
+        let [w, d, _] = self.room;
+        let (hw, hd) = (0.5 * w, 0.5 * d);
+        let s = self.inst[i].size;
+        let mut out = vec![];
+        let grid = |lo: f64, hi: f64| -> Vec<f64> {
+            if hi < lo {
+                return vec![0.5 * (lo + hi)];
+            }
+            let n = ((hi - lo) / self.step).floor() as usize;
+            (0..=n)
+                .map(|k| lo + k as f64 * self.step)
+                .chain([hi])
+                .collect()
+        };
+        // Yaws suggested by placed partners.
+        let mut yaws: Vec<f64> = vec![0.0, 90.0, 180.0, -90.0];
+        for &(_, j, _) in &self.rels[i] {
+            if let Some(pj) = placed[j] {
+                yaws.push(pj.yaw);
+                yaws.push(pj.yaw + 180.0);
+            }
+        }
+        match self.inst[i].anchor {
+            Anchor::Side => {
+                // Back to each wall, facing into the room, anywhere along it.
+                for (wall, yaw) in [(0usize, -90.0), (1, 90.0), (2, 0.0), (3, 180.0)] {
+                    let depth_half = 0.5 * s[1];
+                    let off = WALL_MARGIN + depth_half;
+                    let along_half = 0.5 * s[0];
+                    match wall {
+                        0 | 1 => {
+                            let x = if wall == 0 { -hw + off } else { hw - off };
+                            for y in grid(-hd + along_half, hd - along_half) {
+                                out.push(Pose {
+                                    c: [x, y],
+                                    yaw,
+                                    z: 0.0,
+                                });
+                            }
+                        }
+                        _ => {
+                            let y = if wall == 2 { -hd + off } else { hd - off };
+                            for x in grid(-hw + along_half, hw - along_half) {
+                                out.push(Pose {
+                                    c: [x, y],
+                                    yaw,
+                                    z: 0.0,
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+            Anchor::Corner => {
+                // Facing diagonally out of each corner, its box against both walls.
+                for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    let yaw = yaw_facing([-sx, -sy]);
+                    let probe = Box2::new([0.0, 0.0], yaw, [s[0], s[1]], 0.0, s[2]);
+                    let [x0, y0, x1, y1] = probe.aabb();
+                    for inset in [WALL_MARGIN, 0.5 * CORNER_DISTANCE] {
+                        let cx = if sx < 0.0 {
+                            -hw + inset - x0
+                        } else {
+                            hw - inset - x1
+                        };
+                        let cy = if sy < 0.0 {
+                            -hd + inset - y0
+                        } else {
+                            hd - inset - y1
+                        };
+                        out.push(Pose {
+                            c: [cx, cy],
+                            yaw,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            anchor => {
+                let r = 0.25 * w.min(d);
+                for x in grid(-hw, hw) {
+                    for y in grid(-hd, hd) {
+                        if anchor == Anchor::Center && (x * x + y * y).sqrt() > r {
+                            continue;
+                        }
+                        for &yaw in &yaws[..4] {
+                            out.push(Pose {
+                                c: [x, y],
+                                yaw,
+                                z: 0.0,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        // Poses derived from each placed partner.
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            let bj = self.boxed(j, &pj);
+            let sj = self.inst[j].size;
+            if subject && rel == RelationKind::Over {
+                out.push(Pose {
+                    c: pj.c,
+                    yaw: pj.yaw,
+                    z: bj.z1,
+                });
+                continue;
+            }
+            if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
+                // under the partner, or the support below a placed subject
+                let z = if subject { 0.0 } else { (pj.z - s[2]).max(0.0) };
+                out.push(Pose {
+                    c: pj.c,
+                    yaw: pj.yaw,
+                    z,
+                });
+                continue;
+            }
+            if !subject && rel == RelationKind::Under {
+                out.push(Pose {
+                    c: pj.c,
+                    yaw: pj.yaw,
+                    z: 0.0,
+                });
+                continue;
+            }
+            // Around the partner in its frame: front, behind, left, right at several gaps.
+            let ext = 0.5 * s[0].max(s[1]);
+            for (dir, half) in [
+                (bj.ey, 0.5 * sj[1]),
+                ([-bj.ey[0], -bj.ey[1]], 0.5 * sj[1]),
+                (bj.ex, 0.5 * sj[0]),
+                ([-bj.ex[0], -bj.ex[1]], 0.5 * sj[0]),
+            ] {
+                let lateral = [-dir[1], dir[0]];
+                for g in [0.05, 0.25, 0.5, 0.9, 1.5, 2.2] {
+                    let base = half + g + ext;
+                    for t in [-0.3, 0.0, 0.3] {
+                        let c = [
+                            pj.c[0] + dir[0] * base + lateral[0] * t * ext,
+                            pj.c[1] + dir[1] * base + lateral[1] * t * ext,
+                        ];
+                        let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
+                        let face = yaw_facing(to);
+                        for yaw in [face, face + 180.0, face + 90.0, face - 90.0, pj.yaw] {
+                            out.push(Pose { c, yaw, z: 0.0 });
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// (hard-valid, constraints satisfied, constraint count, score) of pose `p` for `i`.
+    fn evaluate(
+        &self,
+        i: usize,
+        p: &Pose,
+        placed: &[Option<Pose>],
+        jitter: f64,
+    ) -> (bool, usize, usize, f64) {
+        let b = self.boxed(i, p);
+        let wd = wall_distances(&b, self.room);
+        if wd.iter().any(|&v| v < -1e-9) || b.z1 > self.room[2] + 1e-9 {
+            return (false, 0, 0, f64::NEG_INFINITY);
+        }
+        let mut clearance = WALKWAY;
+        for (j, pj) in placed.iter().enumerate() {
+            let Some(pj) = pj else { continue };
+            if self.is_stacked(i, j) {
+                continue;
+            }
+            let bj = self.boxed(j, pj);
+            if penetration(&b, &bj) > 0.0 {
+                return (false, 0, 0, f64::NEG_INFINITY);
+            }
+            if !self.rels[i].iter().any(|r| r.1 == j) {
+                clearance = clearance.min(super::check::gap(&b, &bj));
+            }
+        }
+        let mut total = 1;
+        let mut ok = anchor_holds_box(&b, self.inst[i].anchor, self.scene, self.room) as usize;
+        let mut near = 0.0;
+        let mut pose_bonus = 0.0;
+        let free_yaw = !matches!(self.inst[i].anchor, Anchor::Side | Anchor::Corner);
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            let bj = self.boxed(j, &pj);
+            total += 1;
+            let holds = if subject {
+                relation_holds_box(&b, rel, &bj)
+            } else {
+                relation_holds_box(&bj, rel, &b)
+            };
+            ok += holds as usize;
+            near += super::check::gap(&b, &bj).min(3.0);
+            if free_yaw {
+                if matches!(rel, RelationKind::Over | RelationKind::Under) {
+                    // stacked things line up with their partner
+                    let dy = (p.yaw - pj.yaw).to_radians();
+                    pose_bonus += dy.cos().abs();
+                } else if subject {
+                    // chairs, tables, lamps turn toward what they relate to
+                    pose_bonus += super::check::facing_error(&b, &bj).to_radians().cos();
+                }
+            }
+        }
+        let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + jitter;
+        (true, ok, total, score)
+    }
+}
+
+/// Lays out `spec` (validated first). Deterministic for a given seed.
+pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError> {
+    spec.validate()?;
+    let inst = spec.instances();
+    let room = spec
+        .room
+        .unwrap_or_else(|| choose_room(&inst, spec.scene_type));
+    let mut index = BTreeMap::new();
+    for (k, i) in inst.iter().enumerate() {
+        index.insert(i.id.clone(), k);
+    }
+    let mut rels = vec![vec![]; inst.len()];
+    let mut stacked = BTreeSet::new();
+    for r in &spec.relations {
+        let (s, o) = (index[&r.subject], index[&r.object]);
+        rels[s].push((r.relation, o, true));
+        rels[o].push((r.relation, s, false));
+        if matches!(r.relation, RelationKind::Over | RelationKind::Under) {
+            stacked.insert((s.min(o), s.max(o)));
+        }
+    }
+    let [w, d, _] = room.size;
+    let step = (w.min(d) / 30.0).clamp(0.1, 0.5);
+    let prob = Problem {
+        scene: spec.scene_type,
+        room: room.size,
+        inst,
+        index,
+        rels,
+        stacked,
+        step,
+    };
+    let mut best: Option<(f64, Layout)> = None;
+    for attempt in 0..opts.restarts.max(1) {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(
+            opts.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ attempt as u64,
+        );
+        let l = attempt_layout(&prob, spec, room, opts.seed, &mut rng);
+        let q = quality(&prob, &l);
+        if best.as_ref().is_none_or(|b| q > b.0) {
+            best = Some((q, l));
+        }
+    }
+    Ok(best.expect("at least one attempt").1)
+}
+
+/// Satisfied constraints minus a large penalty per fallback.
+fn quality(prob: &Problem, l: &Layout) -> f64 {
+    let mut q = 0.0;
+    for o in &l.objects {
+        if super::check::anchor_holds(o, o.anchor, prob.scene, prob.room) {
+            q += 1.0;
+        }
+        if o.placed_by == PlacedBy::Fallback {
+            q -= 5.0;
+        }
+    }
+    q - l.unsatisfied.len() as f64
+}
+
+/// Placement order: breadth-first from the most connected instance of each component (ties:
+/// wall-anchored, then larger), OVER subjects after their support.
+fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
+    let n = prob.inst.len();
+    let key = |i: usize| {
+        let a = &prob.inst[i];
+        let wall = matches!(a.anchor, Anchor::Side | Anchor::Corner) as u32;
+        let area = a.size[0] * a.size[1];
+        (prob.rels[i].len(), wall, (area * 1000.0) as u64)
+    };
+    let mut done = vec![false; n];
+    let mut out = vec![];
+    loop {
+        let start = (0..n)
+            .filter(|&i| !done[i])
+            .max_by_key(|&i| (key(i), std::cmp::Reverse(i)));
+        let Some(start) = start else { break };
+        let mut q = VecDeque::from([start]);
+        done[start] = true;
+        while let Some(i) = q.pop_front() {
+            out.push(i);
+            let mut next: Vec<usize> = prob.rels[i]
+                .iter()
+                .map(|r| r.1)
+                .filter(|&j| !done[j])
+                .collect();
+            next.sort();
+            next.dedup();
+            // Ties broken by the key, then at random (restarts see different orders).
+            next.sort_by_key(|&j| (std::cmp::Reverse(key(j)), rng.gen::<u32>()));
+            for j in next {
+                done[j] = true;
+                q.push_back(j);
+            }
+        }
+    }
+    // OVER subjects after their supports.
+    let mut fixed: Vec<usize> = vec![];
+    let mut waiting: Vec<usize> = out;
+    for _ in 0..n + 1 {
+        let mut rest = vec![];
+        for &i in &waiting {
+            let ready = prob.rels[i].iter().all(|&(rel, j, subject)| {
+                !(subject && rel == RelationKind::Over) || fixed.contains(&j)
+            });
+            if ready {
+                fixed.push(i);
+            } else {
+                rest.push(i);
+            }
+        }
+        if rest.is_empty() || rest.len() == waiting.len() {
+            fixed.extend(rest);
+            break;
+        }
+        waiting = rest;
+    }
+    fixed
+}
+
+fn attempt_layout(
+    prob: &Problem,
+    spec: &SceneSpec,
+    room: Room,
+    seed: u64,
+    rng: &mut rand_chacha::ChaCha8Rng,
+) -> Layout {
+    let n = prob.inst.len();
+    let mut placed: Vec<Option<Pose>> = vec![None; n];
+    let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
+    for i in order(prob, rng) {
+        let cands = prob.candidates(i, &placed);
+        let mut best: Option<(f64, Pose, bool)> = None;
+        for p in &cands {
+            let (valid, ok, total, score) = prob.evaluate(i, p, &placed, rng.gen::<f64>() * 3.0);
+            if valid && best.as_ref().is_none_or(|b| score > b.0) {
+                best = Some((score, *p, ok == total));
+            }
+        }
+        let (pose, all_ok) = match best {
+            Some((_, p, ok)) => (p, ok),
+            None => (fallback_pose(prob, i, &placed, rng), false),
+        };
+        placed[i] = Some(pose);
+        if !all_ok {
+            by[i] = PlacedBy::Fallback;
+        }
+    }
+    let objects: Vec<PlacedObject> = prob
+        .inst
+        .iter()
+        .enumerate()
+        .map(|(i, inst)| {
+            let p = placed[i].expect("every instance placed");
+            let mut yaw = p.yaw % 360.0;
+            if yaw > 180.0 {
+                yaw -= 360.0;
+            }
+            if yaw <= -180.0 {
+                yaw += 360.0;
+            }
+            PlacedObject {
+                id: inst.id.clone(),
+                category: inst.category.clone(),
+                size: inst.size,
+                position: [p.c[0], p.c[1], p.z],
+                yaw,
+                anchor: inst.anchor,
+                placed_by: by[i],
+            }
+        })
+        .collect();
+    let unsatisfied = unsatisfied(&objects, &spec.relations, &prob.index);
+    Layout {
+        scene_type: spec.scene_type,
+        room,
+        seed,
+        objects,
+        unsatisfied,
+    }
+}
+
+/// The least-colliding pose inside the room when nothing is free (the room is overfull).
+fn fallback_pose(
+    prob: &Problem,
+    i: usize,
+    placed: &[Option<Pose>],
+    rng: &mut rand_chacha::ChaCha8Rng,
+) -> Pose {
+    let [w, d, _] = prob.room;
+    let s = prob.inst[i].size;
+    let mut best = (
+        f64::INFINITY,
+        Pose {
+            c: [0.0, 0.0],
+            yaw: 0.0,
+            z: 0.0,
+        },
+    );
+    for _ in 0..2000 {
+        let yaw = [0.0, 90.0][rng.gen_range(0..2)];
+        let (ex, ey) = if yaw == 0.0 {
+            (s[0], s[1])
+        } else {
+            (s[1], s[0])
+        };
+        let x = rng.gen_range(-0.5 * (w - ex).max(0.0)..=0.5 * (w - ex).max(0.0));
+        let y = rng.gen_range(-0.5 * (d - ey).max(0.0)..=0.5 * (d - ey).max(0.0));
+        let p = Pose {
+            c: [x, y],
+            yaw,
+            z: 0.0,
+        };
+        let b = prob.boxed(i, &p);
+        let cost: f64 = placed
+            .iter()
+            .enumerate()
+            .filter_map(|(j, q)| q.map(|q| (j, q)))
+            .filter(|(j, _)| !prob.is_stacked(i, *j))
+            .map(|(j, q)| penetration(&b, &prob.boxed(j, &q)).max(0.0))
+            .sum();
+        if cost < best.0 {
+            best = (cost, p);
+        }
+    }
+    best.1
+}
+
+/// The relations of `relations` that `objects` do not satisfy.
+fn unsatisfied(
+    objects: &[PlacedObject],
+    relations: &[Relation],
+    index: &BTreeMap<String, usize>,
+) -> Vec<Relation> {
+    relations
+        .iter()
+        .filter(|r| {
+            let s = &objects[index[&r.subject]];
+            let o = &objects[index[&r.object]];
+            !super::check::relation_holds(s, r.relation, o)
+        })
+        .cloned()
+        .collect()
+}

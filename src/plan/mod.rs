@@ -1,0 +1,5 @@
+//! Scene planning: the SceneSpec / Layout contracts, their semantics, and the graph-based
+//! constraint placement. Pure host code: never imports `ash`.
+pub mod check;
+pub mod gcp;
+pub mod spec;

@@ -1,0 +1,242 @@
+//! The planner's output and the layout's input: `SceneSpec` (spec.json), and the layout's output
+//! `Layout` (layout.json), with the contracts of ARCHITECTURE.md. No GPU here.
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// Indoor (walls, corners) or outdoor (ground boundary, no corners).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SceneType {
+    Indoor,
+    Outdoor,
+}
+
+/// Region anchor of an object.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
+#[serde(rename_all = "UPPERCASE")]
+pub enum Anchor {
+    Center,
+    Side,
+    Corner,
+    Others,
+}
+
+/// Pairwise relation: "subject is RELATION of object", in the object's own frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
+#[serde(rename_all = "UPPERCASE")]
+pub enum RelationKind {
+    Left,
+    Right,
+    Front,
+    Behind,
+    Over,
+    Under,
+    Next,
+    Opposite,
+}
+
+impl RelationKind {
+    pub const ALL: [RelationKind; 8] = [
+        RelationKind::Left,
+        RelationKind::Right,
+        RelationKind::Front,
+        RelationKind::Behind,
+        RelationKind::Over,
+        RelationKind::Under,
+        RelationKind::Next,
+        RelationKind::Opposite,
+    ];
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
+pub struct Relation {
+    pub subject: String,
+    pub relation: RelationKind,
+    pub object: String,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ObjectSpec {
+    pub number: u32,
+    /// [width, depth, height] in metres.
+    pub size: [f64; 3],
+    pub description: String,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Room {
+    /// [W, D, H] in metres (outdoor: ground area and sky height).
+    pub size: [f64; 3],
+}
+
+/// spec.json.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SceneSpec {
+    pub scene_type: SceneType,
+    pub scene_text: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub room: Option<Room>,
+    pub objects: BTreeMap<String, ObjectSpec>,
+    #[serde(default)]
+    pub anchors: BTreeMap<String, Anchor>,
+    #[serde(default)]
+    pub relations: Vec<Relation>,
+}
+
+/// One object instance of a spec.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Instance {
+    /// Category + 1-based index, e.g. `sofa1`.
+    pub id: String,
+    pub category: String,
+    pub size: [f64; 3],
+    pub anchor: Anchor,
+}
+
+/// How an object got its place.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum PlacedBy {
+    Constraint,
+    Fallback,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlacedObject {
+    pub id: String,
+    pub category: String,
+    pub size: [f64; 3],
+    /// Centre of the bottom face, world frame (z up, metres).
+    pub position: [f64; 3],
+    /// Degrees, counter-clockwise about +z; at 0 the object faces +y.
+    pub yaw: f64,
+    pub anchor: Anchor,
+    pub placed_by: PlacedBy,
+}
+
+/// layout.json.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Layout {
+    pub scene_type: SceneType,
+    pub room: Room,
+    pub seed: u64,
+    pub objects: Vec<PlacedObject>,
+    pub unsatisfied: Vec<Relation>,
+}
+
+/// A spec or layout problem, naming what is wrong.
+#[derive(Debug, thiserror::Error)]
+pub enum SpecError {
+    #[error("{path}: {msg}")]
+    File { path: String, msg: String },
+    #[error("invalid scene spec: {0}")]
+    Invalid(String),
+}
+
+/// Most instances of one category a spec may ask for.
+pub const MAX_NUMBER: u32 = 20;
+
+impl SceneSpec {
+    /// The instances, in category order then index: `sofa1`, `sofa2`, ...
+    pub fn instances(&self) -> Vec<Instance> {
+        let mut out = vec![];
+        for (cat, o) in &self.objects {
+            for k in 1..=o.number {
+                let id = format!("{cat}{k}");
+                let anchor = self.anchors.get(&id).copied().unwrap_or(Anchor::Others);
+                out.push(Instance {
+                    id,
+                    category: cat.clone(),
+                    size: o.size,
+                    anchor,
+                });
+            }
+        }
+        out
+    }
+
+    /// Checks names, sizes, counts and references; the error says which entry is wrong.
+    pub fn validate(&self) -> Result<(), SpecError> {
+        let bad = |m: String| Err(SpecError::Invalid(m));
+        if self.objects.is_empty() {
+            return bad("no objects".into());
+        }
+        for (cat, o) in &self.objects {
+            if cat.trim().is_empty() {
+                return bad("an object has an empty category name".into());
+            }
+            if cat.ends_with(|c: char| c.is_ascii_digit()) {
+                return bad(format!(
+                    "category `{cat}` ends in a digit (instances are named category + index)"
+                ));
+            }
+            if o.number == 0 || o.number > MAX_NUMBER {
+                return bad(format!("`{cat}`: number {} (1 to {MAX_NUMBER})", o.number));
+            }
+            if !o
+                .size
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.0 && *v <= 50.0)
+            {
+                return bad(format!(
+                    "`{cat}`: size {:?} (each side in (0, 50] metres)",
+                    o.size
+                ));
+            }
+        }
+        let ids: std::collections::BTreeSet<String> =
+            self.instances().into_iter().map(|i| i.id).collect();
+        for (id, a) in &self.anchors {
+            if !ids.contains(id) {
+                return bad(format!("anchor for unknown instance `{id}`"));
+            }
+            if *a == Anchor::Corner && self.scene_type == SceneType::Outdoor {
+                return bad(format!("`{id}`: CORNER anchor in an outdoor scene"));
+            }
+        }
+        for r in &self.relations {
+            for name in [&r.subject, &r.object] {
+                if !ids.contains(name) {
+                    return bad(format!(
+                        "relation {} {:?} {}: unknown instance `{name}`",
+                        r.subject, r.relation, r.object
+                    ));
+                }
+            }
+            if r.subject == r.object {
+                return bad(format!("relation of `{}` to itself", r.subject));
+            }
+        }
+        if let Some(room) = &self.room {
+            if !room
+                .size
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.5 && *v <= 500.0)
+            {
+                return bad(format!("room size {:?}", room.size));
+            }
+        }
+        Ok(())
+    }
+
+    /// Reads and validates spec.json.
+    pub fn read(path: &Path) -> Result<SceneSpec, SpecError> {
+        let file = |msg: String| SpecError::File {
+            path: path.display().to_string(),
+            msg,
+        };
+        let text = std::fs::read_to_string(path).map_err(|e| file(e.to_string()))?;
+        let spec: SceneSpec = serde_json::from_str(&text).map_err(|e| file(e.to_string()))?;
+        spec.validate().map_err(|e| file(e.to_string()))?;
+        Ok(spec)
+    }
+}
+
+impl Layout {
+    /// Writes layout.json atomically.
+    pub fn write(&self, path: &Path) -> std::io::Result<()> {
+        let text = serde_json::to_string_pretty(self).expect("layout serialises");
+        crate::util::write_atomic(path, text.as_bytes())
+    }
+}
