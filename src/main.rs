@@ -3,6 +3,8 @@ use anyhow::{bail, Context as _, Result};
 use clap::{Parser, Subcommand};
 use dreamscene::camera::{read_cameras, write_cameras, Camera};
 use dreamscene::gpu::Context;
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::spec::{PlacedBy, SceneSpec};
 use dreamscene::splat::ply::{read_ply, write_ply};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer, RenderOutput};
 use dreamscene::splat::train::{load_views, random_init, FitConfig, Trainer, View};
@@ -90,6 +92,21 @@ enum Command {
         /// Seed of the random start and the view order.
         #[arg(long, default_value_t = 0)]
         seed: u64,
+    },
+    /// Place the objects of a scene spec (spec.json) with graph-based constraint placement.
+    ///
+    /// Writes layout.json: every instance placed exactly once, collision-free, with the relations
+    /// it could not satisfy listed under `unsatisfied` and relaxed placements marked `fallback`.
+    Layout {
+        /// SceneSpec (spec.json, as `plan` writes it).
+        #[arg(long)]
+        spec: PathBuf,
+        /// Seed: different seeds give different valid layouts.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Output layout.json.
+        #[arg(long)]
+        out: PathBuf,
     },
     /// Check the Vulkan device and what the engine needs of it.
     Doctor,
@@ -188,6 +205,42 @@ fn run(cli: Cli) -> Result<()> {
                 ..Default::default()
             };
             fit(&start, views, config, &out, checkpoint_every)
+        }
+        Command::Layout { spec, seed, out } => {
+            let spec = SceneSpec::read(&spec)?;
+            let l = layout(
+                &spec,
+                LayoutOptions {
+                    seed,
+                    ..Default::default()
+                },
+            )?;
+            if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)
+                    .with_context(|| format!("creating {}", dir.display()))?;
+            }
+            l.write(&out)
+                .with_context(|| format!("writing {}", out.display()))?;
+            let fallback = l
+                .objects
+                .iter()
+                .filter(|o| o.placed_by == PlacedBy::Fallback)
+                .count();
+            println!(
+                "wrote {}: {} objects in a {:.1} x {:.1} x {:.1} m room, {} of {} relations satisfied, {} fallback placements",
+                out.display(),
+                l.objects.len(),
+                l.room.size[0],
+                l.room.size[1],
+                l.room.size[2],
+                spec.relations.len() - l.unsatisfied.len(),
+                spec.relations.len(),
+                fallback
+            );
+            for r in &l.unsatisfied {
+                println!("  unsatisfied: {} {:?} {}", r.subject, r.relation, r.object);
+            }
+            Ok(())
         }
         Command::Doctor => doctor(),
         Command::Bench {

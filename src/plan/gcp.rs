@@ -269,6 +269,7 @@ impl Problem {
         i: usize,
         p: &Pose,
         placed: &[Option<Pose>],
+        boxes: &[Option<(Box2, [f64; 4])>],
         jitter: f64,
     ) -> (bool, usize, usize, f64) {
         let b = self.boxed(i, p);
@@ -276,18 +277,23 @@ impl Problem {
         if wd.iter().any(|&v| v < -1e-9) || b.z1 > self.room[2] + 1e-9 {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
+        let ab = b.aabb();
         let mut clearance = WALKWAY;
-        for (j, pj) in placed.iter().enumerate() {
-            let Some(pj) = pj else { continue };
-            if self.is_stacked(i, j) {
+        for (j, pb) in boxes.iter().enumerate() {
+            let Some((bj, aj)) = pb else { continue };
+            // Boxes whose bounding boxes are a walkway apart neither collide nor crowd.
+            let apart = (aj[0] - ab[2])
+                .max(ab[0] - aj[2])
+                .max(aj[1] - ab[3])
+                .max(ab[1] - aj[3]);
+            if apart >= WALKWAY || self.is_stacked(i, j) {
                 continue;
             }
-            let bj = self.boxed(j, pj);
-            if penetration(&b, &bj) > 0.0 {
+            if apart < 0.0 && penetration(&b, bj) > 0.0 {
                 return (false, 0, 0, f64::NEG_INFINITY);
             }
             if !self.rels[i].iter().any(|r| r.1 == j) {
-                clearance = clearance.min(super::check::gap(&b, &bj));
+                clearance = clearance.min(super::check::gap(&b, bj));
             }
         }
         let mut total = 1;
@@ -454,9 +460,20 @@ fn attempt_layout(
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
     for i in order(prob, rng) {
         let cands = prob.candidates(i, &placed);
+        let boxes: Vec<Option<(Box2, [f64; 4])>> = placed
+            .iter()
+            .enumerate()
+            .map(|(j, p)| {
+                p.map(|p| {
+                    let b = prob.boxed(j, &p);
+                    (b, b.aabb())
+                })
+            })
+            .collect();
         let mut best: Option<(f64, Pose, bool)> = None;
         for p in &cands {
-            let (valid, ok, total, score) = prob.evaluate(i, p, &placed, rng.gen::<f64>() * 3.0);
+            let (valid, ok, total, score) =
+                prob.evaluate(i, p, &placed, &boxes, rng.gen::<f64>() * 3.0);
             if valid && best.as_ref().is_none_or(|b| score > b.0) {
                 best = Some((score, *p, ok == total));
             }

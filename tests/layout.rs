@@ -1,0 +1,311 @@
+//! Relation and anchor semantics, and the GCP layout on a realistic spec and on random specs.
+//! Pure host code: no GPU.
+use dreamscene::plan::check::{anchor_holds, relation_holds, validity_problems};
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::spec::*;
+use rand::{Rng, SeedableRng};
+use std::collections::BTreeMap;
+
+fn obj(id: &str, size: [f64; 3], pos: [f64; 3], yaw: f64) -> PlacedObject {
+    PlacedObject {
+        id: id.into(),
+        category: id.trim_end_matches(char::is_numeric).into(),
+        size,
+        position: pos,
+        yaw,
+        anchor: Anchor::Others,
+        placed_by: PlacedBy::Constraint,
+    }
+}
+
+/// Each directional relation, in the object's own frame, for several object yaws: the subject
+/// placed on the named side holds, on the other sides it does not.
+#[test]
+fn directional_relations_follow_the_objects_frame() {
+    use RelationKind::*;
+    for yaw in [0.0f64, 90.0, 180.0, -90.0, 30.0, 135.0] {
+        let o = obj("sofa1", [2.0, 1.0, 0.8], [0.5, -0.3, 0.0], yaw);
+        let (s, c) = yaw.to_radians().sin_cos();
+        let (ex, ey) = ([c, s], [-s, c]); // right, facing
+        let at = |lx: f64, ly: f64, face: f64| {
+            obj(
+                "table1",
+                [0.6, 0.6, 0.5],
+                [
+                    0.5 + lx * ex[0] + ly * ey[0],
+                    -0.3 + lx * ex[1] + ly * ey[1],
+                    0.0,
+                ],
+                face,
+            )
+        };
+        let cases = [
+            (Front, at(0.0, 1.2, yaw)),
+            (Behind, at(0.0, -1.2, yaw)),
+            (Left, at(-1.6, 0.0, yaw)),
+            (Right, at(1.6, 0.0, yaw)),
+        ];
+        for (rel, subj) in &cases {
+            for other in [Front, Behind, Left, Right] {
+                assert_eq!(
+                    relation_holds(subj, other, &o),
+                    other == *rel,
+                    "yaw {yaw}: subject placed {rel:?}, checked {other:?}"
+                );
+            }
+        }
+        // Too far: 3 m gap limit.
+        assert!(!relation_holds(&at(0.0, 4.2, yaw), Front, &o));
+        // Off the band the front face sweeps.
+        assert!(!relation_holds(&at(1.8, 1.2, yaw), Front, &o));
+        // OPPOSITE: in front, 1-5 m, facing the object within 30 degrees.
+        let facing_back = at(0.0, 2.5, yaw + 180.0);
+        assert!(relation_holds(&facing_back, Opposite, &o), "yaw {yaw}");
+        assert!(
+            !relation_holds(&at(0.0, 2.5, yaw), Opposite, &o),
+            "yaw {yaw}: faces away"
+        );
+        assert!(
+            !relation_holds(&at(0.0, 0.8, yaw + 180.0), Opposite, &o),
+            "too close"
+        );
+        assert!(
+            relation_holds(&at(0.0, 0.8, yaw + 180.0), Next, &o),
+            "0.3 m gap is next"
+        );
+        assert!(
+            !relation_holds(&at(0.0, 1.6, yaw), Next, &o),
+            "1.1 m gap is not next"
+        );
+    }
+}
+
+#[test]
+fn over_and_under_need_the_footprint_and_heights() {
+    use RelationKind::*;
+    let stand = obj("tv stand1", [1.6, 0.45, 0.55], [1.0, 1.0, 0.0], 90.0);
+    let tv = obj("tv1", [1.2, 0.1, 0.7], [1.05, 1.3, 0.55], 90.0);
+    assert!(relation_holds(&tv, Over, &stand));
+    let floating = obj("tv1", [1.2, 0.1, 0.7], [1.05, 1.3, 0.7], 90.0);
+    assert!(
+        !relation_holds(&floating, Over, &stand),
+        "10 cm gap is not resting on top"
+    );
+    let beside = obj("tv1", [1.2, 0.1, 0.7], [1.5, 1.0, 0.55], 90.0);
+    assert!(
+        !relation_holds(&beside, Over, &stand),
+        "centre outside the footprint (rotated)"
+    );
+    let table = obj("table1", [1.2, 0.7, 0.45], [0.0, 0.0, 0.0], 0.0);
+    let rug = obj("rug1", [2.0, 1.4, 0.01], [0.2, 0.1, 0.0], 0.0);
+    assert!(relation_holds(&rug, Under, &table));
+    let tall = obj("shelf1", [0.5, 0.5, 1.8], [0.2, 0.1, 0.0], 0.0);
+    assert!(
+        !relation_holds(&tall, Under, &table),
+        "taller than the table"
+    );
+}
+
+#[test]
+fn anchors_follow_walls_and_facing() {
+    let room = [5.0, 4.0, 2.8];
+    let ind = SceneType::Indoor;
+    // Back to the -y wall, facing +y (into the room).
+    let sofa = obj("sofa1", [2.0, 0.9, 0.8], [0.0, -2.0 + 0.45 + 0.1, 0.0], 0.0);
+    assert!(anchor_holds(&sofa, Anchor::Side, ind, room));
+    let turned = obj(
+        "sofa1",
+        [2.0, 0.9, 0.8],
+        [0.0, -2.0 + 0.45 + 0.1, 0.0],
+        180.0,
+    );
+    assert!(
+        !anchor_holds(&turned, Anchor::Side, ind, room),
+        "faces the wall"
+    );
+    let off = obj("sofa1", [2.0, 0.9, 0.8], [0.0, -1.0, 0.0], 0.0);
+    assert!(
+        !anchor_holds(&off, Anchor::Side, ind, room),
+        "1 m from the wall"
+    );
+    // In the +x +y corner facing diagonally out of it.
+    let plant = obj("plant1", [0.5, 0.5, 1.2], [2.3, 1.8, 0.0], 135.0);
+    assert!(anchor_holds(&plant, Anchor::Corner, ind, room));
+    assert!(
+        !anchor_holds(&plant, Anchor::Side, ind, room),
+        "near two walls is not SIDE"
+    );
+    assert!(!anchor_holds(
+        &plant,
+        Anchor::Corner,
+        SceneType::Outdoor,
+        room
+    ));
+    let mid = obj("table1", [1.0, 0.6, 0.45], [0.4, -0.3, 0.0], 20.0);
+    assert!(anchor_holds(&mid, Anchor::Center, ind, room));
+    assert!(!anchor_holds(&plant, Anchor::Center, ind, room));
+    assert!(anchor_holds(&plant, Anchor::Others, ind, room));
+}
+
+fn stacked(spec: &SceneSpec) -> impl Fn(&str, &str) -> bool + '_ {
+    move |a: &str, b: &str| {
+        spec.relations.iter().any(|r| {
+            matches!(r.relation, RelationKind::Over | RelationKind::Under)
+                && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
+        })
+    }
+}
+
+/// Valid, complete, and (returned) the fractions of relations and anchors that hold.
+fn check_layout(spec: &SceneSpec, l: &Layout) -> (usize, usize, usize, usize) {
+    let ids: Vec<String> = spec.instances().into_iter().map(|i| i.id).collect();
+    let got: Vec<String> = l.objects.iter().map(|o| o.id.clone()).collect();
+    assert_eq!(got, ids, "every instance placed exactly once");
+    let problems = validity_problems(l, &stacked(spec));
+    assert!(problems.is_empty(), "invalid layout: {problems:?}");
+    let by_id: BTreeMap<&str, &PlacedObject> =
+        l.objects.iter().map(|o| (o.id.as_str(), o)).collect();
+    let rel_ok = spec
+        .relations
+        .iter()
+        .filter(|r| {
+            relation_holds(
+                by_id[r.subject.as_str()],
+                r.relation,
+                by_id[r.object.as_str()],
+            )
+        })
+        .count();
+    assert_eq!(
+        spec.relations.len() - rel_ok,
+        l.unsatisfied.len(),
+        "`unsatisfied` lists exactly the failing relations"
+    );
+    let anchor_ok = l
+        .objects
+        .iter()
+        .filter(|o| anchor_holds(o, o.anchor, l.scene_type, l.room.size))
+        .count();
+    (rel_ok, spec.relations.len(), anchor_ok, l.objects.len())
+}
+
+#[test]
+fn living_room_layouts_are_valid_satisfied_and_diverse() {
+    let spec = SceneSpec::read(std::path::Path::new("tests/data/living_room.json")).unwrap();
+    let mut totals = (0, 0, 0, 0);
+    let mut positions = vec![];
+    for seed in 0..10 {
+        let l = layout(
+            &spec,
+            LayoutOptions {
+                seed,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let (a, b, c, d) = check_layout(&spec, &l);
+        totals = (totals.0 + a, totals.1 + b, totals.2 + c, totals.3 + d);
+        positions.push(l.objects.iter().map(|o| o.position).collect::<Vec<_>>());
+        // The room size the spec leaves open fits the furniture at <= 40% occupancy.
+        let area: f64 = spec.instances().iter().map(|i| i.size[0] * i.size[1]).sum();
+        assert!(area / (l.room.size[0] * l.room.size[1]) <= 0.4 + 1e-9);
+    }
+    let rel = totals.0 as f64 / totals.1 as f64;
+    let anc = totals.2 as f64 / totals.3 as f64;
+    eprintln!("relations {:.1}%, anchors {:.1}%", 100.0 * rel, 100.0 * anc);
+    assert!(rel >= 0.9 && anc >= 0.9, "relations {rel}, anchors {anc}");
+    positions.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    positions.dedup();
+    assert!(
+        positions.len() >= 5,
+        "only {} distinct layouts in 10 seeds",
+        positions.len()
+    );
+}
+
+/// Random specs: whatever the constraints, every instance is placed, inside the room, below the
+/// ceiling, and nothing interpenetrates.
+#[test]
+fn random_specs_always_give_valid_layouts() {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(99);
+    let anchors = [Anchor::Center, Anchor::Side, Anchor::Corner, Anchor::Others];
+    for case in 0..40 {
+        let scene_type = if case % 4 == 3 {
+            SceneType::Outdoor
+        } else {
+            SceneType::Indoor
+        };
+        let mut objects = BTreeMap::new();
+        for c in 0..rng.gen_range(1..8) {
+            objects.insert(
+                format!("thing{}x", (b'a' + c) as char),
+                ObjectSpec {
+                    number: rng.gen_range(1..4),
+                    size: [
+                        rng.gen_range(0.2..2.5),
+                        rng.gen_range(0.2..2.0),
+                        rng.gen_range(0.05..2.2),
+                    ],
+                    description: "A DSLR photo of a thing".into(),
+                },
+            );
+        }
+        let mut spec = SceneSpec {
+            scene_type,
+            scene_text: format!("random {case}"),
+            room: None,
+            objects,
+            anchors: BTreeMap::new(),
+            relations: vec![],
+        };
+        let ids: Vec<String> = spec.instances().into_iter().map(|i| i.id).collect();
+        for id in &ids {
+            let mut a = anchors[rng.gen_range(0..4)];
+            if scene_type == SceneType::Outdoor && a == Anchor::Corner {
+                a = Anchor::Side;
+            }
+            spec.anchors.insert(id.clone(), a);
+        }
+        for _ in 0..rng.gen_range(0..ids.len() + 1) {
+            let (s, o) = (rng.gen_range(0..ids.len()), rng.gen_range(0..ids.len()));
+            if s != o {
+                spec.relations.push(Relation {
+                    subject: ids[s].clone(),
+                    relation: RelationKind::ALL[rng.gen_range(0..8)],
+                    object: ids[o].clone(),
+                });
+            }
+        }
+        let l = layout(
+            &spec,
+            LayoutOptions {
+                seed: case,
+                restarts: 2,
+            },
+        )
+        .unwrap();
+        check_layout(&spec, &l);
+    }
+}
+
+#[test]
+fn bad_specs_get_clear_errors() {
+    let spec = SceneSpec::read(std::path::Path::new("tests/data/living_room.json")).unwrap();
+    let mut s = spec.clone();
+    s.relations.push(Relation {
+        subject: "sofa7".into(),
+        relation: RelationKind::Next,
+        object: "rug1".into(),
+    });
+    let e = s.validate().unwrap_err().to_string();
+    assert!(e.contains("sofa7"), "{e}");
+    let mut s = spec.clone();
+    s.objects.get_mut("rug").unwrap().size[2] = -1.0;
+    assert!(s.validate().unwrap_err().to_string().contains("rug"));
+    let dir = std::env::temp_dir().join("dreamscene-spec-test");
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("broken.json");
+    std::fs::write(&p, "{\"scene_type\": \"indoor\", \"objects\": ").unwrap();
+    let e = SceneSpec::read(&p).unwrap_err().to_string();
+    assert!(e.contains("broken.json") && !e.contains('\n'), "{e}");
+}
