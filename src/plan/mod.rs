@@ -2,4 +2,5 @@
 //! constraint placement. Pure host code: never imports `ash`.
 pub mod check;
 pub mod gcp;
+pub mod kb;
 pub mod spec;

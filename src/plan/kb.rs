@@ -1,0 +1,289 @@
+//! The offline planner's knowledge base: object categories (real sizes, default anchors,
+//! descriptions, synonyms) and scene types (default furniture, anchors, relations), kept as data
+//! in `src/plan/kb/*.txt` and embedded in the binary.
+use super::spec::{Anchor, RelationKind, SceneType};
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// One object category.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ObjectKind {
+    pub category: String,
+    pub synonyms: Vec<String>,
+    /// [width, depth, height] in metres.
+    pub size: [f64; 3],
+    pub anchor: Anchor,
+    pub description: String,
+}
+
+/// A default relation of a scene type, between categories.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KbRelation {
+    pub subject: String,
+    /// Applies to every instance of the subject (`*` in the data).
+    pub every: bool,
+    pub relation: RelationKind,
+    pub object: String,
+}
+
+/// One scene type.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneKind {
+    pub name: String,
+    pub scene_type: SceneType,
+    pub synonyms: Vec<String>,
+    pub objects: Vec<(String, u32)>,
+    pub anchors: BTreeMap<String, Anchor>,
+    pub relations: Vec<KbRelation>,
+}
+
+/// Categories and scene types.
+#[derive(Debug, Clone)]
+pub struct KnowledgeBase {
+    pub objects: Vec<ObjectKind>,
+    pub scenes: Vec<SceneKind>,
+    by_name: BTreeMap<String, usize>,
+}
+
+pub fn parse_anchor(s: &str) -> Option<Anchor> {
+    match s.trim().to_ascii_uppercase().as_str() {
+        "CENTER" | "CENTRE" | "MIDDLE" => Some(Anchor::Center),
+        "SIDE" | "WALL" | "EDGE" => Some(Anchor::Side),
+        "CORNER" => Some(Anchor::Corner),
+        "OTHERS" | "OTHER" | "ANY" | "ANYWHERE" | "NONE" => Some(Anchor::Others),
+        _ => None,
+    }
+}
+
+pub fn parse_relation(s: &str) -> Option<RelationKind> {
+    use RelationKind::*;
+    match s
+        .trim()
+        .to_ascii_uppercase()
+        .replace(['_', '-'], " ")
+        .as_str()
+    {
+        "LEFT" | "LEFT OF" | "TO THE LEFT OF" => Some(Left),
+        "RIGHT" | "RIGHT OF" | "TO THE RIGHT OF" => Some(Right),
+        "FRONT" | "IN FRONT OF" | "IN FRONT" | "FRONT OF" => Some(Front),
+        "BEHIND" | "BACK" | "BACK OF" => Some(Behind),
+        "OVER" | "ON" | "ON TOP OF" | "ABOVE" | "ATOP" => Some(Over),
+        "UNDER" | "BELOW" | "BENEATH" | "UNDERNEATH" => Some(Under),
+        "NEXT" | "NEXT TO" | "BESIDE" | "NEAR" | "BY" | "ADJACENT" => Some(Next),
+        "OPPOSITE" | "OPPOSITE OF" | "OPPOSITE TO" | "FACING" | "ACROSS FROM" => Some(Opposite),
+        _ => None,
+    }
+}
+
+fn list(s: &str) -> Vec<String> {
+    s.split(',')
+        .map(|x| x.trim().to_lowercase())
+        .filter(|x| !x.is_empty())
+        .collect()
+}
+
+impl KnowledgeBase {
+    /// The knowledge base shipped with the binary.
+    pub fn builtin() -> &'static KnowledgeBase {
+        static KB: OnceLock<KnowledgeBase> = OnceLock::new();
+        KB.get_or_init(|| {
+            KnowledgeBase::parse(
+                include_str!("kb/objects.txt"),
+                include_str!("kb/scenes.txt"),
+            )
+            .expect("the built-in knowledge base is valid (tested)")
+        })
+    }
+
+    /// Parses the two tables; errors name the line.
+    pub fn parse(objects: &str, scenes: &str) -> Result<KnowledgeBase, String> {
+        let mut kb = KnowledgeBase {
+            objects: vec![],
+            scenes: vec![],
+            by_name: BTreeMap::new(),
+        };
+        for (ln, line) in objects.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |m: &str| format!("objects.txt line {}: {m}", ln + 1);
+            let f: Vec<&str> = line.split('|').map(str::trim).collect();
+            if f.len() != 5 {
+                return Err(err("expected 5 fields"));
+            }
+            let size: Vec<f64> = f[2]
+                .split_whitespace()
+                .map(|v| v.parse::<f64>().map_err(|e| err(&e.to_string())))
+                .collect::<Result<_, _>>()?;
+            let [w, d, h] = size[..] else {
+                return Err(err("size needs three numbers"));
+            };
+            let anchor = parse_anchor(f[3]).ok_or_else(|| err("unknown anchor"))?;
+            let o = ObjectKind {
+                category: f[0].to_lowercase(),
+                synonyms: list(f[1]),
+                size: [w, d, h],
+                anchor,
+                description: f[4].to_string(),
+            };
+            let idx = kb.objects.len();
+            for name in std::iter::once(&o.category).chain(&o.synonyms) {
+                // The first category to claim a name keeps it.
+                kb.by_name.entry(name.clone()).or_insert(idx);
+            }
+            if kb.by_name[&o.category] != idx {
+                return Err(err(&format!("category `{}` defined twice", o.category)));
+            }
+            kb.objects.push(o);
+        }
+        for (ln, line) in scenes.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |m: &str| format!("scenes.txt line {}: {m}", ln + 1);
+            let f: Vec<&str> = line.split('|').map(str::trim).collect();
+            if f.len() != 6 {
+                return Err(err("expected 6 fields"));
+            }
+            let scene_type = match f[1] {
+                "indoor" => SceneType::Indoor,
+                "outdoor" => SceneType::Outdoor,
+                _ => return Err(err("type must be indoor or outdoor")),
+            };
+            let resolve = |name: &str| -> Result<String, String> {
+                kb.object(name)
+                    .map(|o| o.category.clone())
+                    .ok_or_else(|| err(&format!("unknown object `{name}`")))
+            };
+            let mut objs = vec![];
+            for item in list(f[3]) {
+                let (name, n) = item
+                    .rsplit_once(':')
+                    .ok_or_else(|| err(&format!("`{item}` needs :count")))?;
+                let n: u32 = n
+                    .trim()
+                    .parse()
+                    .map_err(|_| err(&format!("count in `{item}`")))?;
+                objs.push((resolve(name.trim())?, n));
+            }
+            let mut anchors = BTreeMap::new();
+            for item in list(f[4]) {
+                let (name, a) = item
+                    .split_once('=')
+                    .ok_or_else(|| err(&format!("`{item}` needs =ANCHOR")))?;
+                let a = parse_anchor(a).ok_or_else(|| err(&format!("anchor in `{item}`")))?;
+                anchors.insert(resolve(name.trim())?, a);
+            }
+            let mut relations = vec![];
+            for item in f[5].split(';').map(str::trim).filter(|s| !s.is_empty()) {
+                let words: Vec<&str> = item.split_whitespace().collect();
+                let pos = words
+                    .iter()
+                    .position(|w| {
+                        w.chars().all(|c| c.is_ascii_uppercase()) && parse_relation(w).is_some()
+                    })
+                    .ok_or_else(|| err(&format!("no relation in `{item}`")))?;
+                let mut subject = words[..pos].join(" ");
+                let every = subject.ends_with('*');
+                subject = subject.trim_end_matches('*').to_string();
+                let relation = parse_relation(words[pos]).expect("checked");
+                let object = words[pos + 1..].join(" ");
+                let (subject, object) = (resolve(&subject)?, resolve(&object)?);
+                for c in [&subject, &object] {
+                    if !objs.iter().any(|(o, _)| o == c) {
+                        return Err(err(&format!("relation uses `{c}`, not in the scene")));
+                    }
+                }
+                relations.push(KbRelation {
+                    subject,
+                    every,
+                    relation,
+                    object,
+                });
+            }
+            kb.scenes.push(SceneKind {
+                name: f[0].to_lowercase(),
+                scene_type,
+                synonyms: list(f[2]),
+                objects: objs,
+                anchors,
+                relations,
+            });
+        }
+        Ok(kb)
+    }
+
+    /// The category named `name` (its name or a synonym, singular, lower case).
+    pub fn object(&self, name: &str) -> Option<&ObjectKind> {
+        self.by_name.get(name).map(|&i| &self.objects[i])
+    }
+
+    /// Every (name, category) pair: categories and synonyms.
+    pub fn names(&self) -> impl Iterator<Item = (&str, &ObjectKind)> {
+        self.by_name
+            .iter()
+            .map(|(k, &i)| (k.as_str(), &self.objects[i]))
+    }
+
+    /// The scene type named `name` or a synonym.
+    pub fn scene(&self, name: &str) -> Option<&SceneKind> {
+        self.scenes
+            .iter()
+            .find(|s| s.name == name || s.synonyms.iter().any(|x| x == name))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_knowledge_base_is_complete() {
+        let kb = KnowledgeBase::builtin();
+        let indoor = kb
+            .scenes
+            .iter()
+            .filter(|s| s.scene_type == SceneType::Indoor)
+            .count();
+        let outdoor = kb.scenes.len() - indoor;
+        assert!(
+            indoor >= 25 && outdoor >= 8,
+            "{indoor} indoor, {outdoor} outdoor"
+        );
+        assert!(kb.objects.len() >= 200, "{} categories", kb.objects.len());
+        for o in &kb.objects {
+            assert!(
+                o.size.iter().all(|&v| v > 0.0 && v <= 20.0),
+                "{}",
+                o.category
+            );
+            assert!(!o.description.is_empty());
+        }
+        for s in &kb.scenes {
+            assert!(!s.objects.is_empty(), "{}", s.name);
+            if s.scene_type == SceneType::Outdoor {
+                assert!(
+                    !s.anchors.values().any(|a| *a == Anchor::Corner),
+                    "{}",
+                    s.name
+                );
+            }
+        }
+        assert_eq!(kb.object("couch").unwrap().category, "sofa");
+        assert_eq!(kb.scene("lounge").unwrap().name, "living room");
+    }
+
+    #[test]
+    fn malformed_tables_name_the_line() {
+        let e = KnowledgeBase::parse("sofa | couch | 2 1 | SIDE | a sofa", "").unwrap_err();
+        assert!(e.contains("line 1"), "{e}");
+        let e = KnowledgeBase::parse(
+            "sofa | couch | 2 1 0.8 | SIDE | a sofa",
+            "x | indoor | | sofa:1, lamp:1 | | ",
+        )
+        .unwrap_err();
+        assert!(e.contains("lamp"), "{e}");
+    }
+}
