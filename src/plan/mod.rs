@@ -3,4 +3,5 @@
 pub mod check;
 pub mod gcp;
 pub mod kb;
+pub mod offline;
 pub mod spec;

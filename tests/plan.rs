@@ -1,0 +1,219 @@
+//! The offline planner on free text: scene types and synonyms, named objects with counts and
+//! adjectives, room sizes, placement phrases, style words; and layouts of the planned specs.
+use dreamscene::plan::check::{anchor_holds, relation_holds, validity_problems};
+use dreamscene::plan::gcp::{layout, LayoutOptions, INDOOR_OCCUPANCY};
+use dreamscene::plan::offline::{parse_room_size, plan_offline};
+use dreamscene::plan::spec::*;
+use std::collections::BTreeMap;
+
+#[test]
+fn room_sizes_in_the_ways_people_write_them() {
+    assert_eq!(parse_room_size("a 4m x 5m office"), Some([4.0, 5.0]));
+    assert_eq!(parse_room_size("a study, 5 x 4 m"), Some([5.0, 4.0]));
+    assert_eq!(parse_room_size("6 by 3.5 metres"), Some([6.0, 3.5]));
+    assert_eq!(parse_room_size("3.2m×4.1m"), Some([3.2, 4.1]));
+    let a = parse_room_size("a 20 square meters bedroom").unwrap();
+    assert!((a[0] * a[1] - 20.0).abs() < 0.3, "{a:?}");
+    assert!(parse_room_size("20 m2 studio").is_some());
+    assert_eq!(parse_room_size("two chairs and 3 tables"), None);
+}
+
+#[test]
+fn scene_types_synonyms_counts_adjectives_and_placements() {
+    let s = plan_offline("a lounge with six chairs and a pair of floor lamps");
+    assert!(s.objects.contains_key("sofa"), "lounge is a living room");
+    assert_eq!(s.objects["dining chair"].number, 6);
+    assert_eq!(s.objects["floor lamp"].number, 2);
+
+    let s = plan_offline("a kid's room");
+    assert!(s.objects.contains_key("single bed") && s.objects.contains_key("toy chest"));
+
+    let s = plan_offline("a minimalist bedroom with a vintage oak dresser in the corner");
+    assert_eq!(s.anchors["dresser1"], Anchor::Corner);
+    let d = &s.objects["dresser"].description;
+    assert!(
+        d.starts_with("A DSLR photo of") && d.contains("vintage oak dresser"),
+        "{d}"
+    );
+    assert!(
+        s.objects["bed"].description.contains("minimalist"),
+        "style carried to every object"
+    );
+
+    let s = plan_offline("a beach-inspired living room with a rattan armchair in front of the loveseat, a lamp next to the sofa, a tv opposite the sofa, and the coffee table centered");
+    let rel = |a: &str, r: RelationKind, b: &str| {
+        s.relations
+            .iter()
+            .any(|x| x.subject == a && x.relation == r && x.object == b)
+    };
+    assert!(
+        rel("armchair1", RelationKind::Front, "loveseat1"),
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        rel("table lamp1", RelationKind::Next, "sofa1"),
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        rel("tv1", RelationKind::Opposite, "sofa1"),
+        "{:?}",
+        s.relations
+    );
+    assert_eq!(s.anchors["coffee table1"], Anchor::Center);
+    assert!(s.objects["armchair"]
+        .description
+        .contains("beach-inspired rattan armchair"));
+
+    let s = plan_offline("a bookcase against one wall");
+    assert_eq!(s.anchors["bookshelf1"], Anchor::Side);
+    s.validate().unwrap();
+}
+
+#[test]
+fn unknown_scene_types_still_give_a_room_with_the_named_objects() {
+    let s = plan_offline("a wizard's potion laboratory with a cauldron, two barrels and a chest");
+    assert_eq!(s.scene_type, SceneType::Indoor);
+    assert_eq!(s.objects["barrel"].number, 2);
+    assert!(s.objects.contains_key("cauldron") && s.objects.contains_key("chest"));
+    s.validate().unwrap();
+    let s = plan_offline("something beautiful");
+    assert!(!s.objects.is_empty());
+    s.validate().unwrap();
+    let s = plan_offline("an outdoor area with a tent and a fire pit in the corner");
+    assert_eq!(s.scene_type, SceneType::Outdoor);
+    assert!(
+        s.anchors.values().all(|a| *a != Anchor::Corner),
+        "no corners outdoors"
+    );
+}
+
+fn stacked(spec: &SceneSpec) -> impl Fn(&str, &str) -> bool + '_ {
+    move |a: &str, b: &str| {
+        spec.relations.iter().any(|r| {
+            matches!(r.relation, RelationKind::Over | RelationKind::Under)
+                && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
+        })
+    }
+}
+
+/// A prompt, the room size it states, and objects it must contain.
+type Case = (&'static str, Option<[f64; 2]>, &'static [&'static str]);
+
+/// Prompts a user would write, planned and laid out: valid, rooms as stated, objects as named,
+/// and at least 90% of relations and anchors satisfied over the set.
+#[test]
+fn planned_prompts_lay_out_validly() {
+    let prompts: &[Case] = &[
+        ("a cozy living room", None, &["sofa"]),
+        (
+            "a minimalist bedroom, 4m x 5m, with a desk by the window",
+            Some([4.0, 5.0]),
+            &["bed", "desk"],
+        ),
+        (
+            "a dining room with six chairs around a round table",
+            None,
+            &["round table", "dining chair"],
+        ),
+        (
+            "a scandinavian kitchen with an island and three bar stools",
+            None,
+            &["kitchen island", "bar stool"],
+        ),
+        ("a small bathroom with a bathtub", None, &["bathtub"]),
+        (
+            "a home office, 3 x 3.5 m, with two bookshelves against one wall",
+            Some([3.0, 3.5]),
+            &["desk", "bookshelf"],
+        ),
+        ("a cafe with four tables", None, &["cafe table"]),
+        ("a classroom", None, &["blackboard"]),
+        ("a gym with two treadmills", None, &["treadmill"]),
+        (
+            "a garden with a fountain in the middle and three benches",
+            None,
+            &["fountain", "park bench"],
+        ),
+        (
+            "a beach with palm trees and two sun loungers",
+            None,
+            &["palm tree", "lounge chair"],
+        ),
+        (
+            "a campsite with a tent next to the fire pit",
+            None,
+            &["tent", "fire pit"],
+        ),
+        (
+            "a 30 square meters game room with a pool table",
+            None,
+            &["pool table"],
+        ),
+        ("a library with a globe", None, &["globe", "library shelf"]),
+        (
+            "a nursery with a rocking chair",
+            None,
+            &["crib", "rocking chair"],
+        ),
+    ];
+    let (mut rel_ok, mut rel_n, mut anc_ok, mut anc_n) = (0, 0, 0, 0);
+    let start = std::time::Instant::now();
+    for (p, size, named) in prompts {
+        let spec = plan_offline(p);
+        spec.validate().unwrap_or_else(|e| panic!("{p}: {e}"));
+        for n in *named {
+            assert!(
+                spec.objects.contains_key(*n),
+                "{p}: no {n} in {:?}",
+                spec.objects.keys()
+            );
+        }
+        let room = spec.room.unwrap().size;
+        if let Some([w, d]) = size {
+            assert_eq!([room[0], room[1]], [*w, *d], "{p}: room size kept");
+        } else if spec.scene_type == SceneType::Indoor && !p.contains("square") {
+            let area: f64 = spec.instances().iter().map(|i| i.size[0] * i.size[1]).sum();
+            assert!(
+                area / (room[0] * room[1]) <= INDOOR_OCCUPANCY + 1e-9,
+                "{p}: occupancy"
+            );
+        }
+        let l = layout(
+            &spec,
+            LayoutOptions {
+                seed: 1,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let problems = validity_problems(&l, &stacked(&spec));
+        assert!(problems.is_empty(), "{p}: {problems:?}");
+        assert_eq!(
+            l.objects.len(),
+            spec.instances().len(),
+            "{p}: nothing dropped"
+        );
+        let by: BTreeMap<&str, &PlacedObject> =
+            l.objects.iter().map(|o| (o.id.as_str(), o)).collect();
+        for r in &spec.relations {
+            rel_n += 1;
+            rel_ok +=
+                relation_holds(by[r.subject.as_str()], r.relation, by[r.object.as_str()]) as usize;
+        }
+        for o in &l.objects {
+            anc_n += 1;
+            anc_ok += anchor_holds(o, o.anchor, l.scene_type, l.room.size) as usize;
+        }
+    }
+    let (r, a) = (rel_ok as f64 / rel_n as f64, anc_ok as f64 / anc_n as f64);
+    eprintln!(
+        "{} prompts: relations {rel_ok}/{rel_n} = {:.1}%, anchors {anc_ok}/{anc_n} = {:.1}%, {:.2} s",
+        prompts.len(),
+        100.0 * r,
+        100.0 * a,
+        start.elapsed().as_secs_f64()
+    );
+    assert!(r >= 0.9 && a >= 0.9, "relations {r:.3}, anchors {a:.3}");
+}
