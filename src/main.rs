@@ -93,6 +93,25 @@ enum Command {
         #[arg(long, default_value_t = 0)]
         seed: u64,
     },
+    /// Plan a scene from a sentence (or a dialogue) and lay it out: writes <out>/spec.json,
+    /// <out>/layout.json and a top-down picture <out>/layout.png.
+    ///
+    /// Planning is offline, from the built-in knowledge base: the scene type, the objects the
+    /// prompt names with their counts and adjectives, room size ("4m x 5m", "20 square meters"),
+    /// placement phrases ("in the corner", "next to the sofa") and style words.
+    Plan {
+        /// What to build, e.g. "a cozy living room".
+        prompt: Option<String>,
+        /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
+        #[arg(long)]
+        dialogue: Option<PathBuf>,
+        /// Seed of the layout.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Output directory.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Place the objects of a scene spec (spec.json) with graph-based constraint placement.
     ///
     /// Writes layout.json: every instance placed exactly once, collision-free, with the relations
@@ -206,6 +225,12 @@ fn run(cli: Cli) -> Result<()> {
             };
             fit(&start, views, config, &out, checkpoint_every)
         }
+        Command::Plan {
+            prompt,
+            dialogue,
+            seed,
+            out,
+        } => plan(prompt, dialogue, seed, &out),
         Command::Layout { spec, seed, out } => {
             let spec = SceneSpec::read(&spec)?;
             let l = layout(
@@ -305,6 +330,79 @@ fn fit(
     save(&t)?;
     bar.finish();
     println!("wrote {} ({} Gaussians)", out.display(), t.len());
+    Ok(())
+}
+
+#[derive(serde::Deserialize)]
+struct Turn {
+    role: String,
+    content: String,
+}
+
+fn plan(prompt: Option<String>, dialogue: Option<PathBuf>, seed: u64, out: &Path) -> Result<()> {
+    let text = match (prompt, dialogue) {
+        (Some(p), None) => p,
+        (None, Some(f)) => {
+            let raw =
+                std::fs::read_to_string(&f).with_context(|| format!("reading {}", f.display()))?;
+            let turns: Vec<Turn> = serde_json::from_str(&raw).with_context(|| {
+                format!("{}: expected a JSON list of {{role, content}}", f.display())
+            })?;
+            let user: Vec<String> = turns
+                .into_iter()
+                .filter(|t| t.role == "user")
+                .map(|t| t.content)
+                .collect();
+            if user.is_empty() {
+                bail!("{}: the dialogue has no user turns", f.display());
+            }
+            user.join(". ")
+        }
+        (Some(_), Some(_)) => bail!("give a prompt or --dialogue, not both"),
+        (None, None) => {
+            bail!("give a prompt, e.g. dreamscene plan \"a cozy living room\" --out out/plan")
+        }
+    };
+    if text.trim().is_empty() {
+        bail!("the prompt is empty");
+    }
+    let spec = dreamscene::plan::offline::plan_offline(&text);
+    let l = layout(
+        &spec,
+        LayoutOptions {
+            seed,
+            ..Default::default()
+        },
+    )?;
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let spec_json = serde_json::to_string_pretty(&spec)?;
+    dreamscene::util::write_atomic(&out.join("spec.json"), spec_json.as_bytes())
+        .with_context(|| format!("writing {}/spec.json", out.display()))?;
+    l.write(&out.join("layout.json"))
+        .with_context(|| format!("writing {}/layout.json", out.display()))?;
+    let png = out.join("layout.png");
+    let tmp = out.join("layout.png.tmp");
+    dreamscene::plan::draw::draw_layout(&l)
+        .save_with_format(&tmp, image::ImageFormat::Png)
+        .and_then(|_| std::fs::rename(&tmp, &png).map_err(image::ImageError::IoError))
+        .with_context(|| format!("writing {}", png.display()))?;
+    let n_rel = spec.relations.len();
+    println!(
+        "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
+        match spec.scene_type {
+            dreamscene::plan::spec::SceneType::Indoor => "indoor",
+            dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
+        },
+        l.room.size[0],
+        l.room.size[1],
+        l.objects.len(),
+        n_rel - l.unsatisfied.len(),
+        n_rel
+    );
+    println!(
+        "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
+        out.display()
+    );
     Ok(())
 }
 

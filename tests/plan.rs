@@ -217,3 +217,69 @@ fn planned_prompts_lay_out_validly() {
     );
     assert!(r >= 0.9 && a >= 0.9, "relations {r:.3}, anchors {a:.3}");
 }
+
+/// The `plan` verb end to end: spec.json, layout.json and a decodable layout.png; bad input
+/// gets one line and a non-zero exit.
+#[test]
+fn plan_verb_writes_spec_layout_and_picture() {
+    let exe = env!("CARGO_BIN_EXE_dreamscene");
+    let dir = std::env::temp_dir().join(format!("dreamscene-plan-{}", std::process::id()));
+    let out = std::process::Command::new(exe)
+        .args([
+            "plan",
+            "a cozy living room, 5m x 4m",
+            "--seed",
+            "3",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let spec = SceneSpec::read(&dir.join("spec.json")).unwrap();
+    assert_eq!(spec.room.unwrap().size[..2], [5.0, 4.0]);
+    let l: Layout =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("layout.json")).unwrap()).unwrap();
+    assert_eq!(l.seed, 3);
+    assert_eq!(l.objects.len(), spec.instances().len());
+    let img = image::open(dir.join("layout.png")).unwrap();
+    assert!(img.width() > 500 && img.height() > 400);
+
+    let dlg = dir.join("dialogue.json");
+    std::fs::write(&dlg, r#"[{"role": "user", "content": "I want a bedroom"}, {"role": "assistant", "content": "Which style?"}, {"role": "user", "content": "rustic, with a desk"}]"#).unwrap();
+    let out = std::process::Command::new(exe)
+        .args(["plan", "--dialogue"])
+        .arg(&dlg)
+        .arg("--out")
+        .arg(dir.join("d"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let spec = SceneSpec::read(&dir.join("d/spec.json")).unwrap();
+    assert!(spec.objects.contains_key("bed") && spec.objects.contains_key("desk"));
+    assert!(spec.objects["bed"].description.contains("rustic"));
+
+    std::fs::write(&dlg, "[{\"role\": \"user\"").unwrap();
+    let out = std::process::Command::new(exe)
+        .args(["plan", "--dialogue"])
+        .arg(&dlg)
+        .arg("--out")
+        .arg(dir.join("e"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("dialogue.json") && err.trim().lines().count() == 1,
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

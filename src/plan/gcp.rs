@@ -7,6 +7,7 @@
 //! constraints it takes the best pose it can get and is marked `fallback`.
 use super::check::{
     anchor_holds_box, penetration, relation_holds_box, wall_distances, Box2, CORNER_DISTANCE,
+    TOLERANCE,
 };
 use super::spec::{
     Anchor, Instance, Layout, PlacedBy, PlacedObject, Relation, RelationKind, Room, SceneSpec,
@@ -289,7 +290,8 @@ impl Problem {
             if apart >= WALKWAY || self.is_stacked(i, j) {
                 continue;
             }
-            if apart < 0.0 && penetration(&b, bj) > 0.0 {
+            // Within half the validity tolerance: flat things (rugs, mats) may lie under others.
+            if apart < 0.0 && penetration(&b, bj) > 0.5 * TOLERANCE {
                 return (false, 0, 0, f64::NEG_INFINITY);
             }
             if !self.rels[i].iter().any(|r| r.1 == j) {

@@ -1,6 +1,7 @@
 //! Scene planning: the SceneSpec / Layout contracts, their semantics, and the graph-based
 //! constraint placement. Pure host code: never imports `ash`.
 pub mod check;
+pub mod draw;
 pub mod gcp;
 pub mod kb;
 pub mod offline;
