@@ -4,5 +4,6 @@ pub mod check;
 pub mod draw;
 pub mod gcp;
 pub mod kb;
+pub mod llm;
 pub mod offline;
 pub mod spec;
