@@ -105,6 +105,20 @@ enum Command {
         /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
         #[arg(long)]
         dialogue: Option<PathBuf>,
+        /// Plan with an OpenAI-compatible chat endpoint instead (OpenAI, Ollama, llama.cpp, vLLM),
+        /// e.g. https://api.openai.com/v1 or http://localhost:11434/v1. The key comes from
+        /// OPENAI_API_KEY. Unusable answers are retried, then the offline planner takes over.
+        #[arg(long, env = "DREAMSCENE_LLM_URL")]
+        llm_url: Option<String>,
+        /// Model name for the endpoint.
+        #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
+        llm_model: String,
+        /// Seconds to wait for each LLM answer.
+        #[arg(long, default_value_t = 120)]
+        llm_timeout: u64,
+        /// Ask about style and constraints before planning.
+        #[arg(long)]
+        interactive: bool,
         /// Seed of the layout.
         #[arg(long, default_value_t = 0)]
         seed: u64,
@@ -228,9 +242,24 @@ fn run(cli: Cli) -> Result<()> {
         Command::Plan {
             prompt,
             dialogue,
+            llm_url,
+            llm_model,
+            llm_timeout,
+            interactive,
             seed,
             out,
-        } => plan(prompt, dialogue, seed, &out),
+        } => {
+            let llm = llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
+                url,
+                model: llm_model,
+                api_key: std::env::var("OPENAI_API_KEY")
+                    .ok()
+                    .filter(|k| !k.is_empty()),
+                timeout: std::time::Duration::from_secs(llm_timeout.max(1)),
+                retries: 2,
+            });
+            plan(prompt, dialogue, llm, interactive, seed, &out)
+        }
         Command::Layout { spec, seed, out } => {
             let spec = SceneSpec::read(&spec)?;
             let l = layout(
@@ -339,7 +368,42 @@ struct Turn {
     content: String,
 }
 
-fn plan(prompt: Option<String>, dialogue: Option<PathBuf>, seed: u64, out: &Path) -> Result<()> {
+/// Asks about style and constraints on the terminal; the answers join the user constraint.
+fn interview(text: &str) -> Result<String> {
+    use std::io::{BufRead, Write};
+    let mut out = text.to_string();
+    let stdin = std::io::stdin();
+    for q in [
+        "What style should it have (e.g. minimalist, rustic, beach-inspired)? ",
+        "Any constraints: room size, objects it must have, where things go? ",
+    ] {
+        eprint!("{q}");
+        std::io::stderr().flush().ok();
+        let mut line = String::new();
+        stdin
+            .lock()
+            .read_line(&mut line)
+            .context("reading the answer")?;
+        let a = line.trim();
+        if !a.is_empty() {
+            out = if out.is_empty() {
+                a.to_string()
+            } else {
+                format!("{out}. {a}")
+            };
+        }
+    }
+    Ok(out)
+}
+
+fn plan(
+    prompt: Option<String>,
+    dialogue: Option<PathBuf>,
+    llm: Option<dreamscene::plan::llm::LlmConfig>,
+    interactive: bool,
+    seed: u64,
+    out: &Path,
+) -> Result<()> {
     let text = match (prompt, dialogue) {
         (Some(p), None) => p,
         (None, Some(f)) => {
@@ -359,14 +423,39 @@ fn plan(prompt: Option<String>, dialogue: Option<PathBuf>, seed: u64, out: &Path
             user.join(". ")
         }
         (Some(_), Some(_)) => bail!("give a prompt or --dialogue, not both"),
+        (None, None) if interactive => String::new(),
         (None, None) => {
             bail!("give a prompt, e.g. dreamscene plan \"a cozy living room\" --out out/plan")
         }
     };
+    let text = if interactive {
+        if text.is_empty() {
+            eprint!("What scene would you like? ");
+            let mut line = String::new();
+            std::io::stdin()
+                .read_line(&mut line)
+                .context("reading the answer")?;
+            interview(line.trim())?
+        } else {
+            interview(&text)?
+        }
+    } else {
+        text
+    };
     if text.trim().is_empty() {
         bail!("the prompt is empty");
     }
-    let spec = dreamscene::plan::offline::plan_offline(&text);
+    let spec = match &llm {
+        None => dreamscene::plan::offline::plan_offline(&text),
+        Some(cfg) => {
+            eprintln!("asking {} ({})", cfg.url, cfg.model);
+            let (spec, report) = dreamscene::plan::llm::plan_llm(cfg, &text);
+            for w in &report.warnings {
+                eprintln!("warning: {w}");
+            }
+            spec
+        }
+    };
     let l = layout(
         &spec,
         LayoutOptions {

@@ -78,7 +78,8 @@ fn anchors_prompt(constraint: &str, scene: SceneType, scene_text: &str, ids: &[S
         SceneType::Indoor => "There are four relationships to choose from: 1. CENTER, the object is in the center of the scene 2. SIDE, the object is at the boundary of the scene 3. CORNER, the object is in the corner of the scene 4. OTHERS, the object is in other places.",
         SceneType::Outdoor => "There are three relationships to choose from: 1. CENTER, the object is in the center of the scene 2. SIDE, the object is at the boundary of the scene 3. OTHERS, the object is in other places.",
     };
-    let input = json!({"scene_type": scene_word(scene), "scene_text": scene_text, "objects_list": ids});
+    let input =
+        json!({"scene_type": scene_word(scene), "scene_text": scene_text, "objects_list": ids});
     format!(
         "{}your task is to determine the spatial relationship between an object and its environment based on the object's name and common human understanding. {zones} When dealing with multiple similar objects, arrange their positions reasonably to prevent conflicts. Please return in the following example format in JSON format.\nInput: {{\"scene_type\": \"indoor scene\", \"scene_text\": \"a living room\", \"objects_list\": [\"sofa1\", \"sofa2\", \"coffee table1\", \"potted plant1\"]}}\nOutput: {{\"sofa1\": \"SIDE\", \"sofa2\": \"SIDE\", \"coffee table1\": \"CENTER\", \"potted plant1\": \"CORNER\"}}\nNow, I need select for {input}.",
         prefix(constraint)
@@ -121,7 +122,8 @@ pub fn parse_loose_json(text: &str) -> Result<Value, String> {
     }
     let obj = &body[start..=end];
     // Bare words as values (`"sofa1": SIDE`) become strings; true/false/null stay.
-    let bare = Regex::new(r#":\s*([A-Za-z_][A-Za-z_ ]*[A-Za-z_])\s*([,}\]\n])"#).expect("valid regex");
+    let bare =
+        Regex::new(r#":\s*([A-Za-z_][A-Za-z_ ]*[A-Za-z_])\s*([,}\]\n])"#).expect("valid regex");
     let quoted = bare.replace_all(obj, |c: &regex::Captures| {
         let w = &c[1];
         if ["true", "false", "null"].contains(&w) {
@@ -216,7 +218,11 @@ fn category_name(kb: &KnowledgeBase, raw: &str) -> String {
     kb.object(&n).map(|o| o.category.clone()).unwrap_or(n)
 }
 
-fn parse_objects(kb: &KnowledgeBase, v: &Value, warnings: &mut Vec<String>) -> Result<BTreeMap<String, ObjectSpec>, String> {
+fn parse_objects(
+    kb: &KnowledgeBase,
+    v: &Value,
+    warnings: &mut Vec<String>,
+) -> Result<BTreeMap<String, ObjectSpec>, String> {
     let map = v.as_object().ok_or("expected an object of objects")?;
     let mut out: BTreeMap<String, ObjectSpec> = BTreeMap::new();
     for (name, o) in map {
@@ -236,11 +242,18 @@ fn parse_objects(kb: &KnowledgeBase, v: &Value, warnings: &mut Vec<String>) -> R
         let size = match (size, known) {
             (Some(s), _) if s.len() == 3 && s.iter().all(|v| v.is_finite() && *v > 0.0) => {
                 // Centimetres slip in: a sofa of 200 x 90 x 80.
-                let s: Vec<f64> = if s.iter().any(|v| *v > 30.0) { s.iter().map(|v| v / 100.0).collect() } else { s };
+                let s: Vec<f64> = if s.iter().any(|v| *v > 30.0) {
+                    s.iter().map(|v| v / 100.0).collect()
+                } else {
+                    s
+                };
                 [0, 1, 2].map(|k| s[k].clamp(0.005, 20.0))
             }
             (_, Some(k)) => {
-                warnings.push(format!("`{name}`: size missing or invalid, using {:?}", k.size));
+                warnings.push(format!(
+                    "`{name}`: size missing or invalid, using {:?}",
+                    k.size
+                ));
                 k.size
             }
             _ => {
@@ -250,10 +263,21 @@ fn parse_objects(kb: &KnowledgeBase, v: &Value, warnings: &mut Vec<String>) -> R
         };
         let mut description = o["description"].as_str().unwrap_or("").trim().to_string();
         if !description.starts_with("A DSLR photo of") {
-            let body = if description.is_empty() { cat.clone() } else { description.clone() };
+            let body = if description.is_empty() {
+                cat.clone()
+            } else {
+                description.clone()
+            };
             description = format!("A DSLR photo of {body}");
         }
-        out.insert(cat, ObjectSpec { number, size, description });
+        out.insert(
+            cat,
+            ObjectSpec {
+                number,
+                size,
+                description,
+            },
+        );
     }
     if out.is_empty() {
         return Err("no usable objects".into());
@@ -277,18 +301,28 @@ pub fn plan_llm(cfg: &LlmConfig, constraint: &str) -> (SceneSpec, PlanReport) {
 }
 
 /// Plans with the LLM, or the error.
-pub fn plan_llm_strict(cfg: &LlmConfig, constraint: &str, report: &mut PlanReport) -> Result<SceneSpec, LlmError> {
+pub fn plan_llm_strict(
+    cfg: &LlmConfig,
+    constraint: &str,
+    report: &mut PlanReport,
+) -> Result<SceneSpec, LlmError> {
     let kb = KnowledgeBase::builtin();
     // The scene type and room size the text states; the offline reading decides indoor/outdoor.
     let offline = plan_offline(constraint);
     let scene_type = offline.scene_type;
     let scene_text = constraint.trim().to_string();
     let mut warnings = vec![];
-    let objects = ask(cfg, "objects", &objects_prompt(constraint, &scene_text), report, |v| {
-        let mut w = vec![];
-        let r = parse_objects(kb, v, &mut w);
-        r.map(|o| (o, w))
-    })
+    let objects = ask(
+        cfg,
+        "objects",
+        &objects_prompt(constraint, &scene_text),
+        report,
+        |v| {
+            let mut w = vec![];
+            let r = parse_objects(kb, v, &mut w);
+            r.map(|o| (o, w))
+        },
+    )
     .map(|(o, w)| {
         warnings.extend(w);
         o
@@ -308,25 +342,46 @@ pub fn plan_llm_strict(cfg: &LlmConfig, constraint: &str, report: &mut PlanRepor
             return Some(r);
         }
         // "couch1" -> "sofa1"; a bare category means its first instance.
-        let digits: String = r.chars().rev().take_while(|c| c.is_ascii_digit()).collect::<String>().chars().rev().collect();
+        let digits: String = r
+            .chars()
+            .rev()
+            .take_while(|c| c.is_ascii_digit())
+            .collect::<String>()
+            .chars()
+            .rev()
+            .collect();
         let cat = category_name(kb, &r);
-        let id = format!("{cat}{}", if digits.is_empty() { "1".into() } else { digits });
+        let id = format!(
+            "{cat}{}",
+            if digits.is_empty() {
+                "1".into()
+            } else {
+                digits
+            }
+        );
         ids.contains(&id).then_some(id)
     };
-    let anchors = ask(cfg, "anchors", &anchors_prompt(constraint, scene_type, &scene_text, &ids), report, |v| {
-        let map = v.as_object().ok_or("expected an object of anchors")?;
-        let mut out = BTreeMap::new();
-        for (k, a) in map {
-            let (Some(id), Some(anchor)) = (lookup(k), a.as_str().and_then(parse_anchor)) else {
-                continue;
-            };
-            out.insert(id, anchor);
-        }
-        if out.is_empty() {
-            return Err("no usable anchors (keys must be the listed instances, values CENTER, SIDE, CORNER or OTHERS)".to_string());
-        }
-        Ok(out)
-    })?;
+    let anchors = ask(
+        cfg,
+        "anchors",
+        &anchors_prompt(constraint, scene_type, &scene_text, &ids),
+        report,
+        |v| {
+            let map = v.as_object().ok_or("expected an object of anchors")?;
+            let mut out = BTreeMap::new();
+            for (k, a) in map {
+                let (Some(id), Some(anchor)) = (lookup(k), a.as_str().and_then(parse_anchor))
+                else {
+                    continue;
+                };
+                out.insert(id, anchor);
+            }
+            if out.is_empty() {
+                return Err("no usable anchors (keys must be the listed instances, values CENTER, SIDE, CORNER or OTHERS)".to_string());
+            }
+            Ok(out)
+        },
+    )?;
     for id in &ids {
         let cat = id.trim_end_matches(|c: char| c.is_ascii_digit());
         let mut a = anchors
@@ -356,7 +411,8 @@ pub fn plan_llm_strict(cfg: &LlmConfig, constraint: &str, report: &mut PlanRepor
                 let map = v.as_object().ok_or("expected an object of relations")?;
                 let mut out = vec![];
                 for (k, r) in map {
-                    if let (Some(id), Some(rel)) = (lookup(k), r.as_str().and_then(parse_relation)) {
+                    if let (Some(id), Some(rel)) = (lookup(k), r.as_str().and_then(parse_relation))
+                    {
                         out.push((id, rel));
                     }
                 }
@@ -367,18 +423,30 @@ pub fn plan_llm_strict(cfg: &LlmConfig, constraint: &str, report: &mut PlanRepor
             if other == current {
                 continue;
             }
-            let key = (current.clone().min(other.clone()), current.clone().max(other.clone()));
+            let key = (
+                current.clone().min(other.clone()),
+                current.clone().max(other.clone()),
+            );
             if seen.insert(key) {
-                spec.relations.push(Relation { subject: current.clone(), relation: rel, object: other });
+                spec.relations.push(Relation {
+                    subject: current.clone(),
+                    relation: rel,
+                    object: other,
+                });
             }
         }
     }
     report.warnings.extend(warnings);
     let chosen = choose_room(&spec.instances(), scene_type);
     spec.room = Some(match parse_room_size(constraint) {
-        Some([w, d]) => Room { size: [w, d, chosen.size[2]] },
+        Some([w, d]) => Room {
+            size: [w, d, chosen.size[2]],
+        },
         None => chosen,
     });
-    spec.validate().map_err(|e| LlmError::Answer { question: "objects", msg: e.to_string() })?;
+    spec.validate().map_err(|e| LlmError::Answer {
+        question: "objects",
+        msg: e.to_string(),
+    })?;
     Ok(spec)
 }
