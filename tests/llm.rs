@@ -141,3 +141,43 @@ fn hopeless_answers_or_a_dead_server_fall_back_offline() {
     let all = format!("{:?} {cfg:?}", report.warnings);
     assert!(!all.contains("sk-secret"), "the key never appears: {all}");
 }
+
+/// The verb: warnings on stderr, the offline fallback, and the key nowhere in the output.
+#[test]
+fn plan_verb_with_an_llm_never_prints_the_key() {
+    let (url, log) = server(vec![
+        "garbage".into(),
+        "more garbage".into(),
+        "and more".into(),
+    ]);
+    let dir = std::env::temp_dir().join(format!("dreamscene-llm-{}", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args([
+            "plan",
+            "a cozy living room",
+            "--llm-url",
+            &url,
+            "--llm-model",
+            "m",
+            "--out",
+        ])
+        .arg(&dir)
+        .env("OPENAI_API_KEY", "sk-secret-456")
+        .output()
+        .unwrap();
+    let all = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.status.success(), "{all}");
+    assert!(all.contains("planning offline instead"), "{all}");
+    assert!(!all.contains("sk-secret"), "{all}");
+    assert!(log
+        .lock()
+        .unwrap()
+        .iter()
+        .all(|(a, _)| a == "Bearer sk-secret-456"));
+    assert!(dir.join("layout.png").is_file());
+    std::fs::remove_dir_all(&dir).ok();
+}
