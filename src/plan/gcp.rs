@@ -319,8 +319,9 @@ impl Problem {
                     // stacked things line up with their partner
                     let dy = (p.yaw - pj.yaw).to_radians();
                     pose_bonus += dy.cos().abs();
-                } else if subject {
-                    // chairs, tables, lamps turn toward what they relate to
+                } else if subject || rel == RelationKind::Opposite {
+                    // chairs, tables, lamps turn toward what they relate to; OPPOSITE pairs
+                    // face each other
                     pose_bonus += super::check::facing_error(&b, &bj).to_radians().cos();
                 }
             }
