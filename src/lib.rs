@@ -3,6 +3,7 @@
 
 pub mod bench;
 pub mod camera;
+pub mod diffusion;
 pub mod gpu;
 pub mod plan;
 pub mod splat;

@@ -1,0 +1,548 @@
+//! Guidance rules: functions from noise predictions to a latent-space gradient (or target),
+//! written against [`NoisePredictor`], which runs the positive, negative and null prompts (and the
+//! edit prompt) as one batch per timestep.
+//!
+//! - MTS as the paper states it: T_end decreasing linearly over the run, [1, T_end] cut into m
+//!   intervals with one random t in each, DDIM inversion with the null prompt between them, and
+//!   Σ w(tᵢ)(ε(y) − ε(∅)).
+//! - MTS as the authors' code runs it: random jumps from t = 1 while below T_end (at most 4),
+//!   CFG 7.5 with the view-dependent negative prompt as "unconditional", λ = 0.1, averaged.
+//! - Pseudo-ground truth of reconstructive generation: x̂₀ at the first sampled t with the CFG ε.
+//! - Editing: ε(y_edit) − ε(y) along the same inversion chain.
+//! - Ablations: SDS, DreamTime's decreasing t, LucidDreamer's ISM.
+use super::schedule::{add_noise, cfg, ddim_step, predict_x0, weight, Schedule};
+use rand::Rng;
+
+/// Which prompt embedding a prediction uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cond {
+    /// The (view-dependent) prompt y.
+    Positive,
+    /// The (view-dependent) negative prompt.
+    Negative,
+    /// The empty prompt ∅.
+    Null,
+    /// The edit prompt y_edit.
+    Edit,
+}
+
+/// Predicts ε for latent `x` at DDPM timestep `t` under each condition, in one batched run.
+pub trait NoisePredictor {
+    fn predict(&mut self, x: &[f32], t: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String>;
+}
+
+/// Timestep ranges of one phase (the authors' configs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MtsRange {
+    /// T_end goes from `stage.1` down to `stage.0` over `period` steps.
+    pub stage: (u32, u32),
+    /// Random jump length range, high exclusive.
+    pub jump: (u32, u32),
+    pub period: u32,
+}
+
+pub const OBJECT_MTS: MtsRange = MtsRange {
+    stage: (400, 850),
+    jump: (175, 225),
+    period: 1500,
+};
+pub const OBJECT_RECON: MtsRange = MtsRange {
+    stage: (140, 200),
+    jump: (75, 150),
+    period: 1,
+};
+pub const SCENE_ENVIRONMENT: MtsRange = MtsRange {
+    stage: (400, 850),
+    jump: (175, 225),
+    period: 1000,
+};
+pub const SCENE_FLOOR: MtsRange = MtsRange {
+    stage: (350, 750),
+    jump: (150, 200),
+    period: 700,
+};
+pub const SCENE_RECON: MtsRange = MtsRange {
+    stage: (140, 200),
+    jump: (75, 150),
+    period: 1,
+};
+
+/// Most timesteps the code's schedule samples.
+pub const MAX_POINTS: usize = 4;
+
+/// T_end at `step`: linear from stage.1 down to stage.0.
+pub fn t_end(r: &MtsRange, step: u32) -> u32 {
+    let f = (step as f64 / r.period.max(1) as f64).min(1.0);
+    r.stage.1 - ((r.stage.1 - r.stage.0) as f64 * f) as u32
+}
+
+/// The code's schedule: cumulative random jumps while below T_end (the first always kept),
+/// ascending timestep indices.
+pub fn code_schedule(r: &MtsRange, step: u32, rng: &mut impl Rng) -> Vec<u32> {
+    let end = t_end(r, step);
+    let mut ts: Vec<u32> = vec![];
+    for _ in 0..MAX_POINTS {
+        let j = rng.gen_range(r.jump.0..r.jump.1);
+        match ts.last() {
+            None => ts.push(j),
+            Some(&last) if last + j < end => ts.push(last + j),
+            _ => break,
+        }
+    }
+    ts
+}
+
+/// The paper's schedule: [1, T_end] cut into `m` equal intervals, one uniform t in each.
+pub fn paper_schedule(r: &MtsRange, step: u32, m: u32, rng: &mut impl Rng) -> Vec<u32> {
+    let end = t_end(r, step).max(m + 1);
+    let m = m.max(1);
+    (0..m)
+        .map(|i| {
+            let lo = 1 + (end - 1) * i / m;
+            let hi = (1 + (end - 1) * (i + 1) / m).max(lo + 1);
+            rng.gen_range(lo..hi)
+        })
+        .collect()
+}
+
+/// Which form of the MTS gradient.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MtsRule {
+    /// Σ w(tᵢ)(ε(y) − ε(∅)), scaled by λ.
+    Paper,
+    /// (1/n) Σ λ w(tᵢ)(ε_cfg − ε(∅)) with ε_cfg = ε(neg) + s (ε(y) − ε(neg)).
+    Code,
+}
+
+/// Settings of the MTS gradient.
+#[derive(Debug, Clone, Copy)]
+pub struct MtsSettings {
+    pub rule: MtsRule,
+    pub guidance_scale: f64,
+    pub lambda: f64,
+    /// The timestep the chain starts from (the code noises the latent to t = 1 first).
+    pub t_start: u32,
+}
+
+impl Default for MtsSettings {
+    fn default() -> Self {
+        MtsSettings {
+            rule: MtsRule::Code,
+            guidance_scale: 7.5,
+            lambda: 0.1,
+            t_start: 1,
+        }
+    }
+}
+
+fn non_finite_to_zero(v: &mut [f32]) {
+    for x in v {
+        if !x.is_finite() {
+            *x = 0.0;
+        }
+    }
+}
+
+/// One point of the inversion chain.
+struct ChainPoint {
+    t: u32,
+    preds: Vec<Vec<f32>>,
+}
+
+/// Noises `z0` to `s.t_start`, then walks up through `ts` (ascending) by DDIM inversion with the
+/// null prompt, predicting `conds` (which must include Null) at every point in one batch.
+fn chain(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    t_start: u32,
+    ts: &[u32],
+    conds: &[Cond],
+) -> Result<Vec<ChainPoint>, String> {
+    let null = conds
+        .iter()
+        .position(|c| *c == Cond::Null)
+        .expect("Null among the conditions");
+    let mut x = add_noise(z0, eps, sched.alpha_bar(t_start as i64));
+    let mut cur = t_start;
+    let mut out = vec![];
+    for &next in ts.iter().chain(std::iter::once(&u32::MAX)) {
+        let preds: Vec<Vec<f32>> = pred
+            .predict(&x, cur, conds)?
+            .into_iter()
+            .map(|p| sched.to_eps(&p, &x, sched.alpha_bar(cur as i64)))
+            .collect();
+        if preds.len() != conds.len() || preds.iter().any(|p| p.len() != x.len()) {
+            return Err(format!(
+                "noise predictor returned {} outputs of the wrong size",
+                preds.len()
+            ));
+        }
+        if next != u32::MAX {
+            x = ddim_step(
+                &x,
+                &preds[null],
+                sched.alpha_bar(cur as i64),
+                sched.alpha_bar(next as i64),
+            );
+        }
+        out.push(ChainPoint { t: cur, preds });
+        if next != u32::MAX {
+            cur = next;
+        }
+    }
+    Ok(out)
+}
+
+/// The MTS gradient on the latent `z0` for sampled timesteps `ts` (ascending), noise `eps`.
+pub fn mts_gradient(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    ts: &[u32],
+    s: &MtsSettings,
+) -> Result<Vec<f32>, String> {
+    let conds = [Cond::Positive, Cond::Negative, Cond::Null];
+    let points = chain(pred, sched, z0, eps, s.t_start, ts, &conds)?;
+    let n = ts.len().max(1) as f64;
+    let mut g = vec![0.0f32; z0.len()];
+    for p in points.iter().skip(1) {
+        let w = weight(sched.alpha_bar(p.t as i64));
+        let (pos, neg, null) = (&p.preds[0], &p.preds[1], &p.preds[2]);
+        let mut term: Vec<f32> = match s.rule {
+            MtsRule::Paper => pos
+                .iter()
+                .zip(null)
+                .map(|(a, b)| (s.lambda * w * (*a as f64 - *b as f64)) as f32)
+                .collect(),
+            MtsRule::Code => cfg(neg, pos, s.guidance_scale)
+                .iter()
+                .zip(null)
+                .map(|(a, b)| (s.lambda * w * (*a as f64 - *b as f64) / n) as f32)
+                .collect(),
+        };
+        non_finite_to_zero(&mut term);
+        for (gi, ti) in g.iter_mut().zip(term) {
+            *gi += ti;
+        }
+    }
+    Ok(g)
+}
+
+/// The pseudo-ground-truth latent of reconstructive generation: along the same chain, x̂₀ at the
+/// first sampled timestep with the CFG noise.
+pub fn pseudo_gt(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    ts: &[u32],
+    s: &MtsSettings,
+) -> Result<Vec<f32>, String> {
+    let first = *ts.first().ok_or("no timestep sampled")?;
+    let conds = [Cond::Positive, Cond::Negative, Cond::Null];
+    let points = chain(pred, sched, z0, eps, s.t_start, &[first], &conds)?;
+    let p = &points[1];
+    let e = cfg(&p.preds[1], &p.preds[0], s.guidance_scale);
+    // x_t at the first t is recomputed from the chain's first step.
+    let x_start = add_noise(z0, eps, sched.alpha_bar(s.t_start as i64));
+    let x_t = ddim_step(
+        &x_start,
+        &points[0].preds[2],
+        sched.alpha_bar(s.t_start as i64),
+        sched.alpha_bar(first as i64),
+    );
+    Ok(predict_x0(&x_t, &e, sched.alpha_bar(first as i64)))
+}
+
+/// The appearance-editing gradient: Σ λ w(tᵢ)(ε(y_edit) − ε(y)) / n along the inversion chain.
+pub fn edit_gradient(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    ts: &[u32],
+    s: &MtsSettings,
+) -> Result<Vec<f32>, String> {
+    let conds = [Cond::Edit, Cond::Positive, Cond::Null];
+    let points = chain(pred, sched, z0, eps, s.t_start, ts, &conds)?;
+    let n = ts.len().max(1) as f64;
+    let mut g = vec![0.0f32; z0.len()];
+    for p in points.iter().skip(1) {
+        let w = weight(sched.alpha_bar(p.t as i64));
+        for (k, gi) in g.iter_mut().enumerate() {
+            let v = (s.lambda * w * (p.preds[0][k] as f64 - p.preds[1][k] as f64) / n) as f32;
+            *gi += if v.is_finite() { v } else { 0.0 };
+        }
+    }
+    Ok(g)
+}
+
+/// Score distillation sampling: λ w(t)(ε_cfg(x_t) − ε) with x_t = noised z0.
+pub fn sds_gradient(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    t: u32,
+    s: &MtsSettings,
+) -> Result<Vec<f32>, String> {
+    let ab = sched.alpha_bar(t as i64);
+    let x = add_noise(z0, eps, ab);
+    let p = pred.predict(&x, t, &[Cond::Positive, Cond::Negative])?;
+    let (pos, neg) = (sched.to_eps(&p[0], &x, ab), sched.to_eps(&p[1], &x, ab));
+    let e = cfg(&neg, &pos, s.guidance_scale);
+    Ok(e.iter()
+        .zip(eps)
+        .map(|(a, b)| {
+            let v = (s.lambda * weight(ab) * (*a as f64 - *b as f64)) as f32;
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        })
+        .collect())
+}
+
+/// DreamTime's time-prioritised schedule: t decreases monotonically from `t_max` to `t_min`
+/// over the run (uniform prior weights).
+pub fn dreamtime_t(step: u32, steps: u32, t_min: u32, t_max: u32) -> u32 {
+    let f = (step as f64 / steps.max(1) as f64).min(1.0);
+    (t_max as f64 - (t_max - t_min) as f64 * f).round() as u32
+}
+
+/// LucidDreamer's interval score matching: x_s by DDIM inversion (null prompt) from t_start in
+/// steps of `xs_delta` (at most `xs_steps`), one inversion step s → t whose ε is the target, and
+/// λ w(t)(ε_cfg(x_t) − ε_∅(x_s, s)).
+#[allow(clippy::too_many_arguments)]
+pub fn ism_gradient(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    z0: &[f32],
+    eps: &[f32],
+    s_t: u32,
+    t: u32,
+    xs_delta: u32,
+    xs_steps: u32,
+    set: &MtsSettings,
+) -> Result<Vec<f32>, String> {
+    let mut cur = set.t_start;
+    let mut x = add_noise(z0, eps, sched.alpha_bar(cur as i64));
+    for _ in 0..xs_steps {
+        if cur >= s_t {
+            break;
+        }
+        let nxt = (cur + xs_delta).min(s_t);
+        let e = pred.predict(&x, cur, &[Cond::Null])?.remove(0);
+        x = ddim_step(
+            &x,
+            &e,
+            sched.alpha_bar(cur as i64),
+            sched.alpha_bar(nxt as i64),
+        );
+        cur = nxt;
+    }
+    let e_s = pred.predict(&x, cur, &[Cond::Null])?.remove(0);
+    let x_t = ddim_step(
+        &x,
+        &e_s,
+        sched.alpha_bar(cur as i64),
+        sched.alpha_bar(t as i64),
+    );
+    let p = pred.predict(&x_t, t, &[Cond::Positive, Cond::Negative])?;
+    let e = cfg(&p[1], &p[0], set.guidance_scale);
+    let w = weight(sched.alpha_bar(t as i64));
+    Ok(e.iter()
+        .zip(&e_s)
+        .map(|(a, b)| {
+            let v = (set.lambda * w * (*a as f64 - *b as f64)) as f32;
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        })
+        .collect())
+}
+
+/// View-dependent prompts as the authors' object code builds them.
+pub fn view_prompts(
+    text: &str,
+    negative: &str,
+    azimuth_deg: f64,
+    elevation_deg: f64,
+) -> (String, String) {
+    const STYLE: &str =
+        "4k, 8k, best quality, ultra-detailed, finely detail, highres, high resolution";
+    let a = azimuth_deg.abs();
+    let (d, others) = if elevation_deg < -60.0 {
+        ("overhead", "front view, back view, side view")
+    } else if elevation_deg >= 60.0 {
+        ("bottom", "front view, back view, side view, overhead view")
+    } else if a < 37.5 {
+        ("front", "side view, back view, overhead view")
+    } else if a < 142.5 {
+        ("side", "front view, back view, overhead view")
+    } else {
+        ("back", "front view, side view, overhead view")
+    };
+    (
+        format!("{text}, {d} view, {STYLE}"),
+        format!("{negative}, {others}"),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::schedule::{Schedule, SchedulerConfig};
+    use super::*;
+    use rand::SeedableRng;
+
+    /// ε = k(cond) x + t / 1000: simple enough to compute the chain by hand. Counts calls.
+    struct Fake {
+        calls: Vec<(u32, usize)>,
+    }
+    fn k(c: Cond) -> f32 {
+        match c {
+            Cond::Positive => 0.5,
+            Cond::Negative => 0.2,
+            Cond::Null => 0.1,
+            Cond::Edit => 0.9,
+        }
+    }
+    impl NoisePredictor for Fake {
+        fn predict(&mut self, x: &[f32], t: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+            self.calls.push((t, conds.len()));
+            Ok(conds
+                .iter()
+                .map(|c| x.iter().map(|v| k(*c) * v + t as f32 / 1000.0).collect())
+                .collect())
+        }
+    }
+
+    #[test]
+    fn schedules_follow_their_rules() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        assert_eq!(t_end(&OBJECT_MTS, 0), 850);
+        assert_eq!(t_end(&OBJECT_MTS, 750), 625);
+        assert_eq!(t_end(&OBJECT_MTS, 5000), 400);
+        for step in [0u32, 300, 900, 1500] {
+            for _ in 0..50 {
+                let ts = code_schedule(&OBJECT_MTS, step, &mut rng);
+                assert!(!ts.is_empty() && ts.len() <= MAX_POINTS);
+                assert!((175..225).contains(&ts[0]));
+                for w in ts.windows(2) {
+                    assert!((175..225).contains(&(w[1] - w[0])));
+                    assert!(w[1] < t_end(&OBJECT_MTS, step));
+                }
+                let p = paper_schedule(&OBJECT_MTS, step, 4, &mut rng);
+                let end = t_end(&OBJECT_MTS, step);
+                assert_eq!(p.len(), 4);
+                for (i, t) in p.iter().enumerate() {
+                    let lo = 1 + (end - 1) * i as u32 / 4;
+                    let hi = 1 + (end - 1) * (i as u32 + 1) / 4;
+                    assert!(*t >= lo && *t < hi.max(lo + 1), "{t} not in [{lo}, {hi})");
+                }
+            }
+        }
+        assert_eq!(dreamtime_t(0, 100, 20, 980), 980);
+        assert_eq!(dreamtime_t(100, 100, 20, 980), 20);
+    }
+
+    #[test]
+    fn mts_gradient_matches_the_chain_computed_by_hand() {
+        let sched = Schedule::new(SchedulerConfig::sd21_base()).unwrap();
+        let z0: Vec<f32> = (0..16).map(|i| (i as f32 * 0.3).sin()).collect();
+        let eps: Vec<f32> = (0..16).map(|i| (i as f32 * 0.7).cos()).collect();
+        let ts = [200u32, 410, 600];
+        let s = MtsSettings::default();
+        let mut fake = Fake { calls: vec![] };
+        let g = mts_gradient(&mut fake, &sched, &z0, &eps, &ts, &s).unwrap();
+        // One batched call per chain point (t = 1 and the three sampled), three conditions each.
+        assert_eq!(fake.calls, vec![(1, 3), (200, 3), (410, 3), (600, 3)]);
+        // By hand, in f64.
+        let ab = |t: u32| sched.alpha_bar(t as i64);
+        let mut x: Vec<f64> = z0
+            .iter()
+            .zip(&eps)
+            .map(|(a, b)| ab(1).sqrt() * *a as f64 + (1.0 - ab(1)).sqrt() * *b as f64)
+            .collect();
+        let mut want = vec![0.0f64; 16];
+        let mut cur = 1u32;
+        for &t in &ts {
+            // invert with the null prediction
+            for xi in x.iter_mut() {
+                let e = 0.1 * *xi + cur as f64 / 1000.0;
+                let x0 = (*xi - (1.0 - ab(cur)).sqrt() * e) / ab(cur).sqrt();
+                *xi = ab(t).sqrt() * x0 + (1.0 - ab(t)).sqrt() * e;
+            }
+            cur = t;
+            for (k, xi) in x.iter().enumerate() {
+                let c = t as f64 / 1000.0;
+                let (pos, neg, null) = (0.5 * xi + c, 0.2 * xi + c, 0.1 * xi + c);
+                let e_cfg = neg + 7.5 * (pos - neg);
+                want[k] += 0.1 * weight(ab(t)) * (e_cfg - null) / 3.0;
+            }
+        }
+        for (a, b) in g.iter().zip(&want) {
+            assert!(
+                (*a as f64 - b).abs() < 1e-4 * b.abs().max(1.0),
+                "{a} vs {b}"
+            );
+        }
+        // The paper's rule differs: no CFG, no averaging.
+        let sp = MtsSettings {
+            rule: MtsRule::Paper,
+            ..s
+        };
+        let gp = mts_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, &ts, &sp).unwrap();
+        assert!(gp.iter().zip(&g).any(|(a, b)| (a - b).abs() > 1e-3));
+    }
+
+    #[test]
+    fn pseudo_gt_edit_sds_and_ism_run_and_differ() {
+        let sched = Schedule::new(SchedulerConfig::sd21_base()).unwrap();
+        let z0 = vec![0.3f32; 8];
+        let eps = vec![-0.4f32; 8];
+        let s = MtsSettings::default();
+        let gt = pseudo_gt(
+            &mut Fake { calls: vec![] },
+            &sched,
+            &z0,
+            &eps,
+            &[120, 260],
+            &s,
+        )
+        .unwrap();
+        assert!(gt.iter().all(|v| v.is_finite()));
+        let e = edit_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, &[300], &s).unwrap();
+        assert!(e.iter().all(|v| *v > 0.0), "edit prompt pulls away from y");
+        let sds = sds_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, 500, &s).unwrap();
+        let mut f = Fake { calls: vec![] };
+        let ism = ism_gradient(&mut f, &sched, &z0, &eps, 400, 480, 200, 5, &s).unwrap();
+        assert_eq!(
+            f.calls.iter().map(|c| c.0).collect::<Vec<_>>(),
+            vec![1, 201, 400, 480]
+        );
+        assert!(sds.iter().zip(&ism).any(|(a, b)| (a - b).abs() > 1e-4));
+    }
+
+    #[test]
+    fn view_prompts_as_the_code_builds_them() {
+        let (p, n) = view_prompts("a chair", "ugly", 10.0, 0.0);
+        assert!(p.starts_with("a chair, front view, 4k"));
+        assert_eq!(n, "ugly, side view, back view, overhead view");
+        assert!(view_prompts("a chair", "ugly", 90.0, 0.0)
+            .0
+            .contains("side view"));
+        assert!(view_prompts("a chair", "ugly", -170.0, 0.0)
+            .0
+            .contains("back view"));
+        assert!(view_prompts("a chair", "ugly", 0.0, -70.0)
+            .0
+            .contains("overhead view"));
+    }
+}
