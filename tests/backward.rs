@@ -181,48 +181,13 @@ fn backward_with_cas_atomics_matches_reference() {
     assert_mostly_nonzero(&r, "CAS atomics");
 }
 
-/// The forward's 100,000-splat tile (see tests/forward.rs): the large splats behind the crowd are
+/// The 100,000-splat tile of `common::crowded_tile`: the large splats behind the crowd are
 /// blended only in later segments, so their gradients are zero if any loop is cut short or the
 /// running colour and T are not carried between segments.
-fn crowded_tile() -> (Gaussians, Camera) {
-    let mut rng = common::rng(14);
-    let cam = Camera::look_at(
-        [0.0, 0.0, 0.0],
-        [0.0, 0.0, 1.0],
-        [0.0, -1.0, 0.0],
-        16,
-        16,
-        60f64.to_radians(),
-    );
-    let f = cam.fx as f32;
-    let mut g = Gaussians {
-        sh_degree: 0,
-        ..Default::default()
-    };
-    for _ in 0..100_000 {
-        let z = rng.gen_range(2.0f32..2.5);
-        let (u, v) = (rng.gen_range(1.0f32..3.0), rng.gen_range(1.0f32..3.0));
-        g.means.push([(u - 8.0) * z / f, (v - 8.0) * z / f, z]);
-        g.scales.push([(0.002f32).ln(); 3]);
-        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-        g.opacities.push(0.0);
-        g.sh.extend([rng.gen_range(-1.0f32..1.0), 0.5, -0.5]);
-    }
-    for k in 0..4 {
-        g.means
-            .push([0.05 * k as f32, -0.05 * k as f32, 3.5 + 0.1 * k as f32]);
-        g.scales.push([(3.0f32).ln(), (2.0f32).ln(), (1.5f32).ln()]);
-        g.rotations.push([1.0, 0.1 * k as f32, 0.2, 0.0]);
-        g.opacities.push(-1.0);
-        g.sh.extend([1.2, -1.0, 0.3 * k as f32]);
-    }
-    (g, cam)
-}
-
 #[test]
 fn tile_with_100k_splats_differentiates_past_the_loop_limit() {
     let ctx = common::gpu();
-    let (g, cam) = crowded_tile();
+    let (g, cam) = common::crowded_tile();
     for cas in [false, true] {
         let bwd = Backward::new(&ctx, cas).unwrap();
         let r = run(&ctx, &bwd, &g, &cam, [0.1, 0.2, 0.3], 62);

@@ -173,39 +173,13 @@ fn nan_and_inf_inputs_are_culled_without_poisoning_others() {
     ctx.check_validation().unwrap();
 }
 
-/// lavapipe silently ends every shader invocation's loops after 65,535 iterations. One tile holds
-/// 100,000 tiny splats in its top-left corner, in front of a few large ones; pixels in the far
-/// corner only get colour from the large splats, which come after index 100,000 in the tile's list.
-/// A blend loop that ran past the limit in one invocation would leave those pixels background.
+/// lavapipe silently ends every shader invocation's loops after 65,535 iterations: the tile of
+/// `common::crowded_tile` would leave its far-corner pixels background if the blend ran past it.
 #[test]
 fn tile_with_100k_splats_renders_past_the_loop_limit() {
     let ctx = common::gpu();
     let r = Rasterizer::new(&ctx).unwrap();
-    let mut rng = common::rng(14);
-    let cam = front_camera(16, 16);
-    let f = cam.fx as f32;
-    let mut g = Gaussians {
-        sh_degree: 0,
-        ..Default::default()
-    };
-    use rand::Rng;
-    for _ in 0..100_000 {
-        let z = rng.gen_range(2.0f32..2.5);
-        let (u, v) = (rng.gen_range(1.0f32..3.0), rng.gen_range(1.0f32..3.0));
-        g.means.push([(u - 8.0) * z / f, (v - 8.0) * z / f, z]);
-        g.scales.push([(0.002f32).ln(); 3]);
-        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-        g.opacities.push(0.0);
-        g.sh.extend([rng.gen_range(-1.0f32..1.0), 0.5, -0.5]);
-    }
-    for k in 0..4 {
-        g.means
-            .push([0.05 * k as f32, -0.05 * k as f32, 3.5 + 0.1 * k as f32]);
-        g.scales.push([(3.0f32).ln(); 3]);
-        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-        g.opacities.push(-1.0);
-        g.sh.extend([1.2, -1.0, 0.3 * k as f32]);
-    }
+    let (g, cam) = common::crowded_tile();
     let gpu = r.render(&ctx, &g, &cam, [0.0, 0.0, 0.0]).unwrap();
     let gg = dreamscene::splat::raster::GpuGaussians::upload(&ctx, &g).unwrap();
     let frame = r.forward(&ctx, &gg, &cam, [0.0; 3]).unwrap();

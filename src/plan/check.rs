@@ -1,6 +1,6 @@
 //! The meaning of relations, anchors and validity (ARCHITECTURE.md), as predicates on placed
 //! objects. The layout search filters candidates with them and the tests check layouts with them.
-use super::spec::{Anchor, Layout, PlacedObject, RelationKind, SceneType};
+use super::spec::{Anchor, Layout, PlacedObject, RelationKind, SceneSpec, SceneType};
 
 /// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.
 #[derive(Debug, Clone, Copy)]
@@ -245,9 +245,9 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
 /// Tolerance of the validity rules (metres).
 pub const TOLERANCE: f64 = 0.01;
 
-/// Validity problems of a layout: outside the room, above the ceiling, interpenetrating (an
-/// OVER/UNDER pair excepted, per `stacked`). Empty when valid.
-pub fn validity_problems(layout: &Layout, stacked: &dyn Fn(&str, &str) -> bool) -> Vec<String> {
+/// Validity problems of a layout of `spec`: outside the room, above the ceiling,
+/// interpenetrating (an OVER/UNDER pair of the spec excepted). Empty when valid.
+pub fn validity_problems(layout: &Layout, spec: &SceneSpec) -> Vec<String> {
     let room = layout.room.size;
     let mut out = vec![];
     let boxes: Vec<Box2> = layout.objects.iter().map(Box2::of).collect();
@@ -262,7 +262,7 @@ pub fn validity_problems(layout: &Layout, stacked: &dyn Fn(&str, &str) -> bool) 
     for i in 0..boxes.len() {
         for j in i + 1..boxes.len() {
             let (a, b) = (&layout.objects[i], &layout.objects[j]);
-            if stacked(&a.id, &b.id) {
+            if spec.is_stacked(&a.id, &b.id) {
                 continue;
             }
             let p = penetration(&boxes[i], &boxes[j]);

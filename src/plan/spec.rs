@@ -156,6 +156,15 @@ impl SceneSpec {
         out
     }
 
+    /// Whether instances `a` and `b` are an OVER / UNDER pair (either way round): such pairs may
+    /// share space.
+    pub fn is_stacked(&self, a: &str, b: &str) -> bool {
+        self.relations.iter().any(|r| {
+            matches!(r.relation, RelationKind::Over | RelationKind::Under)
+                && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
+        })
+    }
+
     /// Checks names, sizes, counts and references; the error says which entry is wrong.
     pub fn validate(&self) -> Result<(), SpecError> {
         let bad = |m: String| Err(SpecError::Invalid(m));

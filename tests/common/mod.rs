@@ -1,7 +1,7 @@
 //! Helpers shared by the GPU tests.
 #![allow(dead_code)]
 use dreamscene::gpu::Context;
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 
 /// Opens the Vulkan device. A GPU test never passes without one: no device is a failure, with
 /// the reason (install mesa-vulkan-drivers for lavapipe).
@@ -20,4 +20,43 @@ pub fn gpu() -> Context {
 /// Deterministic RNG for a test.
 pub fn rng(seed: u64) -> rand_chacha::ChaCha8Rng {
     rand_chacha::ChaCha8Rng::seed_from_u64(seed)
+}
+
+/// One 16x16 tile holding 100,000 tiny splats in its top-left corner, in front of four large
+/// anisotropic ones: pixels in the far corner only get colour from the large splats, which come
+/// after index 100,000 in the tile's list, so any blend (or blend backward) loop that runs past
+/// lavapipe's 65,535-iteration limit in one invocation leaves them wrong.
+pub fn crowded_tile() -> (dreamscene::splat::Gaussians, dreamscene::camera::Camera) {
+    let mut rng = rng(14);
+    let cam = dreamscene::camera::Camera::look_at(
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0],
+        16,
+        16,
+        60f64.to_radians(),
+    );
+    let f = cam.fx as f32;
+    let mut g = dreamscene::splat::Gaussians {
+        sh_degree: 0,
+        ..Default::default()
+    };
+    for _ in 0..100_000 {
+        let z = rng.gen_range(2.0f32..2.5);
+        let (u, v) = (rng.gen_range(1.0f32..3.0), rng.gen_range(1.0f32..3.0));
+        g.means.push([(u - 8.0) * z / f, (v - 8.0) * z / f, z]);
+        g.scales.push([(0.002f32).ln(); 3]);
+        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+        g.opacities.push(0.0);
+        g.sh.extend([rng.gen_range(-1.0f32..1.0), 0.5, -0.5]);
+    }
+    for k in 0..4 {
+        g.means
+            .push([0.05 * k as f32, -0.05 * k as f32, 3.5 + 0.1 * k as f32]);
+        g.scales.push([(3.0f32).ln(), (2.0f32).ln(), (1.5f32).ln()]);
+        g.rotations.push([1.0, 0.1 * k as f32, 0.2, 0.0]);
+        g.opacities.push(-1.0);
+        g.sh.extend([1.2, -1.0, 0.3 * k as f32]);
+    }
+    (g, cam)
 }
