@@ -135,21 +135,60 @@ impl Default for MtsSettings {
     }
 }
 
-fn non_finite_to_zero(v: &mut [f32]) {
-    for x in v {
-        if !x.is_finite() {
-            *x = 0.0;
-        }
+/// `scale (a − b)`, with non-finite results zeroed so one bad prediction cannot poison a latent.
+fn scaled_diff(a: &[f32], b: &[f32], scale: f64) -> Vec<f32> {
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| {
+            let v = (scale * (*a as f64 - *b as f64)) as f32;
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        })
+        .collect()
+}
+
+fn add_into(g: &mut [f32], term: &[f32]) {
+    for (gi, ti) in g.iter_mut().zip(term) {
+        *gi += ti;
     }
 }
 
-/// One point of the inversion chain.
+/// ε predictions for `conds` at (x, t), converted from v-prediction where the model uses it, and
+/// checked for count and size.
+fn predict_eps(
+    pred: &mut dyn NoisePredictor,
+    sched: &Schedule,
+    x: &[f32],
+    t: u32,
+    conds: &[Cond],
+) -> Result<Vec<Vec<f32>>, String> {
+    let ab = sched.alpha_bar(t as i64);
+    let preds: Vec<Vec<f32>> = pred
+        .predict(x, t, conds)?
+        .into_iter()
+        .map(|p| sched.to_eps(&p, x, ab))
+        .collect();
+    if preds.len() != conds.len() || preds.iter().any(|p| p.len() != x.len()) {
+        return Err(format!(
+            "noise predictor returned {} outputs for {} conditions, or of the wrong size",
+            preds.len(),
+            conds.len()
+        ));
+    }
+    Ok(preds)
+}
+
+/// One point of the inversion chain: the timestep, the latent there, and its predictions.
 struct ChainPoint {
     t: u32,
+    x: Vec<f32>,
     preds: Vec<Vec<f32>>,
 }
 
-/// Noises `z0` to `s.t_start`, then walks up through `ts` (ascending) by DDIM inversion with the
+/// Noises `z0` to `t_start`, then walks up through `ts` (ascending) by DDIM inversion with the
 /// null prompt, predicting `conds` (which must include Null) at every point in one batch.
 fn chain(
     pred: &mut dyn NoisePredictor,
@@ -164,33 +203,25 @@ fn chain(
         .iter()
         .position(|c| *c == Cond::Null)
         .expect("Null among the conditions");
+    let times: Vec<u32> = std::iter::once(t_start).chain(ts.iter().copied()).collect();
     let mut x = add_noise(z0, eps, sched.alpha_bar(t_start as i64));
-    let mut cur = t_start;
-    let mut out = vec![];
-    for &next in ts.iter().chain(std::iter::once(&u32::MAX)) {
-        let preds: Vec<Vec<f32>> = pred
-            .predict(&x, cur, conds)?
-            .into_iter()
-            .map(|p| sched.to_eps(&p, &x, sched.alpha_bar(cur as i64)))
-            .collect();
-        if preds.len() != conds.len() || preds.iter().any(|p| p.len() != x.len()) {
-            return Err(format!(
-                "noise predictor returned {} outputs of the wrong size",
-                preds.len()
-            ));
-        }
-        if next != u32::MAX {
+    let mut out: Vec<ChainPoint> = vec![];
+    for (k, &t) in times.iter().enumerate() {
+        if k > 0 {
+            let prev = &out[k - 1];
             x = ddim_step(
-                &x,
-                &preds[null],
-                sched.alpha_bar(cur as i64),
-                sched.alpha_bar(next as i64),
+                &prev.x,
+                &prev.preds[null],
+                sched.alpha_bar(prev.t as i64),
+                sched.alpha_bar(t as i64),
             );
         }
-        out.push(ChainPoint { t: cur, preds });
-        if next != u32::MAX {
-            cur = next;
-        }
+        let preds = predict_eps(pred, sched, &x, t, conds)?;
+        out.push(ChainPoint {
+            t,
+            x: x.clone(),
+            preds,
+        });
     }
     Ok(out)
 }
@@ -208,25 +239,15 @@ pub fn mts_gradient(
     let points = chain(pred, sched, z0, eps, s.t_start, ts, &conds)?;
     let n = ts.len().max(1) as f64;
     let mut g = vec![0.0f32; z0.len()];
+    // The t_start point only drives the first inversion step.
     for p in points.iter().skip(1) {
         let w = weight(sched.alpha_bar(p.t as i64));
         let (pos, neg, null) = (&p.preds[0], &p.preds[1], &p.preds[2]);
-        let mut term: Vec<f32> = match s.rule {
-            MtsRule::Paper => pos
-                .iter()
-                .zip(null)
-                .map(|(a, b)| (s.lambda * w * (*a as f64 - *b as f64)) as f32)
-                .collect(),
-            MtsRule::Code => cfg(neg, pos, s.guidance_scale)
-                .iter()
-                .zip(null)
-                .map(|(a, b)| (s.lambda * w * (*a as f64 - *b as f64) / n) as f32)
-                .collect(),
+        let term = match s.rule {
+            MtsRule::Paper => scaled_diff(pos, null, s.lambda * w),
+            MtsRule::Code => scaled_diff(&cfg(neg, pos, s.guidance_scale), null, s.lambda * w / n),
         };
-        non_finite_to_zero(&mut term);
-        for (gi, ti) in g.iter_mut().zip(term) {
-            *gi += ti;
-        }
+        add_into(&mut g, &term);
     }
     Ok(g)
 }
@@ -246,15 +267,7 @@ pub fn pseudo_gt(
     let points = chain(pred, sched, z0, eps, s.t_start, &[first], &conds)?;
     let p = &points[1];
     let e = cfg(&p.preds[1], &p.preds[0], s.guidance_scale);
-    // x_t at the first t is recomputed from the chain's first step.
-    let x_start = add_noise(z0, eps, sched.alpha_bar(s.t_start as i64));
-    let x_t = ddim_step(
-        &x_start,
-        &points[0].preds[2],
-        sched.alpha_bar(s.t_start as i64),
-        sched.alpha_bar(first as i64),
-    );
-    Ok(predict_x0(&x_t, &e, sched.alpha_bar(first as i64)))
+    Ok(predict_x0(&p.x, &e, sched.alpha_bar(first as i64)))
 }
 
 /// The appearance-editing gradient: Σ λ w(tᵢ)(ε(y_edit) − ε(y)) / n along the inversion chain.
@@ -272,10 +285,10 @@ pub fn edit_gradient(
     let mut g = vec![0.0f32; z0.len()];
     for p in points.iter().skip(1) {
         let w = weight(sched.alpha_bar(p.t as i64));
-        for (k, gi) in g.iter_mut().enumerate() {
-            let v = (s.lambda * w * (p.preds[0][k] as f64 - p.preds[1][k] as f64) / n) as f32;
-            *gi += if v.is_finite() { v } else { 0.0 };
-        }
+        add_into(
+            &mut g,
+            &scaled_diff(&p.preds[0], &p.preds[1], s.lambda * w / n),
+        );
     }
     Ok(g)
 }
@@ -291,20 +304,13 @@ pub fn sds_gradient(
 ) -> Result<Vec<f32>, String> {
     let ab = sched.alpha_bar(t as i64);
     let x = add_noise(z0, eps, ab);
-    let p = pred.predict(&x, t, &[Cond::Positive, Cond::Negative])?;
-    let (pos, neg) = (sched.to_eps(&p[0], &x, ab), sched.to_eps(&p[1], &x, ab));
-    let e = cfg(&neg, &pos, s.guidance_scale);
-    Ok(e.iter()
-        .zip(eps)
-        .map(|(a, b)| {
-            let v = (s.lambda * weight(ab) * (*a as f64 - *b as f64)) as f32;
-            if v.is_finite() {
-                v
-            } else {
-                0.0
-            }
-        })
-        .collect())
+    let p = predict_eps(pred, sched, &x, t, &[Cond::Positive, Cond::Negative])?;
+    let (pos, neg) = (&p[0], &p[1]);
+    Ok(scaled_diff(
+        &cfg(&neg, &pos, s.guidance_scale),
+        eps,
+        s.lambda * weight(ab),
+    ))
 }
 
 /// DreamTime's time-prioritised schedule: t decreases monotonically from `t_max` to `t_min`
@@ -336,7 +342,7 @@ pub fn ism_gradient(
             break;
         }
         let nxt = (cur + xs_delta).min(s_t);
-        let e = pred.predict(&x, cur, &[Cond::Null])?.remove(0);
+        let e = predict_eps(pred, sched, &x, cur, &[Cond::Null])?.remove(0);
         x = ddim_step(
             &x,
             &e,
@@ -345,27 +351,17 @@ pub fn ism_gradient(
         );
         cur = nxt;
     }
-    let e_s = pred.predict(&x, cur, &[Cond::Null])?.remove(0);
+    let e_s = predict_eps(pred, sched, &x, cur, &[Cond::Null])?.remove(0);
     let x_t = ddim_step(
         &x,
         &e_s,
         sched.alpha_bar(cur as i64),
         sched.alpha_bar(t as i64),
     );
-    let p = pred.predict(&x_t, t, &[Cond::Positive, Cond::Negative])?;
+    let p = predict_eps(pred, sched, &x_t, t, &[Cond::Positive, Cond::Negative])?;
     let e = cfg(&p[1], &p[0], set.guidance_scale);
     let w = weight(sched.alpha_bar(t as i64));
-    Ok(e.iter()
-        .zip(&e_s)
-        .map(|(a, b)| {
-            let v = (set.lambda * w * (*a as f64 - *b as f64)) as f32;
-            if v.is_finite() {
-                v
-            } else {
-                0.0
-            }
-        })
-        .collect())
+    Ok(scaled_diff(&e, &e_s, set.lambda * w))
 }
 
 /// View-dependent prompts as the authors' object code builds them.
@@ -500,6 +496,39 @@ mod tests {
         };
         let gp = mts_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, &ts, &sp).unwrap();
         assert!(gp.iter().zip(&g).any(|(a, b)| (a - b).abs() > 1e-3));
+    }
+
+    /// Predicts the true noise for every condition: the inversion chain then stays on
+    /// add_noise(z0, eps, t), x̂₀ is z0 exactly and every guidance difference vanishes.
+    struct Oracle(Vec<f32>);
+    impl NoisePredictor for Oracle {
+        fn predict(&mut self, _: &[f32], _: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+            Ok(conds.iter().map(|_| self.0.clone()).collect())
+        }
+    }
+
+    #[test]
+    fn a_perfect_predictor_recovers_the_latent() {
+        let sched = Schedule::new(SchedulerConfig::sd21_base()).unwrap();
+        let z0: Vec<f32> = (0..32).map(|i| (i as f32 * 0.21).sin()).collect();
+        let eps: Vec<f32> = (0..32).map(|i| (i as f32 * 0.9).cos()).collect();
+        let s = MtsSettings::default();
+        let gt = pseudo_gt(&mut Oracle(eps.clone()), &sched, &z0, &eps, &[130, 300], &s).unwrap();
+        for (a, b) in gt.iter().zip(&z0) {
+            assert!((a - b).abs() < 1e-4, "{a} vs {b}");
+        }
+        let g = mts_gradient(&mut Oracle(eps.clone()), &sched, &z0, &eps, &[200, 400], &s).unwrap();
+        assert!(g.iter().all(|v| v.abs() < 1e-6));
+        let sds = sds_gradient(&mut Oracle(eps.clone()), &sched, &z0, &eps, 500, &s).unwrap();
+        assert!(sds.iter().all(|v| v.abs() < 1e-5));
+        // A predictor returning the wrong number of outputs is an error, not a panic.
+        struct Short;
+        impl NoisePredictor for Short {
+            fn predict(&mut self, x: &[f32], _: u32, _: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+                Ok(vec![x.to_vec()])
+            }
+        }
+        assert!(mts_gradient(&mut Short, &sched, &z0, &eps, &[200], &s).is_err());
     }
 
     #[test]

@@ -134,12 +134,35 @@ fn object_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, Strin
                 table.entry(p).or_insert_with(|| o.category.clone());
             }
         }
-        let mut names: Vec<&String> = table.keys().collect();
-        names.sort_by_key(|n| std::cmp::Reverse(n.len()));
-        let alt: Vec<String> = names.iter().map(|n| regex::escape(n)).collect();
-        let re = Regex::new(&format!(r"\b(?:{})\b", alt.join("|"))).expect("valid regex");
-        (re, table)
+        (alternation(table.keys()), table)
     })
+}
+
+/// Regex matching any scene name or synonym (longest first), with the scene index of each name.
+fn scene_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, usize>) {
+    static M: OnceLock<(Regex, BTreeMap<String, usize>)> = OnceLock::new();
+    M.get_or_init(|| {
+        let mut table = BTreeMap::new();
+        for (i, s) in kb.scenes.iter().enumerate() {
+            for name in std::iter::once(&s.name).chain(&s.synonyms) {
+                table.entry(name.clone()).or_insert(i);
+            }
+        }
+        (alternation(table.keys()), table)
+    })
+}
+
+/// Regex matching any style word.
+fn style_matcher() -> &'static Regex {
+    static M: OnceLock<Regex> = OnceLock::new();
+    M.get_or_init(|| alternation(STYLES.iter()))
+}
+
+/// `\b(?:a|b|...)\b` over `names`, longest first so that the longest name wins at a position.
+fn alternation<S: AsRef<str>>(names: impl Iterator<Item = S>) -> Regex {
+    let mut names: Vec<String> = names.map(|n| regex::escape(n.as_ref())).collect();
+    names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+    re(&format!(r"\b(?:{})\b", names.join("|")))
 }
 
 fn re(pattern: &str) -> Regex {
@@ -213,7 +236,7 @@ fn find_mentions(kb: &KnowledgeBase, t: &str) -> Vec<Mention> {
             }
         }
         // A plural without a number means more than one.
-        if count.is_none() && m.as_str() != table_key_singular(m.as_str(), kb) {
+        if count.is_none() && kb.object(m.as_str()).is_none() {
             count = Some(2);
         }
         out.push(Mention {
@@ -226,15 +249,6 @@ fn find_mentions(kb: &KnowledgeBase, t: &str) -> Vec<Mention> {
         });
     }
     out
-}
-
-/// The singular form when `word` is a known name, else a different string.
-fn table_key_singular<'a>(word: &'a str, kb: &KnowledgeBase) -> &'a str {
-    if kb.names().any(|(n, _)| n == word) {
-        word
-    } else {
-        ""
-    }
 }
 
 fn article(s: &str) -> &'static str {
@@ -262,17 +276,11 @@ pub fn plan_offline(prompt: &str) -> SceneSpec {
     let kb = KnowledgeBase::builtin();
     let t = prompt.to_lowercase().replace(['\n', '\t'], " ");
     // Scene type: the longest scene name or synonym in the text.
-    let mut scene = None;
-    let mut best_len = 0;
-    for s in &kb.scenes {
-        for name in std::iter::once(&s.name).chain(&s.synonyms) {
-            let r = re(&format!(r"\b{}\b", regex::escape(name)));
-            if name.len() > best_len && r.is_match(&t) {
-                scene = Some(s);
-                best_len = name.len();
-            }
-        }
-    }
+    let (scene_re, scene_of) = scene_matcher(kb);
+    let scene = scene_re
+        .find_iter(&t)
+        .max_by_key(|m| m.as_str().len())
+        .map(|m| &kb.scenes[scene_of[m.as_str()]]);
     let outdoor_words =
         re(r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park)\b");
     let scene_type = scene
@@ -286,11 +294,13 @@ pub fn plan_offline(prompt: &str) -> SceneSpec {
     // Style words describe the whole scene unless they are one object's adjectives.
     let styles: Vec<String> = {
         let local = |w: &str| mentions.iter().any(|m| m.adjectives.iter().any(|a| a == w));
-        let mut v: Vec<String> = STYLES
-            .iter()
-            .filter(|s| re(&format!(r"\b{}\b", regex::escape(s))).is_match(&t) && !local(s))
-            .map(|s| s.to_string())
-            .collect();
+        let mut v: Vec<String> = vec![];
+        for m in style_matcher().find_iter(&t) {
+            let w = m.as_str().to_string();
+            if !local(&w) && !v.contains(&w) {
+                v.push(w);
+            }
+        }
         for m in re(r"\b[a-z]+-(?:inspired|style|styled|themed)\b").find_iter(&t) {
             if !local(m.as_str()) {
                 v.push(m.as_str().to_string());
