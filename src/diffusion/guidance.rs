@@ -307,7 +307,7 @@ pub fn sds_gradient(
     let p = predict_eps(pred, sched, &x, t, &[Cond::Positive, Cond::Negative])?;
     let (pos, neg) = (&p[0], &p[1]);
     Ok(scaled_diff(
-        &cfg(&neg, &pos, s.guidance_scale),
+        &cfg(neg, pos, s.guidance_scale),
         eps,
         s.lambda * weight(ab),
     ))
