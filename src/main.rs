@@ -269,10 +269,7 @@ fn run(cli: Cli) -> Result<()> {
                     ..Default::default()
                 },
             )?;
-            if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir)
-                    .with_context(|| format!("creating {}", dir.display()))?;
-            }
+            create_parent(&out)?;
             l.write(&out)
                 .with_context(|| format!("writing {}", out.display()))?;
             let fallback = l
@@ -314,9 +311,7 @@ fn fit(
     out: &Path,
     checkpoint_every: u32,
 ) -> Result<()> {
-    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    }
+    create_parent(out)?;
     let ctx = open_device()?;
     let n_views = views.len();
     let iterations = config.iterations;
@@ -469,12 +464,10 @@ fn plan(
         .with_context(|| format!("writing {}/spec.json", out.display()))?;
     l.write(&out.join("layout.json"))
         .with_context(|| format!("writing {}/layout.json", out.display()))?;
-    let png = out.join("layout.png");
-    let tmp = out.join("layout.png.tmp");
-    dreamscene::plan::draw::draw_layout(&l)
-        .save_with_format(&tmp, image::ImageFormat::Png)
-        .and_then(|_| std::fs::rename(&tmp, &png).map_err(image::ImageError::IoError))
-        .with_context(|| format!("writing {}", png.display()))?;
+    write_png(
+        &dreamscene::plan::draw::draw_layout(&l),
+        &out.join("layout.png"),
+    )?;
     let n_rel = spec.relations.len();
     println!(
         "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
@@ -529,11 +522,25 @@ fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
         let c = img.color[i];
         *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
     }
+    write_png(&buf, path)
+}
+
+/// Writes a PNG atomically (temporary file, then rename).
+fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
     let tmp = path.with_extension("png.tmp");
-    buf.save_with_format(&tmp, image::ImageFormat::Png)
+    img.save_with_format(&tmp, image::ImageFormat::Png)
         .with_context(|| format!("writing {}", path.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))?;
-    Ok(())
+    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))
+}
+
+/// Creates the directory that will hold `file`.
+fn create_parent(file: &Path) -> Result<()> {
+    match file.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
+        }
+        None => Ok(()),
+    }
 }
 
 fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {

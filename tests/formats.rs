@@ -106,3 +106,49 @@ fn tempdir(tag: &str) -> std::path::PathBuf {
     std::fs::create_dir_all(&d).unwrap();
     d
 }
+
+/// `fit` refuses bad training data before touching the device: a missing image or one whose
+/// size differs from its camera gets one line naming the file.
+#[test]
+fn fit_names_missing_or_mis_sized_images() {
+    let dir = std::env::temp_dir().join(format!("dreamscene-fit-{}", std::process::id()));
+    let images = dir.join("images");
+    std::fs::create_dir_all(&images).unwrap();
+    let mut cam = Camera::look_at([0.0, 0.0, -3.0], [0.0; 3], [0.0, -1.0, 0.0], 32, 24, 0.8);
+    cam.img_name = "view0".into();
+    write_cameras(&dir.join("cameras.json"), &[cam]).unwrap();
+    let run = || {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+            .args(["fit", "--images"])
+            .arg(&images)
+            .arg("--cameras")
+            .arg(dir.join("cameras.json"))
+            .arg("--out")
+            .arg(dir.join("model.ply"))
+            .args(["--iterations", "1"])
+            .output()
+            .unwrap();
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        err
+    };
+    let err = run();
+    assert!(
+        err.contains("no image for camera 0") && err.contains("view0"),
+        "{err}"
+    );
+    image::RgbImage::new(30, 24)
+        .save(images.join("view0.png"))
+        .unwrap();
+    let err = run();
+    assert!(
+        err.contains("view0.png") && err.contains("30x24") && err.contains("32x24"),
+        "{err}"
+    );
+    assert!(
+        !dir.join("model.ply").exists(),
+        "nothing written on bad input"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
