@@ -342,23 +342,9 @@ pub fn plan_llm_strict(
             return Some(r);
         }
         // "couch1" -> "sofa1"; a bare category means its first instance.
-        let digits: String = r
-            .chars()
-            .rev()
-            .take_while(|c| c.is_ascii_digit())
-            .collect::<String>()
-            .chars()
-            .rev()
-            .collect();
-        let cat = category_name(kb, &r);
-        let id = format!(
-            "{cat}{}",
-            if digits.is_empty() {
-                "1".into()
-            } else {
-                digits
-            }
-        );
+        let digits = &r[r.trim_end_matches(|c: char| c.is_ascii_digit()).len()..];
+        let index = if digits.is_empty() { "1" } else { digits };
+        let id = format!("{}{index}", category_name(kb, &r));
         ids.contains(&id).then_some(id)
     };
     let anchors = ask(
