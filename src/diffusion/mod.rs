@@ -3,3 +3,4 @@
 //! predictor trait that the ONNX Runtime UNet implements. Knows nothing of splats or Vulkan.
 pub mod guidance;
 pub mod schedule;
+pub mod tokenizer;
