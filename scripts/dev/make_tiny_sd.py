@@ -172,7 +172,7 @@ def unet_ref(sample, t, ehs):
 # ---------------------------------------------------------------- VAE (linear, patch-wise)
 # The decoder maps each latent pixel to an 8x8 RGB patch: x = M (z / scale) + c; the encoder is its
 # exact left inverse, so encode(decode(z)) = z. Its output is latent_parameters (mean, logvar).
-DEC_M = f32(rng.normal(0, 0.5 * VAE_SCALE, (LATENT_C, 3, FACTOR, FACTOR)))
+DEC_M = f32(rng.normal(0, 0.15 * VAE_SCALE, (LATENT_C, 3, FACTOR, FACTOR)))  # images within [-1, 1]
 DEC_C = f32(rng.normal(0, 0.05, 3))
 _Mmat = DEC_M.reshape(LATENT_C, -1).astype(np.float64).T  # [192, 4]
 ENC_P = f32(np.linalg.pinv(_Mmat).reshape(LATENT_C, 3, FACTOR, FACTOR))  # [4, 192]

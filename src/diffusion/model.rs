@@ -1,0 +1,501 @@
+//! A Stable Diffusion pipeline in the layout of Hugging Face Optimum's ONNX export
+//! (`optimum-cli export onnx --model stabilityai/stable-diffusion-2-1-base DIR`):
+//!
+//! ```text
+//! DIR/model_index.json
+//! DIR/scheduler/scheduler_config.json
+//! DIR/tokenizer/{vocab.json, merges.txt, special_tokens_map.json, tokenizer_config.json}
+//! DIR/text_encoder/model.onnx        input_ids → last_hidden_state (, pooler_output)
+//! DIR/unet/model.onnx (+ model.onnx_data)  sample, timestep, encoder_hidden_states → out_sample
+//! DIR/vae_encoder/model.onnx         sample → latent_sample | latent_parameters (mean, logvar)
+//! DIR/vae_decoder/model.onnx         latent_sample → sample
+//! DIR/taesd_encoder/, taesd_decoder/ optional tiny autoencoder (latents already scaled)
+//! ```
+//!
+//! fp32 and fp16 exports both load (inputs and outputs are converted at the boundary). Names, ranks
+//! and element types are checked on load; a mismatch is an error naming the file.
+use super::guidance::{Cond, NoisePredictor};
+use super::runtime::{Data, OnnxModel, Output, PortSpec, Provider};
+use super::schedule::{Schedule, SchedulerConfig};
+use super::tokenizer::ClipTokenizer;
+use ort::value::TensorElementType as T;
+use std::path::{Path, PathBuf};
+
+const FLOAT: &[T] = &[T::Float32, T::Float16];
+
+/// How to run the models.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ModelOptions {
+    pub provider: Provider,
+    /// Intra-op threads (ONNX Runtime's default when `None`).
+    pub threads: Option<usize>,
+}
+
+/// Which autoencoder a call uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Codec {
+    /// The pipeline's VAE.
+    Vae,
+    /// The tiny autoencoder when the directory has one, else the VAE.
+    Fast,
+}
+
+struct Autoencoder {
+    encoder: Option<OnnxModel>,
+    decoder: OnnxModel,
+    /// Latent = encoder mean × scaling; decoder input = latent / scaling.
+    scaling: f64,
+}
+
+/// Text embeddings of one prompt: `seq × hidden` values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Embedding {
+    pub data: Vec<f32>,
+    pub seq: usize,
+    pub hidden: usize,
+}
+
+/// A loaded pipeline.
+pub struct StableDiffusion {
+    pub dir: PathBuf,
+    pub tokenizer: ClipTokenizer,
+    pub schedule: Schedule,
+    pub latent_channels: usize,
+    text_encoder: OnnxModel,
+    unet: OnnxModel,
+    vae: Autoencoder,
+    fast: Option<Autoencoder>,
+}
+
+fn read_json(path: &Path) -> Result<serde_json::Value, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("{}: malformed JSON: {e}", path.display()))
+}
+
+fn load_autoencoder(
+    dir: &Path,
+    enc: &str,
+    dec: &str,
+    default_scaling: f64,
+    opts: &ModelOptions,
+) -> Result<Autoencoder, String> {
+    let cfg = dir.join(dec).join("config.json");
+    let scaling = if cfg.is_file() {
+        read_json(&cfg)?
+            .get("scaling_factor")
+            .and_then(|v| v.as_f64())
+            .unwrap_or(default_scaling)
+    } else {
+        default_scaling
+    };
+    if !(scaling.is_finite() && scaling > 0.0) {
+        return Err(format!(
+            "{}: scaling_factor must be positive",
+            cfg.display()
+        ));
+    }
+    let decoder = OnnxModel::load(
+        &dir.join(dec).join("model.onnx"),
+        opts.provider,
+        opts.threads,
+        &[PortSpec {
+            names: &["latent_sample"],
+            ranks: &[4],
+            types: FLOAT,
+        }],
+        &[PortSpec {
+            names: &["sample"],
+            ranks: &[4],
+            types: FLOAT,
+        }],
+    )?;
+    let enc_path = dir.join(enc).join("model.onnx");
+    let encoder = if enc_path.is_file() {
+        Some(OnnxModel::load(
+            &enc_path,
+            opts.provider,
+            opts.threads,
+            &[PortSpec {
+                names: &["sample"],
+                ranks: &[4],
+                types: FLOAT,
+            }],
+            &[PortSpec {
+                names: &["latent_sample", "latent_parameters"],
+                ranks: &[4],
+                types: FLOAT,
+            }],
+        )?)
+    } else {
+        None
+    };
+    Ok(Autoencoder {
+        encoder,
+        decoder,
+        scaling,
+    })
+}
+
+impl StableDiffusion {
+    /// Opens and checks a model directory.
+    pub fn open(dir: &Path, opts: &ModelOptions) -> Result<StableDiffusion, String> {
+        let shown = dir.display();
+        if !dir.is_dir() {
+            return Err(format!("{shown}: model directory not found"));
+        }
+        let index = dir.join("model_index.json");
+        if !index.is_file() {
+            return Err(format!(
+                "{shown}: not a Stable Diffusion ONNX export (model_index.json missing); export one \
+                 with `optimum-cli export onnx --model stabilityai/stable-diffusion-2-1-base DIR`"
+            ));
+        }
+        read_json(&index)?;
+        for sub in ["text_encoder", "unet", "vae_decoder"] {
+            let p = dir.join(sub).join("model.onnx");
+            if !p.is_file() {
+                return Err(format!("{}: missing", p.display()));
+            }
+        }
+        let tokenizer = ClipTokenizer::load(&dir.join("tokenizer"))?;
+        let sched_path = dir.join("scheduler/scheduler_config.json");
+        let schedule = Schedule::new(SchedulerConfig::read(&sched_path)?)
+            .map_err(|e| format!("{}: {e}", sched_path.display()))?;
+        let text_encoder = OnnxModel::load(
+            &dir.join("text_encoder/model.onnx"),
+            opts.provider,
+            opts.threads,
+            &[PortSpec {
+                names: &["input_ids"],
+                ranks: &[2],
+                types: &[T::Int32, T::Int64],
+            }],
+            &[PortSpec {
+                names: &["last_hidden_state"],
+                ranks: &[3],
+                types: FLOAT,
+            }],
+        )?;
+        let unet = OnnxModel::load(
+            &dir.join("unet/model.onnx"),
+            opts.provider,
+            opts.threads,
+            &[
+                PortSpec {
+                    names: &["sample"],
+                    ranks: &[4],
+                    types: FLOAT,
+                },
+                PortSpec {
+                    names: &["timestep"],
+                    ranks: &[0, 1],
+                    types: &[T::Int64, T::Float32, T::Float16],
+                },
+                PortSpec {
+                    names: &["encoder_hidden_states"],
+                    ranks: &[3],
+                    types: FLOAT,
+                },
+            ],
+            &[PortSpec {
+                names: &["out_sample"],
+                ranks: &[4],
+                types: FLOAT,
+            }],
+        )?;
+        let latent_channels = match unet.inputs[0].dims[1] {
+            c if c > 0 => c as usize,
+            _ => 4,
+        };
+        // The text encoder's width must be what the UNet attends to, when both are static.
+        let (te_w, un_w) = (text_encoder.outputs[0].dims[2], unet.inputs[2].dims[2]);
+        if te_w > 0 && un_w > 0 && te_w != un_w {
+            return Err(format!(
+                "{shown}: the text encoder's hidden size {te_w} differs from the UNet's \
+                 encoder_hidden_states width {un_w}"
+            ));
+        }
+        let vae = load_autoencoder(dir, "vae_encoder", "vae_decoder", 0.18215, opts)?;
+        let fast = if dir.join("taesd_decoder/model.onnx").is_file() {
+            Some(load_autoencoder(
+                dir,
+                "taesd_encoder",
+                "taesd_decoder",
+                1.0,
+                opts,
+            )?)
+        } else {
+            None
+        };
+        Ok(StableDiffusion {
+            dir: dir.to_path_buf(),
+            tokenizer,
+            schedule,
+            latent_channels,
+            text_encoder,
+            unet,
+            vae,
+            fast,
+        })
+    }
+
+    /// Whether a tiny autoencoder is present for [`Codec::Fast`].
+    pub fn has_fast_codec(&self) -> bool {
+        self.fast.is_some()
+    }
+
+    /// Element type names of the UNet's sample input ("float32"/"float16").
+    pub fn precision(&self) -> &'static str {
+        match self.unet.inputs[0].ty {
+            T::Float16 => "fp16",
+            _ => "fp32",
+        }
+    }
+
+    /// Token ids → text-encoder outputs, all outputs (shape, values), for one batch.
+    pub fn run_text_encoder(&mut self, ids: &[Vec<i64>]) -> Result<Vec<Output>, String> {
+        let seq = ids.first().map_or(0, |v| v.len());
+        if ids.iter().any(|v| v.len() != seq) {
+            return Err("token id rows differ in length".into());
+        }
+        let flat: Vec<i64> = ids.concat();
+        self.text_encoder
+            .run(&[(vec![ids.len() as i64, seq as i64], Data::I64(&flat))])
+    }
+
+    /// Tokenises and encodes prompts (one batch).
+    pub fn encode_text(&mut self, prompts: &[&str]) -> Result<Vec<Embedding>, String> {
+        let ids: Vec<Vec<i64>> = prompts
+            .iter()
+            .map(|p| self.tokenizer.encode_padded(p))
+            .collect();
+        let out = self.run_text_encoder(&ids)?.remove(0);
+        let (shape, data) = out;
+        let (seq, hidden) = (shape[1] as usize, shape[2] as usize);
+        Ok(data
+            .chunks(seq * hidden)
+            .map(|c| Embedding {
+                data: c.to_vec(),
+                seq,
+                hidden,
+            })
+            .collect())
+    }
+
+    /// One UNet run: `samples[i]` (each `c × h × w`) under `conds[i]` at DDPM timestep `t`.
+    pub fn unet_batch(
+        &mut self,
+        samples: &[&[f32]],
+        hw: (usize, usize),
+        t: u32,
+        conds: &[&Embedding],
+    ) -> Result<Vec<Vec<f32>>, String> {
+        let b = samples.len();
+        let c = self.latent_channels;
+        let n = c * hw.0 * hw.1;
+        if conds.len() != b || samples.iter().any(|s| s.len() != n) || b == 0 {
+            return Err(format!(
+                "{}: UNet batch of {} samples (each must be {c}×{}×{}) with {} conditions",
+                self.unet.path.display(),
+                b,
+                hw.0,
+                hw.1,
+                conds.len()
+            ));
+        }
+        let (seq, hidden) = (conds[0].seq, conds[0].hidden);
+        let sample: Vec<f32> = samples.concat();
+        let ehs: Vec<f32> = conds.iter().flat_map(|e| e.data.iter().copied()).collect();
+        let t_port = &self.unet.inputs[1];
+        let (t_shape, t_vals): (Vec<i64>, Vec<f32>) = match t_port.dims.as_slice() {
+            [] => (vec![], vec![t as f32]),
+            [1] => (vec![1], vec![t as f32]),
+            _ => (vec![b as i64], vec![t as f32; b]),
+        };
+        let out = self.unet.run(&[
+            (
+                vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
+                Data::F32(&sample),
+            ),
+            (t_shape, Data::F32(&t_vals)),
+            (vec![b as i64, seq as i64, hidden as i64], Data::F32(&ehs)),
+        ])?;
+        let (shape, data) = out.into_iter().next().ok_or("UNet gave no output")?;
+        if shape.iter().product::<i64>() as usize != b * n {
+            return Err(format!(
+                "{}: out_sample has shape {shape:?}, expected [{b}, {c}, {}, {}]",
+                self.unet.path.display(),
+                hw.0,
+                hw.1
+            ));
+        }
+        Ok(data.chunks(n).map(<[f32]>::to_vec).collect())
+    }
+
+    fn codec(&mut self, which: Codec) -> &mut Autoencoder {
+        match (which, self.fast.as_mut()) {
+            (Codec::Fast, Some(f)) => f,
+            _ => &mut self.vae,
+        }
+    }
+
+    /// Latents (`b × c × h × w`, scaled as the UNet sees them) → images `b × 3 × 8h × 8w` in
+    /// roughly [−1, 1]. Returns the images and their (height, width).
+    pub fn decode(
+        &mut self,
+        z: &[f32],
+        b: usize,
+        hw: (usize, usize),
+        which: Codec,
+    ) -> Result<(Vec<f32>, (usize, usize)), String> {
+        let c = self.latent_channels;
+        let ae = self.codec(which);
+        let inv = (1.0 / ae.scaling) as f32;
+        let scaled: Vec<f32> = z.iter().map(|v| v * inv).collect();
+        let (shape, data) = ae
+            .decoder
+            .run(&[(
+                vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
+                Data::F32(&scaled),
+            )])?
+            .remove(0);
+        if shape.len() != 4 || shape[0] != b as i64 || shape[1] != 3 {
+            return Err(format!(
+                "{}: decoded shape {shape:?}, expected [{b}, 3, H, W]",
+                ae.decoder.path.display()
+            ));
+        }
+        Ok((data, (shape[2] as usize, shape[3] as usize)))
+    }
+
+    /// Images `b × 3 × H × W` in [−1, 1] → latents (the distribution's mean, scaled). Returns the
+    /// latents and their (h, w).
+    pub fn encode(
+        &mut self,
+        image: &[f32],
+        b: usize,
+        hw: (usize, usize),
+        which: Codec,
+    ) -> Result<(Vec<f32>, (usize, usize)), String> {
+        let c = self.latent_channels;
+        let dir = self.dir.display().to_string();
+        let ae = self.codec(which);
+        let scaling = ae.scaling as f32;
+        let enc = ae.encoder.as_mut().ok_or_else(|| {
+            format!(
+                "{dir}: no encoder for this autoencoder (vae_encoder/ or taesd_encoder/ missing)"
+            )
+        })?;
+        let (shape, data) = enc
+            .run(&[(
+                vec![b as i64, 3, hw.0 as i64, hw.1 as i64],
+                Data::F32(image),
+            )])?
+            .remove(0);
+        let ch = shape.get(1).copied().unwrap_or(0) as usize;
+        if shape.len() != 4 || (ch != c && ch != 2 * c) {
+            return Err(format!(
+                "{}: encoder output shape {shape:?}, expected [{b}, {c} or {}, h, w]",
+                enc.path.display(),
+                2 * c
+            ));
+        }
+        let (h, w) = (shape[2] as usize, shape[3] as usize);
+        // latent_parameters carry (mean, logvar): keep the mean.
+        let mut z = Vec::with_capacity(b * c * h * w);
+        for item in data.chunks(ch * h * w) {
+            z.extend(item[..c * h * w].iter().map(|v| v * scaling));
+        }
+        Ok((z, (h, w)))
+    }
+}
+
+/// The prompt embeddings a guidance rule draws on.
+#[derive(Debug, Clone)]
+pub struct Conditioning {
+    pub positive: Embedding,
+    pub negative: Embedding,
+    pub null: Embedding,
+    pub edit: Option<Embedding>,
+}
+
+impl Conditioning {
+    /// Encodes the prompts in one text-encoder run.
+    pub fn new(
+        sd: &mut StableDiffusion,
+        positive: &str,
+        negative: &str,
+        edit: Option<&str>,
+    ) -> Result<Conditioning, String> {
+        let mut prompts = vec![positive, negative, ""];
+        if let Some(e) = edit {
+            prompts.push(e);
+        }
+        let mut e = sd.encode_text(&prompts)?;
+        let edit = (e.len() == 4).then(|| e.pop().unwrap());
+        let null = e.pop().unwrap();
+        let negative = e.pop().unwrap();
+        let positive = e.pop().unwrap();
+        Ok(Conditioning {
+            positive,
+            negative,
+            null,
+            edit,
+        })
+    }
+
+    fn get(&self, c: Cond) -> Result<&Embedding, String> {
+        match c {
+            Cond::Positive => Ok(&self.positive),
+            Cond::Negative => Ok(&self.negative),
+            Cond::Null => Ok(&self.null),
+            Cond::Edit => self
+                .edit
+                .as_ref()
+                .ok_or_else(|| "an edit prompt is needed for the editing rule".to_string()),
+        }
+    }
+}
+
+/// The UNet as a [`NoisePredictor`] over latents of size `hw`: every call is one batched run.
+pub struct UnetPredictor<'a> {
+    pub sd: &'a mut StableDiffusion,
+    pub cond: &'a Conditioning,
+    pub hw: (usize, usize),
+    /// UNet runs made (for benchmarks and tests).
+    pub runs: usize,
+}
+
+impl NoisePredictor for UnetPredictor<'_> {
+    fn predict(&mut self, x: &[f32], t: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+        let embs = conds
+            .iter()
+            .map(|c| self.cond.get(*c))
+            .collect::<Result<Vec<_>, _>>()?;
+        let samples: Vec<&[f32]> = vec![x; conds.len()];
+        self.runs += 1;
+        self.sd.unet_batch(&samples, self.hw, t, &embs)
+    }
+}
+
+/// Renderer layout (`h × w × 3`, [0, 1]) → model layout (`3 × h × w`, [−1, 1]).
+pub fn hwc01_to_chw11(rgb: &[f32], w: usize, h: usize) -> Vec<f32> {
+    let mut out = vec![0.0; 3 * w * h];
+    for (p, px) in rgb.chunks(3).enumerate().take(w * h) {
+        for c in 0..3 {
+            out[c * w * h + p] = 2.0 * px[c] - 1.0;
+        }
+    }
+    out
+}
+
+/// Model layout (`3 × h × w`, [−1, 1]) → renderer layout (`h × w × 3`, [0, 1], clamped).
+pub fn chw11_to_hwc01(img: &[f32], w: usize, h: usize) -> Vec<f32> {
+    let mut out = vec![0.0; 3 * w * h];
+    for p in 0..w * h {
+        for c in 0..3 {
+            out[3 * p + c] = ((img[c * w * h + p] + 1.0) * 0.5).clamp(0.0, 1.0);
+        }
+    }
+    out
+}

@@ -1,0 +1,452 @@
+//! ONNX Runtime through `ort`, loaded dynamically by full path, and checked model sessions.
+//!
+//! The library is searched in this order: `$DREAMSCENE_ORT_LIB`, `$ORT_DYLIB_PATH`, then
+//! `libonnxruntime.so*` in `$XDG_DATA_HOME/dreamscene/onnxruntime/` (default
+//! `~/.local/share/dreamscene/onnxruntime/`, where `scripts/setup.sh` puts the library of the PyPI
+//! `onnxruntime` wheel), and beside the executable (`./` and `lib/`).
+use ort::ep::{ExecutionProvider as _, ExecutionProviderDispatch};
+use ort::session::{Session, SessionInputValue};
+use ort::value::{Tensor, TensorElementType, ValueType};
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The ONNX Runtime version the bindings were built for (`api-31`).
+pub const EXPECTED_VERSION: &str = "1.31";
+
+/// Execution provider for the diffusion models.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Provider {
+    /// ONNX Runtime's CPU provider.
+    #[default]
+    Cpu,
+    /// CUDA (needs a library built with it, e.g. from the `onnxruntime-gpu` wheel).
+    Cuda,
+}
+
+/// Where the library may be, in search order, each with how it was found.
+pub fn library_candidates() -> Vec<(PathBuf, &'static str)> {
+    let mut out = vec![];
+    for var in ["DREAMSCENE_ORT_LIB", "ORT_DYLIB_PATH"] {
+        if let Some(p) = std::env::var_os(var).filter(|v| !v.is_empty()) {
+            out.push((PathBuf::from(p), var));
+        }
+    }
+    let mut dirs: Vec<PathBuf> = vec![];
+    if let Some(d) = std::env::var_os("XDG_DATA_HOME").filter(|v| !v.is_empty()) {
+        dirs.push(PathBuf::from(d).join("dreamscene/onnxruntime"));
+    }
+    if let Some(h) = std::env::var_os("HOME").filter(|v| !v.is_empty()) {
+        dirs.push(PathBuf::from(h).join(".local/share/dreamscene/onnxruntime"));
+    }
+    if let Some(exe_dir) = std::env::current_exe()
+        .ok()
+        .and_then(|e| e.parent().map(Path::to_path_buf))
+    {
+        dirs.push(exe_dir.join("lib"));
+        dirs.push(exe_dir);
+    }
+    for d in dirs {
+        let Ok(entries) = std::fs::read_dir(&d) else {
+            continue;
+        };
+        let mut libs: Vec<PathBuf> = entries
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| {
+                p.file_name()
+                    .and_then(|n| n.to_str())
+                    .is_some_and(|n| n.starts_with("libonnxruntime.so"))
+            })
+            .collect();
+        // Prefer the fully versioned name (libonnxruntime.so.1.31.1) over symlinks.
+        libs.sort_by_key(|p| std::cmp::Reverse(p.as_os_str().len()));
+        out.extend(libs.into_iter().map(|p| (p, "search path")));
+    }
+    out
+}
+
+struct Loaded {
+    env: ort::environment::Environment,
+    library: PathBuf,
+}
+
+static RUNTIME: OnceLock<Result<Loaded, String>> = OnceLock::new();
+
+fn load() -> Result<Loaded, String> {
+    let candidates = library_candidates();
+    // A path named explicitly must exist; it is not silently skipped.
+    if let Some((p, how)) = candidates
+        .iter()
+        .find(|(p, how)| *how != "search path" && !p.is_file())
+    {
+        return Err(format!(
+            "{how}={}: no such file (it must be the full path of libonnxruntime.so.{EXPECTED_VERSION}.x)",
+            p.display()
+        ));
+    }
+    let Some((path, how)) = candidates.into_iter().find(|(p, _)| p.is_file()) else {
+        return Err(format!(
+            "ONNX Runtime {EXPECTED_VERSION} library not found (looked at $DREAMSCENE_ORT_LIB, \
+             $ORT_DYLIB_PATH, ~/.local/share/dreamscene/onnxruntime/ and beside the executable); \
+             run `bash scripts/setup.sh`, or set DREAMSCENE_ORT_LIB to the full path of \
+             libonnxruntime.so.{EXPECTED_VERSION}.x"
+        ));
+    };
+    let path = path.canonicalize().unwrap_or(path);
+    let shown = path.display().to_string();
+    let builder = std::panic::catch_unwind(|| ort::init_from(&path))
+        .map_err(|_| format!("{shown} (from {how}): ONNX Runtime panicked while loading"))?
+        .map_err(|e| {
+            format!("{shown} (from {how}): cannot load ONNX Runtime: {e} (this build needs {EXPECTED_VERSION}.x)")
+        })?;
+    let env = builder
+        .with_name("dreamscene")
+        .build()
+        .map_err(|e| format!("{shown}: cannot create the ONNX Runtime environment: {e}"))?;
+    Ok(Loaded { env, library: path })
+}
+
+fn loaded() -> Result<&'static Loaded, String> {
+    RUNTIME.get_or_init(load).as_ref().map_err(Clone::clone)
+}
+
+/// What `doctor` reports.
+#[derive(Debug, Clone)]
+pub struct RuntimeInfo {
+    pub library: PathBuf,
+    /// The version, from the library's build information (or its file name).
+    pub version: String,
+    pub build_info: String,
+    pub providers: Vec<String>,
+}
+
+/// Loads the library if needed and describes it.
+pub fn info() -> Result<RuntimeInfo, String> {
+    let l = loaded()?;
+    let build_info = ort::info().to_string();
+    let version = build_info
+        .split(|c: char| c == ',' || c.is_whitespace())
+        .find_map(|f| f.strip_prefix("git-branch=rel-"))
+        .map(str::to_string)
+        .or_else(|| {
+            l.library
+                .file_name()
+                .and_then(|n| n.to_str())
+                .and_then(|n| n.strip_prefix("libonnxruntime.so."))
+                .map(str::to_string)
+        })
+        .unwrap_or_else(|| "unknown".into());
+    Ok(RuntimeInfo {
+        library: l.library.clone(),
+        version,
+        build_info,
+        providers: available_providers()?,
+    })
+}
+
+/// The execution providers this library was built with.
+pub fn available_providers() -> Result<Vec<String>, String> {
+    loaded()?;
+    let api = ort::api();
+    let mut list: *mut *mut std::ffi::c_char = std::ptr::null_mut();
+    let mut n: std::ffi::c_int = 0;
+    // SAFETY: the library is loaded; the API fills `list` with `n` C strings that are released
+    // with the matching call below.
+    unsafe {
+        let status = (api.GetAvailableProviders)(&mut list, &mut n);
+        if !status.0.is_null() {
+            (api.ReleaseStatus)(status.0);
+            return Err("ONNX Runtime could not list its execution providers".into());
+        }
+        let mut out = vec![];
+        for i in 0..n.max(0) as usize {
+            let p = *list.add(i);
+            if !p.is_null() {
+                out.push(std::ffi::CStr::from_ptr(p).to_string_lossy().into_owned());
+            }
+        }
+        let status = (api.ReleaseAvailableProviders)(list, n);
+        if !status.0.is_null() {
+            (api.ReleaseStatus)(status.0);
+        }
+        Ok(out)
+    }
+}
+
+fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, String> {
+    match p {
+        Provider::Cpu => Ok(vec![ort::ep::CPU::default().build()]),
+        Provider::Cuda => {
+            if !ort::ep::CUDA::is_available().unwrap_or(false) {
+                return Err(format!(
+                    "--provider cuda: the ONNX Runtime library at {} has no CUDA provider (it has: \
+                     {}); install the library of the `onnxruntime-gpu` wheel and point \
+                     DREAMSCENE_ORT_LIB at it",
+                    loaded()?.library.display(),
+                    available_providers()?.join(", ")
+                ));
+            }
+            Ok(vec![ort::ep::CUDA::default().build().error_on_failure()])
+        }
+    }
+}
+
+/// A tensor's element type and rank as a model declares them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Port {
+    pub name: String,
+    pub ty: TensorElementType,
+    /// Dimensions, −1 where dynamic.
+    pub dims: Vec<i64>,
+}
+
+/// What a model must declare for one input or output: one of `names`, one of `ranks`, one of
+/// `types`.
+pub struct PortSpec<'a> {
+    pub names: &'a [&'a str],
+    pub ranks: &'a [usize],
+    pub types: &'a [TensorElementType],
+}
+
+/// A loaded ONNX model with its declared inputs and outputs.
+pub struct OnnxModel {
+    pub path: PathBuf,
+    session: Session,
+    pub inputs: Vec<Port>,
+    pub outputs: Vec<Port>,
+}
+
+fn port(name: &str, t: &ValueType) -> Option<Port> {
+    match t {
+        ValueType::Tensor { ty, shape, .. } => Some(Port {
+            name: name.to_string(),
+            ty: *ty,
+            dims: shape.to_vec(),
+        }),
+        _ => None,
+    }
+}
+
+fn type_name(t: TensorElementType) -> &'static str {
+    match t {
+        TensorElementType::Float32 => "float32",
+        TensorElementType::Float16 => "float16",
+        TensorElementType::Float64 => "float64",
+        TensorElementType::Int32 => "int32",
+        TensorElementType::Int64 => "int64",
+        TensorElementType::Bfloat16 => "bfloat16",
+        _ => "another type",
+    }
+}
+
+/// One output tensor: its shape and its values as f32.
+pub type Output = (Vec<i64>, Vec<f32>);
+
+/// Host data for one input; converted to the model's declared element type.
+pub enum Data<'a> {
+    F32(&'a [f32]),
+    I64(&'a [i64]),
+}
+
+impl OnnxModel {
+    /// Loads `path` on `provider`, then checks the declared inputs and outputs against `inputs` /
+    /// `outputs` (in order). Errors name the file.
+    pub fn load(
+        path: &Path,
+        provider: Provider,
+        threads: Option<usize>,
+        inputs: &[PortSpec],
+        outputs: &[PortSpec],
+    ) -> Result<OnnxModel, String> {
+        let shown = path.display().to_string();
+        if !path.is_file() {
+            return Err(format!("{shown}: model file missing"));
+        }
+        let env = &loaded()?.env;
+        let eps = provider_dispatch(provider)?;
+        let mut b = Session::builder(env)
+            .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
+            .map_err(|e| format!("{shown}: {e}"))?;
+        if let Some(n) = threads {
+            b = b
+                .with_intra_threads(n)
+                .map_err(|e| format!("{shown}: {e}"))?;
+        }
+        let session = b
+            .commit_from_file(path)
+            .map_err(|e| format!("{shown}: ONNX Runtime cannot load the model: {e}"))?;
+        let collect = |list: &[ort::value::Outlet], what: &str| -> Result<Vec<Port>, String> {
+            list.iter()
+                .map(|o| {
+                    port(o.name(), o.dtype())
+                        .ok_or_else(|| format!("{shown}: {what} {:?} is not a tensor", o.name()))
+                })
+                .collect()
+        };
+        let model = OnnxModel {
+            inputs: collect(session.inputs(), "input")?,
+            outputs: collect(session.outputs(), "output")?,
+            path: path.to_path_buf(),
+            session,
+        };
+        check_ports(&shown, "input", &model.inputs, inputs)?;
+        check_ports(&shown, "output", &model.outputs, outputs)?;
+        Ok(model)
+    }
+
+    /// Runs the model on `inputs` (one per declared input, in order) and returns every output as
+    /// f32 with its shape.
+    pub fn run(&mut self, inputs: &[(Vec<i64>, Data)]) -> Result<Vec<Output>, String> {
+        let shown = self.path.display().to_string();
+        if inputs.len() != self.inputs.len() {
+            return Err(format!(
+                "{shown}: {} inputs given, the model has {}",
+                inputs.len(),
+                self.inputs.len()
+            ));
+        }
+        let mut values: Vec<(String, SessionInputValue)> = vec![];
+        for ((shape, data), p) in inputs.iter().zip(&self.inputs) {
+            if p.dims.len() != shape.len()
+                || p.dims.iter().zip(shape).any(|(d, s)| *d >= 0 && d != s)
+            {
+                return Err(format!(
+                    "{shown}: input {:?} has shape {:?}, the model declares {:?}",
+                    p.name, shape, p.dims
+                ));
+            }
+            let err = |e: ort::Error| format!("{shown}: input {:?}: {e}", p.name);
+            let shape = shape.clone();
+            let v: SessionInputValue = match (data, p.ty) {
+                (Data::F32(d), TensorElementType::Float32) => {
+                    Tensor::from_array((shape, d.to_vec())).map_err(err)?.into()
+                }
+                (Data::F32(d), TensorElementType::Float16) => Tensor::from_array((
+                    shape,
+                    d.iter()
+                        .map(|v| half::f16::from_f32(*v))
+                        .collect::<Vec<_>>(),
+                ))
+                .map_err(err)?
+                .into(),
+                (Data::F32(d), TensorElementType::Int64) => Tensor::from_array((
+                    shape,
+                    d.iter().map(|v| v.round() as i64).collect::<Vec<_>>(),
+                ))
+                .map_err(err)?
+                .into(),
+                (Data::I64(d), TensorElementType::Int64) => {
+                    Tensor::from_array((shape, d.to_vec())).map_err(err)?.into()
+                }
+                (Data::I64(d), TensorElementType::Int32) => {
+                    Tensor::from_array((shape, d.iter().map(|v| *v as i32).collect::<Vec<_>>()))
+                        .map_err(err)?
+                        .into()
+                }
+                (Data::I64(d), TensorElementType::Float32) => {
+                    Tensor::from_array((shape, d.iter().map(|v| *v as f32).collect::<Vec<_>>()))
+                        .map_err(err)?
+                        .into()
+                }
+                (Data::I64(d), TensorElementType::Float16) => Tensor::from_array((
+                    shape,
+                    d.iter()
+                        .map(|v| half::f16::from_f32(*v as f32))
+                        .collect::<Vec<_>>(),
+                ))
+                .map_err(err)?
+                .into(),
+                (_, t) => {
+                    return Err(format!(
+                        "{shown}: input {:?} is {}, which dreamscene cannot feed here",
+                        p.name,
+                        type_name(t)
+                    ))
+                }
+            };
+            values.push((p.name.clone(), v));
+        }
+        let outputs = self
+            .session
+            .run(values)
+            .map_err(|e| format!("{shown}: run failed: {e}"))?;
+        let mut out = vec![];
+        for p in &self.outputs {
+            let v = &outputs[p.name.as_str()];
+            let r = match p.ty {
+                TensorElementType::Float16 => v
+                    .try_extract_tensor::<half::f16>()
+                    .map(|(s, d)| (s.to_vec(), d.iter().map(|x| x.to_f32()).collect())),
+                _ => v
+                    .try_extract_tensor::<f32>()
+                    .map(|(s, d)| (s.to_vec(), d.to_vec())),
+            };
+            let (shape, data) = r.map_err(|e| format!("{shown}: output {:?}: {e}", p.name))?;
+            if data.iter().any(|x| !x.is_finite()) {
+                return Err(format!(
+                    "{shown}: output {:?} has non-finite values (NaN/Inf)",
+                    p.name
+                ));
+            }
+            out.push((shape, data));
+        }
+        Ok(out)
+    }
+}
+
+fn check_ports(shown: &str, what: &str, have: &[Port], want: &[PortSpec]) -> Result<(), String> {
+    let describe = |ports: &[Port]| {
+        ports
+            .iter()
+            .map(|p| format!("{} ({}, rank {})", p.name, type_name(p.ty), p.dims.len()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if have.len() < want.len() || (what == "input" && have.len() != want.len()) {
+        return Err(format!(
+            "{shown}: expected {} {what}s ({}), the model has {}: {}",
+            want.len(),
+            want.iter()
+                .map(|w| w.names.join("|"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            have.len(),
+            describe(have)
+        ));
+    }
+    for (h, w) in have.iter().zip(want) {
+        if !w.names.contains(&h.name.as_str()) {
+            return Err(format!(
+                "{shown}: {what} {:?} where {} was expected (the model's {what}s: {})",
+                h.name,
+                w.names.join(" or "),
+                describe(have)
+            ));
+        }
+        if !w.ranks.contains(&h.dims.len()) {
+            return Err(format!(
+                "{shown}: {what} {:?} has rank {}, expected {}",
+                h.name,
+                h.dims.len(),
+                w.ranks
+                    .iter()
+                    .map(|r| r.to_string())
+                    .collect::<Vec<_>>()
+                    .join(" or ")
+            ));
+        }
+        if !w.types.contains(&h.ty) {
+            return Err(format!(
+                "{shown}: {what} {:?} is {}, expected {}",
+                h.name,
+                type_name(h.ty),
+                w.types
+                    .iter()
+                    .map(|t| type_name(*t))
+                    .collect::<Vec<_>>()
+                    .join(" or ")
+            ));
+        }
+    }
+    Ok(())
+}
