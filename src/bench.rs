@@ -199,3 +199,89 @@ pub fn bench_cpu_forward(
         gaussian_pixels_per_s: intersections as f64 * 256.0 / (ms * 1e-3),
     }
 }
+
+/// Latency of the diffusion models at the batch sizes the guidance rules use.
+#[derive(Debug, Clone, Serialize)]
+pub struct DiffusionFigures {
+    pub models: String,
+    pub provider: String,
+    pub precision: String,
+    /// Latent height and width.
+    pub latent: [usize; 2],
+    /// Median UNet latency per batch size ("1": ISM's null-prompt steps, "2": SDS's positive and
+    /// negative, "3": one MTS / pseudo-GT / editing point).
+    pub unet_ms: std::collections::BTreeMap<String, f64>,
+    /// The text encoder on the three prompts of one conditioning.
+    pub text_encoder_ms: f64,
+    pub vae_encode_ms: Option<f64>,
+    pub vae_decode_ms: f64,
+    pub taesd_encode_ms: Option<f64>,
+    pub taesd_decode_ms: Option<f64>,
+}
+
+/// Times the pipeline in `dir` (median of `runs` after one warm-up run each).
+pub fn bench_diffusion(
+    dir: &std::path::Path,
+    opts: &crate::diffusion::model::ModelOptions,
+    latent: Option<(usize, usize)>,
+    runs: usize,
+) -> std::result::Result<DiffusionFigures, String> {
+    use crate::diffusion::model::{Codec, StableDiffusion};
+    let mut sd = StableDiffusion::open(dir, opts)?;
+    let hw = match latent {
+        Some(hw) => hw,
+        None => sd.default_latent_size(),
+    };
+    let runs = runs.max(1);
+    let time_ms = |f: &mut dyn FnMut() -> std::result::Result<(), String>| {
+        f()?;
+        let mut v = vec![];
+        for _ in 0..runs {
+            let t = Instant::now();
+            f()?;
+            v.push(t.elapsed().as_secs_f64() * 1e3);
+        }
+        Ok::<f64, String>(median(v))
+    };
+    let prompts = [
+        "A DSLR photo of a wooden chair, front view",
+        "unrealistic, blurry",
+        "",
+    ];
+    let text_encoder_ms = time_ms(&mut || sd.encode_text(&prompts).map(|_| ()))?;
+    let emb = sd.encode_text(&prompts)?;
+    let n = sd.latent_channels * hw.0 * hw.1;
+    let x: Vec<f32> = (0..n).map(|i| ((i as f32) * 0.37).sin()).collect();
+    let mut unet_ms = std::collections::BTreeMap::new();
+    for b in 1..=3 {
+        let samples: Vec<&[f32]> = vec![&x; b];
+        let conds: Vec<_> = emb.iter().take(b).collect();
+        let ms = time_ms(&mut || sd.unet_batch(&samples, hw, 500, &conds).map(|_| ()))?;
+        unet_ms.insert(b.to_string(), ms);
+    }
+    let vae_decode_ms = time_ms(&mut || sd.decode(&x, 1, hw, Codec::Vae).map(|_| ()))?;
+    let (img, ihw) = sd.decode(&x, 1, hw, Codec::Vae)?;
+    let vae_encode_ms = time_ms(&mut || sd.encode(&img, 1, ihw, Codec::Vae).map(|_| ())).ok();
+    let (taesd_encode_ms, taesd_decode_ms) = if sd.has_fast_codec() {
+        (
+            time_ms(&mut || sd.encode(&img, 1, ihw, Codec::Fast).map(|_| ())).ok(),
+            Some(time_ms(&mut || {
+                sd.decode(&x, 1, hw, Codec::Fast).map(|_| ())
+            })?),
+        )
+    } else {
+        (None, None)
+    };
+    Ok(DiffusionFigures {
+        models: dir.display().to_string(),
+        provider: format!("{:?}", opts.provider).to_lowercase(),
+        precision: sd.precision().to_string(),
+        latent: [hw.0, hw.1],
+        unet_ms,
+        text_encoder_ms,
+        vae_encode_ms,
+        vae_decode_ms,
+        taesd_encode_ms,
+        taesd_decode_ms,
+    })
+}

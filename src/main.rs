@@ -1,7 +1,8 @@
 //! The `dreamscene` command line: a thin layer over the library.
-use anyhow::{bail, Context as _, Result};
+use anyhow::{anyhow, bail, Context as _, Result};
 use clap::{Parser, Subcommand};
 use dreamscene::camera::{read_cameras, write_cameras, Camera};
+use dreamscene::diffusion::runtime::Provider;
 use dreamscene::gpu::Context;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::{PlacedBy, SceneSpec};
@@ -141,13 +142,33 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
-    /// Check the Vulkan device and what the engine needs of it.
-    Doctor,
-    /// Measure kernel throughput at fixed sizes on the selected device.
+    /// Check the Vulkan device, ONNX Runtime, and (with --models) a diffusion model directory.
+    Doctor {
+        /// A Stable Diffusion ONNX model directory to check.
+        #[arg(long, env = "DREAMSCENE_MODELS")]
+        models: Option<PathBuf>,
+        /// ONNX Runtime execution provider.
+        #[arg(long, value_enum, default_value_t = Provider::Cpu)]
+        provider: Provider,
+    },
+    /// Measure kernel throughput at fixed sizes on the selected device; with --unet, the latency
+    /// of the diffusion models instead.
     Bench {
         /// Print one JSON object instead of a table.
         #[arg(long)]
         json: bool,
+        /// Time the UNet (batches 1–3), text encoder and VAE of --models instead of the kernels.
+        #[arg(long)]
+        unet: bool,
+        /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
+        #[arg(long, env = "DREAMSCENE_MODELS")]
+        models: Option<PathBuf>,
+        /// ONNX Runtime execution provider for --unet.
+        #[arg(long, value_enum, default_value_t = Provider::Cpu)]
+        provider: Provider,
+        /// Latent size for --unet, as HxW (default: what the model declares, else 64x64).
+        #[arg(long, value_parser = parse_hw)]
+        latent: Option<(usize, usize)>,
         /// Gaussians in the forward benchmark.
         #[arg(long, default_value_t = 100_000)]
         gaussians: usize,
@@ -161,6 +182,20 @@ enum Command {
         #[arg(long, default_value_t = 5)]
         runs: usize,
     },
+}
+
+fn parse_hw(s: &str) -> Result<(usize, usize), String> {
+    let (h, w) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("{s:?}: expected HxW, e.g. 64x64"))?;
+    let p = |v: &str| {
+        v.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=1024).contains(n))
+            .ok_or_else(|| format!("{s:?}: sizes must be whole numbers from 1 to 1024"))
+    };
+    Ok((p(h)?, p(w)?))
 }
 
 fn parse_rgb(s: &str) -> Result<[f32; 3], String> {
@@ -293,13 +328,23 @@ fn run(cli: Cli) -> Result<()> {
             }
             Ok(())
         }
-        Command::Doctor => doctor(),
+        Command::Doctor { models, provider } => doctor(models.as_deref(), provider),
+        Command::Bench {
+            json,
+            unet: true,
+            models,
+            provider,
+            latent,
+            runs,
+            ..
+        } => bench_unet(json, models, provider, latent, runs),
         Command::Bench {
             json,
             gaussians,
             size,
             pairs,
             runs,
+            ..
         } => bench(json, gaussians, size, pairs, runs),
     }
 }
@@ -576,8 +621,48 @@ fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {
     Ok(())
 }
 
-fn doctor() -> Result<()> {
+fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
     let mut ok = true;
+    match dreamscene::diffusion::runtime::info() {
+        Ok(i) => {
+            println!(
+                "onnx runtime: {} (version {})",
+                i.library.display(),
+                i.version
+            );
+            println!("  providers: {}", i.providers.join(", "));
+        }
+        Err(e) => {
+            println!("onnx runtime: {e}");
+            ok = false;
+        }
+    }
+    if let Some(dir) = models {
+        let opts = dreamscene::diffusion::model::ModelOptions {
+            provider,
+            threads: None,
+        };
+        match dreamscene::diffusion::model::StableDiffusion::open(dir, &opts) {
+            Ok(sd) => {
+                let (h, w) = sd.default_latent_size();
+                println!(
+                    "models: {} ({}, {} latent channels, {}x{} latents, tokenizer {} tokens, \
+                     tiny autoencoder {})",
+                    dir.display(),
+                    sd.precision(),
+                    sd.latent_channels,
+                    h,
+                    w,
+                    sd.tokenizer.vocab_size(),
+                    if sd.has_fast_codec() { "yes" } else { "no" }
+                );
+            }
+            Err(e) => {
+                println!("models: {e}");
+                ok = false;
+            }
+        }
+    }
     match Context::list_devices() {
         Ok(devs) if !devs.is_empty() => {
             for (i, (name, ty)) in devs.iter().enumerate() {
@@ -622,6 +707,45 @@ fn doctor() -> Result<()> {
     }
     if !ok {
         bail!("the engine cannot run here (see above)");
+    }
+    Ok(())
+}
+
+fn bench_unet(
+    json: bool,
+    models: Option<PathBuf>,
+    provider: Provider,
+    latent: Option<(usize, usize)>,
+    runs: usize,
+) -> Result<()> {
+    let Some(dir) = models else {
+        bail!(
+            "bench --unet needs --models DIR (or DREAMSCENE_MODELS): a Stable Diffusion ONNX export, \
+             e.g. from `optimum-cli export onnx --model stabilityai/stable-diffusion-2-1-base DIR`"
+        );
+    };
+    let opts = dreamscene::diffusion::model::ModelOptions {
+        provider,
+        threads: None,
+    };
+    let f =
+        dreamscene::bench::bench_diffusion(&dir, &opts, latent, runs).map_err(|e| anyhow!(e))?;
+    if json {
+        println!("{}", serde_json::json!({ "unet": f }));
+    } else {
+        println!(
+            "models: {} ({}, {}), latents {}x{}",
+            f.models, f.precision, f.provider, f.latent[0], f.latent[1]
+        );
+        for (b, ms) in &f.unet_ms {
+            println!("unet batch {b}:        {ms:>9.2} ms");
+        }
+        println!("text encoder (3):    {:>9.2} ms", f.text_encoder_ms);
+        let show = |o: Option<f64>| o.map_or("-".to_string(), |v| format!("{v:.2} ms"));
+        println!("vae encode:          {:>12}", show(f.vae_encode_ms));
+        println!("vae decode:          {:>12}", show(Some(f.vae_decode_ms)));
+        println!("tiny ae encode:      {:>12}", show(f.taesd_encode_ms));
+        println!("tiny ae decode:      {:>12}", show(f.taesd_decode_ms));
     }
     Ok(())
 }

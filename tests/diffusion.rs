@@ -564,3 +564,111 @@ fn broken_model_directories_give_clear_errors() {
 
     std::fs::remove_dir_all(&root).ok();
 }
+
+fn cli(args: &[&str], env: &[(&str, &str)]) -> (bool, String) {
+    let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"));
+    c.args(args).env_remove("DREAMSCENE_MODELS");
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    let o = c.output().unwrap();
+    (
+        o.status.success(),
+        format!(
+            "{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        ),
+    )
+}
+
+#[test]
+fn cli_doctor_and_unet_bench() {
+    let tiny = data("tiny-sd");
+    let tiny = tiny.to_str().unwrap();
+    let (ok, out) = cli(&["doctor", "--models", tiny], &[]);
+    assert!(ok, "{out}");
+    assert!(
+        out.contains("onnx runtime:") && out.contains("CPUExecutionProvider"),
+        "{out}"
+    );
+    assert!(out.contains("fp32") && out.contains("8x8 latents"), "{out}");
+
+    let (ok, out) = cli(
+        &["bench", "--unet", "--models", tiny, "--json", "--runs", "2"],
+        &[],
+    );
+    assert!(ok, "{out}");
+    let v: Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+    let u = &v["unet"];
+    for b in ["1", "2", "3"] {
+        assert!(u["unet_ms"][b].as_f64().unwrap() > 0.0, "{out}");
+    }
+    for k in [
+        "text_encoder_ms",
+        "vae_encode_ms",
+        "vae_decode_ms",
+        "taesd_decode_ms",
+    ] {
+        assert!(u[k].as_f64().unwrap() > 0.0, "{k}: {out}");
+    }
+    assert_eq!(u["latent"], serde_json::json!([8, 8]));
+
+    let (ok, out) = cli(&["bench", "--unet"], &[]);
+    assert!(!ok && out.contains("--models"), "{out}");
+    let (ok, out) = cli(&["doctor", "--models", "/nonexistent/models"], &[]);
+    assert!(
+        !ok && out.contains("/nonexistent/models: model directory not found"),
+        "{out}"
+    );
+    // A missing library is named, with the way to install it.
+    let (ok, out) = cli(
+        &["bench", "--unet", "--models", tiny],
+        &[("DREAMSCENE_ORT_LIB", "/no/such/libonnxruntime.so")],
+    );
+    assert!(
+        !ok && out.contains("DREAMSCENE_ORT_LIB=/no/such/libonnxruntime.so: no such file"),
+        "{out}"
+    );
+    // CUDA asked of a CPU-only library: a clear error, not a silent CPU fallback.
+    let (ok, out) = cli(
+        &["bench", "--unet", "--models", tiny, "--provider", "cuda"],
+        &[],
+    );
+    if !out.contains("CUDAExecutionProvider") {
+        assert!(!ok && out.contains("no CUDA provider"), "{out}");
+    }
+}
+
+#[test]
+fn fp16_export_loads_and_matches_the_goldens() {
+    let d = std::env::temp_dir().join(format!("ds-fp16-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    copy_dir(&data("tiny-sd"), &d);
+    for f in ["model.onnx", "model.onnx_data"] {
+        std::fs::copy(data("fp16-unet").join(f), d.join("unet").join(f)).unwrap();
+    }
+    let mut sd = StableDiffusion::open(&d, &ModelOptions::default()).unwrap();
+    assert_eq!(sd.precision(), "fp16");
+    let g = golden("tiny-sd");
+    let emb = sd
+        .encode_text(&["a photo of a cat", "A DSLR photo of a cozy living room"])
+        .unwrap();
+    let lat: Vec<f32> = (0..2 * 256).map(|i| (i as f32 * 0.37).sin()).collect();
+    let u = sd
+        .unet_batch(
+            &[&lat[..256], &lat[256..]],
+            (8, 8),
+            500,
+            &[&emb[0], &emb[1]],
+        )
+        .unwrap();
+    // Half precision: inputs and outputs round to 11 significant bits.
+    assert_close(
+        &u.concat(),
+        &floats(&g["unet"]["out_sample"]),
+        1e-2,
+        "fp16 out_sample",
+    );
+    std::fs::remove_dir_all(&d).ok();
+}

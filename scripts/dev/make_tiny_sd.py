@@ -288,6 +288,33 @@ def zstar_ref(ehs):
     return v.reshape(-1, LATENT_C, AN_H, AN_W)
 
 
+def with_fp16_io(m):
+    """The same model with float16 inputs and outputs (as an fp16 export declares them)."""
+    g = m.graph
+    casts_in, casts_out = [], []
+    for i in g.input:
+        if i.type.tensor_type.elem_type == TensorProto.FLOAT:
+            inner = i.name + "_f32"
+            for node in g.node:
+                for k, name in enumerate(node.input):
+                    if name == i.name:
+                        node.input[k] = inner
+            casts_in.append(helper.make_node("Cast", [i.name], [inner], to=TensorProto.FLOAT))
+            i.type.tensor_type.elem_type = TensorProto.FLOAT16
+    for o in g.output:
+        inner = o.name + "_f32"
+        for node in g.node:
+            for k, name in enumerate(node.output):
+                if name == o.name:
+                    node.output[k] = inner
+        casts_out.append(helper.make_node("Cast", [inner], [o.name], to=TensorProto.FLOAT16))
+        o.type.tensor_type.elem_type = TensorProto.FLOAT16
+    nodes = casts_in + list(g.node) + casts_out
+    del g.node[:]
+    g.node.extend(nodes)
+    return m
+
+
 # ---------------------------------------------------------------- files
 def pad_ids(ids):
     ids = list(ids[:SEQ - 1]) if len(ids) > SEQ else list(ids)
@@ -343,6 +370,8 @@ def main():
     root = "tests/data/tiny-sd"
     write_common(root)
     save(unet_graph(), os.path.join(root, "unet/model.onnx"), external=True)
+    # The same UNet as an fp16 export declares it (float16 sample, states and output).
+    save(with_fp16_io(unet_graph()), "tests/data/fp16-unet/model.onnx", external=True)
     json.dump({"_class_name": "UNet2DConditionModel", "in_channels": LATENT_C, "out_channels": LATENT_C,
                "cross_attention_dim": HIDDEN, "sample_size": 8}, open(os.path.join(root, "unet/config.json"), "w"),
               indent=2)
@@ -406,6 +435,10 @@ def main():
     o = un.run(None, {"sample": f32(lat), "timestep": t.astype(np.int64),
                       "encoder_hidden_states": o_last[:2]})[0]
     assert np.allclose(o, u, atol=1e-4), ("unet", np.abs(o - u).max())
+    un16 = ort.InferenceSession("tests/data/fp16-unet/model.onnx")
+    o16 = un16.run(None, {"sample": lat.astype(np.float16), "timestep": t.astype(np.int64),
+                          "encoder_hidden_states": o_last[:2].astype(np.float16)})[0]
+    assert o16.dtype == np.float16 and np.allclose(o16, u, atol=2e-2), ("fp16 unet", np.abs(o16 - u).max())
     de = ort.InferenceSession(os.path.join(root, "vae_decoder/model.onnx"))
     assert np.allclose(de.run(None, {"latent_sample": f32(z_unscaled)})[0], dec, atol=1e-4), "decoder"
     en = ort.InferenceSession(os.path.join(root, "vae_encoder/model.onnx"))

@@ -239,6 +239,20 @@ impl StableDiffusion {
         })
     }
 
+    /// The latent size the UNet declares, else `unet/config.json`'s `sample_size`, else 64.
+    pub fn default_latent_size(&self) -> (usize, usize) {
+        let d = &self.unet.inputs[0].dims;
+        if d[2] > 0 && d[3] > 0 {
+            return (d[2] as usize, d[3] as usize);
+        }
+        let s = read_json(&self.dir.join("unet/config.json"))
+            .ok()
+            .and_then(|v| v.get("sample_size").and_then(|s| s.as_u64()))
+            .filter(|s| *s > 0 && *s <= 512)
+            .unwrap_or(64) as usize;
+        (s, s)
+    }
+
     /// Whether a tiny autoencoder is present for [`Codec::Fast`].
     pub fn has_fast_codec(&self) -> bool {
         self.fast.is_some()
