@@ -255,6 +255,11 @@ fn whole_chain_runs_with_batched_unet_calls() {
             t_min: 20,
             t_max: 980,
         },
+        Rule::DreamTime {
+            t_min: 20,
+            t_max: 980,
+            steps: 1000,
+        },
         Rule::Ism {
             t_min: 200,
             t_max: 600,

@@ -12,8 +12,8 @@
 //! recomputed every iteration, as the authors' pseudo-ground-truth views are; a small autoencoder
 //! (TAESD, `Codec::Fast`) keeps the per-iteration encode/decode cheap.
 use super::guidance::{
-    code_schedule, edit_gradient, ism_gradient, mts_gradient, paper_schedule, pseudo_gt,
-    sds_gradient, MtsRange, MtsRule, MtsSettings,
+    code_schedule, dreamtime_t, edit_gradient, ism_gradient, mts_gradient, paper_schedule,
+    pseudo_gt, sds_gradient, MtsRange, MtsRule, MtsSettings,
 };
 use super::model::{
     chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetPredictor,
@@ -32,6 +32,8 @@ pub enum Rule {
     Edit,
     /// Score distillation at a uniform t in `[t_min, t_max)`.
     Sds { t_min: u32, t_max: u32 },
+    /// Score distillation with DreamTime's t, decreasing from `t_max` to `t_min` over `steps`.
+    DreamTime { t_min: u32, t_max: u32, steps: u32 },
     /// Interval score matching, t uniform in `[t_min, t_max)`, s = t − `delta`.
     Ism { t_min: u32, t_max: u32, delta: u32 },
 }
@@ -108,6 +110,11 @@ impl Guide {
             Rule::Sds { t_min, t_max } | Rule::Ism { t_min, t_max, .. } => {
                 vec![self.rng.gen_range(t_min..t_max.max(t_min + 1))]
             }
+            Rule::DreamTime {
+                t_min,
+                t_max,
+                steps,
+            } => vec![dreamtime_t(step, steps, t_min, t_max)],
         };
         let mut p = UnetPredictor {
             sd,
@@ -123,7 +130,9 @@ impl Guide {
             }
             Rule::Mts { .. } => mts_gradient(&mut p, &sched, z, &eps, &ts, s)?,
             Rule::Edit => edit_gradient(&mut p, &sched, z, &eps, &ts, s)?,
-            Rule::Sds { .. } => sds_gradient(&mut p, &sched, z, &eps, ts[0], s)?,
+            Rule::Sds { .. } | Rule::DreamTime { .. } => {
+                sds_gradient(&mut p, &sched, z, &eps, ts[0], s)?
+            }
             Rule::Ism { delta, .. } => {
                 let t = ts[0];
                 let s_t = t.saturating_sub(delta).max(s.t_start);
