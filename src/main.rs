@@ -57,8 +57,8 @@ enum Command {
     /// Fit Gaussians to posed images (3DGS optimisation: Adam, densify and prune) and write a PLY.
     ///
     /// Images are found as <images>/<img_name>[.png|.jpg|.jpeg] for each camera. The model is
-    /// checkpointed to --out every --checkpoint-every iterations, so an interrupted fit can
-    /// continue with --init <out>.
+    /// checkpointed to --out every --checkpoint-every iterations, with the optimiser state
+    /// (iteration, Adam moments) in <out>.state, so an interrupted fit continues with --resume.
     Fit {
         /// Directory of training images.
         #[arg(long)]
@@ -93,6 +93,9 @@ enum Command {
         /// Seed of the random start and the view order.
         #[arg(long, default_value_t = 0)]
         seed: u64,
+        /// Continue an interrupted fit from --out and <out>.state (same --iterations).
+        #[arg(long, conflicts_with = "init")]
+        resume: bool,
     },
     /// Plan a scene from a sentence (or a dialogue) and lay it out: writes <out>/spec.json,
     /// <out>/layout.json and a top-down picture <out>/layout.png.
@@ -253,10 +256,21 @@ fn run(cli: Cli) -> Result<()> {
             no_densify,
             checkpoint_every,
             seed,
+            resume,
         } => {
             let cams = read_cameras(&cameras)?;
             let views = load_views(&images, &cams, background).map_err(anyhow::Error::msg)?;
-            let start = match init {
+            let state = resume.then(|| state_path(&out));
+            if let Some(st) = &state {
+                if !out.is_file() || !st.is_file() {
+                    bail!(
+                        "--resume needs {} and {} from an earlier fit",
+                        out.display(),
+                        st.display()
+                    );
+                }
+            }
+            let start = match init.or(resume.then(|| out.clone())) {
                 Some(p) => read_ply(&p)?,
                 None => {
                     if init_gaussians == 0 {
@@ -272,7 +286,14 @@ fn run(cli: Cli) -> Result<()> {
                 seed,
                 ..Default::default()
             };
-            fit(&start, views, config, &out, checkpoint_every)
+            fit(
+                &start,
+                views,
+                config,
+                &out,
+                checkpoint_every,
+                state.as_deref(),
+            )
         }
         Command::Plan {
             prompt,
@@ -349,31 +370,55 @@ fn run(cli: Cli) -> Result<()> {
     }
 }
 
+/// Where a fit writing `out` keeps its optimiser state.
+fn state_path(out: &Path) -> PathBuf {
+    let mut s = out.as_os_str().to_owned();
+    s.push(".state");
+    PathBuf::from(s)
+}
+
 fn fit(
     start: &Gaussians,
     views: Vec<View>,
     config: FitConfig,
     out: &Path,
     checkpoint_every: u32,
+    resume_from: Option<&Path>,
 ) -> Result<()> {
     create_parent(out)?;
     let ctx = open_device()?;
     let n_views = views.len();
     let iterations = config.iterations;
     let mut t = Trainer::new(&ctx, start, views, config)?;
+    if let Some(st) = resume_from {
+        t.restore(st).map_err(anyhow::Error::msg)?;
+        if t.iteration() >= iterations {
+            println!(
+                "{} is already at iteration {} of {iterations}",
+                out.display(),
+                t.iteration()
+            );
+            return Ok(());
+        }
+        eprintln!("resuming at iteration {}", t.iteration());
+    }
     let bar = ProgressBar::new(iterations as u64).with_style(
         ProgressStyle::with_template(
             "{bar:40} {pos}/{len} [{elapsed_precise}<{eta_precise}] {msg}",
         )
         .expect("valid template"),
     );
+    bar.set_position(t.iteration() as u64);
+    let state = state_path(out);
     let save = |t: &Trainer| -> Result<()> {
         let g = t.gaussians()?;
-        write_ply(out, &g).with_context(|| format!("writing {}", out.display()))
+        write_ply(out, &g).with_context(|| format!("writing {}", out.display()))?;
+        t.save_state(&state)
+            .with_context(|| format!("writing {}", state.display()))
     };
     // Loss and PSNR averaged over the last epoch-sized window, for a steadier readout.
     let mut window: std::collections::VecDeque<(f64, f64)> = Default::default();
-    for _ in 0..iterations {
+    while t.iteration() < iterations {
         let r = t.step()?;
         window.push_back((r.loss, r.psnr));
         if window.len() > n_views {

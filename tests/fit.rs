@@ -89,3 +89,113 @@ fn fit_recovers_a_random_scene() {
     assert!(after >= 25.0, "held-out PSNR {after:.2} dB");
     ctx.check_validation().unwrap();
 }
+
+/// A fit interrupted after a checkpoint and restored from the PLY and the optimiser state ends
+/// where an uninterrupted fit does; restarting Adam instead does not. A state written for another
+/// model is refused.
+#[test]
+fn resumed_fit_matches_an_uninterrupted_one() {
+    let ctx = common::gpu();
+    let mut rng = common::rng(90);
+    let scene = Gaussians::random(&mut rng, 200, [-1.0; 3], [1.0; 3], 0.15, 0);
+    let cams = orbit(4, 91);
+    let views: Vec<View> = cams
+        .iter()
+        .map(|c| View {
+            camera: c.clone(),
+            pixels: to_f32(&reference::render(&scene, c, [0.0; 3])),
+        })
+        .collect();
+    let init = random_init(&cams, 300, 0, 2);
+    let config = FitConfig {
+        iterations: 40,
+        densify: false,
+        ..Default::default()
+    };
+    let run = |t: &mut Trainer, steps: u32| {
+        for _ in 0..steps {
+            t.step().unwrap();
+        }
+    };
+    let mut straight = Trainer::new(&ctx, &init, views.clone(), config.clone()).unwrap();
+    run(&mut straight, 20);
+    let want = straight.gaussians().unwrap();
+
+    let dir = std::env::temp_dir().join(format!("dreamscene-resume-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let state = dir.join("model.ply.state");
+    let mut first = Trainer::new(&ctx, &init, views.clone(), config.clone()).unwrap();
+    run(&mut first, 10);
+    first.save_state(&state).unwrap();
+    let mid = first.gaussians().unwrap();
+    drop(first);
+
+    let mut resumed = Trainer::new(&ctx, &mid, views.clone(), config.clone()).unwrap();
+    let up = resumed.gaussians().unwrap();
+    assert_eq!(
+        (
+            up.means == mid.means,
+            up.scales == mid.scales,
+            up.rotations == mid.rotations,
+            up.opacities == mid.opacities,
+            up.sh == mid.sh
+        ),
+        (true, true, true, true, true)
+    );
+    resumed.restore(&state).unwrap();
+    assert_eq!(resumed.iteration(), 10);
+    run(&mut resumed, 10);
+    let mut restarted = Trainer::new(&ctx, &mid, views.clone(), config.clone()).unwrap();
+    run(&mut restarted, 10);
+
+    let flat = |g: &Gaussians| -> Vec<f32> {
+        let mut v: Vec<f32> = g.means.concat();
+        v.extend(g.scales.concat());
+        v.extend(g.rotations.concat());
+        v.extend(&g.opacities);
+        v.extend(&g.sh);
+        v
+    };
+    let want = flat(&want);
+    // Mean absolute difference: float atomics make two identical runs differ slightly (Adam
+    // amplifies sign flips of near-zero gradients), so the bar is the run-to-run difference.
+    let diff = |g: &Gaussians| -> f64 {
+        flat(g)
+            .iter()
+            .zip(&want)
+            .map(|(a, b)| (a - b).abs() as f64)
+            .sum::<f64>()
+            / want.len() as f64
+    };
+    let mut again = Trainer::new(&ctx, &init, views.clone(), config.clone()).unwrap();
+    run(&mut again, 20);
+    let d_twice = diff(&again.gaussians().unwrap());
+    let (d_resumed, d_restarted) = (
+        diff(&resumed.gaussians().unwrap()),
+        diff(&restarted.gaussians().unwrap()),
+    );
+    eprintln!(
+        "mean parameter difference from the uninterrupted fit: resumed {d_resumed:e}, Adam \
+         restarted {d_restarted:e}, the same fit run again {d_twice:e}"
+    );
+    let noise = d_twice.max(1e-7);
+    assert!(
+        d_resumed < 3.0 * noise,
+        "resumed fit drifted by {d_resumed:e}"
+    );
+    assert!(
+        d_restarted > 20.0 * noise,
+        "the test cannot tell: {d_restarted:e}"
+    );
+
+    // Another model (the start, not the checkpoint) is refused, as is a damaged file.
+    let mut other = Trainer::new(&ctx, &init, views.clone(), config.clone()).unwrap();
+    let e = other.restore(&state).unwrap_err();
+    assert!(e.contains("another model"), "{e}");
+    let bytes = std::fs::read(&state).unwrap();
+    std::fs::write(&state, &bytes[..bytes.len() - 5]).unwrap();
+    let mut again = Trainer::new(&ctx, &mid, views, config).unwrap();
+    let e = again.restore(&state).unwrap_err();
+    assert!(e.contains("truncated"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}

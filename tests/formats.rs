@@ -152,3 +152,71 @@ fn fit_names_missing_or_mis_sized_images() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `fit --resume` continues from the PLY and its optimiser state, and says what is missing.
+#[test]
+fn fit_resumes_from_its_checkpoint() {
+    let dir = tempdir("resume");
+    let images = dir.join("images");
+    std::fs::create_dir_all(&images).unwrap();
+    let mut cams = vec![];
+    for i in 0..3 {
+        let a = i as f64 * 0.4;
+        let mut cam = Camera::look_at(
+            [3.0 * a.sin(), 0.0, -3.0 * a.cos()],
+            [0.0; 3],
+            [0.0, -1.0, 0.0],
+            32,
+            24,
+            0.8,
+        );
+        cam.id = i;
+        cam.img_name = format!("v{i}");
+        image::RgbImage::from_fn(32, 24, |x, y| {
+            image::Rgb([(x * 8) as u8, (y * 10) as u8, 90])
+        })
+        .save(images.join(format!("v{i}.png")))
+        .unwrap();
+        cams.push(cam);
+    }
+    write_cameras(&dir.join("cameras.json"), &cams).unwrap();
+    let model = dir.join("model.ply");
+    let run = |extra: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+            .args(["fit", "--images"])
+            .arg(&images)
+            .arg("--cameras")
+            .arg(dir.join("cameras.json"))
+            .arg("--out")
+            .arg(&model)
+            .args(["--init-gaussians", "200", "--checkpoint-every", "2"])
+            .args(extra)
+            .output()
+            .unwrap();
+        (
+            out.status.success(),
+            format!(
+                "{}{}",
+                String::from_utf8_lossy(&out.stdout),
+                String::from_utf8_lossy(&out.stderr)
+            ),
+        )
+    };
+    let (ok, out) = run(&["--iterations", "4", "--resume"]);
+    assert!(!ok && out.contains("--resume needs"), "{out}");
+    let (ok, out) = run(&["--iterations", "4"]);
+    assert!(ok, "{out}");
+    assert!(dir.join("model.ply.state").is_file());
+    let (ok, out) = run(&["--iterations", "4", "--resume"]);
+    assert!(ok && out.contains("already at iteration 4"), "{out}");
+    let (ok, out) = run(&["--iterations", "6", "--resume"]);
+    assert!(ok && out.contains("resuming at iteration 4"), "{out}");
+    // A state that belongs to another PLY is refused with the reason.
+    std::fs::copy(dir.join("model.ply.state"), dir.join("keep.state")).unwrap();
+    let (ok, out) = run(&["--iterations", "2"]);
+    assert!(ok, "{out}");
+    std::fs::copy(dir.join("keep.state"), dir.join("model.ply.state")).unwrap();
+    let (ok, out) = run(&["--iterations", "8", "--resume"]);
+    assert!(!ok && out.contains("model.ply.state"), "{out}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -71,6 +71,7 @@ impl Default for FitConfig {
     }
 }
 
+#[derive(Debug, Clone)]
 /// A posed training image.
 pub struct View {
     pub camera: Camera,
@@ -559,4 +560,149 @@ pub fn load_views(
         });
     }
     Ok(views)
+}
+
+/// Magic and version of the optimiser-state file written beside a fit's PLY.
+const STATE_MAGIC: &[u8; 8] = b"DSFIT\x00\x02\x00";
+
+/// FNV-1a over the Gaussians' means and opacities: ties a state file to the PLY written with it.
+fn fingerprint(g: &Gaussians) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    let bytes = bytemuck::cast_slice::<[f32; 3], u8>(&g.means)
+        .iter()
+        .chain(bytemuck::cast_slice::<f32, u8>(&g.opacities));
+    for b in bytes {
+        h = (h ^ *b as u64).wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
+impl Trainer {
+    /// Writes the optimiser state (iteration, Adam step and both moments of every parameter
+    /// group) to `path`, atomically (a temporary file renamed into place). With the PLY written
+    /// at the same iteration it lets [`Trainer::restore`] continue the fit where it stopped.
+    pub fn save_state(&self, path: &std::path::Path) -> std::io::Result<()> {
+        let mut buf: Vec<u8> = STATE_MAGIC.to_vec();
+        for v in [
+            self.iteration,
+            self.state.step,
+            self.gaussians.n,
+            self.gaussians.sh_degree,
+        ] {
+            buf.extend_from_slice(&v.to_le_bytes());
+        }
+        let io = |e: GpuError| std::io::Error::other(e.to_string());
+        buf.extend_from_slice(&fingerprint(&self.gaussians().map_err(io)?).to_le_bytes());
+        // The view order: the generator's position and the rest of this epoch.
+        buf.extend_from_slice(&self.rng.get_word_pos().to_le_bytes());
+        buf.extend_from_slice(&(self.order.len() as u32).to_le_bytes());
+        for &v in &self.order {
+            buf.extend_from_slice(&(v as u32).to_le_bytes());
+        }
+        for m in self.moments() {
+            for b in [&m.m1, &m.m2] {
+                let v: Vec<f32> = b.read_all().map_err(io)?;
+                buf.extend_from_slice(&(v.len() as u64).to_le_bytes());
+                buf.extend_from_slice(bytemuck::cast_slice(&v));
+            }
+        }
+        let tmp = path.with_extension("state.tmp");
+        std::fs::write(&tmp, &buf)?;
+        std::fs::rename(&tmp, path)
+    }
+
+    fn moments(&self) -> [&Moments; 5] {
+        [
+            &self.state.means,
+            &self.state.scales,
+            &self.state.rotations,
+            &self.state.opacities,
+            &self.state.sh,
+        ]
+    }
+
+    /// Restores a state written by [`Trainer::save_state`] for the Gaussians this trainer was
+    /// started with (and the same seed and views): the iteration, Adam and the view order continue
+    /// exactly; densification statistics restart.
+    pub fn restore(&mut self, path: &std::path::Path) -> std::result::Result<(), String> {
+        let shown = path.display();
+        let data = std::fs::read(path).map_err(|e| format!("{shown}: {e}"))?;
+        if data.len() < 32 || &data[..8] != STATE_MAGIC {
+            return Err(format!("{shown}: not a dreamscene fit state (bad header)"));
+        }
+        let word = |i: usize| u32::from_le_bytes(data[8 + 4 * i..12 + 4 * i].try_into().unwrap());
+        let (iteration, step, n, sh) = (word(0), word(1), word(2), word(3));
+        if n != self.gaussians.n || sh != self.gaussians.sh_degree {
+            return Err(format!(
+                "{shown}: state is for {n} Gaussians at SH degree {sh}, the model has {} at degree \
+                 {} (was the PLY written at another iteration?)",
+                self.gaussians.n, self.gaussians.sh_degree
+            ));
+        }
+        let stored = u64::from_le_bytes(data[24..32].try_into().unwrap());
+        let g = self.gaussians().map_err(|e| format!("{shown}: {e}"))?;
+        if stored != fingerprint(&g) {
+            return Err(format!(
+                "{shown}: the state was written with another model than the PLY being resumed \
+                 (interrupted between the two writes?); restart, or continue with --init"
+            ));
+        }
+        let mut at = 32usize;
+        let mut take = |len: usize| -> std::result::Result<&[u8], String> {
+            let b = data
+                .get(at..at + len)
+                .ok_or_else(|| format!("{shown}: truncated"))?;
+            at += len;
+            Ok(b)
+        };
+        let word_pos = u128::from_le_bytes(take(16)?.try_into().unwrap());
+        let n_order = u32::from_le_bytes(take(4)?.try_into().unwrap()) as usize;
+        if n_order > self.views.len() {
+            return Err(format!(
+                "{shown}: {n_order} pending views, the fit has {}",
+                self.views.len()
+            ));
+        }
+        let order: Vec<usize> = bytemuck::pod_collect_to_vec::<u8, u32>(take(4 * n_order)?)
+            .into_iter()
+            .map(|v| v as usize)
+            .collect();
+        if order.iter().any(|v| *v >= self.views.len()) {
+            return Err(format!("{shown}: a pending view is out of range"));
+        }
+        let mut arrays: Vec<Vec<f32>> = vec![];
+        for _ in 0..10 {
+            let len = u64::from_le_bytes(take(8)?.try_into().unwrap()) as usize;
+            if len > (data.len() / 4) {
+                return Err(format!("{shown}: truncated"));
+            }
+            arrays.push(bytemuck::pod_collect_to_vec(take(len * 4)?));
+        }
+        if at != data.len() {
+            return Err(format!(
+                "{shown}: {} unexpected trailing bytes",
+                data.len() - at
+            ));
+        }
+        let mut it = arrays.into_iter();
+        for m in self.moments() {
+            for b in [&m.m1, &m.m2] {
+                let v = it.next().expect("ten arrays");
+                if v.len() * 4 != b.size() as usize {
+                    return Err(format!(
+                        "{shown}: a moment array has {} values, the model needs {}",
+                        v.len(),
+                        b.size() / 4
+                    ));
+                }
+                b.write(&v).map_err(|e| format!("{shown}: {e}"))?;
+            }
+        }
+        self.state.step = step;
+        self.iteration = iteration;
+        self.order = order;
+        self.rng = rand_chacha::ChaCha8Rng::seed_from_u64(self.config.seed);
+        self.rng.set_word_pos(word_pos);
+        Ok(())
+    }
 }
