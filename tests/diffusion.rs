@@ -8,7 +8,7 @@ use dreamscene::diffusion::guidance::{
     MtsSettings, NoisePredictor, OBJECT_MTS,
 };
 use dreamscene::diffusion::model::{
-    Codec, Conditioning, ModelOptions, StableDiffusion, UnetPredictor,
+    Codec, Conditioning, Embedding, ModelOptions, StableDiffusion, UnetPredictor,
 };
 use dreamscene::diffusion::runtime;
 use dreamscene::diffusion::target::{target_loss, Guide, Rule};
@@ -59,6 +59,16 @@ fn assert_close(got: &[f32], want: &[f64], tol: f64, what: &str) {
         .map(|(g, w)| (*g as f64 - w).abs() / (1.0 + w.abs()))
         .fold(0.0, f64::max);
     assert!(worst < tol, "{what}: worst error {worst:e} ≥ {tol:e}");
+}
+
+/// The UNet on the golden batch: sin(0.37 i) latents at t = 500 under the first two prompts.
+fn check_unet_golden(sd: &mut StableDiffusion, a: &Embedding, b: &Embedding, tol: f64) {
+    let lat: Vec<f32> = (0..2 * 256).map(|i| (i as f32 * 0.37).sin()).collect();
+    let u = sd
+        .unet_batch(&[&lat[..256], &lat[256..]], (8, 8), 500, &[a, b])
+        .unwrap();
+    let want = floats(&golden("tiny-sd")["unet"]["out_sample"]);
+    assert_close(&u.concat(), &want, tol, "out_sample");
 }
 
 #[test]
@@ -132,21 +142,8 @@ fn goldens_match_text_encoder_unet_and_vae() {
     let emb = sd.encode_text(&prompts).unwrap();
     assert_eq!(emb[0].data, last[..77 * 32]);
 
+    check_unet_golden(&mut sd, &emb[0], &emb[1], 5e-5);
     let lat: Vec<f32> = (0..2 * 256).map(|i| (i as f32 * 0.37).sin()).collect();
-    let u = sd
-        .unet_batch(
-            &[&lat[..256], &lat[256..]],
-            (8, 8),
-            500,
-            &[&emb[0], &emb[1]],
-        )
-        .unwrap();
-    assert_close(
-        &u.concat(),
-        &floats(&g["unet"]["out_sample"]),
-        5e-5,
-        "out_sample",
-    );
 
     let (img, hw) = sd.decode(&lat[..256], 1, (8, 8), Codec::Vae).unwrap();
     assert_eq!(hw, (64, 64));
@@ -655,25 +652,10 @@ fn fp16_export_loads_and_matches_the_goldens() {
     }
     let mut sd = StableDiffusion::open(&d, &ModelOptions::default()).unwrap();
     assert_eq!(sd.precision(), "fp16");
-    let g = golden("tiny-sd");
     let emb = sd
         .encode_text(&["a photo of a cat", "A DSLR photo of a cozy living room"])
         .unwrap();
-    let lat: Vec<f32> = (0..2 * 256).map(|i| (i as f32 * 0.37).sin()).collect();
-    let u = sd
-        .unet_batch(
-            &[&lat[..256], &lat[256..]],
-            (8, 8),
-            500,
-            &[&emb[0], &emb[1]],
-        )
-        .unwrap();
     // Half precision: inputs and outputs round to 11 significant bits.
-    assert_close(
-        &u.concat(),
-        &floats(&g["unet"]["out_sample"]),
-        1e-2,
-        "fp16 out_sample",
-    );
+    check_unet_golden(&mut sd, &emb[0], &emb[1], 1e-2);
     std::fs::remove_dir_all(&d).ok();
 }

@@ -34,19 +34,23 @@ fn to_f32(img: &reference::RefImage) -> Vec<[f32; 3]> {
     img.color.iter().map(|c| c.map(|v| v as f32)).collect()
 }
 
+/// Each camera's view of `scene`, rendered by the f64 reference on black.
+fn views_of(scene: &Gaussians, cams: &[Camera]) -> Vec<View> {
+    cams.iter()
+        .map(|c| View {
+            camera: c.clone(),
+            pixels: to_f32(&reference::render(scene, c, [0.0; 3])),
+        })
+        .collect()
+}
+
 #[test]
 fn fit_recovers_a_random_scene() {
     let ctx = common::gpu();
     let mut rng = common::rng(80);
     let scene = Gaussians::random(&mut rng, 500, [-1.0; 3], [1.0; 3], 0.12, 0);
     let cams = orbit(32, 81);
-    let views: Vec<View> = cams
-        .iter()
-        .map(|c| View {
-            camera: c.clone(),
-            pixels: to_f32(&reference::render(&scene, c, [0.0; 3])),
-        })
-        .collect();
+    let views = views_of(&scene, &cams);
     let (test, train): (Vec<View>, Vec<View>) =
         views.into_iter().partition(|v| v.camera.id % 4 == 3);
     assert_eq!((train.len(), test.len()), (24, 8));
@@ -99,13 +103,7 @@ fn resumed_fit_matches_an_uninterrupted_one() {
     let mut rng = common::rng(90);
     let scene = Gaussians::random(&mut rng, 200, [-1.0; 3], [1.0; 3], 0.15, 0);
     let cams = orbit(4, 91);
-    let views: Vec<View> = cams
-        .iter()
-        .map(|c| View {
-            camera: c.clone(),
-            pixels: to_f32(&reference::render(&scene, c, [0.0; 3])),
-        })
-        .collect();
+    let views = views_of(&scene, &cams);
     let init = random_init(&cams, 300, 0, 2);
     let config = FitConfig {
         iterations: 40,
