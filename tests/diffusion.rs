@@ -4,14 +4,14 @@
 //! whose exact noise prediction lets the guidance be checked to converge to a known target.
 //! These tests need the ONNX Runtime library (scripts/setup.sh installs it); without it they fail.
 use dreamscene::diffusion::guidance::{
-    code_schedule, mts_gradient, paper_schedule, pseudo_gt, sds_gradient, Cond, MtsRule,
-    MtsSettings, NoisePredictor, OBJECT_MTS,
+    code_schedule, ism_gradient, mts_gradient, paper_schedule, pseudo_gt, sds_gradient, Cond,
+    MtsRule, MtsSettings, NoisePredictor, OBJECT_MTS,
 };
 use dreamscene::diffusion::model::{
     Codec, Conditioning, Embedding, ModelOptions, StableDiffusion, UnetPredictor,
 };
 use dreamscene::diffusion::runtime;
-use dreamscene::diffusion::target::{target_loss, Guide, Rule};
+use dreamscene::diffusion::target::{target_loss, Guide, Rule, ISM_DEFAULT};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::Value;
@@ -257,11 +257,7 @@ fn whole_chain_runs_with_batched_unet_calls() {
             t_max: 980,
             steps: 1000,
         },
-        Rule::Ism {
-            t_min: 200,
-            t_max: 600,
-            delta: 100,
-        },
+        ISM_DEFAULT,
     ] {
         let mut guide = Guide::new(rule, OBJECT_MTS, MtsSettings::default(), Codec::Vae, 7);
         let t = guide
@@ -365,6 +361,10 @@ fn descend(
                 let ts = code_schedule(&OBJECT_MTS, step * 10, &mut rng);
                 mts_gradient(&mut p, &sched, &z, &eps, &ts, s).unwrap()
             }
+            "ism" => {
+                let t = rng.gen_range(100..500);
+                ism_gradient(&mut p, &sched, &z, &eps, t - 80, t, 200, 5, s).unwrap()
+            }
             "mts-paper" => {
                 let ts = paper_schedule(&OBJECT_MTS, step * 10, 4, &mut rng);
                 mts_gradient(&mut p, &sched, &z, &eps, &ts, s).unwrap()
@@ -399,6 +399,7 @@ fn guidance_drives_latent_and_image_to_the_analytic_target() {
         ("sds", MtsRule::Code, 1.0, 2.0, 200),
         ("mts-code", MtsRule::Code, 7.5, 2.0, 200),
         ("mts-paper", MtsRule::Paper, 7.5, 2.0, 200),
+        ("ism", MtsRule::Code, 7.5, 2.0, 200),
         ("pseudo-gt", MtsRule::Code, 7.5, 0.2, 100),
     ] {
         let s = MtsSettings {

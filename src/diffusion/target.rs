@@ -11,6 +11,7 @@
 //! vanish exactly where g does, so the fixed points of the guidance are kept. The target is
 //! recomputed every iteration, as the authors' pseudo-ground-truth views are; a small autoencoder
 //! (TAESD, `Codec::Fast`) keeps the per-iteration encode/decode cheap.
+use super::guidance::NoisePredictor;
 use super::guidance::{
     code_schedule, dreamtime_t, edit_gradient, ism_gradient, mts_gradient, paper_schedule,
     pseudo_gt, sds_gradient, MtsRange, MtsRule, MtsSettings,
@@ -18,8 +19,19 @@ use super::guidance::{
 use super::model::{
     chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetPredictor,
 };
+use super::schedule::Schedule;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rand_distr::StandardNormal;
+
+/// LucidDreamer's ISM settings (t in [20, 500), t − s = 80, x_s by 5 inversion steps of 200).
+pub const ISM_DEFAULT: Rule = Rule::Ism {
+    t_min: 20,
+    t_max: 500,
+    delta: 80,
+    xs_delta: 200,
+    xs_steps: 5,
+};
 
 /// Which guidance rule a [`Guide`] applies.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -34,8 +46,15 @@ pub enum Rule {
     Sds { t_min: u32, t_max: u32 },
     /// Score distillation with DreamTime's t, decreasing from `t_max` to `t_min` over `steps`.
     DreamTime { t_min: u32, t_max: u32, steps: u32 },
-    /// Interval score matching, t uniform in `[t_min, t_max)`, s = t − `delta`.
-    Ism { t_min: u32, t_max: u32, delta: u32 },
+    /// Interval score matching (LucidDreamer): t uniform in `[t_min, t_max)`, s = t − `delta`,
+    /// x_s reached by DDIM inversion in steps of `xs_delta`, at most `xs_steps` of them.
+    Ism {
+        t_min: u32,
+        t_max: u32,
+        delta: u32,
+        xs_delta: u32,
+        xs_steps: u32,
+    },
 }
 
 /// One iteration's image target.
@@ -77,29 +96,19 @@ impl Guide {
         }
     }
 
-    fn noise(&mut self, n: usize) -> Vec<f32> {
-        (0..n)
-            .map(|_| {
-                // Box–Muller from two uniforms.
-                let u1: f64 = self.rng.gen_range(1e-12..1.0);
-                let u2: f64 = self.rng.gen();
-                ((-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()) as f32
-            })
-            .collect()
-    }
-
-    /// The latent target for latent `z` (size `c × hw`) at training step `step`, with the
-    /// timesteps used and the gradient's RMS.
+    /// The latent target for latent `z` at training step `step` under any noise predictor, with
+    /// the timesteps sampled and the gradient's RMS.
     pub fn latent_target(
         &mut self,
-        sd: &mut StableDiffusion,
-        cond: &Conditioning,
+        p: &mut dyn NoisePredictor,
+        sched: &Schedule,
         z: &[f32],
-        hw: (usize, usize),
         step: u32,
     ) -> Result<(Vec<f32>, Vec<u32>, f64), String> {
-        let eps = self.noise(z.len());
-        let sched = sd.schedule.clone();
+        let eps: Vec<f32> = (&mut self.rng)
+            .sample_iter(StandardNormal)
+            .take(z.len())
+            .collect();
         let ts: Vec<u32> = match self.rule {
             Rule::Mts { m } if self.settings.rule == MtsRule::Paper => {
                 paper_schedule(&self.range, step, m, &mut self.rng)
@@ -116,27 +125,24 @@ impl Guide {
                 steps,
             } => vec![dreamtime_t(step, steps, t_min, t_max)],
         };
-        let mut p = UnetPredictor {
-            sd,
-            cond,
-            hw,
-            runs: 0,
-        };
         let s = &self.settings;
         let g = match self.rule {
             Rule::PseudoGt => {
-                let x0 = pseudo_gt(&mut p, &sched, z, &eps, &ts, s)?;
+                let x0 = pseudo_gt(p, sched, z, &eps, &ts, s)?;
                 return Ok((x0, ts, 0.0));
             }
-            Rule::Mts { .. } => mts_gradient(&mut p, &sched, z, &eps, &ts, s)?,
-            Rule::Edit => edit_gradient(&mut p, &sched, z, &eps, &ts, s)?,
-            Rule::Sds { .. } | Rule::DreamTime { .. } => {
-                sds_gradient(&mut p, &sched, z, &eps, ts[0], s)?
-            }
-            Rule::Ism { delta, .. } => {
+            Rule::Mts { .. } => mts_gradient(p, sched, z, &eps, &ts, s)?,
+            Rule::Edit => edit_gradient(p, sched, z, &eps, &ts, s)?,
+            Rule::Sds { .. } | Rule::DreamTime { .. } => sds_gradient(p, sched, z, &eps, ts[0], s)?,
+            Rule::Ism {
+                delta,
+                xs_delta,
+                xs_steps,
+                ..
+            } => {
                 let t = ts[0];
                 let s_t = t.saturating_sub(delta).max(s.t_start);
-                ism_gradient(&mut p, &sched, z, &eps, s_t, t, delta.max(1), 8, s)?
+                ism_gradient(p, sched, z, &eps, s_t, t, xs_delta.max(1), xs_steps, s)?
             }
         };
         let rms =
@@ -163,7 +169,14 @@ impl Guide {
         }
         let x = hwc01_to_chw11(render, width, height);
         let (z, hw) = sd.encode(&x, 1, (height, width), self.codec)?;
-        let (zt, timesteps, latent_rms) = self.latent_target(sd, cond, &z, hw, step)?;
+        let sched = sd.schedule.clone();
+        let mut p = UnetPredictor {
+            sd,
+            cond,
+            hw,
+            runs: 0,
+        };
+        let (zt, timesteps, latent_rms) = self.latent_target(&mut p, &sched, &z, step)?;
         let (img, (h, w)) = sd.decode(&zt, 1, hw, self.codec)?;
         Ok(ImageTarget {
             image: chw11_to_hwc01(&img, w, h),
@@ -188,4 +201,75 @@ pub fn target_loss(render: &[f32], target: &[f32], weight: f32) -> (f64, Vec<f32
         })
         .collect();
     (loss, grad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::guidance::{Cond, OBJECT_MTS};
+    use super::super::schedule::SchedulerConfig;
+    use super::*;
+
+    /// Records (t, conditions) of every call; predicts ε = 0.1 x.
+    struct Recorder(Vec<(u32, Vec<Cond>)>);
+    impl NoisePredictor for Recorder {
+        fn predict(&mut self, x: &[f32], t: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+            self.0.push((t, conds.to_vec()));
+            Ok(conds
+                .iter()
+                .map(|_| x.iter().map(|v| 0.1 * v).collect())
+                .collect())
+        }
+    }
+
+    /// Each rule calls the predictor at the timesteps and with the prompts it should.
+    #[test]
+    fn rules_call_the_predictor_as_specified() {
+        let sched = Schedule::new(SchedulerConfig::sd21_base()).unwrap();
+        let z = vec![0.3f32; 16];
+        let s = MtsSettings::default();
+        let run = |rule: Rule, step: u32| {
+            let mut g = Guide::new(rule, OBJECT_MTS, s, Codec::Vae, 4);
+            let mut r = Recorder(vec![]);
+            let (target, ts, _) = g.latent_target(&mut r, &sched, &z, step).unwrap();
+            assert_eq!(target.len(), z.len());
+            (r.0, ts)
+        };
+        use Cond::*;
+        // ISM: inversion from t_start in steps of 200 (null prompt) up to s = t − 80, one null
+        // prediction at s, then the guided pair at t.
+        let (calls, ts) = run(ISM_DEFAULT, 0);
+        let t = ts[0];
+        assert!((20..500).contains(&t));
+        let s_t = t.saturating_sub(80).max(1);
+        let mut want: Vec<u32> = vec![];
+        let mut cur = 1;
+        while cur < s_t && want.len() < 5 {
+            want.push(cur);
+            cur = (cur + 200).min(s_t);
+        }
+        want.push(cur);
+        want.push(t);
+        assert_eq!(
+            calls.iter().map(|c| c.0).collect::<Vec<_>>(),
+            want,
+            "t = {t}"
+        );
+        assert!(calls[..calls.len() - 1].iter().all(|c| c.1 == vec![Null]));
+        assert_eq!(calls.last().unwrap().1, vec![Positive, Negative]);
+        // MTS: one batched call per chain point (t_start, then each sampled t).
+        let (calls, ts) = run(Rule::Mts { m: 4 }, 0);
+        let mut want = vec![1];
+        want.extend(&ts);
+        assert_eq!(calls.iter().map(|c| c.0).collect::<Vec<_>>(), want);
+        assert!(calls.iter().all(|c| c.1 == vec![Positive, Negative, Null]));
+        // DreamTime: t falls from t_max to t_min over the run.
+        let dt = Rule::DreamTime {
+            t_min: 20,
+            t_max: 980,
+            steps: 100,
+        };
+        assert_eq!(run(dt, 0).1, vec![980]);
+        assert_eq!(run(dt, 100).1, vec![20]);
+        assert_eq!(run(dt, 50).1, vec![500]);
+    }
 }
