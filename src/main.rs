@@ -682,29 +682,43 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
             ok = false;
         }
     }
-    if let Some(dir) = models {
-        let opts = dreamscene::diffusion::model::ModelOptions {
-            provider,
-            threads: None,
-        };
-        match dreamscene::diffusion::model::StableDiffusion::open(dir, &opts) {
-            Ok(sd) => {
-                let (h, w) = sd.default_latent_size();
-                println!(
-                    "models: {} ({}, {} latent channels, {}x{} latents, tokenizer {} tokens, \
-                     tiny autoencoder {})",
-                    dir.display(),
-                    sd.precision(),
-                    sd.latent_channels,
-                    h,
-                    w,
-                    sd.tokenizer.vocab_size(),
-                    if sd.has_fast_codec() { "yes" } else { "no" }
-                );
-            }
-            Err(e) => {
-                println!("models: {e}");
-                ok = false;
+    match models {
+        None => println!(
+            "models: none given (--models DIR or DREAMSCENE_MODELS); generation needs a Stable \
+             Diffusion ONNX export, e.g. `optimum-cli export onnx --model \
+             stabilityai/stable-diffusion-2-1-base DIR`"
+        ),
+        Some(dir) => {
+            let opts = dreamscene::diffusion::model::ModelOptions {
+                provider,
+                threads: None,
+            };
+            match dreamscene::diffusion::model::StableDiffusion::open(dir, &opts) {
+                Ok(sd) => {
+                    let (h, w) = sd.default_latent_size();
+                    println!(
+                        "models: {} ({}, {} latent channels, {}x{} latents, tokenizer {} tokens)",
+                        dir.display(),
+                        sd.precision(),
+                        sd.latent_channels,
+                        h,
+                        w,
+                        sd.tokenizer.vocab_size(),
+                    );
+                    if !sd.has_vae_encoder() {
+                        println!("  missing: vae_encoder/ (needed to guide renders)");
+                    }
+                    if !sd.has_fast_codec() {
+                        println!(
+                            "  optional: taesd_encoder/ + taesd_decoder/ (a tiny autoencoder) \
+                             would make the per-iteration encode/decode cheaper"
+                        );
+                    }
+                }
+                Err(e) => {
+                    println!("models: {e}");
+                    ok = false;
+                }
             }
         }
     }

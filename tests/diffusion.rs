@@ -551,6 +551,19 @@ fn broken_model_directories_give_clear_errors() {
         .unwrap();
     assert!(e.contains("sample") && e.contains("16"), "{e}");
 
+    // A decoder whose static latent channels differ from the UNet's.
+    let d = fresh("channels");
+    std::fs::copy(
+        data("broken/vae_decoder_8ch/model.onnx"),
+        d.join("vae_decoder/model.onnx"),
+    )
+    .unwrap();
+    let e = err(&d);
+    assert!(
+        e.contains("vae_decoder/model.onnx") && e.contains("has 8 at axis 1"),
+        "{e}"
+    );
+
     let d = fresh("bad-scheduler");
     std::fs::write(
         d.join("scheduler/scheduler_config.json"),
@@ -596,6 +609,16 @@ fn cli_doctor_and_unet_bench() {
         "{out}"
     );
     assert!(out.contains("fp32") && out.contains("8x8 latents"), "{out}");
+    assert!(
+        !out.contains("missing:") && !out.contains("optional:"),
+        "{out}"
+    );
+    // Without a model directory, doctor says what is missing and how to get it.
+    let (_, out) = cli(&["doctor"], &[]);
+    assert!(
+        out.contains("models: none given") && out.contains("optimum-cli"),
+        "{out}"
+    );
 
     let (ok, out) = cli(
         &["bench", "--unet", "--models", tiny, "--json", "--runs", "2"],

@@ -45,6 +45,10 @@ def save(model_proto, path, external=False):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     onnx.checker.check_model(model_proto)
     if external:
+        # onnx appends to an existing data file: start from none.
+        data = os.path.join(os.path.dirname(path), "model.onnx_data")
+        if os.path.exists(data):
+            os.remove(data)
         onnx.save_model(model_proto, path, save_as_external_data=True, all_tensors_to_one_file=True,
                         location="model.onnx_data", size_threshold=256)
     else:
@@ -179,15 +183,16 @@ ENC_P = f32(np.linalg.pinv(_Mmat).reshape(LATENT_C, 3, FACTOR, FACTOR))  # [4, 1
 ENC_B = f32(-(np.linalg.pinv(_Mmat) @ np.repeat(DEC_C.astype(np.float64), FACTOR * FACTOR)))
 
 
-def vae_decoder_graph(scale_inside=1.0, name="vae_decoder"):
+def vae_decoder_graph(scale_inside=1.0, name="vae_decoder", channels=LATENT_C):
     n = [helper.make_node("Mul", ["latent_sample", "s"], ["zs"]),
          helper.make_node("ConvTranspose", ["zs", "m", "c"], ["sample"], strides=[FACTOR, FACTOR])]
+    m = np.concatenate([DEC_M] * (channels // LATENT_C + 1))[:channels]
     g = helper.make_graph(
         n, name,
         [helper.make_tensor_value_info("latent_sample", TensorProto.FLOAT,
-                                       ["batch_size", LATENT_C, "latent_height", "latent_width"])],
+                                       ["batch_size", channels, "latent_height", "latent_width"])],
         [helper.make_tensor_value_info("sample", TensorProto.FLOAT, ["batch_size", 3, "height", "width"])],
-        [init("m", DEC_M), init("c", DEC_C), init("s", f32(scale_inside))])
+        [init("m", m), init("c", DEC_C), init("s", f32(scale_inside))])
     return model(g)
 
 
@@ -370,6 +375,8 @@ def main():
     root = "tests/data/tiny-sd"
     write_common(root)
     save(unet_graph(), os.path.join(root, "unet/model.onnx"), external=True)
+    # A decoder for 8-channel latents: loads, but does not fit a 4-channel UNet.
+    save(vae_decoder_graph(channels=2 * LATENT_C), "tests/data/broken/vae_decoder_8ch/model.onnx")
     # The same UNet as an fp16 export declares it (float16 sample, states and output).
     save(with_fp16_io(unet_graph()), "tests/data/fp16-unet/model.onnx", external=True)
     json.dump({"_class_name": "UNet2DConditionModel", "in_channels": LATENT_C, "out_channels": LATENT_C,

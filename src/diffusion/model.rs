@@ -215,6 +215,21 @@ impl StableDiffusion {
                  encoder_hidden_states width {un_w}"
             ));
         }
+        let c = latent_channels as i64;
+        unet.expect_dim(
+            false,
+            0,
+            1,
+            &[c],
+            "the UNet predicts noise of its sample's shape",
+        )?;
+        text_encoder.expect_dim(
+            true,
+            0,
+            1,
+            &[tokenizer.max_length as i64],
+            "the tokenizer's model_max_length",
+        )?;
         let vae = load_autoencoder(dir, "vae_encoder", "vae_decoder", 0.18215, opts)?;
         let fast = if dir.join("taesd_decoder/model.onnx").is_file() {
             Some(load_autoencoder(
@@ -227,6 +242,21 @@ impl StableDiffusion {
         } else {
             None
         };
+        for ae in std::iter::once(&vae).chain(fast.as_ref()) {
+            ae.decoder
+                .expect_dim(true, 0, 1, &[c], "the UNet's latent channels")?;
+            ae.decoder.expect_dim(false, 0, 1, &[3], "RGB images")?;
+            if let Some(e) = &ae.encoder {
+                e.expect_dim(true, 0, 1, &[3], "RGB images")?;
+                e.expect_dim(
+                    false,
+                    0,
+                    1,
+                    &[c, 2 * c],
+                    "latents, or their mean and log-variance",
+                )?;
+            }
+        }
         Ok(StableDiffusion {
             dir: dir.to_path_buf(),
             tokenizer,
@@ -251,6 +281,11 @@ impl StableDiffusion {
             .filter(|s| *s > 0 && *s <= 512)
             .unwrap_or(64) as usize;
         (s, s)
+    }
+
+    /// Whether the VAE has its encoder (renders cannot be guided without one).
+    pub fn has_vae_encoder(&self) -> bool {
+        self.vae.encoder.is_some()
     }
 
     /// Whether a tiny autoencoder is present for [`Codec::Fast`].

@@ -289,9 +289,41 @@ impl OnnxModel {
             path: path.to_path_buf(),
             session,
         };
-        check_ports(&shown, "input", &model.inputs, inputs)?;
-        check_ports(&shown, "output", &model.outputs, outputs)?;
+        // Every input must be fed; extra outputs (e.g. pooler_output) are allowed.
+        check_ports(&shown, "input", &model.inputs, inputs, true)?;
+        check_ports(&shown, "output", &model.outputs, outputs, false)?;
         Ok(model)
+    }
+
+    /// Checks a declared dimension where it is static: `axis` of input (or output) `port` must be
+    /// one of `allowed`. Dynamic dimensions (−1) pass.
+    pub fn expect_dim(
+        &self,
+        input: bool,
+        port: usize,
+        axis: usize,
+        allowed: &[i64],
+        why: &str,
+    ) -> Result<(), String> {
+        let p = if input {
+            &self.inputs[port]
+        } else {
+            &self.outputs[port]
+        };
+        match p.dims.get(axis) {
+            Some(&d) if d >= 0 && !allowed.contains(&d) => Err(format!(
+                "{}: {} {:?} has {d} at axis {axis}, expected {} ({why})",
+                self.path.display(),
+                if input { "input" } else { "output" },
+                p.name,
+                allowed
+                    .iter()
+                    .map(|a| a.to_string())
+                    .collect::<Vec<_>>()
+                    .join(" or ")
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// Runs the model on `inputs` (one per declared input, in order) and returns every output as
@@ -394,7 +426,13 @@ impl OnnxModel {
     }
 }
 
-fn check_ports(shown: &str, what: &str, have: &[Port], want: &[PortSpec]) -> Result<(), String> {
+fn check_ports(
+    shown: &str,
+    what: &str,
+    have: &[Port],
+    want: &[PortSpec],
+    exact: bool,
+) -> Result<(), String> {
     let describe = |ports: &[Port]| {
         ports
             .iter()
@@ -402,7 +440,7 @@ fn check_ports(shown: &str, what: &str, have: &[Port], want: &[PortSpec]) -> Res
             .collect::<Vec<_>>()
             .join(", ")
     };
-    if have.len() < want.len() || (what == "input" && have.len() != want.len()) {
+    if have.len() < want.len() || (exact && have.len() != want.len()) {
         return Err(format!(
             "{shown}: expected {} {what}s ({}), the model has {}: {}",
             want.len(),
