@@ -216,6 +216,13 @@ fn parse_rgb(s: &str) -> Result<[f32; 3], String> {
 }
 
 fn main() {
+    // Output piped into `head` and the like ends quietly, as for other command-line tools,
+    // instead of panicking on a closed stdout.
+    // SAFETY: restoring the default disposition of SIGPIPE before any thread starts.
+    #[cfg(unix)]
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = Cli::parse();
     if let Err(e) = run(cli) {
         let chain: Vec<String> = e
