@@ -30,6 +30,34 @@ pub struct RasterFigures {
     pub gaussian_pixels_per_s: f64,
 }
 
+impl RasterFigures {
+    fn measured(n: usize, width: u32, height: u32, intersections: u32, ms: f64) -> RasterFigures {
+        RasterFigures {
+            gaussians: n as u32,
+            width,
+            height,
+            intersections,
+            ms,
+            gaussian_pixels_per_s: intersections as f64 * 256.0 / (ms * 1e-3),
+        }
+    }
+}
+
+/// A per-pixel colour gradient (RGB uniform in [−1, 1], alpha slot 0) for `pixels` pixels:
+/// what the backward benchmark and tests feed the blend backward.
+pub fn random_colour_gradient(rng: &mut impl Rng, pixels: usize) -> Vec<[f32; 4]> {
+    (0..pixels)
+        .map(|_| {
+            [
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                0.0,
+            ]
+        })
+        .collect()
+}
+
 #[derive(Debug, Serialize)]
 pub struct BenchReport {
     pub device: String,
@@ -126,14 +154,7 @@ pub fn bench_forward(
         m = f.intersections;
         Ok(())
     })?;
-    Ok(RasterFigures {
-        gaussians: n as u32,
-        width,
-        height,
-        intersections: m,
-        ms,
-        gaussian_pixels_per_s: m as f64 * 256.0 / (ms * 1e-3),
-    })
+    Ok(RasterFigures::measured(n, width, height, m, ms))
 }
 
 /// GPU backward pass (blend backward and projection backward) on the bench scene, for a random
@@ -151,29 +172,19 @@ pub fn bench_backward(
     let gg = GpuGaussians::upload(ctx, &g)?;
     let frame = r.forward(ctx, &gg, &cam, [0.0; 3])?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
-    let dl: Vec<[f32; 4]> = (0..width as usize * height as usize)
-        .map(|_| {
-            [
-                rng.gen_range(-1.0..1.0),
-                rng.gen_range(-1.0..1.0),
-                rng.gen_range(-1.0..1.0),
-                0.0,
-            ]
-        })
-        .collect();
+    let dl = random_colour_gradient(&mut rng, width as usize * height as usize);
     let dlb = Buffer::from_slice(ctx, "bench colour gradient", &dl)?;
     let grads = GpuGrads::new(ctx, n as u32, g.sh_degree)?;
     let ms = time(runs, || {
         bwd.run(ctx, &frame, &gg, &cam, &dlb, &grads).map(|_| ())
     })?;
-    Ok(RasterFigures {
-        gaussians: n as u32,
+    Ok(RasterFigures::measured(
+        n,
         width,
         height,
-        intersections: frame.intersections,
+        frame.intersections,
         ms,
-        gaussian_pixels_per_s: frame.intersections as f64 * 256.0 / (ms * 1e-3),
-    })
+    ))
 }
 
 /// The multithreaded CPU reference on the same scene, with the GPU's intersection count.
@@ -190,14 +201,7 @@ pub fn bench_cpu_forward(
         Ok(())
     })
     .expect("CPU timing cannot fail");
-    RasterFigures {
-        gaussians: n as u32,
-        width,
-        height,
-        intersections,
-        ms,
-        gaussian_pixels_per_s: intersections as f64 * 256.0 / (ms * 1e-3),
-    }
+    RasterFigures::measured(n, width, height, intersections, ms)
 }
 
 /// Latency of the diffusion models at the batch sizes the guidance rules use.

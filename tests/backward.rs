@@ -8,7 +8,6 @@ use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use dreamscene::splat::reference::Cutoffs;
 use dreamscene::splat::reference_grad::{self, Grad2d, Grads};
 use dreamscene::splat::Gaussians;
-use rand::Rng;
 
 fn camera(w: u32, h: u32) -> Camera {
     Camera::look_at(
@@ -61,16 +60,7 @@ fn run(ctx: &Context, bwd: &Backward, g: &Gaussians, cam: &Camera, bg: [f32; 3],
     let r = Rasterizer::new(ctx).unwrap();
     let mut rng = common::rng(seed);
     let np = (cam.width * cam.height) as usize;
-    let dl: Vec<[f32; 4]> = (0..np)
-        .map(|_| {
-            [
-                rng.gen_range(-1.0..1.0),
-                rng.gen_range(-1.0..1.0),
-                rng.gen_range(-1.0..1.0),
-                0.0,
-            ]
-        })
-        .collect();
+    let dl = dreamscene::bench::random_colour_gradient(&mut rng, np);
     let gg = GpuGaussians::upload(ctx, g).unwrap();
     let frame = r.forward(ctx, &gg, cam, bg).unwrap();
     let grads = GpuGrads::new(ctx, g.len() as u32, g.sh_degree).unwrap();

@@ -107,6 +107,20 @@ fn tempdir(tag: &str) -> std::path::PathBuf {
     d
 }
 
+/// Runs `dreamscene fit` on `<dir>/images` and `<dir>/cameras.json`, writing `<dir>/model.ply`.
+fn fit_cli(dir: &std::path::Path, extra: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(["fit", "--images"])
+        .arg(dir.join("images"))
+        .arg("--cameras")
+        .arg(dir.join("cameras.json"))
+        .arg("--out")
+        .arg(dir.join("model.ply"))
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
 /// `fit` refuses bad training data before touching the device: a missing image or one whose
 /// size differs from its camera gets one line naming the file.
 #[test]
@@ -118,16 +132,7 @@ fn fit_names_missing_or_mis_sized_images() {
     cam.img_name = "view0".into();
     write_cameras(&dir.join("cameras.json"), &[cam]).unwrap();
     let run = || {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-            .args(["fit", "--images"])
-            .arg(&images)
-            .arg("--cameras")
-            .arg(dir.join("cameras.json"))
-            .arg("--out")
-            .arg(dir.join("model.ply"))
-            .args(["--iterations", "1"])
-            .output()
-            .unwrap();
+        let out = fit_cli(&dir, &["--iterations", "1"]);
         assert!(!out.status.success());
         let err = String::from_utf8_lossy(&out.stderr).to_string();
         assert_eq!(err.trim().lines().count(), 1, "{err}");
@@ -180,19 +185,13 @@ fn fit_resumes_from_its_checkpoint() {
         cams.push(cam);
     }
     write_cameras(&dir.join("cameras.json"), &cams).unwrap();
-    let model = dir.join("model.ply");
     let run = |extra: &[&str]| {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-            .args(["fit", "--images"])
-            .arg(&images)
-            .arg("--cameras")
-            .arg(dir.join("cameras.json"))
-            .arg("--out")
-            .arg(&model)
-            .args(["--init-gaussians", "200", "--checkpoint-every", "2"])
-            .args(extra)
-            .output()
-            .unwrap();
+        let args = [
+            &["--init-gaussians", "200", "--checkpoint-every", "2"],
+            extra,
+        ]
+        .concat();
+        let out = fit_cli(&dir, &args);
         (
             out.status.success(),
             format!(

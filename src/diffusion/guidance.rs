@@ -61,11 +61,8 @@ pub const SCENE_FLOOR: MtsRange = MtsRange {
     jump: (150, 200),
     period: 700,
 };
-pub const SCENE_RECON: MtsRange = MtsRange {
-    stage: (140, 200),
-    jump: (75, 150),
-    period: 1,
-};
+/// The scene's reconstructive phase uses the object's ranges.
+pub const SCENE_RECON: MtsRange = OBJECT_RECON;
 
 /// Most timesteps the code's schedule samples.
 pub const MAX_POINTS: usize = 4;
