@@ -235,18 +235,27 @@ pub fn mts_gradient(
     let conds = [Cond::Positive, Cond::Negative, Cond::Null];
     let points = chain(pred, sched, z0, eps, s.t_start, ts, &conds)?;
     let n = ts.len().max(1) as f64;
-    let mut g = vec![0.0f32; z0.len()];
-    // The t_start point only drives the first inversion step.
-    for p in points.iter().skip(1) {
-        let w = weight(sched.alpha_bar(p.t as i64));
+    Ok(sum_over_chain(&points, sched, |p, w| {
         let (pos, neg, null) = (&p.preds[0], &p.preds[1], &p.preds[2]);
-        let term = match s.rule {
+        match s.rule {
             MtsRule::Paper => scaled_diff(pos, null, s.lambda * w),
             MtsRule::Code => scaled_diff(&cfg(neg, pos, s.guidance_scale), null, s.lambda * w / n),
-        };
-        add_into(&mut g, &term);
+        }
+    }))
+}
+
+/// Σ term(point, w(t)) over the sampled points of a chain (the t_start point only drives the
+/// first inversion step).
+fn sum_over_chain(
+    points: &[ChainPoint],
+    sched: &Schedule,
+    term: impl Fn(&ChainPoint, f64) -> Vec<f32>,
+) -> Vec<f32> {
+    let mut g = vec![0.0f32; points[0].x.len()];
+    for p in &points[1..] {
+        add_into(&mut g, &term(p, weight(sched.alpha_bar(p.t as i64))));
     }
-    Ok(g)
+    g
 }
 
 /// The pseudo-ground-truth latent of reconstructive generation: along the same chain, x̂₀ at the
@@ -279,15 +288,9 @@ pub fn edit_gradient(
     let conds = [Cond::Edit, Cond::Positive, Cond::Null];
     let points = chain(pred, sched, z0, eps, s.t_start, ts, &conds)?;
     let n = ts.len().max(1) as f64;
-    let mut g = vec![0.0f32; z0.len()];
-    for p in points.iter().skip(1) {
-        let w = weight(sched.alpha_bar(p.t as i64));
-        add_into(
-            &mut g,
-            &scaled_diff(&p.preds[0], &p.preds[1], s.lambda * w / n),
-        );
-    }
-    Ok(g)
+    Ok(sum_over_chain(&points, sched, |p, w| {
+        scaled_diff(&p.preds[0], &p.preds[1], s.lambda * w / n)
+    }))
 }
 
 /// Score distillation sampling: λ w(t)(ε_cfg(x_t) − ε) with x_t = noised z0.
