@@ -1,7 +1,14 @@
 #!/usr/bin/env bash
 # Installs what dreamscene needs on Debian/Ubuntu: the Vulkan loader, Mesa's lavapipe CPU device,
-# the Khronos validation layer (used by the tests) and glslang (compiles the kernels at build time).
+# the Khronos validation layer (used by the tests), glslang (compiles the kernels at build time)
+# and the ONNX Runtime library (runs the diffusion models; taken from the PyPI wheel).
 set -euo pipefail
+apt_install() {
+  local SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "$@"
+}
 pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools)
 missing=()
 for p in "${pkgs[@]}"; do
@@ -9,10 +16,7 @@ for p in "${pkgs[@]}"; do
 done
 if ((${#missing[@]})); then
   echo "installing: ${missing[*]}"
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  apt_install "${missing[@]}"
 fi
 command -v glslangValidator >/dev/null || { echo "glslangValidator still missing" >&2; exit 1; }
 
@@ -21,13 +25,16 @@ ORT_VERSION=1.31.1
 ORT_DIR="${XDG_DATA_HOME:-$HOME/.local/share}/dreamscene/onnxruntime"
 if [ ! -f "$ORT_DIR/libonnxruntime.so.$ORT_VERSION" ]; then
   echo "installing ONNX Runtime $ORT_VERSION into $ORT_DIR"
-  command -v python3 >/dev/null || { echo "python3 (with pip) is needed to fetch the onnxruntime wheel" >&2; exit 1; }
+  if ! python3 -m pip --version >/dev/null 2>&1; then
+    echo "installing python3-pip (to fetch the onnxruntime wheel)"
+    apt_install python3-pip
+  fi
   tmp="$(mktemp -d)"
   python3 -m pip download --quiet --no-deps --only-binary=:all: "onnxruntime==$ORT_VERSION" -d "$tmp"
   mkdir -p "$ORT_DIR"
-  python3 - "$tmp" "$ORT_DIR" "$ORT_VERSION" <<'PY'
+  python3 - "$tmp" "$ORT_DIR" <<'PY'
 import glob, os, sys, zipfile
-tmp, out, ver = sys.argv[1:]
+tmp, out = sys.argv[1:]
 wheel = glob.glob(os.path.join(tmp, "onnxruntime-*.whl"))[0]
 with zipfile.ZipFile(wheel) as z:
     for name in z.namelist():
