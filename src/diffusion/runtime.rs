@@ -6,7 +6,7 @@
 //! `onnxruntime` wheel), and beside the executable (`./` and `lib/`).
 use ort::ep::{ExecutionProvider as _, ExecutionProviderDispatch};
 use ort::session::{Session, SessionInputValue};
-use ort::value::{Tensor, TensorElementType, ValueType};
+use ort::value::{PrimitiveTensorElementType, Tensor, TensorElementType, ValueType};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -239,6 +239,14 @@ fn type_name(t: TensorElementType) -> &'static str {
     }
 }
 
+/// A host tensor of `shape` from `values`, as a session input.
+fn tensor<T: PrimitiveTensorElementType + std::fmt::Debug + Clone + 'static>(
+    shape: Vec<i64>,
+    values: impl Iterator<Item = T>,
+) -> ort::Result<SessionInputValue<'static>> {
+    Ok(Tensor::from_array((shape, values.collect::<Vec<T>>()))?.into())
+}
+
 /// One output tensor: its shape and its values as f32.
 pub type Output = (Vec<i64>, Vec<f32>);
 
@@ -349,53 +357,28 @@ impl OnnxModel {
             }
             let err = |e: ort::Error| format!("{shown}: input {:?}: {e}", p.name);
             let shape = shape.clone();
-            let v: SessionInputValue = match (data, p.ty) {
-                (Data::F32(d), TensorElementType::Float32) => {
-                    Tensor::from_array((shape, d.to_vec())).map_err(err)?.into()
+            // Every value the pipeline feeds (latents, timesteps, token ids < 2^24) is exact in
+            // f64; convert once to the element type the model declares.
+            let vals: Vec<f64> = match data {
+                Data::F32(d) => d.iter().map(|v| *v as f64).collect(),
+                Data::I64(d) => d.iter().map(|v| *v as f64).collect(),
+            };
+            let v = match p.ty {
+                TensorElementType::Float32 => tensor(shape, vals.iter().map(|v| *v as f32)),
+                TensorElementType::Float16 => {
+                    tensor(shape, vals.iter().map(|v| half::f16::from_f64(*v)))
                 }
-                (Data::F32(d), TensorElementType::Float16) => Tensor::from_array((
-                    shape,
-                    d.iter()
-                        .map(|v| half::f16::from_f32(*v))
-                        .collect::<Vec<_>>(),
-                ))
-                .map_err(err)?
-                .into(),
-                (Data::F32(d), TensorElementType::Int64) => Tensor::from_array((
-                    shape,
-                    d.iter().map(|v| v.round() as i64).collect::<Vec<_>>(),
-                ))
-                .map_err(err)?
-                .into(),
-                (Data::I64(d), TensorElementType::Int64) => {
-                    Tensor::from_array((shape, d.to_vec())).map_err(err)?.into()
-                }
-                (Data::I64(d), TensorElementType::Int32) => {
-                    Tensor::from_array((shape, d.iter().map(|v| *v as i32).collect::<Vec<_>>()))
-                        .map_err(err)?
-                        .into()
-                }
-                (Data::I64(d), TensorElementType::Float32) => {
-                    Tensor::from_array((shape, d.iter().map(|v| *v as f32).collect::<Vec<_>>()))
-                        .map_err(err)?
-                        .into()
-                }
-                (Data::I64(d), TensorElementType::Float16) => Tensor::from_array((
-                    shape,
-                    d.iter()
-                        .map(|v| half::f16::from_f32(*v as f32))
-                        .collect::<Vec<_>>(),
-                ))
-                .map_err(err)?
-                .into(),
-                (_, t) => {
+                TensorElementType::Int64 => tensor(shape, vals.iter().map(|v| v.round() as i64)),
+                TensorElementType::Int32 => tensor(shape, vals.iter().map(|v| v.round() as i32)),
+                t => {
                     return Err(format!(
-                        "{shown}: input {:?} is {}, which dreamscene cannot feed here",
+                        "{shown}: input {:?} is {}, which dreamscene cannot feed",
                         p.name,
                         type_name(t)
                     ))
                 }
-            };
+            }
+            .map_err(err)?;
             values.push((p.name.clone(), v));
         }
         let outputs = self
