@@ -10,8 +10,11 @@ const uint SORT_SCATTER_WG = 128u; // export
 const uint SORT_MIN_SUBGROUP = 8u; // export
 // Lane-serial variant for CPU devices (lavapipe): each invocation owns a contiguous chunk of
 // SORT_CHUNK keys and counts / scatters it sequentially with private counters, which keeps the
-// pass stable with no ballots, shared memory or barriers. Per invocation that is at most
-// 2 x SORT_SERIAL_RADIX + SORT_CHUNK loop iterations, far below lavapipe's 65,535. Digits are 8
+// pass stable with no ballots, shared memory or barriers. It reads keys and values four at a time
+// through uvec4 texel buffers: llvmpipe turns a texel fetch into one vector gather, where a
+// lane-varying storage-buffer load is a scalar loop over the lanes (measured: the count pass
+// 15.5 -> 3.5 ms for 4 x 1M keys, the scatter 48 -> 19 ms). Per invocation that is at most
+// 2 x SORT_SERIAL_RADIX + SORT_CHUNK / 4 loop iterations, far below lavapipe's 65,535. Digits are 8
 // bits wide: 11-bit digits (three passes) measured slower, as 2,048 streams per lane thrash the cache.
 const uint SORT_CHUNK = 8192u; // export
 const uint SORT_SERIAL_WG = 8u; // export

@@ -4,7 +4,7 @@ use super::error::{vk_err, GpuError, Result};
 use ash::vk;
 use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 use gpu_allocator::MemoryLocation;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// The word fresh device buffers hold in debug builds: a quiet NaN as f32, huge as u32.
 pub const GARBAGE: u32 = 0x7fc0_dead;
@@ -27,7 +27,11 @@ pub struct Buffer {
     pub(crate) raw: vk::Buffer,
     alloc: Option<Allocation>,
     size: u64,
+    /// Bytes actually allocated: `size` rounded up to 16.
+    alloc_size: u64,
     name: String,
+    /// The `R32G32B32A32_UINT` view used by texel-buffer bindings, made on first use.
+    view: Mutex<Option<vk::BufferView>>,
 }
 
 impl std::fmt::Debug for Buffer {
@@ -49,12 +53,14 @@ impl Buffer {
                 limit,
             });
         }
-        // Vulkan forbids empty buffers; an empty one still gets 16 bytes of backing.
-        let alloc_size = size.max(16).next_multiple_of(4);
+        // Vulkan forbids empty buffers; an empty one still gets 16 bytes of backing. Sizes are
+        // rounded up to 16 bytes so kernels may read whole `uvec4`s up to the end of the data.
+        let alloc_size = size.max(16).next_multiple_of(16);
         let info = vk::BufferCreateInfo::default()
             .size(alloc_size)
             .usage(
                 vk::BufferUsageFlags::STORAGE_BUFFER
+                    | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER
                     | vk::BufferUsageFlags::TRANSFER_SRC
                     | vk::BufferUsageFlags::TRANSFER_DST,
             )
@@ -118,7 +124,9 @@ impl Buffer {
             raw,
             alloc: Some(alloc),
             size,
+            alloc_size,
             name: name.to_string(),
+            view: Mutex::new(None),
         };
         if cfg!(debug_assertions) && usage == BufferUsage::Device {
             // Debug builds and tests fill fresh device buffers with a NaN pattern, so a kernel
@@ -160,6 +168,36 @@ impl Buffer {
         )?;
         b.write(&vec![0u8; len * std::mem::size_of::<T>()])?;
         Ok(b)
+    }
+
+    /// The buffer seen as `uvec4` texels (for `usamplerBuffer` bindings), created on first use
+    /// and destroyed with the buffer.
+    pub(crate) fn texel_view(&self) -> Result<vk::BufferView> {
+        let mut guard = self.view.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(v) = *guard {
+            return Ok(v);
+        }
+        let texels = self.alloc_size / 16;
+        let limit = self.shared.info.max_texel_buffer_elements as u64;
+        if texels > limit {
+            return Err(GpuError::Kernel {
+                kernel: "texel view".into(),
+                msg: format!(
+                    "buffer `{}` holds {texels} 16-byte texels; the device allows {limit} per view",
+                    self.name
+                ),
+            });
+        }
+        let info = vk::BufferViewCreateInfo::default()
+            .buffer(self.raw)
+            .format(vk::Format::R32G32B32A32_UINT)
+            .offset(0)
+            .range(vk::WHOLE_SIZE);
+        // SAFETY: the buffer is live and was created with UNIFORM_TEXEL_BUFFER usage.
+        let v = unsafe { self.shared.device.create_buffer_view(&info, None) }
+            .map_err(vk_err("vkCreateBufferView"))?;
+        *guard = Some(v);
+        Ok(v)
     }
 
     /// Size in bytes as requested.
@@ -273,8 +311,13 @@ impl Buffer {
 
 impl Drop for Buffer {
     fn drop(&mut self) {
-        // SAFETY: synchronous submission means the device no longer uses this buffer.
-        unsafe { self.shared.device.destroy_buffer(self.raw, None) };
+        // SAFETY: synchronous submission means the device no longer uses this buffer or its view.
+        unsafe {
+            if let Some(v) = self.view.lock().unwrap_or_else(|e| e.into_inner()).take() {
+                self.shared.device.destroy_buffer_view(v, None);
+            }
+            self.shared.device.destroy_buffer(self.raw, None)
+        };
         if let Some(a) = self.alloc.take() {
             if let Some(al) = self
                 .shared

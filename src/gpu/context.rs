@@ -18,6 +18,8 @@ pub struct DeviceInfo {
     /// Native `atomicAdd` on float storage buffers; without it the `_cas` kernel variants are used.
     pub float_atomics: bool,
     pub max_storage_buffer_range: u64,
+    /// Largest texel buffer view, in texels.
+    pub max_texel_buffer_elements: u32,
     pub max_shared_memory: u32,
     pub timestamp_period_ns: f32,
     pub validation: bool,
@@ -499,6 +501,7 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
         subgroup_size,
         float_atomics: af,
         max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
+        max_texel_buffer_elements: props.limits.max_texel_buffer_elements,
         max_shared_memory: props.limits.max_compute_shared_memory_size,
         timestamp_period_ns: if timestamps {
             props.limits.timestamp_period

@@ -14,6 +14,25 @@ pub struct KernelSource {
     pub push_size: u32,
 }
 
+/// How a binding is declared in GLSL.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum BindingKind {
+    /// `buffer name_block { T data[]; } name;`
+    Storage,
+    /// `uniform usamplerBuffer name;`, read with `texelFetch` as `uvec4` texels. On lavapipe a
+    /// texel fetch is a vector gather, several times cheaper than a lane-varying storage load.
+    Texels,
+}
+
+impl BindingKind {
+    pub(crate) fn descriptor_type(self) -> vk::DescriptorType {
+        match self {
+            BindingKind::Storage => vk::DescriptorType::STORAGE_BUFFER,
+            BindingKind::Texels => vk::DescriptorType::UNIFORM_TEXEL_BUFFER,
+        }
+    }
+}
+
 /// A compute pipeline with its reflected bindings. Specialization constant 0 is the workgroup size
 /// (`layout(local_size_x_id = 0) in;`), chosen once on the Rust side.
 pub struct Kernel {
@@ -22,8 +41,8 @@ pub struct Kernel {
     pub(crate) pipeline: vk::Pipeline,
     pub(crate) layout: vk::PipelineLayout,
     set_layout: vk::DescriptorSetLayout,
-    /// (name, binding) of every storage buffer, in binding order.
-    pub(crate) bindings: Vec<(String, u32)>,
+    /// (name, binding, kind) of every buffer, in binding order.
+    pub(crate) bindings: Vec<(String, u32, BindingKind)>,
     pub(crate) push_size: u32,
     pub(crate) workgroup_size: u32,
 }
@@ -51,17 +70,21 @@ impl Kernel {
             }
             for (binding, info) in binds {
                 let ty = vk::DescriptorType::from_raw(info.ty.0 as i32);
-                if ty != vk::DescriptorType::STORAGE_BUFFER {
-                    return Err(kerr(format!(
-                        "binding {binding} is {ty:?}; only storage buffers are supported"
-                    )));
-                }
+                let kind = match ty {
+                    vk::DescriptorType::STORAGE_BUFFER => BindingKind::Storage,
+                    vk::DescriptorType::UNIFORM_TEXEL_BUFFER => BindingKind::Texels,
+                    _ => {
+                        return Err(kerr(format!(
+                            "binding {binding} is {ty:?}; only storage buffers and uniform texel buffers are supported"
+                        )))
+                    }
+                };
                 if info.name.is_empty() {
                     return Err(kerr(format!(
                         "binding {binding} has no instance name; declare `buffer T {{..}} name;`"
                     )));
                 }
-                bindings.push((info.name.clone(), *binding));
+                bindings.push((info.name.clone(), *binding, kind));
                 vk_bindings.push(
                     vk::DescriptorSetLayoutBinding::default()
                         .binding(*binding)

@@ -3,7 +3,7 @@
 use super::buffer::Buffer;
 use super::context::{Context, Shared};
 use super::error::{vk_err, GpuError, Result};
-use super::kernel::Kernel;
+use super::kernel::{BindingKind, Kernel};
 use ash::vk;
 use std::sync::Arc;
 
@@ -196,7 +196,8 @@ impl Stream {
             return Err(kerr(format!("binds {got:?}, the kernel declares {want:?}")));
         }
         let mut infos = Vec::with_capacity(buffers.len());
-        for (name, _) in &kernel.bindings {
+        let mut views = Vec::with_capacity(buffers.len());
+        for (name, _, kind) in &kernel.bindings {
             let buf = buffers
                 .iter()
                 .find(|b| b.0 == name)
@@ -207,16 +208,23 @@ impl Stream {
                 offset: 0,
                 range: vk::WHOLE_SIZE,
             });
+            views.push(match kind {
+                BindingKind::Storage => vk::BufferView::null(),
+                BindingKind::Texels => buf.texel_view()?,
+            });
         }
         let writes: Vec<vk::WriteDescriptorSet> = kernel
             .bindings
             .iter()
-            .zip(&infos)
-            .map(|((_, binding), info)| {
-                vk::WriteDescriptorSet::default()
+            .zip(infos.iter().zip(&views))
+            .map(|((_, binding, kind), (info, view))| {
+                let w = vk::WriteDescriptorSet::default()
                     .dst_binding(*binding)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(std::slice::from_ref(info))
+                    .descriptor_type(kind.descriptor_type());
+                match kind {
+                    BindingKind::Storage => w.buffer_info(std::slice::from_ref(info)),
+                    BindingKind::Texels => w.texel_buffer_view(std::slice::from_ref(view)),
+                }
             })
             .collect();
         if groups.contains(&0) {
