@@ -8,8 +8,10 @@
 #include "common.glsl"
 #include "raster.glsl"
 
-BUF_RO(0, vec4, proj);
-BUF_RO(1, uint, isect_ids);
+// Read through uvec4 texel buffers: on lavapipe a texel fetch is one vector gather, where a
+// lane-varying storage-buffer load is a scalar loop over the lanes.
+layout(binding = 0) uniform usamplerBuffer proj;       // PROJ_STRIDE / 4 texels per splat
+layout(binding = 1) uniform usamplerBuffer isect_ids;  // four ids per texel
 BUF_RO(2, uvec2, ranges);
 BUF_RW(3, vec4, color);    // rgb without background, T
 BUF_RW(4, float, depth);   // sum z * alpha * T
@@ -47,8 +49,10 @@ void main() {
         if (subgroupAll(done)) break;
         vec4 p0 = vec4(0.0), p1 = vec4(0.0), p2 = vec4(0.0);
         if (b + lane < n) {
-            uint g = isect_ids.data[begin + b + lane];
-            p0 = proj.data[3u * g]; p1 = proj.data[3u * g + 1u]; p2 = proj.data[3u * g + 2u];
+            uint g = fetch_u32(isect_ids, begin + b + lane);
+            p0 = uintBitsToFloat(texelFetch(proj, int(3u * g)));
+            p1 = uintBitsToFloat(texelFetch(proj, int(3u * g + 1u)));
+            p2 = uintBitsToFloat(texelFetch(proj, int(3u * g + 2u)));
         }
         uint cnt = min(sg, n - b);
         for (uint j = 0u; j < cnt; j++) {

@@ -13,8 +13,10 @@
 #include "common.glsl"
 #include "raster.glsl"
 
-BUF_RO(0, vec4, proj);
-BUF_RO(1, uint, isect_ids);
+// Read through uvec4 texel buffers: on lavapipe a texel fetch is one vector gather, where a
+// lane-varying storage-buffer load is a scalar loop over the lanes.
+layout(binding = 0) uniform usamplerBuffer proj;       // PROJ_STRIDE / 4 texels per splat
+layout(binding = 1) uniform usamplerBuffer isect_ids;  // four ids per texel
 BUF_RO(2, uvec2, ranges);
 BUF_RO(3, vec4, color);       // forward: rgb without background, final T
 BUF_RO(4, uint, last);        // forward: one past the last contributor; bit 31 = done
@@ -57,8 +59,10 @@ void main() {
         vec4 p0 = vec4(0.0), p1 = vec4(0.0), p2 = vec4(0.0);
         uint gid = 0u;
         if (b + lane < n) {
-            gid = isect_ids.data[begin + b + lane];
-            p0 = proj.data[3u * gid]; p1 = proj.data[3u * gid + 1u]; p2 = proj.data[3u * gid + 2u];
+            gid = fetch_u32(isect_ids, begin + b + lane);
+            p0 = uintBitsToFloat(texelFetch(proj, int(3u * gid)));
+            p1 = uintBitsToFloat(texelFetch(proj, int(3u * gid + 1u)));
+            p2 = uintBitsToFloat(texelFetch(proj, int(3u * gid + 2u)));
         }
         uint cnt = min(sg, n - b);
         for (uint j = 0u; j < cnt; j++) {

@@ -27,3 +27,6 @@ layout(local_size_x_id = 0) in;
 
 // Dispatches wider than 65,535 workgroups are folded into y (see gpu::groups_for).
 uint group_linear() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }
+
+// Word i of a buffer bound as a uvec4 texel buffer (`uniform usamplerBuffer`).
+uint fetch_u32(usamplerBuffer buf, uint i) { return texelFetch(buf, int(i >> 2u))[i & 3u]; }
