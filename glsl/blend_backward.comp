@@ -7,9 +7,10 @@
 // included) and C_j the colour up to and including splat j,
 //     dC/dalpha_j = T_j c_j - (C_full - C_j) / (1 - alpha_j).
 // A splat's nine screen-space gradients are summed over the subgroup's pixels (subgroupAdd) and
-// added to its per-Gaussian slot with one float atomic per value. Running colour and T carry over
-// to the next segment through `state`. Segments are SEGMENT splats long, or SEGMENT_CAS where
-// atomics are compare-and-swap loops, whose iterations count against lavapipe's loop limit too.
+// added to its per-Gaussian slot with one float atomic per value, spread over the first 8 lanes.
+// Running colour and T carry over to the next segment through `state`. Segments are SEGMENT
+// splats long, or SEGMENT_CAS where atomics are compare-and-swap loops, whose iterations count
+// against lavapipe's loop limit too.
 #include "common.glsl"
 #include "raster.glsl"
 
@@ -105,8 +106,15 @@ void main() {
                 vec4 s0 = subgroupAdd(v0);
                 vec4 s1 = subgroupAdd(v1);
                 float s2 = subgroupAdd(v2);
-                if (subgroupElect()) {
-                    uint o = 9u * g;
+                uint o = 9u * g;
+                if (MIN_SUBGROUP_SIZE >= 8u) {
+                    // Lane k adds value k (lane 0 also the ninth): two atomics per lane instead of
+                    // nine from one elected lane; on lavapipe that is 2 lane loops instead of 9.
+                    float mine = lane == 0u ? s0.x : lane == 1u ? s0.y : lane == 2u ? s0.z : lane == 3u ? s0.w
+                               : lane == 4u ? s1.x : lane == 5u ? s1.y : lane == 6u ? s1.z : s1.w;
+                    if (lane < 8u) FLOAT_ATOMIC_ADD(grad2d, o + lane, mine);
+                    if (lane == 0u) FLOAT_ATOMIC_ADD(grad2d, o + 8u, s2);
+                } else if (subgroupElect()) {
                     FLOAT_ATOMIC_ADD(grad2d, o, s0.x);
                     FLOAT_ATOMIC_ADD(grad2d, o + 1u, s0.y);
                     FLOAT_ATOMIC_ADD(grad2d, o + 2u, s0.z);

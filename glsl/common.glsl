@@ -20,6 +20,9 @@
 #endif
 
 layout(local_size_x_id = 0) in;
+// The smallest subgroup size the device may use (specialization constant 1, set from Rust), so
+// subgroup-size-dependent paths are chosen when the pipeline is built rather than per invocation.
+layout(constant_id = 1) const uint MIN_SUBGROUP_SIZE = 1u;
 
 // Storage buffers are declared with an instance name: the host binds them by that name.
 #define BUF_RO(b, T, name) layout(std430, binding = b) readonly buffer name##_block { T data[]; } name

@@ -15,6 +15,9 @@ pub struct DeviceInfo {
     pub api_version: String,
     pub driver: String,
     pub subgroup_size: u32,
+    /// Smallest subgroup a kernel may run with (subgroup size control, Vulkan 1.3), else
+    /// `subgroup_size`; kernels see it as specialization constant 1.
+    pub min_subgroup_size: u32,
     /// Native `atomicAdd` on float storage buffers; without it the `_cas` kernel variants are used.
     pub float_atomics: bool,
     pub max_storage_buffer_range: u64,
@@ -151,18 +154,35 @@ impl Context {
     /// The Khronos validation layer is on in debug builds and tests (`DREAMSCENE_VALIDATION=0/1`
     /// overrides); if it is wanted but not installed this fails when `DREAMSCENE_REQUIRE_VALIDATION=1`.
     pub fn new() -> Result<Self> {
+        Self::open(None)
+    }
+
+    /// As [`Context::new`], but kernels are built for subgroups as small as `n` (never larger than
+    /// the device's own minimum): tests use it to run the general paths that devices with small
+    /// subgroups take.
+    pub fn with_min_subgroup_size(n: u32) -> Result<Self> {
+        Self::open(Some(n))
+    }
+
+    fn open(min_subgroup: Option<u32>) -> Result<Self> {
         let want_validation = env_flag("DREAMSCENE_VALIDATION").unwrap_or(cfg!(debug_assertions));
         let require_validation = env_flag("DREAMSCENE_REQUIRE_VALIDATION").unwrap_or(false);
         let selector = std::env::var("DREAMSCENE_DEVICE")
             .ok()
             .filter(|s| !s.trim().is_empty());
-        Self::create(want_validation, require_validation, selector.as_deref())
+        Self::create(
+            want_validation,
+            require_validation,
+            selector.as_deref(),
+            min_subgroup,
+        )
     }
 
     fn create(
         want_validation: bool,
         require_validation: bool,
         selector: Option<&str>,
+        min_subgroup: Option<u32>,
     ) -> Result<Self> {
         // SAFETY: loading the system Vulkan loader.
         let entry = unsafe { ash::Entry::load() }.map_err(|e| GpuError::Loader(e.to_string()))?;
@@ -261,6 +281,9 @@ impl Context {
                 let mut info = info;
                 debug_assert_eq!(info.float_atomics, float_atomics);
                 info.validation = validation;
+                if let Some(n) = min_subgroup {
+                    info.min_subgroup_size = info.min_subgroup_size.min(n.max(1));
+                }
                 let shared = Shared {
                     _entry: entry,
                     instance,
@@ -390,11 +413,24 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
     let (props, sg, exts, qfams, af) = unsafe {
         let mut sg = vk::PhysicalDeviceSubgroupProperties::default();
         let mut drv = vk::PhysicalDeviceDriverProperties::default();
+        let mut ssc = vk::PhysicalDeviceSubgroupSizeControlProperties::default();
+        let api = instance
+            .get_physical_device_properties(physical)
+            .api_version;
+        let has_ssc = vk::api_version_major(api) > 1 || vk::api_version_minor(api) >= 3;
         let mut p2 = vk::PhysicalDeviceProperties2::default()
             .push_next(&mut sg)
             .push_next(&mut drv);
+        if has_ssc {
+            p2 = p2.push_next(&mut ssc);
+        }
         instance.get_physical_device_properties2(physical, &mut p2);
         let props = p2.properties;
+        let min_sg = if has_ssc && ssc.min_subgroup_size > 0 {
+            ssc.min_subgroup_size.min(sg.subgroup_size)
+        } else {
+            sg.subgroup_size
+        };
         let exts = instance
             .enumerate_device_extension_properties(physical)
             .map_err(vk_err("vkEnumerateDeviceExtensionProperties"))?;
@@ -410,7 +446,7 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
         }
         let af_ok = has_af && af.shader_buffer_float32_atomic_add == vk::TRUE;
         let sg_copy = (
-            sg.subgroup_size,
+            (sg.subgroup_size, min_sg),
             sg.supported_stages,
             sg.supported_operations,
         );
@@ -420,7 +456,7 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
             .unwrap_or_default();
         (props, (sg_copy, drv_name), exts, qfams, af_ok)
     };
-    let ((subgroup_size, sg_stages, sg_ops), driver) = sg;
+    let (((subgroup_size, min_subgroup_size), sg_stages, sg_ops), driver) = sg;
     let name = props
         .device_name_as_c_str()
         .map(|c| c.to_string_lossy().into_owned())
@@ -499,6 +535,7 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
         ),
         driver,
         subgroup_size,
+        min_subgroup_size,
         float_atomics: af,
         max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
         max_texel_buffer_elements: props.limits.max_texel_buffer_elements,

@@ -34,7 +34,8 @@ impl BindingKind {
 }
 
 /// A compute pipeline with its reflected bindings. Specialization constant 0 is the workgroup size
-/// (`layout(local_size_x_id = 0) in;`), chosen once on the Rust side.
+/// (`layout(local_size_x_id = 0) in;`), chosen once on the Rust side; constant 1 is the device's
+/// smallest subgroup size (`MIN_SUBGROUP_SIZE` in common.glsl).
 pub struct Kernel {
     shared: Arc<Shared>,
     pub(crate) name: &'static str,
@@ -121,12 +122,22 @@ impl Kernel {
             let module = dev
                 .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None)
                 .map_err(vk_err("vkCreateShaderModule"))?;
-            let map = [vk::SpecializationMapEntry {
-                constant_id: 0,
-                offset: 0,
-                size: 4,
-            }];
-            let data = workgroup_size.to_ne_bytes();
+            let map = [
+                vk::SpecializationMapEntry {
+                    constant_id: 0,
+                    offset: 0,
+                    size: 4,
+                },
+                vk::SpecializationMapEntry {
+                    constant_id: 1,
+                    offset: 4,
+                    size: 4,
+                },
+            ];
+            let data: Vec<u8> = [workgroup_size, shared.info.min_subgroup_size]
+                .iter()
+                .flat_map(|v| v.to_ne_bytes())
+                .collect();
             let spec = vk::SpecializationInfo::default()
                 .map_entries(&map)
                 .data(&data);
