@@ -15,7 +15,7 @@ pub struct DeviceInfo {
     pub api_version: String,
     pub driver: String,
     pub subgroup_size: u32,
-    /// Smallest subgroup a kernel may run with (subgroup size control, Vulkan 1.3), else
+    /// Smallest subgroup a kernel may run with (VK_EXT_subgroup_size_control), else
     /// `subgroup_size`; kernels see it as specialization constant 1.
     pub min_subgroup_size: u32,
     /// Native `atomicAdd` on float storage buffers; without it the `_cas` kernel variants are used.
@@ -414,10 +414,15 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
         let mut sg = vk::PhysicalDeviceSubgroupProperties::default();
         let mut drv = vk::PhysicalDeviceDriverProperties::default();
         let mut ssc = vk::PhysicalDeviceSubgroupSizeControlProperties::default();
-        let api = instance
-            .get_physical_device_properties(physical)
-            .api_version;
-        let has_ssc = vk::api_version_major(api) > 1 || vk::api_version_minor(api) >= 3;
+        let exts = instance
+            .enumerate_device_extension_properties(physical)
+            .map_err(vk_err("vkEnumerateDeviceExtensionProperties"))?;
+        // Queried through the extension (the instance asks for Vulkan 1.2, so 1.3 core
+        // structures are off limits); without it, subgroupSize is the only size.
+        let has_ssc = exts.iter().any(|e| {
+            e.extension_name_as_c_str()
+                .is_ok_and(|n| n == ash::ext::subgroup_size_control::NAME)
+        });
         let mut p2 = vk::PhysicalDeviceProperties2::default()
             .push_next(&mut sg)
             .push_next(&mut drv);
@@ -431,9 +436,6 @@ fn open_device(instance: ash::Instance, physical: vk::PhysicalDevice) -> Result<
         } else {
             sg.subgroup_size
         };
-        let exts = instance
-            .enumerate_device_extension_properties(physical)
-            .map_err(vk_err("vkEnumerateDeviceExtensionProperties"))?;
         let qfams = instance.get_physical_device_queue_family_properties(physical);
         let has_af = exts.iter().any(|e| {
             e.extension_name_as_c_str()
