@@ -3,7 +3,8 @@
 //! naga's GLSL front end cannot compile these kernels (no atomics, subgroups or 64-bit ints), so the
 //! `glslangValidator` binary (Debian `glslang-tools`) is used; `GLSLANG_VALIDATOR` overrides its path.
 //! Kernels that contain `FLOAT_ATOMIC_ADD` are compiled a second time with `-DCAS_ATOMICS` for devices
-//! without `shaderBufferFloat32AtomicAdd`. The generated `kernels.rs` holds, per kernel, the SPIR-V
+//! without `shaderBufferFloat32AtomicAdd`, and kernels that mention `WIDE_PIXELS` once more with
+//! `-DWIDE_PIXELS` (several pixels per invocation, for CPU devices). The generated `kernels.rs` holds, per kernel, the SPIR-V
 //! bytes and the push-constant size read back by reflection, so the Rust structs can be checked
 //! against the GLSL at compile time.
 use std::{
@@ -53,17 +54,36 @@ fn main() {
             .expect("utf-8 kernel name")
             .to_string();
         let text = fs::read_to_string(src).expect("readable kernel source");
-        jobs.push(Job {
-            name: stem.clone(),
-            src: src.clone(),
-            defines: vec![],
-        });
-        if text.contains("FLOAT_ATOMIC_ADD") {
-            jobs.push(Job {
-                name: format!("{stem}_cas"),
-                src: src.clone(),
-                defines: vec!["CAS_ATOMICS"],
-            });
+        // Variants: `_cas` (compare-and-swap float atomics) for kernels using FLOAT_ATOMIC_ADD,
+        // `_wide` (BLEND_PIXELS pixels per invocation, for CPU devices) for the blend kernels.
+        let cas: &[bool] = if text.contains("FLOAT_ATOMIC_ADD") {
+            &[false, true]
+        } else {
+            &[false]
+        };
+        let wide: &[bool] = if text.contains("WIDE_PIXELS") {
+            &[false, true]
+        } else {
+            &[false]
+        };
+        for &c in cas {
+            for &w in wide {
+                let mut name = stem.clone();
+                let mut defines = vec![];
+                if c {
+                    name.push_str("_cas");
+                    defines.push("CAS_ATOMICS");
+                }
+                if w {
+                    name.push_str("_wide");
+                    defines.push("WIDE_PIXELS");
+                }
+                jobs.push(Job {
+                    name,
+                    src: src.clone(),
+                    defines,
+                });
+            }
         }
     }
 

@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Backward of the alpha blend for one segment (seg_len splats) of every tile's list: one
-// workgroup per 16x16 tile, one pixel per invocation, splats broadcast by subgroupShuffle as in
-// the forward. Each pixel walks front to back again (same decisions as the forward, bounded by
+// workgroup per 16x16 tile, PIXELS_PER_INVOCATION pixels per invocation, splats broadcast by
+// subgroupShuffle as in the forward. Each pixel walks front to back again (same decisions as the forward, bounded by
 // its last contributor) and needs no division by T: with C_full the final colour (background
 // included) and C_j the colour up to and including splat j,
 //     dC/dalpha_j = T_j c_j - (C_full - C_j) / (1 - alpha_j).
@@ -11,6 +11,7 @@
 // Running colour and T carry over to the next segment through `state`. Segments are SEGMENT
 // splats long, or SEGMENT_CAS where atomics are compare-and-swap loops, whose iterations count
 // against lavapipe's loop limit too.
+#extension GL_EXT_control_flow_attributes : require
 #include "common.glsl"
 #include "raster.glsl"
 
@@ -27,36 +28,47 @@ BUF_RW(7, ATOMIC_FLOAT, grad2d); // per Gaussian: d xy (2), d conic (3), d opaci
 layout(push_constant) uniform Push { uint width; uint height; uint tiles_x; uint seg_begin; uint seg_len; uint first;
                                      float bg_r; float bg_g; float bg_b; } pc;
 
+const uint K = PIXELS_PER_INVOCATION;  // 1, or BLEND_PIXELS when built with WIDE_PIXELS
+const uint STRIDE = TILE * TILE / K;
+
 void main() {
     uint tile = group_linear();
     uint t = gl_LocalInvocationID.x;
     uint tx = tile % pc.tiles_x, ty = tile / pc.tiles_x;
-    uint px = tx * TILE + (t % TILE), py = ty * TILE + (t / TILE);
-    bool inside = px < pc.width && py < pc.height;
-    uint pix = py * pc.width + px;
-    vec2 pf = vec2(px, py) + 0.5;
-
-    vec3 full = vec3(0.0), gc = vec3(0.0), run = vec3(0.0);
-    float T = 1.0;
-    uint lastc = 0u;
-    if (inside) {
-        vec4 c = color.data[pix];
-        full = c.rgb + c.a * vec3(pc.bg_r, pc.bg_g, pc.bg_b);
-        gc = grad_color.data[pix].rgb;
-        lastc = last.data[pix] & 0x7fffffffu;
-        if (pc.first == 0u) { vec4 s = state.data[pix]; run = s.rgb; T = s.a; }
-    }
     uvec2 range = ranges.data[tile];
     uint begin = range.x + pc.seg_begin;
     uint end = min(range.y, begin + pc.seg_len);
     uint n = begin < end ? end - begin : 0u;
     // Tile-relative index of this segment's first splat; pixels are done past their last contributor.
     uint rel0 = pc.seg_begin;
-    bool done = !inside || rel0 >= lastc;
+
+    vec3 full[K], gc[K], run[K];
+    float T[K];
+    uint lastc[K], pix[K];
+    bool done[K], inside[K];
+    vec2 pf[K];
+    [[unroll]] for (uint k = 0u; k < K; k++) {
+        uint l = t + k * STRIDE;
+        uint px = tx * TILE + (l % TILE), py = ty * TILE + (l / TILE);
+        inside[k] = px < pc.width && py < pc.height;
+        pix[k] = py * pc.width + px;
+        pf[k] = vec2(px, py) + 0.5;
+        full[k] = vec3(0.0); gc[k] = vec3(0.0); run[k] = vec3(0.0); T[k] = 1.0; lastc[k] = 0u;
+        if (inside[k]) {
+            vec4 c = color.data[pix[k]];
+            full[k] = c.rgb + c.a * vec3(pc.bg_r, pc.bg_g, pc.bg_b);
+            gc[k] = grad_color.data[pix[k]].rgb;
+            lastc[k] = last.data[pix[k]] & 0x7fffffffu;
+            if (pc.first == 0u) { vec4 st = state.data[pix[k]]; run[k] = st.rgb; T[k] = st.a; }
+        }
+        done[k] = !inside[k] || rel0 >= lastc[k];
+    }
     uint sg = gl_SubgroupSize;
     uint lane = gl_SubgroupInvocationID;
     for (uint b = 0u; b < n; b += sg) {
-        if (subgroupAll(done)) break;
+        bool all_done = true;
+        [[unroll]] for (uint k = 0u; k < K; k++) all_done = all_done && done[k];
+        if (subgroupAll(all_done)) break;
         vec4 p0 = vec4(0.0), p1 = vec4(0.0), p2 = vec4(0.0);
         uint gid = 0u;
         if (b + lane < n) {
@@ -71,34 +83,37 @@ void main() {
             vec4 q1 = subgroupShuffle(p1, j);
             vec3 q2 = subgroupShuffle(p2.xyz, j);
             uint g = subgroupShuffle(gid, j);
-            if (!done && rel0 + b + j >= lastc) done = true;
+            // This invocation's pixels' gradients with respect to the splat, summed.
             vec4 v0 = vec4(0.0), v1 = vec4(0.0);
             float v2 = 0.0;
             bool contrib = false;
-            if (!done) {
-                vec2 d = q0.xy - pf;
-                float power = -0.5 * (q1.x * d.x * d.x + q1.z * d.y * d.y) - q1.y * d.x * d.y;
-                float gauss = exp(power);
-                float raw = q0.w * gauss;
-                float alpha = min(ALPHA_MAX, raw);
-                float nextT = T * (1.0 - alpha);
-                if (power <= 0.0 && alpha >= ALPHA_MIN) {
-                    if (nextT < T_MIN) {
-                        done = true;
-                    } else {
-                        contrib = true;
-                        float w = alpha * T;
-                        run += q2 * w;
-                        vec3 behind = (full - run) / (1.0 - alpha);
-                        float dalpha = dot(gc, q2 * T - behind);
-                        vec3 grgb = gc * w;
-                        float dopa = 0.0, dpow = 0.0;
-                        if (raw <= ALPHA_MAX) { dopa = dalpha * gauss; dpow = dalpha * alpha; }
-                        vec2 dxy = -dpow * vec2(q1.x * d.x + q1.y * d.y, q1.z * d.y + q1.y * d.x);
-                        v0 = vec4(dxy, -0.5 * dpow * d.x * d.x, -dpow * d.x * d.y);
-                        v1 = vec4(-0.5 * dpow * d.y * d.y, dopa, grgb.rg);
-                        v2 = grgb.b;
-                        T = nextT;
+            [[unroll]] for (uint k = 0u; k < K; k++) {
+                if (!done[k] && rel0 + b + j >= lastc[k]) done[k] = true;
+                if (!done[k]) {
+                    vec2 d = q0.xy - pf[k];
+                    float power = -0.5 * (q1.x * d.x * d.x + q1.z * d.y * d.y) - q1.y * d.x * d.y;
+                    float gauss = exp(power);
+                    float raw = q0.w * gauss;
+                    float alpha = min(ALPHA_MAX, raw);
+                    float nextT = T[k] * (1.0 - alpha);
+                    if (power <= 0.0 && alpha >= ALPHA_MIN) {
+                        if (nextT < T_MIN) {
+                            done[k] = true;
+                        } else {
+                            contrib = true;
+                            float w = alpha * T[k];
+                            run[k] += q2 * w;
+                            vec3 behind = (full[k] - run[k]) / (1.0 - alpha);
+                            float dalpha = dot(gc[k], q2 * T[k] - behind);
+                            vec3 grgb = gc[k] * w;
+                            float dopa = 0.0, dpow = 0.0;
+                            if (raw <= ALPHA_MAX) { dopa = dalpha * gauss; dpow = dalpha * alpha; }
+                            vec2 dxy = -dpow * vec2(q1.x * d.x + q1.y * d.y, q1.z * d.y + q1.y * d.x);
+                            v0 += vec4(dxy, -0.5 * dpow * d.x * d.x, -dpow * d.x * d.y);
+                            v1 += vec4(-0.5 * dpow * d.y * d.y, dopa, grgb.rg);
+                            v2 += grgb.b;
+                            T[k] = nextT;
+                        }
                     }
                 }
             }
@@ -128,5 +143,7 @@ void main() {
             }
         }
     }
-    if (inside) state.data[pix] = vec4(run, T);
+    [[unroll]] for (uint k = 0u; k < K; k++) {
+        if (inside[k]) state.data[pix[k]] = vec4(run[k], T[k]);
+    }
 }

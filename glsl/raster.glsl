@@ -8,6 +8,16 @@ const float T_MIN = 0.0001; // export
 // Tiles are kept when the splat's power at the nearest pixel centre is within its alpha cutoff
 // plus this margin, so f32 rounding never drops a tile that a pixel would use.
 const float CULL_MARGIN = 0.01; // export
+// Pixels each invocation of the `_wide` blend kernels handles (a workgroup is then
+// TILE * TILE / BLEND_PIXELS invocations). On lavapipe every splat broadcast and every subgroup
+// reduction is a loop over the lanes, so sharing them among 8 pixels makes the forward blend
+// 1.8x and its backward 2.3x faster; GPUs keep one pixel per invocation for occupancy.
+const uint BLEND_PIXELS = 8u; // export
+#ifdef WIDE_PIXELS
+const uint PIXELS_PER_INVOCATION = BLEND_PIXELS;
+#else
+const uint PIXELS_PER_INVOCATION = 1u;
+#endif
 // Splats of one tile blended per dispatch: lavapipe cuts every invocation after 65,535 loop
 // iterations, and the blend loop makes about SEGMENT * (1 + 1/subgroup) of them.
 const uint SEGMENT = 16384u; // export

@@ -4,7 +4,7 @@ mod common;
 use dreamscene::camera::Camera;
 use dreamscene::gpu::{Buffer, Context};
 use dreamscene::splat::backward::{Backward, GpuGrads, HostGrads};
-use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
+use dreamscene::splat::raster::{BlendWidth, GpuGaussians, Rasterizer};
 use dreamscene::splat::reference::Cutoffs;
 use dreamscene::splat::reference_grad::{self, Grad2d, Grads};
 use dreamscene::splat::Gaussians;
@@ -142,33 +142,41 @@ fn assert_mostly_nonzero(run: &Run, what: &str) {
 #[test]
 fn backward_matches_reference_on_random_scenes_all_sh_degrees() {
     let ctx = common::gpu();
-    let bwd = Backward::new(&ctx, false).unwrap();
-    let mut rng = common::rng(50);
-    for (deg, (w, h), n) in [
-        (0u32, (64u32, 48u32), 300usize),
-        (1, (77, 50), 400),
-        (2, (90, 70), 500),
-        (3, (45, 61), 300),
-    ] {
-        let g = Gaussians::random(&mut rng, n, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, deg);
-        let cam = camera(w, h);
-        let r = run(&ctx, &bwd, &g, &cam, [0.2, 0.5, 0.9], 60 + deg as u64);
-        let what = format!("degree {deg}, {w}x{h}");
-        check(&r, &cam, &what, 1e-3);
-        assert_mostly_nonzero(&r, &what);
+    // One pixel per invocation (GPUs) and several (the `_wide` kernels CPU devices use).
+    for width in WIDTHS {
+        let bwd = Backward::with_width(&ctx, false, width).unwrap();
+        let mut rng = common::rng(50);
+        for (deg, (w, h), n) in [
+            (0u32, (64u32, 48u32), 300usize),
+            (1, (77, 50), 400),
+            (2, (90, 70), 500),
+            (3, (45, 61), 300),
+        ] {
+            let g = Gaussians::random(&mut rng, n, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, deg);
+            let cam = camera(w, h);
+            let r = run(&ctx, &bwd, &g, &cam, [0.2, 0.5, 0.9], 60 + deg as u64);
+            let what = format!("{width:?}: degree {deg}, {w}x{h}");
+            check(&r, &cam, &what, 1e-3);
+            assert_mostly_nonzero(&r, &what);
+        }
     }
 }
+
+const WIDTHS: [BlendWidth; 2] = [BlendWidth::One, BlendWidth::Wide];
 
 #[test]
 fn backward_with_cas_atomics_matches_reference() {
     let ctx = common::gpu();
-    let bwd = Backward::new(&ctx, true).unwrap();
     let mut rng = common::rng(51);
     let g = Gaussians::random(&mut rng, 400, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, 1);
     let cam = camera(70, 52);
-    let r = run(&ctx, &bwd, &g, &cam, [0.0, 0.0, 0.0], 61);
-    check(&r, &cam, "CAS atomics", 1e-3);
-    assert_mostly_nonzero(&r, "CAS atomics");
+    for width in WIDTHS {
+        let bwd = Backward::with_width(&ctx, true, width).unwrap();
+        let r = run(&ctx, &bwd, &g, &cam, [0.0, 0.0, 0.0], 61);
+        let what = format!("{width:?}: CAS atomics");
+        check(&r, &cam, &what, 1e-3);
+        assert_mostly_nonzero(&r, &what);
+    }
 }
 
 /// The 100,000-splat tile of `common::crowded_tile`: the large splats behind the crowd are
@@ -178,10 +186,16 @@ fn backward_with_cas_atomics_matches_reference() {
 fn tile_with_100k_splats_differentiates_past_the_loop_limit() {
     let ctx = common::gpu();
     let (g, cam) = common::crowded_tile();
-    for cas in [false, true] {
-        let bwd = Backward::new(&ctx, cas).unwrap();
+    for (cas, width) in [false, true]
+        .into_iter()
+        .flat_map(|c| WIDTHS.map(|w| (c, w)))
+    {
+        let bwd = Backward::with_width(&ctx, cas, width).unwrap();
         let r = run(&ctx, &bwd, &g, &cam, [0.1, 0.2, 0.3], 62);
-        let what = if cas { "100k tile, CAS" } else { "100k tile" };
+        let what = &format!(
+            "100k tile, {width:?}, {}",
+            if cas { "CAS" } else { "native" }
+        );
         check(&r, &cam, what, 1e-3);
         // The large splats have real gradients, and the GPU's agree with the reference's.
         for i in 100_000..100_004 {
@@ -208,14 +222,16 @@ fn backward_for_small_subgroups_matches_reference() {
     let mut rng = common::rng(53);
     let g = Gaussians::random(&mut rng, 400, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, 2);
     let cam = camera(70, 52);
-    for cas in [false, true] {
-        let bwd = Backward::new(&ctx, cas).unwrap();
+    for (cas, width) in [false, true]
+        .into_iter()
+        .flat_map(|c| WIDTHS.map(|w| (c, w)))
+    {
+        let bwd = Backward::with_width(&ctx, cas, width).unwrap();
         let r = run(&ctx, &bwd, &g, &cam, [0.1, 0.0, 0.2], 63);
-        let what = if cas {
-            "small subgroups, CAS"
-        } else {
-            "small subgroups"
-        };
+        let what = &format!(
+            "small subgroups, {width:?}, {}",
+            if cas { "CAS" } else { "native" }
+        );
         check(&r, &cam, what, 1e-3);
         assert_mostly_nonzero(&r, what);
     }

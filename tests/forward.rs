@@ -1,7 +1,7 @@
 //! GPU forward pass against the f64 CPU reference on random scenes and edge cases.
 mod common;
 use dreamscene::camera::Camera;
-use dreamscene::splat::raster::{Rasterizer, RenderOutput};
+use dreamscene::splat::raster::{BlendWidth, Rasterizer, RenderOutput};
 use dreamscene::splat::reference::{self, RefImage};
 use dreamscene::splat::Gaussians;
 
@@ -65,7 +65,15 @@ fn check_scene(
 #[test]
 fn forward_matches_reference_on_random_scenes_all_sh_degrees() {
     let ctx = common::gpu();
-    let r = Rasterizer::new(&ctx).unwrap();
+    for width in [BlendWidth::One, BlendWidth::Wide] {
+        forward_matches_reference_with(&ctx, width);
+    }
+    ctx.check_validation().unwrap();
+}
+
+/// One pixel per invocation (GPUs) and several (the `_wide` kernels CPU devices use).
+fn forward_matches_reference_with(ctx: &dreamscene::gpu::Context, width: BlendWidth) {
+    let r = Rasterizer::with_width(ctx, width).unwrap();
     let mut rng = common::rng(10);
     for (deg, (w, h), n) in [
         (0u32, (64u32, 48u32), 300usize),
@@ -76,11 +84,11 @@ fn forward_matches_reference_on_random_scenes_all_sh_degrees() {
         let g = Gaussians::random(&mut rng, n, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, deg);
         let out = check_scene(
             &r,
-            &ctx,
+            ctx,
             &g,
             &front_camera(w, h),
             [0.2, 0.5, 0.9],
-            &format!("degree {deg}, {w}x{h}"),
+            &format!("{width:?}: degree {deg}, {w}x{h}"),
         );
         // The scene is not trivially empty: most pixels are covered.
         let covered = out.transmittance.iter().filter(|&&t| t < 0.5).count();
@@ -89,7 +97,6 @@ fn forward_matches_reference_on_random_scenes_all_sh_degrees() {
             "degree {deg}: only {covered} covered pixels"
         );
     }
-    ctx.check_validation().unwrap();
 }
 
 #[test]
@@ -178,16 +185,7 @@ fn nan_and_inf_inputs_are_culled_without_poisoning_others() {
 #[test]
 fn tile_with_100k_splats_renders_past_the_loop_limit() {
     let ctx = common::gpu();
-    let r = Rasterizer::new(&ctx).unwrap();
     let (g, cam) = common::crowded_tile();
-    let gpu = r.render(&ctx, &g, &cam, [0.0, 0.0, 0.0]).unwrap();
-    let gg = dreamscene::splat::raster::GpuGaussians::upload(&ctx, &g).unwrap();
-    let frame = r.forward(&ctx, &gg, &cam, [0.0; 3]).unwrap();
-    assert!(
-        frame.max_tile_len > 100_000,
-        "the tile holds {} splats",
-        frame.max_tile_len
-    );
     let cpu = reference::render(&g, &cam, [0.0; 3]);
     let far = 15 * 16 + 15;
     assert!(
@@ -196,10 +194,21 @@ fn tile_with_100k_splats_renders_past_the_loop_limit() {
         cpu.transmittance[far],
         &cpu.transmittance[..20]
     );
-    let (dc, dt, dd) = compare(&gpu, &cpu);
-    assert!(
-        dc < 2e-5 && dt < 2e-5 && dd < 2e-5,
-        "colour {dc:e}, T {dt:e}, depth {dd:e}"
-    );
+    for width in [BlendWidth::One, BlendWidth::Wide] {
+        let r = Rasterizer::with_width(&ctx, width).unwrap();
+        let gpu = r.render(&ctx, &g, &cam, [0.0, 0.0, 0.0]).unwrap();
+        let gg = dreamscene::splat::raster::GpuGaussians::upload(&ctx, &g).unwrap();
+        let frame = r.forward(&ctx, &gg, &cam, [0.0; 3]).unwrap();
+        assert!(
+            frame.max_tile_len > 100_000,
+            "the tile holds {} splats",
+            frame.max_tile_len
+        );
+        let (dc, dt, dd) = compare(&gpu, &cpu);
+        assert!(
+            dc < 2e-5 && dt < 2e-5 && dd < 2e-5,
+            "{width:?}: colour {dc:e}, T {dt:e}, depth {dd:e}"
+        );
+    }
     ctx.check_validation().unwrap();
 }

@@ -1,6 +1,6 @@
 //! The GPU backward pass: blend backward (screen-space gradients, subgroup-reduced float atomics)
 //! then projection backward (raw parameter gradients and densification statistics).
-use super::raster::{CameraData, Frame, GpuGaussians};
+use super::raster::{BlendWidth, CameraData, Frame, GpuGaussians};
 use crate::camera::Camera;
 use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings,
@@ -120,16 +120,23 @@ pub struct Backward {
 }
 
 impl Backward {
-    /// Uses native float atomics when the device has them, unless `force_cas`.
+    /// Uses native float atomics when the device has them, unless `force_cas`, and the blend
+    /// width suited to the device ([`BlendWidth::for_device`]).
     pub fn new(ctx: &Context, force_cas: bool) -> Result<Backward> {
+        Self::with_width(ctx, force_cas, BlendWidth::for_device(ctx))
+    }
+
+    /// As [`Backward::new`] with a given blend width (both give the same gradients).
+    pub fn with_width(ctx: &Context, force_cas: bool, width: BlendWidth) -> Result<Backward> {
         let cas = force_cas || !ctx.info().float_atomics;
-        let (src, seg_len) = if cas {
-            (kernels::BLEND_BACKWARD_CAS, kernels::SEGMENT_CAS)
-        } else {
-            (kernels::BLEND_BACKWARD, kernels::SEGMENT)
+        let (src, seg_len) = match (cas, width) {
+            (true, BlendWidth::One) => (kernels::BLEND_BACKWARD_CAS, kernels::SEGMENT_CAS),
+            (true, BlendWidth::Wide) => (kernels::BLEND_BACKWARD_CAS_WIDE, kernels::SEGMENT_CAS),
+            (false, BlendWidth::One) => (kernels::BLEND_BACKWARD, kernels::SEGMENT),
+            (false, BlendWidth::Wide) => (kernels::BLEND_BACKWARD_WIDE, kernels::SEGMENT),
         };
         Ok(Backward {
-            blend: Kernel::new(ctx, src, kernels::TILE * kernels::TILE)?,
+            blend: Kernel::new(ctx, src, width.workgroup_size())?,
             project: Kernel::new(ctx, kernels::PROJECT_BACKWARD, WG)?,
             seg_len,
             timed: false,

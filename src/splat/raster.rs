@@ -193,14 +193,55 @@ fn bits_for(max_value: u32) -> u32 {
     32 - max_value.leading_zeros()
 }
 
+/// How many pixels one invocation of the blend kernels (forward and backward) handles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BlendWidth {
+    /// One pixel per invocation, 256 per tile: for GPUs, where occupancy matters.
+    One,
+    /// `BLEND_PIXELS` pixels per invocation (the `_wide` kernels): for CPU devices (lavapipe),
+    /// where each splat broadcast and subgroup reduction is a loop over the lanes and is shared
+    /// by that many pixels.
+    Wide,
+}
+
+impl BlendWidth {
+    /// The width for a device: wide on CPU devices, unless `DREAMSCENE_BLEND` says `one` or `wide`.
+    pub fn for_device(ctx: &Context) -> BlendWidth {
+        match std::env::var("DREAMSCENE_BLEND").as_deref() {
+            Ok("one") => BlendWidth::One,
+            Ok("wide") => BlendWidth::Wide,
+            _ if ctx.info().device_type == "CPU" => BlendWidth::Wide,
+            _ => BlendWidth::One,
+        }
+    }
+
+    /// Invocations per 16x16 tile workgroup.
+    pub fn workgroup_size(self) -> u32 {
+        match self {
+            BlendWidth::One => kernels::TILE * kernels::TILE,
+            BlendWidth::Wide => kernels::TILE * kernels::TILE / kernels::BLEND_PIXELS,
+        }
+    }
+}
+
 impl Rasterizer {
+    /// The rasterizer with the blend width suited to the device ([`BlendWidth::for_device`]).
     pub fn new(ctx: &Context) -> Result<Rasterizer> {
+        Self::with_width(ctx, BlendWidth::for_device(ctx))
+    }
+
+    /// The rasterizer with a given blend width (both give the same image).
+    pub fn with_width(ctx: &Context, width: BlendWidth) -> Result<Rasterizer> {
+        let blend = match width {
+            BlendWidth::One => kernels::BLEND,
+            BlendWidth::Wide => kernels::BLEND_WIDE,
+        };
         Ok(Rasterizer {
             project: Kernel::new(ctx, kernels::PROJECT, WG)?,
             gather: Kernel::new(ctx, kernels::GATHER_COUNTS, WG)?,
             emit: Kernel::new(ctx, kernels::EMIT, WG)?,
             ranges: Kernel::new(ctx, kernels::TILE_RANGES, WG)?,
-            blend: Kernel::new(ctx, kernels::BLEND, kernels::TILE * kernels::TILE)?,
+            blend: Kernel::new(ctx, blend, width.workgroup_size())?,
             sort: RadixSort::new(ctx)?,
             timed: false,
         })
