@@ -7,14 +7,7 @@ use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use rand::SeedableRng;
 
 fn main() -> anyhow::Result<()> {
-    let n: usize = std::env::args()
-        .nth(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(100_000);
-    let size: u32 = std::env::args()
-        .nth(2)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(512);
+    let (n, size) = dreamscene::bench::profile_args(100_000, 512);
     let ctx = Context::new()?;
     let r = Rasterizer::new(&ctx)?;
     let mut bwd = Backward::new(&ctx, false)?;

@@ -187,6 +187,17 @@ pub fn bench_backward(
     ))
 }
 
+/// `[gaussians] [size]` from the command line of the profiling examples, with defaults.
+pub fn profile_args(default_gaussians: usize, default_size: u32) -> (usize, u32) {
+    let arg = |i: usize| std::env::args().nth(i);
+    (
+        arg(1)
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default_gaussians),
+        arg(2).and_then(|s| s.parse().ok()).unwrap_or(default_size),
+    )
+}
+
 /// The multithreaded CPU reference on the same scene, with the GPU's intersection count.
 pub fn bench_cpu_forward(
     n: usize,

@@ -164,6 +164,21 @@ fn backward_matches_reference_on_random_scenes_all_sh_degrees() {
 
 const WIDTHS: [BlendWidth; 2] = [BlendWidth::One, BlendWidth::Wide];
 
+/// Every (CAS atomics?, blend width) combination.
+fn atomics_and_widths() -> impl Iterator<Item = (bool, BlendWidth)> {
+    [false, true]
+        .into_iter()
+        .flat_map(|c| WIDTHS.map(|w| (c, w)))
+}
+
+fn atomics_name(cas: bool) -> &'static str {
+    if cas {
+        "CAS"
+    } else {
+        "native"
+    }
+}
+
 #[test]
 fn backward_with_cas_atomics_matches_reference() {
     let ctx = common::gpu();
@@ -186,16 +201,10 @@ fn backward_with_cas_atomics_matches_reference() {
 fn tile_with_100k_splats_differentiates_past_the_loop_limit() {
     let ctx = common::gpu();
     let (g, cam) = common::crowded_tile();
-    for (cas, width) in [false, true]
-        .into_iter()
-        .flat_map(|c| WIDTHS.map(|w| (c, w)))
-    {
+    for (cas, width) in atomics_and_widths() {
         let bwd = Backward::with_width(&ctx, cas, width).unwrap();
         let r = run(&ctx, &bwd, &g, &cam, [0.1, 0.2, 0.3], 62);
-        let what = &format!(
-            "100k tile, {width:?}, {}",
-            if cas { "CAS" } else { "native" }
-        );
+        let what = &format!("100k tile, {width:?}, {}", atomics_name(cas));
         check(&r, &cam, what, 1e-3);
         // The large splats have real gradients, and the GPU's agree with the reference's.
         for i in 100_000..100_004 {
@@ -222,16 +231,10 @@ fn backward_for_small_subgroups_matches_reference() {
     let mut rng = common::rng(53);
     let g = Gaussians::random(&mut rng, 400, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, 2);
     let cam = camera(70, 52);
-    for (cas, width) in [false, true]
-        .into_iter()
-        .flat_map(|c| WIDTHS.map(|w| (c, w)))
-    {
+    for (cas, width) in atomics_and_widths() {
         let bwd = Backward::with_width(&ctx, cas, width).unwrap();
         let r = run(&ctx, &bwd, &g, &cam, [0.1, 0.0, 0.2], 63);
-        let what = &format!(
-            "small subgroups, {width:?}, {}",
-            if cas { "CAS" } else { "native" }
-        );
+        let what = &format!("small subgroups, {width:?}, {}", atomics_name(cas));
         check(&r, &cam, what, 1e-3);
         assert_mostly_nonzero(&r, what);
     }
