@@ -74,14 +74,7 @@ fn main() {
     let mut sat = 0;
     for seed in 0..runs {
         let t = std::time::Instant::now();
-        let l = layout(
-            &spec,
-            LayoutOptions {
-                seed,
-                ..Default::default()
-            },
-        )
-        .expect("valid spec");
+        let l = layout(&spec, LayoutOptions::seeded(seed)).expect("valid spec");
         times.push(t.elapsed().as_secs_f64() * 1e3);
         sat += spec.relations.len() - l.unsatisfied.len();
     }

@@ -325,13 +325,7 @@ fn run(cli: Cli) -> Result<()> {
         }
         Command::Layout { spec, seed, out } => {
             let spec = SceneSpec::read(&spec)?;
-            let l = layout(
-                &spec,
-                LayoutOptions {
-                    seed,
-                    ..Default::default()
-                },
-            )?;
+            let l = layout(&spec, LayoutOptions::seeded(seed))?;
             create_parent(&out)?;
             l.write(&out)
                 .with_context(|| format!("writing {}", out.display()))?;
@@ -548,13 +542,7 @@ fn plan(
             spec
         }
     };
-    let l = layout(
-        &spec,
-        LayoutOptions {
-            seed,
-            ..Default::default()
-        },
-    )?;
+    let l = layout(&spec, LayoutOptions::seeded(seed))?;
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let spec_json = serde_json::to_string_pretty(&spec)?;
     dreamscene::util::write_atomic(&out.join("spec.json"), spec_json.as_bytes())

@@ -186,14 +186,7 @@ fn living_room_layouts_are_valid_satisfied_and_diverse() {
     let mut totals = (0, 0, 0, 0);
     let mut positions = vec![];
     for seed in 0..10 {
-        let l = layout(
-            &spec,
-            LayoutOptions {
-                seed,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let l = layout(&spec, LayoutOptions::seeded(seed)).unwrap();
         let (a, b, c, d) = check_layout(&spec, &l);
         totals = (totals.0 + a, totals.1 + b, totals.2 + c, totals.3 + d);
         positions.push(l.objects.iter().map(|o| o.position).collect::<Vec<_>>());

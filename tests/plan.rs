@@ -171,14 +171,7 @@ fn planned_prompts_lay_out_validly() {
                 "{p}: occupancy"
             );
         }
-        let l = layout(
-            &spec,
-            LayoutOptions {
-                seed: 1,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let l = layout(&spec, LayoutOptions::seeded(1)).unwrap();
         let problems = validity_problems(&l, &spec);
         assert!(problems.is_empty(), "{p}: {problems:?}");
         assert_eq!(
@@ -209,27 +202,33 @@ fn planned_prompts_lay_out_validly() {
     assert!(r >= 0.9 && a >= 0.9, "relations {r:.3}, anchors {a:.3}");
 }
 
+/// Runs the binary with `args` and fails the test with its stderr unless it succeeds.
+fn plan_ok(exe: &str, args: &[&str]) {
+    let out = std::process::Command::new(exe).args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// The `plan` verb end to end: spec.json, layout.json and a decodable layout.png; bad input
 /// gets one line and a non-zero exit.
 #[test]
 fn plan_verb_writes_spec_layout_and_picture() {
     let exe = env!("CARGO_BIN_EXE_dreamscene");
     let dir = std::env::temp_dir().join(format!("dreamscene-plan-{}", std::process::id()));
-    let out = std::process::Command::new(exe)
-        .args([
+    let out_dir = dir.to_str().unwrap();
+    plan_ok(
+        exe,
+        &[
             "plan",
             "a cozy living room, 5m x 4m",
             "--seed",
             "3",
             "--out",
-        ])
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+            out_dir,
+        ],
     );
     let spec = SceneSpec::read(&dir.join("spec.json")).unwrap();
     assert_eq!(spec.room.unwrap().size[..2], [5.0, 4.0]);
@@ -242,17 +241,10 @@ fn plan_verb_writes_spec_layout_and_picture() {
 
     let dlg = dir.join("dialogue.json");
     std::fs::write(&dlg, r#"[{"role": "user", "content": "I want a bedroom"}, {"role": "assistant", "content": "Which style?"}, {"role": "user", "content": "rustic, with a desk"}]"#).unwrap();
-    let out = std::process::Command::new(exe)
-        .args(["plan", "--dialogue"])
-        .arg(&dlg)
-        .arg("--out")
-        .arg(dir.join("d"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let (dlg_s, d) = (dlg.to_str().unwrap(), dir.join("d"));
+    plan_ok(
+        exe,
+        &["plan", "--dialogue", dlg_s, "--out", d.to_str().unwrap()],
     );
     let spec = SceneSpec::read(&dir.join("d/spec.json")).unwrap();
     assert!(spec.objects.contains_key("bed") && spec.objects.contains_key("desk"));

@@ -24,6 +24,16 @@ pub struct LayoutOptions {
     pub restarts: u32,
 }
 
+impl LayoutOptions {
+    /// The default search with a given seed.
+    pub fn seeded(seed: u64) -> LayoutOptions {
+        LayoutOptions {
+            seed,
+            ..Default::default()
+        }
+    }
+}
+
 impl Default for LayoutOptions {
     fn default() -> Self {
         LayoutOptions {
