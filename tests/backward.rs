@@ -225,8 +225,7 @@ fn tile_with_100k_splats_differentiates_past_the_loop_limit() {
 /// the kernels take the elected-lane path, which must give the same gradients.
 #[test]
 fn backward_for_small_subgroups_matches_reference() {
-    let ctx = dreamscene::gpu::Context::with_min_subgroup_size(4)
-        .unwrap_or_else(|e| panic!("GPU test needs a Vulkan device and found none: {e}"));
+    let ctx = common::gpu_with_min_subgroup(4);
     assert!(ctx.info().min_subgroup_size <= 4);
     let mut rng = common::rng(53);
     let g = Gaussians::random(&mut rng, 400, [-1.0, -1.0, 2.0], [1.0, 1.0, 4.0], 0.1, 2);

@@ -6,8 +6,16 @@ use rand::{Rng, SeedableRng};
 /// Opens the Vulkan device. A GPU test never passes without one: no device is a failure, with
 /// the reason (install mesa-vulkan-drivers for lavapipe).
 pub fn gpu() -> Context {
-    let ctx = Context::new()
-        .unwrap_or_else(|e| panic!("GPU test needs a Vulkan device and found none: {e}"));
+    checked(Context::new())
+}
+
+/// As [`gpu`], with kernels built for subgroups as small as `n` (the general paths).
+pub fn gpu_with_min_subgroup(n: u32) -> Context {
+    checked(Context::with_min_subgroup_size(n))
+}
+
+fn checked(ctx: dreamscene::gpu::Result<Context>) -> Context {
+    let ctx = ctx.unwrap_or_else(|e| panic!("GPU test needs a Vulkan device and found none: {e}"));
     if std::env::var("DREAMSCENE_REQUIRE_VALIDATION").is_ok_and(|v| v == "1") {
         assert!(
             ctx.info().validation,
