@@ -18,15 +18,7 @@ fn main() -> anyhow::Result<()> {
     for _ in 0..3 {
         let mut s = Stream::timed(&ctx, 128)?;
         sort.record(&mut s, &k, &v, n, 32, &scratch)?;
-        let t = s.submit()?;
-        let mut names: Vec<&str> = t.entries.iter().map(|e| e.0).collect();
-        names.dedup();
-        names.sort();
-        names.dedup();
-        for name in names {
-            print!("{name}: {:.2} ms  ", t.ms(name));
-        }
-        println!("total {:.2} ms", t.total_ms());
+        println!("{}", s.submit()?.summary());
     }
     Ok(())
 }

@@ -2,9 +2,9 @@
 //! Buffers are allocated outside the timed region where the API allows; the device is waited on
 //! inside it. Each figure is the median of `runs` runs after two warm-ups.
 use crate::camera::Camera;
-use crate::gpu::{Buffer, Context, Result, Stream};
+use crate::gpu::{Buffer, Context, Result, Stream, Timings};
 use crate::splat::backward::{Backward, GpuGrads};
-use crate::splat::raster::{GpuGaussians, Rasterizer};
+use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::sort::{RadixSort, SortScratch};
 use crate::splat::{reference, Gaussians};
 use rand::{Rng, SeedableRng};
@@ -137,6 +137,62 @@ pub fn bench_sort(ctx: &Context, pairs: u32, runs: usize) -> Result<SortFigures>
     })
 }
 
+/// The bench scene uploaded to the device with a rasterizer for it.
+pub struct RasterBench {
+    pub cam: Camera,
+    pub rasterizer: Rasterizer,
+    pub gaussians: GpuGaussians,
+}
+
+/// What a backward pass of the bench scene needs: the forward frame, a random per-pixel colour
+/// gradient (seeded) and zeroed gradient buffers.
+pub struct BackwardInputs {
+    pub frame: Frame,
+    pub colour_grad: Buffer,
+    pub grads: GpuGrads,
+}
+
+impl RasterBench {
+    pub fn new(ctx: &Context, n: usize, width: u32, height: u32) -> Result<RasterBench> {
+        let (g, cam) = bench_scene(n, width, height);
+        Ok(RasterBench {
+            cam,
+            rasterizer: Rasterizer::new(ctx)?,
+            gaussians: GpuGaussians::upload(ctx, &g)?,
+        })
+    }
+
+    /// One forward pass (black background).
+    pub fn forward(&self, ctx: &Context) -> Result<Frame> {
+        self.rasterizer
+            .forward(ctx, &self.gaussians, &self.cam, [0.0; 3])
+    }
+
+    /// Runs the forward once and prepares the inputs of the backward.
+    pub fn backward_inputs(&self, ctx: &Context) -> Result<BackwardInputs> {
+        let frame = self.forward(ctx)?;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        let dl = random_colour_gradient(&mut rng, (self.cam.width * self.cam.height) as usize);
+        Ok(BackwardInputs {
+            frame,
+            colour_grad: Buffer::from_slice(ctx, "bench colour gradient", &dl)?,
+            grads: GpuGrads::new(ctx, self.gaussians.n, self.gaussians.sh_degree)?,
+        })
+    }
+
+    /// One backward pass with `bwd`; returns its GPU timings.
+    pub fn backward(&self, ctx: &Context, bwd: &Backward, b: &BackwardInputs) -> Result<Timings> {
+        bwd.run(
+            ctx,
+            &b.frame,
+            &self.gaussians,
+            &self.cam,
+            &b.colour_grad,
+            &b.grads,
+        )
+    }
+}
+
 /// Full GPU forward pass on the bench scene.
 pub fn bench_forward(
     ctx: &Context,
@@ -145,13 +201,10 @@ pub fn bench_forward(
     height: u32,
     runs: usize,
 ) -> Result<RasterFigures> {
-    let (g, cam) = bench_scene(n, width, height);
-    let r = Rasterizer::new(ctx)?;
-    let gg = GpuGaussians::upload(ctx, &g)?;
+    let b = RasterBench::new(ctx, n, width, height)?;
     let mut m = 0;
     let ms = time(runs, || {
-        let f = r.forward(ctx, &gg, &cam, [0.0; 3])?;
-        m = f.intersections;
+        m = b.forward(ctx)?.intersections;
         Ok(())
     })?;
     Ok(RasterFigures::measured(n, width, height, m, ms))
@@ -166,23 +219,15 @@ pub fn bench_backward(
     height: u32,
     runs: usize,
 ) -> Result<RasterFigures> {
-    let (g, cam) = bench_scene(n, width, height);
-    let r = Rasterizer::new(ctx)?;
+    let b = RasterBench::new(ctx, n, width, height)?;
     let bwd = Backward::new(ctx, false)?;
-    let gg = GpuGaussians::upload(ctx, &g)?;
-    let frame = r.forward(ctx, &gg, &cam, [0.0; 3])?;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
-    let dl = random_colour_gradient(&mut rng, width as usize * height as usize);
-    let dlb = Buffer::from_slice(ctx, "bench colour gradient", &dl)?;
-    let grads = GpuGrads::new(ctx, n as u32, g.sh_degree)?;
-    let ms = time(runs, || {
-        bwd.run(ctx, &frame, &gg, &cam, &dlb, &grads).map(|_| ())
-    })?;
+    let inputs = b.backward_inputs(ctx)?;
+    let ms = time(runs, || b.backward(ctx, &bwd, &inputs).map(|_| ()))?;
     Ok(RasterFigures::measured(
         n,
         width,
         height,
-        frame.intersections,
+        inputs.frame.intersections,
         ms,
     ))
 }

@@ -39,6 +39,18 @@ impl Timings {
     pub fn total_ms(&self) -> f64 {
         self.entries.iter().map(|e| e.1).sum()
     }
+
+    /// One line: each kernel's total time in name order, then the sum.
+    pub fn summary(&self) -> String {
+        let mut names: Vec<&str> = self.entries.iter().map(|e| e.0).collect();
+        names.sort();
+        names.dedup();
+        let mut line = String::new();
+        for name in names {
+            line.push_str(&format!("{name} {:.2} ms  ", self.ms(name)));
+        }
+        line + &format!("| total {:.2} ms", self.total_ms())
+    }
 }
 
 /// A command buffer being recorded. Dropping it without `submit` discards the work.
