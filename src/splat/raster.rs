@@ -207,12 +207,14 @@ pub enum BlendWidth {
 impl BlendWidth {
     /// The width for a device: wide on CPU devices, unless `DREAMSCENE_BLEND` says `one` or `wide`.
     pub fn for_device(ctx: &Context) -> BlendWidth {
-        match std::env::var("DREAMSCENE_BLEND").as_deref() {
-            Ok("one") => BlendWidth::One,
-            Ok("wide") => BlendWidth::Wide,
-            _ if ctx.info().device_type == "CPU" => BlendWidth::Wide,
-            _ => BlendWidth::One,
-        }
+        let choices = [("one", BlendWidth::One), ("wide", BlendWidth::Wide)];
+        crate::util::env_choice("DREAMSCENE_BLEND", &choices).unwrap_or(
+            if ctx.info().device_type == "CPU" {
+                BlendWidth::Wide
+            } else {
+                BlendWidth::One
+            },
+        )
     }
 
     /// Invocations per 16x16 tile workgroup.

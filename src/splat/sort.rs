@@ -19,12 +19,17 @@ impl SortVariant {
     /// The variant for a device: serial on CPU devices, unless `DREAMSCENE_SORT` says
     /// `subgroup` or `serial`.
     pub fn for_device(ctx: &Context) -> SortVariant {
-        match std::env::var("DREAMSCENE_SORT").as_deref() {
-            Ok("subgroup") => SortVariant::Subgroup,
-            Ok("serial") => SortVariant::Serial,
-            _ if ctx.info().device_type == "CPU" => SortVariant::Serial,
-            _ => SortVariant::Subgroup,
-        }
+        let choices = [
+            ("subgroup", SortVariant::Subgroup),
+            ("serial", SortVariant::Serial),
+        ];
+        crate::util::env_choice("DREAMSCENE_SORT", &choices).unwrap_or(
+            if ctx.info().device_type == "CPU" {
+                SortVariant::Serial
+            } else {
+                SortVariant::Subgroup
+            },
+        )
     }
 
     /// Keys per histogram column.
