@@ -4,6 +4,7 @@
 pub mod bench;
 pub mod camera;
 pub mod diffusion;
+pub mod generate;
 pub mod gpu;
 pub mod plan;
 pub mod splat;

@@ -96,6 +96,16 @@ impl Guide {
         }
     }
 
+    /// Position of the noise generator (for checkpoints).
+    pub fn rng_position(&self) -> u128 {
+        self.rng.get_word_pos()
+    }
+
+    /// Continues the noise generator from a position [`Guide::rng_position`] returned.
+    pub fn set_rng_position(&mut self, pos: u128) {
+        self.rng.set_word_pos(pos);
+    }
+
     /// The latent target for latent `z` at training step `step` under any noise predictor, with
     /// the timesteps sampled and the gradient's RMS.
     pub fn latent_target(

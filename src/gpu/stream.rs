@@ -317,6 +317,21 @@ impl Stream {
         self.barrier();
     }
 
+    /// Fills `size` bytes of `buf` from byte `offset` (both multiples of 4) with `value`.
+    pub fn fill_region(&mut self, buf: &Buffer, offset: u64, size: u64, value: u32) {
+        if size == 0 {
+            return;
+        }
+        self.labels.push("fill");
+        // SAFETY: live buffer; the caller keeps offset + size inside it, in whole words.
+        unsafe {
+            self.shared
+                .device
+                .cmd_fill_buffer(self.cb, buf.raw, offset, size, value)
+        };
+        self.barrier();
+    }
+
     /// Submits, waits for completion, and returns per-dispatch timings (empty unless `timed`).
     /// Any validation message raised meanwhile turns into an error.
     pub fn submit(self) -> Result<Timings> {

@@ -3,6 +3,7 @@
 pub mod adam;
 pub mod backward;
 pub mod cloud;
+pub mod guided;
 pub mod loss;
 pub mod ply;
 pub mod raster;

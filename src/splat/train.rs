@@ -36,6 +36,11 @@ pub struct FitConfig {
     pub densify_every: u32,
     /// Opacity reset period, as a fraction of the run (0 disables).
     pub opacity_reset: f64,
+    /// Final learning rates of SH, log-scales and rotations (log-linear decay from the initial
+    /// ones, as the generators' configs schedule them); `None` keeps a rate constant.
+    pub lr_sh_final: Option<f32>,
+    pub lr_scales_final: Option<f32>,
+    pub lr_rotations_final: Option<f32>,
     /// Mean NDC centre-gradient norm above which a Gaussian is cloned or split.
     pub grad_threshold: f32,
     /// Gaussians larger than this fraction of the extent are split, smaller ones cloned.
@@ -62,6 +67,9 @@ impl Default for FitConfig {
             densify_until: 0.5,
             densify_every: 100,
             opacity_reset: 0.1,
+            lr_sh_final: None,
+            lr_scales_final: None,
+            lr_rotations_final: None,
             grad_threshold: 0.0002,
             percent_dense: 0.01,
             min_opacity: 0.005,
@@ -193,21 +201,24 @@ fn sigmoid(x: f32) -> f32 {
 
 /// The optimisation state of one fit.
 pub struct Trainer {
-    ctx: Context,
-    raster: Rasterizer,
-    backward: Backward,
-    adam: Adam,
+    pub(super) ctx: Context,
+    pub(super) raster: Rasterizer,
+    pub(super) backward: Backward,
+    pub(super) adam: Adam,
     pub config: FitConfig,
-    views: Vec<View>,
-    gaussians: GpuGaussians,
-    grads: GpuGrads,
-    state: AdamState,
-    extent: f64,
-    iteration: u32,
-    order: Vec<usize>,
-    rng: rand_chacha::ChaCha8Rng,
+    pub(super) views: Vec<View>,
+    pub(super) gaussians: GpuGaussians,
+    pub(super) grads: GpuGrads,
+    pub(super) state: AdamState,
+    pub(super) extent: f64,
+    pub(super) iteration: u32,
+    pub(super) order: Vec<usize>,
+    pub(super) rng: rand_chacha::ChaCha8Rng,
     /// Per-view scratch reused between steps: (pixels, colour gradient, backward state).
-    scratch: Option<(u64, Buffer, Buffer)>,
+    pub(super) scratch: Option<(u64, Buffer, Buffer)>,
+    /// Per-view scratch of guided batches (colour gradient, backward state), `batch_pixels` each.
+    pub(super) batch_scratch: Vec<(Buffer, Buffer)>,
+    pub(super) batch_pixels: u64,
 }
 
 impl Trainer {
@@ -258,6 +269,8 @@ impl Trainer {
             iteration: 0,
             order: vec![],
             scratch: None,
+            batch_scratch: vec![],
+            batch_pixels: 0,
         })
     }
 
@@ -290,14 +303,18 @@ impl Trainer {
     pub fn learning_rates(&self) -> LearningRates {
         let c = &self.config;
         let t = (self.iteration as f64 / c.iterations.max(1) as f64).clamp(0.0, 1.0);
-        let (a, b) = (c.lr_means.0 as f64, c.lr_means.1 as f64);
-        let means = (a.ln() * (1.0 - t) + b.ln() * t).exp() * self.extent;
+        let decay = |a: f32, b: Option<f32>| -> f32 {
+            let b = b.unwrap_or(a) as f64;
+            ((a as f64).ln() * (1.0 - t) + b.ln() * t).exp() as f32
+        };
+        let means = decay(c.lr_means.0, Some(c.lr_means.1)) as f64 * self.extent;
+        let sh = decay(c.lr_sh, c.lr_sh_final);
         LearningRates {
             means: means as f32,
-            scales: c.lr_scales,
-            rotations: c.lr_rotations,
+            scales: decay(c.lr_scales, c.lr_scales_final),
+            rotations: decay(c.lr_rotations, c.lr_rotations_final),
             opacities: c.lr_opacities,
-            sh_dc: c.lr_sh,
+            sh_dc: sh,
             sh_rest: c.lr_sh / 20.0,
         }
     }
@@ -322,6 +339,12 @@ impl Trainer {
     /// One optimisation step on the next view (views are visited in a random order per epoch),
     /// then densification, pruning and opacity reset when the schedule says.
     pub fn step(&mut self) -> Result<StepReport> {
+        if self.views.is_empty() {
+            return Err(GpuError::Kernel {
+                kernel: "fit".into(),
+                msg: "no training views (a guided trainer takes its targets per batch)".into(),
+            });
+        }
         let vi = self.next_view();
         let cam = self.views[vi].camera.clone();
         let np = cam.width as u64 * cam.height as u64;
@@ -363,7 +386,17 @@ impl Trainer {
         s.submit()?;
         drop(frame);
         self.iteration += 1;
+        self.after_step()?;
+        Ok(StepReport {
+            iteration: self.iteration,
+            loss,
+            psnr,
+            gaussians: self.len(),
+        })
+    }
 
+    /// Densification, pruning and opacity reset when the schedule says, after a step.
+    pub(super) fn after_step(&mut self) -> Result<()> {
         let c = &self.config;
         let it = self.iteration;
         let total = c.iterations as f64;
@@ -379,12 +412,7 @@ impl Trainer {
                 self.reset_opacity()?;
             }
         }
-        Ok(StepReport {
-            iteration: it,
-            loss,
-            psnr,
-            gaussians: self.len(),
-        })
+        Ok(())
     }
 
     /// Clones small Gaussians and splits large ones whose mean NDC centre gradient exceeds the
@@ -465,7 +493,7 @@ impl Trainer {
 
     /// Replaces the cloud by `g`, whose Gaussian j continues old Gaussian `src[j]` (its Adam
     /// moments are kept) or is new (zero moments). Densification statistics restart.
-    fn rebuild(&mut self, g: &Gaussians, src: &[Option<usize>]) -> Result<()> {
+    pub(super) fn rebuild(&mut self, g: &Gaussians, src: &[Option<usize>]) -> Result<()> {
         let n_old = self.gaussians.n as usize;
         let k3 = sh_coeffs(g.sh_degree) * 3;
         let ctx = &self.ctx;

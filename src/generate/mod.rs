@@ -1,0 +1,8 @@
+//! The generators: object generation by Formation Pattern Sampling with any prior (`sd`,
+//! `oracle`; `shape` needs no optimisation), its checkpoints, 3D Gaussian filtering and progress.
+//! The only layer besides `edit` that combines the splat engine with the diffusion prior.
+pub mod checkpoint;
+pub mod filter;
+pub mod object;
+pub mod prior;
+pub mod progress;

@@ -1,0 +1,249 @@
+//! The priors the generators ask for image targets, behind one interface: rendered views (with
+//! their cameras, backgrounds and prompt angles) in, an image target per view out, under a
+//! [`Guide`] that holds the rule (MTS, pseudo-GT, SDS, ISM, editing), its timestep ranges and
+//! its noise.
+//!
+//! - [`SdPrior`]: Stable Diffusion in ONNX Runtime; view-dependent prompts as the authors' code.
+//! - [`OraclePrior`]: a prior that knows the answer. Its latents are the images themselves
+//!   (identity codec, `z = 2x − 1`), and its noise prediction for the prompt (and the negative
+//!   prompt) is the exact noise toward the render of a reference cloud from the same camera and
+//!   background, `ε = (x_t − √ᾱ_t z*) / √(1 − ᾱ_t)`; for the empty prompt it predicts ε = 0 (an
+//!   uninformed denoiser that keeps what it sees, as the analytic test model does); for the edit
+//!   prompt, the noise toward a second reference. The guidance maths (DDIM inversion chain, the
+//!   MTS sum, CFG, pseudo-GT) run unchanged on top, so the whole generator can be checked with a
+//!   number: its fixed point is the reference.
+//!
+//! The `shape` prior has no targets (the object is its shape prior), so it is not a [`Prior`].
+use crate::camera::Camera;
+use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor};
+use crate::diffusion::model::{Conditioning, StableDiffusion};
+use crate::diffusion::schedule::{Schedule, SchedulerConfig};
+use crate::diffusion::target::Guide;
+use crate::gpu::Context;
+use crate::splat::raster::{GpuGaussians, Rasterizer};
+use crate::splat::Gaussians;
+use std::collections::HashMap;
+
+/// The authors' negative prompt for objects.
+pub const NEGATIVE: &str = "oversaturated color, ugly, tiling, low quality, noisy, blurry, out of \
+                            focus, low contrast, dull, low-resolution, oversaturation.";
+
+/// One rendered view a prior is asked about.
+pub struct PriorView<'a> {
+    pub camera: &'a Camera,
+    /// The render, row-major, colour over `background`.
+    pub render: &'a [[f32; 3]],
+    pub background: [f32; 3],
+    /// Azimuth (degrees, 0 in front) and elevation (polar − 90°) for view-dependent prompts.
+    pub azimuth: f64,
+    pub elevation: f64,
+}
+
+/// A source of per-view image targets.
+pub trait Prior {
+    /// What the prior is, for logs and `object.json` (`sd`, `oracle`).
+    fn kind(&self) -> &'static str;
+    /// The image target for `view` at training step `step` under `guide`, row-major like the
+    /// render. Pseudo-ground truth is clamped to [0, 1].
+    fn target(
+        &mut self,
+        guide: &mut Guide,
+        view: &PriorView,
+        step: u32,
+    ) -> Result<Vec<[f32; 3]>, String>;
+}
+
+fn flat(img: &[[f32; 3]]) -> Vec<f32> {
+    img.iter().flat_map(|p| p.iter().copied()).collect()
+}
+
+fn unflat(v: &[f32]) -> Vec<[f32; 3]> {
+    v.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
+}
+
+/// Noise predictions of the oracle for one view.
+struct OraclePredictor<'a> {
+    sched: &'a Schedule,
+    reference: &'a [f32],
+    edit: Option<&'a [f32]>,
+}
+
+impl NoisePredictor for OraclePredictor<'_> {
+    fn predict(&mut self, x: &[f32], t: u32, conds: &[Cond]) -> Result<Vec<Vec<f32>>, String> {
+        let ab = self.sched.alpha_bar(t as i64);
+        let (sa, sn) = (ab.sqrt(), (1.0 - ab).max(1e-12).sqrt());
+        let toward = |z: &[f32]| -> Vec<f32> {
+            x.iter()
+                .zip(z)
+                .map(|(xt, zs)| ((*xt as f64 - sa * *zs as f64) / sn) as f32)
+                .collect()
+        };
+        conds
+            .iter()
+            .map(|c| match c {
+                Cond::Positive | Cond::Negative => Ok(toward(self.reference)),
+                Cond::Null => Ok(vec![0.0; x.len()]),
+                Cond::Edit => self
+                    .edit
+                    .map(toward)
+                    .ok_or_else(|| "the oracle has no edit reference".to_string()),
+            })
+            .collect()
+    }
+}
+
+/// The verification prior: knows the reference cloud (and optionally an edit reference).
+pub struct OraclePrior {
+    ctx: Context,
+    raster: Rasterizer,
+    reference: GpuGaussians,
+    edit: Option<GpuGaussians>,
+    sched: Schedule,
+}
+
+impl OraclePrior {
+    pub fn new(
+        ctx: &Context,
+        reference: &Gaussians,
+        edit: Option<&Gaussians>,
+    ) -> Result<OraclePrior, String> {
+        let up = |g: &Gaussians| GpuGaussians::upload(ctx, g).map_err(|e| e.to_string());
+        Ok(OraclePrior {
+            ctx: ctx.clone(),
+            raster: Rasterizer::new(ctx).map_err(|e| e.to_string())?,
+            reference: up(reference)?,
+            edit: edit.map(up).transpose()?,
+            sched: Schedule::new(SchedulerConfig::sd21_base())?,
+        })
+    }
+
+    /// The reference rendered from `cam` over `bg`: what the oracle believes the view shows.
+    pub fn reference_view(&self, cam: &Camera, bg: [f32; 3]) -> Result<Vec<[f32; 3]>, String> {
+        self.render(&self.reference, cam, bg)
+    }
+
+    fn render(
+        &self,
+        g: &GpuGaussians,
+        cam: &Camera,
+        bg: [f32; 3],
+    ) -> Result<Vec<[f32; 3]>, String> {
+        Ok(self
+            .raster
+            .forward(&self.ctx, g, cam, bg)
+            .and_then(|f| f.read())
+            .map_err(|e| e.to_string())?
+            .color)
+    }
+}
+
+/// `2x − 1`, the oracle's latent of an image.
+fn to_latent(img: &[[f32; 3]]) -> Vec<f32> {
+    flat(img).iter().map(|v| 2.0 * v - 1.0).collect()
+}
+
+fn from_latent(z: &[f32], clamp: bool) -> Vec<[f32; 3]> {
+    let x: Vec<f32> = z
+        .iter()
+        .map(|v| {
+            let x = 0.5 * (v + 1.0);
+            if clamp {
+                x.clamp(0.0, 1.0)
+            } else {
+                x
+            }
+        })
+        .collect();
+    unflat(&x)
+}
+
+fn is_pseudo_gt(guide: &Guide) -> bool {
+    guide.rule == crate::diffusion::target::Rule::PseudoGt
+}
+
+impl Prior for OraclePrior {
+    fn kind(&self) -> &'static str {
+        "oracle"
+    }
+
+    fn target(
+        &mut self,
+        guide: &mut Guide,
+        view: &PriorView,
+        step: u32,
+    ) -> Result<Vec<[f32; 3]>, String> {
+        let reference = to_latent(&self.render(&self.reference, view.camera, view.background)?);
+        let edit = match &self.edit {
+            Some(e) => Some(to_latent(&self.render(e, view.camera, view.background)?)),
+            None => None,
+        };
+        let z = to_latent(view.render);
+        let mut p = OraclePredictor {
+            sched: &self.sched,
+            reference: &reference,
+            edit: edit.as_deref(),
+        };
+        let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &z, step)?;
+        Ok(from_latent(&zt, is_pseudo_gt(guide)))
+    }
+}
+
+/// Stable Diffusion with the authors' view-dependent prompts (embeddings cached per direction).
+pub struct SdPrior {
+    pub sd: StableDiffusion,
+    prompt: String,
+    negative: String,
+    edit: Option<String>,
+    cache: HashMap<String, Conditioning>,
+}
+
+impl SdPrior {
+    pub fn new(sd: StableDiffusion, prompt: &str, edit: Option<&str>) -> SdPrior {
+        SdPrior {
+            sd,
+            prompt: prompt.to_string(),
+            negative: NEGATIVE.to_string(),
+            edit: edit.map(str::to_string),
+            cache: HashMap::new(),
+        }
+    }
+}
+
+impl Prior for SdPrior {
+    fn kind(&self) -> &'static str {
+        "sd"
+    }
+
+    fn target(
+        &mut self,
+        guide: &mut Guide,
+        view: &PriorView,
+        step: u32,
+    ) -> Result<Vec<[f32; 3]>, String> {
+        let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
+        if !self.cache.contains_key(&pos) {
+            let edit = self
+                .edit
+                .as_ref()
+                .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
+            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref())?;
+            self.cache.insert(pos.clone(), c);
+        }
+        let cond = &self.cache[&pos];
+        let (w, h) = (view.camera.width as usize, view.camera.height as usize);
+        let t = guide.image_target(&mut self.sd, cond, &flat(view.render), w, h, step)?;
+        if (t.width, t.height) != (w, h) {
+            return Err(format!(
+                "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
+                t.width, t.height
+            ));
+        }
+        let mut img = unflat(&t.image);
+        if is_pseudo_gt(guide) {
+            for p in &mut img {
+                *p = p.map(|v| v.clamp(0.0, 1.0));
+            }
+        }
+        Ok(img)
+    }
+}
