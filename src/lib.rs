@@ -7,5 +7,6 @@ pub mod diffusion;
 pub mod generate;
 pub mod gpu;
 pub mod plan;
+pub mod shape;
 pub mod splat;
 pub mod util;

@@ -14,6 +14,8 @@ pub struct ObjectKind {
     pub size: [f64; 3],
     pub anchor: Anchor,
     pub description: String,
+    /// The shape archetype that draws it (see `crate::shape::archetype_names`).
+    pub archetype: String,
 }
 
 /// A default relation of a scene type, between categories.
@@ -109,8 +111,8 @@ impl KnowledgeBase {
             }
             let err = |m: &str| format!("objects.txt line {}: {m}", ln + 1);
             let f: Vec<&str> = line.split('|').map(str::trim).collect();
-            if f.len() != 5 {
-                return Err(err("expected 5 fields"));
+            if f.len() != 5 && f.len() != 6 {
+                return Err(err("expected 5 or 6 fields"));
             }
             let size: Vec<f64> = f[2]
                 .split_whitespace()
@@ -120,12 +122,20 @@ impl KnowledgeBase {
                 return Err(err("size needs three numbers"));
             };
             let anchor = parse_anchor(f[3]).ok_or_else(|| err("unknown anchor"))?;
+            let archetype = match f.get(5) {
+                Some(a) => crate::shape::archetype_names()
+                    .iter()
+                    .find(|n| **n == a.to_lowercase())
+                    .ok_or_else(|| err(&format!("unknown archetype `{a}`")))?,
+                None => crate::shape::archetype_by_keyword(f[0]),
+            };
             let o = ObjectKind {
                 category: f[0].to_lowercase(),
                 synonyms: list(f[1]),
                 size: [w, d, h],
                 anchor,
                 description: f[4].to_string(),
+                archetype: archetype.to_string(),
             };
             let idx = kb.objects.len();
             for name in std::iter::once(&o.category).chain(&o.synonyms) {
@@ -273,6 +283,23 @@ mod tests {
         }
         assert_eq!(kb.object("couch").unwrap().category, "sofa");
         assert_eq!(kb.scene("lounge").unwrap().name, "living room");
+    }
+
+    #[test]
+    fn every_builtin_category_names_its_archetype() {
+        for line in include_str!("kb/objects.txt").lines() {
+            let line = line.trim();
+            if !line.is_empty() && !line.starts_with('#') {
+                assert_eq!(line.split('|').count(), 6, "no archetype column: {line}");
+            }
+        }
+        let kb = KnowledgeBase::builtin();
+        assert_eq!(kb.object("couch").unwrap().archetype, "sofa");
+        let e =
+            KnowledgeBase::parse("sofa | couch | 2 1 0.8 | SIDE | a sofa | blob", "").unwrap_err();
+        assert!(e.contains("unknown archetype"), "{e}");
+        let k = KnowledgeBase::parse("desk chair | | 0.6 0.6 1 | OTHERS | a chair", "").unwrap();
+        assert_eq!(k.objects[0].archetype, "chair");
     }
 
     #[test]

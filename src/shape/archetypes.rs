@@ -1,0 +1,265 @@
+//! The archetype table: each archetype's name, the roles its first colour word paints, its
+//! default colours, and the function that lays out its parts; plus the [`Builder`] the layout
+//! functions (in `furniture.rs` and `more.rs`) use.
+use super::furniture as f;
+use super::materials::{Rgb, Role};
+use super::more as m;
+use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
+
+/// Collects parts in the object frame for a size `[w, d, h]`.
+pub struct Builder {
+    pub parts: Vec<Part>,
+    pub w: f64,
+    pub d: f64,
+    pub h: f64,
+}
+
+impl Builder {
+    /// Half width and half depth.
+    pub fn half(&self) -> (f64, f64) {
+        (self.w / 2.0, self.d / 2.0)
+    }
+
+    pub fn push(&mut self, role: Role, variant: u32, prim: Primitive) {
+        self.parts.push(Part {
+            prim,
+            role,
+            variant,
+        });
+    }
+
+    /// An axis-aligned box between corners `lo` and `hi` (degenerate extents are thickened to
+    /// 1 mm so every box has a surface).
+    pub fn cuboid(&mut self, role: Role, lo: V3, hi: V3) {
+        self.cuboid_v(role, 0, lo, hi);
+    }
+
+    /// [`Builder::cuboid`] with a colour variant.
+    pub fn cuboid_v(&mut self, role: Role, variant: u32, lo: V3, hi: V3) {
+        let centre = [0, 1, 2].map(|i| 0.5 * (lo[i] + hi[i]));
+        let half = [0, 1, 2].map(|i| (0.5 * (hi[i] - lo[i]).abs()).max(0.0005));
+        self.push(
+            role,
+            variant,
+            Primitive::Cuboid {
+                centre,
+                half,
+                rot: IDENTITY,
+            },
+        );
+    }
+
+    /// A closed vertical elliptic frustum standing on `base`: radii `rx`, `ry` at the bottom,
+    /// `top` times them at the top, height `h`.
+    pub fn frustum(&mut self, role: Role, base: V3, rx: f64, ry: f64, top: f64, h: f64) {
+        self.revolved(
+            role,
+            0,
+            base,
+            IDENTITY,
+            ry / rx,
+            frustum_profile(rx, rx * top, h),
+        );
+    }
+
+    /// A closed vertical cylinder.
+    pub fn cylinder(&mut self, role: Role, base: V3, r: f64, h: f64) {
+        self.frustum(role, base, r, r, 1.0, h);
+    }
+
+    /// A closed cylinder of radius `r` from `a` to `b`.
+    pub fn rod(&mut self, role: Role, a: V3, b: V3, r: f64) {
+        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-9);
+        self.revolved(role, 0, a, frame_along(d), 1.0, frustum_profile(r, r, l));
+    }
+
+    /// An ellipsoid with semi-axes `radii` (x, y, z) at `centre`.
+    pub fn ellipsoid(&mut self, role: Role, centre: V3, radii: V3) {
+        self.ellipsoid_rot(role, 0, centre, radii, IDENTITY);
+    }
+
+    /// An oriented ellipsoid with a colour variant.
+    pub fn ellipsoid_rot(&mut self, role: Role, variant: u32, centre: V3, radii: V3, rot: M3) {
+        let profile = ellipsoid_profile(radii[0], radii[2]);
+        self.revolved(role, variant, centre, rot, radii[1] / radii[0], profile);
+    }
+
+    /// A surface of revolution (see [`Primitive::Revolved`]).
+    pub fn revolved(
+        &mut self,
+        role: Role,
+        variant: u32,
+        origin: V3,
+        rot: M3,
+        ay: f64,
+        profile: Vec<[f64; 2]>,
+    ) {
+        self.push(
+            role,
+            variant,
+            Primitive::Revolved {
+                origin,
+                rot,
+                ay,
+                profile,
+            },
+        );
+    }
+
+    /// Four square legs of side `s` inset `inset` from the corners, from `z0` to `z1`.
+    pub fn legs(&mut self, role: Role, s: f64, inset: f64, z0: f64, z1: f64) {
+        let (hw, hd) = self.half();
+        for sx in [-1.0, 1.0] {
+            for sy in [-1.0, 1.0] {
+                let (x, y) = (sx * (hw - inset - s / 2.0), sy * (hd - inset - s / 2.0));
+                self.cuboid(
+                    role,
+                    [x - s / 2.0, y - s / 2.0, z0],
+                    [x + s / 2.0, y + s / 2.0, z1],
+                );
+            }
+        }
+    }
+}
+
+/// A rotation whose local z axis points along `d`.
+pub fn frame_along(d: V3) -> M3 {
+    let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-12);
+    let z = d.map(|v| v / l);
+    let helper = if z[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let x = {
+        let c = [
+            helper[1] * z[2] - helper[2] * z[1],
+            helper[2] * z[0] - helper[0] * z[2],
+            helper[0] * z[1] - helper[1] * z[0],
+        ];
+        let l = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+        c.map(|v| v / l)
+    };
+    let y = [
+        z[1] * x[2] - z[2] * x[1],
+        z[2] * x[0] - z[0] * x[2],
+        z[0] * x[1] - z[1] * x[0],
+    ];
+    [[x[0], y[0], z[0]], [x[1], y[1], z[1]], [x[2], y[2], z[2]]]
+}
+
+/// One archetype.
+pub struct Archetype {
+    pub name: &'static str,
+    /// Roles the first colour word of a description paints.
+    pub main: &'static [Role],
+    /// Colours that replace the role defaults for this archetype.
+    pub defaults: &'static [(Role, Rgb)],
+    pub layout: fn(&mut Builder),
+}
+
+impl Archetype {
+    /// The parts at `size`.
+    pub fn parts(&self, size: [f64; 3]) -> Vec<Part> {
+        let mut b = Builder {
+            parts: vec![],
+            w: size[0],
+            d: size[1],
+            h: size[2],
+        };
+        (self.layout)(&mut b);
+        b.parts
+    }
+}
+
+use Role::*;
+
+const WHITE: Rgb = [0.92, 0.92, 0.91];
+const STEEL: Rgb = [0.72, 0.73, 0.75];
+const BLACK: Rgb = [0.08, 0.08, 0.09];
+const DARK_WOOD: Rgb = [0.30, 0.19, 0.11];
+const STONE: Rgb = [0.66, 0.64, 0.60];
+
+macro_rules! arch {
+    ($name:literal, $layout:expr, [$($main:expr),*], [$($role:expr => $rgb:expr),*]) => {
+        Archetype { name: $name, main: &[$($main),*], defaults: &[$(($role, $rgb)),*], layout: $layout }
+    };
+}
+
+/// Every archetype.
+pub const ARCHETYPES: &[Archetype] = &[
+    arch!("box", m::solid_box, [Body], []),
+    arch!("table", f::table, [Top, Frame], []),
+    arch!("round_table", f::round_table, [Top, Frame], []),
+    arch!("desk", f::desk, [Top, Body, Door, Frame], []),
+    arch!("chair", f::chair, [Seat], []),
+    arch!("armchair", f::armchair, [Upholstery, Cushion], [Frame => DARK_WOOD]),
+    arch!("sofa", f::sofa, [Upholstery, Cushion], [Frame => DARK_WOOD]),
+    arch!("office_chair", f::office_chair, [Upholstery], [Upholstery => [0.14, 0.14, 0.15], Metal => [0.18, 0.18, 0.19]]),
+    arch!("stool", f::stool, [Seat], [Frame => [0.25, 0.25, 0.27]]),
+    arch!("bench", f::bench, [Seat, Frame], []),
+    arch!("ottoman", f::ottoman, [Upholstery], [Upholstery => [0.55, 0.45, 0.38]]),
+    arch!("bed", f::bed, [Duvet], [Duvet => [0.62, 0.68, 0.76]]),
+    arch!("bunk_bed", f::bunk_bed, [Frame], [Duvet => [0.35, 0.48, 0.66]]),
+    arch!("cabinet", f::cabinet, [Body, Door, Top], []),
+    arch!("dresser", f::dresser, [Body, Door, Top], []),
+    arch!("wardrobe", f::wardrobe, [Body, Door, Top], []),
+    arch!("sideboard", f::sideboard, [Body, Door, Top], []),
+    arch!("glass_cabinet", f::glass_cabinet, [Body, Top], []),
+    arch!("shelf", f::shelf, [Frame], [Interior => DARK_WOOD]),
+    arch!("rack", f::rack, [Frame], [Frame => [0.40, 0.41, 0.43]]),
+    arch!("floor_lamp", f::floor_lamp, [Shade], []),
+    arch!("table_lamp", f::table_lamp, [Body], [Body => [0.85, 0.82, 0.76]]),
+    arch!("rug", f::rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
+    arch!("counter", f::counter, [Body, Door], [Top => [0.82, 0.80, 0.76]]),
+    arch!("sink", f::sink, [Body, Door], [Top => [0.82, 0.80, 0.76], Canvas => WHITE, Metal => STEEL]),
+    arch!("fireplace", f::fireplace, [Body], [Body => STONE, Top => DARK_WOOD]),
+    arch!("piano", f::piano, [Body], [Body => BLACK, Frame => BLACK]),
+    arch!("grand_piano", f::grand_piano, [Body], [Body => BLACK, Frame => BLACK]),
+    arch!("bathtub", f::bathtub, [Body], [Body => WHITE, Canvas => [0.86, 0.88, 0.90]]),
+    arch!("toilet", f::toilet, [Body], [Body => WHITE, Top => WHITE]),
+    arch!("plant", m::plant, [Foliage], []),
+    arch!("tree", m::tree, [Foliage], []),
+    arch!("bush", m::bush, [Foliage], []),
+    arch!("conifer", m::conifer, [Foliage], [Foliage => [0.10, 0.36, 0.16]]),
+    arch!("screen", m::screen, [Body], [Body => BLACK, Metal => [0.15, 0.15, 0.16]]),
+    arch!("board", m::board, [Canvas], [Frame => [0.70, 0.71, 0.73]]),
+    arch!("chalkboard", m::chalkboard, [Canvas], [Canvas => [0.15, 0.25, 0.20]]),
+    arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
+    arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("fridge", m::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.45, 0.45, 0.47]]),
+    arch!("washer", m::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
+    arch!("stove", m::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
+    arch!("appliance", m::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
+    arch!("cylinder", m::cylinder, [Body], []),
+    arch!("sphere", m::sphere, [Body], [Body => [0.55, 0.53, 0.50]]),
+    arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
+    arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10]]),
+    arch!("boat", m::boat, [Body], [Body => [0.50, 0.33, 0.20], Frame => [0.62, 0.47, 0.30]]),
+    arch!("bicycle", m::bicycle, [Frame], [Frame => [0.15, 0.35, 0.55]]),
+    arch!("figure", m::figure, [Body], [Body => [0.85, 0.83, 0.80]]),
+    arch!("umbrella", m::umbrella, [Shade], [Shade => [0.85, 0.25, 0.20]]),
+    arch!("pavilion", m::pavilion, [Body], [Body => WHITE, Top => [0.45, 0.30, 0.22]]),
+    arch!("chest", m::chest, [Body], [Metal => [0.30, 0.28, 0.25]]),
+    arch!("fence", m::fence, [Frame], [Frame => WHITE]),
+];
+
+/// Names of [`ARCHETYPES`], in order.
+pub const NAMES: [&str; ARCHETYPES.len()] = {
+    let mut out = [""; ARCHETYPES.len()];
+    let mut i = 0;
+    while i < ARCHETYPES.len() {
+        out[i] = ARCHETYPES[i].name;
+        i += 1;
+    }
+    out
+};
+
+/// The archetype named `name`; the default (`box`, first in the table) for other names.
+pub fn get(name: &str) -> &'static Archetype {
+    ARCHETYPES
+        .iter()
+        .find(|a| a.name == name)
+        .unwrap_or(&ARCHETYPES[0])
+}

@@ -1,0 +1,495 @@
+//! Colours from words: the roles parts play (upholstery, legs, shade, foliage, …) with their
+//! default colours, the material and colour-name tables, and the parser that turns a description
+//! ("red velvet sofa with oak legs") into per-role colours. Data and string handling only.
+
+/// Linear-ish display RGB in [0, 1].
+pub type Rgb = [f32; 3];
+
+/// A family of materials; a material word colours the parts whose role accepts its class.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Class {
+    Wood,
+    Fabric,
+    Leather,
+    Stone,
+    Metal,
+    Glass,
+    Ceramic,
+    Plastic,
+    Wicker,
+    Paper,
+}
+
+/// What a part is, for colouring.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Role {
+    /// Upholstered body of a seat, a rug's field, a soft object.
+    Upholstery,
+    /// Loose cushions and a rug's border.
+    Cushion,
+    /// Seat and back of a chair or stool.
+    Seat,
+    /// Legs, frames, posts, rails.
+    Frame,
+    /// Table tops, counter tops, mantels, lids.
+    Top,
+    /// The carcass of cabinets, appliances, vehicles and most solid objects.
+    Body,
+    /// Doors and drawer fronts.
+    Door,
+    /// Handles, knobs, taps, small metal fittings.
+    Handle,
+    /// Bare metal: poles, bases, stands.
+    Metal,
+    /// Lamp shades and canopies.
+    Shade,
+    Foliage,
+    Trunk,
+    Pot,
+    Soil,
+    /// Displays and screens (dark).
+    Screen,
+    Mattress,
+    Pillow,
+    Duvet,
+    Glass,
+    Water,
+    /// Books and products on shelves; coloured by variant from a palette.
+    Books,
+    /// Dark interiors: openings, fireboxes, shelf backs.
+    Interior,
+    Keys,
+    BlackKeys,
+    Tyre,
+    Skin,
+    /// Writing or picture surfaces (whiteboard, canvas).
+    Canvas,
+    /// Emissive-looking parts: bulbs, flames.
+    Light,
+}
+
+impl Role {
+    /// The colour of a role when neither the description nor the archetype says otherwise.
+    pub fn default_colour(self) -> Rgb {
+        use Role::*;
+        match self {
+            Upholstery => [0.55, 0.55, 0.57],
+            Cushion => [0.62, 0.61, 0.62],
+            Seat => [0.55, 0.38, 0.22],
+            Frame => [0.45, 0.30, 0.18],
+            Top => [0.60, 0.43, 0.27],
+            Body => [0.58, 0.42, 0.27],
+            Door => [0.62, 0.46, 0.30],
+            Handle => [0.75, 0.72, 0.66],
+            Metal => [0.30, 0.30, 0.32],
+            Shade => [0.90, 0.85, 0.74],
+            Foliage => [0.20, 0.48, 0.18],
+            Trunk => [0.38, 0.27, 0.17],
+            Pot => [0.74, 0.42, 0.28],
+            Soil => [0.22, 0.15, 0.10],
+            Screen => [0.05, 0.06, 0.08],
+            Mattress => [0.93, 0.93, 0.91],
+            Pillow => [0.96, 0.96, 0.95],
+            Duvet => [0.88, 0.88, 0.86],
+            Glass => [0.72, 0.84, 0.88],
+            Water => [0.20, 0.45, 0.62],
+            Books => [0.50, 0.30, 0.20],
+            Interior => [0.14, 0.11, 0.09],
+            Keys => [0.96, 0.96, 0.94],
+            BlackKeys => [0.05, 0.05, 0.05],
+            Tyre => [0.08, 0.08, 0.08],
+            Skin => [0.85, 0.68, 0.55],
+            Canvas => [0.96, 0.96, 0.95],
+            Light => [1.00, 0.93, 0.70],
+        }
+    }
+
+    /// Material classes that a material word may give this role.
+    pub fn accepts(self, c: Class) -> bool {
+        use Class as C;
+        let ok: &[Class] = match self {
+            Role::Upholstery | Role::Cushion => &[C::Fabric, C::Leather, C::Wicker],
+            Role::Seat => &[
+                C::Wood,
+                C::Fabric,
+                C::Leather,
+                C::Plastic,
+                C::Metal,
+                C::Wicker,
+            ],
+            Role::Frame => &[C::Wood, C::Metal, C::Wicker, C::Plastic],
+            Role::Top => &[C::Wood, C::Stone, C::Glass, C::Metal, C::Plastic],
+            Role::Body | Role::Door => &[
+                C::Wood,
+                C::Metal,
+                C::Plastic,
+                C::Stone,
+                C::Ceramic,
+                C::Wicker,
+                C::Paper,
+            ],
+            Role::Handle | Role::Metal => &[C::Metal],
+            Role::Shade => &[C::Fabric, C::Glass, C::Paper],
+            Role::Pot => &[C::Ceramic, C::Stone, C::Metal, C::Plastic, C::Wicker],
+            Role::Mattress | Role::Pillow | Role::Duvet => &[C::Fabric],
+            Role::Glass => &[C::Glass],
+            _ => &[],
+        };
+        ok.contains(&c)
+    }
+}
+
+/// Materials: phrase, class, colour. Two-word phrases are matched before single words.
+pub const MATERIALS: &[(&str, Class, Rgb)] = &[
+    ("white oak", Class::Wood, [0.80, 0.68, 0.50]),
+    ("dark wood", Class::Wood, [0.30, 0.19, 0.11]),
+    ("light wood", Class::Wood, [0.80, 0.66, 0.46]),
+    ("stainless steel", Class::Metal, [0.74, 0.75, 0.77]),
+    ("cast iron", Class::Metal, [0.18, 0.18, 0.19]),
+    ("oak", Class::Wood, [0.64, 0.47, 0.29]),
+    ("walnut", Class::Wood, [0.36, 0.23, 0.14]),
+    ("pine", Class::Wood, [0.80, 0.64, 0.42]),
+    ("mahogany", Class::Wood, [0.45, 0.18, 0.12]),
+    ("teak", Class::Wood, [0.56, 0.37, 0.21]),
+    ("cherry", Class::Wood, [0.56, 0.26, 0.16]),
+    ("maple", Class::Wood, [0.82, 0.68, 0.48]),
+    ("birch", Class::Wood, [0.86, 0.76, 0.60]),
+    ("ebony", Class::Wood, [0.12, 0.09, 0.08]),
+    ("bamboo", Class::Wood, [0.80, 0.70, 0.45]),
+    ("wooden", Class::Wood, [0.55, 0.38, 0.22]),
+    ("wood", Class::Wood, [0.55, 0.38, 0.22]),
+    ("timber", Class::Wood, [0.55, 0.38, 0.22]),
+    ("rattan", Class::Wicker, [0.74, 0.57, 0.34]),
+    ("wicker", Class::Wicker, [0.70, 0.54, 0.32]),
+    ("woven", Class::Wicker, [0.70, 0.56, 0.36]),
+    ("straw", Class::Wicker, [0.86, 0.76, 0.46]),
+    ("leather", Class::Leather, [0.38, 0.22, 0.13]),
+    ("suede", Class::Leather, [0.60, 0.45, 0.32]),
+    ("velvet", Class::Fabric, [0.42, 0.16, 0.24]),
+    ("linen", Class::Fabric, [0.86, 0.81, 0.71]),
+    ("wool", Class::Fabric, [0.76, 0.72, 0.66]),
+    ("cotton", Class::Fabric, [0.92, 0.91, 0.88]),
+    ("canvas", Class::Fabric, [0.82, 0.78, 0.66]),
+    ("felt", Class::Fabric, [0.20, 0.45, 0.25]),
+    ("denim", Class::Fabric, [0.25, 0.35, 0.55]),
+    ("silk", Class::Fabric, [0.90, 0.86, 0.80]),
+    ("tweed", Class::Fabric, [0.52, 0.48, 0.42]),
+    ("fabric", Class::Fabric, [0.56, 0.56, 0.58]),
+    ("upholstered", Class::Fabric, [0.56, 0.56, 0.58]),
+    ("carpeted", Class::Fabric, [0.62, 0.56, 0.50]),
+    ("marble", Class::Stone, [0.90, 0.89, 0.87]),
+    ("granite", Class::Stone, [0.42, 0.41, 0.41]),
+    ("concrete", Class::Stone, [0.62, 0.62, 0.60]),
+    ("stone", Class::Stone, [0.60, 0.58, 0.54]),
+    ("brick", Class::Stone, [0.62, 0.30, 0.22]),
+    ("slate", Class::Stone, [0.30, 0.32, 0.35]),
+    ("sandstone", Class::Stone, [0.82, 0.70, 0.52]),
+    ("terracotta", Class::Ceramic, [0.76, 0.42, 0.28]),
+    ("ceramic", Class::Ceramic, [0.92, 0.91, 0.88]),
+    ("porcelain", Class::Ceramic, [0.95, 0.95, 0.94]),
+    ("clay", Class::Ceramic, [0.72, 0.45, 0.32]),
+    ("brass", Class::Metal, [0.78, 0.62, 0.30]),
+    ("gold", Class::Metal, [0.86, 0.68, 0.24]),
+    ("golden", Class::Metal, [0.86, 0.68, 0.24]),
+    ("copper", Class::Metal, [0.72, 0.42, 0.25]),
+    ("bronze", Class::Metal, [0.55, 0.40, 0.22]),
+    ("steel", Class::Metal, [0.62, 0.64, 0.66]),
+    ("chrome", Class::Metal, [0.82, 0.83, 0.85]),
+    ("iron", Class::Metal, [0.22, 0.22, 0.23]),
+    ("aluminium", Class::Metal, [0.76, 0.77, 0.79]),
+    ("aluminum", Class::Metal, [0.76, 0.77, 0.79]),
+    ("silver", Class::Metal, [0.78, 0.78, 0.80]),
+    ("metal", Class::Metal, [0.50, 0.51, 0.53]),
+    ("rusty", Class::Metal, [0.55, 0.30, 0.18]),
+    ("glass", Class::Glass, [0.72, 0.84, 0.88]),
+    ("plastic", Class::Plastic, [0.86, 0.86, 0.85]),
+    ("acrylic", Class::Plastic, [0.90, 0.92, 0.93]),
+    ("rubber", Class::Plastic, [0.12, 0.12, 0.12]),
+    ("cardboard", Class::Paper, [0.70, 0.55, 0.38]),
+    ("paper", Class::Paper, [0.95, 0.93, 0.88]),
+];
+
+/// Colour names. `grey`/`gray` and British/American spellings both appear.
+pub const COLOURS: &[(&str, Rgb)] = &[
+    ("red", [0.78, 0.12, 0.10]),
+    ("crimson", [0.66, 0.08, 0.16]),
+    ("scarlet", [0.85, 0.14, 0.08]),
+    ("burgundy", [0.45, 0.08, 0.14]),
+    ("maroon", [0.42, 0.08, 0.10]),
+    ("pink", [0.93, 0.60, 0.70]),
+    ("rose", [0.85, 0.50, 0.56]),
+    ("orange", [0.93, 0.50, 0.12]),
+    ("coral", [0.95, 0.50, 0.40]),
+    ("peach", [0.96, 0.74, 0.60]),
+    ("yellow", [0.95, 0.82, 0.20]),
+    ("mustard", [0.80, 0.62, 0.15]),
+    ("amber", [0.90, 0.60, 0.10]),
+    ("ochre", [0.78, 0.55, 0.20]),
+    ("green", [0.25, 0.55, 0.25]),
+    ("emerald", [0.05, 0.50, 0.30]),
+    ("olive", [0.45, 0.45, 0.18]),
+    ("sage", [0.60, 0.68, 0.55]),
+    ("mint", [0.66, 0.88, 0.74]),
+    ("lime", [0.60, 0.80, 0.20]),
+    ("forest", [0.13, 0.33, 0.18]),
+    ("teal", [0.05, 0.45, 0.48]),
+    ("turquoise", [0.20, 0.72, 0.70]),
+    ("cyan", [0.20, 0.75, 0.85]),
+    ("aqua", [0.35, 0.80, 0.82]),
+    ("blue", [0.15, 0.30, 0.70]),
+    ("navy", [0.07, 0.10, 0.30]),
+    ("cobalt", [0.05, 0.25, 0.65]),
+    ("indigo", [0.22, 0.15, 0.50]),
+    ("purple", [0.45, 0.20, 0.55]),
+    ("violet", [0.55, 0.30, 0.70]),
+    ("lavender", [0.72, 0.65, 0.85]),
+    ("plum", [0.45, 0.20, 0.38]),
+    ("magenta", [0.80, 0.15, 0.60]),
+    ("brown", [0.42, 0.27, 0.15]),
+    ("tan", [0.75, 0.60, 0.42]),
+    ("beige", [0.85, 0.78, 0.64]),
+    ("cream", [0.95, 0.92, 0.82]),
+    ("ivory", [0.96, 0.94, 0.86]),
+    ("khaki", [0.74, 0.70, 0.50]),
+    ("taupe", [0.55, 0.48, 0.42]),
+    ("chocolate", [0.32, 0.19, 0.11]),
+    ("caramel", [0.72, 0.48, 0.24]),
+    ("rust", [0.65, 0.28, 0.12]),
+    ("white", [0.93, 0.93, 0.92]),
+    ("black", [0.07, 0.07, 0.07]),
+    ("grey", [0.50, 0.50, 0.50]),
+    ("gray", [0.50, 0.50, 0.50]),
+    ("charcoal", [0.22, 0.22, 0.24]),
+];
+
+/// Words naming a part: a colour or material word followed within two words by one of these
+/// colours that part only ("walnut legs", "marble top", "linen shade").
+const PART_WORDS: &[(&str, Role)] = &[
+    ("top", Role::Top),
+    ("tabletop", Role::Top),
+    ("mantel", Role::Top),
+    ("lid", Role::Top),
+    ("legs", Role::Frame),
+    ("leg", Role::Frame),
+    ("frame", Role::Frame),
+    ("base", Role::Frame),
+    ("stand", Role::Frame),
+    ("shade", Role::Shade),
+    ("lampshade", Role::Shade),
+    ("handles", Role::Handle),
+    ("handle", Role::Handle),
+    ("knobs", Role::Handle),
+    ("cushions", Role::Cushion),
+    ("cushion", Role::Cushion),
+    ("pillows", Role::Pillow),
+    ("pot", Role::Pot),
+    ("doors", Role::Door),
+    ("door", Role::Door),
+    ("drawers", Role::Door),
+    ("seat", Role::Seat),
+    ("duvet", Role::Duvet),
+    ("bedding", Role::Duvet),
+    ("screen", Role::Screen),
+    ("screens", Role::Screen),
+    ("awning", Role::Shade),
+    ("canopy", Role::Shade),
+];
+
+/// What a colour word says.
+#[derive(Debug, Clone, PartialEq)]
+pub enum WordKind {
+    /// A colour name.
+    Colour,
+    /// A material of this class.
+    Material(Class),
+}
+
+/// One colour or material word found in a description.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ColourWord {
+    /// The phrase as matched, with its modifier (`"dark green"`).
+    pub phrase: String,
+    pub kind: WordKind,
+    /// The colour after light/dark modifiers.
+    pub rgb: Rgb,
+    /// The part it names, when a part word follows it ("oak legs" → `Frame`).
+    pub part: Option<Role>,
+}
+
+fn modify(rgb: Rgb, m: &str) -> Rgb {
+    match m {
+        "light" | "pale" | "soft" => rgb.map(|c| c + (1.0 - c) * 0.4),
+        "dark" | "deep" => rgb.map(|c| c * 0.55),
+        "bright" | "vivid" => rgb.map(|c| (c * 1.15).min(1.0)),
+        _ => rgb,
+    }
+}
+
+/// The colour and material words of `description`, in order: each with its colour (light/pale,
+/// dark/deep and bright modifiers applied) and the part word that follows it, if any.
+pub fn colour_words(description: &str) -> Vec<ColourWord> {
+    let lower = description.to_lowercase();
+    let words: Vec<&str> = lower
+        .split(|c: char| !c.is_ascii_alphabetic())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let mut out = vec![];
+    let mut i = 0;
+    while i < words.len() {
+        let pair = (i + 1 < words.len()).then(|| format!("{} {}", words[i], words[i + 1]));
+        let mut found = None;
+        if let Some(p) = &pair {
+            if let Some(m) = MATERIALS.iter().find(|m| m.0 == p) {
+                found = Some((2, p.clone(), WordKind::Material(m.1), m.2));
+            }
+        }
+        if found.is_none() {
+            let w = words[i];
+            if let Some(m) = MATERIALS.iter().find(|m| m.0 == w) {
+                found = Some((1, w.to_string(), WordKind::Material(m.1), m.2));
+            } else if let Some(c) = COLOURS.iter().find(|c| c.0 == w) {
+                found = Some((1, w.to_string(), WordKind::Colour, c.1));
+            }
+        }
+        let Some((n, phrase, kind, mut rgb)) = found else {
+            i += 1;
+            continue;
+        };
+        let mut phrase = phrase;
+        if i > 0 {
+            let m = words[i - 1];
+            let modified = modify(rgb, m);
+            if modified != rgb {
+                rgb = modified;
+                phrase = format!("{m} {phrase}");
+            }
+        }
+        let part = words[i + n..]
+            .iter()
+            .take(2)
+            .find_map(|w| PART_WORDS.iter().find(|p| p.0 == *w).map(|p| p.1));
+        out.push(ColourWord {
+            phrase,
+            kind,
+            rgb,
+            part,
+        });
+        i += n;
+    }
+    out
+}
+
+/// Colours of a shelf's books and products, chosen by variant.
+const BOOK_PALETTE: &[Rgb] = &[
+    [0.62, 0.14, 0.12],
+    [0.14, 0.24, 0.45],
+    [0.20, 0.40, 0.24],
+    [0.80, 0.68, 0.40],
+    [0.30, 0.20, 0.14],
+    [0.85, 0.82, 0.74],
+    [0.55, 0.30, 0.45],
+    [0.15, 0.15, 0.16],
+    [0.80, 0.45, 0.15],
+];
+
+/// Per-role colours for one object.
+#[derive(Debug, Clone)]
+pub struct Palette {
+    colours: Vec<(Role, Rgb)>,
+}
+
+impl Palette {
+    /// Colours from `description` over the archetype's `defaults`: the first colour word without
+    /// a part word colours the `main` roles; a word followed by a part word colours that part; a
+    /// material word without a part word colours every role that accepts its class (a colour word
+    /// keeps precedence on the main roles).
+    pub fn new(description: &str, main: &[Role], defaults: &[(Role, Rgb)]) -> Palette {
+        let mut colours: Vec<(Role, Rgb)> = defaults.to_vec();
+        let set = |colours: &mut Vec<(Role, Rgb)>, role: Role, rgb: Rgb| {
+            colours.retain(|c| c.0 != role);
+            colours.push((role, rgb));
+        };
+        let words = colour_words(description);
+        let mut fixed: Vec<Role> = vec![];
+        // Part-named words first, then the first free colour word, then free materials.
+        for w in words.iter().filter(|w| w.part.is_some()) {
+            if let Some(r) = w.part {
+                set(&mut colours, r, w.rgb);
+                fixed.push(r);
+            }
+        }
+        let free_colour = words
+            .iter()
+            .find(|w| w.part.is_none() && w.kind == WordKind::Colour);
+        if let Some(w) = free_colour {
+            for &r in main {
+                if !fixed.contains(&r) {
+                    set(&mut colours, r, w.rgb);
+                    fixed.push(r);
+                }
+            }
+        }
+        for w in words.iter().filter(|w| w.part.is_none()) {
+            if let WordKind::Material(class) = w.kind {
+                for r in ALL_ROLES {
+                    if r.accepts(class) && !fixed.contains(&r) {
+                        set(&mut colours, r, w.rgb);
+                        fixed.push(r);
+                    }
+                }
+            }
+        }
+        Palette { colours }
+    }
+
+    /// The colour of a part with this role and variant.
+    pub fn colour(&self, role: Role, variant: u32) -> Rgb {
+        if role == Role::Books {
+            return BOOK_PALETTE[variant as usize % BOOK_PALETTE.len()];
+        }
+        self.colours
+            .iter()
+            .find(|c| c.0 == role)
+            .map_or(role.default_colour(), |c| c.1)
+    }
+}
+
+const ALL_ROLES: [Role; 12] = [
+    Role::Upholstery,
+    Role::Cushion,
+    Role::Seat,
+    Role::Frame,
+    Role::Top,
+    Role::Body,
+    Role::Door,
+    Role::Handle,
+    Role::Metal,
+    Role::Shade,
+    Role::Pot,
+    Role::Glass,
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_carry_modifiers_and_parts() {
+        let w =
+            colour_words("A dark green velvet sofa with walnut legs and a stainless steel frame");
+        let p: Vec<&str> = w.iter().map(|w| w.phrase.as_str()).collect();
+        assert_eq!(p, ["dark green", "velvet", "walnut", "stainless steel"]);
+        assert_eq!(w[2].part, Some(Role::Frame));
+        assert!(w[0].rgb[1] < 0.55 * 0.56);
+    }
+
+    #[test]
+    fn palette_puts_colour_on_main_and_material_on_parts() {
+        let p = Palette::new("red velvet sofa with oak legs", &[Role::Upholstery], &[]);
+        assert_eq!(p.colour(Role::Upholstery, 0), [0.78, 0.12, 0.10]);
+        assert_eq!(p.colour(Role::Frame, 0), [0.64, 0.47, 0.29]);
+        let p = Palette::new("kitchen island with a marble top", &[Role::Body], &[]);
+        assert_eq!(p.colour(Role::Top, 0), [0.90, 0.89, 0.87]);
+        assert_eq!(p.colour(Role::Body, 0), Role::Body.default_colour());
+    }
+}

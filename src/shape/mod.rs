@@ -1,0 +1,217 @@
+//! Procedural shape priors: every knowledge-base category names a parametric archetype (table,
+//! chair, sofa, bed, cabinet, shelf, lamp, plant, screen, rug, …) that is built from primitive
+//! parts at the planned size `[width x, depth y, height z]` in the object frame (bottom-face
+//! centre at the origin, front towards +y, z up), sampled as flat surface Gaussians and coloured
+//! from the description's colour and material words.
+//!
+//! This is the offline initialisation (the paper's Point-E) and the draft object when no
+//! diffusion model is installed. Host-only: it never imports `ash` or `crate::gpu`.
+//!
+//! Density: by default the surfel spacing is `diag / 220` (`diag` the size box's diagonal), so an
+//! object framed to fill a 512² image gets a surfel every ~2 pixels and the tangent scales
+//! (0.7 spacing) overlap; the count is then clamped to [`MIN_GAUSSIANS`, `MAX_GAUSSIANS`]
+//! (a 2.1 m sofa gets the 60 000 cap, a rug ~45 000). [`ShapeOptions::gaussians`] overrides it;
+//! the result has that many Gaussians to within a few percent (rounding of the sample grids).
+mod archetypes;
+mod furniture;
+pub mod materials;
+mod more;
+pub mod parts;
+
+pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
+pub use parts::{Part, Primitive};
+
+use crate::plan::kb::KnowledgeBase;
+use crate::splat::cloud::SH_C0;
+use crate::splat::Gaussians;
+use rand::{Rng, SeedableRng};
+
+/// The archetype of categories the knowledge base does not know.
+pub const DEFAULT_ARCHETYPE: &str = "box";
+/// Smallest default Gaussian count.
+pub const MIN_GAUSSIANS: usize = 30_000;
+/// Largest default Gaussian count.
+pub const MAX_GAUSSIANS: usize = 60_000;
+/// Default surfel spacing as a fraction of the size box's diagonal.
+const SPACING_PER_DIAGONAL: f64 = 1.0 / 220.0;
+/// Tangent scale (σ) of a surfel as a fraction of its sample spacing: neighbours overlap.
+const TANGENT_SCALE: f64 = 0.7;
+/// Thickness (σ along the normal) as a fraction of the spacing: flat surfels.
+const THICKNESS: f64 = 0.15;
+/// Opacity after the sigmoid.
+const OPACITY: f64 = 0.93;
+/// Per-Gaussian brightness variation (±).
+const BRIGHTNESS_JITTER: f64 = 0.04;
+
+/// Options of [`build`].
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct ShapeOptions {
+    /// Approximate Gaussian count; `None` chooses one from the surface area (see the module docs).
+    pub gaussians: Option<usize>,
+    /// Seed of the sample jitter and colour variation.
+    pub seed: u64,
+}
+
+/// Errors of [`build`].
+#[derive(Debug, thiserror::Error)]
+pub enum ShapeError {
+    #[error("object size {0:?}: every side must be finite and positive")]
+    BadSize([f64; 3]),
+    #[error("Gaussian count {0}: at least 100 are needed")]
+    BadCount(usize),
+}
+
+/// Names of all archetypes.
+pub fn archetype_names() -> &'static [&'static str] {
+    &archetypes::NAMES
+}
+
+/// The archetype of a category (its name or a synonym) through the knowledge base; unknown
+/// categories get [`DEFAULT_ARCHETYPE`].
+pub fn archetype_of(category: &str) -> &'static str {
+    let name = category.trim().to_lowercase();
+    KnowledgeBase::builtin()
+        .object(&name)
+        .and_then(|o| archetypes::NAMES.iter().find(|n| **n == o.archetype))
+        .copied()
+        .unwrap_or(DEFAULT_ARCHETYPE)
+}
+
+/// The archetype a category name suggests by its words, for knowledge-base rows without an
+/// archetype column ("desk chair" → `chair`, "oak tree" → `tree`); [`DEFAULT_ARCHETYPE`] otherwise.
+pub fn archetype_by_keyword(category: &str) -> &'static str {
+    const RULES: &[(&str, &str)] = &[
+        ("sofa", "sofa"),
+        ("couch", "sofa"),
+        ("armchair", "armchair"),
+        ("chair", "chair"),
+        ("stool", "stool"),
+        ("bench", "bench"),
+        ("bed", "bed"),
+        ("desk", "desk"),
+        ("round table", "round_table"),
+        ("table", "table"),
+        ("shelf", "shelf"),
+        ("bookcase", "shelf"),
+        ("wardrobe", "wardrobe"),
+        ("cabinet", "cabinet"),
+        ("lamp", "floor_lamp"),
+        ("plant", "plant"),
+        ("tree", "tree"),
+        ("bush", "bush"),
+        ("rug", "rug"),
+        ("mat", "rug"),
+        ("tv", "screen"),
+        ("screen", "screen"),
+        ("monitor", "screen"),
+        ("counter", "counter"),
+        ("car", "vehicle"),
+    ];
+    let c = category.to_lowercase();
+    RULES
+        .iter()
+        .find(|(k, _)| c.contains(k))
+        .map_or(DEFAULT_ARCHETYPE, |(_, a)| a)
+}
+
+fn check_size(size: [f64; 3]) -> Result<(), ShapeError> {
+    if size.iter().all(|v| v.is_finite() && *v > 0.0) {
+        Ok(())
+    } else {
+        Err(ShapeError::BadSize(size))
+    }
+}
+
+/// The parts of a category's archetype at `size`, in the object frame.
+pub fn parts(category: &str, size: [f64; 3]) -> Result<Vec<Part>, ShapeError> {
+    check_size(size)?;
+    Ok(archetypes::get(archetype_of(category)).parts(size))
+}
+
+/// The default Gaussian count for parts of total surface `area` in a box of `size`.
+pub fn default_gaussians(area: f64, size: [f64; 3]) -> usize {
+    let diag = size.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let s = diag * SPACING_PER_DIAGONAL;
+    ((area / (s * s)) as usize).clamp(MIN_GAUSSIANS, MAX_GAUSSIANS)
+}
+
+/// Builds the shape prior of `category` at `size` ([width, depth, height] in metres), coloured
+/// from `description`: surface Gaussians (SH degree 0) inside the size box, resting on z = 0,
+/// facing +y. Deterministic for a seed.
+pub fn build(
+    category: &str,
+    size: [f64; 3],
+    description: &str,
+    opts: &ShapeOptions,
+) -> Result<Gaussians, ShapeError> {
+    check_size(size)?;
+    if let Some(n) = opts.gaussians.filter(|n| *n < 100) {
+        return Err(ShapeError::BadCount(n));
+    }
+    let arch = archetypes::get(archetype_of(category));
+    let parts = arch.parts(size);
+    let palette = materials::Palette::new(description, arch.main, arch.defaults);
+    let area: f64 = parts.iter().map(|p| p.prim.area()).sum();
+    let n = opts
+        .gaussians
+        .unwrap_or_else(|| default_gaussians(area, size));
+    let spacing = (area / n as f64).sqrt();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(opts.seed);
+    let [hw, hd, h] = [size[0] / 2.0, size[1] / 2.0, size[2]];
+    let inside = |p: [f64; 3]| p[0].abs() <= hw && p[1].abs() <= hd && (0.0..=h).contains(&p[2]);
+    let light = norm3([0.35, 0.55, 0.75]);
+    let log_t = (THICKNESS * spacing).ln() as f32;
+    let logit = (OPACITY / (1.0 - OPACITY)).ln() as f32;
+    let mut g = Gaussians {
+        sh_degree: 0,
+        ..Default::default()
+    };
+    let mut surfels = vec![];
+    for (i, part) in parts.iter().enumerate() {
+        surfels.clear();
+        part.prim.sample(spacing, &mut rng, &mut surfels);
+        // A fixed per-part brightness offset keeps neighbouring parts of one colour apart.
+        let part_shade = 1.0 + 0.06 * (((i as u64 * 2_654_435_761) % 1000) as f64 / 1000.0 - 0.5);
+        let base = palette.colour(part.role, part.variant);
+        let flat = matches!(part.role, Role::Light | Role::Screen);
+        for s in &surfels {
+            let jitter = 1.0 + rng.gen_range(-BRIGHTNESS_JITTER..=BRIGHTNESS_JITTER);
+            if !inside(s.pos) {
+                continue;
+            }
+            let nrm = s.normal();
+            let lit = if flat {
+                1.0
+            } else {
+                0.8 + 0.2 * (nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2])
+            };
+            let k = (lit * part_shade * jitter) as f32;
+            g.means.push(s.pos.map(|v| v as f32));
+            g.scales.push([
+                (TANGENT_SCALE * s.du).ln() as f32,
+                (TANGENT_SCALE * s.dv).ln() as f32,
+                log_t,
+            ]);
+            g.rotations
+                .push(parts::quaternion(&s.frame).map(|v| v as f32));
+            g.opacities.push(logit);
+            for c in base {
+                let c = (c * k).clamp(0.0, 1.0);
+                g.sh.push(((c as f64 - 0.5) / SH_C0) as f32);
+            }
+        }
+    }
+    // Rest the lowest centre on the floor (samples sit up to a jitter above their face).
+    let min_z = g.means.iter().map(|m| m[2]).fold(f32::INFINITY, f32::min);
+    if min_z.is_finite() {
+        for m in &mut g.means {
+            m[2] -= min_z;
+        }
+    }
+    Ok(g)
+}
+
+fn norm3(a: [f64; 3]) -> [f64; 3] {
+    let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+    a.map(|v| v / l)
+}
