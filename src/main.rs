@@ -14,6 +14,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::SeedableRng;
 use std::path::{Path, PathBuf};
 
+mod cli;
+
 /// Text to editable 3D Gaussian-splat scenes on any Vulkan GPU (DreamScene method).
 ///
 /// The Vulkan device is chosen automatically (discrete GPU, then integrated, then a CPU device
@@ -95,6 +97,81 @@ enum Command {
         seed: u64,
         /// Continue an interrupted fit from --out and <out>.state (same --iterations).
         #[arg(long, conflicts_with = "init")]
+        resume: bool,
+    },
+    /// Generate one object from a prompt: writes <out>/object.ply (object frame: bottom-face
+    /// centre at the origin, front +y, z up), object.json, renders/ (a turntable) and
+    /// checkpoints/.
+    ///
+    /// With Stable Diffusion (--models DIR or DREAMSCENE_MODELS) it runs Formation Pattern
+    /// Sampling: MTS from the shape prior, 3D Gaussian filtering, reconstructive generation.
+    /// Without models the object is its procedural shape prior (a draft in seconds).
+    /// --prior oracle:REF.ply verifies the generator against a known answer.
+    Object {
+        /// What to make, e.g. "a red velvet armchair".
+        prompt: String,
+        /// Output directory.
+        #[arg(long)]
+        out: PathBuf,
+        /// Size W,D,H in metres (default: the category's typical size).
+        #[arg(long, value_parser = cli::object::parse_size)]
+        size: Option<[f64; 3]>,
+        /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
+        #[arg(long)]
+        models: Option<PathBuf>,
+        /// ONNX Runtime provider for the models.
+        #[arg(long, value_enum, default_value = "cpu")]
+        provider: Provider,
+        /// auto (sd when models are found, else shape), sd, shape, or oracle:REF.ply.
+        #[arg(long, default_value = "auto", value_parser = cli::object::parse_prior)]
+        prior: cli::object::PriorChoice,
+        /// Start from this PLY instead of the shape prior.
+        #[arg(long)]
+        init: Option<PathBuf>,
+        /// Formation (MTS) iterations.
+        #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+        iterations: u32,
+        /// Render size in pixels (square).
+        #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+        resolution: u32,
+        /// Views per iteration.
+        #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u64).range(1..=16))]
+        batch: u64,
+        /// Guidance rule of the formation stage: mts, sds, ism, dreamtime.
+        #[arg(long, default_value = "mts", value_parser = cli::object::parse_rule)]
+        rule: dreamscene::diffusion::target::Rule,
+        /// Use the authors' code form of MTS (random jumps, CFG 7.5, averaged) instead of the
+        /// paper's (m intervals).
+        #[arg(long)]
+        mts_code_form: bool,
+        /// Final SH degree (raised one degree every 500 iterations).
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(0..=3))]
+        sh_degree: u32,
+        /// Turn off 3D Gaussian filtering.
+        #[arg(long)]
+        no_filter: bool,
+        /// Fraction of the Gaussians filtering removes.
+        #[arg(long, default_value_t = 0.6)]
+        filter_fraction: f64,
+        /// Filtering score: paper or code.
+        #[arg(long, default_value = "paper")]
+        filter_rule: String,
+        /// Reconstruction views (0 turns reconstructive generation off).
+        #[arg(long, default_value_t = 20)]
+        recon_views: usize,
+        /// Passes of the reconstruction fit over its views.
+        #[arg(long, default_value_t = 40)]
+        recon_passes: u32,
+        /// Checkpoint every N iterations (0: only between stages).
+        #[arg(long, default_value_t = 100)]
+        checkpoint_every: u32,
+        /// Turntable views written to renders/.
+        #[arg(long, default_value_t = 8)]
+        turntable: usize,
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Continue an interrupted run from <out>/checkpoints (same prompt, prior and settings).
+        #[arg(long)]
         resume: bool,
     },
     /// Plan a scene from a sentence (or a dialogue) and lay it out: writes <out>/spec.json,
@@ -322,6 +399,62 @@ fn run(cli: Cli) -> Result<()> {
                 retries: 2,
             });
             plan(prompt, dialogue, llm, interactive, seed, &out)
+        }
+        Command::Object {
+            prompt,
+            out,
+            size,
+            models,
+            provider,
+            prior,
+            init,
+            iterations,
+            resolution,
+            batch,
+            rule,
+            mts_code_form,
+            sh_degree,
+            no_filter,
+            filter_fraction,
+            filter_rule,
+            recon_views,
+            recon_passes,
+            checkpoint_every,
+            turntable,
+            seed,
+            resume,
+        } => {
+            let filter = cli::object::filter_config(no_filter, filter_fraction, &filter_rule)?;
+            let form = if mts_code_form {
+                dreamscene::diffusion::guidance::MtsRule::Code
+            } else {
+                dreamscene::diffusion::guidance::MtsRule::Paper
+            };
+            let config = cli::object::config(
+                iterations,
+                resolution,
+                seed,
+                rule,
+                form,
+                batch as usize,
+                sh_degree,
+                filter,
+                recon_views,
+                recon_passes,
+                checkpoint_every,
+            );
+            cli::object::run(cli::object::ObjectArgs {
+                prompt,
+                out,
+                size,
+                models,
+                provider,
+                prior,
+                init,
+                config,
+                resume,
+                turntable,
+            })
         }
         Command::Layout { spec, seed, out } => {
             let spec = SceneSpec::read(&spec)?;
@@ -573,7 +706,7 @@ fn plan(
     Ok(())
 }
 
-fn open_device() -> Result<Context> {
+pub(crate) fn open_device() -> Result<Context> {
     Context::new().context("opening the Vulkan device (run `dreamscene doctor`)")
 }
 
@@ -601,7 +734,7 @@ fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 3]) 
     Ok(())
 }
 
-fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
+pub(crate) fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
     let mut buf = image::RgbImage::new(img.width, img.height);
     for (i, p) in buf.pixels_mut().enumerate() {
         let c = img.color[i];

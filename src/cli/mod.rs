@@ -1,0 +1,2 @@
+//! Glue of the larger verbs, one file each.
+pub mod object;

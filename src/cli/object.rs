@@ -1,0 +1,339 @@
+//! `dreamscene object`: one object from a prompt, with the shape, Stable Diffusion or oracle
+//! prior; writes object.ply, object.json, a turntable and checkpoints.
+use anyhow::{bail, Context as _, Result};
+use dreamscene::camera::object::{turntable, ObjectFrame};
+use dreamscene::diffusion::guidance::MtsRule;
+use dreamscene::diffusion::model::{ModelOptions, StableDiffusion};
+use dreamscene::diffusion::runtime::Provider;
+use dreamscene::diffusion::target::{Rule, ISM_DEFAULT};
+use dreamscene::generate::filter::FilterConfig;
+use dreamscene::generate::object::{
+    generate_object, parse_score_rule, Checkpoints, Counts, ObjectConfig,
+};
+use dreamscene::generate::prior::{OraclePrior, Prior, SdPrior};
+use dreamscene::generate::progress::Progress;
+use dreamscene::plan::kb::KnowledgeBase;
+use dreamscene::shape::{self, ShapeOptions};
+use dreamscene::splat::ply::{read_ply, write_ply};
+use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
+use dreamscene::splat::Gaussians;
+use std::path::{Path, PathBuf};
+
+/// Which prior, as `--prior` names it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PriorChoice {
+    Auto,
+    Sd,
+    Shape,
+    Oracle(PathBuf),
+}
+
+pub fn parse_prior(s: &str) -> Result<PriorChoice, String> {
+    match s {
+        "auto" => Ok(PriorChoice::Auto),
+        "sd" => Ok(PriorChoice::Sd),
+        "shape" => Ok(PriorChoice::Shape),
+        _ => match s.strip_prefix("oracle:") {
+            Some(p) if !p.is_empty() => Ok(PriorChoice::Oracle(PathBuf::from(p))),
+            _ => Err(format!(
+                "'{s}': expected auto, sd, shape or oracle:FILE (a reference PLY)"
+            )),
+        },
+    }
+}
+
+/// The guidance rule of the formation stage by name.
+pub fn parse_rule(s: &str) -> Result<Rule, String> {
+    match s {
+        "mts" => Ok(Rule::Mts { m: 4 }),
+        "sds" => Ok(Rule::Sds {
+            t_min: 20,
+            t_max: 980,
+        }),
+        "ism" => Ok(ISM_DEFAULT),
+        "dreamtime" => Ok(Rule::DreamTime {
+            t_min: 20,
+            t_max: 980,
+            steps: 1500,
+        }),
+        _ => Err(format!("'{s}': expected mts, sds, ism or dreamtime")),
+    }
+}
+
+/// `W,D,H` in metres.
+pub fn parse_size(s: &str) -> Result<[f64; 3], String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| format!("'{s}': expected W,D,H in metres, e.g. 0.9,0.8,1.0"))?;
+    match v[..] {
+        [w, d, h] if v.iter().all(|x| x.is_finite() && *x > 0.0 && *x <= 100.0) => Ok([w, d, h]),
+        _ => Err(format!(
+            "'{s}': expected three positive sizes W,D,H in metres (at most 100)"
+        )),
+    }
+}
+
+/// The knowledge-base category a prompt names (the longest name or synonym found as whole
+/// words), if any.
+pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
+    let words: String = prompt
+        .to_lowercase()
+        .chars()
+        .map(|c| if c.is_alphanumeric() { c } else { ' ' })
+        .collect();
+    let padded = format!(" {} ", words.split_whitespace().collect::<Vec<_>>().join(" "));
+    let kb = KnowledgeBase::builtin();
+    let mut best: Option<(&str, &dreamscene::plan::kb::ObjectKind)> = None;
+    for (name, kind) in kb.names() {
+        let hit = padded.contains(&format!(" {name} ")) || padded.contains(&format!(" {name}s "));
+        if hit && best.is_none_or(|b| name.len() > b.0.len()) {
+            best = Some((name, kind));
+        }
+    }
+    best.map(|(_, k)| (k.category.clone(), k.size))
+}
+
+/// What `object` was asked.
+pub struct ObjectArgs {
+    pub prompt: String,
+    pub out: PathBuf,
+    pub size: Option<[f64; 3]>,
+    pub models: Option<PathBuf>,
+    pub provider: Provider,
+    pub prior: PriorChoice,
+    pub init: Option<PathBuf>,
+    pub config: ObjectConfig,
+    pub resume: bool,
+    pub turntable: usize,
+}
+
+/// Filter settings from the CLI.
+pub fn filter_config(off: bool, fraction: f64, rule: &str) -> Result<Option<FilterConfig>> {
+    if off {
+        return Ok(None);
+    }
+    if !(0.0..1.0).contains(&fraction) {
+        bail!("--filter-fraction {fraction}: expected a fraction in [0, 1)");
+    }
+    let rule = parse_score_rule(rule)
+        .ok_or_else(|| anyhow::anyhow!("--filter-rule '{rule}': expected paper or code"))?;
+    Ok(Some(FilterConfig {
+        rule,
+        fraction,
+        ..FilterConfig::default()
+    }))
+}
+
+/// The models directory: `--models`, else `DREAMSCENE_MODELS`.
+pub fn models_dir(models: Option<&Path>) -> Option<PathBuf> {
+    models
+        .map(Path::to_path_buf)
+        .or_else(|| std::env::var_os("DREAMSCENE_MODELS").map(PathBuf::from))
+}
+
+pub const NO_MODELS: &str = "no diffusion models found (--models DIR or DREAMSCENE_MODELS): \
+                             this is a draft from the shape prior; the README's \"The diffusion \
+                             models\" says how to export Stable Diffusion for full generation";
+
+pub fn run(a: ObjectArgs) -> Result<()> {
+    if a.prompt.trim().is_empty() {
+        bail!("the prompt is empty: say what object to make, e.g. \"a red velvet armchair\"");
+    }
+    let found = find_category(&a.prompt);
+    let (category, kb_size) = found
+        .clone()
+        .unwrap_or_else(|| ("object".to_string(), [0.8, 0.8, 0.8]));
+    let size = a.size.unwrap_or(kb_size);
+    let models = models_dir(a.models.as_deref());
+    let prior = match (&a.prior, &models) {
+        (PriorChoice::Auto, Some(_)) => PriorChoice::Sd,
+        (PriorChoice::Auto, None) => {
+            eprintln!("{NO_MODELS}");
+            PriorChoice::Shape
+        }
+        (PriorChoice::Sd, None) => {
+            bail!("--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS)")
+        }
+        (p, _) => p.clone(),
+    };
+    std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    if found.is_none() {
+        eprintln!(
+            "note: no known category in \"{}\"; using a generic {:.2} x {:.2} x {:.2} m box shape",
+            a.prompt, size[0], size[1], size[2]
+        );
+    }
+    let cfg = &a.config;
+    let shape_init = || -> Result<Gaussians> {
+        Ok(shape::build(
+            &category,
+            size,
+            &a.prompt,
+            &ShapeOptions {
+                gaussians: None,
+                seed: cfg.seed,
+            },
+        )?)
+    };
+    let init = match &a.init {
+        Some(p) => read_ply(p)?,
+        None => shape_init()?,
+    };
+    let frame = ObjectFrame { size };
+    let ctx = crate::open_device()?;
+    let start = std::time::Instant::now();
+    let (g, counts, iterations, prior_name) = match prior {
+        PriorChoice::Shape | PriorChoice::Auto => {
+            let n = init.len();
+            let counts = Counts {
+                initial: n,
+                before_filter: n,
+                after_filter: n,
+                final_: n,
+            };
+            (init, counts, 0, "shape".to_string())
+        }
+        PriorChoice::Sd | PriorChoice::Oracle(_) => {
+            let mut p: Box<dyn Prior> = match &prior {
+                PriorChoice::Oracle(path) => {
+                    let r = read_ply(path)?;
+                    Box::new(OraclePrior::new(&ctx, &r, None).map_err(anyhow::Error::msg)?)
+                }
+                _ => {
+                    let dir = models.clone().expect("checked above");
+                    let sd = StableDiffusion::open(
+                        &dir,
+                        &ModelOptions {
+                            provider: a.provider,
+                            threads: None,
+                        },
+                    )
+                    .map_err(anyhow::Error::msg)?;
+                    if a.config.resolution % 8 != 0 {
+                        bail!("--resolution {}: Stable Diffusion needs a multiple of 8", cfg.resolution);
+                    }
+                    let text = if a.prompt.to_lowercase().starts_with("a dslr photo") {
+                        a.prompt.clone()
+                    } else {
+                        format!("A DSLR photo of {}", a.prompt)
+                    };
+                    Box::new(SdPrior::new(sd, &text, None))
+                }
+            };
+            let name = match &prior {
+                PriorChoice::Oracle(path) => format!("oracle:{}", path.display()),
+                _ => "sd".to_string(),
+            };
+            let ck = Checkpoints {
+                dir: &a.out.join("checkpoints"),
+                resume: a.resume,
+                fingerprint: cfg.fingerprint(&a.prompt, &name),
+            };
+            let total = cfg.iterations as u64
+                + if cfg.recon_views > 0 {
+                    (cfg.recon_passes * cfg.recon_views as u32) as u64
+                } else {
+                    0
+                }
+                + 1;
+            let mut progress = Progress::new(total, false);
+            let (g, report) =
+                generate_object(&ctx, &init, &frame, p.as_mut(), cfg, Some(&ck), &mut progress)?;
+            progress.finish();
+            eprintln!(
+                "formation {:.1} s (gpu {:.1}, prior {:.1}, host {:.1}), filtering {:.1} s, \
+                 reconstruction {:.1} s",
+                report.stage_seconds[0],
+                report.formation_split[0],
+                report.formation_split[1],
+                report.formation_split[2],
+                report.stage_seconds[1],
+                report.stage_seconds[2]
+            );
+            (g, report.counts, cfg.iterations, name)
+        }
+    };
+    let ply = a.out.join("object.ply");
+    write_ply(&ply, &g).with_context(|| format!("writing {}", ply.display()))?;
+    let seconds = start.elapsed().as_secs_f64();
+    let json = serde_json::json!({
+        "prompt": a.prompt,
+        "category": category,
+        "size": size,
+        "prior": prior_name,
+        "seed": cfg.seed,
+        "iterations": iterations,
+        "resolution": cfg.resolution,
+        "gaussians": counts,
+        "seconds": seconds,
+    });
+    let path = a.out.join("object.json");
+    dreamscene::util::write_atomic(&path, serde_json::to_string_pretty(&json)?.as_bytes())
+        .with_context(|| format!("writing {}", path.display()))?;
+    let renders = a.out.join("renders");
+    write_turntable(&ctx, &g, &frame, a.turntable, cfg.resolution.min(512), &renders)?;
+    println!(
+        "wrote {} ({} Gaussians, {category}, prior {prior_name}), object.json and {} turntable \
+         views in {} ({seconds:.1} s)",
+        ply.display(),
+        g.len(),
+        a.turntable,
+        renders.display()
+    );
+    Ok(())
+}
+
+/// Renders `count` turntable views (white background) into `dir`.
+pub fn write_turntable(
+    ctx: &dreamscene::gpu::Context,
+    g: &Gaussians,
+    frame: &ObjectFrame,
+    count: usize,
+    res: u32,
+    dir: &Path,
+) -> Result<()> {
+    if count == 0 {
+        return Ok(());
+    }
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let r = Rasterizer::new(ctx)?;
+    let gg = GpuGaussians::upload(ctx, g)?;
+    for cam in turntable(frame, count, 75.0, res) {
+        let img = r.forward(ctx, &gg, &cam, [1.0; 3])?.read()?;
+        crate::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+    }
+    Ok(())
+}
+
+/// The object settings from the CLI's numbers.
+#[allow(clippy::too_many_arguments)]
+pub fn config(
+    iterations: u32,
+    resolution: u32,
+    seed: u64,
+    rule: Rule,
+    mts_form: MtsRule,
+    batch: usize,
+    sh_degree: u32,
+    filter: Option<FilterConfig>,
+    recon_views: usize,
+    recon_passes: u32,
+    checkpoint_every: u32,
+) -> ObjectConfig {
+    ObjectConfig {
+        iterations,
+        batch,
+        resolution,
+        rule,
+        mts_form,
+        sh_degree,
+        filter,
+        recon_views,
+        recon_passes,
+        checkpoint_every,
+        seed,
+        ..ObjectConfig::default()
+    }
+}
