@@ -60,8 +60,12 @@ fn rotated_sh_evaluates_equal_at_rotated_directions() {
     for degree in 1..=3u32 {
         let k = ((degree + 1) * (degree + 1)) as usize;
         let mut worst: f64 = 0.0;
-        for _ in 0..40 {
-            let r = random_rotation(&mut rng);
+        for trial in 0..40 {
+            // Every other one a reflection (a rotation times a mirror), which the bands also keep.
+            let mut r = random_rotation(&mut rng);
+            if trial % 2 == 1 {
+                r[0] = r[0].map(|v| -v);
+            }
             let c: Vec<f64> = (0..k).map(|_| rng.gen_range(-1.0..1.0)).collect();
             let c2 = rotate_coeffs(&r, &c);
             let scale = c.iter().map(|v| v.abs()).sum::<f64>();
@@ -254,14 +258,15 @@ fn explicitly_transformed(g: &Gaussians, m: &Mat3, t: [f64; 3]) -> Gaussians {
     out
 }
 
-/// `cam` as seen from the object frame of `world = s R p + t`: position `Rᵀ (c - t) / s`,
-/// axes `Rᵀ` times the world axes.
-fn camera_in_object_frame(cam: &Camera, yaw: f64, s: f64, t: [f64; 3]) -> Camera {
-    let rt = tr(&rot_z(yaw));
+/// `cam` as seen from the object frame of `world = s O p + t` (O orthogonal): position
+/// `Oᵀ (c - t) / s`, axes `Oᵀ` times the world axes (left-handed when O mirrors; the renderer only
+/// needs an orthogonal camera matrix).
+fn camera_in_object_frame(cam: &Camera, o: &Mat3, s: f64, t: [f64; 3]) -> Camera {
+    let ot = tr(o);
     let c = [0, 1, 2].map(|i| cam.position[i] - t[i]);
     Camera {
-        position: apply(&rt, c).map(|v| v / s),
-        rotation: mul(&rt, &cam.rotation),
+        position: apply(&ot, c).map(|v| v / s),
+        rotation: mul(&ot, &cam.rotation),
         ..cam.clone()
     }
 }
@@ -290,7 +295,7 @@ fn transformed_instances_render_as_the_equivalent_views() {
     // moved by the inverse transform.
     let yaw = 37.0;
     let moved = render(&transform(&g3, yaw, [1.0; 3], t), &cam);
-    let original = render(&g3, &camera_in_object_frame(&cam, yaw, 1.0, t));
+    let original = render(&g3, &camera_in_object_frame(&cam, &rot_z(yaw), 1.0, t));
     let rigid = psnr(&moved, &original);
     // Leaving the SH unrotated is visible: the test sees view-dependent colour.
     let mut unrotated = transform(&g3, yaw, [1.0; 3], t);
@@ -315,17 +320,27 @@ fn transformed_instances_render_as_the_equivalent_views() {
     // (c) uniform scale s, SH degree 3: the inverse similarity moves the camera to (c - t)/s.
     let (yaw_c, s) = (140.0, 1.8);
     let scaled = render(&transform(&g3, yaw_c, [s; 3], t), &cam);
-    let original_c = render(&g3, &camera_in_object_frame(&cam, yaw_c, s, t));
+    let original_c = render(&g3, &camera_in_object_frame(&cam, &rot_z(yaw_c), s, t));
     let similar = psnr(&scaled, &original_c);
+
+    // (d) mirrored (scale -1 along x), SH degree 3: an orthogonal map, so also exact.
+    let yaw_d = 60.0;
+    let mirror = mul(
+        &rot_z(yaw_d),
+        &[[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+    );
+    let mirrored = render(&transform(&g3, yaw_d, [-1.0, 1.0, 1.0], t), &cam);
+    let original_d = render(&g3, &camera_in_object_frame(&cam, &mirror, 1.0, t));
+    let mirrored_psnr = psnr(&mirrored, &original_d);
 
     // The views are not trivially equal: the untransformed object differs.
     let unmoved = psnr(&render(&g3, &cam), &moved);
     println!(
-        "PSNR rigid {rigid:.1} dB, non-uniform {nonuniform:.1} dB, uniform scale {similar:.1} dB \
-         (untransformed {unmoved:.1} dB, SH unrotated {without_sh:.1} dB, log-scale shift \
+        "PSNR rigid {rigid:.1} dB, non-uniform {nonuniform:.1} dB, uniform scale {similar:.1} dB, \
+         mirrored {mirrored_psnr:.1} dB (untransformed {unmoved:.1} dB, SH unrotated {without_sh:.1} dB, log-scale shift \
          {naive_scale:.1} dB)"
     );
-    assert!(rigid >= 50.0 && nonuniform >= 50.0 && similar >= 50.0);
+    assert!(rigid >= 50.0 && nonuniform >= 50.0 && similar >= 50.0 && mirrored_psnr >= 50.0);
     assert!(unmoved < 30.0 && without_sh < 45.0 && naive_scale < 45.0);
 }
 

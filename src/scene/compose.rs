@@ -17,6 +17,7 @@ use super::sh_rotate::{Mat3, ShRotation};
 use crate::splat::cloud::sh_coeffs;
 use crate::splat::reference::quat_to_mat;
 use crate::splat::Gaussians;
+use rayon::prelude::*;
 
 /// Where an instance goes: `world = Rz(yaw) · diag(scale) · p + position`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +53,8 @@ pub fn rz(yaw_deg: f64) -> Mat3 {
 /// module notes for covariances and SH). Gaussians with a zero or non-finite quaternion (which
 /// the renderer culls) keep their rotation and scales; their means still move. Output
 /// quaternions are unit length with w >= 0. A zero scale component gives degenerate Gaussians
-/// (log-scale about -345).
+/// (log-scale about -345). `g` must pass [`Gaussians::check`] (array lengths agree); the work is
+/// spread over threads.
 pub fn transform(g: &Gaussians, yaw_deg: f64, scale: [f64; 3], position: [f64; 3]) -> Gaussians {
     let p = Placement {
         yaw: yaw_deg,
@@ -68,30 +70,41 @@ pub fn transform(g: &Gaussians, yaw_deg: f64, scale: [f64; 3], position: [f64; 3
     let qz = [half.cos(), 0.0, 0.0, half.sin()];
     let k = g.coeffs() * 3;
 
-    let mut out = g.clone();
-    for i in 0..g.len() {
+    let one = |i: usize| {
         let x = g.means[i].map(f64::from);
-        out.means[i] = [0, 1, 2]
+        let mean = [0, 1, 2]
             .map(|a| (m[a][0] * x[0] + m[a][1] * x[1] + m[a][2] * x[2] + position[a]) as f32);
         let q = g.rotations[i].map(f64::from);
         let Some(rot) = quat_to_mat(q) else {
-            continue;
+            return (mean, g.rotations[i], g.scales[i]);
         };
         let s = g.scales[i].map(f64::from);
         if uniform {
             let n = q.iter().map(|v| v * v).sum::<f64>().sqrt();
-            out.rotations[i] = canonical(quat_mul(qz, q.map(|v| v / n))).map(|v| v as f32);
-            out.scales[i] = s.map(|v| (v + scale[0].ln()) as f32);
+            let q = canonical(quat_mul(qz, q.map(|v| v / n)));
+            (
+                mean,
+                q.map(|v| v as f32),
+                s.map(|v| (v + scale[0].ln()) as f32),
+            )
         } else {
             let sigma = covariance_of(&rot, s.map(f64::exp));
             let (lam, vecs) = sym_eigen(&mul(&mul(&m, &sigma), &transpose(&m)));
-            out.rotations[i] = mat_to_quat(&vecs).map(|v| v as f32);
             // Clamp: a zero scale component leaves a zero eigenvalue (or a rounding-negative one).
-            out.scales[i] = lam.map(|l| (0.5 * l.max(1e-300).ln()) as f32);
+            let scales = lam.map(|l| (0.5 * l.max(1e-300).ln()) as f32);
+            (mean, mat_to_quat(&vecs).map(|v| v as f32), scales)
         }
-        if let Some(shr) = &shr {
-            shr.apply_rgb(&mut out.sh[i * k..(i + 1) * k]);
-        }
+    };
+    let placed: Vec<([f32; 3], [f32; 4], [f32; 3])> =
+        (0..g.len()).into_par_iter().map(one).collect();
+    let mut out = g.clone();
+    for (i, (mean, rot, s)) in placed.into_iter().enumerate() {
+        out.means[i] = mean;
+        out.rotations[i] = rot;
+        out.scales[i] = s;
+    }
+    if let Some(shr) = &shr {
+        out.sh.par_chunks_mut(k).for_each(|c| shr.apply_rgb(c));
     }
     out
 }

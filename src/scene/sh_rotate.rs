@@ -79,24 +79,29 @@ impl ShRotation {
             if coeffs.len() < lo + n {
                 break;
             }
-            let src: Vec<f64> = coeffs[lo..lo + n].to_vec();
+            let mut src = [0.0; 7];
+            src[..n].copy_from_slice(&coeffs[lo..lo + n]);
             for (i, out) in coeffs[lo..lo + n].iter_mut().enumerate() {
-                *out = (0..n).map(|j| m[i * n + j] * src[j]).sum();
+                *out = m[i * n..(i + 1) * n]
+                    .iter()
+                    .zip(&src)
+                    .map(|(a, b)| a * b)
+                    .sum();
             }
         }
     }
 
     /// Rotates one Gaussian's coefficient block laid out `[coeff][rgb]` (as in
-    /// [`crate::splat::Gaussians::sh`]) in place, in f64.
+    /// [`crate::splat::Gaussians::sh`], at most 16 coefficients) in place, in f64.
     pub fn apply_rgb(&self, sh: &mut [f32]) {
-        let k = sh.len() / 3;
-        let mut ch = vec![0.0; k];
+        let k = (sh.len() / 3).min(16);
+        let mut ch = [0.0; 16];
         for c in 0..3 {
-            for (i, v) in ch.iter_mut().enumerate() {
+            for (i, v) in ch[..k].iter_mut().enumerate() {
                 *v = sh[i * 3 + c] as f64;
             }
-            self.apply(&mut ch);
-            for (i, v) in ch.iter().enumerate() {
+            self.apply(&mut ch[..k]);
+            for (i, v) in ch[..k].iter().enumerate() {
                 sh[i * 3 + c] = *v as f32;
             }
         }
