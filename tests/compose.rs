@@ -369,7 +369,13 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
 #[test]
 fn scene_json_round_trips_atomically_and_keeps_unknown_keys() {
     let dir = temp_dir("roundtrip");
-    let scene = sample_scene();
+    let mut scene = sample_scene();
+    scene.timeline = serde_json::from_str(
+        r#"{"duration": 3.0, "fps": 30, "tracks": [{"id": "sofa2", "interpolation": "linear",
+            "keys": [{"t": 0.0, "position": [1, 1.5, 0], "yaw": 0.0, "scale": [1, 1, 1]},
+                     {"t": 3.0, "position": [2, 1.5, 0], "yaw": 90.0, "scale": [1, 1, 1]}]}]}"#,
+    )
+    .expect("the contract's timeline parses");
     write_scene(&dir, &scene).expect("write");
     let names: Vec<String> = std::fs::read_dir(&dir)
         .expect("list")
@@ -379,8 +385,11 @@ fn scene_json_round_trips_atomically_and_keeps_unknown_keys() {
     let back = read_scene(&dir).expect("read");
     assert_eq!(back, scene);
     assert_eq!(back.extra["future_key"]["kept"][1], 2);
+    let mut still = back.clone();
+    still.timeline = None;
+    write_scene(&dir, &still).expect("write");
     let text = std::fs::read_to_string(dir.join("scene.json")).expect("text");
-    assert!(text.contains("\"timeline\": null"));
+    assert!(text.contains("\"timeline\": null"), "{text}");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -388,7 +397,10 @@ fn scene_json_round_trips_atomically_and_keeps_unknown_keys() {
 fn wrong_or_missing_scene_json_gets_a_one_line_reason() {
     let dir = temp_dir("wrong");
     let e = read_scene(&dir).expect_err("missing").to_string();
-    assert!(e.contains("scene.json") && e.contains("not found"), "{e}");
+    assert!(
+        e.contains("scene.json") && e.contains("not a scene directory"),
+        "{e}"
+    );
     let layout = r#"{"scene_type": "indoor", "room": {"size": [5.0, 4.0, 2.8]}, "seed": 7,
         "objects": [{"id": "sofa1", "category": "sofa", "size": [2.0, 1.0, 0.8],
         "position": [0.0, -1.5, 0.0], "yaw": 0.0, "anchor": "SIDE", "placed_by": "constraint"}],

@@ -196,10 +196,16 @@ pub fn read_scene(dir: &Path) -> Result<SceneFile, SceneError> {
     let text = match std::fs::read_to_string(&path) {
         Ok(t) => t,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            let planned = path.with_file_name("layout.json").is_file();
             return Err(file_err(
                 &path,
-                "not found; not a scene directory (`dreamscene generate --out DIR` makes one)",
-            ))
+                if planned {
+                    "not found; this directory holds a plan, not a scene (`dreamscene generate` \
+                     makes one)"
+                } else {
+                    "not found; not a scene directory (`dreamscene generate --out DIR` makes one)"
+                },
+            ));
         }
         Err(e) => return Err(file_err(&path, e.to_string())),
     };
