@@ -7,6 +7,7 @@ pub mod diffusion;
 pub mod generate;
 pub mod gpu;
 pub mod plan;
+pub mod scene;
 pub mod shape;
 pub mod splat;
 pub mod util;
