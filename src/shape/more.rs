@@ -28,7 +28,7 @@ fn blobs(b: &mut Builder, n: usize, r: f64, rz: f64, z0: f64, z1: f64, spread: f
             0.5
         };
         let a = i as f64 * 2.399_963;
-        let rho = spread * (0.35 + 0.65 * (PI * t).sin());
+        let rho = spread * (0.45 + 0.55 * (0.5 * PI * t).sin());
         let x = (rho * a.cos() * (hw - r)).clamp(-(hw - r), hw - r);
         let y = (rho * a.sin() * (hd - r)).clamp(-(hd - r), hd - r);
         let z = (z0 + (z1 - z0) * t).clamp(rz, h - rz);
@@ -50,10 +50,11 @@ pub fn plant(b: &mut Builder) {
     b.frustum(Pot, [0.0, 0.0, 0.0], 0.75 * rx, 0.75 * ry, 1.0 / 0.75, ph);
     b.frustum(Soil, [0.0, 0.0, ph], 0.95 * rx, 0.95 * ry, 1.0, 0.005);
     b.cylinder(Trunk, [0.0, 0.0, ph], 0.015, 0.6 * (h - ph));
-    let r = 0.5 * hw.min(hd);
-    let rz = (0.16 * (h - ph)).max(r * 0.8);
-    blobs(b, 10, r, rz, ph + 0.5 * rz, h - rz, 0.9);
-    b.ellipsoid(Foliage, [0.0, 0.0, h - rz], [0.8 * r, 0.8 * r, rz]);
+    // Leaf clusters: flattened blobs fanning out as they rise, a crown on top.
+    let r = 0.42 * hw.min(hd);
+    let rz = (0.1 * (h - ph)).max(0.55 * r);
+    blobs(b, 16, r, rz, ph + 0.6 * rz, h - rz, 1.0);
+    b.ellipsoid(Foliage, [0.0, 0.0, h - rz], [0.7 * r, 0.7 * r, rz]);
 }
 
 pub fn tree(b: &mut Builder) {
