@@ -12,7 +12,9 @@
 //! (0.7 spacing) overlap; the count is then clamped to [`MIN_GAUSSIANS`, `MAX_GAUSSIANS`]
 //! (a 2.1 m sofa gets the 60 000 cap, a rug ~45 000). [`ShapeOptions::gaussians`] overrides it;
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
+mod appliances;
 mod archetypes;
+mod cases;
 mod furniture;
 pub mod materials;
 mod more;
