@@ -161,7 +161,6 @@ pub const MATERIALS: &[(&str, Class, Rgb)] = &[
     ("timber", Class::Wood, [0.55, 0.38, 0.22]),
     ("rattan", Class::Wicker, [0.74, 0.57, 0.34]),
     ("wicker", Class::Wicker, [0.70, 0.54, 0.32]),
-    ("woven", Class::Wicker, [0.70, 0.56, 0.36]),
     ("straw", Class::Wicker, [0.86, 0.76, 0.46]),
     ("leather", Class::Leather, [0.38, 0.22, 0.13]),
     ("suede", Class::Leather, [0.60, 0.45, 0.32]),
@@ -447,10 +446,24 @@ impl Palette {
         if role == Role::Books {
             return BOOK_PALETTE[variant as usize % BOOK_PALETTE.len()];
         }
-        self.colours
+        let c = self
+            .colours
             .iter()
             .find(|c| c.0 == role)
-            .map_or(role.default_colour(), |c| c.1)
+            .map_or(role.default_colour(), |c| c.1);
+        if role == Role::Foliage {
+            // Leaf clusters differ in shade and a little in hue, like real foliage.
+            const SHADE: [[f32; 3]; 5] = [
+                [1.0, 1.0, 1.0],
+                [0.82, 0.88, 0.80],
+                [1.1, 1.12, 0.95],
+                [0.9, 0.95, 1.05],
+                [1.15, 1.05, 0.85],
+            ];
+            let k = SHADE[variant as usize % SHADE.len()];
+            return [0, 1, 2].map(|i| (c[i] * k[i]).min(1.0));
+        }
+        c
     }
 }
 

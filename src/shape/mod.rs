@@ -12,7 +12,9 @@
 //! (0.7 spacing) overlap; the count is then clamped to [`MIN_GAUSSIANS`, `MAX_GAUSSIANS`]
 //! (a 2.1 m sofa gets the 60 000 cap, a rug ~45 000). [`ShapeOptions::gaussians`] overrides it;
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
+mod appliances;
 mod archetypes;
+mod cases;
 mod furniture;
 pub mod materials;
 mod more;
@@ -155,8 +157,33 @@ pub fn build(
     let n = opts
         .gaussians
         .unwrap_or_else(|| default_gaussians(area, size));
-    let spacing = (area / n as f64).sqrt();
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(opts.seed);
+    let mut spacing = (area / n as f64).sqrt();
+    let mut g = sample(&parts, &palette, size, spacing, opts.seed);
+    // Parts clipped by the size box (a hull below its gunwale) lose samples: densify once.
+    if (g.len() as f64) < 0.9 * n as f64 && !g.is_empty() {
+        spacing *= (g.len() as f64 / n as f64).sqrt();
+        g = sample(&parts, &palette, size, spacing, opts.seed);
+    }
+    // Rest the lowest centre on the floor (samples sit up to a jitter above their face).
+    let min_z = g.means.iter().map(|m| m[2]).fold(f32::INFINITY, f32::min);
+    if min_z.is_finite() {
+        for m in &mut g.means {
+            m[2] -= min_z;
+        }
+    }
+    Ok(g)
+}
+
+/// Surface Gaussians of `parts` about `spacing` apart, coloured by `palette`; samples outside the
+/// size box are dropped.
+fn sample(
+    parts: &[Part],
+    palette: &materials::Palette,
+    size: [f64; 3],
+    spacing: f64,
+    seed: u64,
+) -> Gaussians {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let [hw, hd, h] = [size[0] / 2.0, size[1] / 2.0, size[2]];
     let inside = |p: [f64; 3]| p[0].abs() <= hw && p[1].abs() <= hd && (0.0..=h).contains(&p[2]);
     let light = norm3([0.35, 0.55, 0.75]);
@@ -201,14 +228,7 @@ pub fn build(
             }
         }
     }
-    // Rest the lowest centre on the floor (samples sit up to a jitter above their face).
-    let min_z = g.means.iter().map(|m| m[2]).fold(f32::INFINITY, f32::min);
-    if min_z.is_finite() {
-        for m in &mut g.means {
-            m[2] -= min_z;
-        }
-    }
-    Ok(g)
+    g
 }
 
 fn norm3(a: [f64; 3]) -> [f64; 3] {

@@ -210,6 +210,18 @@ impl Primitive {
         }
     }
 
+    /// Whether the primitive is a closed solid whose projection is filled (a box, or a profile
+    /// that starts and ends on the axis); a ring such as a wheel's tyre is not.
+    pub fn solid(&self) -> bool {
+        match self {
+            Primitive::Cuboid { .. } => true,
+            Primitive::Revolved { profile, .. } => {
+                profile.first().is_some_and(|p| p[0].abs() < 1e-9)
+                    && profile.last().is_some_and(|p| p[0].abs() < 1e-9)
+            }
+        }
+    }
+
     /// Corner points whose convex hull is the primitive (coarse for curved surfaces, always
     /// inside the true shape), in the object frame.
     pub fn hull_points(&self) -> Vec<V3> {

@@ -1,0 +1,448 @@
+//! Layouts of case goods and fixtures: cabinets, dressers, wardrobes, glass cabinets, shelves,
+//! lamps, rugs, counters, sinks, fireplaces, pianos, bathtubs and toilets. The front faces +y.
+use super::archetypes::Builder;
+use super::materials::Role::*;
+use super::parts::{frustum_profile, IDENTITY};
+
+/// A case (cabinet, dresser, wardrobe): carcass on a plinth or legs, top, fronts with handles.
+/// `drawers` rows of drawers above `doors` doors (side by side); `legs` lifts it on legs.
+fn case(b: &mut Builder, doors: usize, drawers: usize, legs: bool) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let base = if legs {
+        (0.15 * h).min(0.15)
+    } else {
+        (0.06 * h).min(0.08)
+    };
+    let top = 0.025;
+    let face = hd - 0.035;
+    if legs {
+        b.legs(Frame, 0.04, 0.03, 0.0, base);
+    } else {
+        b.cuboid(
+            Frame,
+            [-hw + 0.02, -hd + 0.02, 0.0],
+            [hw - 0.02, face - 0.02, base],
+        );
+    }
+    b.cuboid(Body, [-hw, -hd, base], [hw, face, h - top]);
+    b.cuboid(Top, [-hw, -hd, h - top], [hw, hd - 0.01, h]);
+    let (z_lo, z_hi) = (base + 0.01, h - top - 0.01);
+    let gap = 0.005;
+    let cols = if b.w > 1.0 && doors == 0 { 2 } else { 1 };
+    let front = |b: &mut Builder, x0: f64, x1: f64, z0: f64, z1: f64| {
+        b.cuboid(
+            Door,
+            [x0 + gap, face, z0 + gap],
+            [x1 - gap, hd - 0.014, z1 - gap],
+        );
+    };
+    let drawer_h = if doors > 0 {
+        ((z_hi - z_lo) * 0.18).min(0.2)
+    } else {
+        (z_hi - z_lo) / drawers.max(1) as f64
+    };
+    let mut z = z_hi;
+    for _ in 0..drawers {
+        let cw = (b.w - 0.02) / cols as f64;
+        for c in 0..cols {
+            let x0 = -hw + 0.01 + c as f64 * cw;
+            front(b, x0, x0 + cw, z - drawer_h, z);
+            let (xc, zc) = (x0 + cw / 2.0, z - drawer_h / 2.0);
+            let hl = (0.15 * cw).min(0.07);
+            b.cuboid(
+                Handle,
+                [xc - hl, hd - 0.014, zc - 0.008],
+                [xc + hl, hd, zc + 0.008],
+            );
+        }
+        z -= drawer_h;
+    }
+    if doors > 0 {
+        let dw = (b.w - 0.02) / doors as f64;
+        for i in 0..doors {
+            let x0 = -hw + 0.01 + i as f64 * dw;
+            front(b, x0, x0 + dw, z_lo, z);
+            // Handle on the door's inner edge (towards the centre), at a comfortable height.
+            let xc = if x0 + dw / 2.0 < 0.0 {
+                x0 + dw - 0.04
+            } else {
+                x0 + 0.04
+            };
+            let zc = (z_lo + 0.55 * (z - z_lo)).min(1.1);
+            let hl = (0.06 * (z - z_lo)).clamp(0.03, 0.12);
+            b.cuboid(
+                Handle,
+                [xc - 0.008, hd - 0.014, zc - hl],
+                [xc + 0.008, hd, zc + hl],
+            );
+        }
+    }
+}
+
+pub fn cabinet(b: &mut Builder) {
+    let doors = if b.w < 0.6 { 1 } else { 2 };
+    case(b, doors, 0, false);
+}
+
+pub fn dresser(b: &mut Builder) {
+    let rows = ((b.h / 0.22).round() as usize).clamp(2, 6);
+    case(b, 0, rows, b.h < 1.2);
+}
+
+pub fn wardrobe(b: &mut Builder) {
+    let doors = ((b.w / 0.5).round() as usize).clamp(1, 4);
+    case(b, doors, 1, false);
+}
+
+pub fn sideboard(b: &mut Builder) {
+    let doors = ((b.w / 0.45).round() as usize).clamp(1, 5);
+    case(b, doors, 0, true);
+}
+
+/// A glass-fronted cabinet: closed base, glass upper case with shelves inside.
+pub fn glass_cabinet(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zb = if h > 1.4 { 0.4 * h } else { 0.1 * h };
+    b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, zb]);
+    b.cuboid(Top, [-hw, -hd, h - 0.04], [hw, hd, h]);
+    let f = 0.03;
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - f / 2.0);
+        for sy in [-1.0, 1.0] {
+            let y = sy * (hd - f / 2.0);
+            b.cuboid(
+                Body,
+                [x - f / 2.0, y - f / 2.0, zb],
+                [x + f / 2.0, y + f / 2.0, h - 0.04],
+            );
+        }
+    }
+    b.cuboid(Interior, [-hw + f, -hd, zb], [hw - f, -hd + 0.01, h - 0.04]);
+    let mut z = zb + 0.3;
+    let mut v = 0;
+    while z < h - 0.1 {
+        b.cuboid(Body, [-hw + f, -hd + 0.01, z], [hw - f, hd - f, z + 0.015]);
+        let mut x = -hw + f + 0.05;
+        while x < hw - f - 0.12 {
+            b.ellipsoid_rot(
+                Books,
+                v,
+                [x + 0.05, -hd * 0.2, z + 0.08],
+                [0.045, 0.045, 0.065],
+                IDENTITY,
+            );
+            x += 0.14;
+            v += 1;
+        }
+        z += 0.35;
+    }
+    b.cuboid(Glass, [-hw + f, hd - 0.006, zb], [hw - f, hd, h - 0.04]);
+    b.cuboid(Glass, [-hw, -hd + f, zb], [-hw + 0.006, hd - f, h - 0.04]);
+    b.cuboid(Glass, [hw - 0.006, -hd + f, zb], [hw, hd - f, h - 0.04]);
+}
+
+/// Shelves filled with items `item` wide on average (books ~4 cm, boxes ~25 cm).
+fn shelves(b: &mut Builder, item: f64, back: bool) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let t = 0.025;
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - t / 2.0);
+        b.cuboid(Frame, [x - t / 2.0, -hd, 0.0], [x + t / 2.0, hd, h]);
+    }
+    if back {
+        b.cuboid(Interior, [-hw + t, -hd, 0.0], [hw - t, -hd + 0.012, h]);
+    }
+    let rows = ((h / 0.38).round() as usize).max(2);
+    let plinth = 0.06;
+    let pitch = (h - plinth - t) / rows as f64;
+    b.cuboid(Frame, [-hw + t, -hd + 0.012, 0.0], [hw - t, hd, plinth]);
+    let mut rng = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng % 10_000) as f64 / 10_000.0
+    };
+    let mut v = 0;
+    for r in 0..=rows {
+        let z = plinth + r as f64 * pitch;
+        b.cuboid(
+            Frame,
+            [-hw + t, -hd + 0.012, z.min(h - t)],
+            [hw - t, hd, (z + t).min(h)],
+        );
+        if r == rows {
+            break;
+        }
+        let mut x = -hw + t + 0.01;
+        let end = hw - t - 0.01;
+        let room = pitch - t - 0.02;
+        while x < end - 0.02 {
+            let bw = (item * (0.6 + 0.8 * next())).min(end - x);
+            if next() < 0.08 {
+                x += bw;
+                continue;
+            }
+            let bh = room * (0.65 + 0.3 * next());
+            let depth = (0.8 * b.d).min(0.3);
+            b.cuboid_v(
+                Books,
+                v,
+                [x, -hd + 0.014, z + t],
+                [x + bw - 0.002, -hd + 0.014 + depth, z + t + bh],
+            );
+            v += 1 + (next() * 3.0) as u32;
+            x += bw;
+        }
+    }
+}
+
+pub fn shelf(b: &mut Builder) {
+    shelves(b, 0.04, true);
+}
+
+pub fn rack(b: &mut Builder) {
+    shelves(b, 0.25, false);
+}
+
+pub fn floor_lamp(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    b.frustum(Metal, [0.0, 0.0, 0.0], 0.7 * hw, 0.7 * hd, 0.8, 0.03);
+    let sh = (0.22 * h).min(0.4);
+    b.cylinder(Metal, [0.0, 0.0, 0.03], 0.012, h - sh - 0.02);
+    b.frustum(Shade, [0.0, 0.0, h - sh], hw, hd, 0.7, sh);
+    b.cylinder(Light, [0.0, 0.0, h - sh - 0.03], 0.03, 0.04);
+}
+
+pub fn table_lamp(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zb = 0.42 * h;
+    b.cylinder(Metal, [0.0, 0.0, 0.0], 0.45 * hw.min(hd), 0.02);
+    b.ellipsoid(
+        Body,
+        [0.0, 0.0, zb / 2.0 + 0.01],
+        [0.55 * hw, 0.55 * hd, zb / 2.0],
+    );
+    b.cylinder(Metal, [0.0, 0.0, zb], 0.008, 0.12 * h);
+    let sh = 0.45 * h;
+    b.frustum(Shade, [0.0, 0.0, h - sh], hw, hd, 0.65, sh);
+}
+
+pub fn rug(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let bw = (0.08 * b.w.min(b.d)).min(0.15);
+    b.cuboid(Cushion, [-hw, -hd, 0.0], [hw, -hd + bw, h]);
+    b.cuboid(Cushion, [-hw, hd - bw, 0.0], [hw, hd, h]);
+    b.cuboid(Cushion, [-hw, -hd + bw, 0.0], [-hw + bw, hd - bw, h]);
+    b.cuboid(Cushion, [hw - bw, -hd + bw, 0.0], [hw, hd - bw, h]);
+    b.cuboid(Upholstery, [-hw + bw, -hd + bw, 0.0], [hw - bw, hd - bw, h]);
+}
+
+/// Base cabinets with doors and a top: the top's thickness is `top`.
+fn base_cabinets(b: &mut Builder, top_z: f64) {
+    let (hw, hd) = b.half();
+    let face = hd - 0.045;
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, -hd, 0.0],
+        [hw - 0.02, face - 0.04, 0.09],
+    );
+    b.cuboid(Body, [-hw, -hd, 0.09], [hw, face, top_z]);
+    let doors = ((b.w / 0.55).round() as usize).max(1);
+    let dw = (b.w - 0.01) / doors as f64;
+    for i in 0..doors {
+        let x0 = -hw + 0.005 + i as f64 * dw;
+        b.cuboid(
+            Door,
+            [x0 + 0.004, face, 0.1],
+            [x0 + dw - 0.004, hd - 0.025, top_z - 0.01],
+        );
+        let xc = x0 + dw / 2.0;
+        b.cuboid(
+            Handle,
+            [xc - 0.07, hd - 0.025, top_z - 0.07],
+            [xc + 0.07, hd - 0.01, top_z - 0.055],
+        );
+    }
+}
+
+pub fn counter(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    base_cabinets(b, h - 0.04);
+    b.cuboid(Top, [-hw, -hd, h - 0.04], [hw, hd, h]);
+}
+
+pub fn sink(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    // A vessel basin on the counter (bathroom) or an inset tub with a rim (kitchen).
+    let bowl = (0.16 * h).min(0.15);
+    let zt = h - bowl;
+    base_cabinets(b, zt - 0.035);
+    b.cuboid(Top, [-hw, -hd, zt - 0.035], [hw, hd, zt]);
+    let (rx, ry) = ((0.3 * b.w).min(0.3), (0.32 * b.d).min(0.22));
+    let yc = 0.05 * b.d;
+    let profile = vec![
+        [0.6 * rx, 0.0],
+        [rx, bowl * 0.7],
+        [rx, bowl],
+        [0.9 * rx, bowl],
+        [0.55 * rx, 0.02],
+        [0.0, 0.02],
+    ];
+    b.revolved(Canvas, 0, [0.0, yc, zt], IDENTITY, ry / rx, profile);
+    let yf = yc - ry - 0.05;
+    b.cylinder(
+        Metal,
+        [0.0, yf, zt],
+        0.018,
+        bowl + 0.1_f64.min(h - zt - bowl) - 0.005,
+    );
+    b.rod(
+        Metal,
+        [0.0, yf, h - 0.02],
+        [0.0, yf + 0.12, h - 0.02],
+        0.012,
+    );
+}
+
+pub fn fireplace(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let mantel = 0.06;
+    b.cuboid(
+        Body,
+        [-hw + 0.05, -hd, 0.0],
+        [hw - 0.05, hd - 0.12, h - mantel],
+    );
+    b.cuboid(Top, [-hw, -hd, h - mantel], [hw, hd - 0.05, h]);
+    b.cuboid(Body, [-hw + 0.02, -hd, 0.0], [hw - 0.02, hd, 0.08]);
+    let (ow, oh) = (0.55 * b.w, 0.6 * (h - mantel));
+    b.cuboid(
+        Interior,
+        [-ow / 2.0, hd - 0.125, 0.08],
+        [ow / 2.0, hd - 0.115, 0.08 + oh],
+    );
+    for k in 0..3 {
+        let x = (k as f64 - 1.0) * 0.12 * b.w;
+        b.ellipsoid(Light, [x, hd - 0.2, 0.16], [0.05 * b.w, 0.04, 0.07 * h]);
+    }
+}
+
+pub fn piano(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zk = 0.58 * h.min(1.25);
+    let body_front = -hd + 0.55 * b.d;
+    b.cuboid(Body, [-hw, -hd, 0.0], [hw, body_front, h]);
+    // Keyboard shelf, white and black keys, legs under it.
+    b.cuboid(
+        Body,
+        [-hw, body_front, zk - 0.08],
+        [hw, hd - 0.02, zk - 0.02],
+    );
+    b.cuboid(
+        Keys,
+        [-hw + 0.08, body_front, zk - 0.02],
+        [hw - 0.08, hd - 0.04, zk],
+    );
+    let n = ((b.w - 0.16) / 0.0235 * 5.0 / 7.0) as usize;
+    let kw = (b.w - 0.16) / n as f64;
+    for i in 0..n {
+        if [1, 3, 6, 8, 10].contains(&(i % 12)) || i % 2 == 1 {
+            continue;
+        }
+        let x = -hw + 0.08 + (i as f64 + 0.75) * kw;
+        b.cuboid(
+            BlackKeys,
+            [x, body_front + 0.01, zk],
+            [x + 0.6 * kw, body_front + 0.09, zk + 0.012],
+        );
+    }
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - 0.05);
+        b.cuboid(Frame, [x - 0.03, hd - 0.06, 0.0], [x + 0.03, hd, zk - 0.08]);
+    }
+    b.cuboid(
+        Frame,
+        [-0.25 * b.w, body_front, 0.08],
+        [0.25 * b.w, body_front + 0.04, 0.12],
+    );
+}
+
+pub fn grand_piano(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zb = 0.6 * h;
+    let kd = 0.25;
+    // Curved case behind the keyboard (keyboard at +y).
+    let (rx, ry) = (hw, (b.d - kd) / 2.0);
+    let yc = hd - kd - ry;
+    b.frustum(Body, [0.0, yc, zb], rx, ry, 1.0, h - zb);
+    b.cuboid(Body, [-hw, hd - kd - 0.1, zb], [hw, hd - 0.05, zb + 0.12]);
+    b.cuboid(
+        Keys,
+        [-hw + 0.1, hd - kd, zb + 0.1],
+        [hw - 0.1, hd - 0.03, zb + 0.12],
+    );
+    for (x, y) in [
+        (-hw + 0.08, hd - kd),
+        (hw - 0.08, hd - kd),
+        (0.0, -hd + 0.1),
+    ] {
+        b.cylinder(Frame, [x, y, 0.0], 0.05, zb);
+    }
+    b.cuboid(Frame, [-0.12, hd - 0.2, 0.0], [0.12, hd - 0.1, 0.05]);
+}
+
+pub fn bathtub(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let rim = 0.05;
+    let profile = vec![
+        [0.0, 0.06],
+        [0.8 * hw, 0.06],
+        [hw, h],
+        [hw - rim, h],
+        [0.85 * (hw - rim), 0.2 * h],
+        [0.0, 0.2 * h],
+    ];
+    b.revolved(Body, 0, [0.0, 0.0, 0.0], IDENTITY, hd / hw, profile);
+    for sx in [-1.0, 1.0] {
+        for sy in [-1.0, 1.0] {
+            b.cylinder(Metal, [sx * 0.6 * hw, sy * 0.55 * hd, 0.0], 0.03, 0.08);
+        }
+    }
+    b.revolved(
+        Canvas,
+        0,
+        [0.0, 0.0, 0.2 * h + 0.005],
+        IDENTITY,
+        hd / hw,
+        frustum_profile(0.8 * (hw - rim), 0.8 * (hw - rim), 0.002),
+    );
+}
+
+pub fn toilet(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zs = 0.42_f64.min(0.52 * h);
+    let tank_d = 0.2 * b.d;
+    b.cuboid(Body, [-hw, -hd, zs - 0.05], [hw, -hd + tank_d, h]);
+    b.cuboid(Top, [-hw, -hd, h - 0.03], [hw, -hd + tank_d + 0.01, h]);
+    let yc = -hd + tank_d + 0.5 * (b.d - tank_d) - 0.01;
+    let (rx, ry) = (hw * 0.95, 0.5 * (b.d - tank_d) - 0.01);
+    b.frustum(
+        Body,
+        [0.0, yc - 0.05, 0.0],
+        0.5 * rx,
+        0.5 * ry,
+        1.2,
+        zs * 0.7,
+    );
+    let profile = vec![
+        [0.6 * rx, 0.0],
+        [rx, 0.75 * (zs - 0.7 * zs)],
+        [rx, zs * 0.3 - 0.02],
+        [0.7 * rx, zs * 0.3 - 0.02],
+        [0.4 * rx, 0.0],
+        [0.0, 0.0],
+    ];
+    b.revolved(Body, 0, [0.0, yc, zs * 0.7], IDENTITY, ry / rx, profile);
+    let seat = vec![[rx, 0.0], [rx, 0.02], [0.68 * rx, 0.02], [0.68 * rx, 0.0]];
+    b.revolved(Top, 0, [0.0, yc, zs - 0.02], IDENTITY, ry / rx, seat);
+}
