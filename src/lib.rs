@@ -6,5 +6,6 @@ pub mod camera;
 pub mod diffusion;
 pub mod gpu;
 pub mod plan;
+pub mod scene;
 pub mod splat;
 pub mod util;

@@ -1,6 +1,8 @@
 //! Pinhole cameras in the 3DGS/COLMAP convention (x right, y down, z forward; principal point at
 //! the image centre; pixel (i, j) centred at (i + 0.5, j + 0.5)) and the INRIA `cameras.json` format.
 //! Never imports `ash`.
+pub mod scene;
+
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
