@@ -1,7 +1,8 @@
-//! Renders the draft environment of a 5 x 4 x 2.8 m living room from four stage-1 cameras and of
-//! a 20 x 20 m garden from four outdoor stage-1 cameras, 256² each, into one contact sheet:
-//! `cargo run --release --example env_preview [out.png] [scene text]` (default /tmp/env_preview.png;
-//! the top row is indoor, the bottom outdoor).
+//! Renders draft environments into one contact sheet of 256² views, a row per scene:
+//! `cargo run --release --example env_preview [out.png] [scene text]` (default
+//! /tmp/env_preview.png). Rows: a 5 x 4 x 2.8 m room (the text, default "a cozy living room")
+//! from four stage-1 cameras; a bar with brick walls and a marble floor from four floor-viewing
+//! stage-3 cameras; a 20 x 20 m garden and a beach at sunset from four outdoor stage-1 cameras.
 use dreamscene::camera::scene::{stage_cameras, SceneBox, Stage};
 use dreamscene::gpu::Context;
 use dreamscene::plan::spec::SceneType;
@@ -38,8 +39,18 @@ fn main() -> anyhow::Result<()> {
             [5.0, 4.0, 2.8],
         ),
         (
+            SceneType::Indoor,
+            "a bar with brick walls and a marble floor".to_string(),
+            [5.0, 4.0, 2.8],
+        ),
+        (
             SceneType::Outdoor,
             "a garden".to_string(),
+            [20.0, 20.0, 10.0],
+        ),
+        (
+            SceneType::Outdoor,
+            "a beach at sunset".to_string(),
             [20.0, 20.0, 10.0],
         ),
     ];
@@ -58,8 +69,15 @@ fn main() -> anyhow::Result<()> {
             room: *room,
             objects: vec![],
         };
-        let cams = stage_cameras(Stage::One, &scene, 4, SIZE, SIZE, 3);
-        for (k, cam) in cams.iter().enumerate() {
+        // Four views spread around the room: every other sector of stage 1 (every third
+        // outdoors, where there are twelve); the second row from stage 3, which looks down more.
+        let (stage, step) = match (row, st) {
+            (1, _) => (Stage::Three, 1),
+            (_, SceneType::Indoor) => (Stage::One, 2),
+            (_, SceneType::Outdoor) => (Stage::One, 3),
+        };
+        let cams = stage_cameras(stage, &scene, 12, SIZE, SIZE, 3);
+        for (k, cam) in cams.iter().step_by(step).take(4).enumerate() {
             let img = raster.forward(&ctx, &g, cam, [0.0, 0.0, 0.0])?.read()?;
             for (i, c) in img.color.iter().enumerate() {
                 let (x, y) = (i as u32 % SIZE, i as u32 / SIZE);

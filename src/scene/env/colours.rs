@@ -16,7 +16,7 @@ pub enum Pattern {
     Tiles,
     /// Veined stone.
     Marble,
-    /// Running-bond bricks with mortar.
+    /// Running-bond bricks (stylised 30 x 12 cm) with mortar.
     Bricks,
     /// Small stones in offset rows with dark joints (cobblestone, paving).
     Cobbles,
@@ -377,7 +377,8 @@ pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed:
             }
         }
         Bricks => {
-            let (bw, bh, mortar) = (0.23, 0.075, 0.012);
+            // Stylised large bricks (30 x 12 cm): real 21.5 x 6.5 cm ones alias at the draft spacing.
+            let (bw, bh, mortar) = (0.30, 0.12, 0.02);
             let row = (v / bh).floor();
             let uu = u + 0.5 * bw * (row as i64 & 1) as f32;
             let col = (uu / bw).floor();
