@@ -18,13 +18,16 @@
 //! plane, so no camera sees through a wall or an object). An invalid pose is resampled with its
 //! offset scaled by 0.98 (1.02 when it fell inside the object it orbits), as the authors do, for
 //! at most [`MAX_TRIES`] tries; then the nearest valid point of a 0.2 m grid takes its place.
+mod paths;
+
+pub use paths::{explore_path, inference_circle, orbit};
+
 use super::Camera;
 use crate::plan::spec::{Layout, SceneType};
 use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
-use std::f64::consts::PI;
 
 /// Horizontal field of view of the scene cameras (the authors' 0.96 rad FoVx).
 pub const SCENE_FOV_X: f64 = 0.96;
@@ -71,12 +74,12 @@ impl SceneBox {
         }
     }
 
-    fn half(&self) -> [f64; 2] {
+    pub(crate) fn half(&self) -> [f64; 2] {
         [0.5 * self.room[0], 0.5 * self.room[1]]
     }
 
     /// Inscribed horizontal half-extent (the authors' `radius_trans_max`).
-    fn r_in(&self) -> f64 {
+    pub(crate) fn r_in(&self) -> f64 {
         self.half()[0].min(self.half()[1])
     }
 
@@ -88,7 +91,7 @@ impl SceneBox {
         }
     }
 
-    fn zmid(&self) -> f64 {
+    pub(crate) fn zmid(&self) -> f64 {
         0.5 * self.top()
     }
 }
@@ -160,16 +163,23 @@ struct Sampler<'a> {
     name: &'static str,
 }
 
-fn add(a: [f64; 3], b: [f64; 3], k: f64) -> [f64; 3] {
+pub(crate) fn add(a: [f64; 3], b: [f64; 3], k: f64) -> [f64; 3] {
     [a[0] + k * b[0], a[1] + k * b[1], a[2] + k * b[2]]
 }
 
-fn len(a: [f64; 3]) -> f64 {
+pub(crate) fn len(a: [f64; 3]) -> f64 {
     (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
 }
 
 /// A camera at `eye` looking at `target` with horizontal field of view `fov_x`.
-fn camera(eye: [f64; 3], target: [f64; 3], up: [f64; 3], w: u32, h: u32, fov_x: f64) -> Camera {
+pub(crate) fn camera(
+    eye: [f64; 3],
+    target: [f64; 3],
+    up: [f64; 3],
+    w: u32,
+    h: u32,
+    fov_x: f64,
+) -> Camera {
     let f = 0.5 * w as f64 / (0.5 * fov_x).tan();
     let fov_y = 2.0 * (0.5 * h as f64 / f).atan();
     Camera::look_at(eye, target, up, w, h, fov_y)
@@ -397,7 +407,7 @@ impl Sampler<'_> {
 }
 
 /// The nearest valid point to `p` on a 0.2 m grid (at heights from p's down to the margin).
-fn nearest_valid(scene: &SceneBox, p: [f64; 3]) -> Option<[f64; 3]> {
+pub(crate) fn nearest_valid(scene: &SceneBox, p: [f64; 3]) -> Option<[f64; 3]> {
     let [hx, hy] = scene.half();
     let step = 0.2;
     let (nx, ny) = ((hx / step) as i64, (hy / step) as i64);
@@ -503,118 +513,4 @@ pub fn stage_cameras(
         c.img_name = format!("{name}_{i:05}");
     }
     s.cams
-}
-
-/// The inference circle: `frames` cameras at mid height on the inscribed circle (radius
-/// R − 0.01, shrunk by 0.98 until at least half the poses are valid), looking at the centre;
-/// only valid poses are kept.
-pub fn inference_circle(scene: &SceneBox, frames: usize, width: u32, height: u32) -> Vec<Camera> {
-    let z = scene.zmid();
-    let mut r = scene.r_in() - 0.01;
-    let ring = |r: f64| -> Vec<[f64; 3]> {
-        (0..frames)
-            .map(|i| {
-                let a = 2.0 * PI * i as f64 / frames.max(1) as f64;
-                [r * a.sin(), r * a.cos(), z]
-            })
-            .collect()
-    };
-    let mut pts = ring(r);
-    for _ in 0..200 {
-        if 2 * pts.iter().filter(|p| valid_viewpoint(scene, **p)).count() >= frames {
-            break;
-        }
-        r *= 0.98;
-        pts = ring(r);
-    }
-    let cams = pts
-        .into_iter()
-        .filter(|p| valid_viewpoint(scene, *p))
-        .map(|p| {
-            camera(
-                p,
-                [0.0, 0.0, z],
-                [0.0, 0.0, 1.0],
-                width,
-                height,
-                SCENE_FOV_X,
-            )
-        });
-    named(cams.collect(), "circle")
-}
-
-fn named(mut cams: Vec<Camera>, name: &str) -> Vec<Camera> {
-    for (i, c) in cams.iter_mut().enumerate() {
-        c.id = i as u32;
-        c.img_name = format!("{name}_{i:04}");
-    }
-    cams
-}
-
-/// An evaluation path: a closed loop at eye height (1.5 m, lower in low rooms) through the room,
-/// each camera looking a quarter of the loop ahead (along and across the room); points that fall
-/// in an object move in or out along their radius, or to the nearest valid point. Outdoors it is
-/// a circle at 2/3 of the half-extent looking at the centre. Every camera is a valid viewpoint.
-pub fn explore_path(scene: &SceneBox, frames: usize, width: u32, height: u32) -> Vec<Camera> {
-    let indoor = scene.scene_type == SceneType::Indoor;
-    let eye = 1.5f64.min(0.55 * scene.room[2]).max(ROOM_MARGIN);
-    let [hx, hy] = scene.half();
-    let k = if indoor { 0.6 } else { 2.0 / 3.0 };
-    let at = |a: f64| [k * hx * a.sin(), k * hy * a.cos(), eye];
-    let mut cams = vec![];
-    for i in 0..frames {
-        let a = 2.0 * PI * i as f64 / frames.max(1) as f64;
-        let p = at(a);
-        let fixed = [1.0, 0.9, 1.1, 0.8, 1.2, 0.7, 1.3, 0.6, 0.5, 0.4, 0.3, 0.2]
-            .into_iter()
-            .map(|f| [p[0] * f, p[1] * f, eye])
-            .find(|q| valid_viewpoint(scene, *q))
-            .or_else(|| nearest_valid(scene, p))
-            .unwrap_or([0.0, 0.0, 0.5 * scene.room[2]]);
-        let target = if indoor {
-            let ahead = at(a + 0.5 * PI);
-            [ahead[0], ahead[1], 0.8 * eye]
-        } else {
-            [0.0, 0.0, 0.8 * eye]
-        };
-        let target = if len(add(target, fixed, -1.0)) > 0.3 {
-            target
-        } else {
-            [0.0, 0.0, 0.8 * eye]
-        };
-        cams.push(camera(
-            fixed,
-            target,
-            [0.0, 0.0, 1.0],
-            width,
-            height,
-            SCENE_FOV_X,
-        ));
-    }
-    named(cams, "explore")
-}
-
-/// `frames` cameras on a horizontal circle of `radius` around `target` at height `height`,
-/// looking at it, with horizontal field of view `fov_x` radians.
-pub fn orbit(
-    target: [f64; 3],
-    radius: f64,
-    height: f64,
-    frames: usize,
-    width: u32,
-    height_px: u32,
-    fov_x: f64,
-) -> Vec<Camera> {
-    let cams = (0..frames)
-        .map(|i| {
-            let a = 2.0 * PI * i as f64 / frames.max(1) as f64;
-            let eye = [
-                target[0] + radius * a.sin(),
-                target[1] + radius * a.cos(),
-                height,
-            ];
-            camera(eye, target, [0.0, 0.0, 1.0], width, height_px, fov_x)
-        })
-        .collect();
-    named(cams, "orbit")
 }
