@@ -2,6 +2,7 @@
 //! the image centre; pixel (i, j) centred at (i + 0.5, j + 0.5)) and the INRIA `cameras.json` format.
 //! Never imports `ash`.
 pub mod object;
+pub mod scene;
 
 use serde::{Deserialize, Serialize};
 use std::path::Path;
