@@ -3,6 +3,7 @@ mod common;
 use dreamscene::camera::Camera;
 use dreamscene::splat::raster::{BlendWidth, Rasterizer, RenderOutput};
 use dreamscene::splat::reference::{self, RefImage};
+use dreamscene::splat::reference_grad;
 use dreamscene::splat::Gaussians;
 
 fn front_camera(w: u32, h: u32) -> Camera {
@@ -16,8 +17,18 @@ fn front_camera(w: u32, h: u32) -> Camera {
     )
 }
 
-/// Largest absolute differences (colour, transmittance, depth / max depth) between GPU and CPU.
-fn compare(gpu: &RenderOutput, cpu: &RefImage) -> (f64, f64, f64) {
+/// Largest absolute differences (colour, transmittance, depth / max depth) between GPU and CPU,
+/// leaving out the pixels where a splat sits within 1e-5 of a blending cutoff (there f32 and f64
+/// may round to opposite sides: seen on an NVIDIA driver, whose `exp` differs from lavapipe's).
+/// Such pixels must be rare: at most one in 200.
+fn compare(gpu: &RenderOutput, cpu: &RefImage, g: &Gaussians, cam: &Camera) -> (f64, f64, f64) {
+    let skip = reference_grad::near_cutoff_pixels(g, cam, 1e-5);
+    let skipped = skip.iter().filter(|s| **s).count();
+    assert!(
+        skipped * 200 <= skip.len(),
+        "{skipped} of {} pixels near a cutoff",
+        skip.len()
+    );
     assert_eq!(gpu.color.len(), cpu.color.len());
     // A NaN difference (e.g. an output the kernel never wrote) counts as infinitely wrong;
     // f64::max alone would skip it.
@@ -26,6 +37,13 @@ fn compare(gpu: &RenderOutput, cpu: &RefImage) -> (f64, f64, f64) {
     let mut dt: f64 = 0.0;
     let mut dd: f64 = 0.0;
     for i in 0..gpu.color.len() {
+        assert!(
+            gpu.color[i].iter().all(|v| v.is_finite()),
+            "non-finite pixel {i}"
+        );
+        if skip[i] {
+            continue;
+        }
         for c in 0..3 {
             dc = worst(dc, (gpu.color[i][c] as f64 - cpu.color[i][c]).abs());
         }
@@ -34,10 +52,6 @@ fn compare(gpu: &RenderOutput, cpu: &RefImage) -> (f64, f64, f64) {
             (gpu.transmittance[i] as f64 - cpu.transmittance[i]).abs(),
         );
         dd = worst(dd, (gpu.depth[i] as f64 - cpu.depth[i]).abs() / 4.0);
-        assert!(
-            gpu.color[i].iter().all(|v| v.is_finite()),
-            "non-finite pixel {i}"
-        );
     }
     (dc, dt, dd)
 }
@@ -52,7 +66,7 @@ fn check_scene(
 ) -> RenderOutput {
     let gpu = r.render(ctx, g, cam, bg).unwrap();
     let cpu = reference::render(g, cam, bg.map(f64::from));
-    let (dc, dt, dd) = compare(&gpu, &cpu);
+    let (dc, dt, dd) = compare(&gpu, &cpu, g, cam);
     // f32 against f64: measured ~5e-7 on lavapipe; 2e-5 leaves room for other drivers.
     eprintln!("{what}: max diff colour {dc:e}, T {dt:e}, depth {dd:e}");
     assert!(
@@ -175,7 +189,7 @@ fn nan_and_inf_inputs_are_culled_without_poisoning_others() {
         clean.sh.drain(i * 12..(i + 1) * 12);
     }
     let cpu = reference::render(&clean, &cam, [1.0; 3]);
-    let (dc, dt, _) = compare(&out, &cpu);
+    let (dc, dt, _) = compare(&out, &cpu, &clean, &cam);
     assert!(dc < 2e-5 && dt < 2e-5, "colour {dc:e}, T {dt:e}");
     ctx.check_validation().unwrap();
 }
@@ -204,7 +218,7 @@ fn tile_with_100k_splats_renders_past_the_loop_limit() {
             "the tile holds {} splats",
             frame.max_tile_len
         );
-        let (dc, dt, dd) = compare(&gpu, &cpu);
+        let (dc, dt, dd) = compare(&gpu, &cpu, &g, &cam);
         assert!(
             dc < 2e-5 && dt < 2e-5 && dd < 2e-5,
             "{width:?}: colour {dc:e}, T {dt:e}, depth {dd:e}"

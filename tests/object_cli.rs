@@ -154,17 +154,17 @@ fn oracle_object_killed_and_resumed_matches_an_uninterrupted_run() {
             "--init",
             init_ply.to_str().unwrap(),
             "--iterations",
-            "60",
+            "30",
             "--resolution",
             "64",
             "--sh-degree",
             "0",
             "--recon-views",
-            "6",
+            "4",
             "--recon-passes",
-            "5",
+            "3",
             "--checkpoint-every",
-            "10",
+            "5",
             "--turntable",
             "0",
         ]
@@ -187,7 +187,7 @@ fn oracle_object_killed_and_resumed_matches_an_uninterrupted_run() {
     loop {
         if let Ok(text) = std::fs::read_to_string(&run_json) {
             let j: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
-            if j["iteration"].as_u64().unwrap_or(0) >= 30 {
+            if j["iteration"].as_u64().unwrap_or(0) >= 15 {
                 break;
             }
         }

@@ -102,11 +102,26 @@ pub fn backward(
 /// alpha = 0.99, T = 1e-4) at some pixel. Whether such a splat counts there depends on rounding,
 /// so f32 and f64 may legitimately disagree about its gradient; tests leave these out.
 pub fn near_cutoffs(g: &Gaussians, cam: &Camera, rel: f64) -> Vec<bool> {
+    let mut out = vec![false; g.len()];
+    cutoff_walk(g, cam, rel, |_, i| out[i] = true);
+    out
+}
+
+/// Pixels where some Gaussian sits within relative distance `rel` of a blending cutoff: where
+/// f32 and f64 may round to opposite sides and legitimately render different values.
+pub fn near_cutoff_pixels(g: &Gaussians, cam: &Camera, rel: f64) -> Vec<bool> {
+    let mut out = vec![false; (cam.width * cam.height) as usize];
+    cutoff_walk(g, cam, rel, |px, _| out[px] = true);
+    out
+}
+
+/// Walks every pixel's blend in the reference and calls `near(pixel, gaussian)` for each
+/// Gaussian within relative distance `rel` of a cutoff there.
+fn cutoff_walk(g: &Gaussians, cam: &Camera, rel: f64, mut near_at: impl FnMut(usize, usize)) {
     let tiles = r::tile_lists(g, cam, Cutoffs::Exact);
     let gx = cam.width.div_ceil(k::TILE) as usize;
     let ts = k::TILE as usize;
     let near = |v: f64, at: f64| (v / at - 1.0).abs() < rel;
-    let mut out = vec![false; g.len()];
     for y in 0..cam.height as usize {
         for x in 0..cam.width as usize {
             let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
@@ -123,7 +138,7 @@ pub fn near_cutoffs(g: &Gaussians, cam: &Camera, rel: f64) -> Vec<bool> {
                     || near(raw, k::ALPHA_MAX as f64)
                     || (alpha >= k::ALPHA_MIN as f64 && near(next, k::T_MIN as f64))
                 {
-                    out[p.index] = true;
+                    near_at(y * cam.width as usize + x, p.index);
                 }
                 if power > 0.0 || alpha < k::ALPHA_MIN as f64 {
                     continue;
@@ -135,7 +150,6 @@ pub fn near_cutoffs(g: &Gaussians, cam: &Camera, rel: f64) -> Vec<bool> {
             }
         }
     }
-    out
 }
 
 /// The blend backward: per-Gaussian screen-space gradients summed over all pixels.
