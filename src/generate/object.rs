@@ -154,7 +154,9 @@ fn formation_fit(cfg: &ObjectConfig) -> FitConfig {
         densify_from: 100.0 / 1500.0,
         densify_until: (1400.0 / 1500.0f64).min((it - 1.0) / it),
         densify_every: (cfg.iterations / 15).clamp(5, 100),
-        opacity_reset: 0.4,
+        // The authors reset opacities at step 600 of 1500; a short run (tests, quick checks)
+        // cannot grow them back, so it keeps them.
+        opacity_reset: if cfg.iterations >= 1000 { 0.4 } else { 0.0 },
         grad_threshold: 1e-4,
         percent_dense: 0.003,
         max_gaussians: cfg.max_gaussians,
