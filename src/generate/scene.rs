@@ -265,3 +265,66 @@ pub fn write_draft_scene(
         scene_gaussians: composed.len(),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::gcp::{layout, LayoutOptions};
+    use crate::plan::offline::plan_offline;
+
+    #[test]
+    fn instances_of_another_size_scale_the_category_ply() {
+        let spec = plan_offline("a living room with two armchairs");
+        let mut l = layout(&spec, LayoutOptions::seeded(0)).unwrap();
+        let chairs: Vec<usize> = (0..l.objects.len())
+            .filter(|&i| l.objects[i].category == "armchair")
+            .collect();
+        assert_eq!(chairs.len(), 2);
+        let base = spec.objects["armchair"].size;
+        l.objects[chairs[1]].size = [base[0] * 1.5, base[1], base[2] * 0.5];
+        let s = scene_file(
+            "p",
+            0,
+            &spec,
+            &l,
+            dir::Prior {
+                kind: "shape".into(),
+                models: None,
+            },
+        );
+        let by_id = |id: &str| s.objects.iter().find(|o| o.id == id).unwrap();
+        assert_eq!(by_id(&l.objects[chairs[0]].id).scale, [1.0; 3]);
+        let sc = by_id(&l.objects[chairs[1]].id).scale;
+        assert!((sc[0] - 1.5).abs() < 1e-12 && sc[1] == 1.0 && (sc[2] - 0.5).abs() < 1e-12);
+        assert!(s.objects.iter().all(|o| o.ply == object_ply(&o.category)));
+        assert_eq!(object_ply("coffee table"), "objects/coffee_table.ply");
+        assert!(s.validate().is_ok());
+    }
+
+    #[test]
+    fn resume_accepts_only_the_same_prompt_and_seed() {
+        let spec = plan_offline("a bedroom");
+        let l = layout(&spec, LayoutOptions::seeded(1)).unwrap();
+        let mut s = scene_file(
+            "a bedroom",
+            1,
+            &spec,
+            &l,
+            dir::Prior {
+                kind: "shape".into(),
+                models: None,
+            },
+        );
+        assert!(check_resume(&s, "a bedroom", 1).unwrap());
+        assert!(check_resume(&s, "a bedroom", 2)
+            .unwrap_err()
+            .to_string()
+            .contains("--seed 1"));
+        assert!(check_resume(&s, "a kitchen", 1)
+            .unwrap_err()
+            .to_string()
+            .contains("a bedroom"));
+        s.stages[1].done = false;
+        assert!(!check_resume(&s, "a bedroom", 1).unwrap());
+    }
+}
