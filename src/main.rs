@@ -207,6 +207,62 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Generate a scene from a sentence (or a dialogue): plan, lay out, make the objects and the
+    /// environment, compose them. Writes the scene directory: scene.json, spec.json,
+    /// layout.json, layout.png, objects/<category>.ply, environment.ply, scene.ply, renders/
+    /// (views along an exploring path, with cameras.json) and checkpoints/.
+    ///
+    /// Without diffusion models (or with --draft or --prior shape) the scene is a draft in
+    /// seconds: each object is its procedural shape prior and the environment its initial
+    /// surfaces, with no optimisation.
+    Generate {
+        /// What to build, e.g. "a cozy living room".
+        prompt: Option<String>,
+        /// Output scene directory (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+        /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
+        #[arg(long)]
+        dialogue: Option<PathBuf>,
+        /// Plan with an OpenAI-compatible chat endpoint instead of the offline planner.
+        #[arg(long, env = "DREAMSCENE_LLM_URL")]
+        llm_url: Option<String>,
+        /// Model name for the endpoint.
+        #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
+        llm_model: String,
+        /// Seconds to wait for each LLM answer.
+        #[arg(long, default_value_t = 120)]
+        llm_timeout: u64,
+        /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
+        #[arg(long)]
+        models: Option<PathBuf>,
+        /// auto (sd when models are found, else shape), sd, shape, or oracle:DIR (a reference
+        /// scene directory).
+        #[arg(long, default_value = "auto", value_parser = cli::generate::parse_scene_prior)]
+        prior: cli::object::PriorChoice,
+        /// Make the draft (shape priors and the initial environment, no optimisation) even when
+        /// models are found.
+        #[arg(long)]
+        draft: bool,
+        /// Environment optimisation iterations.
+        #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+        iterations: u32,
+        /// Formation (MTS) iterations per object.
+        #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+        object_iterations: u32,
+        /// Render size in pixels (square).
+        #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+        resolution: u32,
+        /// Views along the exploring path written to renders/ (0: none).
+        #[arg(long, default_value_t = 8)]
+        renders: usize,
+        /// Seed of the layout and the generation.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Continue an interrupted run in --out (same prompt and seed).
+        #[arg(long)]
+        resume: bool,
+    },
     /// Place the objects of a scene spec (spec.json) with graph-based constraint placement.
     ///
     /// Writes layout.json: every instance placed exactly once, collision-free, with the relations
@@ -389,17 +445,40 @@ fn run(cli: Cli) -> Result<()> {
             seed,
             out,
         } => {
-            let llm = llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
-                url,
-                model: llm_model,
-                api_key: std::env::var("OPENAI_API_KEY")
-                    .ok()
-                    .filter(|k| !k.is_empty()),
-                timeout: std::time::Duration::from_secs(llm_timeout.max(1)),
-                retries: 2,
-            });
+            let llm = llm_config(llm_url, llm_model, llm_timeout);
             plan(prompt, dialogue, llm, interactive, seed, &out)
         }
+        Command::Generate {
+            prompt,
+            out,
+            dialogue,
+            llm_url,
+            llm_model,
+            llm_timeout,
+            models,
+            prior,
+            draft,
+            iterations,
+            object_iterations,
+            resolution,
+            renders,
+            seed,
+            resume,
+        } => cli::generate::run(cli::generate::GenerateArgs {
+            prompt,
+            out,
+            dialogue,
+            llm: llm_config(llm_url, llm_model, llm_timeout),
+            models,
+            prior,
+            draft,
+            iterations,
+            object_iterations,
+            resolution,
+            renders,
+            seed,
+            resume,
+        }),
         Command::Object {
             prompt,
             out,
@@ -623,6 +702,35 @@ fn plan(
     seed: u64,
     out: &Path,
 ) -> Result<()> {
+    let text = plan_text(prompt, dialogue, interactive)?;
+    let (spec, l) = plan_to_dir(&text, llm.as_ref(), seed, out)?;
+    let n_rel = spec.relations.len();
+    println!(
+        "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
+        match spec.scene_type {
+            dreamscene::plan::spec::SceneType::Indoor => "indoor",
+            dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
+        },
+        l.room.size[0],
+        l.room.size[1],
+        l.objects.len(),
+        n_rel - l.unsatisfied.len(),
+        n_rel
+    );
+    println!(
+        "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
+        out.display()
+    );
+    Ok(())
+}
+
+/// The text to plan: the prompt, or the user turns of a dialogue file joined, after the
+/// interview when `interactive`. Never empty.
+pub(crate) fn plan_text(
+    prompt: Option<String>,
+    dialogue: Option<PathBuf>,
+    interactive: bool,
+) -> Result<String> {
     let text = match (prompt, dialogue) {
         (Some(p), None) => p,
         (None, Some(f)) => {
@@ -644,7 +752,7 @@ fn plan(
         (Some(_), Some(_)) => bail!("give a prompt or --dialogue, not both"),
         (None, None) if interactive => String::new(),
         (None, None) => {
-            bail!("give a prompt, e.g. dreamscene plan \"a cozy living room\" --out out/plan")
+            bail!("give a prompt (or --dialogue FILE), e.g. \"a cozy living room\"")
         }
     };
     let text = if interactive {
@@ -664,11 +772,22 @@ fn plan(
     if text.trim().is_empty() {
         bail!("the prompt is empty");
     }
-    let spec = match &llm {
-        None => dreamscene::plan::offline::plan_offline(&text),
+    Ok(text)
+}
+
+/// Plans `text` (offline, or with the LLM endpoint) and lays it out: writes spec.json,
+/// layout.json and layout.png into `out` (created); returns the spec and the layout.
+pub(crate) fn plan_to_dir(
+    text: &str,
+    llm: Option<&dreamscene::plan::llm::LlmConfig>,
+    seed: u64,
+    out: &Path,
+) -> Result<(SceneSpec, dreamscene::plan::spec::Layout)> {
+    let spec = match llm {
+        None => dreamscene::plan::offline::plan_offline(text),
         Some(cfg) => {
             eprintln!("asking {} ({})", cfg.url, cfg.model);
-            let (spec, report) = dreamscene::plan::llm::plan_llm(cfg, &text);
+            let (spec, report) = dreamscene::plan::llm::plan_llm(cfg, text);
             for w in &report.warnings {
                 eprintln!("warning: {w}");
             }
@@ -686,24 +805,24 @@ fn plan(
         &dreamscene::plan::draw::draw_layout(&l),
         &out.join("layout.png"),
     )?;
-    let n_rel = spec.relations.len();
-    println!(
-        "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
-        match spec.scene_type {
-            dreamscene::plan::spec::SceneType::Indoor => "indoor",
-            dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
-        },
-        l.room.size[0],
-        l.room.size[1],
-        l.objects.len(),
-        n_rel - l.unsatisfied.len(),
-        n_rel
-    );
-    println!(
-        "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
-        out.display()
-    );
-    Ok(())
+    Ok((spec, l))
+}
+
+/// The LLM endpoint settings, when a URL is given (the key comes from OPENAI_API_KEY).
+fn llm_config(
+    url: Option<String>,
+    model: String,
+    timeout: u64,
+) -> Option<dreamscene::plan::llm::LlmConfig> {
+    url.map(|url| dreamscene::plan::llm::LlmConfig {
+        url,
+        model,
+        api_key: std::env::var("OPENAI_API_KEY")
+            .ok()
+            .filter(|k| !k.is_empty()),
+        timeout: std::time::Duration::from_secs(timeout.max(1)),
+        retries: 2,
+    })
 }
 
 pub(crate) fn open_device() -> Result<Context> {
@@ -744,7 +863,7 @@ pub(crate) fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
 }
 
 /// Writes a PNG atomically (temporary file, then rename).
-fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
+pub(crate) fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
     let tmp = path.with_extension("png.tmp");
     img.save_with_format(&tmp, image::ImageFormat::Png)
         .with_context(|| format!("writing {}", path.display()))?;

@@ -42,7 +42,10 @@ fn object_without_models_writes_a_shape_prior_draft() {
     ]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
-    assert!(err.contains("draft") && err.contains("DREAMSCENE_MODELS"), "{err}");
+    assert!(
+        err.contains("draft") && err.contains("DREAMSCENE_MODELS"),
+        "{err}"
+    );
     let j = json(&out.join("object.json"));
     for k in [
         "prompt",
@@ -72,16 +75,38 @@ fn object_bad_input_gets_one_line_errors() {
     let out = tmp("bad");
     let o = out.to_str().unwrap();
     for (args, want) in [
-        (vec!["object", "a chair", "--out", o, "--size", "1,2"], "W,D,H"),
-        (vec!["object", "a chair", "--out", o, "--size", "1,-2,1"], "positive"),
-        (vec!["object", "a chair", "--out", o, "--prior", "magic"], "oracle:FILE"),
-        (vec!["object", "a chair", "--out", o, "--prior", "sd"], "model directory"),
         (
-            vec!["object", "a chair", "--out", o, "--prior", "oracle:/nonexistent.ply"],
+            vec!["object", "a chair", "--out", o, "--size", "1,2"],
+            "W,D,H",
+        ),
+        (
+            vec!["object", "a chair", "--out", o, "--size", "1,-2,1"],
+            "positive",
+        ),
+        (
+            vec!["object", "a chair", "--out", o, "--prior", "magic"],
+            "oracle:FILE",
+        ),
+        (
+            vec!["object", "a chair", "--out", o, "--prior", "sd"],
+            "model directory",
+        ),
+        (
+            vec![
+                "object",
+                "a chair",
+                "--out",
+                o,
+                "--prior",
+                "oracle:/nonexistent.ply",
+            ],
             "nonexistent.ply",
         ),
         (vec!["object", " ", "--out", o], "empty"),
-        (vec!["object", "a chair", "--out", o, "--filter-fraction", "1.5"], "fraction"),
+        (
+            vec!["object", "a chair", "--out", o, "--filter-fraction", "1.5"],
+            "fraction",
+        ),
     ] {
         let r = run(&args);
         let err = String::from_utf8_lossy(&r.stderr);
@@ -111,7 +136,13 @@ fn renders(ctx: &dreamscene::gpu::Context, ply: &Path) -> Vec<Vec<[f32; 3]>> {
     };
     dreamscene::camera::object::turntable(&frame, 4, 70.0, 64)
         .iter()
-        .map(|c| r.forward(ctx, &gg, c, [1.0; 3]).unwrap().read().unwrap().color)
+        .map(|c| {
+            r.forward(ctx, &gg, c, [1.0; 3])
+                .unwrap()
+                .read()
+                .unwrap()
+                .color
+        })
         .collect()
 }
 
@@ -191,7 +222,10 @@ fn oracle_object_killed_and_resumed_matches_an_uninterrupted_run() {
                 break;
             }
         }
-        assert!(child.try_wait().unwrap().is_none(), "finished before the kill");
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "finished before the kill"
+        );
         assert!(t0.elapsed().as_secs() < 600, "no checkpoint appeared");
         std::thread::sleep(std::time::Duration::from_millis(20));
     }

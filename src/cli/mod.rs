@@ -1,2 +1,3 @@
 //! Glue of the larger verbs, one file each.
+pub mod generate;
 pub mod object;

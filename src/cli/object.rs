@@ -83,7 +83,10 @@ pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
         .chars()
         .map(|c| if c.is_alphanumeric() { c } else { ' ' })
         .collect();
-    let padded = format!(" {} ", words.split_whitespace().collect::<Vec<_>>().join(" "));
+    let padded = format!(
+        " {} ",
+        words.split_whitespace().collect::<Vec<_>>().join(" ")
+    );
     let kb = KnowledgeBase::builtin();
     let mut best: Option<(&str, &dreamscene::plan::kb::ObjectKind)> = None;
     for (name, kind) in kb.names() {
@@ -212,7 +215,10 @@ pub fn run(a: ObjectArgs) -> Result<()> {
                     )
                     .map_err(anyhow::Error::msg)?;
                     if a.config.resolution % 8 != 0 {
-                        bail!("--resolution {}: Stable Diffusion needs a multiple of 8", cfg.resolution);
+                        bail!(
+                            "--resolution {}: Stable Diffusion needs a multiple of 8",
+                            cfg.resolution
+                        );
                     }
                     let text = if a.prompt.to_lowercase().starts_with("a dslr photo") {
                         a.prompt.clone()
@@ -239,8 +245,15 @@ pub fn run(a: ObjectArgs) -> Result<()> {
                 }
                 + 1;
             let mut progress = Progress::new(total, false);
-            let (g, report) =
-                generate_object(&ctx, &init, &frame, p.as_mut(), cfg, Some(&ck), &mut progress)?;
+            let (g, report) = generate_object(
+                &ctx,
+                &init,
+                &frame,
+                p.as_mut(),
+                cfg,
+                Some(&ck),
+                &mut progress,
+            )?;
             progress.finish();
             eprintln!(
                 "formation {:.1} s (gpu {:.1}, prior {:.1}, host {:.1}), filtering {:.1} s, \
@@ -273,7 +286,14 @@ pub fn run(a: ObjectArgs) -> Result<()> {
     dreamscene::util::write_atomic(&path, serde_json::to_string_pretty(&json)?.as_bytes())
         .with_context(|| format!("writing {}", path.display()))?;
     let renders = a.out.join("renders");
-    write_turntable(&ctx, &g, &frame, a.turntable, cfg.resolution.min(512), &renders)?;
+    write_turntable(
+        &ctx,
+        &g,
+        &frame,
+        a.turntable,
+        cfg.resolution.min(512),
+        &renders,
+    )?;
     println!(
         "wrote {} ({} Gaussians, {category}, prior {prior_name}), object.json and {} turntable \
          views in {} ({seconds:.1} s)",

@@ -6,3 +6,4 @@ pub mod filter;
 pub mod object;
 pub mod prior;
 pub mod progress;
+pub mod scene;

@@ -1,0 +1,161 @@
+//! `dreamscene generate`: a scene directory from a sentence. This build makes the draft (shape
+//! priors, initial environment, composition, renders along an exploring path); the optimising
+//! scene stages are refused with a one-line reason.
+use super::object::{models_dir, PriorChoice, NO_MODELS};
+use anyhow::{bail, Context as _, Result};
+use dreamscene::camera::scene::{explore_path, SceneBox};
+use dreamscene::camera::write_cameras;
+use dreamscene::generate::scene::{check_resume, write_draft_scene};
+use dreamscene::plan::llm::LlmConfig;
+use dreamscene::plan::spec::{Layout, SceneSpec};
+use dreamscene::scene::dir::read_scene;
+use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
+use dreamscene::splat::Gaussians;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// What `generate` was asked.
+pub struct GenerateArgs {
+    pub prompt: Option<String>,
+    pub out: PathBuf,
+    pub dialogue: Option<PathBuf>,
+    pub llm: Option<LlmConfig>,
+    pub models: Option<PathBuf>,
+    pub prior: PriorChoice,
+    pub draft: bool,
+    pub iterations: u32,
+    pub object_iterations: u32,
+    pub resolution: u32,
+    pub renders: usize,
+    pub seed: u64,
+    pub resume: bool,
+}
+
+/// `--prior` for a scene: auto, sd, shape or oracle:DIR (a reference scene directory).
+pub fn parse_scene_prior(s: &str) -> Result<PriorChoice, String> {
+    super::object::parse_prior(s)
+        .map_err(|_| format!("'{s}': expected auto, sd, shape or oracle:DIR (a scene directory)"))
+}
+
+/// The background of the renders: the environment encloses the views, so it barely shows.
+const BACKGROUND: [f32; 3] = [0.0; 3];
+
+pub fn run(a: GenerateArgs) -> Result<()> {
+    let start = Instant::now();
+    let models = models_dir(a.models.as_deref());
+    let draft = match (&a.prior, a.draft) {
+        (_, true) | (PriorChoice::Shape, _) => true,
+        (PriorChoice::Auto, _) => models.is_none(),
+        (PriorChoice::Sd, _) if models.is_none() => bail!(
+            "--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS); --draft \
+             makes a draft scene without one"
+        ),
+        (PriorChoice::Sd | PriorChoice::Oracle(_), _) => false,
+    };
+    if !draft {
+        bail!(
+            "the optimising scene stages (object formation, {} iterations, and environment \
+             training, {} iterations, with the {} prior) are not available in this build yet; \
+             --draft makes a draft scene from the shape priors",
+            a.object_iterations,
+            a.iterations,
+            match &a.prior {
+                PriorChoice::Oracle(_) => "oracle",
+                _ => "sd",
+            }
+        );
+    }
+    let text = crate::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
+    let out = &a.out;
+    let existing = out.join("scene.json");
+    let mut keep = false;
+    if a.resume && existing.is_file() {
+        let scene = read_scene(out).context("--resume")?;
+        if check_resume(&scene, &text, a.seed)? {
+            println!(
+                "{} is complete ({} objects); nothing to do",
+                out.display(),
+                scene.objects.len()
+            );
+            return Ok(());
+        }
+        keep = true;
+    }
+    if models.is_none() {
+        eprintln!("{NO_MODELS}");
+    } else {
+        eprintln!("--draft: a draft scene from the shape priors, without the diffusion models");
+    }
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let (spec, layout) = plan_or_reuse(&text, &a, keep)?;
+    eprintln!(
+        "plan: {} objects in {:.1} x {:.1} x {:.1} m ({} relations unsatisfied)",
+        layout.objects.len(),
+        layout.room.size[0],
+        layout.room.size[1],
+        layout.room.size[2],
+        layout.unsatisfied.len()
+    );
+    let report = write_draft_scene(out, &text, a.seed, &spec, &layout, keep, &mut |l| {
+        eprintln!("{l}")
+    })?;
+    let renders = out.join("renders");
+    if a.renders > 0 {
+        let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
+        render_explore(&g, &layout, a.renders, a.resolution, &renders)?;
+        eprintln!("renders: {} views along the exploring path", a.renders);
+    }
+    println!(
+        "draft scene: {} objects ({} categories), {} Gaussians ({} environment) in {:.1} s; \
+         wrote {d}/scene.json, {d}/scene.ply, {d}/objects/, {d}/environment.ply and {}",
+        report.scene.objects.len(),
+        report.object_gaussians.len(),
+        report.scene_gaussians,
+        report.environment_gaussians,
+        start.elapsed().as_secs_f64(),
+        if a.renders > 0 {
+            format!("{} views in {}", a.renders, renders.display())
+        } else {
+            "no renders".to_string()
+        },
+        d = out.display(),
+    );
+    Ok(())
+}
+
+/// The spec and layout: re-read from `out` when resuming and both are there (an LLM plan is
+/// not asked again), else planned afresh.
+fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpec, Layout)> {
+    let (spec_path, layout_path) = (a.out.join("spec.json"), a.out.join("layout.json"));
+    if resume && spec_path.is_file() && layout_path.is_file() {
+        let spec = SceneSpec::read(&spec_path)?;
+        let raw = std::fs::read_to_string(&layout_path)
+            .with_context(|| format!("reading {}", layout_path.display()))?;
+        let layout: Layout = serde_json::from_str(&raw)
+            .with_context(|| format!("{}: not a valid layout.json", layout_path.display()))?;
+        return Ok((spec, layout));
+    }
+    crate::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
+}
+
+/// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
+fn render_explore(
+    g: &Gaussians,
+    layout: &Layout,
+    count: usize,
+    res: u32,
+    dir: &Path,
+) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let cams = explore_path(&SceneBox::from_layout(layout), count, res, res);
+    write_cameras(&dir.join("cameras.json"), &cams)
+        .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
+    let ctx = crate::open_device()?;
+    let r = Rasterizer::new(&ctx)?;
+    let gg = GpuGaussians::upload(&ctx, g)?;
+    for cam in &cams {
+        let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
+        crate::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+    }
+    Ok(())
+}
