@@ -36,12 +36,12 @@ fn compare(gpu: &RenderOutput, cpu: &RefImage, g: &Gaussians, cam: &Camera) -> (
     let mut dc: f64 = 0.0;
     let mut dt: f64 = 0.0;
     let mut dd: f64 = 0.0;
-    for i in 0..gpu.color.len() {
+    for (i, &skip_pixel) in skip.iter().enumerate() {
         assert!(
             gpu.color[i].iter().all(|v| v.is_finite()),
             "non-finite pixel {i}"
         );
-        if skip[i] {
+        if skip_pixel {
             continue;
         }
         for c in 0..3 {
