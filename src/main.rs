@@ -256,6 +256,12 @@ enum Command {
         /// Views along the exploring path written to renders/ (0: none).
         #[arg(long, default_value_t = 8)]
         renders: usize,
+        /// Passes of the scene's reconstructive stage over its 80 views.
+        #[arg(long, default_value_t = 25)]
+        recon_passes: u32,
+        /// Passes of each object's reconstruction fit over its 20 views.
+        #[arg(long, default_value_t = 40)]
+        object_recon_passes: u32,
         /// Seed of the layout and the generation.
         #[arg(long, default_value_t = 0)]
         seed: u64,
@@ -462,6 +468,8 @@ fn run(cli: Cli) -> Result<()> {
             object_iterations,
             resolution,
             renders,
+            recon_passes,
+            object_recon_passes,
             seed,
             resume,
         } => cli::generate::run(cli::generate::GenerateArgs {
@@ -476,6 +484,8 @@ fn run(cli: Cli) -> Result<()> {
             object_iterations,
             resolution,
             renders,
+            recon_passes,
+            object_recon_passes,
             seed,
             resume,
         }),

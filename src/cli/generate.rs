@@ -27,6 +27,9 @@ pub struct GenerateArgs {
     pub object_iterations: u32,
     pub resolution: u32,
     pub renders: usize,
+    /// Passes of the scene's and the objects' reconstruction fits.
+    pub recon_passes: u32,
+    pub object_recon_passes: u32,
     pub seed: u64,
     pub resume: bool,
 }
@@ -52,19 +55,6 @@ pub fn run(a: GenerateArgs) -> Result<()> {
         ),
         (PriorChoice::Sd | PriorChoice::Oracle(_), _) => false,
     };
-    if !draft {
-        bail!(
-            "the optimising scene stages (object formation, {} iterations, and environment \
-             training, {} iterations, with the {} prior) are not available in this build yet; \
-             --draft makes a draft scene from the shape priors",
-            a.object_iterations,
-            a.iterations,
-            match &a.prior {
-                PriorChoice::Oracle(_) => "oracle",
-                _ => "sd",
-            }
-        );
-    }
     let text = crate::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let existing = out.join("scene.json");
@@ -81,12 +71,15 @@ pub fn run(a: GenerateArgs) -> Result<()> {
         }
         keep = true;
     }
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    if !draft {
+        return full(&a, &text, models.as_deref(), start);
+    }
     if models.is_none() {
         eprintln!("{NO_MODELS}");
     } else {
         eprintln!("--draft: a draft scene from the shape priors, without the diffusion models");
     }
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let (spec, layout) = plan_or_reuse(&text, &a, keep)?;
     eprintln!(
         "plan: {} objects in {:.1} x {:.1} x {:.1} m ({} relations unsatisfied)",
@@ -119,6 +112,129 @@ pub fn run(a: GenerateArgs) -> Result<()> {
             "no renders".to_string()
         },
         d = out.display(),
+    );
+    Ok(())
+}
+
+/// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling,
+/// the three environment stages, then scene.json, scene.ply and the renders.
+fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> Result<()> {
+    use dreamscene::generate::object::ObjectConfig;
+    use dreamscene::generate::scene_stages::{
+        generate_scene, OracleScenePriors, SceneConfig, ScenePriors, SdScenePriors,
+    };
+    let out = &a.out;
+    let ctx = crate::open_device()?;
+    // The oracle regenerates its reference scene from the reference's own plan and layout.
+    if let PriorChoice::Oracle(dir) = &a.prior {
+        for f in ["spec.json", "layout.json"] {
+            let (from, to) = (dir.join(f), out.join(f));
+            if !(a.resume && to.is_file()) {
+                std::fs::copy(&from, &to).with_context(|| {
+                    format!("the oracle's reference scene: copying {}", from.display())
+                })?;
+            }
+        }
+    }
+    let resume_plan = a.resume || matches!(a.prior, PriorChoice::Oracle(_));
+    let (spec, layout) = plan_or_reuse(text, a, resume_plan)?;
+    let mut priors: Box<dyn ScenePriors> = match &a.prior {
+        PriorChoice::Oracle(dir) => Box::new(OracleScenePriors::new(&ctx, dir)),
+        _ => {
+            let dir = models.expect("checked by the caller");
+            let sd = dreamscene::diffusion::model::StableDiffusion::open(dir, &Default::default())
+                .map_err(anyhow::Error::msg)?;
+            Box::new(SdScenePriors(dreamscene::generate::prior::SdPrior::new(
+                sd, text, None,
+            )))
+        }
+    };
+    if a.resolution % 8 != 0 {
+        bail!(
+            "--resolution {}: the priors need a multiple of 8",
+            a.resolution
+        );
+    }
+    let cfg = SceneConfig {
+        iterations: a.iterations,
+        object: ObjectConfig {
+            iterations: a.object_iterations,
+            resolution: a.resolution,
+            sh_degree: 1,
+            seed: a.seed,
+            recon_passes: a.object_recon_passes,
+            ..ObjectConfig::default()
+        },
+        resolution: a.resolution,
+        recon_passes: a.recon_passes,
+        seed: a.seed,
+        ..SceneConfig::default()
+    };
+    eprintln!(
+        "plan: {} objects in {:.1} x {:.1} x {:.1} m; prior {}",
+        layout.objects.len(),
+        layout.room.size[0],
+        layout.room.size[1],
+        layout.room.size[2],
+        priors.kind()
+    );
+    let report = generate_scene(
+        &ctx,
+        out,
+        text,
+        &spec,
+        &layout,
+        priors.as_mut(),
+        &cfg,
+        a.resume,
+        &mut |l| eprintln!("{l}"),
+    )?;
+    let mut scene = dreamscene::generate::scene::scene_file(
+        text,
+        a.seed,
+        &spec,
+        &layout,
+        dreamscene::scene::dir::Prior {
+            kind: match &a.prior {
+                PriorChoice::Oracle(_) => "oracle".into(),
+                _ => "sd".into(),
+            },
+            models: match &a.prior {
+                PriorChoice::Oracle(d) => Some(d.display().to_string()),
+                _ => models.map(|m| m.display().to_string()),
+            },
+        },
+    );
+    for name in ["floor", "reconstruction"] {
+        scene.stages.push(dreamscene::scene::dir::Stage {
+            name: name.into(),
+            done: true,
+        });
+    }
+    let composed = dreamscene::scene::dir::compose_scene(out, &scene)?;
+    let scene_path = out.join("scene.ply");
+    dreamscene::splat::ply::write_ply(&scene_path, &composed)
+        .with_context(|| format!("writing {}", scene_path.display()))?;
+    dreamscene::scene::dir::write_scene(out, &scene)?;
+    if a.renders > 0 {
+        render_explore(
+            &composed,
+            &layout,
+            a.renders,
+            a.resolution,
+            &out.join("renders"),
+        )?;
+    }
+    println!(
+        "scene: {} objects ({} categories), {} Gaussians ({} environment); objects {:.0} s,          environment stages {:.0} s, {:.0} s in all; wrote {}",
+        layout.objects.len(),
+        report.objects.len(),
+        composed.len(),
+        report.environment,
+        report.seconds[0],
+        report.seconds[1],
+        start.elapsed().as_secs_f64(),
+        out.join("scene.json").display()
     );
     Ok(())
 }

@@ -7,3 +7,4 @@ pub mod object;
 pub mod prior;
 pub mod progress;
 pub mod scene;
+pub mod scene_stages;

@@ -209,6 +209,16 @@ impl SdPrior {
     }
 }
 
+impl SdPrior {
+    /// Changes the prompt (the next object, or the scene text); cached embeddings are dropped.
+    pub fn set_prompt(&mut self, prompt: &str) {
+        if prompt != self.prompt {
+            self.prompt = prompt.to_string();
+            self.cache.clear();
+        }
+    }
+}
+
 impl Prior for SdPrior {
     fn kind(&self) -> &'static str {
         "sd"

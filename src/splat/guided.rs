@@ -56,6 +56,7 @@ impl Trainer {
             scratch: None,
             batch_scratch: vec![],
             batch_pixels: 0,
+            trainable: None,
         })
     }
 
@@ -150,7 +151,7 @@ impl Trainer {
                 state,
             )?;
         }
-        if let Some(r) = trainable {
+        if let Some(r) = trainable.or_else(|| self.trainable.clone()) {
             self.zero_outside(&mut s, r);
         }
         self.adam
@@ -162,7 +163,7 @@ impl Trainer {
 
     /// Clears the parameter gradients of Gaussians outside `keep` so that Adam leaves them
     /// (their moments stay zero as long as they are never trained).
-    fn zero_outside(&self, s: &mut Stream, keep: std::ops::Range<u32>) {
+    pub(super) fn zero_outside(&self, s: &mut Stream, keep: std::ops::Range<u32>) {
         let n = self.gaussians.n;
         let k3 = sh_coeffs(self.gaussians.sh_degree) as u64 * 3;
         let arrays: [(&Buffer, u64); 5] = [

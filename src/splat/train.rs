@@ -219,6 +219,8 @@ pub struct Trainer {
     /// Per-view scratch of guided batches (colour gradient, backward state), `batch_pixels` each.
     pub(super) batch_scratch: Vec<(Buffer, Buffer)>,
     pub(super) batch_pixels: u64,
+    /// Only Gaussians in this index range are optimised (the rest keep their parameters).
+    pub trainable: Option<std::ops::Range<u32>>,
 }
 
 impl Trainer {
@@ -271,6 +273,7 @@ impl Trainer {
             scratch: None,
             batch_scratch: vec![],
             batch_pixels: 0,
+            trainable: None,
         })
     }
 
@@ -381,6 +384,9 @@ impl Trainer {
             &self.grads,
             state,
         )?;
+        if let Some(r) = self.trainable.clone() {
+            self.zero_outside(&mut s, r);
+        }
         self.adam
             .record(&mut s, &self.gaussians, &self.grads, &mut self.state, &lr)?;
         s.submit()?;
