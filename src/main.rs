@@ -262,6 +262,12 @@ enum Command {
         /// Passes of each object's reconstruction fit over its 20 views.
         #[arg(long, default_value_t = 40)]
         object_recon_passes: u32,
+        /// Gaussians of each object's shape prior (default: from its surface area, 30k-60k).
+        #[arg(long)]
+        object_gaussians: Option<usize>,
+        /// Environment Gaussians per square metre of wall, ceiling and floor (capped at 300k).
+        #[arg(long, default_value_t = 1500.0)]
+        env_density: f64,
         /// Seed of the layout and the generation.
         #[arg(long, default_value_t = 0)]
         seed: u64,
@@ -470,6 +476,8 @@ fn run(cli: Cli) -> Result<()> {
             renders,
             recon_passes,
             object_recon_passes,
+            object_gaussians,
+            env_density,
             seed,
             resume,
         } => cli::generate::run(cli::generate::GenerateArgs {
@@ -486,6 +494,8 @@ fn run(cli: Cli) -> Result<()> {
             renders,
             recon_passes,
             object_recon_passes,
+            object_gaussians,
+            env_density,
             seed,
             resume,
         }),

@@ -56,8 +56,8 @@ fn reference(dir: &Path) -> Layout {
     let spec = spec();
     let l = layout(&spec, LayoutOptions::seeded(3)).unwrap();
     std::fs::create_dir_all(dir).unwrap();
-    spec.write(&dir.join("spec.json")).unwrap();
-    std::fs::write(dir.join("layout.json"), serde_json::to_string(&l).unwrap()).unwrap();
+    std::fs::write(dir.join("spec.json"), serde_json::to_string(&spec).unwrap()).unwrap();
+    l.write(&dir.join("layout.json")).unwrap();
     write_draft_scene(dir, PROMPT, 0, &spec, &l, false, &mut |_| {}).unwrap();
     let env = dir.join("environment.ply");
     let mut g = read_ply(&env).unwrap();
@@ -89,17 +89,21 @@ fn generate(refdir: &Path, out: &Path, extra: &[&str]) -> Command {
         "--prior",
         &format!("oracle:{}", refdir.display()),
         "--iterations",
-        "120",
+        "200",
         "--object-iterations",
         "20",
         "--object-recon-passes",
         "4",
         "--recon-passes",
-        "4",
+        "8",
         "--resolution",
-        "64",
+        "128",
         "--renders",
         "0",
+        "--object-gaussians",
+        "4000",
+        "--env-density",
+        "400",
     ]);
     c.args(extra);
     c

@@ -30,6 +30,8 @@ pub struct GenerateArgs {
     /// Passes of the scene's and the objects' reconstruction fits.
     pub recon_passes: u32,
     pub object_recon_passes: u32,
+    pub object_gaussians: Option<usize>,
+    pub env_density: f64,
     pub seed: u64,
     pub resume: bool,
 }
@@ -149,6 +151,9 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             )))
         }
     };
+    if !(a.env_density.is_finite() && a.env_density > 0.0) {
+        bail!("--env-density {}: expected a positive number of Gaussians per m²", a.env_density);
+    }
     if a.resolution % 8 != 0 {
         bail!(
             "--resolution {}: the priors need a multiple of 8",
@@ -168,6 +173,11 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         resolution: a.resolution,
         recon_passes: a.recon_passes,
         seed: a.seed,
+        object_gaussians: a.object_gaussians,
+        env: dreamscene::scene::env::EnvOptions {
+            density: a.env_density,
+            ..Default::default()
+        },
         ..SceneConfig::default()
     };
     eprintln!(

@@ -51,6 +51,8 @@ pub struct SceneConfig {
     pub checkpoint_every: u32,
     pub seed: u64,
     pub env: EnvOptions,
+    /// Gaussians of each object's shape prior (`None`: from its area).
+    pub object_gaussians: Option<usize>,
 }
 
 impl Default for SceneConfig {
@@ -68,6 +70,7 @@ impl Default for SceneConfig {
             checkpoint_every: 100,
             seed: 0,
             env: EnvOptions::default(),
+            object_gaussians: None,
         }
     }
 }
@@ -81,14 +84,15 @@ impl SceneConfig {
     /// Everything a checkpoint must agree on.
     pub fn fingerprint(&self, prompt: &str, prior: &str) -> String {
         format!(
-            "{}|{}|{}|{}|{}|{}|{}",
+            "{}|{}|{}|{}|{}|{}|{}|{:?}",
             self.object.fingerprint(prompt, prior),
             self.iterations,
             self.resolution,
             self.batch,
             self.recon_views,
             self.recon_passes,
-            self.env.density
+            self.env.density,
+            self.object_gaussians
         )
     }
 }
@@ -290,7 +294,7 @@ pub fn generate_scene(
             *size,
             &description,
             &ShapeOptions {
-                gaussians: None,
+                gaussians: cfg.object_gaussians,
                 seed: cfg.seed,
             },
         )
