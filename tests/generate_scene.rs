@@ -79,7 +79,13 @@ fn reference(dir: &Path) -> Layout {
     l
 }
 
-fn generate(refdir: &Path, out: &Path, extra: &[&str]) -> Command {
+/// The oracle run; `quick` is the mechanics-only size (64², a few iterations) of the resume test.
+fn generate(refdir: &Path, out: &Path, quick: bool, extra: &[&str]) -> Command {
+    let (iterations, passes, res) = if quick {
+        ("40", "1", "64")
+    } else {
+        ("200", "8", "128")
+    };
     let mut c = Command::new(env!("CARGO_BIN_EXE_dreamscene"));
     c.env_remove("DREAMSCENE_MODELS").args([
         "generate",
@@ -89,15 +95,15 @@ fn generate(refdir: &Path, out: &Path, extra: &[&str]) -> Command {
         "--prior",
         &format!("oracle:{}", refdir.display()),
         "--iterations",
-        "200",
+        iterations,
         "--object-iterations",
         "20",
         "--object-recon-passes",
         "4",
         "--recon-passes",
-        "8",
+        passes,
         "--resolution",
-        "128",
+        res,
         "--renders",
         "0",
         "--object-gaussians",
@@ -150,7 +156,7 @@ fn oracle_scene_is_regenerated_from_its_own_layout() {
     let before = held_out(&ctx, &draft, &refdir, &l);
 
     let out = tmp("regen");
-    let o = generate(&refdir, &out, &[]).output().unwrap();
+    let o = generate(&refdir, &out, false, &[]).output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     let scene = read_scene(&out).unwrap();
@@ -166,7 +172,7 @@ fn scene_generation_killed_mid_stage_resumes() {
     let refdir = tmp("ref2");
     reference(&refdir);
     let out = tmp("cut");
-    let mut child = generate(&refdir, &out, &["--seed", "1"])
+    let mut child = generate(&refdir, &out, true, &["--seed", "1"])
         .stderr(std::process::Stdio::null())
         .spawn()
         .unwrap();
@@ -189,7 +195,7 @@ fn scene_generation_killed_mid_stage_resumes() {
     child.kill().unwrap();
     child.wait().unwrap();
     assert!(!out.join("scene.json").exists());
-    let o = generate(&refdir, &out, &["--seed", "1", "--resume"])
+    let o = generate(&refdir, &out, true, &["--seed", "1", "--resume"])
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
@@ -198,7 +204,7 @@ fn scene_generation_killed_mid_stage_resumes() {
     assert!(!err.contains("stage 1 done"), "stage 1 ran again: {err}");
     assert!(read_scene(&out).unwrap().stages.iter().all(|s| s.done));
     // Another seed is refused with the reason.
-    let o = generate(&refdir, &out, &["--seed", "2", "--resume"])
+    let o = generate(&refdir, &out, true, &["--seed", "2", "--resume"])
         .output()
         .unwrap();
     assert!(!o.status.success());

@@ -152,7 +152,10 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         }
     };
     if !(a.env_density.is_finite() && a.env_density > 0.0) {
-        bail!("--env-density {}: expected a positive number of Gaussians per m²", a.env_density);
+        bail!(
+            "--env-density {}: expected a positive number of Gaussians per m²",
+            a.env_density
+        );
     }
     if a.resolution % 8 != 0 {
         bail!(

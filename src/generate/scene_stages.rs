@@ -306,9 +306,7 @@ pub fn generate_scene(
         let c = Checkpoints {
             dir: &odir,
             resume: resume && odir.join("run.json").is_file(),
-            fingerprint: cfg
-                .object
-                .fingerprint(&description, &prior.kind().to_string()),
+            fingerprint: cfg.object.fingerprint(&description, prior.kind()),
         };
         log(&format!(
             "object {cat}: generating ({} iterations)",
@@ -412,12 +410,9 @@ pub fn generate_scene(
         let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ 0x5ce7e ^ k as u64);
         let mut t = Trainer::guided(ctx, &cloud, stage_fit(iters, cfg.seed ^ k as u64), 1.0)?;
         t.trainable = Some(trainable.clone());
-        if run.iteration > 0 && run.ply.is_some() {
-            t.restore(&cloud_path(&format!(
-                "{}.state",
-                run.ply.as_ref().expect("checked")
-            )))
-            .map_err(GenError::Checkpoint)?;
+        if let Some(ply) = run.ply.as_ref().filter(|_| run.iteration > 0) {
+            t.restore(&cloud_path(&format!("{ply}.state")))
+                .map_err(GenError::Checkpoint)?;
             rng.set_word_pos(run.rng);
             guide.set_rng_position(run.guide);
             log(&format!(
