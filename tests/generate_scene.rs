@@ -44,8 +44,8 @@ fn recolour(g: &mut Gaussians, f: impl Fn([f32; 3], [f32; 3]) -> [f32; 3]) {
     for i in 0..g.len() {
         let c: [f32; 3] = std::array::from_fn(|ch| 0.5 + SH_C0 as f32 * g.sh[i * k3 + ch]);
         let n = f(g.means[i], c);
-        for ch in 0..3 {
-            g.sh[i * k3 + ch] = (n[ch] - 0.5) / SH_C0 as f32;
+        for (ch, v) in n.iter().enumerate() {
+            g.sh[i * k3 + ch] = (v - 0.5) / SH_C0 as f32;
         }
     }
 }
