@@ -127,7 +127,7 @@ fn oracle_recovers_a_reference_object_on_held_out_views() {
     let ctx = common::gpu();
     let refg = reference(1);
     let mut oracle = OraclePrior::new(&ctx, &refg, None).unwrap();
-    let init = ball(20_000, 2);
+    let init = ball(40_000, 2);
     let before = held_out_psnr(&ctx, &init, &oracle, 128);
     let run = |cfg: &ObjectConfig, oracle: &mut OraclePrior| {
         generate_object(
@@ -155,9 +155,9 @@ fn oracle_recovers_a_reference_object_on_held_out_views() {
     );
     assert!(after >= 25.0, "held-out PSNR {after:.2} dB");
     assert!(removed >= 0.5, "filtering removed {:.1}%", 100.0 * removed);
-    // The same run without filtering. At this test's size (100 formation iterations, 20k
-    // Gaussians at 128²) filtering 60% costs about 1.5 dB after reconstruction (measured 27.1
-    // against 28.6 dB); the bound catches a filter that removes what the views need.
+    // The same run without filtering ends within 0.5 dB (measured: 27.45 against 27.68 dB with
+    // 55k Gaussians before filtering; from a 20k ball, which formation barely grows in 100
+    // iterations, the cloud is not redundant yet and 60% filtering costs 1.5 dB).
     let unfiltered = ObjectConfig {
         filter: None,
         ..cfg
@@ -166,7 +166,7 @@ fn oracle_recovers_a_reference_object_on_held_out_views() {
     let plain = held_out_psnr(&ctx, &g2, &oracle, 128);
     println!("without filtering: {plain:.2} dB ({} Gaussians)", g2.len());
     assert!(
-        after >= plain - 2.0,
+        after >= plain - 0.5,
         "filtered {after:.2} dB, unfiltered {plain:.2} dB"
     );
 }
