@@ -239,7 +239,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         )?;
     }
     println!(
-        "scene: {} objects ({} categories), {} Gaussians ({} environment); objects {:.0} s,          environment stages {:.0} s, {:.0} s in all; wrote {}",
+        "scene: {} objects ({} categories), {} Gaussians ({} environment); objects {:.0} s, environment stages {:.0} s, {:.0} s in all; wrote {}",
         layout.objects.len(),
         report.objects.len(),
         composed.len(),
