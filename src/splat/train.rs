@@ -219,6 +219,8 @@ pub struct Trainer {
     /// Per-view scratch of guided batches (colour gradient, backward state), `batch_pixels` each.
     pub(super) batch_scratch: Vec<(Buffer, Buffer)>,
     pub(super) batch_pixels: u64,
+    /// Whether guided steps record per-dispatch GPU times.
+    pub(super) timed: bool,
 }
 
 impl Trainer {
@@ -271,6 +273,7 @@ impl Trainer {
             scratch: None,
             batch_scratch: vec![],
             batch_pixels: 0,
+            timed: false,
         })
     }
 
