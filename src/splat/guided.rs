@@ -56,6 +56,7 @@ impl Trainer {
             scratch: None,
             batch_scratch: vec![],
             batch_pixels: 0,
+            frames: vec![],
             timed: false,
         })
     }
@@ -71,12 +72,23 @@ impl Trainer {
     }
 
     /// Renders the current Gaussians from `camera` over `background` and keeps the frame for
-    /// [`Trainer::apply`].
+    /// [`Trainer::apply`]. The frame comes from those handed back by [`Trainer::recycle`] when
+    /// there is one (no allocation once the sizes settle); the colour comes back in the render's
+    /// own submission.
     pub fn render_view(&mut self, camera: &Camera, background: [f32; 3]) -> Result<BatchView> {
-        let frame = self
-            .raster
-            .forward(&self.ctx, &self.gaussians, camera, background)?;
-        let color = frame.read()?.color;
+        let mut frame = match self.frames.pop() {
+            Some(f) => f,
+            None => Frame::new(&self.ctx)?,
+        };
+        self.raster.forward_into(
+            &self.ctx,
+            &self.gaussians,
+            camera,
+            background,
+            &mut frame,
+            true,
+        )?;
+        let color = frame.colour()?;
         Ok(BatchView {
             camera: camera.clone(),
             frame,
@@ -84,9 +96,9 @@ impl Trainer {
         })
     }
 
-    /// Takes back the frames of a batch that has been applied.
+    /// Takes back the frames of a batch that has been applied, for the next renders.
     pub fn recycle(&mut self, batch: Vec<BatchView>) {
-        drop(batch);
+        self.frames.extend(batch.into_iter().map(|v| v.frame));
     }
 
     /// Records per-dispatch GPU times: the frames of [`Trainer::render_view`] carry their

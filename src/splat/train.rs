@@ -5,7 +5,7 @@ use super::adam::{Adam, AdamConfig, AdamState, LearningRates, Moments};
 use super::backward::{Backward, GpuGrads};
 use super::cloud::{sh_coeffs, Gaussians, SH_C0};
 use super::loss;
-use super::raster::{GpuGaussians, Rasterizer};
+use super::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::camera::Camera;
 use crate::gpu::{Buffer, BufferUsage, Context, GpuError, Result, Stream};
 use glam::{DMat3, DVec3};
@@ -219,6 +219,8 @@ pub struct Trainer {
     /// Per-view scratch of guided batches (colour gradient, backward state), `batch_pixels` each.
     pub(super) batch_scratch: Vec<(Buffer, Buffer)>,
     pub(super) batch_pixels: u64,
+    /// Frames of earlier guided batches, rendered into again by [`Trainer::render_view`].
+    pub(super) frames: Vec<Frame>,
     /// Whether guided steps record per-dispatch GPU times.
     pub(super) timed: bool,
 }
@@ -273,6 +275,7 @@ impl Trainer {
             scratch: None,
             batch_scratch: vec![],
             batch_pixels: 0,
+            frames: vec![],
             timed: false,
         })
     }
