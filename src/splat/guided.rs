@@ -57,6 +57,7 @@ impl Trainer {
             batch_scratch: vec![],
             batch_pixels: 0,
             frames: vec![],
+            padded: vec![],
             timed: false,
         })
     }
@@ -162,7 +163,11 @@ impl Trainer {
                     g.len()
                 )));
             }
-            dl.write(g)?;
+            // The backward reads one `vec4` per pixel (rgb used), as the fit's loss writes it.
+            self.padded.clear();
+            self.padded
+                .extend(g.iter().map(|c| [c[0], c[1], c[2], 0.0]));
+            dl.write(&self.padded)?;
         }
         let lr = self.learning_rates();
         let mut s = if self.timed {

@@ -221,6 +221,8 @@ pub struct Trainer {
     pub(super) batch_pixels: u64,
     /// Frames of earlier guided batches, rendered into again by [`Trainer::render_view`].
     pub(super) frames: Vec<Frame>,
+    /// A guided view's colour gradient padded to the backward's `vec4` per pixel.
+    pub(super) padded: Vec<[f32; 4]>,
     /// Whether guided steps record per-dispatch GPU times.
     pub(super) timed: bool,
 }
@@ -276,6 +278,7 @@ impl Trainer {
             batch_scratch: vec![],
             batch_pixels: 0,
             frames: vec![],
+            padded: vec![],
             timed: false,
         })
     }
