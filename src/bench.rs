@@ -345,3 +345,108 @@ pub fn bench_diffusion(
         taesd_decode_ms,
     })
 }
+
+/// One formation iteration of object generation, split by where its time goes.
+#[derive(Debug, Clone, Serialize)]
+pub struct GenerateFigures {
+    pub gaussians: u32,
+    pub views: usize,
+    pub size: u32,
+    /// Median wall time of an iteration.
+    pub wall_ms: f64,
+    /// Median GPU time from timestamps: the views' forward passes, their backward passes and
+    /// Adam (the oracle's reference renders count as prior time).
+    pub kernel_ms: f64,
+    /// Median time in the prior (the oracle: its reference render and the guidance maths).
+    pub prior_ms: f64,
+    /// Median of wall − kernel − prior: allocation, readbacks, submissions, the loss and
+    /// bookkeeping on the host.
+    pub host_ms: f64,
+    /// host / kernel.
+    pub host_share: f64,
+    pub iterations_per_s: f64,
+    /// Whether the device writes timestamps (without them kernel time reads 0).
+    pub timestamps: bool,
+}
+
+/// The sizes `dreamscene bench --generate` measures: the 4 views at 256² (the
+/// oracle-recovery runs) and 512² (the paper's object resolution), with 20k Gaussians (an object
+/// early in formation) and 100k (a densified one).
+pub const GENERATE_SIZES: [(usize, u32); 4] =
+    [(20_000, 256), (20_000, 512), (100_000, 256), (100_000, 512)];
+
+/// A random cloud of `n` Gaussians filling the middle of `frame`, with scales shrinking as
+/// the count grows (as [`bench_scene`]).
+fn object_cloud(frame: &crate::camera::object::ObjectFrame, n: usize, seed: u64) -> Gaussians {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let c = frame.centre();
+    let lo = std::array::from_fn(|a| (c[a] - 0.35 * frame.size[a]) as f32);
+    let hi = std::array::from_fn(|a| (c[a] + 0.35 * frame.size[a]) as f32);
+    let scale = 0.01 * (20_000.0 / n.max(1) as f32).cbrt();
+    Gaussians::random(&mut rng, n, lo, hi, scale, 0)
+}
+
+/// Times formation iterations ([`crate::generate::object::formation_iteration`], the loop
+/// body of object generation) with the oracle prior, whose reference is another random
+/// cloud: `views` views of `size`² a step, `n` Gaussians, median of `runs` after two warm-ups.
+/// The iterations stay before the first densification, so `n` holds throughout.
+pub fn bench_generate(
+    ctx: &Context,
+    n: usize,
+    views: usize,
+    size: u32,
+    runs: usize,
+) -> std::result::Result<GenerateFigures, crate::generate::object::GenError> {
+    use crate::camera::object::{ObjectFrame, OrbitRanges};
+    use crate::generate::object::GenError;
+    use crate::generate::object::{
+        formation_guide, formation_iteration, formation_trainer, ObjectConfig,
+    };
+    use crate::generate::prior::OraclePrior;
+    let frame = ObjectFrame {
+        size: [1.0, 0.8, 0.9],
+    };
+    let cfg = ObjectConfig {
+        batch: views,
+        resolution: size,
+        sh_degree: 0,
+        checkpoint_every: 0,
+        ..ObjectConfig::default()
+    };
+    let reference = object_cloud(&frame, n, 11);
+    let mut prior = OraclePrior::new(ctx, &reference, None).map_err(GenError::Prior)?;
+    let mut t = formation_trainer(ctx, &object_cloud(&frame, n, 12), &frame, &cfg)?;
+    t.set_timed(true);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(13);
+    let mut guide = formation_guide(&cfg);
+    let ranges = OrbitRanges::default();
+    let (mut wall, mut kernel, mut prior_s, mut host) = (vec![], vec![], vec![], vec![]);
+    for i in 0..runs.max(1) + 2 {
+        let r = formation_iteration(
+            &mut t, &mut prior, &mut guide, &mut rng, &frame, &ranges, &cfg,
+        )?;
+        if i < 2 {
+            continue;
+        }
+        let k = r.kernels.total_ms();
+        let w = r.seconds * 1e3;
+        let p = r.prior_seconds * 1e3;
+        wall.push(w);
+        kernel.push(k);
+        prior_s.push(p);
+        host.push(w - k - p);
+    }
+    let (wall_ms, kernel_ms, host_ms) = (median(wall), median(kernel), median(host));
+    Ok(GenerateFigures {
+        gaussians: n as u32,
+        views,
+        size,
+        wall_ms,
+        kernel_ms,
+        prior_ms: median(prior_s),
+        host_ms,
+        host_share: host_ms / kernel_ms.max(1e-9),
+        iterations_per_s: 1e3 / wall_ms,
+        timestamps: ctx.info().timestamp_period_ns > 0.0,
+    })
+}

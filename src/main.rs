@@ -308,6 +308,10 @@ enum Command {
         /// Time the UNet (batches 1–3), text encoder and VAE of --models instead of the kernels.
         #[arg(long)]
         unet: bool,
+        /// Time one formation iteration of object generation (oracle prior, 4 views) at 256²
+        /// and 512² with 20k and 100k Gaussians, split into kernel, prior and host time.
+        #[arg(long, conflicts_with = "unet")]
+        generate: bool,
         /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
         #[arg(long, env = "DREAMSCENE_MODELS")]
         models: Option<PathBuf>,
@@ -592,6 +596,12 @@ fn run(cli: Cli) -> Result<()> {
             runs,
             ..
         } => bench_unet(json, models, provider, latent, runs),
+        Command::Bench {
+            json,
+            generate: true,
+            runs,
+            ..
+        } => bench_generate(json, runs),
         Command::Bench {
             json,
             gaussians,
@@ -1072,6 +1082,29 @@ fn bench_unet(
         println!("vae decode:          {:>12}", show(Some(f.vae_decode_ms)));
         println!("tiny ae encode:      {:>12}", show(f.taesd_encode_ms));
         println!("tiny ae decode:      {:>12}", show(f.taesd_decode_ms));
+    }
+    Ok(())
+}
+
+fn bench_generate(json: bool, runs: usize) -> Result<()> {
+    use dreamscene::bench::{bench_generate, GENERATE_SIZES};
+    let ctx = open_device()?;
+    let mut figures = vec![];
+    for (n, size) in GENERATE_SIZES {
+        let f = bench_generate(&ctx, n, 4, size, runs)?;
+        if !json {
+            println!(
+                "{:>7} gaussians {} x {size}²  {:>9.1} ms/it  kernel {:>8.1} ms  prior {:>8.1} ms  host {:>8.1} ms ({:.0}% of kernel)",
+                f.gaussians, f.views, f.wall_ms, f.kernel_ms, f.prior_ms, f.host_ms, 100.0 * f.host_share
+            );
+        }
+        figures.push(f);
+    }
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({ "device": ctx.info().name, "generate": figures })
+        );
     }
     Ok(())
 }

@@ -13,7 +13,7 @@ use crate::camera::object::{random_views, ring_views, sphere_views, ObjectFrame,
 use crate::diffusion::guidance::{MtsRange, MtsRule, MtsSettings, OBJECT_MTS, OBJECT_RECON};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::gpu::Context;
+use crate::gpu::{Context, Timings};
 use crate::splat::score::ScoreRule;
 use crate::splat::train::{FitConfig, Trainer, View};
 use crate::splat::Gaussians;
@@ -233,7 +233,7 @@ pub fn generate_object(
 ) -> Result<(Gaussians, ObjectReport), GenError> {
     let start = Instant::now();
     let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
-    let mut form_guide = guide(cfg, cfg.rule, OBJECT_MTS_FOR(cfg), 0x6d7473);
+    let mut form_guide = formation_guide(cfg);
     let mut recon_guide = guide(cfg, Rule::PseudoGt, OBJECT_RECON, 0x7265);
     let mut run = RunState::new(init.len());
     let mut trainer;
@@ -286,47 +286,20 @@ pub fn generate_object(
         };
         let ranges = OrbitRanges::default();
         while t.iteration() < cfg.iterations {
-            let t0 = Instant::now();
-            let step = t.iteration();
-            let want_degree = (step / cfg.sh_every.max(1)).min(cfg.sh_degree);
-            if t.device_gaussians().sh_degree < want_degree {
-                t.set_sh_degree(want_degree)?;
-            }
-            let views = random_views(frame, &ranges, step, cfg.batch, cfg.resolution, &mut rng);
-            let mut batch = vec![];
-            let mut grads = vec![];
-            let mut loss = 0.0;
-            let mut t_prior = 0.0;
-            for v in &views {
-                let bg = background(&mut rng, cfg.background_aug);
-                let bv = t.render_view(&v.camera, bg)?;
-                let tp = Instant::now();
-                let target = prior
-                    .target(
-                        &mut form_guide,
-                        &PriorView {
-                            camera: &v.camera,
-                            render: &bv.color,
-                            background: bg,
-                            azimuth: v.azimuth,
-                            elevation: v.elevation,
-                        },
-                        step,
-                    )
-                    .map_err(GenError::Prior)?;
-                t_prior += tp.elapsed().as_secs_f64();
-                let (l, g) = image_loss(&bv.color, &target, form_guide.settings.lambda);
-                loss += l / views.len() as f64;
-                grads.push(g);
-                batch.push(bv);
-            }
-            let tg = Instant::now();
-            t.apply(&batch, &grads, None)?;
-            let t_apply = tg.elapsed().as_secs_f64();
-            let all = t0.elapsed().as_secs_f64();
-            split[0] += t_apply;
-            split[1] += t_prior;
-            split[2] += all - t_apply - t_prior;
+            let r = formation_iteration(
+                &mut t,
+                prior,
+                &mut form_guide,
+                &mut rng,
+                frame,
+                &ranges,
+                cfg,
+            )?;
+            let all = r.seconds;
+            split[0] += r.apply_seconds;
+            split[1] += r.prior_seconds;
+            split[2] += all - r.apply_seconds - r.prior_seconds;
+            let loss = r.loss;
             stage_seconds[0] += all;
             progress.update(
                 t.iteration() as u64,
@@ -392,7 +365,7 @@ pub fn generate_object(
         // Pseudo-ground truth, made once from the filtered cloud (deterministic given the
         // guide's position, so a resumed run makes the same targets).
         recon_guide.set_rng_position(run.recon_guide);
-        let maker = Trainer::guided(ctx, &filtered, recon_fit(cfg), frame.extent())?;
+        let mut maker = Trainer::guided(ctx, &filtered, recon_fit(cfg), frame.extent())?;
         let mut views = vec![];
         for v in ring_views(frame, cfg.recon_views, cfg.resolution) {
             let bv = maker.render_view(&v.camera, [1.0; 3])?;
@@ -461,6 +434,100 @@ pub fn generate_object(
             formation_split: split,
         },
     ))
+}
+
+/// What one formation iteration took.
+#[derive(Debug, Clone, Default)]
+pub struct IterationReport {
+    /// The batch's mean loss.
+    pub loss: f64,
+    /// Wall time of the whole iteration.
+    pub seconds: f64,
+    /// Wall time of the prior's targets.
+    pub prior_seconds: f64,
+    /// Wall time of the backward passes and Adam ([`Trainer::apply`]).
+    pub apply_seconds: f64,
+    /// GPU times of the renders, backward passes and Adam (empty unless the trainer is timed,
+    /// [`Trainer::set_timed`]).
+    pub kernels: Timings,
+}
+
+/// The formation trainer for `init` (the authors' formation learning rates and schedule).
+pub fn formation_trainer(
+    ctx: &Context,
+    init: &Gaussians,
+    frame: &ObjectFrame,
+    cfg: &ObjectConfig,
+) -> Result<Trainer, GenError> {
+    Ok(Trainer::guided(
+        ctx,
+        init,
+        formation_fit(cfg),
+        frame.extent(),
+    )?)
+}
+
+/// The formation stage's guide (MTS over the run's length).
+pub fn formation_guide(cfg: &ObjectConfig) -> Guide {
+    guide(cfg, cfg.rule, OBJECT_MTS_FOR(cfg), 0x6d7473)
+}
+
+/// One formation iteration (the body of Algorithm 2's loop): raise the SH degree on schedule,
+/// draw `cfg.batch` random views with their backgrounds, render them, ask the prior for their
+/// targets, and apply the image loss's gradient in one Adam step.
+pub fn formation_iteration(
+    t: &mut Trainer,
+    prior: &mut dyn Prior,
+    guide: &mut Guide,
+    rng: &mut ChaCha8Rng,
+    frame: &ObjectFrame,
+    ranges: &OrbitRanges,
+    cfg: &ObjectConfig,
+) -> Result<IterationReport, GenError> {
+    let t0 = Instant::now();
+    let step = t.iteration();
+    let want_degree = (step / cfg.sh_every.max(1)).min(cfg.sh_degree);
+    if t.device_gaussians().sh_degree < want_degree {
+        t.set_sh_degree(want_degree)?;
+    }
+    let views = random_views(frame, ranges, step, cfg.batch, cfg.resolution, rng);
+    let mut batch = vec![];
+    let mut grads = vec![];
+    let mut report = IterationReport::default();
+    for v in &views {
+        let bg = background(rng, cfg.background_aug);
+        let bv = t.render_view(&v.camera, bg)?;
+        report
+            .kernels
+            .entries
+            .extend_from_slice(&bv.frame.timings.entries);
+        let tp = Instant::now();
+        let target = prior
+            .target(
+                guide,
+                &PriorView {
+                    camera: &v.camera,
+                    render: &bv.color,
+                    background: bg,
+                    azimuth: v.azimuth,
+                    elevation: v.elevation,
+                },
+                step,
+            )
+            .map_err(GenError::Prior)?;
+        report.prior_seconds += tp.elapsed().as_secs_f64();
+        let (l, g) = image_loss(&bv.color, &target, guide.settings.lambda);
+        report.loss += l / views.len() as f64;
+        grads.push(g);
+        batch.push(bv);
+    }
+    let ta = Instant::now();
+    let timings = t.apply(&batch, &grads, None)?;
+    report.apply_seconds = ta.elapsed().as_secs_f64();
+    report.kernels.entries.extend(timings.entries);
+    t.recycle(batch);
+    report.seconds = t0.elapsed().as_secs_f64();
+    Ok(report)
 }
 
 /// The formation range with the run's length as its period (T_end reaches its floor at the end).

@@ -20,9 +20,10 @@ use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
 use crate::diffusion::target::Guide;
 use crate::gpu::Context;
-use crate::splat::raster::{GpuGaussians, Rasterizer};
+use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
 use std::collections::HashMap;
+use std::sync::Mutex;
 
 /// The authors' negative prompt for objects.
 pub const NEGATIVE: &str = "oversaturated color, ugly, tiling, low quality, noisy, blurry, out of \
@@ -99,6 +100,8 @@ pub struct OraclePrior {
     reference: GpuGaussians,
     edit: Option<GpuGaussians>,
     sched: Schedule,
+    /// The frame the references are rendered into, reused from view to view.
+    frame: Mutex<Option<Frame>>,
 }
 
 impl OraclePrior {
@@ -114,6 +117,7 @@ impl OraclePrior {
             reference: up(reference)?,
             edit: edit.map(up).transpose()?,
             sched: Schedule::new(SchedulerConfig::sd21_base())?,
+            frame: Mutex::new(None),
         })
     }
 
@@ -128,12 +132,15 @@ impl OraclePrior {
         cam: &Camera,
         bg: [f32; 3],
     ) -> Result<Vec<[f32; 3]>, String> {
-        Ok(self
-            .raster
-            .forward(&self.ctx, g, cam, bg)
-            .and_then(|f| f.read())
-            .map_err(|e| e.to_string())?
-            .color)
+        let mut slot = self.frame.lock().unwrap_or_else(|e| e.into_inner());
+        let frame = match slot.as_mut() {
+            Some(f) => f,
+            None => slot.insert(Frame::new(&self.ctx).map_err(|e| e.to_string())?),
+        };
+        self.raster
+            .forward_into(&self.ctx, g, cam, bg, frame, true)
+            .and_then(|()| frame.colour())
+            .map_err(|e| e.to_string())
     }
 }
 

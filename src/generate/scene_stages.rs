@@ -459,6 +459,7 @@ pub fn generate_scene(
                 batch.push(bv);
             }
             t.apply(&batch, &grads, None)?;
+            t.recycle(batch);
             progress.update(
                 t.iteration() as u64,
                 &format!("stage {} loss {loss:.5}", k + 1),
@@ -502,7 +503,7 @@ pub fn generate_scene(
             Codec::Fast,
             cfg.seed ^ 0x3ec0,
         );
-        let maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
+        let mut maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
         let mut views = vec![];
         for cam in stage_cameras(
             Stage::Three,

@@ -8,7 +8,7 @@ use super::raster::{Frame, GpuGaussians, Rasterizer};
 use super::train::{FitConfig, Trainer};
 use super::{adam::Adam, adam::AdamConfig, adam::AdamState, backward::Backward};
 use crate::camera::Camera;
-use crate::gpu::{Buffer, BufferUsage, Context, GpuError, Result, Stream};
+use crate::gpu::{kernels, Buffer, BufferUsage, Context, GpuError, Result, Stream, Timings};
 use rand::SeedableRng;
 
 /// One rendered view of a batch, kept on the device until its gradient is applied.
@@ -57,6 +57,9 @@ impl Trainer {
             batch_scratch: vec![],
             batch_pixels: 0,
             trainable: None,
+            frames: vec![],
+            padded: vec![],
+            timed: false,
         })
     }
 
@@ -71,12 +74,23 @@ impl Trainer {
     }
 
     /// Renders the current Gaussians from `camera` over `background` and keeps the frame for
-    /// [`Trainer::apply`].
-    pub fn render_view(&self, camera: &Camera, background: [f32; 3]) -> Result<BatchView> {
-        let frame = self
-            .raster
-            .forward(&self.ctx, &self.gaussians, camera, background)?;
-        let color = frame.read()?.color;
+    /// [`Trainer::apply`]. The frame comes from those handed back by [`Trainer::recycle`] when
+    /// there is one (no allocation once the sizes settle); the colour comes back in the render's
+    /// own submission.
+    pub fn render_view(&mut self, camera: &Camera, background: [f32; 3]) -> Result<BatchView> {
+        let mut frame = match self.frames.pop() {
+            Some(f) => f,
+            None => Frame::new(&self.ctx)?,
+        };
+        self.raster.forward_into(
+            &self.ctx,
+            &self.gaussians,
+            camera,
+            background,
+            &mut frame,
+            true,
+        )?;
+        let color = frame.colour()?;
         Ok(BatchView {
             camera: camera.clone(),
             frame,
@@ -84,16 +98,30 @@ impl Trainer {
         })
     }
 
+    /// Takes back the frames of a batch that has been applied, for the next renders.
+    pub fn recycle(&mut self, batch: Vec<BatchView>) {
+        self.frames.extend(batch.into_iter().map(|v| v.frame));
+    }
+
+    /// Records per-dispatch GPU times: the frames of [`Trainer::render_view`] carry their
+    /// forward's and [`Trainer::apply`] returns the backward's and Adam's.
+    pub fn set_timed(&mut self, timed: bool) {
+        self.timed = timed;
+        self.raster.set_timed(timed);
+        self.backward.set_timed(timed);
+    }
+
     /// One Adam step from a batch: the gradient of the loss with respect to each view's rendered
     /// colour (`grads[i]`, row-major like the render) is carried back through every view, the
     /// parameter gradients summed, Adam applied once; then the densification schedule runs.
-    /// Gaussians outside `trainable` (when set) keep their parameters.
+    /// Gaussians outside `trainable` (when set) keep their parameters. Returns the GPU times of
+    /// the backward passes and Adam (empty unless [`Trainer::set_timed`]).
     pub fn apply(
         &mut self,
         batch: &[BatchView],
         grads: &[Vec<[f32; 3]>],
         trainable: Option<std::ops::Range<u32>>,
-    ) -> Result<()> {
+    ) -> Result<Timings> {
         if batch.len() != grads.len() || batch.is_empty() {
             return Err(bad(format!(
                 "{} views and {} gradients",
@@ -136,10 +164,24 @@ impl Trainer {
                     g.len()
                 )));
             }
-            dl.write(g)?;
+            // The backward reads one `vec4` per pixel (rgb used), as the fit's loss writes it.
+            self.padded.clear();
+            self.padded
+                .extend(g.iter().map(|c| [c[0], c[1], c[2], 0.0]));
+            dl.write(&self.padded)?;
         }
         let lr = self.learning_rates();
-        let mut s = Stream::new(&self.ctx)?;
+        let mut s = if self.timed {
+            // Room for every dispatch: each view's blend segments, its projection backward,
+            // and Adam's arrays.
+            let per_view: u32 = batch
+                .iter()
+                .map(|v| v.frame.max_tile_len.div_ceil(kernels::SEGMENT) + 8)
+                .sum();
+            Stream::timed(&self.ctx, per_view + 32)?
+        } else {
+            Stream::new(&self.ctx)?
+        };
         for (v, (dl, state)) in batch.iter().zip(&self.batch_scratch) {
             self.backward.record(
                 &mut s,
@@ -156,9 +198,10 @@ impl Trainer {
         }
         self.adam
             .record(&mut s, &self.gaussians, &self.grads, &mut self.state, &lr)?;
-        s.submit()?;
+        let timings = s.submit()?;
         self.iteration += 1;
-        self.after_step()
+        self.after_step()?;
+        Ok(timings)
     }
 
     /// Clears the parameter gradients of Gaussians outside `keep` so that Adam leaves them

@@ -9,6 +9,7 @@ use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings,
 };
 use bytemuck::{Pod, Zeroable};
+use std::sync::Mutex;
 
 /// Threads per workgroup of the per-Gaussian and per-intersection kernels.
 const WG: u32 = 128;
@@ -140,6 +141,10 @@ pub struct Frame {
     pub last: Buffer,
     pub background: [f32; 3],
     pub timings: Timings,
+    /// A host-visible copy of `color`, made by [`Rasterizer::forward_into`] when asked.
+    host: Option<Buffer>,
+    /// Whether `host` holds this render's colour.
+    host_fresh: bool,
 }
 
 /// A rendered image read back to the host, row-major.
@@ -154,10 +159,61 @@ pub struct RenderOutput {
 }
 
 impl Frame {
+    /// An empty frame for [`Rasterizer::forward_into`] (its buffers grow on the first render).
+    pub fn new(ctx: &Context) -> Result<Frame> {
+        let b = |name: &str| Buffer::new(ctx, name, 16, BufferUsage::Device);
+        Ok(Frame {
+            width: 0,
+            height: 0,
+            tiles_x: 0,
+            tiles_y: 0,
+            n: 0,
+            intersections: 0,
+            max_tile_len: 0,
+            proj: b("projected")?,
+            isect_ids: b("intersection gaussians")?,
+            ranges: b("tile ranges")?,
+            color: b("pixel colour and T")?,
+            depth: b("pixel depth")?,
+            last: b("pixel last contributor")?,
+            background: [0.0; 3],
+            timings: Timings::default(),
+            host: None,
+            host_fresh: false,
+        })
+    }
+
+    /// Colour and transmittance per pixel: from the host copy when the render made one, else
+    /// read back from the device.
+    fn colour_and_t(&self) -> Result<Vec<[f32; 4]>> {
+        let np = (self.width * self.height) as usize;
+        match &self.host {
+            Some(h) if self.host_fresh => h.read(np),
+            _ => self.color.read(np),
+        }
+    }
+
+    /// The image over the background, row-major (one readback, or none after a render that
+    /// copied it).
+    pub fn colour(&self) -> Result<Vec<[f32; 3]>> {
+        let bg = self.background;
+        Ok(self
+            .colour_and_t()?
+            .iter()
+            .map(|p| {
+                [
+                    p[0] + p[3] * bg[0],
+                    p[1] + p[3] * bg[1],
+                    p[2] + p[3] * bg[2],
+                ]
+            })
+            .collect())
+    }
+
     /// Reads the image back.
     pub fn read(&self) -> Result<RenderOutput> {
         let np = (self.width * self.height) as usize;
-        let c: Vec<[f32; 4]> = self.color.read(np)?;
+        let c = self.colour_and_t()?;
         let bg = self.background;
         Ok(RenderOutput {
             width: self.width,
@@ -187,6 +243,80 @@ pub struct Rasterizer {
     blend: Kernel,
     sort: RadixSort,
     timed: bool,
+    /// Buffers a pass needs only while it runs, kept between passes.
+    scratch: Mutex<Scratch>,
+}
+
+/// The forward pass's transient buffers, grown on demand and reused by every later pass.
+#[derive(Default)]
+struct Scratch {
+    rects: Option<Buffer>,
+    depth_keys: Option<Buffer>,
+    ids: Option<Buffer>,
+    counts: Option<Buffer>,
+    offsets: Option<Buffer>,
+    host: Option<Buffer>,
+    depth_sort: Option<SortScratch>,
+    scan: Option<ScanScratch>,
+    tile_keys: Option<Buffer>,
+    tile_sort: Option<SortScratch>,
+}
+
+/// A capacity with room to spare: intersection counts change a little from view to view and
+/// Gaussian counts with densification, so a buffer grown to exactly the size would be regrown
+/// at almost every pass.
+fn headroom(count: u32) -> u32 {
+    count.saturating_add(count / 4).max(1)
+}
+
+/// [`headroom`] in bytes, held to the device's storage-buffer range (128 MiB on lavapipe).
+fn headroom_bytes(ctx: &Context, bytes: u64) -> u64 {
+    (bytes + bytes / 4)
+        .min(ctx.info().max_storage_buffer_range)
+        .max(bytes)
+}
+
+/// The buffer in `slot`, (re)allocated with headroom when absent or smaller than `bytes`.
+fn grow<'a>(
+    ctx: &Context,
+    slot: &'a mut Option<Buffer>,
+    name: &str,
+    bytes: u64,
+    usage: BufferUsage,
+) -> Result<&'a Buffer> {
+    if slot.as_ref().is_none_or(|b| b.size() < bytes) {
+        // The old buffer goes first, so the two never hold memory together.
+        *slot = None;
+        *slot = Some(Buffer::new(ctx, name, headroom_bytes(ctx, bytes), usage)?);
+    }
+    Ok(slot.as_ref().expect("just made"))
+}
+
+/// [`grow`] for a frame's buffer, which always exists.
+fn reserve(
+    ctx: &Context,
+    buf: &mut Buffer,
+    name: &str,
+    bytes: u64,
+    usage: BufferUsage,
+) -> Result<()> {
+    if buf.size() < bytes {
+        *buf = Buffer::new(ctx, name, headroom_bytes(ctx, bytes), usage)?;
+    }
+    Ok(())
+}
+
+/// Sort scratch in `slot` for at least `count` pairs.
+fn grow_sort<'a>(
+    ctx: &Context,
+    slot: &'a mut Option<SortScratch>,
+    count: u32,
+) -> Result<&'a SortScratch> {
+    if slot.as_ref().is_none_or(|s| s.capacity() < count) {
+        *slot = None;
+        *slot = Some(SortScratch::new(ctx, headroom(count))?);
+    }
+    Ok(slot.as_ref().expect("just made"))
 }
 
 fn bits_for(max_value: u32) -> u32 {
@@ -246,6 +376,7 @@ impl Rasterizer {
             blend: Kernel::new(ctx, blend, width.workgroup_size())?,
             sort: RadixSort::new(ctx)?,
             timed: false,
+            scratch: Mutex::new(Scratch::default()),
         })
     }
 
@@ -262,7 +393,7 @@ impl Rasterizer {
         }
     }
 
-    /// Renders `g` from `cam` over `background`.
+    /// Renders `g` from `cam` over `background` into a new frame.
     pub fn forward(
         &self,
         ctx: &Context,
@@ -270,20 +401,58 @@ impl Rasterizer {
         cam: &Camera,
         background: [f32; 3],
     ) -> Result<Frame> {
+        let mut frame = Frame::new(ctx)?;
+        self.forward_into(ctx, g, cam, background, &mut frame, false)?;
+        Ok(frame)
+    }
+
+    /// Renders `g` from `cam` over `background` into `frame`, reusing its buffers (grown when
+    /// too small) and the rasterizer's scratch, so that a loop rendering into the same frames
+    /// allocates nothing once the sizes settle. With `read_colour`, the image is also copied to
+    /// host-visible memory in the same submission, for [`Frame::colour`].
+    pub fn forward_into(
+        &self,
+        ctx: &Context,
+        g: &GpuGaussians,
+        cam: &Camera,
+        background: [f32; 3],
+        frame: &mut Frame,
+        read_colour: bool,
+    ) -> Result<()> {
+        let mut guard = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        let sc = &mut *guard;
         let n = g.n;
         let tiles_x = cam.width.div_ceil(kernels::TILE);
         let tiles_y = cam.height.div_ceil(kernels::TILE);
         let num_tiles = tiles_x * tiles_y;
         let dev = BufferUsage::Device;
         let n64 = n as u64;
-        let proj = Buffer::new(ctx, "projected", n64 * 48, dev)?;
-        let rects = Buffer::new(ctx, "tile rects", n64 * 8, dev)?;
-        let depth_keys = Buffer::new(ctx, "depth keys", n64 * 4, dev)?;
-        let ids = Buffer::new(ctx, "depth order", n64 * 4, dev)?;
-        let counts = Buffer::new(ctx, "tile counts", n64 * 4, dev)?;
-        let offsets = Buffer::new(ctx, "intersection offsets", (n64 + 1) * 4, dev)?;
-        let depth_scratch = SortScratch::new(ctx, n)?;
-        let scan_scratch = ScanScratch::new(ctx, n + 1)?;
+        reserve(ctx, &mut frame.proj, "projected", n64 * 48, dev)?;
+        let rects = grow(ctx, &mut sc.rects, "tile rects", n64 * 8, dev)?;
+        let depth_keys = grow(ctx, &mut sc.depth_keys, "depth keys", n64 * 4, dev)?;
+        let ids = grow(ctx, &mut sc.ids, "depth order", n64 * 4, dev)?;
+        let counts = grow(ctx, &mut sc.counts, "tile counts", n64 * 4, dev)?;
+        let offsets = grow(
+            ctx,
+            &mut sc.offsets,
+            "intersection offsets",
+            (n64 + 1) * 4,
+            dev,
+        )?;
+        // Host-visible: the intersection count (word 0), then the tile ranges.
+        let host = grow(
+            ctx,
+            &mut sc.host,
+            "forward readback",
+            8 + num_tiles as u64 * 8,
+            BufferUsage::Readback,
+        )?;
+        let depth_sort = grow_sort(ctx, &mut sc.depth_sort, n)?;
+        if sc.scan.as_ref().is_none_or(|s| s.capacity() < n + 1) {
+            sc.scan = None;
+            sc.scan = Some(ScanScratch::new(ctx, headroom(n + 1))?);
+        }
+        let scan_scratch = sc.scan.as_ref().expect("just made");
         let mut timings = Timings::default();
 
         let mut s = self.stream(ctx, 64)?;
@@ -302,36 +471,54 @@ impl Rasterizer {
                 ("rotations", &g.rotations),
                 ("opacities", &g.opacities),
                 ("sh", &g.sh),
-                ("proj", &proj),
-                ("rects", &rects),
-                ("depth_keys", &depth_keys),
-                ("ids", &ids),
-                ("counts", &counts),
+                ("proj", &frame.proj),
+                ("rects", rects),
+                ("depth_keys", depth_keys),
+                ("ids", ids),
+                ("counts", counts),
             ],
             bytemuck::bytes_of(&push),
             groups_for(n.div_ceil(WG)),
         )?;
         self.sort
-            .record(&mut s, &depth_keys, &ids, n, 32, &depth_scratch)?;
+            .record(&mut s, depth_keys, ids, n, 32, depth_sort)?;
         s.dispatch(
             &self.gather,
-            &[("ids", &ids), ("counts", &counts), ("offsets", &offsets)],
+            &[("ids", ids), ("counts", counts), ("offsets", offsets)],
             bytemuck::bytes_of(&n),
             groups_for((n + 1).div_ceil(WG)),
         )?;
         self.sort
             .scan()
-            .record(&mut s, &offsets, n + 1, &scan_scratch)?;
+            .record(&mut s, offsets, n + 1, scan_scratch)?;
+        s.copy_region(offsets, n64 * 4, host, 0, 4);
         timings.entries.extend(s.submit()?.entries);
-        let m = offsets.read_at::<u32>(n as usize, 1)?[0];
-        drop(depth_scratch);
+        let m = host.read::<u32>(1)?[0];
 
-        let tile_keys = Buffer::new(ctx, "intersection tiles", m as u64 * 4, dev)?;
-        let isect_ids = Buffer::new(ctx, "intersection gaussians", m as u64 * 4, dev)?;
-        let ranges = Buffer::new(ctx, "tile ranges", num_tiles as u64 * 8, dev)?;
-        let tile_scratch = SortScratch::new(ctx, m)?;
+        let tile_keys = grow(
+            ctx,
+            &mut sc.tile_keys,
+            "intersection tiles",
+            m as u64 * 4,
+            dev,
+        )?;
+        let tile_sort = grow_sort(ctx, &mut sc.tile_sort, m)?;
+        reserve(
+            ctx,
+            &mut frame.isect_ids,
+            "intersection gaussians",
+            m as u64 * 4,
+            dev,
+        )?;
+        reserve(
+            ctx,
+            &mut frame.ranges,
+            "tile ranges",
+            num_tiles as u64 * 8,
+            dev,
+        )?;
         let mut s = self.stream(ctx, 64)?;
-        s.fill(&ranges, 0);
+        s.fill(&frame.ranges, 0);
         let push = EmitPush {
             n,
             tiles_x,
@@ -340,34 +527,35 @@ impl Rasterizer {
         s.dispatch(
             &self.emit,
             &[
-                ("ids", &ids),
-                ("counts", &counts),
-                ("offsets", &offsets),
-                ("proj", &proj),
-                ("rects", &rects),
-                ("tile_keys", &tile_keys),
-                ("isect_ids", &isect_ids),
+                ("ids", ids),
+                ("counts", counts),
+                ("offsets", offsets),
+                ("proj", &frame.proj),
+                ("rects", rects),
+                ("tile_keys", tile_keys),
+                ("isect_ids", &frame.isect_ids),
             ],
             bytemuck::bytes_of(&push),
             groups_for(n.div_ceil(WG)),
         )?;
         self.sort.record(
             &mut s,
-            &tile_keys,
-            &isect_ids,
+            tile_keys,
+            &frame.isect_ids,
             m,
             bits_for(num_tiles),
-            &tile_scratch,
+            tile_sort,
         )?;
         let push = [m, num_tiles];
         s.dispatch(
             &self.ranges,
-            &[("tile_keys", &tile_keys), ("ranges", &ranges)],
+            &[("tile_keys", tile_keys), ("ranges", &frame.ranges)],
             bytemuck::bytes_of(&push),
             groups_for(m.div_ceil(WG)),
         )?;
+        s.copy_region(&frame.ranges, 0, host, 8, num_tiles as u64 * 8);
         timings.entries.extend(s.submit()?.entries);
-        let r: Vec<[u32; 2]> = ranges.read(num_tiles as usize)?;
+        let r: Vec<[u32; 2]> = host.read_at(1, num_tiles as usize)?;
         let max_tile_len = r
             .iter()
             .map(|x| x[1].saturating_sub(x[0]))
@@ -375,9 +563,9 @@ impl Rasterizer {
             .unwrap_or(0);
 
         let np = cam.width as u64 * cam.height as u64;
-        let color = Buffer::new(ctx, "pixel colour and T", np * 16, dev)?;
-        let depth = Buffer::new(ctx, "pixel depth", np * 4, dev)?;
-        let last = Buffer::new(ctx, "pixel last contributor", np * 4, dev)?;
+        reserve(ctx, &mut frame.color, "pixel colour and T", np * 16, dev)?;
+        reserve(ctx, &mut frame.depth, "pixel depth", np * 4, dev)?;
+        reserve(ctx, &mut frame.last, "pixel last contributor", np * 4, dev)?;
         let segments = max_tile_len.div_ceil(kernels::SEGMENT).max(1);
         let mut s = self.stream(ctx, segments + 1)?;
         for seg in 0..segments {
@@ -391,35 +579,42 @@ impl Rasterizer {
             s.dispatch(
                 &self.blend,
                 &[
-                    ("proj", &proj),
-                    ("isect_ids", &isect_ids),
-                    ("ranges", &ranges),
-                    ("color", &color),
-                    ("depth", &depth),
-                    ("last", &last),
+                    ("proj", &frame.proj),
+                    ("isect_ids", &frame.isect_ids),
+                    ("ranges", &frame.ranges),
+                    ("color", &frame.color),
+                    ("depth", &frame.depth),
+                    ("last", &frame.last),
                 ],
                 bytemuck::bytes_of(&push),
                 groups_for(num_tiles),
             )?;
         }
+        if read_colour {
+            let host = match frame.host.take() {
+                Some(b) if b.size() >= np * 16 => b,
+                _ => Buffer::new(
+                    ctx,
+                    "pixel colour (host)",
+                    headroom_bytes(ctx, np * 16),
+                    BufferUsage::Readback,
+                )?,
+            };
+            s.copy(&frame.color, &host, np * 16);
+            frame.host = Some(host);
+        }
+        frame.host_fresh = read_colour;
         timings.entries.extend(s.submit()?.entries);
-        Ok(Frame {
-            width: cam.width,
-            height: cam.height,
-            tiles_x,
-            tiles_y,
-            n,
-            intersections: m,
-            max_tile_len,
-            proj,
-            isect_ids,
-            ranges,
-            color,
-            depth,
-            last,
-            background,
-            timings,
-        })
+        frame.width = cam.width;
+        frame.height = cam.height;
+        frame.tiles_x = tiles_x;
+        frame.tiles_y = tiles_y;
+        frame.n = n;
+        frame.intersections = m;
+        frame.max_tile_len = max_tile_len;
+        frame.background = background;
+        frame.timings = timings;
+        Ok(())
     }
 
     /// Renders host Gaussians: upload, forward, read back.

@@ -5,7 +5,7 @@ use super::adam::{Adam, AdamConfig, AdamState, LearningRates, Moments};
 use super::backward::{Backward, GpuGrads};
 use super::cloud::{sh_coeffs, Gaussians, SH_C0};
 use super::loss;
-use super::raster::{GpuGaussians, Rasterizer};
+use super::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::camera::Camera;
 use crate::gpu::{Buffer, BufferUsage, Context, GpuError, Result, Stream};
 use glam::{DMat3, DVec3};
@@ -221,6 +221,12 @@ pub struct Trainer {
     pub(super) batch_pixels: u64,
     /// Only Gaussians in this index range are optimised (the rest keep their parameters).
     pub trainable: Option<std::ops::Range<u32>>,
+    /// Frames of earlier guided batches, rendered into again by [`Trainer::render_view`].
+    pub(super) frames: Vec<Frame>,
+    /// A guided view's colour gradient padded to the backward's `vec4` per pixel.
+    pub(super) padded: Vec<[f32; 4]>,
+    /// Whether guided steps record per-dispatch GPU times.
+    pub(super) timed: bool,
 }
 
 impl Trainer {
@@ -274,6 +280,9 @@ impl Trainer {
             batch_scratch: vec![],
             batch_pixels: 0,
             trainable: None,
+            frames: vec![],
+            padded: vec![],
+            timed: false,
         })
     }
 
