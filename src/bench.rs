@@ -450,3 +450,81 @@ pub fn bench_generate(
         timestamps: ctx.info().timestamp_period_ns > 0.0,
     })
 }
+
+/// The sizes of the scene-stage measurement: a furnished room's cloud (1M) and the authors'
+/// environment cap (3M), 4 views at 512².
+pub const SCENE_STAGE_SIZES: [(usize, u32); 2] = [(1_000_000, 512), (3_000_000, 512)];
+
+/// Times environment-stage iterations ([`crate::generate::object::guided_iteration`] on the
+/// stage-1 camera list, the scene stages' loop body) with the oracle prior: `n` random
+/// Gaussians filling a 5 x 4 x 2.8 m room, the last two thirds trainable (the environment),
+/// `views` views of `size`², median of `runs` after one warm-up.
+pub fn bench_scene_stage(
+    ctx: &Context,
+    n: usize,
+    views: usize,
+    size: u32,
+    runs: usize,
+) -> std::result::Result<GenerateFigures, crate::generate::object::GenError> {
+    use crate::camera::scene::{stage_cameras, SceneBox, Stage};
+    use crate::diffusion::guidance::{MtsSettings, SCENE_ENVIRONMENT};
+    use crate::diffusion::model::Codec;
+    use crate::diffusion::target::{Guide, Rule};
+    use crate::generate::object::{guided_iteration, GenError};
+    use crate::generate::prior::OraclePrior;
+    use crate::generate::scene_stages::{stage_fit, stage_views};
+    use crate::splat::train::Trainer;
+    let room = [5.0, 4.0, 2.8];
+    let cloud = |seed: u64| {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let lo = [-2.5f32, -2.0, 0.0];
+        let hi = [2.5f32, 2.0, 2.8];
+        let scale = 0.01 * (1_000_000.0 / n.max(1) as f32).cbrt();
+        Gaussians::random(&mut rng, n, lo, hi, scale, 1)
+    };
+    let mut prior = OraclePrior::new(ctx, &cloud(21), None).map_err(GenError::Prior)?;
+    let mut t = Trainer::guided(ctx, &cloud(22), stage_fit(1000, 0), 1.0)?;
+    t.set_timed(true);
+    let scene = SceneBox {
+        scene_type: crate::plan::spec::SceneType::Indoor,
+        room,
+        objects: vec![],
+    };
+    let iters = runs.max(1) as u32 + 1;
+    let cams = stage_cameras(Stage::One, &scene, iters as usize * views, size, size, 5);
+    let mut guide = Guide::new(
+        Rule::Mts { m: 4 },
+        SCENE_ENVIRONMENT,
+        MtsSettings::default(),
+        Codec::Fast,
+        6,
+    );
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(23);
+    let trainable = Some(n as u32 / 3..n as u32);
+    let (mut wall, mut kernel, mut prior_s, mut host) = (vec![], vec![], vec![], vec![]);
+    for i in 0..iters {
+        let v = stage_views(&cams, i, views, iters, &mut rng);
+        let r = guided_iteration(&mut t, &mut prior, &mut guide, &v, trainable.clone())?;
+        if i == 0 {
+            continue;
+        }
+        let (w, k, p) = (r.seconds * 1e3, r.kernels.total_ms(), r.prior_seconds * 1e3);
+        wall.push(w);
+        kernel.push(k);
+        prior_s.push(p);
+        host.push(w - k - p);
+    }
+    let (wall_ms, kernel_ms, host_ms) = (median(wall), median(kernel), median(host));
+    Ok(GenerateFigures {
+        gaussians: n as u32,
+        views,
+        size,
+        wall_ms,
+        kernel_ms,
+        prior_ms: median(prior_s),
+        host_ms,
+        host_share: host_ms / kernel_ms.max(1e-9),
+        iterations_per_s: 1e3 / wall_ms,
+        timestamps: ctx.info().timestamp_period_ns > 0.0,
+    })
+}

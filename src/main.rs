@@ -1087,23 +1087,32 @@ fn bench_unet(
 }
 
 fn bench_generate(json: bool, runs: usize) -> Result<()> {
-    use dreamscene::bench::{bench_generate, GENERATE_SIZES};
+    use dreamscene::bench::{bench_generate, bench_scene_stage, GENERATE_SIZES, SCENE_STAGE_SIZES};
     let ctx = open_device()?;
+    let show = |what: &str, f: &dreamscene::bench::GenerateFigures| {
+        if !json {
+            println!(
+                "{what} {:>7} gaussians {} x {}²  {:>9.1} ms/it  kernel {:>8.1} ms  prior {:>8.1} ms  host {:>8.1} ms ({:.0}% of kernel)",
+                f.gaussians, f.views, f.size, f.wall_ms, f.kernel_ms, f.prior_ms, f.host_ms, 100.0 * f.host_share
+            );
+        }
+    };
     let mut figures = vec![];
     for (n, size) in GENERATE_SIZES {
         let f = bench_generate(&ctx, n, 4, size, runs)?;
-        if !json {
-            println!(
-                "{:>7} gaussians {} x {size}²  {:>9.1} ms/it  kernel {:>8.1} ms  prior {:>8.1} ms  host {:>8.1} ms ({:.0}% of kernel)",
-                f.gaussians, f.views, f.wall_ms, f.kernel_ms, f.prior_ms, f.host_ms, 100.0 * f.host_share
-            );
-        }
+        show("object", &f);
         figures.push(f);
+    }
+    let mut scene = vec![];
+    for (n, size) in SCENE_STAGE_SIZES {
+        let f = bench_scene_stage(&ctx, n, 4, size, runs.min(3))?;
+        show("scene ", &f);
+        scene.push(f);
     }
     if json {
         println!(
             "{}",
-            serde_json::json!({ "device": ctx.info().name, "generate": figures })
+            serde_json::json!({ "device": ctx.info().name, "generate": figures, "scene_stage": scene })
         );
     }
     Ok(())

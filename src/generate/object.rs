@@ -490,13 +490,46 @@ pub fn formation_iteration(
     if t.device_gaussians().sh_degree < want_degree {
         t.set_sh_degree(want_degree)?;
     }
-    let views = random_views(frame, ranges, step, cfg.batch, cfg.resolution, rng);
+    let views: Vec<GuidedView> = random_views(frame, ranges, step, cfg.batch, cfg.resolution, rng)
+        .into_iter()
+        .map(|v| GuidedView {
+            background: background(rng, cfg.background_aug),
+            camera: v.camera,
+            azimuth: v.azimuth,
+            elevation: v.elevation,
+        })
+        .collect();
+    let mut report = guided_iteration(t, prior, guide, &views, None)?;
+    report.seconds = t0.elapsed().as_secs_f64();
+    Ok(report)
+}
+
+/// One view of a guided iteration: camera, background and the angles its prompt depends on.
+#[derive(Debug, Clone)]
+pub struct GuidedView {
+    pub camera: crate::camera::Camera,
+    pub background: [f32; 3],
+    pub azimuth: f64,
+    pub elevation: f64,
+}
+
+/// The body shared by object formation and the scene stages: render `views`, ask the prior for
+/// their targets, and apply the image loss's gradient in one Adam step (only `trainable`
+/// Gaussians move when it is set).
+pub fn guided_iteration(
+    t: &mut Trainer,
+    prior: &mut dyn Prior,
+    guide: &mut Guide,
+    views: &[GuidedView],
+    trainable: Option<std::ops::Range<u32>>,
+) -> Result<IterationReport, GenError> {
+    let t0 = Instant::now();
+    let step = t.iteration();
     let mut batch = vec![];
     let mut grads = vec![];
     let mut report = IterationReport::default();
-    for v in &views {
-        let bg = background(rng, cfg.background_aug);
-        let bv = t.render_view(&v.camera, bg)?;
+    for v in views {
+        let bv = t.render_view(&v.camera, v.background)?;
         report
             .kernels
             .entries
@@ -508,7 +541,7 @@ pub fn formation_iteration(
                 &PriorView {
                     camera: &v.camera,
                     render: &bv.color,
-                    background: bg,
+                    background: v.background,
                     azimuth: v.azimuth,
                     elevation: v.elevation,
                 },
@@ -522,7 +555,7 @@ pub fn formation_iteration(
         batch.push(bv);
     }
     let ta = Instant::now();
-    let timings = t.apply(&batch, &grads, None)?;
+    let timings = t.apply(&batch, &grads, trainable)?;
     report.apply_seconds = ta.elapsed().as_secs_f64();
     report.kernels.entries.extend(timings.entries);
     t.recycle(batch);

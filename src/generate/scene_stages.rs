@@ -10,7 +10,9 @@
 //! Densification stays off in the scene stages so the frozen ranges keep their indices (the
 //! initial environment is already dense). Each object, each stage and every
 //! `checkpoint_every` iterations is checkpointed in `checkpoints/`, and `resume` continues.
-use super::object::{generate_object, image_loss, Checkpoints, GenError, ObjectConfig};
+use super::object::{
+    generate_object, guided_iteration, Checkpoints, GenError, GuidedView, ObjectConfig,
+};
 use super::prior::{OraclePrior, Prior, PriorView, SdPrior};
 use super::progress::Progress;
 use super::scene::{category_sizes, object_ply};
@@ -212,6 +214,29 @@ fn angles(cam: &Camera) -> (f64, f64) {
     (az, el)
 }
 
+/// The views of a stage's iteration `step`: the next `batch` cameras of the stage's list, with
+/// random backgrounds less and less often (half the views at the start, none at the end).
+pub fn stage_views(
+    cams: &[Camera],
+    step: u32,
+    batch: usize,
+    iters: u32,
+    rng: &mut ChaCha8Rng,
+) -> Vec<GuidedView> {
+    (0..batch)
+        .map(|b| {
+            let camera = cams[(step as usize * batch + b) % cams.len()].clone();
+            let (azimuth, elevation) = angles(&camera);
+            GuidedView {
+                background: background(rng, 0.5 * (1.0 - step as f64 / iters.max(1) as f64)),
+                camera,
+                azimuth,
+                elevation,
+            }
+        })
+        .collect()
+}
+
 fn background(rng: &mut ChaCha8Rng, aug: f64) -> [f32; 3] {
     if rng.gen_bool(aug.clamp(0.0, 1.0)) {
         [rng.gen(), rng.gen(), rng.gen()]
@@ -221,7 +246,7 @@ fn background(rng: &mut ChaCha8Rng, aug: f64) -> [f32; 3] {
 }
 
 /// The authors' scene-stage learning rates (extent 1: the scene is in metres).
-fn stage_fit(iterations: u32, seed: u64) -> FitConfig {
+pub fn stage_fit(iterations: u32, seed: u64) -> FitConfig {
     FitConfig {
         iterations,
         lr_means: (8e-4, 2.5e-5),
@@ -432,34 +457,8 @@ pub fn generate_scene(
         let mut progress = Progress::new(iters as u64, false);
         while t.iteration() < iters {
             let step = t.iteration();
-            let mut batch = vec![];
-            let mut grads = vec![];
-            let mut loss = 0.0;
-            for b in 0..cfg.batch {
-                let cam = &cams[(step as usize * cfg.batch + b) % cams.len()];
-                let bg = background(&mut rng, 0.5 * (1.0 - step as f64 / iters as f64));
-                let bv = t.render_view(cam, bg)?;
-                let (azimuth, elevation) = angles(cam);
-                let target = prior
-                    .target(
-                        &mut guide,
-                        &PriorView {
-                            camera: cam,
-                            render: &bv.color,
-                            background: bg,
-                            azimuth,
-                            elevation,
-                        },
-                        step,
-                    )
-                    .map_err(GenError::Prior)?;
-                let (l, g) = image_loss(&bv.color, &target, guide.settings.lambda);
-                loss += l / cfg.batch as f64;
-                grads.push(g);
-                batch.push(bv);
-            }
-            t.apply(&batch, &grads, None)?;
-            t.recycle(batch);
+            let views = stage_views(&cams, step, cfg.batch, iters, &mut rng);
+            let loss = guided_iteration(&mut t, prior, &mut guide, &views, None)?.loss;
             progress.update(
                 t.iteration() as u64,
                 &format!("stage {} loss {loss:.5}", k + 1),
