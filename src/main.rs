@@ -1104,7 +1104,17 @@ fn bench_generate(json: bool, runs: usize) -> Result<()> {
         figures.push(f);
     }
     let mut scene = vec![];
+    // The projected splats take 48 bytes each in one storage binding.
+    let most = ctx.info().max_storage_buffer_range / 48;
     for (n, size) in SCENE_STAGE_SIZES {
+        if n as u64 > most {
+            eprintln!(
+                "scene  {n:>7} gaussians: skipped, over this device's {} MiB storage-binding \
+                 limit (48-byte projected splats: at most {most} Gaussians)",
+                ctx.info().max_storage_buffer_range >> 20
+            );
+            continue;
+        }
         let f = bench_scene_stage(&ctx, n, 4, size, runs.min(3))?;
         show("scene ", &f);
         scene.push(f);
