@@ -369,6 +369,30 @@ pub struct GenerateFigures {
     pub timestamps: bool,
 }
 
+impl GenerateFigures {
+    /// The medians of per-iteration times `[wall, kernel, prior, host]` (ms) of `n` Gaussians,
+    /// `views` views of `size`².
+    fn from_runs(
+        ctx: &Context,
+        (n, views, size): (usize, usize, u32),
+        runs: [Vec<f64>; 4],
+    ) -> Self {
+        let [wall, kernel, prior, host] = runs.map(median);
+        GenerateFigures {
+            gaussians: n as u32,
+            views,
+            size,
+            wall_ms: wall,
+            kernel_ms: kernel,
+            prior_ms: prior,
+            host_ms: host,
+            host_share: host / kernel.max(1e-9),
+            iterations_per_s: 1e3 / wall,
+            timestamps: ctx.info().timestamp_period_ns > 0.0,
+        }
+    }
+}
+
 /// The sizes `dreamscene bench --generate` measures: the 4 views at 256² (the
 /// oracle-recovery runs) and 512² (the paper's object resolution), with 20k Gaussians (an object
 /// early in formation) and 100k (a densified one).
@@ -436,19 +460,11 @@ pub fn bench_generate(
         prior_s.push(p);
         host.push(w - k - p);
     }
-    let (wall_ms, kernel_ms, host_ms) = (median(wall), median(kernel), median(host));
-    Ok(GenerateFigures {
-        gaussians: n as u32,
-        views,
-        size,
-        wall_ms,
-        kernel_ms,
-        prior_ms: median(prior_s),
-        host_ms,
-        host_share: host_ms / kernel_ms.max(1e-9),
-        iterations_per_s: 1e3 / wall_ms,
-        timestamps: ctx.info().timestamp_period_ns > 0.0,
-    })
+    Ok(GenerateFigures::from_runs(
+        ctx,
+        (n, views, size),
+        [wall, kernel, prior_s, host],
+    ))
 }
 
 /// The sizes of the scene-stage measurement: a furnished room's cloud (1M), the most lavapipe's
@@ -518,17 +534,9 @@ pub fn bench_scene_stage(
         prior_s.push(p);
         host.push(w - k - p);
     }
-    let (wall_ms, kernel_ms, host_ms) = (median(wall), median(kernel), median(host));
-    Ok(GenerateFigures {
-        gaussians: n as u32,
-        views,
-        size,
-        wall_ms,
-        kernel_ms,
-        prior_ms: median(prior_s),
-        host_ms,
-        host_share: host_ms / kernel_ms.max(1e-9),
-        iterations_per_s: 1e3 / wall_ms,
-        timestamps: ctx.info().timestamp_period_ns > 0.0,
-    })
+    Ok(GenerateFigures::from_runs(
+        ctx,
+        (n, views, size),
+        [wall, kernel, prior_s, host],
+    ))
 }

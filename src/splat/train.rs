@@ -1,7 +1,7 @@
 //! Fitting Gaussians to posed images: the 3DGS optimisation loop on the GPU engine (forward,
 //! host loss, backward, fused Adam) with densification and pruning on the host between steps.
 //! The generator's reconstructive stage and `dreamscene fit` both run it.
-use super::adam::{Adam, AdamConfig, AdamState, LearningRates, Moments};
+use super::adam::{Adam, AdamState, LearningRates, Moments};
 use super::backward::{Backward, GpuGrads};
 use super::cloud::{sh_coeffs, Gaussians, SH_C0};
 use super::loss;
@@ -259,31 +259,9 @@ impl Trainer {
         }
         let cams: Vec<Camera> = views.iter().map(|v| v.camera.clone()).collect();
         let (_, extent) = camera_extent(&cams);
-        let gaussians = GpuGaussians::upload(ctx, init)?;
-        let grads = GpuGrads::new(ctx, gaussians.n, gaussians.sh_degree)?;
-        let state = AdamState::new(ctx, &gaussians)?;
-        Ok(Trainer {
-            ctx: ctx.clone(),
-            raster: Rasterizer::new(ctx)?,
-            backward: Backward::new(ctx, false)?,
-            adam: Adam::new(ctx, AdamConfig::default())?,
-            rng: rand_chacha::ChaCha8Rng::seed_from_u64(config.seed),
-            config,
-            views,
-            gaussians,
-            grads,
-            state,
-            extent,
-            iteration: 0,
-            order: vec![],
-            scratch: None,
-            batch_scratch: vec![],
-            batch_pixels: 0,
-            trainable: None,
-            frames: vec![],
-            padded: vec![],
-            timed: false,
-        })
+        let mut t = Trainer::guided(ctx, init, config, extent)?;
+        t.views = views;
+        Ok(t)
     }
 
     /// Iterations done so far.
