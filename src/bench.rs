@@ -370,14 +370,20 @@ pub struct GenerateFigures {
 }
 
 impl GenerateFigures {
-    /// The medians of per-iteration times `[wall, kernel, prior, host]` (ms) of `n` Gaussians,
+    /// The medians of the iterations' wall, kernel, prior and host times (ms) of `n` Gaussians,
     /// `views` views of `size`².
     fn from_runs(
         ctx: &Context,
         (n, views, size): (usize, usize, u32),
-        runs: [Vec<f64>; 4],
+        runs: &[crate::generate::object::IterationReport],
     ) -> Self {
-        let [wall, kernel, prior, host] = runs.map(median);
+        let of = |f: &dyn Fn(&crate::generate::object::IterationReport) -> f64| {
+            median(runs.iter().map(f).collect())
+        };
+        let wall = of(&|r| r.seconds * 1e3);
+        let kernel = of(&|r| r.kernels.total_ms());
+        let prior = of(&|r| r.prior_seconds * 1e3);
+        let host = of(&|r| (r.seconds - r.prior_seconds) * 1e3 - r.kernels.total_ms());
         GenerateFigures {
             gaussians: n as u32,
             views,
@@ -444,27 +450,16 @@ pub fn bench_generate(
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(13);
     let mut guide = formation_guide(&cfg);
     let ranges = OrbitRanges::default();
-    let (mut wall, mut kernel, mut prior_s, mut host) = (vec![], vec![], vec![], vec![]);
+    let mut reports = vec![];
     for i in 0..runs.max(1) + 2 {
         let r = formation_iteration(
             &mut t, &mut prior, &mut guide, &mut rng, &frame, &ranges, &cfg,
         )?;
-        if i < 2 {
-            continue;
+        if i >= 2 {
+            reports.push(r);
         }
-        let k = r.kernels.total_ms();
-        let w = r.seconds * 1e3;
-        let p = r.prior_seconds * 1e3;
-        wall.push(w);
-        kernel.push(k);
-        prior_s.push(p);
-        host.push(w - k - p);
     }
-    Ok(GenerateFigures::from_runs(
-        ctx,
-        (n, views, size),
-        [wall, kernel, prior_s, host],
-    ))
+    Ok(GenerateFigures::from_runs(ctx, (n, views, size), &reports))
 }
 
 /// The sizes of the scene-stage measurement: a furnished room's cloud (1M), the most lavapipe's
@@ -521,22 +516,13 @@ pub fn bench_scene_stage(
     );
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(23);
     let trainable = Some(n as u32 / 3..n as u32);
-    let (mut wall, mut kernel, mut prior_s, mut host) = (vec![], vec![], vec![], vec![]);
+    let mut reports = vec![];
     for i in 0..iters {
         let v = stage_views(&cams, i, views, iters, &mut rng);
         let r = guided_iteration(&mut t, &mut prior, &mut guide, &v, trainable.clone())?;
-        if i == 0 {
-            continue;
+        if i > 0 {
+            reports.push(r);
         }
-        let (w, k, p) = (r.seconds * 1e3, r.kernels.total_ms(), r.prior_seconds * 1e3);
-        wall.push(w);
-        kernel.push(k);
-        prior_s.push(p);
-        host.push(w - k - p);
     }
-    Ok(GenerateFigures::from_runs(
-        ctx,
-        (n, views, size),
-        [wall, kernel, prior_s, host],
-    ))
+    Ok(GenerateFigures::from_runs(ctx, (n, views, size), &reports))
 }

@@ -186,17 +186,8 @@ enum Command {
         /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
         #[arg(long)]
         dialogue: Option<PathBuf>,
-        /// Plan with an OpenAI-compatible chat endpoint instead (OpenAI, Ollama, llama.cpp, vLLM),
-        /// e.g. https://api.openai.com/v1 or http://localhost:11434/v1. The key comes from
-        /// OPENAI_API_KEY. Unusable answers are retried, then the offline planner takes over.
-        #[arg(long, env = "DREAMSCENE_LLM_URL")]
-        llm_url: Option<String>,
-        /// Model name for the endpoint.
-        #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
-        llm_model: String,
-        /// Seconds to wait for each LLM answer.
-        #[arg(long, default_value_t = 120)]
-        llm_timeout: u64,
+        #[command(flatten)]
+        llm: LlmArgs,
         /// Ask about style and constraints before planning.
         #[arg(long)]
         interactive: bool,
@@ -224,15 +215,8 @@ enum Command {
         /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
         #[arg(long)]
         dialogue: Option<PathBuf>,
-        /// Plan with an OpenAI-compatible chat endpoint instead of the offline planner.
-        #[arg(long, env = "DREAMSCENE_LLM_URL")]
-        llm_url: Option<String>,
-        /// Model name for the endpoint.
-        #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
-        llm_model: String,
-        /// Seconds to wait for each LLM answer.
-        #[arg(long, default_value_t = 120)]
-        llm_timeout: u64,
+        #[command(flatten)]
+        llm: LlmArgs,
         /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
         #[arg(long)]
         models: Option<PathBuf>,
@@ -454,23 +438,19 @@ fn run(cli: Cli) -> Result<()> {
         Command::Plan {
             prompt,
             dialogue,
-            llm_url,
-            llm_model,
-            llm_timeout,
+            llm,
             interactive,
             seed,
             out,
         } => {
-            let llm = llm_config(llm_url, llm_model, llm_timeout);
+            let llm = llm.config();
             plan(prompt, dialogue, llm, interactive, seed, &out)
         }
         Command::Generate {
             prompt,
             out,
             dialogue,
-            llm_url,
-            llm_model,
-            llm_timeout,
+            llm,
             models,
             prior,
             draft,
@@ -488,7 +468,7 @@ fn run(cli: Cli) -> Result<()> {
             prompt,
             out,
             dialogue,
-            llm: llm_config(llm_url, llm_model, llm_timeout),
+            llm: llm.config(),
             models,
             prior,
             draft,
@@ -839,20 +819,36 @@ pub(crate) fn plan_to_dir(
 }
 
 /// The LLM endpoint settings, when a URL is given (the key comes from OPENAI_API_KEY).
-fn llm_config(
-    url: Option<String>,
-    model: String,
-    timeout: u64,
-) -> Option<dreamscene::plan::llm::LlmConfig> {
-    url.map(|url| dreamscene::plan::llm::LlmConfig {
-        url,
-        model,
-        api_key: std::env::var("OPENAI_API_KEY")
-            .ok()
-            .filter(|k| !k.is_empty()),
-        timeout: std::time::Duration::from_secs(timeout.max(1)),
-        retries: 2,
-    })
+/// The planner's LLM endpoint, shared by `plan` and `generate`.
+#[derive(clap::Args)]
+struct LlmArgs {
+    /// Plan with an OpenAI-compatible chat endpoint instead (OpenAI, Ollama, llama.cpp, vLLM),
+    /// e.g. https://api.openai.com/v1 or http://localhost:11434/v1. The key comes from
+    /// OPENAI_API_KEY. Unusable answers are retried, then the offline planner takes over.
+    #[arg(long, env = "DREAMSCENE_LLM_URL")]
+    llm_url: Option<String>,
+    /// Model name for the endpoint.
+    #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
+    llm_model: String,
+    /// Seconds to wait for each LLM answer.
+    #[arg(long, default_value_t = 120)]
+    llm_timeout: u64,
+}
+
+impl LlmArgs {
+    /// The endpoint's settings when `--llm-url` is given (key from OPENAI_API_KEY).
+    fn config(self) -> Option<dreamscene::plan::llm::LlmConfig> {
+        let (model, timeout) = (self.llm_model, self.llm_timeout);
+        self.llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
+            url,
+            model,
+            api_key: std::env::var("OPENAI_API_KEY")
+                .ok()
+                .filter(|k| !k.is_empty()),
+            timeout: std::time::Duration::from_secs(timeout.max(1)),
+            retries: 2,
+        })
+    }
 }
 
 pub(crate) fn open_device() -> Result<Context> {
