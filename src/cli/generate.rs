@@ -45,7 +45,7 @@ pub fn parse_scene_prior(s: &str) -> Result<PriorChoice, String> {
 /// The background of the renders: the environment encloses the views, so it barely shows.
 const BACKGROUND: [f32; 3] = [0.0; 3];
 
-pub fn run(a: GenerateArgs) -> Result<()> {
+pub fn run_with(a: GenerateArgs) -> Result<()> {
     let start = Instant::now();
     let models = models_dir(a.models.as_deref());
     let draft = match (&a.prior, a.draft) {
@@ -57,7 +57,7 @@ pub fn run(a: GenerateArgs) -> Result<()> {
         ),
         (PriorChoice::Sd | PriorChoice::Oracle(_), _) => false,
     };
-    let text = crate::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
+    let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let existing = out.join("scene.json");
     let mut keep = false;
@@ -126,7 +126,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         generate_scene, OracleScenePriors, SceneConfig, ScenePriors, SdScenePriors,
     };
     let out = &a.out;
-    let ctx = crate::open_device()?;
+    let ctx = super::open_device()?;
     // The oracle regenerates its reference scene from the reference's own plan and layout.
     if let PriorChoice::Oracle(dir) = &a.prior {
         for f in ["spec.json", "layout.json"] {
@@ -264,7 +264,7 @@ fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpe
             .with_context(|| format!("{}: not a valid layout.json", layout_path.display()))?;
         return Ok((spec, layout));
     }
-    crate::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
+    super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
 }
 
 /// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
@@ -279,12 +279,89 @@ fn render_explore(
     let cams = explore_path(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
-    let ctx = crate::open_device()?;
+    let ctx = super::open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
     for cam in &cams {
         let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
-        crate::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
     }
     Ok(())
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// What to build, e.g. "a cozy living room".
+    pub prompt: Option<String>,
+    /// Output scene directory (created if missing).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
+    #[arg(long)]
+    pub dialogue: Option<PathBuf>,
+    #[command(flatten)]
+    pub llm: super::plan::LlmArgs,
+    /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
+    #[arg(long)]
+    pub models: Option<PathBuf>,
+    /// auto (sd when models are found, else shape), sd, shape, or oracle:DIR (a reference
+    /// scene directory).
+    #[arg(long, default_value = "auto", value_parser = parse_scene_prior)]
+    pub prior: super::object::PriorChoice,
+    /// Make the draft (shape priors and the initial environment, no optimisation) even when
+    /// models are found.
+    #[arg(long)]
+    pub draft: bool,
+    /// Environment optimisation iterations.
+    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+    pub iterations: u32,
+    /// Formation (MTS) iterations per object.
+    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+    pub object_iterations: u32,
+    /// Render size in pixels (square).
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+    pub resolution: u32,
+    /// Views along the exploring path written to renders/ (0: none).
+    #[arg(long, default_value_t = 8)]
+    pub renders: usize,
+    /// Passes of the scene's reconstructive stage over its 80 views.
+    #[arg(long, default_value_t = 25)]
+    pub recon_passes: u32,
+    /// Passes of each object's reconstruction fit over its 20 views.
+    #[arg(long, default_value_t = 40)]
+    pub object_recon_passes: u32,
+    /// Gaussians of each object's shape prior (default: from its surface area, 30k-60k).
+    #[arg(long)]
+    pub object_gaussians: Option<usize>,
+    /// Environment Gaussians per square metre of wall, ceiling and floor (capped at 300k).
+    #[arg(long, default_value_t = 1500.0)]
+    pub env_density: f64,
+    /// Seed of the layout and the generation.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Continue an interrupted run in --out (same prompt and seed).
+    #[arg(long)]
+    pub resume: bool,
+}
+
+pub fn run(a: Args) -> Result<()> {
+    run_with(GenerateArgs {
+        prompt: a.prompt,
+        out: a.out,
+        dialogue: a.dialogue,
+        llm: a.llm.config(),
+        models: a.models,
+        prior: a.prior,
+        draft: a.draft,
+        iterations: a.iterations,
+        object_iterations: a.object_iterations,
+        resolution: a.resolution,
+        renders: a.renders,
+        recon_passes: a.recon_passes,
+        object_recon_passes: a.object_recon_passes,
+        object_gaussians: a.object_gaussians,
+        env_density: a.env_density,
+        seed: a.seed,
+        resume: a.resume,
+    })
 }

@@ -1,3 +1,74 @@
-//! Glue of the larger verbs, one file each.
+//! The verbs' glue, one file each: a clap `Args` struct and `run`. Shared helpers below.
+pub mod bench;
+pub mod demo;
+pub mod doctor;
+pub mod fit;
 pub mod generate;
+pub mod layout;
 pub mod object;
+pub mod plan;
+pub mod render;
+
+use anyhow::{Context as _, Result};
+use dreamscene::gpu::Context;
+use dreamscene::splat::raster::RenderOutput;
+use std::path::Path;
+
+pub fn parse_hw(s: &str) -> Result<(usize, usize), String> {
+    let (h, w) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("{s:?}: expected HxW, e.g. 64x64"))?;
+    let p = |v: &str| {
+        v.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=1024).contains(n))
+            .ok_or_else(|| format!("{s:?}: sizes must be whole numbers from 1 to 1024"))
+    };
+    Ok((p(h)?, p(w)?))
+}
+
+pub fn parse_rgb(s: &str) -> Result<[f32; 3], String> {
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f32>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("`{s}`: {e}"))?;
+    match v.as_slice() {
+        [r, g, b] if v.iter().all(|c| (0.0..=1.0).contains(c)) => Ok([*r, *g, *b]),
+        _ => Err(format!(
+            "`{s}`: expected three numbers in [0, 1] such as 1,1,1"
+        )),
+    }
+}
+
+pub fn open_device() -> Result<Context> {
+    Context::new().context("opening the Vulkan device (run `dreamscene doctor`)")
+}
+
+pub fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
+    let mut buf = image::RgbImage::new(img.width, img.height);
+    for (i, p) in buf.pixels_mut().enumerate() {
+        let c = img.color[i];
+        *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
+    }
+    write_png(&buf, path)
+}
+
+/// Writes a PNG atomically (temporary file, then rename).
+pub fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
+    let tmp = path.with_extension("png.tmp");
+    img.save_with_format(&tmp, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))
+}
+
+/// Creates the directory that will hold `file`.
+pub fn create_parent(file: &Path) -> Result<()> {
+    match file.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
+        }
+        None => Ok(()),
+    }
+}

@@ -140,7 +140,7 @@ pub const NO_MODELS: &str = "no diffusion models found (--models DIR or DREAMSCE
                              this is a draft from the shape prior; the README's \"The diffusion \
                              models\" says how to export Stable Diffusion for full generation";
 
-pub fn run(a: ObjectArgs) -> Result<()> {
+pub fn run_with(a: ObjectArgs) -> Result<()> {
     if a.prompt.trim().is_empty() {
         bail!("the prompt is empty: say what object to make, e.g. \"a red velvet armchair\"");
     }
@@ -185,7 +185,7 @@ pub fn run(a: ObjectArgs) -> Result<()> {
         None => shape_init()?,
     };
     let frame = ObjectFrame { size };
-    let ctx = crate::open_device()?;
+    let ctx = super::open_device()?;
     let start = std::time::Instant::now();
     let (g, counts, iterations, prior_name) = match prior {
         PriorChoice::Shape | PriorChoice::Auto => {
@@ -322,7 +322,7 @@ pub fn write_turntable(
     let gg = GpuGaussians::upload(ctx, g)?;
     for cam in turntable(frame, count, 75.0, res) {
         let img = r.forward(ctx, &gg, &cam, [1.0; 3])?.read()?;
-        crate::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
     }
     Ok(())
 }
@@ -356,4 +356,107 @@ pub fn config(
         seed,
         ..ObjectConfig::default()
     }
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// What to make, e.g. "a red velvet armchair".
+    pub prompt: String,
+    /// Output directory.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Size W,D,H in metres (default: the category's typical size).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<[f64; 3]>,
+    /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
+    #[arg(long)]
+    pub models: Option<PathBuf>,
+    /// ONNX Runtime provider for the models.
+    #[arg(long, value_enum, default_value = "cpu")]
+    pub provider: Provider,
+    /// auto (sd when models are found, else shape), sd, shape, or oracle:REF.ply.
+    #[arg(long, default_value = "auto", value_parser = parse_prior)]
+    pub prior: PriorChoice,
+    /// Start from this PLY instead of the shape prior.
+    #[arg(long)]
+    pub init: Option<PathBuf>,
+    /// Formation (MTS) iterations.
+    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+    pub iterations: u32,
+    /// Render size in pixels (square).
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+    pub resolution: u32,
+    /// Views per iteration.
+    #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u64).range(1..=16))]
+    pub batch: u64,
+    /// Guidance rule of the formation stage: mts, sds, ism, dreamtime.
+    #[arg(long, default_value = "mts", value_parser = parse_rule)]
+    pub rule: dreamscene::diffusion::target::Rule,
+    /// Use the authors' code form of MTS (random jumps, CFG 7.5, averaged) instead of the
+    /// paper's (m intervals).
+    #[arg(long)]
+    pub mts_code_form: bool,
+    /// Final SH degree (raised one degree every 500 iterations).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(0..=3))]
+    pub sh_degree: u32,
+    /// Turn off 3D Gaussian filtering.
+    #[arg(long)]
+    pub no_filter: bool,
+    /// Fraction of the Gaussians filtering removes.
+    #[arg(long, default_value_t = 0.6)]
+    pub filter_fraction: f64,
+    /// Filtering score: paper or code.
+    #[arg(long, default_value = "paper")]
+    pub filter_rule: String,
+    /// Reconstruction views (0 turns reconstructive generation off).
+    #[arg(long, default_value_t = 20)]
+    pub recon_views: usize,
+    /// Passes of the reconstruction fit over its views.
+    #[arg(long, default_value_t = 40)]
+    pub recon_passes: u32,
+    /// Checkpoint every N iterations (0: only between stages).
+    #[arg(long, default_value_t = 100)]
+    pub checkpoint_every: u32,
+    /// Turntable views written to renders/.
+    #[arg(long, default_value_t = 8)]
+    pub turntable: usize,
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Continue an interrupted run from <out>/checkpoints (same prompt, prior and settings).
+    #[arg(long)]
+    pub resume: bool,
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let filter = filter_config(a.no_filter, a.filter_fraction, &a.filter_rule)?;
+    let form = if a.mts_code_form {
+        dreamscene::diffusion::guidance::MtsRule::Code
+    } else {
+        dreamscene::diffusion::guidance::MtsRule::Paper
+    };
+    let config = config(
+        a.iterations,
+        a.resolution,
+        a.seed,
+        a.rule,
+        form,
+        a.batch as usize,
+        a.sh_degree,
+        filter,
+        a.recon_views,
+        a.recon_passes,
+        a.checkpoint_every,
+    );
+    run_with(ObjectArgs {
+        prompt: a.prompt,
+        out: a.out,
+        size: a.size,
+        models: a.models,
+        provider: a.provider,
+        prior: a.prior,
+        init: a.init,
+        config,
+        resume: a.resume,
+        turntable: a.turntable,
+    })
 }

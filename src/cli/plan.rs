@@ -1,0 +1,211 @@
+//! `dreamscene plan`: a sentence or a dialogue to a SceneSpec and its layout.
+use super::write_png;
+use anyhow::{bail, Context as _, Result};
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::spec::SceneSpec;
+use std::path::{Path, PathBuf};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// What to build, e.g. "a cozy living room".
+    pub prompt: Option<String>,
+    /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
+    #[arg(long)]
+    pub dialogue: Option<PathBuf>,
+    #[command(flatten)]
+    pub llm: LlmArgs,
+    /// Ask about style and constraints before planning.
+    #[arg(long)]
+    pub interactive: bool,
+    /// Seed of the layout.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Output directory.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let llm = a.llm.config();
+    plan(a.prompt, a.dialogue, llm, a.interactive, a.seed, &a.out)
+}
+
+/// The planner's LLM endpoint, shared by `plan` and `generate`.
+#[derive(clap::Args)]
+pub struct LlmArgs {
+    /// Plan with an OpenAI-compatible chat endpoint instead (OpenAI, Ollama, llama.cpp, vLLM),
+    /// e.g. https://api.openai.com/v1 or http://localhost:11434/v1. The key comes from
+    /// OPENAI_API_KEY. Unusable answers are retried, then the offline planner takes over.
+    #[arg(long, env = "DREAMSCENE_LLM_URL")]
+    pub llm_url: Option<String>,
+    /// Model name for the endpoint.
+    #[arg(long, env = "DREAMSCENE_LLM_MODEL", default_value = "gpt-4o")]
+    pub llm_model: String,
+    /// Seconds to wait for each LLM answer.
+    #[arg(long, default_value_t = 120)]
+    pub llm_timeout: u64,
+}
+
+impl LlmArgs {
+    /// The endpoint's settings when `--llm-url` is given (key from OPENAI_API_KEY).
+    pub fn config(self) -> Option<dreamscene::plan::llm::LlmConfig> {
+        let (model, timeout) = (self.llm_model, self.llm_timeout);
+        self.llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
+            url,
+            model,
+            api_key: std::env::var("OPENAI_API_KEY")
+                .ok()
+                .filter(|k| !k.is_empty()),
+            timeout: std::time::Duration::from_secs(timeout.max(1)),
+            retries: 2,
+        })
+    }
+}
+
+fn plan(
+    prompt: Option<String>,
+    dialogue: Option<PathBuf>,
+    llm: Option<dreamscene::plan::llm::LlmConfig>,
+    interactive: bool,
+    seed: u64,
+    out: &Path,
+) -> Result<()> {
+    let text = plan_text(prompt, dialogue, interactive)?;
+    let (spec, l) = plan_to_dir(&text, llm.as_ref(), seed, out)?;
+    let n_rel = spec.relations.len();
+    println!(
+        "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
+        match spec.scene_type {
+            dreamscene::plan::spec::SceneType::Indoor => "indoor",
+            dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
+        },
+        l.room.size[0],
+        l.room.size[1],
+        l.objects.len(),
+        n_rel - l.unsatisfied.len(),
+        n_rel
+    );
+    println!(
+        "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
+        out.display()
+    );
+    Ok(())
+}
+
+#[derive(serde::Deserialize)]
+struct Turn {
+    role: String,
+    content: String,
+}
+
+/// Asks about style and constraints on the terminal; the answers join the user constraint.
+fn interview(text: &str) -> Result<String> {
+    use std::io::{BufRead, Write};
+    let mut out = text.to_string();
+    let stdin = std::io::stdin();
+    for q in [
+        "What style should it have (e.g. minimalist, rustic, beach-inspired)? ",
+        "Any constraints: room size, objects it must have, where things go? ",
+    ] {
+        eprint!("{q}");
+        std::io::stderr().flush().ok();
+        let mut line = String::new();
+        stdin
+            .lock()
+            .read_line(&mut line)
+            .context("reading the answer")?;
+        let a = line.trim();
+        if !a.is_empty() {
+            out = if out.is_empty() {
+                a.to_string()
+            } else {
+                format!("{out}. {a}")
+            };
+        }
+    }
+    Ok(out)
+}
+
+/// The text to plan: the prompt, or the user turns of a dialogue file joined, after the
+/// interview when `interactive`. Never empty.
+pub fn plan_text(
+    prompt: Option<String>,
+    dialogue: Option<PathBuf>,
+    interactive: bool,
+) -> Result<String> {
+    let text = match (prompt, dialogue) {
+        (Some(p), None) => p,
+        (None, Some(f)) => {
+            let raw =
+                std::fs::read_to_string(&f).with_context(|| format!("reading {}", f.display()))?;
+            let turns: Vec<Turn> = serde_json::from_str(&raw).with_context(|| {
+                format!("{}: expected a JSON list of {{role, content}}", f.display())
+            })?;
+            let user: Vec<String> = turns
+                .into_iter()
+                .filter(|t| t.role == "user")
+                .map(|t| t.content)
+                .collect();
+            if user.is_empty() {
+                bail!("{}: the dialogue has no user turns", f.display());
+            }
+            user.join(". ")
+        }
+        (Some(_), Some(_)) => bail!("give a prompt or --dialogue, not both"),
+        (None, None) if interactive => String::new(),
+        (None, None) => {
+            bail!("give a prompt (or --dialogue FILE), e.g. \"a cozy living room\"")
+        }
+    };
+    let text = if interactive {
+        if text.is_empty() {
+            eprint!("What scene would you like? ");
+            let mut line = String::new();
+            std::io::stdin()
+                .read_line(&mut line)
+                .context("reading the answer")?;
+            interview(line.trim())?
+        } else {
+            interview(&text)?
+        }
+    } else {
+        text
+    };
+    if text.trim().is_empty() {
+        bail!("the prompt is empty");
+    }
+    Ok(text)
+}
+
+/// Plans `text` (offline, or with the LLM endpoint) and lays it out: writes spec.json,
+/// layout.json and layout.png into `out` (created); returns the spec and the layout.
+pub fn plan_to_dir(
+    text: &str,
+    llm: Option<&dreamscene::plan::llm::LlmConfig>,
+    seed: u64,
+    out: &Path,
+) -> Result<(SceneSpec, dreamscene::plan::spec::Layout)> {
+    let spec = match llm {
+        None => dreamscene::plan::offline::plan_offline(text),
+        Some(cfg) => {
+            eprintln!("asking {} ({})", cfg.url, cfg.model);
+            let (spec, report) = dreamscene::plan::llm::plan_llm(cfg, text);
+            for w in &report.warnings {
+                eprintln!("warning: {w}");
+            }
+            spec
+        }
+    };
+    let l = layout(&spec, LayoutOptions::seeded(seed))?;
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let spec_json = serde_json::to_string_pretty(&spec)?;
+    dreamscene::util::write_atomic(&out.join("spec.json"), spec_json.as_bytes())
+        .with_context(|| format!("writing {}/spec.json", out.display()))?;
+    l.write(&out.join("layout.json"))
+        .with_context(|| format!("writing {}/layout.json", out.display()))?;
+    write_png(
+        &dreamscene::plan::draw::draw_layout(&l),
+        &out.join("layout.png"),
+    )?;
+    Ok((spec, l))
+}
