@@ -1,0 +1,3 @@
+pub mod encode;
+pub mod trajectory;
+pub mod video;
