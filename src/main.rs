@@ -21,6 +21,9 @@ enum Command {
     Render(cli::render::Args),
     /// Write a random demo scene (scene.ply, cameras.json on an orbit) and render it.
     Demo(cli::demo::Args),
+    /// Render a scene directory or splat PLY along a camera path (orbit, explore or a
+    /// cameras.json) into an H.264 MP4 or an animated GIF; --depth adds a depth video beside it.
+    Video(cli::video::Args),
     /// Fit Gaussians to posed images (3DGS optimisation: Adam, densify and prune) and write a PLY.
     ///
     /// Images are found as <images>/<img_name>[.png|.jpg|.jpeg] for each camera. The model is
@@ -87,6 +90,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Render(a) => cli::render::run(a),
         Command::Demo(a) => cli::demo::run(a),
+        Command::Video(a) => cli::video::run(a),
         Command::Fit(a) => cli::fit::run(a),
         Command::Object(a) => cli::object::run(a),
         Command::Plan(a) => cli::plan::run(a),

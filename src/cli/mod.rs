@@ -8,6 +8,7 @@ pub mod layout;
 pub mod object;
 pub mod plan;
 pub mod render;
+pub mod video;
 
 use anyhow::{Context as _, Result};
 use dreamscene::gpu::Context;

@@ -7,7 +7,7 @@ use crate::camera::scene::{
 };
 use crate::camera::{read_cameras, Camera, CameraError};
 use crate::plan::spec::SceneType;
-use crate::scene::dir::SceneFile;
+use crate::scene::dir::{compose_scene, read_scene, SceneError, SceneFile};
 use crate::splat::ply::{read_ply, PlyError};
 use crate::splat::Gaussians;
 use std::f64::consts::PI;
@@ -21,6 +21,8 @@ pub enum TrajectoryError {
     Cameras(#[from] CameraError),
     #[error(transparent)]
     Ply(#[from] PlyError),
+    #[error(transparent)]
+    Scene(#[from] SceneError),
     #[error("{0}")]
     Invalid(String),
 }
@@ -141,6 +143,57 @@ impl Subject {
             objects,
         }))
     }
+}
+
+/// What `video`, `render` and `view` were given: a scene directory (or its scene.json), composed
+/// into one world-frame cloud, or a single splat PLY.
+pub struct Input {
+    pub cloud: Gaussians,
+    pub subject: Subject,
+    /// The scene directory and its scene.json, when one was given.
+    pub scene: Option<(PathBuf, SceneFile)>,
+}
+
+/// Opens `path`: a scene directory, a `scene.json`, or a splat PLY.
+pub fn open_input(path: &Path) -> Result<Input> {
+    let is_json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    if path.is_dir() || is_json {
+        let dir = if path.is_dir() {
+            path.to_path_buf()
+        } else {
+            path.parent().unwrap_or(Path::new(".")).to_path_buf()
+        };
+        let scene = read_scene(path)?;
+        let cloud = compose_scene(&dir, &scene)?;
+        if cloud.is_empty() {
+            return Err(TrajectoryError::Invalid(format!(
+                "{}: the scene has no Gaussians yet",
+                dir.display()
+            )));
+        }
+        let subject = Subject::of_scene(&dir, &scene)?;
+        return Ok(Input {
+            cloud,
+            subject,
+            scene: Some((dir, scene)),
+        });
+    }
+    if !path.exists() {
+        return Err(TrajectoryError::Invalid(format!(
+            "{}: not found (give a scene directory or a splat PLY)",
+            path.display()
+        )));
+    }
+    let cloud = read_ply(path)?;
+    cloud
+        .check()
+        .map_err(|m| TrajectoryError::Invalid(format!("{}: {m}", path.display())))?;
+    let subject = Subject::of_cloud(&cloud)?;
+    Ok(Input {
+        cloud,
+        subject,
+        scene: None,
+    })
 }
 
 /// Per-axis `q` and `1 − q` quantiles of the centres, or `None` for an empty cloud.
