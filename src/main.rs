@@ -17,7 +17,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Render a splat PLY from every camera of an INRIA cameras.json into <out>/<img_name>.png.
+    /// Render a splat PLY (or a scene directory) from every camera of an INRIA cameras.json,
+    /// or along a path (--trajectory orbit|explore), into <out>/<img_name>.png.
     Render(cli::render::Args),
     /// Write a random demo scene (scene.ply, cameras.json on an orbit) and render it.
     Demo(cli::demo::Args),
