@@ -9,7 +9,10 @@ apt_install() {
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "$@"
 }
-pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools)
+# chromium and ffmpeg (ffprobe) are the outside clients of the viewer and video tests; node and
+# npm install the viewer's packages.
+pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools chromium ffmpeg)
+command -v npm >/dev/null || pkgs+=(nodejs npm)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -46,3 +49,13 @@ PY
   rm -rf "$tmp"
 fi
 test -f "$ORT_DIR/libonnxruntime.so.$ORT_VERSION" || { echo "ONNX Runtime library missing in $ORT_DIR" >&2; exit 1; }
+
+# The browser viewer's npm packages (Spark and three.js; playwright-core for the browser test),
+# exactly as viewer/package-lock.json names them.
+VIEWER_DIR="$(cd "$(dirname "$0")/.." && pwd)/viewer"
+if [ ! -f "$VIEWER_DIR/node_modules/.package-lock.json" ] ||
+   [ "$VIEWER_DIR/package-lock.json" -nt "$VIEWER_DIR/node_modules/.package-lock.json" ]; then
+  echo "installing the viewer's npm packages into $VIEWER_DIR/node_modules"
+  (cd "$VIEWER_DIR" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+test -f "$VIEWER_DIR/node_modules/@sparkjsdev/spark/dist/spark.module.js" || { echo "viewer packages missing in $VIEWER_DIR/node_modules" >&2; exit 1; }

@@ -25,6 +25,10 @@ enum Command {
     /// Render a scene directory or splat PLY along a camera path (orbit, explore or a
     /// cameras.json) into an H.264 MP4 or an animated GIF; --depth adds a depth video beside it.
     Video(cli::video::Args),
+    /// Serve the scene (directory or splat PLY) in an interactive browser viewer on 127.0.0.1:
+    /// orbit with the mouse, fly with W A S D Q E. Needs the viewer's npm packages
+    /// (scripts/setup.sh); nothing is fetched from the network. Ctrl-C stops it.
+    View(cli::view::Args),
     /// Fit Gaussians to posed images (3DGS optimisation: Adam, densify and prune) and write a PLY.
     ///
     /// Images are found as <images>/<img_name>[.png|.jpg|.jpeg] for each camera. The model is
@@ -92,6 +96,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Render(a) => cli::render::run(a),
         Command::Demo(a) => cli::demo::run(a),
         Command::Video(a) => cli::video::run(a),
+        Command::View(a) => cli::view::run(a),
         Command::Fit(a) => cli::fit::run(a),
         Command::Object(a) => cli::object::run(a),
         Command::Plan(a) => cli::plan::run(a),

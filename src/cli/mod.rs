@@ -9,6 +9,7 @@ pub mod object;
 pub mod plan;
 pub mod render;
 pub mod video;
+pub mod view;
 
 use anyhow::{Context as _, Result};
 use dreamscene::gpu::Context;

@@ -1,0 +1,56 @@
+// Opens a `dreamscene view` page in Debian's headless chromium (driven by playwright-core),
+// waits for the page's rendered-frame signal and saves a screenshot.
+// Usage: node screenshot.mjs URL OUT.png [WIDTHxHEIGHT]
+// Exits non-zero with the page's error, or when no frame was signalled within the time limit.
+import { chromium } from "playwright-core";
+import { mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+
+const [url, out, size = "640x480"] = process.argv.slice(2);
+if (!url || !out) {
+  console.error("usage: node screenshot.mjs URL OUT.png [WIDTHxHEIGHT]");
+  process.exit(2);
+}
+const [width, height] = size.split("x").map(Number);
+const profile = mkdtempSync(join(tmpdir(), "dreamscene-chromium-"));
+const executablePath = process.env.CHROMIUM || "/usr/bin/chromium";
+// A fresh profile directory (the persistent-context form is how playwright takes one).
+const browser = await chromium.launchPersistentContext(profile, {
+  executablePath,
+  viewport: { width, height },
+  headless: true,
+  args: [
+    "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+    "--disable-background-networking", "--disable-component-update", "--disable-sync",
+    // WebGL2 on the CPU: Chromium >= 137 refuses SwiftShader WebGL under --disable-gpu unless
+    // it is asked for explicitly.
+    "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+  ],
+});
+let code = 0;
+try {
+  const page = browser.pages()[0] ?? (await browser.newPage());
+  const logs = [];
+  page.on("console", (m) => logs.push(`${m.type()}: ${m.text()}`));
+  page.on("pageerror", (e) => logs.push(`pageerror: ${e.message}`));
+  // The page may load only from the server under test.
+  const origin = new URL(url).origin;
+  await page.route("**/*", (route) =>
+    route.request().url().startsWith(origin) ? route.continue() : route.abort());
+  await page.goto(url);
+  const timeout = Number(process.env.VIEW_TIMEOUT_MS || 90000);
+  await page.waitForFunction(
+    () => ["rendered", "error"].includes(document.body.dataset.state), null, { timeout });
+  const state = await page.evaluate(() => window.dreamscene);
+  if (state.error) throw new Error(`page error: ${state.error}`);
+  await page.screenshot({ path: out });
+  console.log(JSON.stringify({ frames: state.framesAfterLoad, screenshot: out }));
+} catch (e) {
+  console.error(String(e));
+  code = 1;
+} finally {
+  await browser.close();
+  rmSync(profile, { recursive: true, force: true });
+}
+process.exit(code);
