@@ -1,0 +1,194 @@
+//! `dreamscene video` and `render --trajectory` through the binary, checked by an outside
+//! decoder (Debian's ffprobe/ffmpeg, installed by scripts/setup.sh): frame count, size, frames
+//! that differ along the path, the decoded first frame against the engine's own PNG of the same
+//! camera, the depth video beside, the GIF, and one-line errors on bad input.
+use dreamscene::splat::ply::write_ply;
+use dreamscene::splat::cloud::SH_C0;
+use dreamscene::splat::Gaussians;
+use rand::SeedableRng;
+use rand_distr::{Distribution, Normal};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("ds-video-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Two clusters of 2000 small Gaussians each, red around x = +0.5 and blue around x = −0.5,
+/// 0.5 m above the floor.
+fn two_clusters(path: &Path) {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+    let n = Normal::new(0.0f32, 0.12).unwrap();
+    let mut g = Gaussians::default();
+    for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
+        for _ in 0..2000 {
+            g.means
+                .push([cx + n.sample(&mut rng), n.sample(&mut rng), 0.5 + n.sample(&mut rng)]);
+            g.scales.push([-3.5; 3]);
+            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+            g.opacities.push(4.0);
+            g.sh
+                .extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
+        }
+    }
+    write_ply(path, &g).unwrap();
+}
+
+/// ffprobe's frame count and size of the first video stream.
+fn probe(path: &Path) -> (usize, u32, u32) {
+    let o = Command::new("ffprobe")
+        .args(["-v", "error", "-count_frames", "-select_streams", "v:0"])
+        .args(["-show_entries", "stream=nb_read_frames,width,height"])
+        .args(["-of", "csv=p=0:nk=1"])
+        .arg(path)
+        .output()
+        .expect("ffprobe runs (scripts/setup.sh installs ffmpeg)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let v: Vec<&str> = text.trim().split(',').collect();
+    assert_eq!(v.len(), 3, "ffprobe said {text:?}");
+    (v[2].parse().unwrap(), v[0].parse().unwrap(), v[1].parse().unwrap())
+}
+
+/// Every frame decoded by ffmpeg as RGB bytes.
+fn decode(path: &Path, w: u32, h: u32) -> Vec<Vec<u8>> {
+    let o = Command::new("ffmpeg")
+        .args(["-v", "error", "-i"])
+        .arg(path)
+        .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
+        .output()
+        .expect("ffmpeg runs");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let frame = (w * h * 3) as usize;
+    assert_eq!(o.stdout.len() % frame, 0);
+    o.stdout.chunks(frame).map(|c| c.to_vec()).collect()
+}
+
+fn mean_abs_diff(a: &[u8], b: &[u8]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (*x as f64 - *y as f64).abs())
+        .sum::<f64>()
+        / a.len() as f64
+}
+
+#[test]
+fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
+    let d = tmp("mp4");
+    let ply = d.join("clusters.ply");
+    two_clusters(&ply);
+    let out = d.join("orbit.mp4");
+    let o = run(&[
+        "video",
+        ply.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--seconds",
+        "1",
+        "--fps",
+        "8",
+        "--size",
+        "96x64",
+        "--depth",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(probe(&out), (8, 96, 64));
+    let depth = d.join("orbit.depth.mp4");
+    assert_eq!(probe(&depth), (8, 96, 64));
+    let frames = decode(&out, 96, 64);
+    assert_eq!(frames.len(), 8);
+    // The camera goes round: consecutive frames differ, and a quarter turn differs a lot.
+    for (i, w) in frames.windows(2).enumerate() {
+        let diff = mean_abs_diff(&w[0], &w[1]);
+        assert!(diff > 1.0, "frames {i} and {} differ by only {diff}", i + 1);
+    }
+    assert!(mean_abs_diff(&frames[0], &frames[2]) > 5.0);
+    // The same cameras through `render --trajectory`: the decoded video matches the PNGs to
+    // within H.264's loss (mean error under 6 of 255 on these flat-coloured clusters).
+    let renders = d.join("renders");
+    let o = run(&[
+        "render",
+        "--ply",
+        ply.to_str().unwrap(),
+        "--trajectory",
+        "orbit",
+        "--frames",
+        "8",
+        "--size",
+        "96x64",
+        "--out",
+        renders.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for (i, f) in frames.iter().enumerate() {
+        let png = image::open(renders.join(format!("orbit_{i:04}.png")))
+            .unwrap()
+            .to_rgb8();
+        assert_eq!(png.dimensions(), (96, 64));
+        let err = mean_abs_diff(f, png.as_raw());
+        assert!(err < 6.0, "frame {i}: decoded video differs from the render by {err}");
+    }
+    // The depth video is not the colour one and shows the clusters (bright) over empty black.
+    let depth_frames = decode(&depth, 96, 64);
+    let grey = &depth_frames[0];
+    let lit = grey.chunks(3).filter(|p| p[0] > 40).count();
+    let dark = grey.chunks(3).filter(|p| p[0] < 10).count();
+    assert!(lit > 200 && dark > 1000, "depth frame: {lit} lit, {dark} dark pixels");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn gif_holds_every_frame_and_bad_requests_fail_in_one_line() {
+    let d = tmp("gif");
+    let ply = d.join("clusters.ply");
+    two_clusters(&ply);
+    let out = d.join("orbit.gif");
+    let o = run(&[
+        "video",
+        ply.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--seconds",
+        "0.5",
+        "--fps",
+        "10",
+        "--size",
+        "64x48",
+        "--background",
+        "1,1,1",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(probe(&out), (5, 64, 48));
+    let frames = decode(&out, 64, 48);
+    assert_eq!(frames.len(), 5);
+    assert!(mean_abs_diff(&frames[0], &frames[1]) > 1.0);
+    // White background: the corners are white.
+    assert!(frames[0][..3].iter().all(|v| *v > 240), "{:?}", &frames[0][..3]);
+
+    let p = ply.to_str().unwrap();
+    let bad: [(&[&str], &str); 5] = [
+        (&["video", p, "--out", "x.avi"], ".mp4 or .gif"),
+        (&["video", p, "--out", "x.mp4", "--size", "65x48"], "even sides"),
+        (&["video", p, "--out", "x.mp4", "--size", "big"], "WIDTHxHEIGHT"),
+        (&["video", p, "--out", "x.mp4", "--trajectory", "explore"], "scene directory"),
+        (&["video", "/nonexistent.ply", "--out", "x.mp4"], "not found"),
+    ];
+    for (args, says) in bad {
+        let o = run(args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?} succeeded");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(!Path::new("x.mp4").exists() && !Path::new("x.mp4.tmp").exists());
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
