@@ -1,0 +1,145 @@
+//! `dreamscene view` in a real browser: Debian's headless chromium, driven by playwright-core
+//! (viewer/tests/screenshot.mjs), opens the page on a red cluster at +x and a blue one at −x,
+//! waits for the page's rendered-frame signal and takes a screenshot, whose left and right
+//! halves must be red and blue (the start view looks from +y, so +x is on the left). Also: a
+//! busy port and a viewer without its npm packages are one-line errors, and SIGINT (Ctrl-C)
+//! stops the server with exit status 0.
+use dreamscene::splat::cloud::SH_C0;
+use dreamscene::splat::ply::write_ply;
+use dreamscene::splat::Gaussians;
+use rand::SeedableRng;
+use rand_distr::{Distribution, Normal};
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("ds-view-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// 3000 Gaussians each: red around x = +0.5, blue around x = −0.5.
+fn two_clusters(path: &Path) {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+    let n = Normal::new(0.0f32, 0.15).unwrap();
+    let mut g = Gaussians::default();
+    for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
+        for _ in 0..3000 {
+            g.means
+                .push([cx + n.sample(&mut rng), n.sample(&mut rng), 0.5 + n.sample(&mut rng)]);
+            g.scales.push([-3.5; 3]);
+            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+            g.opacities.push(4.0);
+            g.sh
+                .extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
+        }
+    }
+    write_ply(path, &g).unwrap();
+}
+
+/// Starts `view` on a free port and returns the process and its URL.
+fn serve(ply: &Path, port: &str) -> (Child, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(["view", ply.to_str().unwrap(), "--port", port])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("runs");
+    let mut line = String::new();
+    BufReader::new(child.stdout.as_mut().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    let url = line
+        .split_whitespace()
+        .find(|w| w.starts_with("http://127.0.0.1:"))
+        .unwrap_or_else(|| panic!("no URL in {line:?}"))
+        .to_string();
+    (child, url)
+}
+
+fn interrupt(child: &mut Child) -> std::process::ExitStatus {
+    // SAFETY: kill(2) on the pid of a child this test started and has not reaped.
+    let r = unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
+    assert_eq!(r, 0);
+    child.wait().unwrap()
+}
+
+#[test]
+fn browser_shows_red_on_the_left_and_blue_on_the_right() {
+    let d = tmp("browser");
+    let ply = d.join("clusters.ply");
+    two_clusters(&ply);
+    let (mut child, url) = serve(&ply, "0");
+    let shot = d.join("shot.png");
+    let viewer = Path::new(env!("CARGO_MANIFEST_DIR")).join("viewer");
+    let o = Command::new("node")
+        .current_dir(&viewer)
+        .arg("tests/screenshot.mjs")
+        .arg(&url)
+        .arg(&shot)
+        .arg("320x240")
+        .output()
+        .expect("node runs (scripts/setup.sh installs it)");
+    let status = interrupt(&mut child);
+    assert!(
+        o.status.success(),
+        "browser: {}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(status.success(), "view exited with {status:?} on SIGINT");
+    let img = image::open(&shot).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (320, 240));
+    // Count strongly red and strongly blue pixels in the left and right halves (rows 40-200,
+    // clear of the page's text overlays).
+    let (mut red, mut blue) = ([0usize; 2], [0usize; 2]);
+    for y in 40..200 {
+        for x in 0..320 {
+            let p = img.get_pixel(x, y).0.map(|v| v as i32);
+            let half = (x >= 160) as usize;
+            if p[0] > 150 && p[1] < 80 && p[2] < 80 {
+                red[half] += 1;
+            }
+            if p[2] > 150 && p[0] < 80 && p[1] < 80 {
+                blue[half] += 1;
+            }
+        }
+    }
+    eprintln!("red left/right {red:?}, blue left/right {blue:?}");
+    assert!(red[0] > 2000 && blue[1] > 2000, "red {red:?} blue {blue:?}");
+    assert!(red[1] < red[0] / 10 && blue[0] < blue[1] / 10, "red {red:?} blue {blue:?}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn busy_port_and_missing_packages_are_clear_errors() {
+    let d = tmp("errors");
+    let ply = d.join("clusters.ply");
+    two_clusters(&ply);
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port().to_string();
+    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(["view", ply.to_str().unwrap(), "--port", &port])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(err.contains(&format!("port {port} on 127.0.0.1 is in use")), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+
+    let bare = d.join("viewer");
+    std::fs::create_dir_all(&bare).unwrap();
+    std::fs::write(bare.join("index.html"), "<!doctype html>").unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .env("DREAMSCENE_VIEWER_DIR", &bare)
+        .args(["view", ply.to_str().unwrap(), "--port", "0"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(err.contains("run scripts/setup.sh"), "{err}");
+    drop(listener);
+    std::fs::remove_dir_all(&d).ok();
+}
