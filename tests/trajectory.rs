@@ -53,8 +53,10 @@ fn scene_dir(name: &str, scene_type: &str, room: [f64; 3], objects: &[Placed]) -
     for (i, o) in objects.iter().enumerate() {
         let ply = format!("objects/thing{i}.ply");
         write_ply(&d.join(&ply), &box_cloud(o.size)).unwrap();
-        objs.push(serde_json::json!({"id": format!("thing{}", i + 1), "category": "thing",
-            "ply": ply, "position": o.position, "yaw": o.yaw, "scale": o.scale}));
+        objs.push(
+            serde_json::json!({"id": format!("thing{}", i + 1), "category": "thing",
+            "ply": ply, "position": o.position, "yaw": o.yaw, "scale": o.scale}),
+        );
     }
     let scene = serde_json::json!({"version": 1, "prompt": "test", "seed": 0,
         "scene_type": scene_type, "room": {"size": room}, "prior": {"kind": "shape", "models": null},
@@ -148,7 +150,11 @@ fn room_paths_stay_inside_the_room_and_clear_of_every_object() {
             );
             for (k, o) in objects.iter().enumerate() {
                 let gap = clearance(p, o);
-                assert!(gap > 0.2, "{traj:?} {} is {gap:.2} m from object {k}", c.img_name);
+                assert!(
+                    gap > 0.2,
+                    "{traj:?} {} is {gap:.2} m from object {k}",
+                    c.img_name
+                );
             }
         }
         // A path, not a scatter: neighbouring cameras are close (a 90-frame loop in a 5x4 m

@@ -2,8 +2,8 @@
 //! decoder (Debian's ffprobe/ffmpeg, installed by scripts/setup.sh): frame count, size, frames
 //! that differ along the path, the decoded first frame against the engine's own PNG of the same
 //! camera, the depth video beside, the GIF, and one-line errors on bad input.
-use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::cloud::SH_C0;
+use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::Gaussians;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
@@ -32,13 +32,15 @@ fn two_clusters(path: &Path) {
     let mut g = Gaussians::default();
     for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
         for _ in 0..2000 {
-            g.means
-                .push([cx + n.sample(&mut rng), n.sample(&mut rng), 0.5 + n.sample(&mut rng)]);
+            g.means.push([
+                cx + n.sample(&mut rng),
+                n.sample(&mut rng),
+                0.5 + n.sample(&mut rng),
+            ]);
             g.scales.push([-3.5; 3]);
             g.rotations.push([1.0, 0.0, 0.0, 0.0]);
             g.opacities.push(4.0);
-            g.sh
-                .extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
+            g.sh.extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
         }
     }
     write_ply(path, &g).unwrap();
@@ -57,7 +59,11 @@ fn probe(path: &Path) -> (usize, u32, u32) {
     let text = String::from_utf8_lossy(&o.stdout);
     let v: Vec<&str> = text.trim().split(',').collect();
     assert_eq!(v.len(), 3, "ffprobe said {text:?}");
-    (v[2].parse().unwrap(), v[0].parse().unwrap(), v[1].parse().unwrap())
+    (
+        v[2].parse().unwrap(),
+        v[0].parse().unwrap(),
+        v[1].parse().unwrap(),
+    )
 }
 
 /// Every frame decoded by ffmpeg as RGB bytes.
@@ -136,14 +142,20 @@ fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
             .to_rgb8();
         assert_eq!(png.dimensions(), (96, 64));
         let err = mean_abs_diff(f, png.as_raw());
-        assert!(err < 6.0, "frame {i}: decoded video differs from the render by {err}");
+        assert!(
+            err < 6.0,
+            "frame {i}: decoded video differs from the render by {err}"
+        );
     }
     // The depth video is not the colour one and shows the clusters (bright) over empty black.
     let depth_frames = decode(&depth, 96, 64);
     let grey = &depth_frames[0];
     let lit = grey.chunks(3).filter(|p| p[0] > 40).count();
     let dark = grey.chunks(3).filter(|p| p[0] < 10).count();
-    assert!(lit > 200 && dark > 1000, "depth frame: {lit} lit, {dark} dark pixels");
+    assert!(
+        lit > 200 && dark > 1000,
+        "depth frame: {lit} lit, {dark} dark pixels"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -173,15 +185,31 @@ fn gif_holds_every_frame_and_bad_requests_fail_in_one_line() {
     assert_eq!(frames.len(), 5);
     assert!(mean_abs_diff(&frames[0], &frames[1]) > 1.0);
     // White background: the corners are white.
-    assert!(frames[0][..3].iter().all(|v| *v > 240), "{:?}", &frames[0][..3]);
+    assert!(
+        frames[0][..3].iter().all(|v| *v > 240),
+        "{:?}",
+        &frames[0][..3]
+    );
 
     let p = ply.to_str().unwrap();
     let bad: [(&[&str], &str); 5] = [
         (&["video", p, "--out", "x.avi"], ".mp4 or .gif"),
-        (&["video", p, "--out", "x.mp4", "--size", "65x48"], "even sides"),
-        (&["video", p, "--out", "x.mp4", "--size", "big"], "WIDTHxHEIGHT"),
-        (&["video", p, "--out", "x.mp4", "--trajectory", "explore"], "scene directory"),
-        (&["video", "/nonexistent.ply", "--out", "x.mp4"], "not found"),
+        (
+            &["video", p, "--out", "x.mp4", "--size", "65x48"],
+            "even sides",
+        ),
+        (
+            &["video", p, "--out", "x.mp4", "--size", "big"],
+            "WIDTHxHEIGHT",
+        ),
+        (
+            &["video", p, "--out", "x.mp4", "--trajectory", "explore"],
+            "scene directory",
+        ),
+        (
+            &["video", "/nonexistent.ply", "--out", "x.mp4"],
+            "not found",
+        ),
     ];
     for (args, says) in bad {
         let o = run(args);

@@ -27,13 +27,15 @@ fn two_clusters(path: &Path) {
     let mut g = Gaussians::default();
     for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
         for _ in 0..3000 {
-            g.means
-                .push([cx + n.sample(&mut rng), n.sample(&mut rng), 0.5 + n.sample(&mut rng)]);
+            g.means.push([
+                cx + n.sample(&mut rng),
+                n.sample(&mut rng),
+                0.5 + n.sample(&mut rng),
+            ]);
             g.scales.push([-3.5; 3]);
             g.rotations.push([1.0, 0.0, 0.0, 0.0]);
             g.opacities.push(4.0);
-            g.sh
-                .extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
+            g.sh.extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
         }
     }
     write_ply(path, &g).unwrap();
@@ -109,7 +111,10 @@ fn browser_shows_red_on_the_left_and_blue_on_the_right() {
     }
     eprintln!("red left/right {red:?}, blue left/right {blue:?}");
     assert!(red[0] > 2000 && blue[1] > 2000, "red {red:?} blue {blue:?}");
-    assert!(red[1] < red[0] / 10 && blue[0] < blue[1] / 10, "red {red:?} blue {blue:?}");
+    assert!(
+        red[1] < red[0] / 10 && blue[0] < blue[1] / 10,
+        "red {red:?} blue {blue:?}"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -126,7 +131,10 @@ fn busy_port_and_missing_packages_are_clear_errors() {
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success());
-    assert!(err.contains(&format!("port {port} on 127.0.0.1 is in use")), "{err}");
+    assert!(
+        err.contains(&format!("port {port} on 127.0.0.1 is in use")),
+        "{err}"
+    );
     assert_eq!(err.trim().lines().count(), 1, "{err}");
 
     let bare = d.join("viewer");

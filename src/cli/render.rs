@@ -4,9 +4,9 @@ use super::{open_device, save_png};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::Camera;
 use dreamscene::export::trajectory::{cameras, open_input, Size, Trajectory};
+use dreamscene::generate::progress::Progress;
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use dreamscene::splat::Gaussians;
-use dreamscene::generate::progress::Progress;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]

@@ -93,7 +93,10 @@ pub fn run(a: Args) -> Result<()> {
     let flag = stop.clone();
     ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
         .context("installing the Ctrl-C handler")?;
-    println!("viewing {} at http://127.0.0.1:{port}/ (Ctrl-C stops)", a.input.display());
+    println!(
+        "viewing {} at http://127.0.0.1:{port}/ (Ctrl-C stops)",
+        a.input.display()
+    );
     while !stop.load(Ordering::SeqCst) {
         let Some(req) = server.recv_timeout(Duration::from_millis(200))? else {
             continue;
@@ -115,7 +118,10 @@ fn scene_info(
     let (traj, speed) = match subject {
         Subject::Scene(_) => (Trajectory::Explore, 1.5),
         Subject::Cloud { min, max } => {
-            let diag = (0..3).map(|k| (max[k] - min[k]).powi(2)).sum::<f64>().sqrt();
+            let diag = (0..3)
+                .map(|k| (max[k] - min[k]).powi(2))
+                .sum::<f64>()
+                .sqrt();
             (Trajectory::Orbit, diag.max(0.1))
         }
     };
@@ -148,8 +154,16 @@ fn scene_info(
 }
 
 fn respond(req: Request, viewer: &Path, ply: &[u8], info: &str) -> std::io::Result<()> {
-    let url = req.url().split(['?', '#']).next().unwrap_or("/").to_string();
-    let get = matches!(req.method(), tiny_http::Method::Get | tiny_http::Method::Head);
+    let url = req
+        .url()
+        .split(['?', '#'])
+        .next()
+        .unwrap_or("/")
+        .to_string();
+    let get = matches!(
+        req.method(),
+        tiny_http::Method::Get | tiny_http::Method::Head
+    );
     let body: Option<(Vec<u8>, &str)> = if !get {
         None
     } else {

@@ -188,11 +188,19 @@ impl Mp4Sink {
     }
 
     fn start(&mut self, sps: &[u8], pps: &[u8]) -> Result<()> {
-        let brand = |s: &str| s.parse::<mp4::FourCC>().map_err(|e| EncodeError::Mp4(e.to_string()));
+        let brand = |s: &str| {
+            s.parse::<mp4::FourCC>()
+                .map_err(|e| EncodeError::Mp4(e.to_string()))
+        };
         let config = mp4::Mp4Config {
             major_brand: brand("isom")?,
             minor_version: 512,
-            compatible_brands: vec![brand("isom")?, brand("iso2")?, brand("avc1")?, brand("mp41")?],
+            compatible_brands: vec![
+                brand("isom")?,
+                brand("iso2")?,
+                brand("avc1")?,
+                brand("mp41")?,
+            ],
             timescale: TIMESCALE,
         };
         let file = self
@@ -336,7 +344,9 @@ const GIF_SPEED: i32 = 10;
 impl GifSink {
     fn new(path: &Path, width: u32, height: u32, fps: f64) -> Result<GifSink> {
         if width > u16::MAX as u32 || height > u16::MAX as u32 {
-            return Err(EncodeError::Invalid(format!("GIF size {width}x{height} too large")));
+            return Err(EncodeError::Invalid(format!(
+                "GIF size {width}x{height} too large"
+            )));
         }
         let buf = SharedBuf::default();
         let mut encoder = GifEncoder::new_with_speed(buf.clone(), GIF_SPEED);
@@ -375,7 +385,9 @@ impl VideoSink for GifSink {
 
     fn finish(self: Box<Self>) -> Result<()> {
         if self.frames == 0 {
-            return Err(EncodeError::Invalid("a video needs at least one frame".into()));
+            return Err(EncodeError::Invalid(
+                "a video needs at least one frame".into(),
+            ));
         }
         let GifSink {
             encoder, buf, path, ..

@@ -71,7 +71,9 @@ impl FromStr for Size {
             h.trim().parse::<u32>().map_err(|_| bad())?,
         );
         if !(1..=8192).contains(&width) || !(1..=8192).contains(&height) {
-            return Err(format!("size {width}x{height}: each side must be 1 to 8192"));
+            return Err(format!(
+                "size {width}x{height}: each side must be 1 to 8192"
+            ));
         }
         Ok(Size { width, height })
     }
@@ -82,7 +84,10 @@ impl FromStr for Size {
 pub enum Subject {
     Scene(SceneBox),
     /// Robust bounds (1st to 99th percentile per axis) of a cloud's centres.
-    Cloud { min: [f64; 3], max: [f64; 3] },
+    Cloud {
+        min: [f64; 3],
+        max: [f64; 3],
+    },
 }
 
 impl Subject {
@@ -156,7 +161,9 @@ pub struct Input {
 
 /// Opens `path`: a scene directory, a `scene.json`, or a splat PLY.
 pub fn open_input(path: &Path) -> Result<Input> {
-    let is_json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    let is_json = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
     if path.is_dir() || is_json {
         let dir = if path.is_dir() {
             path.to_path_buf()
@@ -204,7 +211,12 @@ fn robust_bounds(g: &Gaussians, q: f64) -> Option<([f64; 3], [f64; 3])> {
     let mut min = [0.0; 3];
     let mut max = [0.0; 3];
     for k in 0..3 {
-        let mut v: Vec<f32> = g.means.iter().map(|m| m[k]).filter(|x| x.is_finite()).collect();
+        let mut v: Vec<f32> = g
+            .means
+            .iter()
+            .map(|m| m[k])
+            .filter(|x| x.is_finite())
+            .collect();
         if v.is_empty() {
             return None;
         }
@@ -255,9 +267,7 @@ pub fn cameras(
              for a single splat file"
                 .into(),
         )),
-        (Trajectory::Orbit, Subject::Scene(scene)) => {
-            Ok(room_orbit(scene, frames, width, height))
-        }
+        (Trajectory::Orbit, Subject::Scene(scene)) => Ok(room_orbit(scene, frames, width, height)),
         (Trajectory::Orbit, Subject::Cloud { min, max }) => {
             Ok(cloud_orbit(*min, *max, frames, width, height))
         }
@@ -306,7 +316,8 @@ fn room_orbit(scene: &SceneBox, frames: usize, w: u32, h: u32) -> Vec<Camera> {
     ];
     let target = [0.0, 0.0, 0.45 * eye];
     let at = |k: f64, a: f64| [k * hx * a.sin(), k * hy * a.cos(), eye];
-    let clear = |k: f64| (0..180).all(|i| valid_viewpoint(scene, at(k, 2.0 * PI * i as f64 / 180.0)));
+    let clear =
+        |k: f64| (0..180).all(|i| valid_viewpoint(scene, at(k, 2.0 * PI * i as f64 / 180.0)));
     let ks = (0..13).map(|i| 0.9 - 0.05 * i as f64);
     let Some(k) = ks.into_iter().find(|k| clear(*k)) else {
         let mut cams = explore_path(scene, frames, w, h);
