@@ -9,9 +9,10 @@ apt_install() {
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "$@"
 }
-# chromium and ffmpeg (ffprobe) are the outside clients of the viewer and video tests; node and
+# chromium and ffmpeg (ffprobe) are the outside clients of the viewer and video tests; g++ builds
+# the bundled OpenH264 encoder (the openh264 crate); node and
 # npm install the viewer's packages.
-pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools chromium ffmpeg)
+pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools chromium ffmpeg g++)
 command -v npm >/dev/null || pkgs+=(nodejs npm)
 missing=()
 for p in "${pkgs[@]}"; do
