@@ -4,14 +4,14 @@
 //
 // Rendered-frame signal (for tests and scripts): `window.dreamscene.framesAfterLoad` counts the
 // frames drawn since the splats finished loading, and `document.body.dataset.state` becomes
-// "rendered" once FRAMES_FOR_SIGNAL of them are on screen (Spark sorts splats in a worker, so the
-// first frames after loading may show an older order).
+// "rendered" once FRAMES_FOR_SIGNAL of them are drawn and two of them with Spark's sort settled
+// (it sorts splats in a worker: frames before its first result show nothing).
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { SparkRenderer, SplatMesh } from "@sparkjsdev/spark";
 
-const FRAMES_FOR_SIGNAL = 30;
-const state = { framesAfterLoad: 0, loaded: false, error: null };
+const FRAMES_FOR_SIGNAL = 8;
+const state = { framesAfterLoad: 0, settledFrames: 0, signalled: false, loaded: false, error: null };
 window.dreamscene = state;
 const status = document.getElementById("status");
 
@@ -33,7 +33,10 @@ async function main() {
   const camera = new THREE.PerspectiveCamera(
     info.camera.fov_y_deg, window.innerWidth / window.innerHeight, 0.05, 1000);
   camera.up.set(0, 0, 1);
-  scene.add(new SparkRenderer({ renderer }));
+  // Spark calls onDirty when a sort (or LoD update) finishes and the view needs drawing again.
+  let pendingFrame = false;
+  const spark = new SparkRenderer({ renderer, onDirty: () => { pendingFrame = true; } });
+  scene.add(spark);
 
   const controls = new OrbitControls(camera, renderer.domElement);
   const reset = () => {
@@ -62,12 +65,25 @@ async function main() {
     renderer.setSize(window.innerWidth, window.innerHeight);
   });
 
-  const clock = new THREE.Clock();
+  let last = performance.now();
   const forward = new THREE.Vector3();
   const right = new THREE.Vector3();
   const up = new THREE.Vector3(0, 0, 1);
+  // Draw on demand: for a second and at least FRAMES_FOR_SIGNAL frames after loading or any
+  // camera change (Spark re-sorts in a worker and needs frames to show the new order), then idle,
+  // so a slow CPU renderer leaves the page responsive.
+  let changedAt = performance.now();
+  let framesSinceChange = 0;
+  const changed = () => {
+    changedAt = performance.now();
+    framesSinceChange = 0;
+  };
+  controls.addEventListener("change", changed);
+  window.addEventListener("resize", changed);
   renderer.setAnimationLoop(() => {
-    const step = info.fly_speed * Math.min(clock.getDelta(), 0.1);
+    const now = performance.now();
+    const step = info.fly_speed * Math.min((now - last) / 1000, 0.1);
+    last = now;
     camera.getWorldDirection(forward);
     right.crossVectors(forward, up).normalize();
     const move = new THREE.Vector3();
@@ -81,11 +97,22 @@ async function main() {
       move.normalize().multiplyScalar(step);
       camera.position.add(move);
       controls.target.add(move);
+      changed();
     }
     controls.update();
+    const idle = framesSinceChange >= FRAMES_FOR_SIGNAL && now - changedAt > 1000;
+    if (idle && state.signalled && !pendingFrame) return;
+    pendingFrame = false;
+    framesSinceChange += 1;
     renderer.render(scene, camera);
     state.framesAfterLoad += 1;
-    if (state.framesAfterLoad === FRAMES_FOR_SIGNAL) document.body.dataset.state = "rendered";
+    // Settled: Spark has splats in its sorted order for a recent view and no sort is pending.
+    const settled = spark.activeSplats > 0 && spark.orderingTexture && !spark.sorting && !spark.sortDirty;
+    if (settled) state.settledFrames += 1;
+    if (!state.signalled && state.settledFrames >= 2 && state.framesAfterLoad >= FRAMES_FOR_SIGNAL) {
+      state.signalled = true;
+      document.body.dataset.state = "rendered";
+    }
   });
 }
 

@@ -107,40 +107,41 @@ pub fn run(a: Args) -> Result<()> {
     Ok(())
 }
 
-/// What the page needs to place its camera: the first view of the orbit (a splat file) or of
-/// the exploring loop (a scene), in the world frame.
+/// What the page needs to place its camera: the first view of the orbit (around a splat file,
+/// or inside the room looking at its centre), in the world frame.
 fn scene_info(
     name: &str,
     subject: &Subject,
     gaussians: usize,
     background: [f32; 3],
 ) -> Result<String> {
-    let (traj, speed) = match subject {
-        Subject::Scene(_) => (Trajectory::Explore, 1.5),
+    // Fly speed in metres per second: walking pace in a room, the cloud's size per second.
+    let speed = match subject {
+        Subject::Scene(_) => 1.5,
         Subject::Cloud { min, max } => {
             let diag = (0..3)
                 .map(|k| (max[k] - min[k]).powi(2))
                 .sum::<f64>()
                 .sqrt();
-            (Trajectory::Orbit, diag.max(0.1))
+            diag.max(0.1)
         }
     };
     let size = Size {
         width: 640,
         height: 480,
     };
-    let cam: Camera = cameras(&traj, subject, 1, Some(size))?
+    let cam: Camera = cameras(&Trajectory::Orbit, subject, 1, Some(size))?
         .into_iter()
         .next()
         .ok_or_else(|| anyhow!("no start view"))?;
     let forward = [cam.rotation[0][2], cam.rotation[1][2], cam.rotation[2][2]];
-    let reach = match subject {
-        Subject::Scene(_) => 2.0,
-        Subject::Cloud { min, max } => {
-            let c = [0, 1, 2].map(|k| 0.5 * (min[k] + max[k]) - cam.position[k]);
-            (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt()
-        }
+    // Orbit about the point the first view looks at: the cloud's centre, or the room centre.
+    let centre = match subject {
+        Subject::Scene(_) => [0.0; 3],
+        Subject::Cloud { min, max } => [0, 1, 2].map(|k| 0.5 * (min[k] + max[k])),
     };
+    let c = [0, 1, 2].map(|k| centre[k] - cam.position[k]);
+    let reach = (c[0] * forward[0] + c[1] * forward[1] + c[2] * forward[2]).max(0.5);
     let target = [0, 1, 2].map(|k| cam.position[k] + reach * forward[k]);
     let fov_y = 2.0 * (0.5 * cam.height as f64 / cam.fy).atan();
     Ok(serde_json::json!({

@@ -29,9 +29,10 @@ const browser = await chromium.launchPersistentContext(profile, {
   ],
 });
 let code = 0;
+const logs = [];
+let page;
 try {
-  const page = browser.pages()[0] ?? (await browser.newPage());
-  const logs = [];
+  page = browser.pages()[0] ?? (await browser.newPage());
   page.on("console", (m) => logs.push(`${m.type()}: ${m.text()}`));
   page.on("pageerror", (e) => logs.push(`pageerror: ${e.message}`));
   // The page may load only from the server under test.
@@ -48,6 +49,9 @@ try {
   console.log(JSON.stringify({ frames: state.framesAfterLoad, screenshot: out }));
 } catch (e) {
   console.error(String(e));
+  const state = page ? await page.evaluate(() => window.dreamscene).catch(() => null) : null;
+  console.error(`page state: ${JSON.stringify(state)}`);
+  for (const line of logs.slice(-20)) console.error(`page ${line}`);
   code = 1;
 } finally {
   await browser.close();
