@@ -1,7 +1,12 @@
 //! `dreamscene video` and `render --trajectory` through the binary, checked by an outside
 //! decoder (Debian's ffprobe/ffmpeg, installed by scripts/setup.sh): frame count, size, frames
 //! that differ along the path, the decoded first frame against the engine's own PNG of the same
-//! camera, the depth video beside, the GIF, and one-line errors on bad input.
+//! camera, the depth video beside, the GIF, and one-line errors on bad input. The frame loop's
+//! time-indexed source (the hook for 4D timelines) is driven directly.
+mod common;
+
+use dreamscene::camera::Camera;
+use dreamscene::export::video::{render_video, FrameSource, VideoOptions};
 use dreamscene::splat::cloud::SH_C0;
 use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::Gaussians;
@@ -22,6 +27,103 @@ fn tmp(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// One cluster of `colour` around the origin.
+fn cluster(colour: [f32; 3]) -> Gaussians {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+    let n = Normal::new(0.0f32, 0.2).unwrap();
+    let mut g = Gaussians::default();
+    for _ in 0..2000 {
+        g.means
+            .push([n.sample(&mut rng), n.sample(&mut rng), n.sample(&mut rng)]);
+        g.scales.push([-3.0; 3]);
+        g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+        g.opacities.push(4.0);
+        g.sh.extend(colour.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
+    }
+    g
+}
+
+/// Red before `switch` seconds, blue from then on; records the times it was asked about.
+struct Switching {
+    red: Gaussians,
+    blue: Gaussians,
+    switch: f64,
+    last: Option<bool>,
+    asked: Vec<f64>,
+}
+
+impl FrameSource for Switching {
+    fn gaussians_at(&mut self, t: f64) -> Option<&Gaussians> {
+        self.asked.push(t);
+        let blue = t >= self.switch;
+        if self.last == Some(blue) {
+            return None;
+        }
+        self.last = Some(blue);
+        Some(if blue { &self.blue } else { &self.red })
+    }
+}
+
+#[test]
+fn frame_loop_asks_the_source_for_each_frame_time_and_draws_what_it_gives() {
+    let ctx = common::gpu();
+    let d = tmp("source");
+    let out = d.join("switch.mp4");
+    let cam = Camera::look_at([0.0, -3.0, 0.0], [0.0; 3], [0.0, 0.0, 1.0], 64, 48, 0.8);
+    let cams = vec![cam; 6];
+    let mut source = Switching {
+        red: cluster([1.0, 0.0, 0.0]),
+        blue: cluster([0.0, 0.0, 1.0]),
+        switch: 0.25,
+        last: None,
+        asked: vec![],
+    };
+    let opts = VideoOptions {
+        fps: 10.0,
+        background: [0.0; 3],
+        depth_far: 5.0,
+    };
+    let mut calls = 0;
+    let report = render_video(
+        &ctx,
+        &mut source,
+        &cams,
+        &opts,
+        &out,
+        None,
+        &mut |done, total| {
+            calls += 1;
+            assert_eq!((done, total), (calls, 6));
+        },
+    )
+    .unwrap();
+    assert_eq!((report.frames, report.width, report.height), (6, 64, 48));
+    assert_eq!(source.asked, [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]);
+    let frames = decode(&out, 64, 48);
+    assert_eq!(frames.len(), 6);
+    // The centre 8x8 pixels: red for t < 0.25, blue after.
+    for (i, f) in frames.iter().enumerate() {
+        let (mut r, mut b) = (0.0, 0.0);
+        for y in 20..28 {
+            for x in 28..36 {
+                let p = &f[(y * 64 + x) * 3..][..3];
+                r += p[0] as f64 / 64.0;
+                b += p[2] as f64 / 64.0;
+            }
+        }
+        let red = i < 3;
+        assert!(
+            if red {
+                r > 150.0 && b < 60.0
+            } else {
+                b > 150.0 && r < 60.0
+            },
+            "frame {i}: mean red {r:.0}, blue {b:.0}"
+        );
+    }
+    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Two clusters of 2000 small Gaussians each, red around x = +0.5 and blue around x = −0.5,
