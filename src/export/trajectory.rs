@@ -289,8 +289,7 @@ fn cloud_orbit(min: [f64; 3], max: [f64; 3], frames: usize, w: u32, h: u32) -> V
         * ((max[0] - min[0]).powi(2) + (max[1] - min[1]).powi(2) + (max[2] - min[2]).powi(2))
             .sqrt()
             .max(1e-3);
-    let fov_y = 2.0 * ((0.5 * SCENE_FOV_X).tan() * h as f64 / w as f64).atan();
-    let fov = SCENE_FOV_X.min(fov_y);
+    let fov = SCENE_FOV_X.min(fov_y_of(w, h));
     let dist = r / (0.8 * 0.5 * fov).sin();
     let el = CLOUD_ELEVATION_DEG.to_radians();
     orbit(
