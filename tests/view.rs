@@ -3,7 +3,8 @@
 //! waits for the page's rendered-frame signal and takes a screenshot, whose left and right
 //! halves must be red and blue (the start view looks from +y, so +x is on the left). Also: a
 //! busy port and a viewer without its npm packages are one-line errors, and SIGINT (Ctrl-C)
-//! stops the server with exit status 0.
+//! stops the server with exit status 0. The screenshot script fails if the page asks for any URL
+//! outside the server under test.
 use dreamscene::splat::cloud::SH_C0;
 use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::Gaussians;

@@ -35,10 +35,15 @@ try {
   page = browser.pages()[0] ?? (await browser.newPage());
   page.on("console", (m) => logs.push(`${m.type()}: ${m.text()}`));
   page.on("pageerror", (e) => logs.push(`pageerror: ${e.message}`));
-  // The page may load only from the server under test.
+  // The page may load only from the server under test: anything else is refused and fails the run.
   const origin = new URL(url).origin;
-  await page.route("**/*", (route) =>
-    route.request().url().startsWith(origin) ? route.continue() : route.abort());
+  const external = [];
+  await page.route("**/*", (route) => {
+    const u = route.request().url();
+    if (u.startsWith(origin) || u.startsWith("data:") || u.startsWith("blob:")) return route.continue();
+    external.push(u);
+    return route.abort();
+  });
   await page.goto(url);
   const timeout = Number(process.env.VIEW_TIMEOUT_MS || 90000);
   await page.waitForFunction(
@@ -46,6 +51,7 @@ try {
   const state = await page.evaluate(() => window.dreamscene);
   if (state.error) throw new Error(`page error: ${state.error}`);
   await page.screenshot({ path: out });
+  if (external.length) throw new Error(`the page asked for outside URLs: ${external.join(", ")}`);
   console.log(JSON.stringify({ frames: state.framesAfterLoad, screenshot: out }));
 } catch (e) {
   console.error(String(e));
