@@ -11,7 +11,7 @@ apt_install() {
 }
 # chromium and ffmpeg (ffprobe) are the outside clients of the viewer and video tests; g++ builds
 # the bundled OpenH264 encoder (the openh264 crate); node and
-# npm install the viewer's packages.
+# npm install the viewer's packages and the export tests' readers.
 pkgs=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools chromium ffmpeg g++)
 command -v npm >/dev/null || pkgs+=(nodejs npm)
 missing=()
@@ -60,3 +60,14 @@ if [ ! -f "$VIEWER_DIR/node_modules/.package-lock.json" ] ||
   (cd "$VIEWER_DIR" && npm ci --no-audit --no-fund --loglevel=error)
 fi
 test -f "$VIEWER_DIR/node_modules/@sparkjsdev/spark/dist/spark.module.js" || { echo "viewer packages missing in $VIEWER_DIR/node_modules" >&2; exit 1; }
+
+# The independent readers the export tests check files with (PlayCanvas splat-transform, Niantic's
+# SPZ decoder, gltf-transform, the Khronos glTF validator), exactly as tests/node/package-lock.json
+# names them, so the tests themselves need no network.
+READERS_DIR="$(cd "$(dirname "$0")/.." && pwd)/tests/node"
+if [ ! -f "$READERS_DIR/node_modules/.package-lock.json" ] ||
+   [ "$READERS_DIR/package-lock.json" -nt "$READERS_DIR/node_modules/.package-lock.json" ]; then
+  echo "installing the export tests' readers into $READERS_DIR/node_modules"
+  (cd "$READERS_DIR" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+test -x "$READERS_DIR/node_modules/.bin/splat-transform" || { echo "export test readers missing in $READERS_DIR/node_modules" >&2; exit 1; }

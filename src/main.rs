@@ -65,6 +65,12 @@ enum Command {
     /// Writes layout.json: every instance placed exactly once, collision-free, with the relations
     /// it could not satisfy listed under `unsatisfied` and relaxed placements marked `fallback`.
     Layout(cli::layout::Args),
+    /// Export a scene directory's merged world-frame cloud (scene.ply), or a splat PLY, as INRIA
+    /// PLY, antimatter15 .splat, Niantic .spz (version 2) or glTF .glb (KHR_gaussian_splatting).
+    ///
+    /// PLY, .splat and .spz keep the scene's frame (z up; SPZ stores it converted to its RUB
+    /// frame, which readers undo); .glb is rotated into glTF's y-up frame, SH included.
+    Export(cli::export::Args),
     /// Check the Vulkan device, ONNX Runtime, and (with --models) a diffusion model directory.
     Doctor(cli::doctor::Args),
     /// Measure kernel throughput at fixed sizes on the selected device; with --unet, the latency
@@ -102,6 +108,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Plan(a) => cli::plan::run(a),
         Command::Generate(a) => cli::generate::run(a),
         Command::Layout(a) => cli::layout::run(a),
+        Command::Export(a) => cli::export::run(a),
         Command::Doctor(a) => cli::doctor::run(a),
         Command::Bench(a) => cli::bench::run(a),
     }

@@ -1,0 +1,69 @@
+//! `dreamscene export`: a scene directory's merged world-frame cloud, or a splat PLY, written as
+//! INRIA PLY, antimatter15 `.splat`, Niantic `.spz` or glTF `.glb` for other tools and viewers.
+use anyhow::{bail, Context as _, Result};
+use dreamscene::export::{export, load_input, Format, Options};
+use std::path::PathBuf;
+
+/// The formats by name, for `--format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum FormatArg {
+    /// INRIA 3DGS binary PLY (SuperSplat, Spark, GaussianSplats3D, gsplat.js, Babylon.js, ...).
+    Ply,
+    /// antimatter15 .splat, 32 bytes a Gaussian, no view-dependent colour (antimatter15/splat,
+    /// Spark, GaussianSplats3D, gsplat.js, SuperSplat, Babylon.js).
+    Splat,
+    /// Niantic .spz version 2 with gzip (Spark, SuperSplat, Babylon.js, GaussianSplats3D).
+    Spz,
+    /// glTF 2.0 binary with KHR_gaussian_splatting and a COLOR_0 point fallback, y up
+    /// (Babylon.js, CesiumJS; other glTF viewers show coloured points).
+    Glb,
+}
+
+impl From<FormatArg> for Format {
+    fn from(f: FormatArg) -> Format {
+        match f {
+            FormatArg::Ply => Format::Ply,
+            FormatArg::Splat => Format::Splat,
+            FormatArg::Spz => Format::Spz,
+            FormatArg::Glb => Format::Glb,
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// A scene directory (written by `generate`) or a splat PLY.
+    pub input: PathBuf,
+    /// Output format.
+    #[arg(long, value_enum)]
+    pub format: FormatArg,
+    /// Output file (written atomically; its directory is created if missing).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// PLY only: pad to SH degree 3 with normals (248-byte vertices), for viewers that accept
+    /// nothing else.
+    #[arg(long)]
+    pub compat: bool,
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let format = Format::from(a.format);
+    if a.compat && format != Format::Ply {
+        bail!("--compat applies to --format ply only");
+    }
+    let g = load_input(&a.input)?;
+    super::create_parent(&a.out)?;
+    export(&g, format, Options { compat: a.compat }, &a.out)?;
+    let bytes = std::fs::metadata(&a.out)
+        .with_context(|| format!("reading back {}", a.out.display()))?
+        .len();
+    println!(
+        "wrote {} ({} Gaussians, SH degree {}, {}{}, {bytes} bytes)",
+        a.out.display(),
+        g.len(),
+        g.sh_degree,
+        format.name(),
+        if a.compat { " compat" } else { "" },
+    );
+    Ok(())
+}
