@@ -68,8 +68,9 @@ enum Command {
     /// Export a scene directory's merged world-frame cloud (scene.ply), or a splat PLY, as INRIA
     /// PLY, antimatter15 .splat, Niantic .spz (version 2) or glTF .glb (KHR_gaussian_splatting).
     ///
-    /// PLY, .splat and .spz keep the scene's frame (z up; SPZ stores it converted to its RUB
-    /// frame, which readers undo); .glb is rotated into glTF's y-up frame, SH included.
+    /// The scene (z up) is turned into each format's viewer convention, SH included: PLY and
+    /// .splat x right, y down, z forward (as INRIA captures); .spz y up (Niantic's RUB); .glb y up
+    /// (glTF). --scene-frame keeps the scene's own frame for PLY, .splat and .spz.
     Export(cli::export::Args),
     /// Check the Vulkan device, ONNX Runtime, and (with --models) a diffusion model directory.
     Doctor(cli::doctor::Args),

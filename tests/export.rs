@@ -266,17 +266,54 @@ fn input_ply(dir: &Path, g: &Gaussians) -> PathBuf {
 
 // ---------------------------------------------------------------------------------------------
 
+/// The frame PLY and .splat viewers expect (x right, y down, z forward) of the z-up world.
+const RDF: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
+/// glTF's y-up frame of the z-up world (also SPZ's stored RUB frame).
+const Y_UP: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]];
+
+fn apply(f: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|r| (0..3).map(|c| f[r][c] * v[c]).sum::<f64>())
+}
+
+/// Largest colour difference between SH coefficients `a` (world frame) seen from direction d and
+/// `b` (frame `f`) seen from `f · d`, over a few random directions, for every channel: zero when
+/// `b` is `a` rotated into the frame (the specification's basis, evaluated here).
+fn sh_frame_diff(
+    f: &[[f64; 3]; 3],
+    a: impl Fn(usize, usize) -> f64,
+    b: impl Fn(usize, usize) -> f64,
+    rng: &mut impl Rng,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for _ in 0..4 {
+        let d: [f64; 3] = [0; 3].map(|_| rng.gen_range(-1.0..1.0));
+        let n = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let d = d.map(|v| v / n);
+        let (bw, bf) = (basis(d), basis(apply(f, d)));
+        for ch in 0..3 {
+            let world: f64 = (0..16).map(|c| bw[c] * a(c, ch)).sum();
+            let framed: f64 = (0..16).map(|c| bf[c] * b(c, ch)).sum();
+            worst = worst.max((world - framed).abs());
+        }
+    }
+    worst
+}
+
 #[test]
 fn ply_export_reads_back_exactly_in_splat_transform() {
     require_readers();
     let dir = tempdir("ply");
     let g = cloud(1, 64, 2);
     let input = input_ply(&dir, &g);
-    let out = dir.join("out.ply");
-    export_ok(&input, "ply", &out, &[]);
+    let per = g.coeffs() - 1;
+    // f_rest is channel-major: all R coefficients, then G, then B.
+    let rest = |c: usize, ch: usize| format!("f_rest_{}", ch * per + c - 1);
+
+    // --scene-frame: the cloud itself, every float exact.
+    let out = dir.join("scene-frame.ply");
+    export_ok(&input, "ply", &out, &["--scene-frame"]);
     let t = splat_transform_csv(&out);
     assert_eq!(t.rows.len(), g.len());
-    let per = g.coeffs() - 1;
     for i in 0..g.len() {
         let f = |name: &str| t.get(i, name) as f32;
         assert_eq!([f("x"), f("y"), f("z")], g.means[i], "position {i}");
@@ -289,8 +326,7 @@ fn ply_export_reads_back_exactly_in_splat_transform() {
         for ch in 0..3 {
             assert_eq!(f(&format!("f_dc_{ch}")) as f64, sh(&g, i, 0, ch));
             for c in 1..=per {
-                // f_rest is channel-major: all R coefficients, then G, then B.
-                let v = f(&format!("f_rest_{}", ch * per + c - 1)) as f64;
+                let v = f(&rest(c, ch)) as f64;
                 assert_eq!(
                     v,
                     sh(&g, i, c, ch),
@@ -299,6 +335,45 @@ fn ply_export_reads_back_exactly_in_splat_transform() {
             }
         }
     }
+
+    // The default: the viewers' frame, x right, y down, z forward. Positions map exactly (a
+    // signed axis permutation); rotations compose with the frame's; the view-dependent colour
+    // seen from a world direction is the same as seen from that direction in the new frame.
+    let out = dir.join("viewer.ply");
+    export_ok(&input, "ply", &out, &[]);
+    let t = splat_transform_csv(&out);
+    let mut rng = common::rng(10);
+    let mut worst_sh = 0.0f64;
+    for i in 0..g.len() {
+        let f = |name: &str| t.get(i, name);
+        let want = apply(&RDF, g.means[i].map(f64::from)).map(|v| v as f32);
+        assert_eq!(
+            [f("x"), f("y"), f("z")].map(|v| v as f32),
+            want,
+            "position {i}"
+        );
+        let q = [f("rot_0"), f("rot_1"), f("rot_2"), f("rot_3")];
+        let want = mat_mul(&RDF, &rot(g.rotations[i].map(f64::from)));
+        assert!(rot_diff(&rot(q), &want) < 1e-6, "rotation {i}");
+        assert_eq!(
+            [f("scale_0"), f("scale_1"), f("scale_2")].map(|v| v as f32),
+            g.scales[i]
+        );
+        assert_eq!(f("opacity") as f32, g.opacities[i]);
+        let framed = |c: usize, ch: usize| {
+            if c == 0 {
+                f(&format!("f_dc_{ch}"))
+            } else if c <= per {
+                f(&rest(c, ch))
+            } else {
+                0.0
+            }
+        };
+        let world = |c: usize, ch: usize| if c <= per { sh(&g, i, c, ch) } else { 0.0 };
+        worst_sh = worst_sh.max(sh_frame_diff(&RDF, world, framed, &mut rng));
+    }
+    println!("ply: worst view-dependent colour difference in the viewer frame {worst_sh:.2e}");
+    assert!(worst_sh < 1e-5, "SH rotation off by {worst_sh}");
 }
 
 #[test]
@@ -308,7 +383,7 @@ fn compat_ply_has_248_byte_vertices_with_degree_3_and_normals() {
     let g = cloud(2, 40, 1);
     let input = input_ply(&dir, &g);
     let out = dir.join("compat.ply");
-    export_ok(&input, "ply", &out, &["--compat"]);
+    export_ok(&input, "ply", &out, &["--compat", "--scene-frame"]);
     let bytes = std::fs::read(&out).unwrap();
     let end = bytes
         .windows(11)
@@ -362,10 +437,12 @@ fn splat_export_is_importance_ordered_and_within_byte_quantisation() {
     let (mut worst_colour, mut worst_alpha, mut worst_rot) = (0.0f64, 0.0f64, 0.0f64);
     for (row, &i) in order.iter().enumerate() {
         let f = |name: &str| t.get(row, name);
-        // Positions and linear scales are float32 in the file: exact (scale via exp/log in f32).
+        // Positions (in the viewers' RDF frame) and linear scales are float32 in the file: exact
+        // (scale via exp/log in f32).
+        let want = apply(&RDF, g.means[i].map(f64::from)).map(|v| v as f32);
         assert_eq!(
             [f("x") as f32, f("y") as f32, f("z") as f32],
-            g.means[i],
+            want,
             "row {row} holds Gaussian {i}"
         );
         for a in 0..3 {
@@ -384,7 +461,7 @@ fn splat_export_is_importance_ordered_and_within_byte_quantisation() {
         // two decodings differ by up to 1/128 a component, so the rotation is compared as a
         // rotation within 0.03 (about 1.7 degrees).
         let q = [f("rot_0"), f("rot_1"), f("rot_2"), f("rot_3")];
-        let want = rot(g.rotations[i].map(f64::from));
+        let want = mat_mul(&RDF, &rot(g.rotations[i].map(f64::from)));
         worst_rot = worst_rot.max(rot_diff(&rot(q), &want));
     }
     println!(
@@ -438,8 +515,10 @@ fn spz_v2_decodes_in_niantics_reader_and_splat_transform() {
     let dir = tempdir("spz");
     let g = cloud(4, 150, 3);
     let input = input_ply(&dir, &g);
+    // In the scene frame the writer's input is the cloud itself, so Niantic's frame conversion
+    // and quantisation are checked coefficient by coefficient; the default frame is checked last.
     let out = dir.join("out.spz");
-    export_ok(&input, "spz", &out, &[]);
+    export_ok(&input, "spz", &out, &["--scene-frame"]);
 
     // The container: gzip around the 16-byte legacy header, version 2, 12 fractional bits.
     let mut raw = Vec::new();
@@ -534,6 +613,24 @@ fn spz_v2_decodes_in_niantics_reader_and_splat_transform() {
             }
         }
     }
+
+    // The default frame: the scene turned into RDF (x right, y down, z forward), which Niantic's
+    // reader gives back when asked for RDF; splat-transform sees the stored RUB frame, y up.
+    let out = dir.join("viewer.spz");
+    export_ok(&input, "spz", &out, &[]);
+    let c = reader_json("spz", &out);
+    let pos = floats(&c["positions"]);
+    let t = splat_transform_csv(&out);
+    for i in 0..g.len() {
+        let m = g.means[i].map(f64::from);
+        let (rdf, rub) = (apply(&RDF, m), apply(&Y_UP, m));
+        for (a, name) in ["x", "y", "z"].into_iter().enumerate() {
+            let d = (pos[3 * i + a] - rdf[a]).abs();
+            assert!(d <= SPZ_POSITION_TOL, "RDF position {i}.{a} off by {d}");
+            let d = (t.get(i, name) - rub[a]).abs();
+            assert!(d <= SPZ_POSITION_TOL, "RUB position {i}.{a} off by {d}");
+        }
+    }
 }
 
 /// Colour channel value of the glTF fallback: sRGB decoded to linear.
@@ -617,7 +714,6 @@ fn glb_validates_and_reads_back_in_gltf_transform() {
         attr(&format!("{k}OPACITY")),
         attr("COLOR_0"),
     );
-    let up = [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]];
     let coeffs: Vec<Vec<f64>> = (0..=3)
         .flat_map(|l| (0..2 * l + 1).map(move |m| (l, m)))
         .map(|(l, m)| attr(&format!("{k}SH_DEGREE_{l}_COEF_{m}")))
@@ -641,7 +737,7 @@ fn glb_validates_and_reads_back_in_gltf_transform() {
         ];
         let norm = q.iter().map(|v| v * v).sum::<f64>().sqrt();
         assert!((norm - 1.0).abs() < 1e-6, "unit quaternion {i}: {norm}");
-        let want = mat_mul(&up, &rot(g.rotations[i].map(f64::from)));
+        let want = mat_mul(&Y_UP, &rot(g.rotations[i].map(f64::from)));
         assert!(rot_diff(&rot(q), &want) < 1e-6, "rotation {i}");
         for a in 0..3 {
             let s = f64::from(g.scales[i][a]).exp();
@@ -669,22 +765,11 @@ fn glb_validates_and_reads_back_in_gltf_transform() {
             (colour[4 * i + 3] - alpha).abs() <= 0.5 / 255.0 + 1e-6,
             "COLOR_0 alpha {i}"
         );
-        // View-dependent colour: seen from world direction d, the glTF coefficients evaluated
-        // at the same direction in glTF's frame give the same colour (the specification's
-        // basis, evaluated here).
-        for _ in 0..4 {
-            let d = unit([0; 4].map(|_| rng.gen_range(-1.0..1.0)));
-            let d = [d[0], d[1], d[2]];
-            let n = d.iter().map(|v| v * v).sum::<f64>().sqrt();
-            let d = d.map(|v| v / n);
-            let dg = [0, 1, 2].map(|r| (0..3).map(|c| up[r][c] * d[c]).sum::<f64>());
-            let (bw, bg) = (basis(d), basis(dg));
-            for ch in 0..3 {
-                let world: f64 = (0..16).map(|c| bw[c] * sh(&g, i, c, ch)).sum();
-                let gltf: f64 = (0..16).map(|c| bg[c] * coeffs[c][3 * i + ch]).sum();
-                worst_sh = worst_sh.max((world - gltf).abs());
-            }
-        }
+        // View-dependent colour: seen from a world direction, the glTF coefficients evaluated at
+        // the same direction in glTF's frame give the same colour.
+        let world = |c: usize, ch: usize| sh(&g, i, c, ch);
+        let gltf = |c: usize, ch: usize| coeffs[c][3 * i + ch];
+        worst_sh = worst_sh.max(sh_frame_diff(&Y_UP, world, gltf, &mut rng));
     }
     println!("glb: worst view-dependent colour difference {worst_sh:.2e}");
     assert!(worst_sh < 1e-5, "SH rotation off by {worst_sh}");
@@ -739,7 +824,7 @@ fn a_generated_draft_scene_directory_exports_its_merged_cloud() {
     assert!(merged.len() > 10_000, "{} Gaussians", merged.len());
     let out = dir.join("bedroom.spz");
     export_ok(&scene, "spz", &out, &[]);
-    // splat-transform's statistics of what it decodes (stored RUB frame: y and z negated).
+    // splat-transform's statistics of what it decodes: the stored RUB frame, the scene y up.
     let o = Command::new(node_dir().join("node_modules/.bin/splat-transform"))
         .args(["-q"])
         .arg(&out)
@@ -759,8 +844,10 @@ fn a_generated_draft_scene_directory_exports_its_merged_cloud() {
     let (lo, hi) = (floats(&s["data"]["min"]), floats(&s["data"]["max"]));
     for (a, name) in ["x", "y", "z"].into_iter().enumerate() {
         let j = cols.iter().position(|c| *c == name).unwrap();
-        let sign = if a == 0 { 1.0 } else { -1.0 };
-        let vals = merged.means.iter().map(|m| sign * f64::from(m[a]));
+        let vals = merged
+            .means
+            .iter()
+            .map(|m| apply(&Y_UP, m.map(f64::from))[a]);
         let (want_lo, want_hi) = vals.fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v), h.max(v)));
         // splat-transform prints statistics to 7 significant digits.
         let tol = SPZ_POSITION_TOL + 1e-5;
@@ -797,13 +884,14 @@ fn bad_input_fails_with_one_line_and_keeps_the_old_output() {
     };
     let garbage = dir.join("garbage.ply");
     std::fs::write(&garbage, b"not a ply").unwrap();
-    let cases: [(&Path, &str, &[&str], &str); 6] = [
+    let cases: [(&Path, &str, &[&str], &str); 7] = [
         (&dir.join("missing.ply"), "spz", &[], "no such file"),
         (&not_scene, "spz", &[], "not a scene directory"),
         (&garbage, "spz", &[], "PLY"),
         (&nan_ply, "spz", &[], "non-finite"),
         (&far, "spz", &[], "2048"),
         (&nan_ply, "spz", &["--compat"], "--compat"),
+        (&far, "glb", &["--scene-frame"], "y up"),
     ];
     for (input, format, extra, expect) in cases {
         let o = export(input, format, &out, extra);

@@ -44,6 +44,10 @@ pub struct Args {
     /// nothing else.
     #[arg(long)]
     pub compat: bool,
+    /// PLY, .splat and .spz: keep the scene's z-up world frame (to read the file back into
+    /// dreamscene) instead of the viewers' convention (x right, y down, z forward; SPZ y up).
+    #[arg(long)]
+    pub scene_frame: bool,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -51,14 +55,27 @@ pub fn run(a: Args) -> Result<()> {
     if a.compat && format != Format::Ply {
         bail!("--compat applies to --format ply only");
     }
+    if a.scene_frame && format == Format::Glb {
+        bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
+    }
     let g = load_input(&a.input)?;
     super::create_parent(&a.out)?;
-    export(&g, format, Options { compat: a.compat }, &a.out)?;
+    let opts = Options {
+        compat: a.compat,
+        scene_frame: a.scene_frame,
+    };
+    export(&g, format, opts, &a.out)?;
     let bytes = std::fs::metadata(&a.out)
         .with_context(|| format!("reading back {}", a.out.display()))?
         .len();
+    let frame = match format {
+        Format::Glb => "y up",
+        _ if a.scene_frame => "scene frame, z up",
+        Format::Spz => "y up",
+        _ => "x right, y down, z forward",
+    };
     println!(
-        "wrote {} ({} Gaussians, SH degree {}, {}{}, {bytes} bytes)",
+        "wrote {} ({} Gaussians, SH degree {}, {}{}, {frame}, {bytes} bytes)",
         a.out.display(),
         g.len(),
         g.sh_degree,

@@ -15,11 +15,11 @@
 //! The extension object says `kernel: "ellipse"`, `colorSpace: "srgb_rec709_display"` (3DGS
 //! colours are display sRGB), the default projection and sorting. glTF is y-up, the project's
 //! world z-up, so [`to_gltf_frame`] rotates the cloud -90° about x (`(x, y, z) -> (x, z, -y)`),
-//! quaternions and SH included, before writing: viewers that ignore node transforms for SH still
-//! light it right. [`GlbBuilder`] can hold several meshes and nodes (one per object instance,
+//! quaternions and SH included, before writing (baked into the data rather than put in a node
+//! rotation, so viewers that do not rotate SH by the node still light it right). [`GlbBuilder`] can hold several meshes and nodes (one per object instance,
 //! with node translations and rotations); [`encode`] writes one node for the whole cloud.
 use super::{sigmoid, ExportError, Result};
-use crate::scene::sh_rotate::{Mat3, ShRotation};
+use crate::scene::sh_rotate::Mat3;
 use crate::splat::cloud::SH_C0;
 use crate::splat::Gaussians;
 use serde_json::{json, Value};
@@ -36,40 +36,9 @@ const UNSIGNED_BYTE: u32 = 5121;
 pub const Z_UP_TO_Y_UP: Mat3 = [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]];
 
 /// `g` rotated from the project's z-up world into glTF's y-up frame: means `(x, z, -y)`,
-/// quaternions pre-multiplied by the frame rotation (unit length, w >= 0), SH bands rotated
-/// exactly. Scales, opacities and DC colours are unchanged.
+/// quaternions and SH bands rotated with them ([`super::rotate`]).
 pub fn to_gltf_frame(g: &Gaussians) -> Gaussians {
-    let mut out = g.clone();
-    for m in &mut out.means {
-        *m = [m[0], m[2], -m[1]];
-    }
-    let h = std::f64::consts::FRAC_1_SQRT_2;
-    let qr = [h, -h, 0.0, 0.0];
-    for q in &mut out.rotations {
-        let r = quat_mul(qr, q.map(f64::from));
-        let n = r.iter().map(|v| v * v).sum::<f64>().sqrt();
-        if n > 0.0 && n.is_finite() {
-            let s = if r[0] < 0.0 { -1.0 / n } else { 1.0 / n };
-            *q = r.map(|v| (v * s) as f32);
-        }
-    }
-    if g.sh_degree > 0 {
-        let shr = ShRotation::new(&Z_UP_TO_Y_UP, g.sh_degree);
-        for block in out.sh.chunks_exact_mut(g.coeffs() * 3) {
-            shr.apply_rgb(block);
-        }
-    }
-    out
-}
-
-/// Hamilton product of quaternions (w, x, y, z).
-fn quat_mul(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
-    [
-        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
-        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
-        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
-        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
-    ]
+    super::rotate(g, &Z_UP_TO_Y_UP)
 }
 
 /// sRGB transfer function decoded to linear (IEC 61966-2-1).
@@ -267,29 +236,4 @@ pub fn encode(g: &Gaussians) -> Result<Vec<u8>> {
     let mesh = b.add_splats("scene", &to_gltf_frame(g))?;
     b.add_node("scene", mesh, NodeTransform::default());
     b.finish()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn frame_rotation_maps_up_to_up_and_keeps_handedness() {
-        let r = Z_UP_TO_Y_UP;
-        let det = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1])
-            - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0])
-            + r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
-        assert_eq!(det, 1.0);
-        // The world's up (+z) becomes glTF's up (+y); the world's +y (object front) becomes -z.
-        assert_eq!([r[0][2], r[1][2], r[2][2]], [0.0, 1.0, 0.0]);
-        assert_eq!([r[0][1], r[1][1], r[2][1]], [0.0, 0.0, -1.0]);
-        // The quaternion used for rotations is the same rotation.
-        let h = std::f64::consts::FRAC_1_SQRT_2;
-        let m = crate::splat::reference::quat_to_mat([h, -h, 0.0, 0.0]).unwrap();
-        for i in 0..3 {
-            for j in 0..3 {
-                assert!((m[i][j] - r[i][j]).abs() < 1e-12, "{m:?}");
-            }
-        }
-    }
 }

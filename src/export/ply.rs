@@ -1,7 +1,7 @@
 //! The INRIA 3DGS PLY, as [`crate::splat::ply::write_ply`] writes it, and its "compat" form for
 //! viewers that accept only the full layout: SH degree 3 (45 `f_rest`, zero where the cloud has
 //! no such band, which leaves every colour unchanged) with normals, 62 floats = 248 bytes a
-//! vertex. Both keep the cloud's frame (the scene's world frame, z up).
+//! vertex. Both write the cloud in the frame they are given (see [`super`] for frames).
 use super::{ExportError, Result};
 use crate::scene::compose::pad_sh;
 use crate::splat::ply::write_ply;

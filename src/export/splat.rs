@@ -3,7 +3,7 @@
 //!
 //! | offset | type   | content |
 //! |--------|--------|---------|
-//! | 0      | f32 x3 | position, the cloud's frame unchanged (as those writers leave the PLY's) |
+//! | 0      | f32 x3 | position, as given (those writers copy the PLY's, RDF)  |
 //! | 12     | f32 x3 | linear scale `exp(scale_i)` |
 //! | 24     | u8 x4  | R, G, B = `(0.5 + SH_C0 · f_dc) · 255`, A = `sigmoid(opacity) · 255` |
 //! | 28     | u8 x4  | unit quaternion (w, x, y, z), byte = `q · 128 + 128` |

@@ -18,7 +18,8 @@
 //! Every byte is clamped to 0..=255. SPZ stores the RUB frame of three.js/OpenGL, and its writers
 //! take a PLY as RDF (the INRIA convention), so the conversion flips y and z: positions
 //! `(x, -y, -z)`, quaternions `(w, x, -y, -z)`, and each SH coefficient times the parity of its
-//! basis function under that flip (`flipSh` of nianticlabs/spz `splat-types.h`). Readers undo it.
+//! basis function under that flip (`flipSh` of nianticlabs/spz `splat-types.h`). Niantic's
+//! reader undoes it when asked for RDF; three.js viewers draw RUB as it is (y up).
 use super::{sigmoid, to_u8, unit_quat, ExportError, Result};
 use crate::splat::Gaussians;
 use flate2::write::GzEncoder;
