@@ -491,6 +491,46 @@ fn glb_validates_and_reads_back_in_gltf_transform() {
     assert!(worst_sh < 1e-5, "SH rotation off by {worst_sh}");
 }
 
+#[test]
+fn glb_builder_writes_one_node_per_instance() {
+    require_readers();
+    use dreamscene::export::glb::{to_gltf_frame, GlbBuilder, NodeTransform};
+    let dir = tempdir("glb-nodes");
+    let mut b = GlbBuilder::new();
+    let chair = b
+        .add_splats("chair", &to_gltf_frame(&cloud(8, 30, 1)))
+        .unwrap();
+    let lamp = b
+        .add_splats("lamp", &to_gltf_frame(&cloud(9, 20, 1)))
+        .unwrap();
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let placed = |x: f64| NodeTransform {
+        translation: Some([x, 0.0, 0.0]),
+        rotation: Some([0.0, h, 0.0, h]),
+    };
+    b.add_node("chair1", chair, placed(1.0));
+    b.add_node("chair2", chair, placed(-1.0));
+    b.add_node("lamp1", lamp, NodeTransform::default());
+    let out = dir.join("instances.glb");
+    std::fs::write(&out, b.finish().unwrap()).unwrap();
+    let renamed = dir.join("renamed.glb");
+    std::fs::write(
+        &renamed,
+        rename_extension_attributes(&std::fs::read(&out).unwrap()),
+    )
+    .unwrap();
+    let report = reader_json("validate", &renamed);
+    assert_eq!(report["issues"]["numErrors"].as_u64(), Some(0), "{report}");
+    assert_eq!(
+        report["issues"]["numWarnings"].as_u64(),
+        Some(0),
+        "{report}"
+    );
+    let doc = reader_json("gltf", &out);
+    assert_eq!(doc["meshes"].as_u64(), Some(2));
+    assert_eq!(doc["nodes"].as_u64(), Some(3));
+}
+
 /// The GLB with every `KHR_gaussian_splatting:NAME` attribute renamed `_KHR_gaussian_splatting_NAME`
 /// (JSON chunk re-padded, lengths rewritten).
 fn rename_extension_attributes(glb: &[u8]) -> Vec<u8> {
@@ -578,6 +618,15 @@ fn a_generated_draft_scene_directory_exports_its_merged_cloud() {
             hi[j]
         );
     }
+
+    // Without scene.ply the directory is composed from scene.json, objects/ and
+    // environment.ply: the same cloud.
+    std::fs::remove_file(scene.join("scene.ply")).unwrap();
+    let again = dir.join("composed.ply");
+    export_ok(&scene, "ply", &again, &["--scene-frame"]);
+    let composed = read_ply(&again).unwrap();
+    assert_eq!(composed.len(), merged.len());
+    assert_eq!(composed, merged);
 }
 
 #[test]
