@@ -59,6 +59,13 @@ pub fn run(a: Args) -> Result<()> {
         bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
     }
     let g = load_input(&a.input)?;
+    if format == Format::Splat && g.sh_degree > 0 {
+        eprintln!(
+            "note: .splat holds only the diffuse colour; the view-dependent colour (SH degree {}) \
+             is left out",
+            g.sh_degree
+        );
+    }
     super::create_parent(&a.out)?;
     let opts = Options {
         compat: a.compat,
