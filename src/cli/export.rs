@@ -12,7 +12,9 @@ pub enum FormatArg {
     /// antimatter15 .splat, 32 bytes a Gaussian, no view-dependent colour (antimatter15/splat,
     /// Spark, GaussianSplats3D, gsplat.js, SuperSplat, Babylon.js).
     Splat,
-    /// Niantic .spz version 2 with gzip (Spark, SuperSplat, Babylon.js, GaussianSplats3D).
+    /// Niantic .spz version 2 with gzip, stored y up as Niantic's convention says (Spark,
+    /// Babylon.js, GaussianSplats3D; splat-transform 3.7 skips the frame conversion and shows it
+    /// upside down).
     Spz,
     /// glTF 2.0 binary with KHR_gaussian_splatting and a COLOR_0 point fallback, y up
     /// (Babylon.js, CesiumJS; other glTF viewers show coloured points).
