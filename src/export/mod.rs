@@ -5,7 +5,7 @@
 //! file per format.
 //!
 //! Frames. The project's world is z up; splat viewers expect the frame of the captures they were
-//! built for. PLY and `.splat` viewers (SuperSplat, antimatter15, GaussianSplats3D) take the
+//! built for. PLY and `.splat` viewers (SuperSplat, antimatter15's viewer) take the
 //! COLMAP/INRIA camera convention, x right, y down, z forward ("RDF"), so [`export`] rotates
 //! the cloud +90° about x first ([`Z_UP_TO_RDF`]: world `(x, y, z)` is `(x, -z, y)`): up is -y,
 //! the room's +y side is forward. SPZ's writer then applies Niantic's RDF-to-RUB conversion, so
