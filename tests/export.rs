@@ -619,8 +619,8 @@ fn a_generated_draft_scene_directory_exports_its_merged_cloud() {
         );
     }
 
-    // Without scene.ply the directory is composed from scene.json, objects/ and
-    // environment.ply: the same cloud.
+    // The directory's cloud is composed from scene.json, objects/ and environment.ply: without
+    // scene.ply it is still exactly the cloud generate wrote there.
     std::fs::remove_file(scene.join("scene.ply")).unwrap();
     let again = dir.join("composed.ply");
     export_ok(&scene, "ply", &again, &["--scene-frame"]);
@@ -650,7 +650,7 @@ fn bad_input_fails_with_one_line_and_keeps_the_old_output() {
     let garbage = dir.join("garbage.ply");
     std::fs::write(&garbage, b"not a ply").unwrap();
     let cases: [(&Path, &str, &[&str], &str); 7] = [
-        (&dir.join("missing.ply"), "spz", &[], "no such file"),
+        (&dir.join("missing.ply"), "spz", &[], "not found"),
         (&not_scene, "spz", &[], "not a scene directory"),
         (&garbage, "spz", &[], "PLY"),
         (&nan_ply, "spz", &[], "non-finite"),

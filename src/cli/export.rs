@@ -34,7 +34,7 @@ impl From<FormatArg> for Format {
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// A scene directory (written by `generate`) or a splat PLY.
+    /// A scene directory (written by `generate`) or its scene.json, or a splat PLY.
     pub input: PathBuf,
     /// Output format.
     #[arg(long, value_enum)]

@@ -25,9 +25,7 @@ pub mod trajectory;
 pub mod video;
 
 use crate::scene::compose::mat_to_quat;
-use crate::scene::dir::{compose_scene, read_scene, SceneError};
 use crate::scene::sh_rotate::{Mat3, ShRotation};
-use crate::splat::ply::{read_ply, PlyError};
 use crate::splat::Gaussians;
 use std::path::Path;
 
@@ -111,13 +109,9 @@ fn quat_mul(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
 /// Why an export failed.
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
+    /// The input is neither a scene directory nor a splat PLY, or cannot be read.
     #[error(transparent)]
-    Ply(#[from] PlyError),
-    #[error(transparent)]
-    Scene(#[from] SceneError),
-    /// The input is neither a scene directory nor a splat PLY.
-    #[error("{0}")]
-    Input(String),
+    Input(#[from] trajectory::TrajectoryError),
     /// The cloud cannot be written in the format (empty, non-finite, out of the format's range).
     #[error("{0}")]
     Unrepresentable(String),
@@ -131,31 +125,11 @@ pub enum ExportError {
 /// Result of this module.
 pub type Result<T> = std::result::Result<T, ExportError>;
 
-/// The cloud an input path stands for: a scene directory gives its merged world-frame
-/// `scene.ply` (composed from `scene.json` when the directory has no `scene.ply` yet); a file is
-/// read as a splat PLY.
+/// The cloud an input path stands for, through the loader `video`, `render` and `view` use
+/// ([`trajectory::open_input`]): a scene directory (or its `scene.json`) composed into its merged
+/// world-frame cloud, the cloud `generate` writes as `scene.ply`, or a splat PLY.
 pub fn load_input(path: &Path) -> Result<Gaussians> {
-    if path.is_dir() {
-        let merged = path.join("scene.ply");
-        if merged.is_file() {
-            return Ok(read_ply(&merged)?);
-        }
-        if path.join("scene.json").is_file() {
-            let scene = read_scene(path)?;
-            return Ok(compose_scene(path, &scene)?);
-        }
-        return Err(ExportError::Input(format!(
-            "{}: not a scene directory (no scene.ply or scene.json in it)",
-            path.display()
-        )));
-    }
-    if !path.exists() {
-        return Err(ExportError::Input(format!(
-            "{}: no such file or directory",
-            path.display()
-        )));
-    }
-    Ok(read_ply(path)?)
+    Ok(trajectory::open_input(path)?.cloud)
 }
 
 /// Checks what every format needs: consistent arrays, at least one Gaussian, finite numbers.
