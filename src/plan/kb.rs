@@ -73,6 +73,11 @@ pub fn parse_relation(s: &str) -> Option<RelationKind> {
         "UNDER" | "BELOW" | "BENEATH" | "UNDERNEATH" => Some(Under),
         "NEXT" | "NEXT TO" | "BESIDE" | "NEAR" | "BY" | "ADJACENT" => Some(Next),
         "OPPOSITE" | "OPPOSITE OF" | "OPPOSITE TO" | "FACING" | "ACROSS FROM" => Some(Opposite),
+        "AROUND" | "AROUND OF" => Some(Around),
+        "AT" => Some(At),
+        "FLANK" | "FLANKING" | "ON EITHER SIDE OF" => Some(Flank),
+        "CIRCLE" | "CIRCLING" => Some(Circle),
+        "ROW" | "IN A ROW" | "ROWS" => Some(Row),
         _ => None,
     }
 }
