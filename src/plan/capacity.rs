@@ -17,9 +17,25 @@ const DECOR: &[&str] = &[
     "speaker", "pedestal", "cardboard box", "laundry basket", "bean bag", "ottoman", "side table",
 ];
 
-/// A room that fits the instances (see [`choose_room`]).
+/// Room to use round each footprint when sizing a room for furniture in use (a chair pulled
+/// out, a walk past a desk), metres added to width and depth.
+pub const USE_MARGIN: f64 = 0.2;
+
+/// A room that fits the instances in use: [`choose_room`] on footprints grown by
+/// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate).
 pub fn room_for(instances: &[Instance], scene: SceneType) -> Room {
-    choose_room(instances, scene)
+    let grown: Vec<Instance> = instances
+        .iter()
+        .map(|i| {
+            let mut g = i.clone();
+            g.size[0] += USE_MARGIN;
+            g.size[1] += USE_MARGIN;
+            g
+        })
+        .collect();
+    let mut room = choose_room(&grown, scene);
+    room.size[2] = choose_room(instances, scene).size[2];
+    room
 }
 
 /// Floor area the spec's instances cover: things standing on others and flat things (rugs,

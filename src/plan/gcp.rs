@@ -117,8 +117,23 @@ impl Problem {
         self.stacked.contains(&(a.min(b), a.max(b)))
     }
 
-    /// Candidate poses for instance `i` given the placed ones.
-    fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
+    /// Candidate poses for instance `i` given the placed ones: the poses its functional groups
+    /// suggest (tried first: a seat's slots at its table, a desk's place in its row), then all.
+    fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> (Vec<Pose>, Vec<Pose>) {
+        let mut group = vec![];
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            if subject {
+                if let Some(poses) = self.group_poses(i, rel, &pj, &self.boxed(j, &pj)) {
+                    group.extend(poses);
+                }
+            }
+        }
+        (group, self.all_candidates(i, placed))
+    }
+
+    /// Every candidate pose for instance `i`: anchor regions and around placed partners.
+    fn all_candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
         let [w, d, _] = self.room;
         let (hw, hd) = (0.5 * w, 0.5 * d);
         let s = self.inst[i].size;
@@ -245,12 +260,6 @@ impl Problem {
                     z: 0.0,
                 });
                 continue;
-            }
-            if subject {
-                if let Some(poses) = self.group_poses(i, rel, &pj, &bj) {
-                    out.extend(poses);
-                    continue;
-                }
             }
             // Around the partner in its frame: front, behind, left, right at several gaps.
             let ext = 0.5 * s[0].max(s[1]);
@@ -684,7 +693,7 @@ fn attempt_layout(
     let mut placed: Vec<Option<Pose>> = vec![None; n];
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
     for i in order(prob, rng) {
-        let cands = prob.candidates(i, &placed);
+        let (group, cands) = prob.candidates(i, &placed);
         let boxes: Vec<Option<(Box2, [f64; 4])>> = placed
             .iter()
             .enumerate()
@@ -696,12 +705,18 @@ fn attempt_layout(
             })
             .collect();
         let mut best: Option<(f64, Pose, bool)> = None;
-        for p in &cands {
-            let (valid, ok, total, score) =
-                prob.evaluate(i, p, &placed, &boxes, rng.gen::<f64>() * 3.0);
-            if valid && best.as_ref().is_none_or(|b| score > b.0) {
-                best = Some((score, *p, ok == total));
+        let mut search = |poses: &[Pose], best: &mut Option<(f64, Pose, bool)>| {
+            for p in poses {
+                let (valid, ok, total, score) =
+                    prob.evaluate(i, p, &placed, &boxes, rng.gen::<f64>() * 3.0);
+                if valid && best.as_ref().is_none_or(|b| score > b.0) {
+                    *best = Some((score, *p, ok == total));
+                }
             }
+        };
+        search(&group, &mut best);
+        if !best.as_ref().is_some_and(|b| b.2) {
+            search(&cands, &mut best);
         }
         let (pose, all_ok) = match best {
             Some((_, p, ok)) => (p, ok),

@@ -218,7 +218,6 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
     let mut added: Vec<Relation> = vec![];
     let mut grouped: BTreeMap<String, String> = BTreeMap::new();
     let mut used: BTreeMap<String, u32> = BTreeMap::new();
-    let cats: Vec<String> = spec.objects.keys().cloned().collect();
     for rule in RULES {
         for subj in rule.subjects {
             let n = count(subj);
@@ -255,7 +254,6 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
             }
         }
     }
-    let _ = cats;
     // Drop relations the groups replace: a grouped subject and any instance of its group's
     // object category, or any pair the groups now relate (either way round).
     let pair = |a: &str, b: &str| (a.min(b).to_string(), a.max(b).to_string());

@@ -484,12 +484,6 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                     negated = prev2.is_some_and(|p| NEGATORS.contains(&p) || p == "n't");
                 } else if NEGATORS.contains(&w) {
                     negated = true;
-                } else if ["or", "nor", ","].contains(&w) && idx > 0 {
-                    // "without a sofa or a tv": the negation carries over
-                    let prev = r.mentions.last();
-                    if prev.is_some_and(|p| p.negated) && before.len() - b <= 0 {
-                        negated = true;
-                    }
                 }
             }
             None => {}
@@ -509,27 +503,23 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         }
         let head_text = t[start..end].to_string();
         let (category, known) = if cat.is_empty() {
+            // The head noun names the unknown object; the words before it describe it.
             let mut words: Vec<&str> = head_text.split(' ').collect();
             let head = singular(words.pop().unwrap_or(""));
-            // the words before the head stay as adjectives of the unknown object
-            let mut name = words.join(" ");
-            if !name.is_empty() {
-                name.push(' ');
-            }
-            name.push_str(&head);
-            (name, false)
+            adjectives.extend(words.iter().map(|w| w.to_string()));
+            (head, false)
         } else {
             (cat, true)
         };
         r.mentions.push(Mention {
-            start: if known { start } else { start },
+            start,
             end,
             category,
             known,
             text: head_text,
             count,
             plural,
-            adjectives: if known { adjectives } else { vec![] },
+            adjectives,
             definite,
             negated,
             size,
@@ -555,9 +545,14 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     }
 
     // "for 24 students", "for eight people"
-    let people = re(r"\bfor (\d+|[a-z]+) (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors)\b");
-    if let Some(c) = people.captures(&t) {
-        r.people = number_of(&c[1]);
+    let people = re(r"\bfor (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)");
+    for c in people.captures_iter(&t) {
+        let w = &c[1];
+        if !["a", "an", "no", "some", "many", "few", "several", "both", "couple", "pair", "one"].contains(&w) {
+            if let Some(n) = number_of(w) {
+                r.people = Some(n);
+            }
+        }
     }
     if let Some((_, s, _)) = r.scene {
         let pre = &t[..s];

@@ -166,6 +166,14 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         return m.category.clone();
     }
     let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+    // Only furniture that scenes specialise ("desks" in a classroom); a lamp stays a lamp.
+    const SPECIALISED: &[&str] = &[
+        "desk", "chair", "table", "stool", "bench", "shelf", "bed", "sofa", "couch", "counter",
+        "seat", "cabinet",
+    ];
+    if !SPECIALISED.contains(&head.as_str()) {
+        return m.category.clone();
+    }
     let head_cat = kb.object(&head).map(|o| o.category.clone());
     // Only a bare head noun ("desks", "a chair") is re-read; "an office chair" stays.
     let bare = m.text.split(' ').count() == 1 || head_cat.as_deref() == Some(m.category.as_str());
@@ -443,6 +451,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     .or_else(|| unknown.get(c).copied())
                     .unwrap_or([0.7, 0.6, 0.9]);
                 let mut words = styles.clone();
+                words.extend(adjectives.get(c).cloned().unwrap_or_default());
                 words.push(c.clone());
                 let body = words.join(" ");
                 (size, format!("A DSLR photo of {} {body}", article(&body)))
@@ -534,7 +543,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     super::groups::apply(&mut spec, &keep);
 
     // Room: as stated, else chosen to fit (scaled by "small" / "large").
-    let height = match scene_type {
+    let height: f64 = match scene_type {
         SceneType::Indoor => 2.8,
         SceneType::Outdoor => 10.0,
     };

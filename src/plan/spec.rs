@@ -293,6 +293,34 @@ impl SceneSpec {
 }
 
 impl Layout {
+    /// One line for the user: objects, room, relations satisfied, fallback placements, with
+    /// singular and plural right ("1 fallback placement", "no relations to satisfy").
+    pub fn summary(&self, spec: &SceneSpec) -> String {
+        let n = spec.relations.len();
+        let relations = match n {
+            0 => "no relations to satisfy".to_string(),
+            1 => format!("{} of 1 relation satisfied", 1 - self.unsatisfied.len().min(1)),
+            _ => format!(
+                "{} of {n} relations satisfied",
+                n - self.unsatisfied.len().min(n)
+            ),
+        };
+        let fallback = self
+            .objects
+            .iter()
+            .filter(|o| o.placed_by == PlacedBy::Fallback)
+            .count();
+        let plural = |k: usize, one: &str, many: &str| {
+            format!("{k} {}", if k == 1 { one } else { many })
+        };
+        let [w, d, h] = self.room.size;
+        format!(
+            "{} in a {w:.1} x {d:.1} x {h:.1} m room, {relations}, {}",
+            plural(self.objects.len(), "object", "objects"),
+            plural(fallback, "fallback placement", "fallback placements")
+        )
+    }
+
     /// Writes layout.json atomically.
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
         let text = serde_json::to_string_pretty(self).expect("layout serialises");
