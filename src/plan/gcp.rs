@@ -651,8 +651,13 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
             next.sort();
             next.dedup();
             // Ties broken by the key, then at random (restarts see different orders).
-            next.sort_by_key(|&j| (std::cmp::Reverse(key(j)), rng.gen::<u32>()));
-            for j in next {
+            // (One random draw per entry: a key drawn afresh at each comparison is no order.)
+            let mut keyed: Vec<_> = next
+                .into_iter()
+                .map(|j| (std::cmp::Reverse(key(j)), rng.gen::<u32>(), j))
+                .collect();
+            keyed.sort();
+            for (_, _, j) in keyed {
                 done[j] = true;
                 q.push_back(j);
             }

@@ -322,14 +322,23 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let mut masked: Vec<(usize, usize)> = vec![];
     let dims: Vec<Dims> = find_dims(&t);
 
-    // Scene: the earliest scene name (the longest at that position).
+    // Scene: the earliest scene name (the longest at that position) that is not part of a
+    // longer object name ("office" in "an office chair").
     let (scene_re, scene_of) = scene_matcher(kb);
-    if let Some(m) = scene_re.find(&t) {
-        r.scene = Some((scene_of[m.as_str()], m.start(), m.end()));
-        masked.push((m.start(), m.end()));
+    let (obj_re0, _) = object_matcher(kb);
+    let objects: Vec<(usize, usize)> = obj_re0.find_iter(&t).map(|m| (m.start(), m.end())).collect();
+    for m in scene_re.find_iter(&t) {
+        let inside_object = objects
+            .iter()
+            .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
+        if !inside_object {
+            r.scene = Some((scene_of[m.as_str()], m.start(), m.end()));
+            masked.push((m.start(), m.end()));
+            break;
+        }
     }
 
-    // Objects.
+    // Objects; two names of one category in a row are one object ("a sectional sofa").
     let (obj_re, table) = object_matcher(kb);
     let mut raw: Vec<(usize, usize, String, bool)> = vec![];
     for m in obj_re.find_iter(&t) {
@@ -337,6 +346,13 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             continue;
         }
         let (cat, plural) = table[m.as_str()].clone();
+        if let Some(last) = raw.last_mut() {
+            if last.2 == cat && t[last.1..m.start()].trim().is_empty() {
+                last.1 = m.end();
+                last.3 = plural;
+                continue;
+            }
+        }
         raw.push((m.start(), m.end(), cat, plural));
     }
     // Unknown objects: an indefinite noun phrase ("a harp", "two easels") whose head noun the
@@ -364,7 +380,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         let known_next = j < all.len() && raw.iter().any(|o| o.0 == all[j].0);
         if j > k + 1 && !known_next {
             let head = all[j - 1].1;
-            let ok = !NOT_OBJECTS.contains(&head)
+            let ok = !head.ends_with("'s")
+                && !head.ends_with('\'')
+                && !NOT_OBJECTS.contains(&head)
                 && !NOT_OBJECTS.contains(&singular(head).as_str())
                 && super::offline::style_word(head).is_none()
                 && head.len() > 2;

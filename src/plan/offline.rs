@@ -347,7 +347,15 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         };
         let seat_named = explicit.contains_key(seat);
         let table_named = explicit.contains_key(&table);
-        if let Some(p) = r.people {
+        // "for 24 students" seats the scene's main seats (its most numerous seat category).
+        let main_seat = cats_now
+            .iter()
+            .filter(|c| {
+                use super::spec::RelationKind::{Around, At, Circle};
+                super::groups::group_of(&probe, c).is_some_and(|(k, _)| matches!(k, Around | At | Circle))
+            })
+            .max_by_key(|c| (defaults.get(*c).copied().unwrap_or(0), counts.get(*c).copied().unwrap_or(0)));
+        if let Some(p) = r.people.filter(|_| main_seat == Some(seat)) {
             if !seat_named {
                 counts.insert(seat.clone(), p);
             }
