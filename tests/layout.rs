@@ -308,11 +308,17 @@ fn functional_relations_follow_their_definitions() {
     assert!(holds(&chair(1.25, 0.0, 90.0), Around, &table), "short side");
     assert!(!holds(&chair(0.3, 0.8, 0.0), Around, &table), "facing away");
     assert!(!holds(&chair(0.3, 1.2, 180.0), Around, &table), "0.5 m gap");
-    assert!(!holds(&chair(1.25, 0.8, 135.0), Around, &table), "at a corner");
+    assert!(
+        !holds(&chair(1.25, 0.8, 135.0), Around, &table),
+        "at a corner"
+    );
     // AT: in front of the desk, gap <= 0.3 m, facing it.
     let desk = obj("desk1", [1.4, 0.7, 0.75], [0.0, 0.0, 0.0], 90.0);
     assert!(holds(&chair(-0.65, 0.0, -90.0), At, &desk));
-    assert!(!holds(&chair(0.65, 0.0, 90.0), At, &desk), "behind the desk");
+    assert!(
+        !holds(&chair(0.65, 0.0, 90.0), At, &desk),
+        "behind the desk"
+    );
     assert!(!holds(&chair(-1.2, 0.0, -90.0), At, &desk), "too far");
     // FLANK: beside the bed's head end, flush, turned as the bed.
     let bed = obj("bed1", [1.6, 2.1, 1.0], [0.0, 0.0, 0.0], 0.0);
@@ -320,7 +326,10 @@ fn functional_relations_follow_their_definitions() {
     assert!(holds(&stand(1.1, -0.85, 0.0), Flank, &bed));
     assert!(holds(&stand(-1.08, -0.85, 0.0), Flank, &bed));
     assert!(!holds(&stand(1.1, 0.85, 0.0), Flank, &bed), "at the foot");
-    assert!(!holds(&stand(1.1, -0.85, 180.0), Flank, &bed), "turned round");
+    assert!(
+        !holds(&stand(1.1, -0.85, 180.0), Flank, &bed),
+        "turned round"
+    );
     assert!(!holds(&stand(1.4, -0.85, 0.0), Flank, &bed), "0.35 m away");
     // CIRCLE: 0.6-1.5 m from the fire, facing it.
     let fire = obj("fire pit1", [1.0, 1.0, 0.4], [0.0, 0.0, 0.0], 0.0);
@@ -338,6 +347,7 @@ fn functional_relations_follow_their_definitions() {
     // Names as the file writes them.
     assert_eq!(Around.to_string(), "AROUND");
     assert_eq!(Opposite.to_string(), "OPPOSITE");
-    let r: Relation = serde_json::from_str(r#"{"subject": "a1", "relation": "FLANK", "object": "b1"}"#).unwrap();
+    let r: Relation =
+        serde_json::from_str(r#"{"subject": "a1", "relation": "FLANK", "object": "b1"}"#).unwrap();
     assert_eq!(r.relation, Flank);
 }

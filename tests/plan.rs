@@ -283,7 +283,9 @@ fn layout_labels_never_overlap() {
         assert_eq!(boxes.len(), l.objects.len());
         let img = dreamscene::plan::draw::draw_layout(&l);
         for (i, (a, _)) in boxes.iter().enumerate() {
-            assert!(a[0] >= 0 && a[1] >= 0 && a[2] <= img.width() as i64 && a[3] <= img.height() as i64);
+            assert!(
+                a[0] >= 0 && a[1] >= 0 && a[2] <= img.width() as i64 && a[3] <= img.height() as i64
+            );
             for (b, _) in &boxes[i + 1..] {
                 let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
                 assert!(apart, "{p}: markers {a:?} and {b:?} overlap");

@@ -29,12 +29,19 @@ fn descriptions_are_noun_phrases(s: &SceneSpec) {
             .unwrap_or_else(|| panic!("{c}: {}", o.description));
         let words: Vec<&str> = body.split_whitespace().collect();
         assert!(["a", "an"].contains(&words[0]), "{}", o.description);
-        let own = kb.object(c).map(|k| k.description.clone()).unwrap_or_default();
+        let own = kb
+            .object(c)
+            .map(|k| k.description.clone())
+            .unwrap_or_default();
         for w in &words[1..] {
             if c.split(' ').any(|x| x == *w) || own.split(' ').any(|x| x == *w) {
                 continue;
             }
-            assert!(!is_function_word(w), "{c}: function word `{w}` in {:?}", o.description);
+            assert!(
+                !is_function_word(w),
+                "{c}: function word `{w}` in {:?}",
+                o.description
+            );
             assert!(!is_verb(w), "{c}: verb `{w}` in {:?}", o.description);
         }
     }
@@ -43,7 +50,10 @@ fn descriptions_are_noun_phrases(s: &SceneSpec) {
 #[test]
 fn noun_phrases_and_relation_phrases() {
     let s = plan("I want a living room where the big grey sofa faces the fireplace");
-    assert_eq!(s.objects["sofa"].description, "A DSLR photo of a big grey sofa");
+    assert_eq!(
+        s.objects["sofa"].description,
+        "A DSLR photo of a big grey sofa"
+    );
     assert!(s.objects.contains_key("fireplace"));
     assert!(!s.objects["fireplace"].description.contains("faces"));
     assert!(
@@ -55,10 +65,21 @@ fn noun_phrases_and_relation_phrases() {
     let l = layout(&s, LayoutOptions::seeded(0)).unwrap();
     assert!(validity_problems(&l, &s).is_empty());
 
-    let s = plan("a bedroom with two lamps on either side of the bed and a rug at the foot of the bed");
-    assert!(has(&s, "rug1", RelationKind::Front, "bed1"), "{:?}", s.relations);
-    let s = plan("a study with a lamp on the desk and a plant in the corner, a bookshelf along the wall");
-    assert!(has(&s, "table lamp1", RelationKind::Over, "desk1"), "{:?}", s.relations);
+    let s =
+        plan("a bedroom with two lamps on either side of the bed and a rug at the foot of the bed");
+    assert!(
+        has(&s, "rug1", RelationKind::Front, "bed1"),
+        "{:?}",
+        s.relations
+    );
+    let s = plan(
+        "a study with a lamp on the desk and a plant in the corner, a bookshelf along the wall",
+    );
+    assert!(
+        has(&s, "table lamp1", RelationKind::Over, "desk1"),
+        "{:?}",
+        s.relations
+    );
     assert_eq!(s.anchors["potted plant1"], Anchor::Corner);
     assert_eq!(s.anchors["bookshelf1"], Anchor::Side);
     let s = plan("a living room with an armchair beside the sofa and a coffee table in front of the sofa, a floor lamp behind the armchair");
@@ -78,7 +99,11 @@ fn negation_exact_counts_and_clamps() {
     let s = plan("a bedroom with everything except the wardrobe");
     assert!(!s.objects.contains_key("wardrobe") && s.objects.contains_key("bed"));
     let s = plan("a dining room with 0 chairs");
-    assert!(!s.objects.contains_key("dining chair"), "{:?}", s.objects.keys());
+    assert!(
+        !s.objects.contains_key("dining chair"),
+        "{:?}",
+        s.objects.keys()
+    );
     assert!(s.objects.contains_key("dining table"));
     let s = plan("a dining room with seven chairs and a dozen candles");
     assert_eq!(s.objects["dining chair"].number, 7);
@@ -86,7 +111,9 @@ fn negation_exact_counts_and_clamps() {
     let p = plan_prompt("a conference room with 60 chairs").unwrap();
     assert_eq!(p.spec.objects["office chair"].number, MAX_NUMBER);
     assert!(
-        p.notes.iter().any(|n| n.contains("60") && n.contains("office chair")),
+        p.notes
+            .iter()
+            .any(|n| n.contains("60") && n.contains("office chair")),
         "the clamp is a note naming it: {:?}",
         p.notes
     );
@@ -97,9 +124,15 @@ fn units_people_write() {
     let room = |p: &str| plan(p).room.unwrap().size;
     assert_eq!(room("a bedroom, 400cm x 300cm")[..2], [4.0, 3.0]);
     let r = room("a 15 ft x 12 ft living room");
-    assert!((r[0] - 4.57).abs() < 0.01 && (r[1] - 3.66).abs() < 0.01, "{r:?}");
+    assert!(
+        (r[0] - 4.57).abs() < 0.01 && (r[1] - 3.66).abs() < 0.01,
+        "{r:?}"
+    );
     let r = room("a 12' x 10' bedroom");
-    assert!((r[0] - 3.66).abs() < 0.01 && (r[1] - 3.05).abs() < 0.01, "{r:?}");
+    assert!(
+        (r[0] - 3.66).abs() < 0.01 && (r[1] - 3.05).abs() < 0.01,
+        "{r:?}"
+    );
     assert_eq!(room("an office 5 by 4 metres")[..2], [5.0, 4.0]);
     assert_eq!(room("a kitchen 3500mm x 2800mm")[..2], [3.5, 2.8]);
     assert_eq!(room("a studio 6 × 4.5 × 3 m"), [6.0, 4.5, 3.0]);
@@ -140,7 +173,10 @@ fn unreadable_prompts_are_errors_that_suggest_an_llm() {
     ] {
         let e = plan_prompt(p).expect_err(p);
         assert!(
-            matches!(e, PlanError::NothingRecognised(_) | PlanError::NotEnglish(_)),
+            matches!(
+                e,
+                PlanError::NothingRecognised(_) | PlanError::NotEnglish(_)
+            ),
             "{p}: {e}"
         );
         assert!(e.to_string().contains("--llm-url"), "{e}");
@@ -151,7 +187,10 @@ fn unreadable_prompts_are_errors_that_suggest_an_llm() {
 fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
     let e = plan_prompt("a living room, 1m x 1m, with a sofa, a piano and a bed").unwrap_err();
     let m = e.to_string();
-    assert!(m.contains("does not fit") && m.contains("smallest room"), "{m}");
+    assert!(
+        m.contains("does not fit") && m.contains("smallest room"),
+        "{m}"
+    );
     // The smallest room it names does take them.
     let s = plan("a living room with a sofa, a piano and a bed");
     layout(&s, LayoutOptions::seeded(0)).unwrap();
@@ -163,7 +202,11 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
     assert!(validity_problems(&l, &p.spec).is_empty());
     // A wizard's harp the knowledge base lacks is kept, sized from a size class.
     let p = plan_prompt("a music room with a golden lyre").unwrap();
-    assert!(p.spec.objects.contains_key("lyre"), "{:?}", p.spec.objects.keys());
+    assert!(
+        p.spec.objects.contains_key("lyre"),
+        "{:?}",
+        p.spec.objects.keys()
+    );
     assert!(p.notes.iter().any(|n| n.contains("lyre")));
 
     // 60 objects in 2 x 2 m: refused, naming what does not fit and a room that does.
@@ -202,8 +245,13 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
         anchors: BTreeMap::new(),
         relations: vec![],
     };
-    let e = layout(&spec, LayoutOptions::seeded(0)).unwrap_err().to_string();
-    assert!(e.contains("do not fit") && e.contains("smallest room"), "{e}");
+    let e = layout(&spec, LayoutOptions::seeded(0))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("do not fit") && e.contains("smallest room"),
+        "{e}"
+    );
     let dims: Vec<f64> = e
         .rsplit("smallest room that takes everything is ")
         .next()
@@ -216,12 +264,17 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
         size: [dims[0], dims[1], dims[2]],
     });
     let l = layout(&spec, LayoutOptions::seeded(0)).unwrap();
-    assert!(validity_problems(&l, &spec).is_empty(), "the room it names takes them");
+    assert!(
+        validity_problems(&l, &spec).is_empty(),
+        "the room it names takes them"
+    );
     // An object larger than its room is refused the same way.
     spec.room = Some(Room {
         size: [0.8, 0.8, 2.8],
     });
-    let e = layout(&spec, LayoutOptions::seeded(0)).unwrap_err().to_string();
+    let e = layout(&spec, LayoutOptions::seeded(0))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("chest") && e.contains("larger than"), "{e}");
 }
 
@@ -230,7 +283,11 @@ fn laid_out(p: &str, seed: u64) -> (SceneSpec, Layout, BTreeMap<String, PlacedOb
     let l = layout(&s, LayoutOptions::seeded(seed)).unwrap_or_else(|e| panic!("{p}: {e}"));
     let problems = validity_problems(&l, &s);
     assert!(problems.is_empty(), "{p}: {problems:?}");
-    let by = l.objects.iter().map(|o| (o.id.clone(), o.clone())).collect();
+    let by = l
+        .objects
+        .iter()
+        .map(|o| (o.id.clone(), o.clone()))
+        .collect();
     (s, l, by)
 }
 
@@ -265,7 +322,10 @@ fn functional_groups_are_laid_out_as_people_furnish() {
         .filter(|o| o.category == "school desk")
         .map(|o| o.yaw)
         .collect();
-    assert!(yaws.iter().all(|y| (y - yaws[0]).abs() < 1.0), "rows: {yaws:?}");
+    assert!(
+        yaws.iter().all(|y| (y - yaws[0]).abs() < 1.0),
+        "rows: {yaws:?}"
+    );
     let held = |s: &SceneSpec, kind: RelationKind| {
         let rs: Vec<&Relation> = s.relations.iter().filter(|r| r.relation == kind).collect();
         let ok = rs
@@ -278,16 +338,31 @@ fn functional_groups_are_laid_out_as_people_furnish() {
         l.objects.iter().find(|o| o.id == id).unwrap().clone()
     }
     let (ok, n) = held(&s, RelationKind::At);
-    assert!(n == 13 && ok == n, "12 chairs at desks and the teacher's: {ok}/{n}");
+    assert!(
+        n == 13 && ok == n,
+        "12 chairs at desks and the teacher's: {ok}/{n}"
+    );
     let (ok, n) = held(&s, RelationKind::Row);
-    assert!(n == 12 && ok == n, "desks in rows before the board: {ok}/{n}");
+    assert!(
+        n == 12 && ok == n,
+        "desks in rows before the board: {ok}/{n}"
+    );
     drop(by);
 
     // Bedroom: nightstands flush on both sides of the bed's head.
     let (s, _, by) = laid_out("a bedroom", 0);
     for k in 1..=2 {
-        assert!(has(&s, &format!("nightstand{k}"), RelationKind::Flank, "bed1"));
-        assert!(relation_holds(&by[&format!("nightstand{k}")], RelationKind::Flank, &by["bed1"]));
+        assert!(has(
+            &s,
+            &format!("nightstand{k}"),
+            RelationKind::Flank,
+            "bed1"
+        ));
+        assert!(relation_holds(
+            &by[&format!("nightstand{k}")],
+            RelationKind::Flank,
+            &by["bed1"]
+        ));
     }
     let b = Box2::of(&by["bed1"]);
     let x1 = b.local([by["nightstand1"].position[0], by["nightstand1"].position[1]])[0];
@@ -299,7 +374,10 @@ fn functional_groups_are_laid_out_as_people_furnish() {
     let mut sides = [0; 4];
     for k in 1..=s.objects["dining chair"].number {
         let c = &by[&format!("dining chair{k}")];
-        assert!(relation_holds(c, RelationKind::Around, &by["dining table1"]), "chair {k}");
+        assert!(
+            relation_holds(c, RelationKind::Around, &by["dining table1"]),
+            "chair {k}"
+        );
         sides[side_of(&by["dining table1"], c)] += 1;
     }
     assert!(sides[0] >= 2 && sides[1] >= 2, "long sides: {sides:?}");
@@ -307,13 +385,25 @@ fn functional_groups_are_laid_out_as_people_furnish() {
     // Tavern: stools at the counter facing it; chairs spread over the tables.
     let (s, _, by) = laid_out("a medieval tavern", 0);
     for k in 1..=s.objects["bar stool"].number {
-        assert!(relation_holds(&by[&format!("bar stool{k}")], RelationKind::At, &by["bar counter1"]));
+        assert!(relation_holds(
+            &by[&format!("bar stool{k}")],
+            RelationKind::At,
+            &by["bar counter1"]
+        ));
     }
     let mut per_table: BTreeMap<String, u32> = BTreeMap::new();
-    for r in s.relations.iter().filter(|r| r.subject.starts_with("cafe chair")) {
+    for r in s
+        .relations
+        .iter()
+        .filter(|r| r.subject.starts_with("cafe chair"))
+    {
         *per_table.entry(r.object.clone()).or_default() += 1;
     }
-    assert_eq!(per_table.len() as u32, s.objects["cafe table"].number, "{per_table:?}");
+    assert_eq!(
+        per_table.len() as u32,
+        s.objects["cafe table"].number,
+        "{per_table:?}"
+    );
 
     // Kitchen: stools on one side of the island, facing it.
     let (s, _, by) = laid_out("a kitchen", 0);
@@ -327,6 +417,10 @@ fn functional_groups_are_laid_out_as_people_furnish() {
     let (s, _, by) = laid_out("a campsite", 0);
     for r in s.relations.iter().filter(|r| r.object == "fire pit1") {
         assert_eq!(r.relation, RelationKind::Circle);
-        assert!(relation_holds(&by[&r.subject], RelationKind::Circle, &by["fire pit1"]), "{}", r.subject);
+        assert!(
+            relation_holds(&by[&r.subject], RelationKind::Circle, &by["fire pit1"]),
+            "{}",
+            r.subject
+        );
     }
 }

@@ -12,9 +12,27 @@ pub const TRIM_OCCUPANCY: f64 = 0.45;
 
 /// Objects that decorate rather than furnish: trimmed first.
 const DECOR: &[&str] = &[
-    "potted plant", "floor lamp", "table lamp", "rug", "vase", "statue", "globe", "magazine rack",
-    "umbrella stand", "trash can", "planter", "candle stand", "painting", "full length mirror",
-    "speaker", "pedestal", "cardboard box", "laundry basket", "bean bag", "ottoman", "side table",
+    "potted plant",
+    "floor lamp",
+    "table lamp",
+    "rug",
+    "vase",
+    "statue",
+    "globe",
+    "magazine rack",
+    "umbrella stand",
+    "trash can",
+    "planter",
+    "candle stand",
+    "painting",
+    "full length mirror",
+    "speaker",
+    "pedestal",
+    "cardboard box",
+    "laundry basket",
+    "bean bag",
+    "ottoman",
+    "side table",
 ];
 
 /// Room to use round each footprint when sizing a room for furniture in use (a chair pulled
@@ -119,8 +137,17 @@ pub fn fit(
             SceneType::Outdoor => 0.3,
         };
         while floor_area(spec) > limit * floor {
-            // The default category to thin: decoration first, then the one whose instances
-            // cover the most floor; multiples lose one at a time.
+            // The default category to thin: decoration first, then furniture in no group,
+            // then the one whose instances cover the most floor; multiples lose one at a time.
+            let base = |id: &str| {
+                id.trim_end_matches(|c: char| c.is_ascii_digit())
+                    .to_string()
+            };
+            let grouped: BTreeSet<String> = spec
+                .relations
+                .iter()
+                .flat_map(|r| [base(&r.subject), base(&r.object)])
+                .collect();
             let pick = spec
                 .objects
                 .iter()
@@ -128,12 +155,19 @@ pub fn fit(
                 .max_by(|(ca, a), (cb, b)| {
                     let key = |c: &str, o: &super::spec::ObjectSpec| {
                         let decor = DECOR.contains(&c) as u8;
-                        (decor, (o.number > 1) as u8, o.number as f64 * o.size[0] * o.size[1])
+                        let loose = !grouped.contains(c) as u8;
+                        (
+                            decor,
+                            loose,
+                            (o.number > 1) as u8,
+                            o.number as f64 * o.size[0] * o.size[1],
+                        )
                     };
                     let (ka, kb) = (key(ca, a), key(cb, b));
                     ka.0.cmp(&kb.0)
                         .then(ka.1.cmp(&kb.1))
-                        .then(ka.2.total_cmp(&kb.2))
+                        .then(ka.2.cmp(&kb.2))
+                        .then(ka.3.total_cmp(&kb.3))
                 })
                 .map(|(c, _)| c.clone());
             let Some(c) = pick else { break };

@@ -245,7 +245,10 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
         }
         RelationKind::Flank => {
             // the subject's back: its local -y face, in the object's frame
-            let back = ob.local([sb.c[0] - sb.ey[0] * sb.half[1], sb.c[1] - sb.ey[1] * sb.half[1]]);
+            let back = ob.local([
+                sb.c[0] - sb.ey[0] * sb.half[1],
+                sb.c[1] - sb.ey[1] * sb.half[1],
+            ]);
             l[0].abs() > hw
                 && band(1, hd)
                 && gap(sb, ob) <= FLANK_GAP

@@ -23,7 +23,9 @@ pub fn user_text(turns: &[Turn]) -> Option<String> {
     for t in turns.iter().filter(|t| is_user(&t.role)) {
         let c = t.content.trim();
         // Trailing separators of a turn are replaced by one full stop between turns.
-        let c = c.trim_end_matches([',', ';', ':', '-', '–', '—']).trim_end();
+        let c = c
+            .trim_end_matches([',', ';', ':', '-', '–', '—'])
+            .trim_end();
         if c.is_empty() {
             continue;
         }

@@ -191,7 +191,7 @@ pub fn label_boxes(l: &Layout) -> Vec<([i64; 4], bool)> {
                 && r[3] <= h as i64 - 2
                 && placed
                     .iter()
-                    .all(|p| r[2] + 1 <= p[0] || p[2] + 1 <= r[0] || r[3] + 1 <= p[1] || p[3] + 1 <= r[1])
+                    .all(|p| r[2] < p[0] || p[2] < r[0] || r[3] < p[1] || p[3] < r[1])
         };
         let mut chosen = None;
         'search: for ring in 0..60 {
@@ -211,7 +211,10 @@ pub fn label_boxes(l: &Layout) -> Vec<([i64; 4], bool)> {
             let mut y = 2;
             loop {
                 let r = [2, y, 2 + text_w, y + 12];
-                if placed.iter().all(|p| r[3] + 1 <= p[1] || p[3] + 1 <= r[1] || r[2] + 1 <= p[0] || p[2] + 1 <= r[0]) {
+                if placed
+                    .iter()
+                    .all(|p| r[3] < p[1] || p[3] < r[1] || r[2] < p[0] || p[2] < r[0])
+                {
                     break (r, true);
                 }
                 y += 13;
@@ -288,7 +291,15 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
         for y in r[1]..r[3] {
             for x in r[0]..r[2] {
                 let edge = y == r[1] || y == r[3] - 1 || x == r[0] || x == r[2] - 1;
-                cv.put(x, y, if edge { Rgb([60, 60, 60]) } else { Rgb([255, 255, 255]) });
+                cv.put(
+                    x,
+                    y,
+                    if edge {
+                        Rgb([60, 60, 60])
+                    } else {
+                        Rgb([255, 255, 255])
+                    },
+                );
             }
         }
         cv.px_text(r[0] + 2, r[1] + 2, &format!("{}", i + 1), Rgb([0, 0, 0]));

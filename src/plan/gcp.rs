@@ -312,7 +312,11 @@ impl Problem {
             RelationKind::Around => {
                 // The partner's four sides, each with as many seats as its length takes.
                 for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, -90.0), (3, 90.0)] {
-                    let (len, half_across) = if side < 2 { (2.0 * hw, hd) } else { (2.0 * hd, hw) };
+                    let (len, half_across) = if side < 2 {
+                        (2.0 * hw, hd)
+                    } else {
+                        (2.0 * hd, hw)
+                    };
                     for g in [0.05, 0.15] {
                         let off = half_across + g + 0.5 * s[1];
                         for t in slots(len, s[0]) {
@@ -322,7 +326,11 @@ impl Problem {
                                 2 => at(off, t),
                                 _ => at(-off, t),
                             };
-                            out.push(Pose { c, yaw: pj.yaw + yaw_off, z: 0.0 });
+                            out.push(Pose {
+                                c,
+                                yaw: pj.yaw + yaw_off,
+                                z: 0.0,
+                            });
                         }
                     }
                 }
@@ -534,13 +542,22 @@ pub fn smallest_room(spec: &SceneSpec) -> Room {
         .unwrap_or_else(|| choose_room(&inst, spec.scene_type));
     // Start from what the footprints and the largest piece need, then grow.
     let area: f64 = inst.iter().map(|i| i.size[0] * i.size[1]).sum();
-    let longest = inst.iter().map(|i| i.size[0].max(i.size[1])).fold(0.0, f64::max);
-    let shortest = inst.iter().map(|i| i.size[0].min(i.size[1])).fold(0.0, f64::max);
+    let longest = inst
+        .iter()
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    let shortest = inst
+        .iter()
+        .map(|i| i.size[0].min(i.size[1]))
+        .fold(0.0, f64::max);
     let tallest = inst.iter().map(|i| i.size[2]).fold(0.0, f64::max);
     let (bw, bd) = (base.size[0], base.size[1]);
     let mut f = (area / (0.6 * bw * bd)).sqrt();
     let (long_side, short_side) = (bw.max(bd), bw.min(bd));
-    f = f.max(longest / long_side).max(shortest / short_side).max(0.2);
+    f = f
+        .max(longest / long_side)
+        .max(shortest / short_side)
+        .max(0.2);
     let h = base.size[2].max(tallest + 0.1);
     let r = |v: f64| (v * 10.0).ceil() / 10.0;
     let opts = LayoutOptions {

@@ -48,7 +48,13 @@ const TABLES: &[&str] = &[
 
 const RULES: &[Rule] = &[
     Rule {
-        subjects: &["campfire log", "folding chair", "camp chair", "log bench", "tree stump"],
+        subjects: &[
+            "campfire log",
+            "folding chair",
+            "camp chair",
+            "log bench",
+            "tree stump",
+        ],
         relation: RelationKind::Circle,
         objects: &["fire pit", "bonfire", "campfire"],
         per_object: Some(12),
@@ -92,7 +98,13 @@ const RULES: &[Rule] = &[
     Rule {
         subjects: &["bar stool"],
         relation: RelationKind::At,
-        objects: &["bar counter", "kitchen island", "counter", "breakfast bar", "sushi counter"],
+        objects: &[
+            "bar counter",
+            "kitchen island",
+            "counter",
+            "breakfast bar",
+            "sushi counter",
+        ],
         per_object: None,
     },
     Rule {
@@ -110,7 +122,14 @@ const RULES: &[Rule] = &[
     Rule {
         subjects: &["nightstand"],
         relation: RelationKind::Flank,
-        objects: &["bed", "single bed", "hospital bed", "bunk bed", "canopy bed", "daybed"],
+        objects: &[
+            "bed",
+            "single bed",
+            "hospital bed",
+            "bunk bed",
+            "canopy bed",
+            "daybed",
+        ],
         per_object: Some(2),
     },
     Rule {
@@ -122,7 +141,14 @@ const RULES: &[Rule] = &[
     Rule {
         subjects: &["table lamp"],
         relation: RelationKind::Over,
-        objects: &["nightstand", "desk", "side table", "dresser", "console table", "sideboard"],
+        objects: &[
+            "nightstand",
+            "desk",
+            "side table",
+            "dresser",
+            "console table",
+            "sideboard",
+        ],
         per_object: Some(1),
     },
     Rule {
@@ -259,7 +285,10 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
     let pair = |a: &str, b: &str| (a.min(b).to_string(), a.max(b).to_string());
     let new_pairs: BTreeSet<(String, String)> =
         added.iter().map(|r| pair(&r.subject, &r.object)).collect();
-    let base = |id: &str| id.trim_end_matches(|c: char| c.is_ascii_digit()).to_string();
+    let base = |id: &str| {
+        id.trim_end_matches(|c: char| c.is_ascii_digit())
+            .to_string()
+    };
     spec.relations.retain(|r| {
         if keep.contains(&(r.subject.clone(), r.object.clone())) {
             return true;

@@ -267,7 +267,7 @@ mod tests {
             indoor >= 25 && outdoor >= 8,
             "{indoor} indoor, {outdoor} outdoor"
         );
-        assert!(kb.objects.len() >= 200, "{} categories", kb.objects.len());
+        assert!(kb.objects.len() >= 500, "{} categories", kb.objects.len());
         for o in &kb.objects {
             assert!(
                 o.size.iter().all(|&v| v > 0.0 && v <= 20.0),

@@ -14,53 +14,399 @@ use std::sync::OnceLock;
 /// Words that never describe an object: articles, pronouns, prepositions, conjunctions,
 /// auxiliaries, quantifiers and the words of placement phrases.
 const FUNCTION: &[&str] = &[
-    "a", "an", "the", "some", "any", "all", "every", "each", "both", "either", "neither", "no",
-    "not", "none", "nor", "of", "with", "without", "except", "excluding", "minus", "but", "and",
-    "or", "plus", "also", "as", "well", "in", "on", "at", "to", "for", "by", "from", "into",
-    "onto", "upon", "over", "under", "near", "next", "beside", "besides", "behind", "front",
-    "opposite", "across", "around", "between", "along", "against", "inside", "outside", "within",
-    "where", "which", "that", "this", "these", "those", "who", "whose", "what", "when", "while",
-    "there", "here", "it", "its", "it's", "they", "them", "their", "i", "i'd", "i'm", "me", "my",
-    "we", "us", "our", "you", "your", "he", "she", "his", "her", "is", "are", "was", "were", "be",
-    "been", "being", "am", "has", "have", "had", "having", "do", "does", "did", "will", "would",
-    "should", "could", "can", "may", "might", "must", "shall", "very", "really", "quite",
-    "rather", "just", "only", "so", "too", "more", "most", "less", "lots", "lot", "plenty",
-    "many", "much", "several", "few", "couple", "pair", "set", "sets", "dozen", "other",
-    "another", "such", "than", "then", "if", "like", "room", "space", "area", "one", "ones",
-    "side", "sides", "wall", "walls", "corner", "corners", "middle", "center", "centre", "left",
-    "right", "top", "bottom", "end", "foot", "head", "please", "scene", "place",
+    "a",
+    "an",
+    "the",
+    "some",
+    "any",
+    "all",
+    "every",
+    "each",
+    "both",
+    "either",
+    "neither",
+    "no",
+    "not",
+    "none",
+    "nor",
+    "of",
+    "with",
+    "without",
+    "except",
+    "excluding",
+    "minus",
+    "but",
+    "and",
+    "or",
+    "plus",
+    "also",
+    "as",
+    "well",
+    "in",
+    "on",
+    "at",
+    "to",
+    "for",
+    "by",
+    "from",
+    "into",
+    "onto",
+    "upon",
+    "over",
+    "under",
+    "near",
+    "next",
+    "beside",
+    "besides",
+    "behind",
+    "front",
+    "opposite",
+    "across",
+    "around",
+    "between",
+    "along",
+    "against",
+    "inside",
+    "outside",
+    "within",
+    "where",
+    "which",
+    "that",
+    "this",
+    "these",
+    "those",
+    "who",
+    "whose",
+    "what",
+    "when",
+    "while",
+    "there",
+    "here",
+    "it",
+    "its",
+    "it's",
+    "they",
+    "them",
+    "their",
+    "i",
+    "i'd",
+    "i'm",
+    "me",
+    "my",
+    "we",
+    "us",
+    "our",
+    "you",
+    "your",
+    "he",
+    "she",
+    "his",
+    "her",
+    "is",
+    "are",
+    "was",
+    "were",
+    "be",
+    "been",
+    "being",
+    "am",
+    "has",
+    "have",
+    "had",
+    "having",
+    "do",
+    "does",
+    "did",
+    "will",
+    "would",
+    "should",
+    "could",
+    "can",
+    "may",
+    "might",
+    "must",
+    "shall",
+    "very",
+    "really",
+    "quite",
+    "rather",
+    "just",
+    "only",
+    "so",
+    "too",
+    "more",
+    "most",
+    "less",
+    "lots",
+    "lot",
+    "plenty",
+    "many",
+    "much",
+    "several",
+    "few",
+    "couple",
+    "pair",
+    "set",
+    "sets",
+    "dozen",
+    "other",
+    "another",
+    "such",
+    "than",
+    "then",
+    "if",
+    "like",
+    "room",
+    "space",
+    "area",
+    "one",
+    "ones",
+    "side",
+    "sides",
+    "wall",
+    "walls",
+    "corner",
+    "corners",
+    "middle",
+    "center",
+    "centre",
+    "left",
+    "right",
+    "top",
+    "bottom",
+    "end",
+    "foot",
+    "head",
+    "please",
+    "scene",
+    "place",
 ];
 
 /// Verbs people use in requests; never part of a description.
 const VERBS: &[&str] = &[
-    "want", "wants", "need", "needs", "like", "love", "make", "makes", "create", "generate",
-    "render", "build", "design", "show", "shows", "imagine", "picture", "give", "get", "add",
-    "include", "includes", "including", "contain", "contains", "containing", "feature",
-    "features", "featuring", "face", "faces", "facing", "sit", "sits", "sitting", "seated",
-    "stand", "stands", "standing", "hang", "hangs", "hanging", "put", "puts", "placed", "set",
-    "sets", "go", "goes", "lie", "lies", "lying", "look", "looks", "looking", "arranged",
-    "furnished", "decorated", "filled", "equipped", "surrounded", "lined", "pushed", "keep",
-    "keeps", "leave", "let", "use", "used", "see", "say", "think", "leaning", "leans", "rest",
-    "rests", "resting", "stacked", "scattered", "grouped", "gathered", "centered", "centred",
-    "mounted", "wall-mounted", "positioned", "located", "situated", "fit", "fits", "holds",
-    "hold", "serve", "serves", "serving", "overlooking", "overlook",
+    "want",
+    "wants",
+    "need",
+    "needs",
+    "like",
+    "love",
+    "make",
+    "makes",
+    "create",
+    "generate",
+    "render",
+    "build",
+    "design",
+    "show",
+    "shows",
+    "imagine",
+    "picture",
+    "give",
+    "get",
+    "add",
+    "include",
+    "includes",
+    "including",
+    "contain",
+    "contains",
+    "containing",
+    "feature",
+    "features",
+    "featuring",
+    "face",
+    "faces",
+    "facing",
+    "sit",
+    "sits",
+    "sitting",
+    "seated",
+    "stand",
+    "stands",
+    "standing",
+    "hang",
+    "hangs",
+    "hanging",
+    "put",
+    "puts",
+    "placed",
+    "set",
+    "sets",
+    "go",
+    "goes",
+    "lie",
+    "lies",
+    "lying",
+    "look",
+    "looks",
+    "looking",
+    "arranged",
+    "furnished",
+    "decorated",
+    "filled",
+    "equipped",
+    "surrounded",
+    "lined",
+    "pushed",
+    "keep",
+    "keeps",
+    "leave",
+    "let",
+    "use",
+    "used",
+    "see",
+    "say",
+    "think",
+    "leaning",
+    "leans",
+    "rest",
+    "rests",
+    "resting",
+    "stacked",
+    "scattered",
+    "grouped",
+    "gathered",
+    "centered",
+    "centred",
+    "mounted",
+    "wall-mounted",
+    "positioned",
+    "located",
+    "situated",
+    "fit",
+    "fits",
+    "holds",
+    "hold",
+    "serve",
+    "serves",
+    "serving",
+    "overlooking",
+    "overlook",
 ];
 
 /// Nouns that name no object to place (parts of the room, people, the mood).
 const NOT_OBJECTS: &[&str] = &[
-    "view", "views", "window", "windows", "door", "doors", "doorway", "floor", "floors",
-    "ceiling", "light", "lights", "lighting", "sunlight", "daylight", "style", "theme", "vibe",
-    "vibes", "atmosphere", "feel", "feeling", "look", "colour", "color", "colours", "colors",
-    "palette", "touch", "touches", "people", "person", "persons", "students", "student", "pupils",
-    "guests", "guest", "kids", "kid", "children", "child", "family", "families", "friends",
-    "diners", "customers", "employees", "workers", "visitors", "seats", "lot", "lots", "plenty",
-    "bit", "kind", "sort", "type", "way", "place", "spot", "night", "day", "morning", "evening",
-    "time", "mood", "decor", "décor", "furniture", "stuff", "things", "thing", "items", "item",
-    "accents", "accent", "details", "detail", "vibe", "sense", "plan", "layout", "size", "shape",
-    "height", "width", "length", "depth", "something", "anything", "everything", "nothing",
-    "usual", "works", "word", "words", "water", "sky", "sea", "ocean", "mountains", "sun",
-    "moon", "stars", "snow", "rain", "grass", "sand", "dirt", "gravel", "tiles", "wood", "parquet",
-    "brick", "stone", "concrete", "marble", "fireplace's", "focus", "point", "centerpiece",
+    "view",
+    "views",
+    "window",
+    "windows",
+    "door",
+    "doors",
+    "doorway",
+    "floor",
+    "floors",
+    "ceiling",
+    "light",
+    "lights",
+    "lighting",
+    "sunlight",
+    "daylight",
+    "style",
+    "theme",
+    "vibe",
+    "vibes",
+    "atmosphere",
+    "feel",
+    "feeling",
+    "look",
+    "colour",
+    "color",
+    "colours",
+    "colors",
+    "palette",
+    "touch",
+    "touches",
+    "people",
+    "person",
+    "persons",
+    "students",
+    "student",
+    "pupils",
+    "guests",
+    "guest",
+    "kids",
+    "kid",
+    "children",
+    "child",
+    "family",
+    "families",
+    "friends",
+    "diners",
+    "customers",
+    "employees",
+    "workers",
+    "visitors",
+    "seats",
+    "lot",
+    "lots",
+    "plenty",
+    "bit",
+    "kind",
+    "sort",
+    "type",
+    "way",
+    "place",
+    "spot",
+    "night",
+    "day",
+    "morning",
+    "evening",
+    "time",
+    "mood",
+    "decor",
+    "décor",
+    "furniture",
+    "stuff",
+    "things",
+    "thing",
+    "items",
+    "item",
+    "accents",
+    "accent",
+    "details",
+    "detail",
+    "vibe",
+    "sense",
+    "plan",
+    "layout",
+    "size",
+    "shape",
+    "height",
+    "width",
+    "length",
+    "depth",
+    "something",
+    "anything",
+    "everything",
+    "nothing",
+    "usual",
+    "works",
+    "word",
+    "words",
+    "water",
+    "sky",
+    "sea",
+    "ocean",
+    "mountains",
+    "sun",
+    "moon",
+    "stars",
+    "snow",
+    "rain",
+    "grass",
+    "sand",
+    "dirt",
+    "gravel",
+    "tiles",
+    "wood",
+    "parquet",
+    "brick",
+    "stone",
+    "concrete",
+    "marble",
+    "fireplace's",
+    "focus",
+    "point",
+    "centerpiece",
 ];
 
 /// Number words.
@@ -105,12 +451,20 @@ const NUMBERS: &[(&str, u32)] = &[
 ];
 
 /// Words that switch negation on for the noun phrase after them.
-const NEGATORS: &[&str] = &["no", "without", "except", "excluding", "minus", "zero", "not"];
+const NEGATORS: &[&str] = &[
+    "no",
+    "without",
+    "except",
+    "excluding",
+    "minus",
+    "zero",
+    "not",
+];
 
 /// English words that almost every request uses; a long text with none of them is not English.
 const ENGLISH: &[&str] = &[
-    "a", "an", "the", "with", "and", "of", "in", "on", "for", "some", "two", "three", "room",
-    "my", "i", "want", "is", "at", "by", "to", "no", "without",
+    "a", "an", "the", "with", "and", "of", "in", "on", "for", "some", "two", "three", "room", "my",
+    "i", "want", "is", "at", "by", "to", "no", "without",
 ];
 
 pub fn is_function_word(w: &str) -> bool {
@@ -242,9 +596,12 @@ pub fn alternation<S: AsRef<str>>(names: impl Iterator<Item = S>) -> Regex {
     re(&format!(r"\b(?:{})\b", names.join("|")))
 }
 
+/// A regex over names and what each name means: (category, is plural).
+type NameMatcher = (Regex, BTreeMap<String, (String, bool)>);
+
 /// Object names (categories, synonyms and their plurals) to (category, is plural).
-fn object_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, (String, bool)>) {
-    static M: OnceLock<(Regex, BTreeMap<String, (String, bool)>)> = OnceLock::new();
+fn object_matcher(kb: &KnowledgeBase) -> &'static NameMatcher {
+    static M: OnceLock<NameMatcher> = OnceLock::new();
     M.get_or_init(|| {
         let mut table = BTreeMap::new();
         for (name, o) in kb.names() {
@@ -286,7 +643,9 @@ fn words_in(t: &str, from: usize, to: usize) -> Vec<(usize, &str)> {
             let pos = from + i;
             // punctuation is its own token
             let core = w.trim_matches(|c: char| ",.;:!?()[]{}".contains(c));
-            let lead = w.len() - w.trim_start_matches(|c: char| ",.;:!?()[]{}".contains(c)).len();
+            let lead = w.len()
+                - w.trim_start_matches(|c: char| ",.;:!?()[]{}".contains(c))
+                    .len();
             if w.starts_with(|c: char| ",.;:!?()".contains(c)) {
                 out.push((pos, ","));
             }
@@ -326,7 +685,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     // longer object name ("office" in "an office chair").
     let (scene_re, scene_of) = scene_matcher(kb);
     let (obj_re0, _) = object_matcher(kb);
-    let objects: Vec<(usize, usize)> = obj_re0.find_iter(&t).map(|m| (m.start(), m.end())).collect();
+    let objects: Vec<(usize, usize)> = obj_re0
+        .find_iter(&t)
+        .map(|m| (m.start(), m.end()))
+        .collect();
     for m in scene_re.find_iter(&t) {
         let inside_object = objects
             .iter()
@@ -342,7 +704,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let (obj_re, table) = object_matcher(kb);
     let mut raw: Vec<(usize, usize, String, bool)> = vec![];
     for m in obj_re.find_iter(&t) {
-        if r.scene.is_some_and(|(_, s, e)| m.start() < e && s < m.end()) {
+        if r.scene
+            .is_some_and(|(_, s, e)| m.start() < e && s < m.end())
+        {
             continue;
         }
         let (cat, plural) = table[m.as_str()].clone();
@@ -377,7 +741,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         {
             j += 1;
         }
-        let known_next = j < all.len() && raw.iter().any(|o| o.0 == all[j].0);
+        // A run cut short by a known object or the scene's name is their description.
+        let known_next =
+            j < all.len() && (raw.iter().any(|o| o.0 == all[j].0) || inside(all[j].0, &masked));
         if j > k + 1 && !known_next {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
@@ -419,10 +785,12 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         let mut size = [0.0; 3];
         let np_start = if b > 0 { before[b - 1].0 } else { start };
         for d in &dims {
-            if d.end <= start && d.end + 24 >= np_start && d.start >= prev_end && d.area.is_none()
-            {
+            if d.end <= start && d.end + 24 >= np_start && d.start >= prev_end && d.area.is_none() {
                 let between = &t[d.end..np_start.max(d.end)];
-                if between.split_whitespace().all(|w| is_adjective(w) || w == "long" || w == "wide") {
+                if between
+                    .split_whitespace()
+                    .all(|w| is_adjective(w) || w == "long" || w == "wide")
+                {
                     for (k, v) in d.values.iter().enumerate().take(3) {
                         size[k] = *v;
                     }
@@ -436,7 +804,11 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 let between: Vec<&str> = t[le..start].split_whitespace().collect();
                 if ls >= prev_end
                     && between.len() <= 3
-                    && between.iter().all(|w| is_adjective(w) || is_verb(w) || ["long", "wide", "tall", "high", "across"].contains(w))
+                    && between.iter().all(|w| {
+                        is_adjective(w)
+                            || is_verb(w)
+                            || ["long", "wide", "tall", "high", "across"].contains(w)
+                    })
                     && !dims.iter().any(|d| ls >= d.start && ls < d.end)
                 {
                     if between.iter().any(|w| *w == "tall" || *w == "high") {
@@ -445,7 +817,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                         size[0] = v;
                     }
                     masked.push((ls, le));
-                    adjectives.retain(|a| !["long", "wide", "tall", "high", "across"].contains(&a.as_str()));
+                    adjectives.retain(|a| {
+                        !["long", "wide", "tall", "high", "across"].contains(&a.as_str())
+                    });
                 }
             }
         }
@@ -454,10 +828,24 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         let mut negated = false;
         let stop: Vec<&str> = before[..b].iter().map(|x| x.1).collect();
         let last = stop.last().copied();
-        let prev2 = if stop.len() >= 2 { Some(stop[stop.len() - 2]) } else { None };
-        let prev3 = if stop.len() >= 3 { Some(stop[stop.len() - 3]) } else { None };
+        let prev2 = if stop.len() >= 2 {
+            Some(stop[stop.len() - 2])
+        } else {
+            None
+        };
+        let prev3 = if stop.len() >= 3 {
+            Some(stop[stop.len() - 3])
+        } else {
+            None
+        };
         match last {
-            Some(w) if ["the", "its", "their", "this", "that", "these", "those", "my", "our", "your", "his", "her"].contains(&w) => {
+            Some(w)
+                if [
+                    "the", "its", "their", "this", "that", "these", "those", "my", "our", "your",
+                    "his", "her",
+                ]
+                .contains(&w) =>
+            {
                 definite = true;
                 if prev2.is_some_and(|p| NEGATORS.contains(&p)) {
                     negated = true;
@@ -468,7 +856,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 if let Some(n) = prev2.and_then(number_of) {
                     count = Some(n);
                     if let Some(m) = prev3.and_then(number_of) {
-                        if m > 1 && ["dozen", "pair", "couple", "sets", "set"].contains(&prev2.unwrap_or("")) {
+                        if m > 1
+                            && ["dozen", "pair", "couple", "sets", "set"]
+                                .contains(&prev2.unwrap_or(""))
+                        {
                             count = Some(m * n.max(1));
                         }
                     }
@@ -491,7 +882,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                     if ["dozen", "couple", "pair"].contains(&w) {
                         count = Some(n);
                     }
-                    if (w == "a" || w == "an" || w == "any") && prev2.is_some_and(|p| NEGATORS.contains(&p)) {
+                    if (w == "a" || w == "an" || w == "any")
+                        && prev2.is_some_and(|p| NEGATORS.contains(&p))
+                    {
                         negated = true;
                     }
                     if prev2.is_some_and(|p| NEGATORS.contains(&p)) && w != "a" && w != "an" {
@@ -563,10 +956,16 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     }
 
     // "for 24 students", "for eight people"
-    let people = re(r"\bfor (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)");
+    let people = re(
+        r"\bfor (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)",
+    );
     for c in people.captures_iter(&t) {
         let w = &c[1];
-        if !["a", "an", "no", "some", "many", "few", "several", "both", "couple", "pair", "one"].contains(&w) {
+        if ![
+            "a", "an", "no", "some", "many", "few", "several", "both", "couple", "pair", "one",
+        ]
+        .contains(&w)
+        {
             if let Some(n) = number_of(w) {
                 r.people = Some(n);
             }
@@ -576,7 +975,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         let pre = &t[..s];
         if re(r"\b(?:small|tiny|compact|little|cramped|narrow)\s*(?:[a-z'-]+\s+)?$").is_match(pre) {
             r.scale = 0.75;
-        } else if re(r"\b(?:large|big|huge|spacious|grand|vast|open)\s*(?:[a-z'-]+\s+)?$").is_match(pre) {
+        } else if re(r"\b(?:large|big|huge|spacious|grand|vast|open)\s*(?:[a-z'-]+\s+)?$")
+            .is_match(pre)
+        {
             r.scale = 1.35;
         }
     }
@@ -595,7 +996,12 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
 /// Relation and anchor phrases between the mentions.
 fn read_placements(r: &mut Reading) {
     let t = r.text.clone();
-    let clause_start = |pos: usize| t[..pos].rfind(['.', ';', '!', '?']).map(|i| i + 1).unwrap_or(0);
+    let clause_start = |pos: usize| {
+        t[..pos]
+            .rfind(['.', ';', '!', '?'])
+            .map(|i| i + 1)
+            .unwrap_or(0)
+    };
     let subject_before = |ms: &[Mention], pos: usize| -> Option<usize> {
         let cs = clause_start(pos);
         ms.iter()
@@ -605,36 +1011,75 @@ fn read_placements(r: &mut Reading) {
             .map(|(i, _)| i)
     };
     let object_after = |ms: &[Mention], pos: usize| -> Option<usize> {
-        ms.iter().enumerate().find(|(_, m)| {
-            m.start >= pos
-                && !m.negated
-                && t[pos..m.start]
-                    .split_whitespace()
-                    .all(|w| is_adjective(w) || ["the", "a", "an", "its", "their", "each", "every", "one", "two"].contains(&w))
-        })
-        .map(|(i, _)| i)
+        ms.iter()
+            .enumerate()
+            .find(|(_, m)| {
+                m.start >= pos
+                    && !m.negated
+                    && t[pos..m.start].split_whitespace().all(|w| {
+                        is_adjective(w)
+                            || [
+                                "the", "a", "an", "its", "their", "each", "every", "one", "two",
+                            ]
+                            .contains(&w)
+                    })
+            })
+            .map(|(i, _)| i)
     };
     let mut used: Vec<(usize, usize)> = vec![];
     let phrases: &[(&str, Option<RelationKind>)] = &[
-        (r"\b(?:on )?(?:either|both|each) sides? of\b", Some(RelationKind::Flank)),
+        (
+            r"\b(?:on )?(?:either|both|each) sides? of\b",
+            Some(RelationKind::Flank),
+        ),
         (r"\bflank(?:s|ed|ing)?\b", Some(RelationKind::Flank)),
         (r"\bat the (?:foot|end) of\b", Some(RelationKind::Front)),
         (r"\bat the head of\b", Some(RelationKind::Behind)),
         (r"\bin front of\b", Some(RelationKind::Front)),
         (r"\b(?:to the left of|left of)\b", Some(RelationKind::Left)),
-        (r"\b(?:to the right of|right of)\b", Some(RelationKind::Right)),
-        (r"\b(?:on top of|on|atop|upon|sitting on|standing on|resting on)\b", Some(RelationKind::Over)),
-        (r"\b(?:under|beneath|below|underneath)\b", Some(RelationKind::Under)),
-        (r"\b(?:around|round|surrounding|encircling|circling)\b", Some(RelationKind::Around)),
-        (r"\b(?:at|pulled up to|tucked under)\b", Some(RelationKind::At)),
-        (r"\b(?:next to|beside|alongside|near|close to|by|between)\b", Some(RelationKind::Next)),
-        (r"\b(?:opposite(?: to| of)?|across from|faces|facing|face|looking at|pointed at|towards|toward)\b", Some(RelationKind::Opposite)),
+        (
+            r"\b(?:to the right of|right of)\b",
+            Some(RelationKind::Right),
+        ),
+        (
+            r"\b(?:on top of|on|atop|upon|sitting on|standing on|resting on)\b",
+            Some(RelationKind::Over),
+        ),
+        (
+            r"\b(?:under|beneath|below|underneath)\b",
+            Some(RelationKind::Under),
+        ),
+        (
+            r"\b(?:around|round|surrounding|encircling|circling)\b",
+            Some(RelationKind::Around),
+        ),
+        (
+            r"\b(?:at|pulled up to|tucked under)\b",
+            Some(RelationKind::At),
+        ),
+        (
+            r"\b(?:next to|beside|alongside|near|close to|by|between)\b",
+            Some(RelationKind::Next),
+        ),
+        (
+            r"\b(?:opposite(?: to| of)?|across from|faces|facing|face|looking at|pointed at|towards|toward)\b",
+            Some(RelationKind::Opposite),
+        ),
         (r"\b(?:behind|in back of)\b", Some(RelationKind::Behind)),
     ];
     let anchor_phrases: &[(&str, Anchor)] = &[
-        (r"\b(?:centered|centred|in the (?:center|centre|middle)(?: of the room)?)\b", Anchor::Center),
-        (r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:walls?|sides?)\b|\bwall-mounted\b|\bagainst the walls?\b|\balong the walls?\b", Anchor::Side),
-        (r"\bin (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b", Anchor::Corner),
+        (
+            r"\b(?:centered|centred|in the (?:center|centre|middle)(?: of the room)?)\b",
+            Anchor::Center,
+        ),
+        (
+            r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:walls?|sides?)\b|\bwall-mounted\b|\bagainst the walls?\b|\balong the walls?\b",
+            Anchor::Side,
+        ),
+        (
+            r"\bin (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b",
+            Anchor::Corner,
+        ),
     ];
     for (p, a) in anchor_phrases {
         for m in re(p).find_iter(&t) {
@@ -650,8 +1095,12 @@ fn read_placements(r: &mut Reading) {
             if used.iter().any(|&(s, e)| m.start() < e && s < m.end()) {
                 continue;
             }
-            let Some(s) = subject_before(&r.mentions, m.start()) else { continue };
-            let Some(o) = object_after(&r.mentions, m.end()) else { continue };
+            let Some(s) = subject_before(&r.mentions, m.start()) else {
+                continue;
+            };
+            let Some(o) = object_after(&r.mentions, m.end()) else {
+                continue;
+            };
             used.push((m.start(), m.end()));
             if r.mentions[s].category == r.mentions[o].category {
                 continue;

@@ -86,7 +86,6 @@ fn describe(o: &ObjectKind, adjectives: &[String], styles: &[String]) -> String 
     format!("A DSLR photo of {} {body}", article(&body))
 }
 
-
 /// Why a prompt could not be planned.
 #[derive(Debug, thiserror::Error)]
 pub enum PlanError {
@@ -111,7 +110,8 @@ pub struct Plan {
 /// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
 pub fn parse_room_size(text: &str) -> Option<[f64; 2]> {
     let r = lang::read(KnowledgeBase::builtin(), text);
-    r.room.map(|[w, d]| [super::units::cm(w), super::units::cm(d)])
+    r.room
+        .map(|[w, d]| [super::units::cm(w), super::units::cm(d)])
 }
 
 /// Plans `prompt` offline; a prompt with nothing recognisable in it gives a generic room (use
@@ -129,7 +129,9 @@ fn generic_room(prompt: &str) -> SceneSpec {
     let mut objects = BTreeMap::new();
     let mut anchors = BTreeMap::new();
     for (c, n) in [("dining table", 1), ("dining chair", 2), ("bookshelf", 1)] {
-        let o = kb.object(c).expect("basic categories are in the knowledge base");
+        let o = kb
+            .object(c)
+            .expect("basic categories are in the knowledge base");
         objects.insert(
             c.to_string(),
             ObjectSpec {
@@ -151,7 +153,10 @@ fn generic_room(prompt: &str) -> SceneSpec {
         relations: vec![],
     };
     super::groups::apply(&mut spec, &BTreeSet::new());
-    spec.room = Some(super::gcp::choose_room(&spec.instances(), SceneType::Indoor));
+    spec.room = Some(super::gcp::choose_room(
+        &spec.instances(),
+        SceneType::Indoor,
+    ));
     spec
 }
 
@@ -169,7 +174,7 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
     // Only furniture that scenes specialise ("desks" in a classroom); a lamp stays a lamp.
     const SPECIALISED: &[&str] = &[
         "desk", "chair", "table", "stool", "bench", "shelf", "bed", "sofa", "couch", "counter",
-        "seat", "cabinet",
+        "seat", "cabinet", "sink",
     ];
     if !SPECIALISED.contains(&head.as_str()) {
         return m.category.clone();
@@ -203,12 +208,17 @@ fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
     let has = |ws: &[&str]| words.iter().any(|w| ws.contains(w));
     let (size, class) = if has(&["small", "tiny", "little", "mini", "miniature"]) {
         ([0.35, 0.35, 0.4], "small")
-    } else if has(&["large", "big", "huge", "giant", "enormous", "massive", "tall"]) {
+    } else if has(&[
+        "large", "big", "huge", "giant", "enormous", "massive", "tall",
+    ]) {
         ([1.5, 1.0, 1.6], "large")
     } else {
         ([0.7, 0.6, 0.9], "medium")
     };
-    (size, format!("sized as a {class} object {}", fmt_size(size)))
+    (
+        size,
+        format!("sized as a {class} object {}", fmt_size(size)),
+    )
 }
 
 fn fmt_size(s: [f64; 3]) -> String {
@@ -261,9 +271,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
         if !m.known && !unknown.contains_key(cat) {
             let (size, how) = unknown_size(kb, cat);
-            notes.push(format!(
-                "`{cat}` is not in the knowledge base: kept, {how}"
-            ));
+            notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
             unknown.insert(cat.clone(), size);
         }
         named.insert(cat.clone());
@@ -274,9 +282,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         if let Some(mut size) = base {
             if m.size != [0.0; 3] {
                 // A stated width keeps the shape's proportions in depth only when both are given.
-                for k in 0..3 {
-                    if m.size[k] > 0.0 {
-                        size[k] = m.size[k];
+                for (v, stated) in size.iter_mut().zip(m.size) {
+                    if stated > 0.0 {
+                        *v = stated;
                     }
                 }
                 sizes.insert(cat.clone(), size);
@@ -352,9 +360,15 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             .iter()
             .filter(|c| {
                 use super::spec::RelationKind::{Around, At, Circle};
-                super::groups::group_of(&probe, c).is_some_and(|(k, _)| matches!(k, Around | At | Circle))
+                super::groups::group_of(&probe, c)
+                    .is_some_and(|(k, _)| matches!(k, Around | At | Circle))
             })
-            .max_by_key(|c| (defaults.get(*c).copied().unwrap_or(0), counts.get(*c).copied().unwrap_or(0)));
+            .max_by_key(|c| {
+                (
+                    defaults.get(*c).copied().unwrap_or(0),
+                    counts.get(*c).copied().unwrap_or(0),
+                )
+            });
         if let Some(p) = r.people.filter(|_| main_seat == Some(seat)) {
             if !seat_named {
                 counts.insert(seat.clone(), p);
@@ -380,7 +394,11 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
-    if r.people.is_some() && !counts.keys().any(|c| super::groups::group_of(&probe, c).is_some()) {
+    if r.people.is_some()
+        && !counts
+            .keys()
+            .any(|c| super::groups::group_of(&probe, c).is_some())
+    {
         notes.push("\"for N people\": this scene has no seats to scale; counts kept".into());
     }
 
@@ -450,7 +468,11 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let (size, description) = match kb.object(c) {
             Some(o) => (
                 sizes.get(c).copied().unwrap_or(o.size),
-                describe(o, adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]), &styles),
+                describe(
+                    o,
+                    adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]),
+                    &styles,
+                ),
             ),
             None => {
                 let size = sizes
@@ -515,12 +537,26 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         };
         // A seat "around" or "at" its table is the group's relation, whatever the phrase.
         let rel = match super::groups::group_of(&spec, sc) {
-            Some((g, t)) if t == *oc && matches!(rel, super::spec::RelationKind::Around | super::spec::RelationKind::At | super::spec::RelationKind::Next | super::spec::RelationKind::Flank) => g,
+            Some((g, t))
+                if t == *oc
+                    && matches!(
+                        rel,
+                        super::spec::RelationKind::Around
+                            | super::spec::RelationKind::At
+                            | super::spec::RelationKind::Next
+                            | super::spec::RelationKind::Flank
+                    ) =>
+            {
+                g
+            }
             _ => rel,
         };
         let every = r.mentions[si].plural || r.mentions[si].count.unwrap_or(1) > 1;
         let n = if every { ns } else { 1 };
-        if rel == super::spec::RelationKind::Around || rel == super::spec::RelationKind::Flank || rel == super::spec::RelationKind::At {
+        if rel == super::spec::RelationKind::Around
+            || rel == super::spec::RelationKind::Flank
+            || rel == super::spec::RelationKind::At
+        {
             // groups spread them over the object's instances
             if super::groups::group_of(&spec, sc).is_some_and(|(_, t)| t == *oc) {
                 continue;
@@ -558,17 +594,29 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let stated = r.room;
     let room = match stated {
         Some([w, d]) => {
-            let tallest = spec.instances().iter().map(|i| i.size[2]).fold(0.0, f64::max);
+            let tallest = spec
+                .instances()
+                .iter()
+                .map(|i| i.size[2])
+                .fold(0.0, f64::max);
             let h = r.room_height.unwrap_or(height.max(tallest + 0.3));
             Room {
-                size: [super::units::cm(w), super::units::cm(d), super::units::cm(h)],
+                size: [
+                    super::units::cm(w),
+                    super::units::cm(d),
+                    super::units::cm(h),
+                ],
             }
         }
         None => {
             let mut room = room_for(&spec.instances(), scene_type);
             if r.scale != 1.0 {
                 let s = r.scale.sqrt();
-                let min_side = if scene_type == SceneType::Indoor { 2.5 } else { 6.0 };
+                let min_side = if scene_type == SceneType::Indoor {
+                    2.5
+                } else {
+                    6.0
+                };
                 for k in 0..2 {
                     room.size[k] = ((room.size[k] * s).max(min_side) * 10.0).ceil() / 10.0;
                 }

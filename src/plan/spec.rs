@@ -299,7 +299,10 @@ impl Layout {
         let n = spec.relations.len();
         let relations = match n {
             0 => "no relations to satisfy".to_string(),
-            1 => format!("{} of 1 relation satisfied", 1 - self.unsatisfied.len().min(1)),
+            1 => format!(
+                "{} of 1 relation satisfied",
+                1 - self.unsatisfied.len().min(1)
+            ),
             _ => format!(
                 "{} of {n} relations satisfied",
                 n - self.unsatisfied.len().min(n)
@@ -310,9 +313,8 @@ impl Layout {
             .iter()
             .filter(|o| o.placed_by == PlacedBy::Fallback)
             .count();
-        let plural = |k: usize, one: &str, many: &str| {
-            format!("{k} {}", if k == 1 { one } else { many })
-        };
+        let plural =
+            |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
         let [w, d, h] = self.room.size;
         format!(
             "{} in a {w:.1} x {d:.1} x {h:.1} m room, {relations}, {}",
