@@ -14,6 +14,11 @@ use super::spec::{
     SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
+
+mod fit;
+mod poses;
+use fit::join_names;
+pub use fit::smallest_room;
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
 
 /// Layout search settings.
@@ -289,112 +294,6 @@ impl Problem {
         out
     }
 
-    /// Poses of a functional-group subject `i` (a seat at a table, a nightstand by a bed, ...)
-    /// relative to its placed partner; `None` for the plain relations.
-    fn group_poses(&self, i: usize, rel: RelationKind, pj: &Pose, bj: &Box2) -> Option<Vec<Pose>> {
-        let s = self.inst[i].size;
-        let [hw, hd] = bj.half;
-        let at = |lx: f64, ly: f64| {
-            [
-                bj.c[0] + lx * bj.ex[0] + ly * bj.ey[0],
-                bj.c[1] + lx * bj.ex[1] + ly * bj.ey[1],
-            ]
-        };
-        let mut out = vec![];
-        // Evenly spaced slots along a side of length `len` for things `width` wide.
-        let slots = |len: f64, width: f64| -> Vec<f64> {
-            let k = ((len + 0.1) / (width + 0.1)).floor().max(1.0) as usize;
-            (0..k)
-                .map(|m| -0.5 * len + len * (m as f64 + 0.5) / k as f64)
-                .collect()
-        };
-        match rel {
-            RelationKind::Around => {
-                // The partner's four sides, each with as many seats as its length takes.
-                for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, -90.0), (3, 90.0)] {
-                    let (len, half_across) = if side < 2 {
-                        (2.0 * hw, hd)
-                    } else {
-                        (2.0 * hd, hw)
-                    };
-                    for g in [0.05, 0.15] {
-                        let off = half_across + g + 0.5 * s[1];
-                        for t in slots(len, s[0]) {
-                            let c = match side {
-                                0 => at(t, off),
-                                1 => at(t, -off),
-                                2 => at(off, t),
-                                _ => at(-off, t),
-                            };
-                            out.push(Pose {
-                                c,
-                                yaw: pj.yaw + yaw_off,
-                                z: 0.0,
-                            });
-                        }
-                    }
-                }
-            }
-            RelationKind::At => {
-                // A row along the partner's front, facing it.
-                for g in [0.02, 0.1, 0.2] {
-                    for t in slots(2.0 * hw, s[0]) {
-                        out.push(Pose {
-                            c: at(t, hd + g + 0.5 * s[1]),
-                            yaw: pj.yaw + 180.0,
-                            z: 0.0,
-                        });
-                    }
-                }
-            }
-            RelationKind::Flank => {
-                // Left and right of the head end, backs in line, turned as the partner.
-                for side in [-1.0, 1.0] {
-                    for g in [0.02, 0.08] {
-                        out.push(Pose {
-                            c: at(side * (hw + g + 0.5 * s[0]), -hd + 0.5 * s[1]),
-                            yaw: pj.yaw,
-                            z: 0.0,
-                        });
-                    }
-                }
-            }
-            RelationKind::Circle => {
-                // A ring 0.8-1.1 m out, each seat facing the centre.
-                let ext = 0.5 * s[0].max(s[1]);
-                for g in [0.8, 1.1] {
-                    let r = hw.max(hd) + g + ext;
-                    for k in 0..16 {
-                        let a = k as f64 * std::f64::consts::TAU / 16.0;
-                        let c = [pj.c[0] + r * a.cos(), pj.c[1] + r * a.sin()];
-                        let yaw = yaw_facing([pj.c[0] - c[0], pj.c[1] - c[1]]);
-                        out.push(Pose { c, yaw, z: 0.0 });
-                    }
-                }
-            }
-            RelationKind::Row => {
-                // A lattice of rows in front of the partner, turned as it is.
-                let pitch_x = s[0] + 0.5;
-                let pitch_y = s[1] + 1.1;
-                let [w, d, _] = self.room;
-                let reach = w.max(d);
-                let n_x = (reach / pitch_x).ceil() as i64;
-                for row in 0..((reach / pitch_y).ceil() as i64) {
-                    let ly = hd + 1.0 + 0.5 * s[1] + row as f64 * pitch_y;
-                    for k in -n_x..=n_x {
-                        out.push(Pose {
-                            c: at(k as f64 * pitch_x, ly),
-                            yaw: pj.yaw,
-                            z: 0.0,
-                        });
-                    }
-                }
-            }
-            _ => return None,
-        }
-        Some(out)
-    }
-
     /// (hard-valid, constraints satisfied, constraint count, score) of pose `p` for `i`.
     fn evaluate(
         &self,
@@ -522,69 +421,8 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
     Ok(l)
 }
 
-/// "a, b and 3 more" followed by `verb`.
-fn join_names(names: &[String], verb: &str) -> String {
-    let shown: Vec<&str> = names.iter().take(5).map(String::as_str).collect();
-    let more = names.len().saturating_sub(5);
-    let mut s = shown.join(", ");
-    if more > 0 {
-        s.push_str(&format!(" and {more} more"));
-    }
-    format!("{s} {verb}")
-}
-
-/// The smallest room, in steps of 10% of the spec's room (its proportions kept; the chosen
-/// room when it has none), in which every instance is placed validly.
-pub fn smallest_room(spec: &SceneSpec) -> Room {
-    let inst = spec.instances();
-    let base = spec
-        .room
-        .unwrap_or_else(|| choose_room(&inst, spec.scene_type));
-    // Start from what the footprints and the largest piece need, then grow.
-    let area: f64 = inst.iter().map(|i| i.size[0] * i.size[1]).sum();
-    let longest = inst
-        .iter()
-        .map(|i| i.size[0].max(i.size[1]))
-        .fold(0.0, f64::max);
-    let shortest = inst
-        .iter()
-        .map(|i| i.size[0].min(i.size[1]))
-        .fold(0.0, f64::max);
-    let tallest = inst.iter().map(|i| i.size[2]).fold(0.0, f64::max);
-    let (bw, bd) = (base.size[0], base.size[1]);
-    let mut f = (area / (0.6 * bw * bd)).sqrt();
-    let (long_side, short_side) = (bw.max(bd), bw.min(bd));
-    f = f
-        .max(longest / long_side)
-        .max(shortest / short_side)
-        .max(0.2);
-    let h = base.size[2].max(tallest + 0.1);
-    let r = |v: f64| (v * 10.0).ceil() / 10.0;
-    let opts = LayoutOptions {
-        seed: 0,
-        restarts: 2,
-    };
-    for _ in 0..30 {
-        let room = Room {
-            size: [r(bw * f), r(bd * f), r(h)],
-        };
-        let fits_all = spec
-            .objects
-            .values()
-            .all(|o| super::capacity::fits(o.size, room.size));
-        if fits_all {
-            let l = layout_in(spec, room, opts);
-            if super::check::validity_problems(&l, spec).is_empty() {
-                return room;
-            }
-        }
-        f *= 1.1;
-    }
-    choose_room(&inst, spec.scene_type)
-}
-
 /// The GCP search in `room`, without the fit checks.
-fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
+pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
     let inst = spec.instances();
     let mut index = BTreeMap::new();
     for (k, i) in inst.iter().enumerate() {

@@ -7,407 +7,28 @@
 use super::kb::KnowledgeBase;
 use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, find_lengths, Dims};
+
+mod placements;
+use placements::read_placements;
 use regex::Regex;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
 /// Words that never describe an object: articles, pronouns, prepositions, conjunctions,
 /// auxiliaries, quantifiers and the words of placement phrases.
-const FUNCTION: &[&str] = &[
-    "a",
-    "an",
-    "the",
-    "some",
-    "any",
-    "all",
-    "every",
-    "each",
-    "both",
-    "either",
-    "neither",
-    "no",
-    "not",
-    "none",
-    "nor",
-    "of",
-    "with",
-    "without",
-    "except",
-    "excluding",
-    "minus",
-    "but",
-    "and",
-    "or",
-    "plus",
-    "also",
-    "as",
-    "well",
-    "in",
-    "on",
-    "at",
-    "to",
-    "for",
-    "by",
-    "from",
-    "into",
-    "onto",
-    "upon",
-    "over",
-    "under",
-    "near",
-    "next",
-    "beside",
-    "besides",
-    "behind",
-    "front",
-    "opposite",
-    "across",
-    "around",
-    "between",
-    "along",
-    "against",
-    "inside",
-    "outside",
-    "within",
-    "where",
-    "which",
-    "that",
-    "this",
-    "these",
-    "those",
-    "who",
-    "whose",
-    "what",
-    "when",
-    "while",
-    "there",
-    "here",
-    "it",
-    "its",
-    "it's",
-    "they",
-    "them",
-    "their",
-    "i",
-    "i'd",
-    "i'm",
-    "me",
-    "my",
-    "we",
-    "us",
-    "our",
-    "you",
-    "your",
-    "he",
-    "she",
-    "his",
-    "her",
-    "is",
-    "are",
-    "was",
-    "were",
-    "be",
-    "been",
-    "being",
-    "am",
-    "has",
-    "have",
-    "had",
-    "having",
-    "do",
-    "does",
-    "did",
-    "will",
-    "would",
-    "should",
-    "could",
-    "can",
-    "may",
-    "might",
-    "must",
-    "shall",
-    "very",
-    "really",
-    "quite",
-    "rather",
-    "just",
-    "only",
-    "so",
-    "too",
-    "more",
-    "most",
-    "less",
-    "lots",
-    "lot",
-    "plenty",
-    "many",
-    "much",
-    "several",
-    "few",
-    "couple",
-    "pair",
-    "set",
-    "sets",
-    "dozen",
-    "other",
-    "another",
-    "such",
-    "than",
-    "then",
-    "if",
-    "like",
-    "room",
-    "space",
-    "area",
-    "one",
-    "ones",
-    "side",
-    "sides",
-    "wall",
-    "walls",
-    "corner",
-    "corners",
-    "middle",
-    "center",
-    "centre",
-    "left",
-    "right",
-    "top",
-    "bottom",
-    "end",
-    "foot",
-    "head",
-    "please",
-    "scene",
-    "place",
-];
+fn function() -> &'static [&'static str] {
+    word_list("function")
+}
 
 /// Verbs people use in requests; never part of a description.
-const VERBS: &[&str] = &[
-    "want",
-    "wants",
-    "need",
-    "needs",
-    "like",
-    "love",
-    "make",
-    "makes",
-    "create",
-    "generate",
-    "render",
-    "build",
-    "design",
-    "show",
-    "shows",
-    "imagine",
-    "picture",
-    "give",
-    "get",
-    "add",
-    "include",
-    "includes",
-    "including",
-    "contain",
-    "contains",
-    "containing",
-    "feature",
-    "features",
-    "featuring",
-    "face",
-    "faces",
-    "facing",
-    "sit",
-    "sits",
-    "sitting",
-    "seated",
-    "stand",
-    "stands",
-    "standing",
-    "hang",
-    "hangs",
-    "hanging",
-    "put",
-    "puts",
-    "placed",
-    "set",
-    "sets",
-    "go",
-    "goes",
-    "lie",
-    "lies",
-    "lying",
-    "look",
-    "looks",
-    "looking",
-    "arranged",
-    "furnished",
-    "decorated",
-    "filled",
-    "equipped",
-    "surrounded",
-    "lined",
-    "pushed",
-    "keep",
-    "keeps",
-    "leave",
-    "let",
-    "use",
-    "used",
-    "see",
-    "say",
-    "think",
-    "leaning",
-    "leans",
-    "rest",
-    "rests",
-    "resting",
-    "stacked",
-    "scattered",
-    "grouped",
-    "gathered",
-    "centered",
-    "centred",
-    "mounted",
-    "wall-mounted",
-    "positioned",
-    "located",
-    "situated",
-    "fit",
-    "fits",
-    "holds",
-    "hold",
-    "serve",
-    "serves",
-    "serving",
-    "overlooking",
-    "overlook",
-];
+fn verbs() -> &'static [&'static str] {
+    word_list("verbs")
+}
 
 /// Nouns that name no object to place (parts of the room, people, the mood).
-const NOT_OBJECTS: &[&str] = &[
-    "view",
-    "views",
-    "window",
-    "windows",
-    "door",
-    "doors",
-    "doorway",
-    "floor",
-    "floors",
-    "ceiling",
-    "light",
-    "lights",
-    "lighting",
-    "sunlight",
-    "daylight",
-    "style",
-    "theme",
-    "vibe",
-    "vibes",
-    "atmosphere",
-    "feel",
-    "feeling",
-    "look",
-    "colour",
-    "color",
-    "colours",
-    "colors",
-    "palette",
-    "touch",
-    "touches",
-    "people",
-    "person",
-    "persons",
-    "students",
-    "student",
-    "pupils",
-    "guests",
-    "guest",
-    "kids",
-    "kid",
-    "children",
-    "child",
-    "family",
-    "families",
-    "friends",
-    "diners",
-    "customers",
-    "employees",
-    "workers",
-    "visitors",
-    "seats",
-    "lot",
-    "lots",
-    "plenty",
-    "bit",
-    "kind",
-    "sort",
-    "type",
-    "way",
-    "place",
-    "spot",
-    "night",
-    "day",
-    "morning",
-    "evening",
-    "time",
-    "mood",
-    "decor",
-    "décor",
-    "furniture",
-    "stuff",
-    "things",
-    "thing",
-    "items",
-    "item",
-    "accents",
-    "accent",
-    "details",
-    "detail",
-    "vibe",
-    "sense",
-    "plan",
-    "layout",
-    "size",
-    "shape",
-    "height",
-    "width",
-    "length",
-    "depth",
-    "something",
-    "anything",
-    "everything",
-    "nothing",
-    "usual",
-    "works",
-    "word",
-    "words",
-    "water",
-    "sky",
-    "sea",
-    "ocean",
-    "mountains",
-    "sun",
-    "moon",
-    "stars",
-    "snow",
-    "rain",
-    "grass",
-    "sand",
-    "dirt",
-    "gravel",
-    "tiles",
-    "wood",
-    "parquet",
-    "brick",
-    "stone",
-    "concrete",
-    "marble",
-    "fireplace's",
-    "focus",
-    "point",
-    "centerpiece",
-];
+fn not_objects() -> &'static [&'static str] {
+    word_list("not_objects")
+}
 
 /// Number words.
 const NUMBERS: &[(&str, u32)] = &[
@@ -462,17 +83,30 @@ const NEGATORS: &[&str] = &[
 ];
 
 /// English words that almost every request uses; a long text with none of them is not English.
-const ENGLISH: &[&str] = &[
-    "a", "an", "the", "with", "and", "of", "in", "on", "for", "some", "two", "three", "room", "my",
-    "i", "want", "is", "at", "by", "to", "no", "without",
-];
+fn english() -> &'static [&'static str] {
+    word_list("english")
+}
+
+/// A word list of `kb/words.txt`.
+fn word_list(name: &str) -> &'static [&'static str] {
+    static LISTS: OnceLock<BTreeMap<&'static str, Vec<&'static str>>> = OnceLock::new();
+    let lists = LISTS.get_or_init(|| {
+        include_str!("kb/words.txt")
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .filter_map(|l| l.split_once(':'))
+            .map(|(k, v)| (k.trim(), v.split_whitespace().collect()))
+            .collect()
+    });
+    lists.get(name).map(Vec::as_slice).unwrap_or(&[])
+}
 
 pub fn is_function_word(w: &str) -> bool {
-    FUNCTION.contains(&w)
+    function().contains(&w)
 }
 
 pub fn is_verb(w: &str) -> bool {
-    VERBS.contains(&w)
+    verbs().contains(&w)
 }
 
 /// A word that can describe an object: letters (with hyphens or apostrophes inside), not a
@@ -748,8 +382,8 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
                 && !head.ends_with('\'')
-                && !NOT_OBJECTS.contains(&head)
-                && !NOT_OBJECTS.contains(&singular(head).as_str())
+                && !not_objects().contains(&head)
+                && !not_objects().contains(&singular(head).as_str())
                 && super::offline::style_word(head).is_none()
                 && head.len() > 2;
             if ok {
@@ -988,132 +622,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         .split(|c: char| !c.is_alphanumeric() && c != '\'')
         .filter(|w| !w.is_empty())
         .collect();
-    let english = words.iter().filter(|w| ENGLISH.contains(w)).count();
+    let english = words.iter().filter(|w| english().contains(w)).count();
     r.not_english = words.len() >= 3 && english == 0;
     r
-}
-
-/// Relation and anchor phrases between the mentions.
-fn read_placements(r: &mut Reading) {
-    let t = r.text.clone();
-    let clause_start = |pos: usize| {
-        t[..pos]
-            .rfind(['.', ';', '!', '?'])
-            .map(|i| i + 1)
-            .unwrap_or(0)
-    };
-    let subject_before = |ms: &[Mention], pos: usize| -> Option<usize> {
-        let cs = clause_start(pos);
-        ms.iter()
-            .enumerate()
-            .rev()
-            .find(|(_, m)| m.end <= pos && m.start >= cs && !m.negated)
-            .map(|(i, _)| i)
-    };
-    let object_after = |ms: &[Mention], pos: usize| -> Option<usize> {
-        ms.iter()
-            .enumerate()
-            .find(|(_, m)| {
-                m.start >= pos
-                    && !m.negated
-                    && t[pos..m.start].split_whitespace().all(|w| {
-                        is_adjective(w)
-                            || [
-                                "the", "a", "an", "its", "their", "each", "every", "one", "two",
-                            ]
-                            .contains(&w)
-                    })
-            })
-            .map(|(i, _)| i)
-    };
-    let mut used: Vec<(usize, usize)> = vec![];
-    let phrases: &[(&str, Option<RelationKind>)] = &[
-        (
-            r"\b(?:on )?(?:either|both|each) sides? of\b",
-            Some(RelationKind::Flank),
-        ),
-        (r"\bflank(?:s|ed|ing)?\b", Some(RelationKind::Flank)),
-        (r"\bat the (?:foot|end) of\b", Some(RelationKind::Front)),
-        (r"\bat the head of\b", Some(RelationKind::Behind)),
-        (r"\bin front of\b", Some(RelationKind::Front)),
-        (r"\b(?:to the left of|left of)\b", Some(RelationKind::Left)),
-        (
-            r"\b(?:to the right of|right of)\b",
-            Some(RelationKind::Right),
-        ),
-        (
-            r"\b(?:on top of|on|atop|upon|sitting on|standing on|resting on)\b",
-            Some(RelationKind::Over),
-        ),
-        (
-            r"\b(?:under|beneath|below|underneath)\b",
-            Some(RelationKind::Under),
-        ),
-        (
-            r"\b(?:around|round|surrounding|encircling|circling)\b",
-            Some(RelationKind::Around),
-        ),
-        (
-            r"\b(?:at|pulled up to|tucked under)\b",
-            Some(RelationKind::At),
-        ),
-        (
-            r"\b(?:next to|beside|alongside|near|close to|by|between)\b",
-            Some(RelationKind::Next),
-        ),
-        (
-            r"\b(?:opposite(?: to| of)?|across from|faces|facing|face|looking at|pointed at|towards|toward)\b",
-            Some(RelationKind::Opposite),
-        ),
-        (r"\b(?:behind|in back of)\b", Some(RelationKind::Behind)),
-    ];
-    let anchor_phrases: &[(&str, Anchor)] = &[
-        (
-            r"\b(?:centered|centred|in the (?:center|centre|middle)(?: of the room)?)\b",
-            Anchor::Center,
-        ),
-        (
-            r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:walls?|sides?)\b|\bwall-mounted\b|\bagainst the walls?\b|\balong the walls?\b",
-            Anchor::Side,
-        ),
-        (
-            r"\bin (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b",
-            Anchor::Corner,
-        ),
-    ];
-    for (p, a) in anchor_phrases {
-        for m in re(p).find_iter(&t) {
-            if let Some(s) = subject_before(&r.mentions, m.start()) {
-                r.anchors.push((s, *a));
-                used.push((m.start(), m.end()));
-            }
-        }
-    }
-    for (p, rel) in phrases {
-        let Some(rel) = rel else { continue };
-        for m in re(p).find_iter(&t) {
-            if used.iter().any(|&(s, e)| m.start() < e && s < m.end()) {
-                continue;
-            }
-            let Some(s) = subject_before(&r.mentions, m.start()) else {
-                continue;
-            };
-            let Some(o) = object_after(&r.mentions, m.end()) else {
-                continue;
-            };
-            used.push((m.start(), m.end()));
-            if r.mentions[s].category == r.mentions[o].category {
-                continue;
-            }
-            r.relations.push((s, *rel, o));
-            if m.as_str() == "between" {
-                // "between the sofa and the armchair": next to both
-                if let Some(o2) = r.mentions.get(o + 1) {
-                    if t[r.mentions[o].end..o2.start].trim().starts_with("and") {
-                        r.relations.push((s, RelationKind::Next, o + 1));
-                    }
-                }
-            }
-        }
-    }
 }
