@@ -48,8 +48,11 @@ enum Command {
     /// <out>/layout.json and a top-down picture <out>/layout.png.
     ///
     /// Planning is offline, from the built-in knowledge base: the scene type, the objects the
-    /// prompt names with their counts and adjectives, room size ("4m x 5m", "20 square meters"),
-    /// placement phrases ("in the corner", "next to the sofa") and style words.
+    /// prompt names with their counts and adjectives ("no tv", "0 chairs" mean none), sizes
+    /// ("4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 square meters"), placement phrases
+    /// ("faces", "around", "on either side of", "in the corner") and style words; rooms are
+    /// furnished in functional groups. A prompt it cannot read, or named objects that cannot
+    /// fit the stated room, is an error that says why.
     Plan(cli::plan::Args),
     /// Generate a scene from a sentence (or a dialogue): plan, lay out, make the objects and the
     /// environment, compose them. Writes the scene directory: scene.json, spec.json,

@@ -293,3 +293,61 @@ fn bad_specs_get_clear_errors() {
     let e = SceneSpec::read(&p).unwrap_err().to_string();
     assert!(e.contains("broken.json") && !e.contains('\n'), "{e}");
 }
+
+/// The functional-group relations mean what ARCHITECTURE.md says, and each part of a meaning
+/// can fail on its own.
+#[test]
+fn functional_relations_follow_their_definitions() {
+    use RelationKind::*;
+    let holds = |s: &PlacedObject, r, o: &PlacedObject| relation_holds(s, r, o);
+    // AROUND: beside one of the table's sides, gap <= 0.3 m, facing it.
+    let table = obj("table1", [1.8, 0.9, 0.75], [0.0, 0.0, 0.0], 0.0);
+    let chair = |x: f64, y: f64, yaw: f64| obj("chair1", [0.45, 0.5, 0.9], [x, y, 0.0], yaw);
+    assert!(holds(&chair(0.3, 0.8, 180.0), Around, &table));
+    assert!(holds(&chair(0.0, -0.8, 0.0), Around, &table));
+    assert!(holds(&chair(1.25, 0.0, 90.0), Around, &table), "short side");
+    assert!(!holds(&chair(0.3, 0.8, 0.0), Around, &table), "facing away");
+    assert!(!holds(&chair(0.3, 1.2, 180.0), Around, &table), "0.5 m gap");
+    assert!(
+        !holds(&chair(1.25, 0.8, 135.0), Around, &table),
+        "at a corner"
+    );
+    // AT: in front of the desk, gap <= 0.3 m, facing it.
+    let desk = obj("desk1", [1.4, 0.7, 0.75], [0.0, 0.0, 0.0], 90.0);
+    assert!(holds(&chair(-0.65, 0.0, -90.0), At, &desk));
+    assert!(
+        !holds(&chair(0.65, 0.0, 90.0), At, &desk),
+        "behind the desk"
+    );
+    assert!(!holds(&chair(-1.2, 0.0, -90.0), At, &desk), "too far");
+    // FLANK: beside the bed's head end, flush, turned as the bed.
+    let bed = obj("bed1", [1.6, 2.1, 1.0], [0.0, 0.0, 0.0], 0.0);
+    let stand = |x: f64, y: f64, yaw: f64| obj("nightstand1", [0.5, 0.4, 0.55], [x, y, 0.0], yaw);
+    assert!(holds(&stand(1.1, -0.85, 0.0), Flank, &bed));
+    assert!(holds(&stand(-1.08, -0.85, 0.0), Flank, &bed));
+    assert!(!holds(&stand(1.1, 0.85, 0.0), Flank, &bed), "at the foot");
+    assert!(
+        !holds(&stand(1.1, -0.85, 180.0), Flank, &bed),
+        "turned round"
+    );
+    assert!(!holds(&stand(1.4, -0.85, 0.0), Flank, &bed), "0.35 m away");
+    // CIRCLE: 0.6-1.5 m from the fire, facing it.
+    let fire = obj("fire pit1", [1.0, 1.0, 0.4], [0.0, 0.0, 0.0], 0.0);
+    let log = |y: f64, yaw: f64| obj("log1", [1.5, 0.4, 0.4], [0.0, y, 0.0], yaw);
+    assert!(holds(&log(1.7, 180.0), Circle, &fire));
+    assert!(!holds(&log(0.9, 180.0), Circle, &fire), "touching the fire");
+    assert!(!holds(&log(2.6, 180.0), Circle, &fire), "1.9 m away");
+    assert!(!holds(&log(1.7, 0.0), Circle, &fire), "facing away");
+    // ROW: in front of the board, turned as it is.
+    let board = obj("board1", [3.0, 0.1, 1.2], [0.0, -3.0, 0.0], 0.0);
+    let d = |x: f64, y: f64, yaw: f64| obj("desk2", [0.7, 0.5, 0.75], [x, y, 0.0], yaw);
+    assert!(holds(&d(2.5, 1.0, 0.0), Row, &board));
+    assert!(!holds(&d(2.5, 1.0, 180.0), Row, &board), "turned round");
+    assert!(!holds(&d(0.0, -3.6, 0.0), Row, &board), "behind the board");
+    // Names as the file writes them.
+    assert_eq!(Around.to_string(), "AROUND");
+    assert_eq!(Opposite.to_string(), "OPPOSITE");
+    let r: Relation =
+        serde_json::from_str(r#"{"subject": "a1", "relation": "FLANK", "object": "b1"}"#).unwrap();
+    assert_eq!(r.relation, Flank);
+}

@@ -181,3 +181,52 @@ fn plan_verb_with_an_llm_never_prints_the_key() {
     assert!(dir.join("layout.png").is_file());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// An LLM plan goes through the same functional groups and capacity as the offline one: the
+/// chairs it lists get seats round the table, an object the prompt names that the answer left
+/// out is added, and default furniture is trimmed to the stated room.
+#[test]
+fn llm_plans_get_functional_groups_and_capacity() {
+    let answers = vec![
+        "{\"dining table\": {\"number\": 1, \"size\": [1.8, 0.9, 0.75], \"description\": \"A DSLR photo of an oak table\"}, \"dining chair\": {\"number\": 6, \"size\": [0.45, 0.5, 0.9], \"description\": \"A DSLR photo of a chair\"}, \"sideboard\": {\"number\": 1, \"size\": [1.6, 0.45, 0.8], \"description\": \"A DSLR photo of a sideboard\"}, \"china cabinet\": {\"number\": 1, \"size\": [1.2, 0.45, 1.9], \"description\": \"A DSLR photo of a cabinet\"}}".to_string(),
+        "{\"dining table1\": CENTER}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+    ];
+    let (url, _) = server(answers);
+    let (spec, report) = plan_llm(&config(url), "a dining room, 3.5m x 3m, with a piano");
+    assert!(!report.offline_fallback, "{:?}", report.warnings);
+    assert!(
+        spec.objects.contains_key("piano"),
+        "named, added: {:?}",
+        spec.objects.keys()
+    );
+    assert!(report.warnings.iter().any(|w| w.contains("piano")));
+    assert!(
+        report
+            .warnings
+            .iter()
+            .any(|w| w.contains("left out to fit")),
+        "defaults trimmed: {:?}",
+        report.warnings
+    );
+    let around = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Around && r.object == "dining table1")
+        .count();
+    let chairs = spec
+        .objects
+        .get("dining chair")
+        .map(|o| o.number)
+        .unwrap_or(0);
+    assert!(
+        chairs > 0 && around as u32 == chairs,
+        "{around} of {chairs} chairs round the table"
+    );
+    let l = dreamscene::plan::gcp::layout(&spec, dreamscene::plan::gcp::LayoutOptions::seeded(0))
+        .unwrap();
+    assert!(dreamscene::plan::check::validity_problems(&l, &spec).is_empty());
+}

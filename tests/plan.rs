@@ -266,3 +266,34 @@ fn plan_verb_writes_spec_layout_and_picture() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// layout.png's numbered markers never overlap one another, even on stacked and crowded
+/// objects, and stay inside the picture; the legend lists every object.
+#[test]
+fn layout_labels_never_overlap() {
+    for p in [
+        "a bedroom with a lamp on each nightstand",
+        "a restaurant",
+        "a classroom for 20 students",
+        "a living room, 3m x 3m, with a sofa",
+    ] {
+        let spec = dreamscene::plan::offline::plan_prompt(p).unwrap().spec;
+        let l = layout(&spec, LayoutOptions::seeded(0)).unwrap();
+        let boxes = dreamscene::plan::draw::label_boxes(&l);
+        assert_eq!(boxes.len(), l.objects.len());
+        let img = dreamscene::plan::draw::draw_layout(&l);
+        for (i, (a, _)) in boxes.iter().enumerate() {
+            assert!(
+                a[0] >= 0 && a[1] >= 0 && a[2] <= img.width() as i64 && a[3] <= img.height() as i64
+            );
+            for (b, _) in &boxes[i + 1..] {
+                let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
+                assert!(apart, "{p}: markers {a:?} and {b:?} overlap");
+            }
+        }
+        // Stacked objects share a centre: one of each pair had to move (with a leader line).
+        if p.contains("nightstand") {
+            assert!(boxes.iter().any(|(_, moved)| *moved));
+        }
+    }
+}

@@ -1,8 +1,8 @@
 //! `dreamscene layout`: graph-based constraint placement of a SceneSpec.
-use super::create_parent;
+use super::{create_parent, write_png};
 use anyhow::{Context as _, Result};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
-use dreamscene::plan::spec::{PlacedBy, SceneSpec};
+use dreamscene::plan::spec::SceneSpec;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -13,7 +13,7 @@ pub struct Args {
     /// Seed: different seeds give different valid layouts.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Output layout.json.
+    /// Output layout.json; its top-down picture goes beside it (same name, .png).
     #[arg(long)]
     pub out: PathBuf,
 }
@@ -24,24 +24,16 @@ pub fn run(a: Args) -> Result<()> {
     create_parent(&a.out)?;
     l.write(&a.out)
         .with_context(|| format!("writing {}", a.out.display()))?;
-    let fallback = l
-        .objects
-        .iter()
-        .filter(|o| o.placed_by == PlacedBy::Fallback)
-        .count();
+    let png = a.out.with_extension("png");
+    write_png(&dreamscene::plan::draw::draw_layout(&l), &png)?;
     println!(
-        "wrote {}: {} objects in a {:.1} x {:.1} x {:.1} m room, {} of {} relations satisfied, {} fallback placements",
+        "wrote {} and {}: {}",
         a.out.display(),
-        l.objects.len(),
-        l.room.size[0],
-        l.room.size[1],
-        l.room.size[2],
-        spec.relations.len() - l.unsatisfied.len(),
-        spec.relations.len(),
-        fallback
+        png.display(),
+        l.summary(&spec)
     );
     for r in &l.unsatisfied {
-        println!("  unsatisfied: {} {:?} {}", r.subject, r.relation, r.object);
+        println!("  unsatisfied: {r}");
     }
     Ok(())
 }

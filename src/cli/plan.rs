@@ -72,30 +72,19 @@ fn plan(
 ) -> Result<()> {
     let text = plan_text(prompt, dialogue, interactive)?;
     let (spec, l) = plan_to_dir(&text, llm.as_ref(), seed, out)?;
-    let n_rel = spec.relations.len();
     println!(
-        "{} scene, {:.1} x {:.1} m: {} objects, {} of {} relations satisfied",
+        "{} scene: {}",
         match spec.scene_type {
             dreamscene::plan::spec::SceneType::Indoor => "indoor",
             dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
         },
-        l.room.size[0],
-        l.room.size[1],
-        l.objects.len(),
-        n_rel - l.unsatisfied.len(),
-        n_rel
+        l.summary(&spec)
     );
     println!(
         "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
         out.display()
     );
     Ok(())
-}
-
-#[derive(serde::Deserialize)]
-struct Turn {
-    role: String,
-    content: String,
 }
 
 /// Asks about style and constraints on the terminal; the answers join the user constraint.
@@ -138,18 +127,14 @@ pub fn plan_text(
         (None, Some(f)) => {
             let raw =
                 std::fs::read_to_string(&f).with_context(|| format!("reading {}", f.display()))?;
-            let turns: Vec<Turn> = serde_json::from_str(&raw).with_context(|| {
-                format!("{}: expected a JSON list of {{role, content}}", f.display())
-            })?;
-            let user: Vec<String> = turns
-                .into_iter()
-                .filter(|t| t.role == "user")
-                .map(|t| t.content)
-                .collect();
-            if user.is_empty() {
-                bail!("{}: the dialogue has no user turns", f.display());
+            let turns: Vec<dreamscene::plan::dialogue::Turn> = serde_json::from_str(&raw)
+                .with_context(|| {
+                    format!("{}: expected a JSON list of {{role, content}}", f.display())
+                })?;
+            match dreamscene::plan::dialogue::user_text(&turns) {
+                Some(t) => t,
+                None => bail!("{}: the dialogue has no user turns", f.display()),
             }
-            user.join(". ")
         }
         (Some(_), Some(_)) => bail!("give a prompt or --dialogue, not both"),
         (None, None) if interactive => String::new(),
@@ -186,7 +171,13 @@ pub fn plan_to_dir(
     out: &Path,
 ) -> Result<(SceneSpec, dreamscene::plan::spec::Layout)> {
     let spec = match llm {
-        None => dreamscene::plan::offline::plan_offline(text),
+        None => {
+            let p = dreamscene::plan::offline::plan_prompt(text)?;
+            for n in &p.notes {
+                eprintln!("note: {n}");
+            }
+            p.spec
+        }
         Some(cfg) => {
             eprintln!("asking {} ({})", cfg.url, cfg.model);
             let (spec, report) = dreamscene::plan::llm::plan_llm(cfg, text);

@@ -162,6 +162,47 @@ pub fn facing_error(s: &Box2, o: &Box2) -> f64 {
     c.clamp(-1.0, 1.0).acos().to_degrees()
 }
 
+/// Largest footprint gap of AROUND and AT (a seat pulled up to its table, desk or counter).
+pub const SEAT_GAP: f64 = 0.3;
+/// Largest footprint gap of FLANK (flush beside).
+pub const FLANK_GAP: f64 = 0.15;
+/// Largest distance between the backs of a FLANK pair.
+pub const FLANK_BACK: f64 = 0.25;
+/// Footprint gap range of CIRCLE (seats round a fire).
+pub const CIRCLE_GAP: (f64, f64) = (0.6, 1.5);
+/// Largest angle of "facing" in AROUND, AT, FLANK, CIRCLE and ROW.
+pub const FACING_TOLERANCE: f64 = 30.0;
+
+/// The point of `o`'s footprint nearest to `p`.
+pub fn nearest_point(o: &Box2, p: [f64; 2]) -> [f64; 2] {
+    let l = o.local(p);
+    let x = l[0].clamp(-o.half[0], o.half[0]);
+    let y = l[1].clamp(-o.half[1], o.half[1]);
+    [
+        o.c[0] + x * o.ex[0] + y * o.ey[0],
+        o.c[1] + x * o.ex[1] + y * o.ey[1],
+    ]
+}
+
+/// Angle in degrees between the facing of `s` and the direction from its centre to the nearest
+/// point of `o`'s footprint (180 when the centre is inside it).
+pub fn facing_footprint_error(s: &Box2, o: &Box2) -> f64 {
+    let q = nearest_point(o, s.c);
+    let d = [q[0] - s.c[0], q[1] - s.c[1]];
+    let l = (d[0] * d[0] + d[1] * d[1]).sqrt();
+    if l < 1e-9 {
+        return 180.0;
+    }
+    let c = (d[0] * s.ey[0] + d[1] * s.ey[1]) / l;
+    c.clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+/// Angle in degrees between the facings of two boxes.
+pub fn yaw_difference(a: &Box2, b: &Box2) -> f64 {
+    let c = a.ey[0] * b.ey[0] + a.ey[1] * b.ey[1];
+    c.clamp(-1.0, 1.0).acos().to_degrees()
+}
+
 /// Whether "s is `rel` of o" holds.
 pub fn relation_holds(s: &PlacedObject, rel: RelationKind, o: &PlacedObject) -> bool {
     relation_holds_box(&Box2::of(s), rel, &Box2::of(o))
@@ -188,6 +229,38 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
         }
         RelationKind::Over => ob.contains(sb.c) && (sb.z0 - top).abs() <= 0.05,
         RelationKind::Under => ob.contains(sb.c) && sb.z1 <= top + 1e-6,
+        RelationKind::Around => {
+            let beside = (l[0].abs() <= hw + 1e-9) != (l[1].abs() <= hd + 1e-9);
+            beside
+                && overlap_depth(sb, ob) <= TOLERANCE
+                && gap(sb, ob) <= SEAT_GAP
+                && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::At => {
+            l[1] > hd
+                && band(0, hw)
+                && overlap_depth(sb, ob) <= TOLERANCE
+                && gap(sb, ob) <= SEAT_GAP
+                && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::Flank => {
+            // the subject's back: its local -y face, in the object's frame
+            let back = ob.local([
+                sb.c[0] - sb.ey[0] * sb.half[1],
+                sb.c[1] - sb.ey[1] * sb.half[1],
+            ]);
+            l[0].abs() > hw
+                && band(1, hd)
+                && gap(sb, ob) <= FLANK_GAP
+                && (back[1] + hd).abs() <= FLANK_BACK
+                && yaw_difference(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::Circle => {
+            let g = gap(sb, ob);
+            (CIRCLE_GAP.0..=CIRCLE_GAP.1).contains(&g)
+                && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) <= FACING_TOLERANCE,
     }
 }
 

@@ -1,5 +1,7 @@
-//! `layout.png`: a top-down drawing of a layout: the room outline, each footprint filled and
-//! labelled with its id, and an arrow for its facing. North (+y) is up.
+//! `layout.png`: a top-down drawing of a layout: the room outline, each footprint filled with
+//! an arrow for its facing, a numbered marker per object (moved off crowded spots with a leader
+//! line back to its object, so that no two markers overlap) and a legend beside the plan that
+//! names each number. North (+y) is up.
 use super::check::Box2;
 use super::spec::{Layout, PlacedBy, SceneType};
 use font8x8::UnicodeFonts;
@@ -40,6 +42,34 @@ impl Canvas {
                 for dx in -r..=r {
                     if ((dx * dx + dy * dy) as f64) <= (width / 2.0).powi(2) + 0.5 {
                         self.put(x as i64 + dx, y as i64 + dy, c);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A one-pixel line between pixel positions.
+    fn px_line(&mut self, a: [f64; 2], b: [f64; 2], c: Rgb<u8>) {
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        let steps = (len * 2.0).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let t = k as f64 / steps as f64;
+            let x = a[0] + (b[0] - a[0]) * t;
+            let y = a[1] + (b[1] - a[1]) * t;
+            self.put(x as i64, y as i64, c);
+        }
+    }
+
+    /// 8x8 text with its top-left corner at pixel (x0, y0).
+    fn px_text(&mut self, x0: i64, y0: i64, s: &str, c: Rgb<u8>) {
+        for (k, ch) in s.chars().enumerate() {
+            let Some(g) = font8x8::BASIC_FONTS.get(ch) else {
+                continue;
+            };
+            for (row, bits) in g.iter().enumerate() {
+                for col in 0..8 {
+                    if bits & (1 << col) != 0 {
+                        self.put(x0 + k as i64 * 8 + col, y0 + row as i64, c);
                     }
                 }
             }
@@ -100,15 +130,108 @@ fn colour(name: &str) -> Rgb<u8> {
     Rgb([f(0), f(8), f(16)])
 }
 
+/// The room-size caption.
+fn caption(l: &Layout) -> String {
+    format!("{:.1} m x {:.1} m", l.room.size[0], l.room.size[1])
+}
+
+/// Legend line height and column width, pixels.
+const LEGEND_ROW: i64 = 12;
+const LEGEND_COL: i64 = 180;
+
+/// Pixel size of the plan part and of the legend for `l`: (plan width, height, legend width).
+fn geometry(l: &Layout) -> (f64, u32, u32, u32) {
+    let [w, d, _] = l.room.size;
+    let scale = 900.0 / w.max(d);
+    let plan_w = (w * scale + 2.0 * MARGIN) as u32;
+    let h = ((d * scale + 2.0 * MARGIN) as u32).max(240);
+    let rows = ((h as i64 - 2 * MARGIN as i64) / LEGEND_ROW).max(1);
+    let cols = (l.objects.len() as i64 + rows - 1) / rows;
+    (scale, plan_w, h, (cols.max(1) * LEGEND_COL) as u32)
+}
+
+/// Where each object's numbered marker goes: pixel rectangles [x0, y0, x1, y1] (inclusive-
+/// exclusive), one per object in layout order, none overlapping another, all inside the plan
+/// area's margins; and whether each was moved off its object's centre.
+pub fn label_boxes(l: &Layout) -> Vec<([i64; 4], bool)> {
+    let [w, d, _] = l.room.size;
+    let (scale, plan_w, h, _) = geometry(l);
+    let to_px = |p: [f64; 3]| {
+        [
+            MARGIN + (p[0] + 0.5 * w) * scale,
+            h as f64 - MARGIN - (p[1] + 0.5 * d) * scale,
+        ]
+    };
+    // The room-size caption under the plan is taken.
+    let caption = caption(l);
+    let cx = (MARGIN + 0.5 * w * scale) as i64;
+    let cy = (h as f64 - MARGIN + 14.0) as i64;
+    let half = caption.len() as i64 * 4;
+    let mut placed: Vec<[i64; 4]> = vec![[cx - half, cy - 4, cx + half, cy + 4]];
+    let mut out = vec![];
+    // Smaller objects first: they have the least room around them.
+    let mut order: Vec<usize> = (0..l.objects.len()).collect();
+    order.sort_by(|&a, &b| {
+        let area = |i: usize| l.objects[i].size[0] * l.objects[i].size[1];
+        area(a).total_cmp(&area(b))
+    });
+    let mut result = vec![([0i64; 4], false); l.objects.len()];
+    for i in order {
+        let c = to_px(l.objects[i].position);
+        let text_w = (format!("{}", i + 1).len() as i64) * 8 + 4;
+        let rect_at = |x: f64, y: f64| {
+            let x0 = x.round() as i64 - text_w / 2;
+            let y0 = y.round() as i64 - 6;
+            [x0, y0, x0 + text_w, y0 + 12]
+        };
+        let free = |r: &[i64; 4], placed: &[[i64; 4]]| {
+            r[0] >= 2
+                && r[1] >= 2
+                && r[2] <= plan_w as i64 - 2
+                && r[3] <= h as i64 - 2
+                && placed
+                    .iter()
+                    .all(|p| r[2] < p[0] || p[2] < r[0] || r[3] < p[1] || p[3] < r[1])
+        };
+        let mut chosen = None;
+        'search: for ring in 0..60 {
+            let radius = ring as f64 * 7.0;
+            let steps = if ring == 0 { 1 } else { 8 + 2 * ring };
+            for k in 0..steps {
+                let a = k as f64 / steps as f64 * std::f64::consts::TAU;
+                let r = rect_at(c[0] + radius * a.cos(), c[1] - radius * a.sin());
+                if free(&r, &placed) {
+                    chosen = Some((r, ring > 0));
+                    break 'search;
+                }
+            }
+        }
+        // Nowhere free near the object (hundreds of objects): stack down the left margin.
+        let (r, moved) = chosen.unwrap_or_else(|| {
+            let mut y = 2;
+            loop {
+                let r = [2, y, 2 + text_w, y + 12];
+                if placed
+                    .iter()
+                    .all(|p| r[3] < p[1] || p[3] < r[1] || r[2] < p[0] || p[2] < r[0])
+                {
+                    break (r, true);
+                }
+                y += 13;
+            }
+        });
+        placed.push(r);
+        result[i] = (r, moved);
+    }
+    out.extend(result);
+    out
+}
+
 /// Draws `l` about 900 pixels across.
 pub fn draw_layout(l: &Layout) -> RgbImage {
     let [w, d, _] = l.room.size;
-    let scale = 900.0 / w.max(d);
-    let img = RgbImage::from_pixel(
-        (w * scale + 2.0 * MARGIN) as u32,
-        (d * scale + 2.0 * MARGIN) as u32,
-        Rgb([255, 255, 255]),
-    );
+    let (scale, plan_w, h, legend_w) = geometry(l);
+    let img = RgbImage::from_pixel(plan_w + legend_w, h, Rgb([255, 255, 255]));
     let mut cv = Canvas {
         img,
         scale,
@@ -154,16 +277,53 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
             cv.line(tip, back, dark, 2.0);
         }
     }
-    for &i in &order {
-        let o = &l.objects[i];
-        cv.text([o.position[0], o.position[1]], &o.id, Rgb([0, 0, 0]));
+    // Numbered markers (leader lines first, so markers draw over them), then the legend.
+    let boxes = label_boxes(l);
+    for (i, (r, moved)) in boxes.iter().enumerate() {
+        if *moved {
+            let o = &l.objects[i];
+            let c = cv.to_px([o.position[0], o.position[1]]);
+            let m = [0.5 * (r[0] + r[2]) as f64, 0.5 * (r[1] + r[3]) as f64];
+            cv.px_line(c, m, Rgb([90, 90, 90]));
+        }
+    }
+    for (i, (r, _)) in boxes.iter().enumerate() {
+        for y in r[1]..r[3] {
+            for x in r[0]..r[2] {
+                let edge = y == r[1] || y == r[3] - 1 || x == r[0] || x == r[2] - 1;
+                cv.put(
+                    x,
+                    y,
+                    if edge {
+                        Rgb([60, 60, 60])
+                    } else {
+                        Rgb([255, 255, 255])
+                    },
+                );
+            }
+        }
+        cv.px_text(r[0] + 2, r[1] + 2, &format!("{}", i + 1), Rgb([0, 0, 0]));
+    }
+    let rows = ((h as i64 - 2 * MARGIN as i64) / LEGEND_ROW).max(1);
+    for (i, o) in l.objects.iter().enumerate() {
+        let (col, row) = (i as i64 / rows, i as i64 % rows);
+        let x = plan_w as i64 + col * LEGEND_COL + 4;
+        let y = MARGIN as i64 + row * LEGEND_ROW;
+        let mut line = format!("{:>2} {}", i + 1, o.id);
+        line.truncate(((LEGEND_COL - 8) / 8) as usize);
+        let colour_box = colour(&o.category);
+        for yy in y..y + 8 {
+            for xx in x..x + 8 {
+                cv.put(xx, yy, colour_box);
+            }
+        }
+        cv.px_text(x + 12, y, &line, Rgb([0, 0, 0]));
     }
     let outline = Rgb([20, 20, 20]);
     let corners = [[-hw, -hd], [hw, -hd], [hw, hd], [-hw, hd]];
     for k in 0..4 {
         cv.line(corners[k], corners[(k + 1) % 4], outline, 4.0);
     }
-    let label = format!("{:.1} m x {:.1} m", w, d);
-    cv.text([0.0, -hd - 14.0 / scale], &label, outline);
+    cv.text([0.0, -hd - 14.0 / scale], &caption(l), outline);
     cv.img
 }

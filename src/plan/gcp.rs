@@ -14,6 +14,11 @@ use super::spec::{
     SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
+
+mod fit;
+mod poses;
+use fit::join_names;
+pub use fit::smallest_room;
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
 
 /// Layout search settings.
@@ -117,8 +122,23 @@ impl Problem {
         self.stacked.contains(&(a.min(b), a.max(b)))
     }
 
-    /// Candidate poses for instance `i` given the placed ones.
-    fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
+    /// Candidate poses for instance `i` given the placed ones: the poses its functional groups
+    /// suggest (tried first: a seat's slots at its table, a desk's place in its row), then all.
+    fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> (Vec<Pose>, Vec<Pose>) {
+        let mut group = vec![];
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            if subject {
+                if let Some(poses) = self.group_poses(i, rel, &pj, &self.boxed(j, &pj)) {
+                    group.extend(poses);
+                }
+            }
+        }
+        (group, self.all_candidates(i, placed))
+    }
+
+    /// Every candidate pose for instance `i`: anchor regions and around placed partners.
+    fn all_candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
         let [w, d, _] = self.room;
         let (hw, hd) = (0.5 * w, 0.5 * d);
         let s = self.inst[i].size;
@@ -329,7 +349,7 @@ impl Problem {
                     // stacked things line up with their partner
                     let dy = (p.yaw - pj.yaw).to_radians();
                     pose_bonus += dy.cos().abs();
-                } else if subject || rel == RelationKind::Opposite {
+                } else if (subject || rel == RelationKind::Opposite) && !is_group(rel) {
                     // chairs, tables, lamps turn toward what they relate to; OPPOSITE pairs
                     // face each other
                     pose_bonus += super::check::facing_error(&b, &bj).to_radians().cos();
@@ -341,13 +361,69 @@ impl Problem {
     }
 }
 
-/// Lays out `spec` (validated first). Deterministic for a given seed.
+/// The functional-group relations, which fix their subject's turn themselves.
+fn is_group(rel: RelationKind) -> bool {
+    matches!(
+        rel,
+        RelationKind::Around
+            | RelationKind::At
+            | RelationKind::Flank
+            | RelationKind::Circle
+            | RelationKind::Row
+    )
+}
+
+/// Lays out `spec` (validated first). Deterministic for a given seed. A spec with an object
+/// larger than its room, or whose objects cannot all be placed without interpenetrating, is
+/// refused with [`SpecError::DoesNotFit`] naming what does not fit and the smallest room (same
+/// proportions) that takes everything.
 pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError> {
     spec.validate()?;
     let inst = spec.instances();
     let room = spec
         .room
         .unwrap_or_else(|| choose_room(&inst, spec.scene_type));
+    let big: Vec<String> = spec
+        .objects
+        .iter()
+        .filter(|(_, o)| !super::capacity::fits(o.size, room.size))
+        .map(|(c, o)| format!("{c} ({} x {} x {} m)", o.size[0], o.size[1], o.size[2]))
+        .collect();
+    if !big.is_empty() {
+        let need = smallest_room(spec);
+        return Err(SpecError::DoesNotFit(format!(
+            "{} larger than the {} x {} x {} m room; the smallest room that takes everything is {} x {} x {} m",
+            join_names(&big, if big.len() == 1 { "is" } else { "are" }),
+            room.size[0], room.size[1], room.size[2], need.size[0], need.size[1], need.size[2]
+        )));
+    }
+    let l = layout_in(spec, room, opts);
+    let problems = super::check::validity_problems(&l, spec);
+    if !problems.is_empty() {
+        let mut ids: Vec<String> = vec![];
+        for o in &l.objects {
+            if o.placed_by == PlacedBy::Fallback
+                && problems.iter().any(|p| p.split(' ').any(|w| w == o.id))
+            {
+                ids.push(o.id.clone());
+            }
+        }
+        if ids.is_empty() {
+            ids = l.objects.iter().map(|o| o.id.clone()).take(3).collect();
+        }
+        let need = smallest_room(spec);
+        return Err(SpecError::DoesNotFit(format!(
+            "{} not fit in the {} x {} m room ({} overlapping or outside); the smallest room that takes everything is {} x {} x {} m",
+            join_names(&ids, if ids.len() == 1 { "does" } else { "do" }),
+            room.size[0], room.size[1], problems.len(), need.size[0], need.size[1], need.size[2]
+        )));
+    }
+    Ok(l)
+}
+
+/// The GCP search in `room`, without the fit checks.
+pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
+    let inst = spec.instances();
     let mut index = BTreeMap::new();
     for (k, i) in inst.iter().enumerate() {
         index.insert(i.id.clone(), k);
@@ -384,7 +460,7 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
             best = Some((q, l));
         }
     }
-    Ok(best.expect("at least one attempt").1)
+    best.expect("at least one attempt").1
 }
 
 /// Satisfied constraints minus a large penalty per fallback.
@@ -430,8 +506,13 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
             next.sort();
             next.dedup();
             // Ties broken by the key, then at random (restarts see different orders).
-            next.sort_by_key(|&j| (std::cmp::Reverse(key(j)), rng.gen::<u32>()));
-            for j in next {
+            // (One random draw per entry: a key drawn afresh at each comparison is no order.)
+            let mut keyed: Vec<_> = next
+                .into_iter()
+                .map(|j| (std::cmp::Reverse(key(j)), rng.gen::<u32>(), j))
+                .collect();
+            keyed.sort();
+            for (_, _, j) in keyed {
                 done[j] = true;
                 q.push_back(j);
             }
@@ -472,7 +553,7 @@ fn attempt_layout(
     let mut placed: Vec<Option<Pose>> = vec![None; n];
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
     for i in order(prob, rng) {
-        let cands = prob.candidates(i, &placed);
+        let (group, cands) = prob.candidates(i, &placed);
         let boxes: Vec<Option<(Box2, [f64; 4])>> = placed
             .iter()
             .enumerate()
@@ -484,12 +565,18 @@ fn attempt_layout(
             })
             .collect();
         let mut best: Option<(f64, Pose, bool)> = None;
-        for p in &cands {
-            let (valid, ok, total, score) =
-                prob.evaluate(i, p, &placed, &boxes, rng.gen::<f64>() * 3.0);
-            if valid && best.as_ref().is_none_or(|b| score > b.0) {
-                best = Some((score, *p, ok == total));
+        let mut search = |poses: &[Pose], best: &mut Option<(f64, Pose, bool)>| {
+            for p in poses {
+                let (valid, ok, total, score) =
+                    prob.evaluate(i, p, &placed, &boxes, rng.gen::<f64>() * 3.0);
+                if valid && best.as_ref().is_none_or(|b| score > b.0) {
+                    *best = Some((score, *p, ok == total));
+                }
             }
+        };
+        search(&group, &mut best);
+        if !best.as_ref().is_some_and(|b| b.2) {
+            search(&cands, &mut best);
         }
         let (pose, all_ok) = match best {
             Some((_, p, ok)) => (p, ok),

@@ -7,11 +7,11 @@
 //! key is sent only in the Authorization header: it is never printed or logged.
 use super::gcp::choose_room;
 use super::kb::{parse_anchor, parse_relation, KnowledgeBase};
-use super::offline::{parse_room_size, plan_offline};
+use super::offline::{parse_room_size, plan_offline, plan_prompt};
 use super::spec::{Anchor, ObjectSpec, Relation, Room, SceneSpec, SceneType, MAX_NUMBER};
 use regex::Regex;
 use serde_json::{json, Value};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::time::Duration;
 
 /// Where and how to ask.
@@ -423,13 +423,45 @@ pub fn plan_llm_strict(
         }
     }
     report.warnings.extend(warnings);
+    // The same functional groups and capacity as the offline planner: objects the text names
+    // (as the offline reading finds them) are never dropped, defaults are trimmed to the room.
+    let named: BTreeSet<String> = match plan_prompt(constraint) {
+        Ok(p) => {
+            for c in &p.named {
+                if !spec.objects.contains_key(c) {
+                    if let Some(o) = p.spec.objects.get(c) {
+                        report.warnings.push(format!(
+                            "the answer left out `{c}`, which the prompt names: added"
+                        ));
+                        spec.objects.insert(c.clone(), o.clone());
+                        for k in 1..=o.number {
+                            let id = format!("{c}{k}");
+                            let a = p.spec.anchors.get(&id).copied().unwrap_or(Anchor::Others);
+                            spec.anchors.insert(id, a);
+                        }
+                    }
+                }
+            }
+            p.named
+        }
+        Err(_) => BTreeSet::new(),
+    };
+    super::groups::apply(&mut spec, &BTreeSet::new());
+    let stated = parse_room_size(constraint);
     let chosen = choose_room(&spec.instances(), scene_type);
-    spec.room = Some(match parse_room_size(constraint) {
+    spec.room = Some(match stated {
         Some([w, d]) => Room {
             size: [w, d, chosen.size[2]],
         },
         None => chosen,
     });
+    let notes = super::capacity::fit(&mut spec, &named, stated.is_some()).map_err(|e| {
+        LlmError::Answer {
+            question: "objects",
+            msg: e.to_string(),
+        }
+    })?;
+    report.warnings.extend(notes);
     spec.validate().map_err(|e| LlmError::Answer {
         question: "objects",
         msg: e.to_string(),

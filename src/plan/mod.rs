@@ -1,9 +1,14 @@
 //! Scene planning: the SceneSpec / Layout contracts, their semantics, and the graph-based
 //! constraint placement. Pure host code: never imports `ash`.
+pub mod capacity;
 pub mod check;
+pub mod dialogue;
 pub mod draw;
 pub mod gcp;
+pub mod groups;
 pub mod kb;
+pub mod lang;
 pub mod llm;
 pub mod offline;
 pub mod spec;
+pub mod units;

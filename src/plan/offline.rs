@@ -1,16 +1,14 @@
-//! The offline planner: free text to a SceneSpec from the built-in knowledge base. It finds the
-//! scene type (and its synonyms), the objects the prompt names with their counts and adjectives,
-//! the room size, placement phrases, and style words carried into every description; the scene
-//! type's default furniture fills in the rest. An unknown scene type still gives a room with the
-//! objects the prompt names.
-use super::gcp::choose_room;
+//! The offline planner: free text to a SceneSpec from the built-in knowledge base. The text is
+//! read by `lang` (noun phrases, counts, negation, sizes, placement phrases); the scene type's
+//! default furniture fills in the rest, scaled to the counts the text gives ("a classroom with
+//! 12 desks" gets 12 chairs); functional groups (`groups`) relate seats, tables, beds and
+//! lamps; `capacity` trims default furniture to the room and refuses what cannot fit. A text in
+//! which nothing is recognised is an error, not a generic room.
+use super::capacity::{fit, room_for};
 use super::kb::{KnowledgeBase, ObjectKind};
-use super::spec::{
-    Anchor, ObjectSpec, Relation, RelationKind, Room, SceneSpec, SceneType, MAX_NUMBER,
-};
-use regex::Regex;
-use std::collections::BTreeMap;
-use std::sync::OnceLock;
+use super::lang::{self, Reading};
+use super::spec::{Anchor, ObjectSpec, Relation, Room, SceneSpec, SceneType, MAX_NUMBER};
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Style words carried into every description when the prompt uses them.
 const STYLES: &[&str] = &[
@@ -64,191 +62,9 @@ const STYLES: &[&str] = &[
     "festive",
 ];
 
-/// Words that are neither count nor adjective.
-const FILLER: &[&str] = &[
-    "a", "an", "the", "some", "of", "pair", "couple", "few", "several", "with", "and", "in", "on",
-    "at", "its", "their", "his", "her", "my", "our", "there", "is", "are", "has", "have", "lots",
-    "many", "plus", "also", "to", "for", "by", "from", "this", "that", "room", "one",
-];
-
-const NUMBERS: &[(&str, u32)] = &[
-    ("one", 1),
-    ("a", 1),
-    ("an", 1),
-    ("single", 1),
-    ("two", 2),
-    ("three", 3),
-    ("four", 4),
-    ("five", 5),
-    ("six", 6),
-    ("seven", 7),
-    ("eight", 8),
-    ("nine", 9),
-    ("ten", 10),
-    ("eleven", 11),
-    ("twelve", 12),
-    ("dozen", 12),
-    ("several", 3),
-    ("few", 3),
-    ("some", 2),
-    ("couple", 2),
-    ("pair", 2),
-    ("many", 4),
-    ("both", 2),
-];
-
-/// An object the prompt names.
-#[derive(Debug, Clone)]
-struct Mention {
-    start: usize,
-    end: usize,
-    category: String,
-    count: Option<u32>,
-    adjectives: Vec<String>,
-    /// "the sofa": a reference to an object named before, not a new one.
-    definite: bool,
-}
-
-fn plural(name: &str) -> Vec<String> {
-    let mut v = vec![format!("{name}s"), format!("{name}es")];
-    if let Some(stem) = name.strip_suffix('y') {
-        v.push(format!("{stem}ies"));
-    }
-    if let Some(stem) = name.strip_suffix('f') {
-        v.push(format!("{stem}ves"));
-    }
-    if let Some(stem) = name.strip_suffix("fe") {
-        v.push(format!("{stem}ves"));
-    }
-    v
-}
-
-/// Regex matching any object name or plural, longest first, with the name table.
-fn object_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, String>) {
-    static M: OnceLock<(Regex, BTreeMap<String, String>)> = OnceLock::new();
-    M.get_or_init(|| {
-        let mut table = BTreeMap::new();
-        for (name, o) in kb.names() {
-            table.insert(name.to_string(), o.category.clone());
-            for p in plural(name) {
-                table.entry(p).or_insert_with(|| o.category.clone());
-            }
-        }
-        (alternation(table.keys()), table)
-    })
-}
-
-/// Regex matching any scene name or synonym (longest first), with the scene index of each name.
-fn scene_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, usize>) {
-    static M: OnceLock<(Regex, BTreeMap<String, usize>)> = OnceLock::new();
-    M.get_or_init(|| {
-        let mut table = BTreeMap::new();
-        for (i, s) in kb.scenes.iter().enumerate() {
-            for name in std::iter::once(&s.name).chain(&s.synonyms) {
-                table.entry(name.clone()).or_insert(i);
-            }
-        }
-        (alternation(table.keys()), table)
-    })
-}
-
-/// Regex matching any style word.
-fn style_matcher() -> &'static Regex {
-    static M: OnceLock<Regex> = OnceLock::new();
-    M.get_or_init(|| alternation(STYLES.iter()))
-}
-
-/// `\b(?:a|b|...)\b` over `names`, longest first so that the longest name wins at a position.
-fn alternation<S: AsRef<str>>(names: impl Iterator<Item = S>) -> Regex {
-    let mut names: Vec<String> = names.map(|n| regex::escape(n.as_ref())).collect();
-    names.sort_by_key(|n| std::cmp::Reverse(n.len()));
-    re(&format!(r"\b(?:{})\b", names.join("|")))
-}
-
-fn re(pattern: &str) -> Regex {
-    Regex::new(pattern).expect("valid regex")
-}
-
-/// Room size stated in the prompt: "4m x 5m", "5 x 4 m", "5 by 4 metres", "20 square meters".
-pub fn parse_room_size(text: &str) -> Option<[f64; 2]> {
-    let t = text.to_lowercase();
-    let unit = r"(?:m|meters?|metres?)";
-    let dims = re(&format!(
-        r"(\d+(?:\.\d+)?)\s*{unit}?\s*(?:x|×|by|\*)\s*(\d+(?:\.\d+)?)\s*{unit}\b"
-    ));
-    if let Some(c) = dims.captures(&t) {
-        let w: f64 = c[1].parse().ok()?;
-        let d: f64 = c[2].parse().ok()?;
-        if w > 0.5 && d > 0.5 && w <= 500.0 && d <= 500.0 {
-            return Some([w, d]);
-        }
-    }
-    let area = re(r"(\d+(?:\.\d+)?)\s*(?:square\s*(?:meters?|metres?|m)|sq\.?\s*m|m2|m²)");
-    if let Some(c) = area.captures(&t) {
-        let a: f64 = c[1].parse().ok()?;
-        if a > 1.0 && a <= 250_000.0 {
-            let w = (a * 1.25).sqrt();
-            let r = |v: f64| (v * 10.0).round() / 10.0;
-            return Some([r(w), r(a / w)]);
-        }
-    }
-    None
-}
-
-fn find_mentions(kb: &KnowledgeBase, t: &str) -> Vec<Mention> {
-    let (re_obj, table) = object_matcher(kb);
-    let mut out = vec![];
-    for m in re_obj.find_iter(t) {
-        let category = table[m.as_str()].clone();
-        // Count and adjectives: up to five words before the noun, back to a clause boundary.
-        let before = &t[..m.start()];
-        let clause_start = before
-            .rfind([',', '.', ';', ':', '(', ')'])
-            .map(|i| i + 1)
-            .unwrap_or(0);
-        let prev_end = out.last().map(|p: &Mention| p.end).unwrap_or(0);
-        let from = clause_start.max(prev_end);
-        let words: Vec<&str> = t[from..m.start()].split_whitespace().collect();
-        let words = &words[words.len().saturating_sub(6)..];
-        // Only the words after the last joining word belong to this object.
-        let cut = words
-            .iter()
-            .rposition(|w| ["and", "with", "plus", "has", "have", "is", "are"].contains(w))
-            .map(|i| i + 1)
-            .unwrap_or(0);
-        let words = &words[cut..];
-        let definite = words
-            .last()
-            .is_some_and(|w| ["the", "its", "their", "that", "this"].contains(w));
-        let mut count = None;
-        let mut adjectives = vec![];
-        for w in words {
-            if let Ok(n) = w.parse::<u32>() {
-                count = Some(n);
-                adjectives.clear();
-            } else if let Some(&(_, n)) = NUMBERS.iter().find(|(k, _)| k == w) {
-                if count.is_none() || *w != "a" {
-                    count = Some(n);
-                }
-                adjectives.clear();
-            } else if !FILLER.contains(w) {
-                adjectives.push(w.to_string());
-            }
-        }
-        // A plural without a number means more than one.
-        if count.is_none() && kb.object(m.as_str()).is_none() {
-            count = Some(2);
-        }
-        out.push(Mention {
-            start: m.start(),
-            end: m.end(),
-            category,
-            count,
-            adjectives,
-            definite,
-        });
-    }
-    out
+/// The style word `w` is (or starts), if any.
+pub fn style_word(w: &str) -> Option<&'static str> {
+    STYLES.iter().copied().find(|s| *s == w)
 }
 
 fn article(s: &str) -> &'static str {
@@ -270,147 +86,372 @@ fn describe(o: &ObjectKind, adjectives: &[String], styles: &[String]) -> String 
     format!("A DSLR photo of {} {body}", article(&body))
 }
 
-/// Plans `prompt` offline. Never fails: an unknown scene gives a generic room with the objects
-/// named (or a few basic pieces of furniture when none are).
+/// Why a prompt could not be planned.
+#[derive(Debug, thiserror::Error)]
+pub enum PlanError {
+    #[error("nothing in \"{0}\" names a scene or an object the offline planner knows; describe it in English (e.g. \"a living room with a grey sofa\") or plan with a language model (--llm-url URL)")]
+    NothingRecognised(String),
+    #[error("\"{0}\" does not look like English, the only language the offline planner reads; write it in English or plan with a language model (--llm-url URL)")]
+    NotEnglish(String),
+    #[error(transparent)]
+    Spec(#[from] super::spec::SpecError),
+}
+
+/// A plan and what the planner had to say about it.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    pub spec: SceneSpec,
+    /// Categories the text names (never dropped).
+    pub named: BTreeSet<String>,
+    /// One line each: clamped counts, unknown objects, trimmed default furniture.
+    pub notes: Vec<String>,
+}
+
+/// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
+pub fn parse_room_size(text: &str) -> Option<[f64; 2]> {
+    let r = lang::read(KnowledgeBase::builtin(), text);
+    r.room
+        .map(|[w, d]| [super::units::cm(w), super::units::cm(d)])
+}
+
+/// Plans `prompt` offline; a prompt with nothing recognisable in it gives a generic room (use
+/// [`plan_prompt`] to get the error instead).
 pub fn plan_offline(prompt: &str) -> SceneSpec {
+    match plan_prompt(prompt) {
+        Ok(p) => p.spec,
+        Err(_) => generic_room(prompt),
+    }
+}
+
+/// A small room with basic furniture, for callers that need a spec whatever the text.
+fn generic_room(prompt: &str) -> SceneSpec {
     let kb = KnowledgeBase::builtin();
-    let t = prompt.to_lowercase().replace(['\n', '\t'], " ");
-    // Scene type: the longest scene name or synonym in the text.
-    let (scene_re, scene_of) = scene_matcher(kb);
-    let scene = scene_re
-        .find_iter(&t)
-        .max_by_key(|m| m.as_str().len())
-        .map(|m| &kb.scenes[scene_of[m.as_str()]]);
-    let outdoor_words =
-        re(r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park)\b");
-    let scene_type = scene
-        .map(|s| s.scene_type)
-        .unwrap_or(if outdoor_words.is_match(&t) {
+    let mut objects = BTreeMap::new();
+    let mut anchors = BTreeMap::new();
+    for (c, n) in [("dining table", 1), ("dining chair", 2), ("bookshelf", 1)] {
+        let o = kb
+            .object(c)
+            .expect("basic categories are in the knowledge base");
+        objects.insert(
+            c.to_string(),
+            ObjectSpec {
+                number: n,
+                size: o.size,
+                description: describe(o, &[], &[]),
+            },
+        );
+        for k in 1..=n {
+            anchors.insert(format!("{c}{k}"), o.anchor);
+        }
+    }
+    let mut spec = SceneSpec {
+        scene_type: SceneType::Indoor,
+        scene_text: prompt.trim().to_string(),
+        room: None,
+        objects,
+        anchors,
+        relations: vec![],
+    };
+    super::groups::apply(&mut spec, &BTreeSet::new());
+    spec.room = Some(super::gcp::choose_room(
+        &spec.instances(),
+        SceneType::Indoor,
+    ));
+    spec
+}
+
+/// The scene's default category that the text's noun `m` means: "desks" in a classroom are
+/// school desks, "chairs" in a cafe are cafe chairs (the default sharing the head noun, the
+/// most numerous first).
+fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::Mention) -> String {
+    let Some(s) = scene else {
+        return m.category.clone();
+    };
+    if !m.known || s.objects.iter().any(|(c, _)| *c == m.category) {
+        return m.category.clone();
+    }
+    let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+    // Only furniture that scenes specialise ("desks" in a classroom); a lamp stays a lamp.
+    const SPECIALISED: &[&str] = &[
+        "desk", "chair", "table", "stool", "bench", "shelf", "bed", "sofa", "couch", "counter",
+        "seat", "cabinet", "sink",
+    ];
+    if !SPECIALISED.contains(&head.as_str()) {
+        return m.category.clone();
+    }
+    let head_cat = kb.object(&head).map(|o| o.category.clone());
+    // Only a bare head noun ("desks", "a chair") is re-read; "an office chair" stays.
+    let bare = m.text.split(' ').count() == 1 || head_cat.as_deref() == Some(m.category.as_str());
+    if !bare {
+        return m.category.clone();
+    }
+    s.objects
+        .iter()
+        .filter(|(c, _)| {
+            c.rsplit(' ').next() == Some(head.as_str())
+                || kb.object(&head).is_some_and(|o| o.category == **c)
+        })
+        .max_by_key(|(_, n)| *n)
+        .map(|(c, _)| c.clone())
+        .unwrap_or_else(|| m.category.clone())
+}
+
+/// Size of an object the knowledge base lacks: from its head noun's category when it has one,
+/// else from a size class named by its words.
+fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
+    let words: Vec<&str> = name.split(' ').collect();
+    for k in (0..words.len()).rev() {
+        if let Some(o) = kb.object(words[k]) {
+            return (o.size, format!("sized as a {}", o.category));
+        }
+    }
+    let has = |ws: &[&str]| words.iter().any(|w| ws.contains(w));
+    let (size, class) = if has(&["small", "tiny", "little", "mini", "miniature"]) {
+        ([0.35, 0.35, 0.4], "small")
+    } else if has(&[
+        "large", "big", "huge", "giant", "enormous", "massive", "tall",
+    ]) {
+        ([1.5, 1.0, 1.6], "large")
+    } else {
+        ([0.7, 0.6, 0.9], "medium")
+    };
+    (
+        size,
+        format!("sized as a {class} object {}", fmt_size(size)),
+    )
+}
+
+fn fmt_size(s: [f64; 3]) -> String {
+    format!("{} x {} x {} m", s[0], s[1], s[2])
+}
+
+/// Plans `prompt` offline, or says why it cannot.
+pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
+    let kb = KnowledgeBase::builtin();
+    let r: Reading = lang::read(kb, prompt);
+    if r.not_english && r.scene.is_none() {
+        return Err(PlanError::NotEnglish(prompt.trim().to_string()));
+    }
+    if r.scene.is_none() && r.mentions.is_empty() {
+        return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
+    }
+    let scene = r.scene.map(|(i, _, _)| &kb.scenes[i]);
+    let scene_type = scene.map(|s| s.scene_type).unwrap_or_else(|| {
+        let outdoor = regex::Regex::new(
+            r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park|meadow|lawn)\b",
+        )
+        .expect("valid regex");
+        if outdoor.is_match(&r.text) {
             SceneType::Outdoor
         } else {
             SceneType::Indoor
-        });
-    let mentions = find_mentions(kb, &t);
-    // Style words describe the whole scene unless they are one object's adjectives.
-    let styles: Vec<String> = {
-        let local = |w: &str| mentions.iter().any(|m| m.adjectives.iter().any(|a| a == w));
-        let mut v: Vec<String> = vec![];
-        for m in style_matcher().find_iter(&t) {
-            let w = m.as_str().to_string();
-            if !local(&w) && !v.contains(&w) {
-                v.push(w);
-            }
         }
-        for m in re(r"\b[a-z]+-(?:inspired|style|styled|themed)\b").find_iter(&t) {
-            if !local(m.as_str()) {
-                v.push(m.as_str().to_string());
-            }
-        }
-        v
-    };
+    });
+    let mut notes: Vec<String> = vec![];
 
-    // Objects: the scene's defaults, then what the prompt names (its counts and words win).
+    // Defaults of the scene, then what the text names.
     let mut counts: BTreeMap<String, u32> = BTreeMap::new();
-    let mut adjectives: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    let mut anchors: BTreeMap<String, Anchor> = BTreeMap::new();
     if let Some(s) = scene {
         for (c, n) in &s.objects {
             counts.insert(c.clone(), *n);
         }
     }
-    for m in &mentions {
-        if m.definite && m.count.is_none() && counts.contains_key(&m.category) {
+    let defaults = counts.clone();
+    let mut named: BTreeSet<String> = BTreeSet::new();
+    let mut negated: BTreeSet<String> = BTreeSet::new();
+    let mut adjectives: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut sizes: BTreeMap<String, [f64; 3]> = BTreeMap::new();
+    let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
+    let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
+    let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    for (m, cat) in r.mentions.iter().zip(&cats) {
+        if m.negated {
+            negated.insert(cat.clone());
             continue;
         }
-        let n = m.count.unwrap_or(1).clamp(1, MAX_NUMBER);
-        counts.insert(m.category.clone(), n);
+        if !m.known && !unknown.contains_key(cat) {
+            let (size, how) = unknown_size(kb, cat);
+            notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
+            unknown.insert(cat.clone(), size);
+        }
+        named.insert(cat.clone());
         if !m.adjectives.is_empty() {
-            adjectives.insert(m.category.clone(), m.adjectives.clone());
+            adjectives.insert(cat.clone(), m.adjectives.clone());
+        }
+        let base = kb.object(cat).map(|o| o.size).or(unknown.get(cat).copied());
+        if let Some(mut size) = base {
+            if m.size != [0.0; 3] {
+                // A stated width keeps the shape's proportions in depth only when both are given.
+                for (v, stated) in size.iter_mut().zip(m.size) {
+                    if stated > 0.0 {
+                        *v = stated;
+                    }
+                }
+                sizes.insert(cat.clone(), size);
+            }
+        }
+        match m.count {
+            Some(n) => {
+                *explicit.entry(cat.clone()).or_default() += n;
+            }
+            None if m.definite => {
+                counts.entry(cat.clone()).or_insert(1);
+            }
+            None if m.plural => {
+                if !explicit.contains_key(cat) {
+                    let d = defaults.get(cat).copied().unwrap_or(0).max(2);
+                    counts.insert(cat.clone(), d);
+                }
+            }
+            None => {
+                *explicit.entry(cat.clone()).or_default() += 1;
+            }
         }
     }
+    for (c, n) in &explicit {
+        counts.insert(c.clone(), *n);
+    }
+    // Negation removes the category, defaults included.
+    for c in &negated {
+        counts.remove(c);
+        named.remove(c);
+    }
+
+    // Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" 24
+    // seats, "20 chairs" the tables they need.
+    let probe = SceneSpec {
+        scene_type,
+        scene_text: String::new(),
+        room: None,
+        objects: counts
+            .iter()
+            .map(|(c, n)| {
+                let size = sizes
+                    .get(c)
+                    .copied()
+                    .or_else(|| kb.object(c).map(|o| o.size))
+                    .or_else(|| unknown.get(c).copied())
+                    .unwrap_or([0.7, 0.6, 0.9]);
+                (
+                    c.clone(),
+                    ObjectSpec {
+                        number: *n,
+                        size,
+                        description: String::new(),
+                    },
+                )
+            })
+            .collect(),
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
+    let cats_now: Vec<String> = counts.keys().cloned().collect();
+    for seat in &cats_now {
+        let Some((_, table)) = super::groups::group_of(&probe, seat) else {
+            continue;
+        };
+        let Some(per) = super::groups::seats_per(&probe, seat, &table) else {
+            continue;
+        };
+        let seat_named = explicit.contains_key(seat);
+        let table_named = explicit.contains_key(&table);
+        // "for 24 students" seats the scene's main seats (its most numerous seat category).
+        let main_seat = cats_now
+            .iter()
+            .filter(|c| {
+                use super::spec::RelationKind::{Around, At, Circle};
+                super::groups::group_of(&probe, c)
+                    .is_some_and(|(k, _)| matches!(k, Around | At | Circle))
+            })
+            .max_by_key(|c| {
+                (
+                    defaults.get(*c).copied().unwrap_or(0),
+                    counts.get(*c).copied().unwrap_or(0),
+                )
+            });
+        if let Some(p) = r.people.filter(|_| main_seat == Some(seat)) {
+            if !seat_named {
+                counts.insert(seat.clone(), p);
+            }
+            if !table_named {
+                counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+            }
+            continue;
+        }
+        if table_named && !seat_named && per < 12 {
+            // Seats a table the way the scene's defaults do, within its capacity.
+            let (ds, dt) = (defaults.get(seat).copied(), defaults.get(&table).copied());
+            let each = match (ds, dt) {
+                (Some(s), Some(t)) if t > 0 => s.div_ceil(t).min(per),
+                _ => per.min(4),
+            };
+            counts.insert(seat.clone(), counts[&table] * each);
+        } else if seat_named && !table_named && per < 12 {
+            let need = counts[seat].div_ceil(per.max(1));
+            let t = counts.get(&table).copied().unwrap_or(1);
+            if need > t {
+                counts.insert(table.clone(), need);
+            }
+        }
+    }
+    if r.people.is_some()
+        && !counts
+            .keys()
+            .any(|c| super::groups::group_of(&probe, c).is_some())
+    {
+        notes.push("\"for N people\": this scene has no seats to scale; counts kept".into());
+    }
+
+    // Clamp counts (a warning names each).
+    for (c, n) in counts.iter_mut() {
+        if *n > MAX_NUMBER {
+            notes.push(format!(
+                "{n} {c}: more than {MAX_NUMBER} of one category is not planned; using {MAX_NUMBER}"
+            ));
+            *n = MAX_NUMBER;
+        }
+    }
+    counts.retain(|_, n| *n > 0);
     if counts.is_empty() {
-        for (c, n) in [
-            ("dining table", 1),
-            ("dining chair", 2),
-            ("bookshelf", 1),
-            ("potted plant", 1),
-        ] {
-            counts.insert(c.to_string(), n);
-        }
+        return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
     }
+
+    // Style words describe the whole scene unless they are one object's adjectives.
+    let styles: Vec<String> = {
+        let local = |w: &str| adjectives.values().any(|a| a.iter().any(|x| x == w));
+        let mut v: Vec<String> = vec![];
+        for w in r.text.split(|c: char| !c.is_alphanumeric() && c != '-') {
+            let is_style = style_word(w).is_some()
+                || ["-inspired", "-style", "-styled", "-themed"]
+                    .iter()
+                    .any(|s| w.ends_with(s) && w.len() > s.len());
+            if is_style && !local(w) && !v.iter().any(|x| x == w) {
+                v.push(w.to_string());
+            }
+        }
+        if r.text.contains("art deco") && !v.iter().any(|x| x == "art deco") {
+            v.push("art deco".into());
+        }
+        v
+    };
+
+    // Anchors: the category's, the scene's, then the text's.
+    let mut anchors: BTreeMap<String, Anchor> = BTreeMap::new();
     for c in counts.keys() {
-        let o = kb
-            .object(c)
-            .expect("categories come from the knowledge base");
-        anchors.insert(c.clone(), o.anchor);
+        let a = kb.object(c).map(|o| o.anchor).unwrap_or(Anchor::Others);
+        anchors.insert(c.clone(), a);
     }
     if let Some(s) = scene {
         for (c, a) in &s.anchors {
-            anchors.insert(c.clone(), *a);
-        }
-    }
-
-    // Placement phrases: anchors and relations, subject = the nearest object named before.
-    let mut relations: Vec<(String, RelationKind, String)> = vec![];
-    let anchor_phrases = [
-        (
-            r"\b(?:centered|centred|in the (?:center|centre|middle))\b",
-            Anchor::Center,
-        ),
-        (
-            r"\b(?:against|along|by|on) (?:one|a|the|each) wall\b|\bagainst the wall\b|\bwall-mounted\b",
-            Anchor::Side,
-        ),
-        (r"\bin (?:the|a|one|each) corner\b", Anchor::Corner),
-    ];
-    let nearest_before = |pos: usize| -> Option<&Mention> {
-        let clause_start = t[..pos].rfind(['.', ';']).map(|i| i + 1).unwrap_or(0);
-        mentions
-            .iter()
-            .rev()
-            .find(|m| m.end <= pos && m.start >= clause_start)
-    };
-    for (p, a) in anchor_phrases {
-        for m in re(p).find_iter(&t) {
-            if let Some(subj) = nearest_before(m.start()) {
-                anchors.insert(subj.category.clone(), a);
+            if counts.contains_key(c) {
+                anchors.insert(c.clone(), *a);
             }
         }
     }
-    let rel_phrases = [
-        (r"\bin front of\b", RelationKind::Front),
-        (
-            r"\b(?:next to|beside|alongside|near|close to)\b",
-            RelationKind::Next,
-        ),
-        (
-            r"\b(?:opposite(?: to| of)?|across from|facing)\b",
-            RelationKind::Opposite,
-        ),
-        (r"\b(?:behind|in back of)\b", RelationKind::Behind),
-        (r"\b(?:on top of|on|atop|upon)\b", RelationKind::Over),
-        (
-            r"\b(?:under|beneath|below|underneath)\b",
-            RelationKind::Under,
-        ),
-        (r"\b(?:to the left of|left of)\b", RelationKind::Left),
-        (r"\b(?:to the right of|right of)\b", RelationKind::Right),
-    ];
-    for (p, rel) in rel_phrases {
-        for m in re(p).find_iter(&t) {
-            let Some(subj) = nearest_before(m.start()) else {
-                continue;
-            };
-            // The object: the first object named right after the phrase (within a few words).
-            let Some(obj) = mentions
-                .iter()
-                .find(|o| o.start >= m.end() && o.start <= m.end() + 24)
-            else {
-                continue;
-            };
-            if subj.category != obj.category {
-                relations.push((subj.category.clone(), rel, obj.category.clone()));
-            }
+    for &(mi, a) in &r.anchors {
+        let c = &cats[mi];
+        if counts.contains_key(c) {
+            anchors.insert(c.clone(), a);
         }
     }
     if scene_type == SceneType::Outdoor {
@@ -421,80 +462,170 @@ pub fn plan_offline(prompt: &str) -> SceneSpec {
         }
     }
 
-    // Build the spec: instances, anchors, relations (the prompt's replace a default between the
-    // same pair), descriptions.
-    let mut spec_objects = BTreeMap::new();
+    // The spec.
+    let mut objects = BTreeMap::new();
     for (c, n) in &counts {
-        let o = kb.object(c).expect("known");
-        spec_objects.insert(
-            c.clone(),
-            ObjectSpec {
-                number: *n,
-                size: o.size,
-                description: describe(
+        let (size, description) = match kb.object(c) {
+            Some(o) => (
+                sizes.get(c).copied().unwrap_or(o.size),
+                describe(
                     o,
                     adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]),
                     &styles,
                 ),
+            ),
+            None => {
+                let size = sizes
+                    .get(c)
+                    .copied()
+                    .or_else(|| unknown.get(c).copied())
+                    .unwrap_or([0.7, 0.6, 0.9]);
+                let mut words = styles.clone();
+                words.extend(adjectives.get(c).cloned().unwrap_or_default());
+                words.push(c.clone());
+                let body = words.join(" ");
+                (size, format!("A DSLR photo of {} {body}", article(&body)))
+            }
+        };
+        objects.insert(
+            c.clone(),
+            ObjectSpec {
+                number: *n,
+                size,
+                description,
             },
         );
     }
-    let mut spec_anchors = BTreeMap::new();
+    let mut spec = SceneSpec {
+        scene_type,
+        scene_text: prompt.trim().to_string(),
+        room: None,
+        objects,
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
     for (c, n) in &counts {
         for k in 1..=*n {
-            spec_anchors.insert(format!("{c}{k}"), anchors[c]);
+            spec.anchors.insert(format!("{c}{k}"), anchors[c]);
         }
     }
-    let mut spec_relations: Vec<Relation> = vec![];
-    let mut pairs = std::collections::BTreeSet::new();
-    let mut push = |s: String, rel: RelationKind, o: String, out: &mut Vec<Relation>| {
+
+    // Relations: the text's (every instance of a plural subject), then the scene's defaults,
+    // then the functional groups (the text's own stay).
+    let mut keep: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut pairs: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut push = |spec: &mut SceneSpec, s: String, rel, o: String, user: bool| {
+        if s == o {
+            return;
+        }
         let key = (s.clone().min(o.clone()), s.clone().max(o.clone()));
         if pairs.insert(key) {
-            out.push(Relation {
+            if user {
+                keep.insert((s.clone(), o.clone()));
+            }
+            spec.relations.push(Relation {
                 subject: s,
                 relation: rel,
                 object: o,
             });
         }
     };
-    for (s, rel, o) in &relations {
-        push(format!("{s}1"), *rel, format!("{o}1"), &mut spec_relations);
+    for &(si, rel, oi) in &r.relations {
+        let (sc, oc) = (&cats[si], &cats[oi]);
+        let (Some(&ns), Some(_)) = (counts.get(sc), counts.get(oc)) else {
+            continue;
+        };
+        // A seat "around" or "at" its table is the group's relation, whatever the phrase.
+        let rel = match super::groups::group_of(&spec, sc) {
+            Some((g, t))
+                if t == *oc
+                    && matches!(
+                        rel,
+                        super::spec::RelationKind::Around
+                            | super::spec::RelationKind::At
+                            | super::spec::RelationKind::Next
+                            | super::spec::RelationKind::Flank
+                    ) =>
+            {
+                g
+            }
+            _ => rel,
+        };
+        let every = r.mentions[si].plural || r.mentions[si].count.unwrap_or(1) > 1;
+        let n = if every { ns } else { 1 };
+        if rel == super::spec::RelationKind::Around
+            || rel == super::spec::RelationKind::Flank
+            || rel == super::spec::RelationKind::At
+        {
+            // groups spread them over the object's instances
+            if super::groups::group_of(&spec, sc).is_some_and(|(_, t)| t == *oc) {
+                continue;
+            }
+        }
+        for k in 1..=n {
+            push(&mut spec, format!("{sc}{k}"), rel, format!("{oc}1"), true);
+        }
     }
     if let Some(sc) = scene {
-        for r in &sc.relations {
-            let (Some(&ns), Some(&no)) = (counts.get(&r.subject), counts.get(&r.object)) else {
+        for rel in &sc.relations {
+            let (Some(&ns), Some(&no)) = (counts.get(&rel.subject), counts.get(&rel.object)) else {
                 continue;
             };
-            let n = if r.every { ns } else { 1 };
+            let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
-                let ko = if r.every && no == ns { k } else { 1 };
+                let ko = if rel.every && no == ns { k } else { 1 };
                 push(
-                    format!("{}{k}", r.subject),
-                    r.relation,
-                    format!("{}{ko}", r.object),
-                    &mut spec_relations,
+                    &mut spec,
+                    format!("{}{k}", rel.subject),
+                    rel.relation,
+                    format!("{}{ko}", rel.object),
+                    false,
                 );
             }
         }
     }
-    let mut spec = SceneSpec {
-        scene_type,
-        scene_text: prompt.trim().to_string(),
-        room: None,
-        objects: spec_objects,
-        anchors: spec_anchors,
-        relations: spec_relations,
-    };
-    let height = match scene_type {
+    super::groups::apply(&mut spec, &keep);
+
+    // Room: as stated, else chosen to fit (scaled by "small" / "large").
+    let height: f64 = match scene_type {
         SceneType::Indoor => 2.8,
         SceneType::Outdoor => 10.0,
     };
-    let chosen = choose_room(&spec.instances(), scene_type);
-    spec.room = Some(match parse_room_size(&t) {
-        Some([w, d]) => Room {
-            size: [w, d, chosen.size[2].max(height)],
-        },
-        None => chosen,
-    });
-    spec
+    let stated = r.room;
+    let room = match stated {
+        Some([w, d]) => {
+            let tallest = spec
+                .instances()
+                .iter()
+                .map(|i| i.size[2])
+                .fold(0.0, f64::max);
+            let h = r.room_height.unwrap_or(height.max(tallest + 0.3));
+            Room {
+                size: [
+                    super::units::cm(w),
+                    super::units::cm(d),
+                    super::units::cm(h),
+                ],
+            }
+        }
+        None => {
+            let mut room = room_for(&spec.instances(), scene_type);
+            if r.scale != 1.0 {
+                let s = r.scale.sqrt();
+                let min_side = if scene_type == SceneType::Indoor {
+                    2.5
+                } else {
+                    6.0
+                };
+                for k in 0..2 {
+                    room.size[k] = ((room.size[k] * s).max(min_side) * 10.0).ceil() / 10.0;
+                }
+            }
+            room
+        }
+    };
+    spec.room = Some(room);
+    let fitted = fit(&mut spec, &named, stated.is_some() || r.scale < 1.0)?;
+    notes.extend(fitted);
+    Ok(Plan { spec, named, notes })
 }

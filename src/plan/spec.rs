@@ -34,10 +34,20 @@ pub enum RelationKind {
     Under,
     Next,
     Opposite,
+    /// A seat at a table, on one of its sides, facing it (functional group).
+    Around,
+    /// A seat at the front of a desk or counter, facing it (functional group).
+    At,
+    /// Flush beside the head end of the object, turned as it is (nightstands by a bed).
+    Flank,
+    /// Seats gathered round a fire: 0.6–1.5 m away, facing it.
+    Circle,
+    /// In front of the object, turned the same way (desks whose users face a board).
+    Row,
 }
 
 impl RelationKind {
-    pub const ALL: [RelationKind; 8] = [
+    pub const ALL: [RelationKind; 13] = [
         RelationKind::Left,
         RelationKind::Right,
         RelationKind::Front,
@@ -46,7 +56,44 @@ impl RelationKind {
         RelationKind::Under,
         RelationKind::Next,
         RelationKind::Opposite,
+        RelationKind::Around,
+        RelationKind::At,
+        RelationKind::Flank,
+        RelationKind::Circle,
+        RelationKind::Row,
     ];
+
+    /// The name as spec.json writes it (`OPPOSITE`).
+    pub fn name(self) -> &'static str {
+        use RelationKind::*;
+        match self {
+            Left => "LEFT",
+            Right => "RIGHT",
+            Front => "FRONT",
+            Behind => "BEHIND",
+            Over => "OVER",
+            Under => "UNDER",
+            Next => "NEXT",
+            Opposite => "OPPOSITE",
+            Around => "AROUND",
+            At => "AT",
+            Flank => "FLANK",
+            Circle => "CIRCLE",
+            Row => "ROW",
+        }
+    }
+}
+
+impl std::fmt::Display for RelationKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::fmt::Display for Relation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} {} {}", self.subject, self.relation, self.object)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize, PartialOrd, Ord)]
@@ -132,6 +179,9 @@ pub enum SpecError {
     File { path: String, msg: String },
     #[error("invalid scene spec: {0}")]
     Invalid(String),
+    /// Objects that do not fit the room, with the smallest room that would take them.
+    #[error("{0}")]
+    DoesNotFit(String),
 }
 
 /// Most instances of one category a spec may ask for.
@@ -208,7 +258,7 @@ impl SceneSpec {
             for name in [&r.subject, &r.object] {
                 if !ids.contains(name) {
                     return bad(format!(
-                        "relation {} {:?} {}: unknown instance `{name}`",
+                        "relation {} {} {}: unknown instance `{name}`",
                         r.subject, r.relation, r.object
                     ));
                 }
@@ -243,6 +293,36 @@ impl SceneSpec {
 }
 
 impl Layout {
+    /// One line for the user: objects, room, relations satisfied, fallback placements, with
+    /// singular and plural right ("1 fallback placement", "no relations to satisfy").
+    pub fn summary(&self, spec: &SceneSpec) -> String {
+        let n = spec.relations.len();
+        let relations = match n {
+            0 => "no relations to satisfy".to_string(),
+            1 => format!(
+                "{} of 1 relation satisfied",
+                1 - self.unsatisfied.len().min(1)
+            ),
+            _ => format!(
+                "{} of {n} relations satisfied",
+                n - self.unsatisfied.len().min(n)
+            ),
+        };
+        let fallback = self
+            .objects
+            .iter()
+            .filter(|o| o.placed_by == PlacedBy::Fallback)
+            .count();
+        let plural =
+            |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
+        let [w, d, h] = self.room.size;
+        format!(
+            "{} in a {w:.1} x {d:.1} x {h:.1} m room, {relations}, {}",
+            plural(self.objects.len(), "object", "objects"),
+            plural(fallback, "fallback placement", "fallback placements")
+        )
+    }
+
     /// Writes layout.json atomically.
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
         let text = serde_json::to_string_pretty(self).expect("layout serialises");

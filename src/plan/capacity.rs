@@ -1,0 +1,191 @@
+//! Capacity: how much furniture a room takes. Default furniture (what the scene type adds on
+//! its own) is trimmed until the floor footprint is within [`TRIM_OCCUPANCY`] of the floor and
+//! every piece fits the room; objects the user named are never dropped: when one cannot fit,
+//! planning stops with an error naming it and the smallest room that would take it.
+use super::gcp::{choose_room, smallest_room};
+use super::spec::{Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
+use std::collections::BTreeSet;
+
+/// Largest share of the floor that footprints may cover once default furniture is trimmed:
+/// Holodeck's floor capacity ratio (0.4) plus a little, as named pieces may exceed it.
+pub const TRIM_OCCUPANCY: f64 = 0.45;
+
+/// Objects that decorate rather than furnish: trimmed first.
+const DECOR: &[&str] = &[
+    "potted plant",
+    "floor lamp",
+    "table lamp",
+    "rug",
+    "vase",
+    "statue",
+    "globe",
+    "magazine rack",
+    "umbrella stand",
+    "trash can",
+    "planter",
+    "candle stand",
+    "painting",
+    "full length mirror",
+    "speaker",
+    "pedestal",
+    "cardboard box",
+    "laundry basket",
+    "bean bag",
+    "ottoman",
+    "side table",
+];
+
+/// Room to use round each footprint when sizing a room for furniture in use (a chair pulled
+/// out, a walk past a desk), metres added to width and depth.
+pub const USE_MARGIN: f64 = 0.2;
+
+/// A room that fits the instances in use: [`choose_room`] on footprints grown by
+/// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate).
+pub fn room_for(instances: &[Instance], scene: SceneType) -> Room {
+    let grown: Vec<Instance> = instances
+        .iter()
+        .map(|i| {
+            let mut g = i.clone();
+            g.size[0] += USE_MARGIN;
+            g.size[1] += USE_MARGIN;
+            g
+        })
+        .collect();
+    let mut room = choose_room(&grown, scene);
+    room.size[2] = choose_room(instances, scene).size[2];
+    room
+}
+
+/// Floor area the spec's instances cover: things standing on others and flat things (rugs,
+/// mats) excepted.
+pub fn floor_area(spec: &SceneSpec) -> f64 {
+    let on_top: BTreeSet<&str> = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Over)
+        .map(|r| r.subject.as_str())
+        .collect();
+    spec.instances()
+        .iter()
+        .filter(|i| !on_top.contains(i.id.as_str()) && i.size[2] >= 0.05)
+        .map(|i| i.size[0] * i.size[1])
+        .sum()
+}
+
+/// Whether a box of `size` fits in `room` in some quarter turn.
+pub fn fits(size: [f64; 3], room: [f64; 3]) -> bool {
+    let (a, b) = (size[0].max(size[1]), size[0].min(size[1]));
+    let (w, d) = (room[0].max(room[1]), room[0].min(room[1]));
+    a <= w + 1e-9 && b <= d + 1e-9 && size[2] <= room[2] + 1e-9
+}
+
+/// Removes the last instance of `cat` (or the category), with its anchors and relations.
+fn remove_one(spec: &mut SceneSpec, cat: &str) {
+    let Some(o) = spec.objects.get_mut(cat) else {
+        return;
+    };
+    let id = format!("{cat}{}", o.number);
+    if o.number > 1 {
+        o.number -= 1;
+    } else {
+        spec.objects.remove(cat);
+    }
+    spec.anchors.remove(&id);
+    spec.relations.retain(|r| r.subject != id && r.object != id);
+}
+
+/// Trims default furniture of `spec` (its room set) to fit; `trim` also to the occupancy (a
+/// room the user stated or asked small). Returns one note per trimmed category; an error when
+/// a named object is larger than the room.
+pub fn fit(
+    spec: &mut SceneSpec,
+    named: &BTreeSet<String>,
+    trim: bool,
+) -> Result<Vec<String>, SpecError> {
+    let Some(room) = spec.room else {
+        return Ok(vec![]);
+    };
+    let mut notes = vec![];
+    let mut dropped: std::collections::BTreeMap<String, u32> = Default::default();
+    // Larger than the room: defaults go, named objects are refused.
+    let too_big: Vec<String> = spec
+        .objects
+        .iter()
+        .filter(|(_, o)| !fits(o.size, room.size))
+        .map(|(c, _)| c.clone())
+        .collect();
+    for c in too_big {
+        if named.contains(&c) {
+            let s = spec.objects[&c].size;
+            let need = smallest_room(spec);
+            return Err(SpecError::DoesNotFit(format!(
+                "{c} ({} x {} x {} m) does not fit in the {} x {} x {} m room; the smallest room that takes what the prompt names is {} x {} x {} m",
+                s[0], s[1], s[2], room.size[0], room.size[1], room.size[2],
+                need.size[0], need.size[1], need.size[2]
+            )));
+        }
+        let n = spec.objects[&c].number;
+        for _ in 0..n {
+            remove_one(spec, &c);
+        }
+        *dropped.entry(c).or_default() += n;
+    }
+    if trim {
+        let floor = room.size[0] * room.size[1];
+        let limit = match spec.scene_type {
+            SceneType::Indoor => TRIM_OCCUPANCY,
+            SceneType::Outdoor => 0.3,
+        };
+        while floor_area(spec) > limit * floor {
+            // The default category to thin: decoration first, then furniture in no group,
+            // then the one whose instances cover the most floor; multiples lose one at a time.
+            let base = |id: &str| {
+                id.trim_end_matches(|c: char| c.is_ascii_digit())
+                    .to_string()
+            };
+            let grouped: BTreeSet<String> = spec
+                .relations
+                .iter()
+                .flat_map(|r| [base(&r.subject), base(&r.object)])
+                .collect();
+            let pick = spec
+                .objects
+                .iter()
+                .filter(|(c, _)| !named.contains(*c))
+                .max_by(|(ca, a), (cb, b)| {
+                    let key = |c: &str, o: &super::spec::ObjectSpec| {
+                        let decor = DECOR.contains(&c) as u8;
+                        let loose = !grouped.contains(c) as u8;
+                        (
+                            decor,
+                            loose,
+                            (o.number > 1) as u8,
+                            o.number as f64 * o.size[0] * o.size[1],
+                        )
+                    };
+                    let (ka, kb) = (key(ca, a), key(cb, b));
+                    ka.0.cmp(&kb.0)
+                        .then(ka.1.cmp(&kb.1))
+                        .then(ka.2.cmp(&kb.2))
+                        .then(ka.3.total_cmp(&kb.3))
+                })
+                .map(|(c, _)| c.clone());
+            let Some(c) = pick else { break };
+            remove_one(spec, &c);
+            *dropped.entry(c).or_default() += 1;
+        }
+    }
+    for (c, n) in dropped {
+        notes.push(format!(
+            "{n} default {c} left out to fit the {} x {} m room",
+            room.size[0], room.size[1]
+        ));
+    }
+    if spec.objects.is_empty() {
+        return Err(SpecError::DoesNotFit(format!(
+            "nothing fits in the {} x {} x {} m room",
+            room.size[0], room.size[1], room.size[2]
+        )));
+    }
+    Ok(notes)
+}

@@ -1,0 +1,120 @@
+//! Where the functional groups put a subject relative to its placed partner: a seat's slots
+//! round a table or along a counter, a nightstand's place beside the bed's head, a ring round a
+//! fire, rows before a board.
+use super::{yaw_facing, Pose, Problem};
+use crate::plan::check::Box2;
+use crate::plan::spec::RelationKind;
+
+impl Problem {
+    /// Poses of a functional-group subject `i` (a seat at a table, a nightstand by a bed, ...)
+    /// relative to its placed partner; `None` for the plain relations.
+    pub(super) fn group_poses(
+        &self,
+        i: usize,
+        rel: RelationKind,
+        pj: &Pose,
+        bj: &Box2,
+    ) -> Option<Vec<Pose>> {
+        let s = self.inst[i].size;
+        let [hw, hd] = bj.half;
+        let at = |lx: f64, ly: f64| {
+            [
+                bj.c[0] + lx * bj.ex[0] + ly * bj.ey[0],
+                bj.c[1] + lx * bj.ex[1] + ly * bj.ey[1],
+            ]
+        };
+        let mut out = vec![];
+        // Evenly spaced slots along a side of length `len` for things `width` wide.
+        let slots = |len: f64, width: f64| -> Vec<f64> {
+            let k = ((len + 0.1) / (width + 0.1)).floor().max(1.0) as usize;
+            (0..k)
+                .map(|m| -0.5 * len + len * (m as f64 + 0.5) / k as f64)
+                .collect()
+        };
+        match rel {
+            RelationKind::Around => {
+                // The partner's four sides, each with as many seats as its length takes.
+                for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, -90.0), (3, 90.0)] {
+                    let (len, half_across) = if side < 2 {
+                        (2.0 * hw, hd)
+                    } else {
+                        (2.0 * hd, hw)
+                    };
+                    for g in [0.05, 0.15] {
+                        let off = half_across + g + 0.5 * s[1];
+                        for t in slots(len, s[0]) {
+                            let c = match side {
+                                0 => at(t, off),
+                                1 => at(t, -off),
+                                2 => at(off, t),
+                                _ => at(-off, t),
+                            };
+                            out.push(Pose {
+                                c,
+                                yaw: pj.yaw + yaw_off,
+                                z: 0.0,
+                            });
+                        }
+                    }
+                }
+            }
+            RelationKind::At => {
+                // A row along the partner's front, facing it.
+                for g in [0.02, 0.1, 0.2] {
+                    for t in slots(2.0 * hw, s[0]) {
+                        out.push(Pose {
+                            c: at(t, hd + g + 0.5 * s[1]),
+                            yaw: pj.yaw + 180.0,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            RelationKind::Flank => {
+                // Left and right of the head end, backs in line, turned as the partner.
+                for side in [-1.0, 1.0] {
+                    for g in [0.02, 0.08] {
+                        out.push(Pose {
+                            c: at(side * (hw + g + 0.5 * s[0]), -hd + 0.5 * s[1]),
+                            yaw: pj.yaw,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            RelationKind::Circle => {
+                // A ring 0.8-1.1 m out, each seat facing the centre.
+                let ext = 0.5 * s[0].max(s[1]);
+                for g in [0.8, 1.1] {
+                    let r = hw.max(hd) + g + ext;
+                    for k in 0..16 {
+                        let a = k as f64 * std::f64::consts::TAU / 16.0;
+                        let c = [pj.c[0] + r * a.cos(), pj.c[1] + r * a.sin()];
+                        let yaw = yaw_facing([pj.c[0] - c[0], pj.c[1] - c[1]]);
+                        out.push(Pose { c, yaw, z: 0.0 });
+                    }
+                }
+            }
+            RelationKind::Row => {
+                // A lattice of rows in front of the partner, turned as it is.
+                let pitch_x = s[0] + 0.5;
+                let pitch_y = s[1] + 1.1;
+                let [w, d, _] = self.room;
+                let reach = w.max(d);
+                let n_x = (reach / pitch_x).ceil() as i64;
+                for row in 0..((reach / pitch_y).ceil() as i64) {
+                    let ly = hd + 1.0 + 0.5 * s[1] + row as f64 * pitch_y;
+                    for k in -n_x..=n_x {
+                        out.push(Pose {
+                            c: at(k as f64 * pitch_x, ly),
+                            yaw: pj.yaw,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            _ => return None,
+        }
+        Some(out)
+    }
+}

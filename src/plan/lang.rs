@@ -1,0 +1,628 @@
+//! Reading a scene request: noun phrases (a category with its own adjectives, never a verb or a
+//! function word), counts (digits, number words, "a pair of", "a dozen"; 0 and "no" mean none),
+//! negation ("no", "without", "except", carried over "or"), sizes with units (see `units`),
+//! relation phrases ("faces", "around", "on either side of", "at the foot of", ...), anchor
+//! phrases ("against the wall", "in the corner") and "for N students". Pure text processing:
+//! what the words mean for a scene is decided by the offline planner.
+use super::kb::KnowledgeBase;
+use super::spec::{Anchor, RelationKind};
+use super::units::{find_dims, find_lengths, Dims};
+
+mod placements;
+use placements::read_placements;
+use regex::Regex;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// Words that never describe an object: articles, pronouns, prepositions, conjunctions,
+/// auxiliaries, quantifiers and the words of placement phrases.
+fn function() -> &'static [&'static str] {
+    word_list("function")
+}
+
+/// Verbs people use in requests; never part of a description.
+fn verbs() -> &'static [&'static str] {
+    word_list("verbs")
+}
+
+/// Nouns that name no object to place (parts of the room, people, the mood).
+fn not_objects() -> &'static [&'static str] {
+    word_list("not_objects")
+}
+
+/// Number words.
+const NUMBERS: &[(&str, u32)] = &[
+    ("zero", 0),
+    ("no", 0),
+    ("one", 1),
+    ("a", 1),
+    ("an", 1),
+    ("single", 1),
+    ("two", 2),
+    ("three", 3),
+    ("four", 4),
+    ("five", 5),
+    ("six", 6),
+    ("seven", 7),
+    ("eight", 8),
+    ("nine", 9),
+    ("ten", 10),
+    ("eleven", 11),
+    ("twelve", 12),
+    ("thirteen", 13),
+    ("fourteen", 14),
+    ("fifteen", 15),
+    ("sixteen", 16),
+    ("seventeen", 17),
+    ("eighteen", 18),
+    ("nineteen", 19),
+    ("twenty", 20),
+    ("thirty", 30),
+    ("forty", 40),
+    ("fifty", 50),
+    ("sixty", 60),
+    ("dozen", 12),
+    ("both", 2),
+    ("couple", 2),
+    ("pair", 2),
+    ("several", 3),
+    ("few", 3),
+    ("some", 2),
+    ("many", 6),
+];
+
+/// Words that switch negation on for the noun phrase after them.
+const NEGATORS: &[&str] = &[
+    "no",
+    "without",
+    "except",
+    "excluding",
+    "minus",
+    "zero",
+    "not",
+];
+
+/// English words that almost every request uses; a long text with none of them is not English.
+fn english() -> &'static [&'static str] {
+    word_list("english")
+}
+
+/// A word list of `kb/words.txt`.
+fn word_list(name: &str) -> &'static [&'static str] {
+    static LISTS: OnceLock<BTreeMap<&'static str, Vec<&'static str>>> = OnceLock::new();
+    let lists = LISTS.get_or_init(|| {
+        include_str!("kb/words.txt")
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .filter_map(|l| l.split_once(':'))
+            .map(|(k, v)| (k.trim(), v.split_whitespace().collect()))
+            .collect()
+    });
+    lists.get(name).map(Vec::as_slice).unwrap_or(&[])
+}
+
+pub fn is_function_word(w: &str) -> bool {
+    function().contains(&w)
+}
+
+pub fn is_verb(w: &str) -> bool {
+    verbs().contains(&w)
+}
+
+/// A word that can describe an object: letters (with hyphens or apostrophes inside), not a
+/// function word, verb, number or adverb.
+pub fn is_adjective(w: &str) -> bool {
+    !w.is_empty()
+        && w.chars().next().is_some_and(|c| c.is_alphabetic())
+        && w.chars()
+            .all(|c| c.is_alphabetic() || c == '-' || c == '\'')
+        && !is_function_word(w)
+        && !is_verb(w)
+        && !NUMBERS.iter().any(|(k, _)| *k == w)
+        && !(w.ends_with("ly") && w.len() > 4 && w != "holy" && w != "curly")
+}
+
+/// An object the text names.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mention {
+    pub start: usize,
+    pub end: usize,
+    /// The knowledge-base category, or the phrase itself for an unknown object.
+    pub category: String,
+    /// False for an unknown object (not in the knowledge base).
+    pub known: bool,
+    /// The matched words ("couches").
+    pub text: String,
+    pub count: Option<u32>,
+    pub plural: bool,
+    pub adjectives: Vec<String>,
+    /// "the sofa": a reference to an object named before.
+    pub definite: bool,
+    pub negated: bool,
+    /// Width, depth, height stated for it (metres; zero where not stated).
+    pub size: [f64; 3],
+}
+
+/// What a request says.
+#[derive(Debug, Clone, Default)]
+pub struct Reading {
+    /// Lower-case normalised text the spans refer to.
+    pub text: String,
+    /// Scene index into the knowledge base and the span of its name.
+    pub scene: Option<(usize, usize, usize)>,
+    pub mentions: Vec<Mention>,
+    /// Room floor [W, D] and height, metres.
+    pub room: Option<[f64; 2]>,
+    pub room_height: Option<f64>,
+    /// (subject mention, relation, object mention) indices into `mentions`.
+    pub relations: Vec<(usize, RelationKind, usize)>,
+    /// Anchors the text gives (mention index).
+    pub anchors: Vec<(usize, Anchor)>,
+    /// "for 24 students".
+    pub people: Option<u32>,
+    /// "small" / "large" said of the scene.
+    pub scale: f64,
+    /// Nothing in the text looks like English.
+    pub not_english: bool,
+}
+
+fn re(p: &str) -> Regex {
+    Regex::new(p).expect("valid regex")
+}
+
+/// Lower case, typographic quotes and primes made plain, whitespace single.
+pub fn normalise(text: &str) -> String {
+    text.to_lowercase()
+        .replace(['’', '‘', '`'], "'")
+        .replace(['“', '”'], "\"")
+        .replace('×', " x ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+pub fn plurals(name: &str) -> Vec<String> {
+    let mut v = vec![format!("{name}s"), format!("{name}es")];
+    if let Some(stem) = name.strip_suffix('y') {
+        v.push(format!("{stem}ies"));
+    }
+    if let Some(stem) = name.strip_suffix("fe") {
+        v.push(format!("{stem}ves"));
+    } else if let Some(stem) = name.strip_suffix('f') {
+        v.push(format!("{stem}ves"));
+    }
+    if let Some(stem) = name.strip_suffix("man") {
+        v.push(format!("{stem}men"));
+    }
+    if let Some(stem) = name.strip_suffix("ch") {
+        v.push(format!("{stem}ches"));
+    }
+    v
+}
+
+/// The singular of a plural English noun (best effort, for unknown nouns).
+pub fn singular(w: &str) -> String {
+    for (pl, sg) in [
+        ("ies", "y"),
+        ("ves", "f"),
+        ("ches", "ch"),
+        ("shes", "sh"),
+        ("sses", "ss"),
+        ("xes", "x"),
+        ("men", "man"),
+    ] {
+        if let Some(stem) = w.strip_suffix(pl) {
+            if stem.len() >= 2 {
+                return format!("{stem}{sg}");
+            }
+        }
+    }
+    if w.ends_with('s') && !w.ends_with("ss") && !w.ends_with("us") && w.len() > 3 {
+        return w[..w.len() - 1].to_string();
+    }
+    w.to_string()
+}
+
+/// `\b(?:a|b|...)\b` over `names`, longest first so that the longest name wins at a position.
+pub fn alternation<S: AsRef<str>>(names: impl Iterator<Item = S>) -> Regex {
+    let mut names: Vec<String> = names.map(|n| regex::escape(n.as_ref())).collect();
+    names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+    re(&format!(r"\b(?:{})\b", names.join("|")))
+}
+
+/// A regex over names and what each name means: (category, is plural).
+type NameMatcher = (Regex, BTreeMap<String, (String, bool)>);
+
+/// Object names (categories, synonyms and their plurals) to (category, is plural).
+fn object_matcher(kb: &KnowledgeBase) -> &'static NameMatcher {
+    static M: OnceLock<NameMatcher> = OnceLock::new();
+    M.get_or_init(|| {
+        let mut table = BTreeMap::new();
+        for (name, o) in kb.names() {
+            table.insert(name.to_string(), (o.category.clone(), false));
+        }
+        for (name, o) in kb.names() {
+            for p in plurals(name) {
+                table.entry(p).or_insert_with(|| (o.category.clone(), true));
+            }
+        }
+        (alternation(table.keys()), table)
+    })
+}
+
+/// Scene names and synonyms to the scene index.
+fn scene_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, usize>) {
+    static M: OnceLock<(Regex, BTreeMap<String, usize>)> = OnceLock::new();
+    M.get_or_init(|| {
+        let mut table = BTreeMap::new();
+        for (i, s) in kb.scenes.iter().enumerate() {
+            for name in std::iter::once(&s.name).chain(&s.synonyms) {
+                table.entry(name.clone()).or_insert(i);
+                for p in plurals(name) {
+                    table.entry(p).or_insert(i);
+                }
+            }
+        }
+        (alternation(table.keys()), table)
+    })
+}
+
+/// Words of `t[from..to]` with their byte offsets.
+fn words_in(t: &str, from: usize, to: usize) -> Vec<(usize, &str)> {
+    let mut out = vec![];
+    let s = &t[from..to];
+    let mut i = 0;
+    for w in s.split(|c: char| c.is_whitespace()) {
+        if !w.is_empty() {
+            let pos = from + i;
+            // punctuation is its own token
+            let core = w.trim_matches(|c: char| ",.;:!?()[]{}".contains(c));
+            let lead = w.len()
+                - w.trim_start_matches(|c: char| ",.;:!?()[]{}".contains(c))
+                    .len();
+            if w.starts_with(|c: char| ",.;:!?()".contains(c)) {
+                out.push((pos, ","));
+            }
+            if !core.is_empty() {
+                out.push((pos + lead, core));
+            }
+            if w.ends_with(|c: char| ",.;:!?()".contains(c)) && !core.is_empty() {
+                out.push((pos + w.len() - 1, ","));
+            }
+        }
+        i += w.len() + 1;
+    }
+    out
+}
+
+fn number_of(w: &str) -> Option<u32> {
+    if let Ok(n) = w.parse::<u32>() {
+        return Some(n);
+    }
+    NUMBERS.iter().find(|(k, _)| *k == w).map(|&(_, n)| n)
+}
+
+/// Reads `text`.
+pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
+    let t = normalise(text);
+    let mut r = Reading {
+        text: t.clone(),
+        scale: 1.0,
+        ..Default::default()
+    };
+    // Spans already explained (sizes, scene name), so that their words are neither counts
+    // nor adjectives.
+    let mut masked: Vec<(usize, usize)> = vec![];
+    let dims: Vec<Dims> = find_dims(&t);
+
+    // Scene: the earliest scene name (the longest at that position) that is not part of a
+    // longer object name ("office" in "an office chair").
+    let (scene_re, scene_of) = scene_matcher(kb);
+    let (obj_re0, _) = object_matcher(kb);
+    let objects: Vec<(usize, usize)> = obj_re0
+        .find_iter(&t)
+        .map(|m| (m.start(), m.end()))
+        .collect();
+    for m in scene_re.find_iter(&t) {
+        let inside_object = objects
+            .iter()
+            .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
+        if !inside_object {
+            r.scene = Some((scene_of[m.as_str()], m.start(), m.end()));
+            masked.push((m.start(), m.end()));
+            break;
+        }
+    }
+
+    // Objects; two names of one category in a row are one object ("a sectional sofa").
+    let (obj_re, table) = object_matcher(kb);
+    let mut raw: Vec<(usize, usize, String, bool)> = vec![];
+    for m in obj_re.find_iter(&t) {
+        if r.scene
+            .is_some_and(|(_, s, e)| m.start() < e && s < m.end())
+        {
+            continue;
+        }
+        let (cat, plural) = table[m.as_str()].clone();
+        if let Some(last) = raw.last_mut() {
+            if last.2 == cat && t[last.1..m.start()].trim().is_empty() {
+                last.1 = m.end();
+                last.3 = plural;
+                continue;
+            }
+        }
+        raw.push((m.start(), m.end(), cat, plural));
+    }
+    // Unknown objects: an indefinite noun phrase ("a harp", "two easels") whose head noun the
+    // knowledge base lacks.
+    let all = words_in(&t, 0, t.len());
+    let inside = |p: usize, spans: &[(usize, usize)]| spans.iter().any(|&(s, e)| p >= s && p < e);
+    let mut k = 0;
+    while k < all.len() {
+        let (pos, w) = all[k];
+        let det = number_of(w).is_some() && !["no", "zero", "both"].contains(&w)
+            || ["another", "some"].contains(&w);
+        if !det || inside(pos, &masked) || dims.iter().any(|d| pos >= d.start && pos < d.end) {
+            k += 1;
+            continue;
+        }
+        // Words after the determiner up to a function word, verb or punctuation.
+        let mut j = k + 1;
+        while j < all.len()
+            && is_adjective(all[j].1)
+            && !inside(all[j].0, &masked)
+            && !raw.iter().any(|o| all[j].0 >= o.0 && all[j].0 < o.1)
+        {
+            j += 1;
+        }
+        // A run cut short by a known object or the scene's name is their description.
+        let known_next =
+            j < all.len() && (raw.iter().any(|o| o.0 == all[j].0) || inside(all[j].0, &masked));
+        if j > k + 1 && !known_next {
+            let head = all[j - 1].1;
+            let ok = !head.ends_with("'s")
+                && !head.ends_with('\'')
+                && !not_objects().contains(&head)
+                && !not_objects().contains(&singular(head).as_str())
+                && super::offline::style_word(head).is_none()
+                && head.len() > 2;
+            if ok {
+                let start = all[k + 1].0;
+                let end = all[j - 1].0 + head.len();
+                let plural = singular(head) != head;
+                raw.push((start, end, String::new(), plural));
+            }
+        }
+        k = j.max(k + 1);
+    }
+    raw.sort_by_key(|o| o.0);
+
+    let mut prev_end = 0usize;
+    for (idx, (start, end, cat, plural)) in raw.iter().cloned().enumerate() {
+        // Walk back from the noun: adjectives, then a count or determiner, then negation.
+        let before = words_in(&t, prev_end, start);
+        let mut adjectives: Vec<String> = vec![];
+        let mut b = before.len();
+        while b > 0 {
+            let (pos, w) = before[b - 1];
+            if inside(pos, &masked) || dims.iter().any(|d| pos >= d.start && pos < d.end) {
+                break;
+            }
+            if is_adjective(w) {
+                adjectives.insert(0, w.to_string());
+                b -= 1;
+            } else {
+                break;
+            }
+        }
+        // A stated size right before the noun (or its adjectives): "a 2.4 m table", "a 3 x 1 m rug".
+        let mut size = [0.0; 3];
+        let np_start = if b > 0 { before[b - 1].0 } else { start };
+        for d in &dims {
+            if d.end <= start && d.end + 24 >= np_start && d.start >= prev_end && d.area.is_none() {
+                let between = &t[d.end..np_start.max(d.end)];
+                if between
+                    .split_whitespace()
+                    .all(|w| is_adjective(w) || w == "long" || w == "wide")
+                {
+                    for (k, v) in d.values.iter().enumerate().take(3) {
+                        size[k] = *v;
+                    }
+                    masked.push((d.start, d.end));
+                }
+            }
+        }
+        let lengths = find_lengths(&t[..start]);
+        if size == [0.0; 3] {
+            if let Some(&(ls, le, v)) = lengths.last() {
+                let between: Vec<&str> = t[le..start].split_whitespace().collect();
+                if ls >= prev_end
+                    && between.len() <= 3
+                    && between.iter().all(|w| {
+                        is_adjective(w)
+                            || is_verb(w)
+                            || ["long", "wide", "tall", "high", "across"].contains(w)
+                    })
+                    && !dims.iter().any(|d| ls >= d.start && ls < d.end)
+                {
+                    if between.iter().any(|w| *w == "tall" || *w == "high") {
+                        size[2] = v;
+                    } else {
+                        size[0] = v;
+                    }
+                    masked.push((ls, le));
+                    adjectives.retain(|a| {
+                        !["long", "wide", "tall", "high", "across"].contains(&a.as_str())
+                    });
+                }
+            }
+        }
+        let mut count = None;
+        let mut definite = false;
+        let mut negated = false;
+        let stop: Vec<&str> = before[..b].iter().map(|x| x.1).collect();
+        let last = stop.last().copied();
+        let prev2 = if stop.len() >= 2 {
+            Some(stop[stop.len() - 2])
+        } else {
+            None
+        };
+        let prev3 = if stop.len() >= 3 {
+            Some(stop[stop.len() - 3])
+        } else {
+            None
+        };
+        match last {
+            Some(w)
+                if [
+                    "the", "its", "their", "this", "that", "these", "those", "my", "our", "your",
+                    "his", "her",
+                ]
+                .contains(&w) =>
+            {
+                definite = true;
+                if prev2.is_some_and(|p| NEGATORS.contains(&p)) {
+                    negated = true;
+                }
+            }
+            Some("of") => {
+                // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
+                if let Some(n) = prev2.and_then(number_of) {
+                    count = Some(n);
+                    if let Some(m) = prev3.and_then(number_of) {
+                        if m > 1
+                            && ["dozen", "pair", "couple", "sets", "set"]
+                                .contains(&prev2.unwrap_or(""))
+                        {
+                            count = Some(m * n.max(1));
+                        }
+                    }
+                } else if prev2.is_some_and(|p| ["sets", "set", "rows", "row"].contains(&p)) {
+                    count = prev3.and_then(number_of);
+                } else if prev2.is_some_and(|p| ["lots", "plenty", "lot"].contains(&p)) {
+                    count = Some(6);
+                }
+                if prev3.is_some_and(|p| NEGATORS.contains(&p)) {
+                    negated = true;
+                }
+            }
+            Some(w) => {
+                if let Some(n) = number_of(w) {
+                    count = Some(n);
+                    if n == 0 {
+                        negated = true;
+                    }
+                    // "a dozen", "a couple"
+                    if ["dozen", "couple", "pair"].contains(&w) {
+                        count = Some(n);
+                    }
+                    if (w == "a" || w == "an" || w == "any")
+                        && prev2.is_some_and(|p| NEGATORS.contains(&p))
+                    {
+                        negated = true;
+                    }
+                    if prev2.is_some_and(|p| NEGATORS.contains(&p)) && w != "a" && w != "an" {
+                        // "without two chairs" is odd; treat as none
+                        negated = true;
+                    }
+                } else if w == "any" || w == "more" {
+                    negated = prev2.is_some_and(|p| NEGATORS.contains(&p) || p == "n't");
+                } else if NEGATORS.contains(&w) {
+                    negated = true;
+                }
+            }
+            None => {}
+        }
+        if !negated && idx > 0 {
+            // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated one
+            let prev_neg = r.mentions.last().is_some_and(|p| p.negated);
+            let only_connectors = stop
+                .iter()
+                .all(|w| ["or", "nor", ",", "a", "an", "any", "the"].contains(w));
+            if prev_neg && only_connectors && !stop.is_empty() {
+                negated = true;
+            }
+        }
+        if negated {
+            count = Some(0);
+        }
+        let head_text = t[start..end].to_string();
+        let (category, known) = if cat.is_empty() {
+            // The head noun names the unknown object; the words before it describe it.
+            let mut words: Vec<&str> = head_text.split(' ').collect();
+            let head = singular(words.pop().unwrap_or(""));
+            adjectives.extend(words.iter().map(|w| w.to_string()));
+            (head, false)
+        } else {
+            (cat, true)
+        };
+        r.mentions.push(Mention {
+            start,
+            end,
+            category,
+            known,
+            text: head_text,
+            count,
+            plural,
+            adjectives,
+            definite,
+            negated,
+            size,
+        });
+        prev_end = end;
+    }
+
+    // Room size: the first stated dims not used for an object; an area otherwise.
+    for d in &dims {
+        if masked.iter().any(|&(s, e)| s == d.start && e == d.end) {
+            continue;
+        }
+        if let Some(a) = d.area {
+            if r.room.is_none() && a > 1.0 {
+                r.room = Some(super::units::floor_from_area(a));
+            }
+        } else if r.room.is_none() && d.values.len() >= 2 {
+            r.room = Some([d.values[0], d.values[1]]);
+            if let Some(&h) = d.values.get(2) {
+                r.room_height = Some(h);
+            }
+        }
+    }
+
+    // "for 24 students", "for eight people"
+    let people = re(
+        r"\bfor (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)",
+    );
+    for c in people.captures_iter(&t) {
+        let w = &c[1];
+        if ![
+            "a", "an", "no", "some", "many", "few", "several", "both", "couple", "pair", "one",
+        ]
+        .contains(&w)
+        {
+            if let Some(n) = number_of(w) {
+                r.people = Some(n);
+            }
+        }
+    }
+    if let Some((_, s, _)) = r.scene {
+        let pre = &t[..s];
+        if re(r"\b(?:small|tiny|compact|little|cramped|narrow)\s*(?:[a-z'-]+\s+)?$").is_match(pre) {
+            r.scale = 0.75;
+        } else if re(r"\b(?:large|big|huge|spacious|grand|vast|open)\s*(?:[a-z'-]+\s+)?$")
+            .is_match(pre)
+        {
+            r.scale = 1.35;
+        }
+    }
+
+    read_placements(&mut r);
+
+    let words: Vec<&str> = t
+        .split(|c: char| !c.is_alphanumeric() && c != '\'')
+        .filter(|w| !w.is_empty())
+        .collect();
+    let english = words.iter().filter(|w| english().contains(w)).count();
+    r.not_english = words.len() >= 3 && english == 0;
+    r
+}
