@@ -1,14 +1,136 @@
 //! Small shared helpers.
-use std::path::Path;
+use std::io::Write;
+use std::path::{Path, PathBuf};
 
-/// Writes a file through a temporary sibling and a rename, so a crash never leaves half a file.
+/// Writes `bytes` to `path` so that a crash or a full disk never leaves half a file:
+///
+/// - a regular file (or a new path) is written through a temporary sibling `<name>.tmp` renamed
+///   into place; on failure the temporary file is removed;
+/// - a symbolic link is followed, and the file it points to is replaced the same way (the link
+///   stays a link);
+/// - anything else that exists (a device such as `/dev/stdout` or `/dev/null`, a pipe) is written
+///   through directly, never replaced; a directory is refused.
+///
+/// Errors name the path.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let tmp = path.with_extension(format!(
-        "{}.tmp",
-        path.extension().and_then(|e| e.to_str()).unwrap_or("")
-    ));
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path)
+    let named = |e: std::io::Error, p: &Path| {
+        std::io::Error::new(e.kind(), format!("{}: {e}", p.display()))
+    };
+    if is_special(path) {
+        let mut f = std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(|e| named(e, path))?;
+        return f
+            .write_all(bytes)
+            .and_then(|()| f.flush())
+            .map_err(|e| named(e, path));
+    }
+    let target = resolve_links(path).map_err(|e| named(e, path))?;
+    if target.is_dir() {
+        return Err(named(
+            std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a directory"),
+            path,
+        ));
+    }
+    let mut tmp = target.as_os_str().to_owned();
+    tmp.push(".tmp");
+    let tmp = PathBuf::from(tmp);
+    let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, &target));
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(named(e, &target));
+    }
+    Ok(())
+}
+
+/// True when `path` exists and is not a regular file, directory or link to one: a device, a pipe,
+/// a socket, or anything under `/dev` or `/proc` (whose links, such as `/dev/stdout`, name
+/// descriptors rather than files).
+pub fn is_special(path: &Path) -> bool {
+    if path.starts_with("/dev") || path.starts_with("/proc") {
+        return path.exists();
+    }
+    match std::fs::metadata(path) {
+        Ok(m) => !m.is_file() && !m.is_dir(),
+        Err(_) => false,
+    }
+}
+
+/// `path` with symbolic links followed (a dangling link gives the path it points to).
+fn resolve_links(path: &Path) -> std::io::Result<PathBuf> {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let to = std::fs::read_link(&p)?;
+                p = match p.parent() {
+                    Some(dir) if to.is_relative() => dir.join(to),
+                    _ => to,
+                };
+            }
+            _ => return Ok(p),
+        }
+    }
+    Err(std::io::Error::other("too many levels of symbolic links"))
+}
+
+/// What a file's first bytes look like, as a phrase for error messages ("is a JSON object with
+/// keys objects, room, ..." or "is a PNG image"), so that a file of the wrong kind is named.
+pub fn describe_bytes(head: &[u8]) -> String {
+    let head = &head[..head.len().min(4096)];
+    let text = String::from_utf8_lossy(head);
+    let t = text.trim_start_matches('\u{feff}').trim_start();
+    if head.is_empty() {
+        return "is empty".into();
+    }
+    if head.starts_with(b"\x89PNG") {
+        return "is a PNG image".into();
+    }
+    if head.starts_with(&[0xff, 0xd8, 0xff]) {
+        return "is a JPEG image".into();
+    }
+    if head.starts_with(b"glTF") {
+        return "is a binary glTF (.glb)".into();
+    }
+    if head.starts_with(&[0x1f, 0x8b]) {
+        return "is gzip-compressed (an .spz?)".into();
+    }
+    if t.starts_with("ply") {
+        return "is a PLY file".into();
+    }
+    if t.starts_with('{') || t.starts_with('[') {
+        return describe_json(t);
+    }
+    if head.iter().take(512).any(|&b| b == 0) {
+        return "is binary data".into();
+    }
+    let first: String = t.lines().next().unwrap_or("").chars().take(40).collect();
+    format!("is text starting `{first}`")
+}
+
+/// Names a JSON text (possibly cut short) by the keys it holds: which of the project's files it
+/// looks like.
+fn describe_json(t: &str) -> String {
+    let has = |k: &str| t.contains(&format!("\"{k}\""));
+    let kind = if has("img_name") && has("rotation") {
+        Some("cameras.json")
+    } else if has("stages") && has("environment") {
+        Some("scene.json")
+    } else if has("unsatisfied") || has("placed_by") {
+        Some("layout.json")
+    } else if has("anchors") || has("relations") {
+        Some("spec.json")
+    } else if has("gaussians") && has("prompt") {
+        Some("object.json")
+    } else {
+        None
+    };
+    match (kind, t.starts_with('[')) {
+        (Some(k), _) => format!("looks like a {k}"),
+        (None, true) => "is a JSON list".into(),
+        (None, false) => "is a JSON object".into(),
+    }
 }
 
 /// The value of environment variable `name` among `choices` (name, value); unset gives `None`,

@@ -108,6 +108,53 @@ impl Camera {
         {
             return Err(format!("camera {} has a non-finite pose", self.id));
         }
+        let r = &self.rotation;
+        // R·Rᵀ must be the identity and det R = +1; 1e-3 leaves room for values printed with
+        // six or seven digits (COLMAP and the INRIA converter write full precision).
+        let mut off = 0.0f64;
+        for i in 0..3 {
+            for j in 0..3 {
+                let d: f64 = (0..3).map(|k| r[i][k] * r[j][k]).sum();
+                off = off.max((d - if i == j { 1.0 } else { 0.0 }).abs());
+            }
+        }
+        let det = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1])
+            - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0])
+            + r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
+        if off > 1e-3 || det <= 0.0 {
+            return Err(format!(
+                "camera {} (`{}`) has a `rotation` that is not a rotation matrix (R·Rᵀ differs \
+                 from the identity by {off:.3}, determinant {det:.3})",
+                self.id, self.img_name
+            ));
+        }
+        self.check_img_name()
+    }
+
+    /// The file stem this camera's image has: `img_name`, or the id as five digits when empty.
+    pub fn output_name(&self) -> String {
+        if self.img_name.is_empty() {
+            format!("{:05}", self.id)
+        } else {
+            self.img_name.clone()
+        }
+    }
+
+    /// `img_name` must stay inside the directory it is joined to: a relative path of plain
+    /// components (`sub/dir/view` is fine; `..`, `.`, an absolute path or a NUL are not).
+    fn check_img_name(&self) -> Result<(), String> {
+        let name = &self.img_name;
+        let p = Path::new(name);
+        let plain = p
+            .components()
+            .all(|c| matches!(c, std::path::Component::Normal(_)));
+        if !plain || name.contains('\0') || name.ends_with('/') {
+            return Err(format!(
+                "camera {} has img_name `{name}`, which is not a relative path inside the output \
+                 directory (no `..`, no leading `/`)",
+                self.id
+            ));
+        }
         Ok(())
     }
 }
@@ -118,14 +165,42 @@ pub fn read_cameras(path: &Path) -> Result<Vec<Camera>, CameraError> {
         path: path.display().to_string(),
         msg,
     };
-    let text = std::fs::read_to_string(path).map_err(|e| err(e.to_string()))?;
-    let cams: Vec<Camera> =
-        serde_json::from_str(&text).map_err(|e| err(format!("not a cameras.json list: {e}")))?;
-    if cams.is_empty() {
-        return Err(err("no cameras in the file".into()));
+    if path.is_dir() {
+        return Err(err(
+            "is a directory; expected an INRIA cameras.json file".into()
+        ));
     }
+    let bytes = std::fs::read(path).map_err(|e| err(e.to_string()))?;
+    let cams = parse_cameras(&bytes).map_err(err)?;
+    Ok(cams)
+}
+
+/// Parses and validates the text of an INRIA `cameras.json`; errors are one line without the
+/// file name.
+pub fn parse_cameras(bytes: &[u8]) -> Result<Vec<Camera>, String> {
+    let what = crate::util::describe_bytes(bytes);
+    let text = std::str::from_utf8(bytes)
+        .map_err(|_| format!("this file {what}; expected an INRIA cameras.json"))?;
+    let cams: Vec<Camera> = serde_json::from_str(text).map_err(|e| {
+        if what.starts_with("looks like a cameras.json") || what.starts_with("is a JSON list") {
+            format!("not a cameras.json list: {e}")
+        } else {
+            format!("this file {what}; expected an INRIA cameras.json (a list of cameras)")
+        }
+    })?;
+    if cams.is_empty() {
+        return Err("no cameras in the file".into());
+    }
+    let mut seen = std::collections::HashMap::new();
     for c in &cams {
-        c.validate().map_err(err)?;
+        c.validate()?;
+        if let Some(other) = seen.insert(c.output_name(), c.id) {
+            return Err(format!(
+                "cameras {other} and {} have the same img_name `{}`; each image needs its own name",
+                c.id,
+                c.output_name()
+            ));
+        }
     }
     Ok(cams)
 }

@@ -258,10 +258,7 @@ fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpe
     let (spec_path, layout_path) = (a.out.join("spec.json"), a.out.join("layout.json"));
     if resume && spec_path.is_file() && layout_path.is_file() {
         let spec = SceneSpec::read(&spec_path)?;
-        let raw = std::fs::read_to_string(&layout_path)
-            .with_context(|| format!("reading {}", layout_path.display()))?;
-        let layout: Layout = serde_json::from_str(&raw)
-            .with_context(|| format!("{}: not a valid layout.json", layout_path.display()))?;
+        let layout = Layout::read(&layout_path)?;
         return Ok((spec, layout));
     }
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)

@@ -285,11 +285,40 @@ impl SceneSpec {
             path: path.display().to_string(),
             msg,
         };
-        let text = std::fs::read_to_string(path).map_err(|e| file(e.to_string()))?;
-        let spec: SceneSpec = serde_json::from_str(&text).map_err(|e| file(e.to_string()))?;
-        spec.validate().map_err(|e| file(e.to_string()))?;
+        let bytes = std::fs::read(path).map_err(|e| file(e.to_string()))?;
+        SceneSpec::parse(&bytes).map_err(file)
+    }
+
+    /// Parses and validates the text of a spec.json; a file of another kind (a layout.json, a
+    /// cameras.json, a PLY) is named as such. Errors are one line without the file name.
+    pub fn parse(bytes: &[u8]) -> Result<SceneSpec, String> {
+        let spec: SceneSpec = parse_json(bytes, "spec.json", "a SceneSpec")?;
+        spec.validate().map_err(|e| e.to_string())?;
         Ok(spec)
     }
+}
+
+/// Parses JSON text as `T`, the contents of a file named `name`; when it does not parse, says
+/// what the file looks like if it is another kind of file.
+fn parse_json<T: serde::de::DeserializeOwned>(
+    bytes: &[u8],
+    name: &str,
+    what: &str,
+) -> Result<T, String> {
+    let looks = crate::util::describe_bytes(bytes);
+    let raw = || -> Result<T, String> {
+        let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
+        serde_json::from_str(text).map_err(|e| e.to_string())
+    };
+    raw().map_err(|e| {
+        if looks.starts_with("looks like a") && !looks.ends_with(name) {
+            format!("this file {looks}; expected a {name} ({what})")
+        } else if looks.starts_with("is a JSON") || looks.starts_with("looks like") {
+            format!("not a valid {name}: {e}")
+        } else {
+            format!("this file {looks}; expected a {name} ({what})")
+        }
+    })
 }
 
 impl Layout {
@@ -321,6 +350,31 @@ impl Layout {
             plural(self.objects.len(), "object", "objects"),
             plural(fallback, "fallback placement", "fallback placements")
         )
+    }
+
+    /// Reads layout.json.
+    pub fn read(path: &Path) -> Result<Layout, SpecError> {
+        let file = |msg: String| SpecError::File {
+            path: path.display().to_string(),
+            msg,
+        };
+        let bytes = std::fs::read(path).map_err(|e| file(e.to_string()))?;
+        Layout::parse(&bytes).map_err(file)
+    }
+
+    /// Parses the text of a layout.json: the keys of the contract and finite numbers. Errors are
+    /// one line without the file name.
+    pub fn parse(bytes: &[u8]) -> Result<Layout, String> {
+        let l: Layout = parse_json(bytes, "layout.json", "the layout's output")?;
+        let numbers = l.room.size.iter().chain(
+            l.objects
+                .iter()
+                .flat_map(|o| o.size.iter().chain(&o.position).chain([&o.yaw])),
+        );
+        if let Some(v) = numbers.copied().find(|v: &f64| !v.is_finite()) {
+            return Err(format!("layout.json holds a non-finite number ({v})"));
+        }
+        Ok(l)
     }
 
     /// Writes layout.json atomically.

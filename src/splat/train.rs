@@ -627,9 +627,7 @@ impl Trainer {
                 buf.extend_from_slice(bytemuck::cast_slice(&v));
             }
         }
-        let tmp = path.with_extension("state.tmp");
-        std::fs::write(&tmp, &buf)?;
-        std::fs::rename(&tmp, path)
+        crate::util::write_atomic(path, &buf)
     }
 
     fn moments(&self) -> [&Moments; 5] {

@@ -1,0 +1,500 @@
+//! The PLY reader: binary little- and big-endian and ASCII, any property types. Properties the
+//! splat does not use are skipped whatever their type (colours as `uchar red green blue`, normals,
+//! lists); splat properties may be `float` or `double` (converted to 32-bit). Elements before
+//! `vertex` are skipped, elements after it are not read.
+//!
+//! Nothing is allocated by a count read from the header: rows are read one at a time and the
+//! cloud grows with the data actually present, so a header claiming 10^12 vertices on a short
+//! file ends in a "truncated" error, not an allocation. Every loop consumes input or stops.
+use super::super::cloud::{sh_coeffs, Gaussians};
+use std::io::{BufRead, Read};
+
+/// The most header bytes read before giving up (INRIA headers are about 1.5 KB).
+const MAX_HEADER: u64 = 1 << 20;
+/// Cloud rows reserved up front at most, whatever the header says.
+const MAX_RESERVE: usize = 1 << 16;
+
+/// What to do with Gaussians whose values are not finite (NaN, ±Inf, or a double too large for
+/// a float) or whose rotation quaternion is zero.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Invalid {
+    /// Refuse the file, with the count and the first such vertex.
+    #[default]
+    Refuse,
+    /// Leave them out and report how many.
+    Drop,
+}
+
+/// A cloud read from a PLY, and how many invalid Gaussians were dropped.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlyRead {
+    pub gaussians: Gaussians,
+    pub dropped: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Ty {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Ty {
+    fn parse(s: &str) -> Option<Ty> {
+        Some(match s {
+            "char" | "int8" => Ty::I8,
+            "uchar" | "uint8" => Ty::U8,
+            "short" | "int16" => Ty::I16,
+            "ushort" | "uint16" => Ty::U16,
+            "int" | "int32" => Ty::I32,
+            "uint" | "uint32" => Ty::U32,
+            "float" | "float32" => Ty::F32,
+            "double" | "float64" => Ty::F64,
+            _ => return None,
+        })
+    }
+
+    fn size(self) -> usize {
+        match self {
+            Ty::I8 | Ty::U8 => 1,
+            Ty::I16 | Ty::U16 => 2,
+            Ty::I32 | Ty::U32 | Ty::F32 => 4,
+            Ty::F64 => 8,
+        }
+    }
+
+    fn is_float(self) -> bool {
+        matches!(self, Ty::F32 | Ty::F64)
+    }
+
+    /// Decodes one value of this type from `b` (exactly `size()` bytes).
+    fn decode(self, b: &[u8], big: bool) -> f64 {
+        macro_rules! num {
+            ($t:ty, $n:expr) => {{
+                let mut a = [0u8; $n];
+                a.copy_from_slice(&b[..$n]);
+                if big {
+                    <$t>::from_be_bytes(a) as f64
+                } else {
+                    <$t>::from_le_bytes(a) as f64
+                }
+            }};
+        }
+        match self {
+            Ty::I8 => num!(i8, 1),
+            Ty::U8 => num!(u8, 1),
+            Ty::I16 => num!(i16, 2),
+            Ty::U16 => num!(u16, 2),
+            Ty::I32 => num!(i32, 4),
+            Ty::U32 => num!(u32, 4),
+            Ty::F32 => num!(f32, 4),
+            Ty::F64 => num!(f64, 8),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Encoding {
+    Ascii,
+    Little,
+    Big,
+}
+
+#[derive(Debug)]
+enum Kind {
+    Scalar(Ty),
+    /// A list: the type of its length, then of its items.
+    List(Ty, Ty),
+}
+
+#[derive(Debug)]
+struct Prop {
+    name: String,
+    kind: Kind,
+}
+
+#[derive(Debug)]
+struct Element {
+    name: String,
+    count: u64,
+    props: Vec<Prop>,
+}
+
+/// Reads the header, returning the encoding and the elements.
+fn header<R: BufRead>(r: &mut R) -> Result<(Encoding, Vec<Element>), String> {
+    let mut limited = r.take(MAX_HEADER);
+    let mut line = Vec::new();
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    for number in 1.. {
+        line.clear();
+        let n = limited
+            .read_until(b'\n', &mut line)
+            .map_err(|e| format!("header: {e}"))?;
+        if n == 0 {
+            return Err(if number == 1 {
+                "empty file; expected a splat PLY".into()
+            } else {
+                "header ends before `end_header`".into()
+            });
+        }
+        let text = String::from_utf8_lossy(&line);
+        let l = text.trim();
+        if number == 1 {
+            if l != "ply" {
+                // Enough of the file to say what it is.
+                let mut head = line.clone();
+                let _ = (&mut limited).take(4096).read_to_end(&mut head);
+                return Err(format!(
+                    "not a PLY file: it {}; expected a splat PLY",
+                    crate::util::describe_bytes(&head)
+                ));
+            }
+            continue;
+        }
+        let parts: Vec<&str> = l.split_whitespace().collect();
+        match parts.as_slice() {
+            [] | ["comment", ..] | ["obj_info", ..] => {}
+            ["format", fmt, _] => {
+                encoding = Some(match *fmt {
+                    "ascii" => Encoding::Ascii,
+                    "binary_little_endian" => Encoding::Little,
+                    "binary_big_endian" => Encoding::Big,
+                    _ => return Err(format!("format `{fmt}` is not a PLY format")),
+                })
+            }
+            ["element", name, n] => {
+                let count = n
+                    .parse::<u64>()
+                    .map_err(|_| format!("element `{name}` has a bad count `{n}`"))?;
+                elements.push(Element {
+                    name: name.to_string(),
+                    count,
+                    props: Vec::new(),
+                });
+            }
+            ["property", "list", cty, ity, name] => {
+                let (c, i) = match (Ty::parse(cty), Ty::parse(ity)) {
+                    (Some(c), Some(i)) if !c.is_float() => (c, i),
+                    _ => {
+                        return Err(format!(
+                            "list property `{name}` has bad types `{cty}` `{ity}`"
+                        ))
+                    }
+                };
+                let e = elements
+                    .last_mut()
+                    .ok_or_else(|| format!("property `{name}` before any element"))?;
+                e.props.push(Prop {
+                    name: name.to_string(),
+                    kind: Kind::List(c, i),
+                });
+            }
+            ["property", ty, name] => {
+                let t = Ty::parse(ty)
+                    .ok_or_else(|| format!("property `{name}` has unknown type `{ty}`"))?;
+                let e = elements
+                    .last_mut()
+                    .ok_or_else(|| format!("property `{name}` before any element"))?;
+                e.props.push(Prop {
+                    name: name.to_string(),
+                    kind: Kind::Scalar(t),
+                });
+            }
+            ["end_header"] => break,
+            _ => {
+                let shown: String = l.chars().take(60).collect();
+                return Err(format!("header line {number} is not PLY: `{shown}`"));
+            }
+        }
+    }
+    let encoding = encoding.ok_or("no `format` line in the header")?;
+    Ok((encoding, elements))
+}
+
+/// Reads values row by row in either encoding.
+struct Rows<'a, R: BufRead> {
+    r: &'a mut R,
+    encoding: Encoding,
+    buf: Vec<u8>,
+    token: Vec<u8>,
+}
+
+/// The input ended inside a row.
+struct Eof;
+
+impl<R: BufRead> Rows<'_, R> {
+    /// The next value of type `ty`.
+    fn value(&mut self, ty: Ty) -> Result<Result<f64, String>, Eof> {
+        match self.encoding {
+            Encoding::Ascii => {
+                self.next_token()?;
+                let s = String::from_utf8_lossy(&self.token);
+                Ok(s.parse::<f64>()
+                    .map_err(|_| format!("`{s}` is not a number")))
+            }
+            Encoding::Little | Encoding::Big => {
+                let n = ty.size();
+                self.buf.resize(n, 0);
+                self.r.read_exact(&mut self.buf[..n]).map_err(|_| Eof)?;
+                Ok(Ok(ty.decode(&self.buf, self.encoding == Encoding::Big)))
+            }
+        }
+    }
+
+    /// Reads one whitespace-separated token (at most 64 bytes) into `self.token`.
+    fn next_token(&mut self) -> Result<(), Eof> {
+        self.token.clear();
+        loop {
+            let (used, done) = {
+                let b = self.r.fill_buf().map_err(|_| Eof)?;
+                if b.is_empty() {
+                    if self.token.is_empty() {
+                        return Err(Eof);
+                    }
+                    return Ok(());
+                }
+                let mut used = 0;
+                let mut done = false;
+                for &c in b {
+                    used += 1;
+                    if c.is_ascii_whitespace() {
+                        if !self.token.is_empty() {
+                            done = true;
+                            break;
+                        }
+                    } else if self.token.len() < 64 {
+                        self.token.push(c);
+                    }
+                }
+                (used, done)
+            };
+            self.r.consume(used);
+            if done {
+                return Ok(());
+            }
+        }
+    }
+
+    /// Reads one row of `props`, storing scalar values in `out` (lists are read and dropped).
+    fn row(&mut self, props: &[Prop], out: &mut [f64]) -> Result<Result<(), String>, Eof> {
+        for (i, p) in props.iter().enumerate() {
+            match p.kind {
+                Kind::Scalar(t) => match self.value(t)? {
+                    Ok(v) => out[i] = v,
+                    Err(e) => return Ok(Err(format!("property `{}`: {e}", p.name))),
+                },
+                Kind::List(c, t) => {
+                    let n = match self.value(c)? {
+                        Ok(v) if v >= 0.0 && v.fract() == 0.0 => v as u64,
+                        Ok(v) => {
+                            return Ok(Err(format!("list `{}` has length {v}", p.name)));
+                        }
+                        Err(e) => return Ok(Err(format!("list `{}`: {e}", p.name))),
+                    };
+                    // Each item consumes input, so a huge length ends at the end of the file.
+                    for _ in 0..n {
+                        if let Err(e) = self.value(t)? {
+                            return Ok(Err(format!("list `{}`: {e}", p.name)));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(Ok(()))
+    }
+
+    /// Skips every row of an element that comes before `vertex`.
+    fn skip(&mut self, e: &Element) -> Result<(), String> {
+        if e.props.is_empty() {
+            return Ok(());
+        }
+        let truncated = || format!("truncated inside element `{}`", e.name);
+        let scalar_bytes: Option<u64> = e
+            .props
+            .iter()
+            .map(|p| match p.kind {
+                Kind::Scalar(t) => Some(t.size() as u64),
+                Kind::List(..) => None,
+            })
+            .sum();
+        if let (Some(stride), false) = (scalar_bytes, self.encoding == Encoding::Ascii) {
+            let want = e.count.saturating_mul(stride);
+            let got = std::io::copy(&mut (&mut *self.r).take(want), &mut std::io::sink())
+                .map_err(|e| e.to_string())?;
+            return if got == want {
+                Ok(())
+            } else {
+                Err(truncated())
+            };
+        }
+        let mut scratch = vec![0.0; e.props.len()];
+        for _ in 0..e.count {
+            match self.row(&e.props, &mut scratch) {
+                Err(Eof) => return Err(truncated()),
+                Ok(Err(m)) => return Err(m),
+                Ok(Ok(())) => {}
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Reads a splat PLY from `r`; errors are one line without the file name.
+pub fn parse_ply<R: BufRead>(r: &mut R, invalid: Invalid) -> Result<PlyRead, String> {
+    let (encoding, elements) = header(r)?;
+    let vi = elements
+        .iter()
+        .position(|e| e.name == "vertex")
+        .ok_or("no `vertex` element")?;
+    let vertex = &elements[vi];
+    let props = &vertex.props;
+    let idx = |name: &str| props.iter().position(|p| p.name == name);
+    let need = |name: &str| -> Result<usize, String> {
+        let i = idx(name).ok_or_else(|| format!("missing property `{name}`"))?;
+        match props[i].kind {
+            Kind::Scalar(t) if t.is_float() => Ok(i),
+            _ => Err(format!(
+                "property `{name}` is not `float` or `double`; splat properties are floating point"
+            )),
+        }
+    };
+    let mut rest: Vec<(usize, usize)> = props
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| {
+            p.name
+                .strip_prefix("f_rest_")
+                .and_then(|s| s.parse::<usize>().ok())
+                .map(|k| (k, i))
+        })
+        .collect();
+    rest.sort();
+    for (expect, (k, _)) in rest.iter().enumerate() {
+        if *k != expect {
+            return Err(format!(
+                "f_rest_ properties are not numbered 0..{}",
+                rest.len()
+            ));
+        }
+    }
+    let degree = match rest.len() {
+        0 => 0,
+        9 => 1,
+        24 => 2,
+        45 => 3,
+        k => {
+            return Err(format!(
+                "{k} f_rest properties: expected 0, 9, 24 or 45 (SH degree 0 to 3)"
+            ))
+        }
+    };
+    let rest: Vec<usize> = rest
+        .into_iter()
+        .map(|(k, _)| need(&format!("f_rest_{k}")))
+        .collect::<Result<_, _>>()?;
+    let pos = [need("x")?, need("y")?, need("z")?];
+    let dc = [need("f_dc_0")?, need("f_dc_1")?, need("f_dc_2")?];
+    let op = need("opacity")?;
+    let sc = [need("scale_0")?, need("scale_1")?, need("scale_2")?];
+    let rot = [
+        need("rot_0")?,
+        need("rot_1")?,
+        need("rot_2")?,
+        need("rot_3")?,
+    ];
+
+    let mut rows = Rows {
+        r,
+        encoding,
+        buf: Vec::new(),
+        token: Vec::new(),
+    };
+    for e in &elements[..vi] {
+        rows.skip(e)?;
+    }
+    let n = vertex.count;
+    let k = sh_coeffs(degree);
+    let per = k - 1;
+    let reserve = usize::try_from(n).unwrap_or(usize::MAX).min(MAX_RESERVE);
+    let mut g = Gaussians {
+        sh_degree: degree,
+        ..Default::default()
+    };
+    g.means.reserve(reserve);
+    g.scales.reserve(reserve);
+    g.rotations.reserve(reserve);
+    g.opacities.reserve(reserve);
+    g.sh.reserve(reserve * k * 3);
+    let mut vals = vec![0.0f64; props.len()];
+    let mut bad = 0usize;
+    let mut first_bad: Option<(u64, String)> = None;
+    for v in 0..n {
+        match rows.row(props, &mut vals) {
+            Err(Eof) => {
+                return Err(format!(
+                    "truncated: the header says {n} vertices, the data ends in vertex {v}"
+                ))
+            }
+            Ok(Err(m)) => return Err(format!("vertex {v}: {m}")),
+            Ok(Ok(())) => {}
+        }
+        let f = |i: usize| vals[i] as f32;
+        let used = pos
+            .iter()
+            .chain(&dc)
+            .chain(&rest)
+            .chain(&sc)
+            .chain(&rot)
+            .chain(std::iter::once(&op));
+        let mut why = used
+            .map(|&i| (i, f(i)))
+            .find(|(_, x)| !x.is_finite())
+            .map(|(i, x)| format!("`{}` = {}", props[i].name, shown(vals[i], x)));
+        if why.is_none() && rot.iter().all(|&i| f(i) == 0.0) {
+            why = Some("its rotation quaternion is zero".into());
+        }
+        if let Some(why) = why {
+            bad += 1;
+            first_bad.get_or_insert((v, why));
+            continue;
+        }
+        g.means.push(pos.map(f));
+        g.scales.push(sc.map(f));
+        g.rotations.push(rot.map(f));
+        g.opacities.push(f(op));
+        for c in 0..k {
+            for ch in 0..3 {
+                g.sh.push(if c == 0 {
+                    f(dc[ch])
+                } else {
+                    f(rest[ch * per + c - 1])
+                });
+            }
+        }
+    }
+    if let (Some((v, why)), Invalid::Refuse) = (first_bad, invalid) {
+        return Err(format!(
+            "{bad} of {n} Gaussians are not finite or have a zero rotation (first: vertex {v}, \
+             {why}); --drop-invalid leaves them out"
+        ));
+    }
+    Ok(PlyRead {
+        gaussians: g,
+        dropped: bad,
+    })
+}
+
+/// A value as read, and as a float when the conversion overflowed.
+fn shown(read: f64, as_f32: f32) -> String {
+    if read.is_finite() {
+        format!("{read:e} (beyond a 32-bit float, {as_f32})")
+    } else {
+        format!("{read}")
+    }
+}
