@@ -44,6 +44,36 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     Ok(())
 }
 
+/// Checks that [`write_atomic`] can write `path` (following links): its directory takes a new
+/// file. Devices and pipes are refused, since a caller that asks is about to write it more than
+/// once. Errors name the path.
+pub fn check_writable(path: &Path) -> std::io::Result<()> {
+    let named =
+        |e: std::io::Error| std::io::Error::new(e.kind(), format!("{}: {e}", path.display()));
+    if is_special(path) {
+        return Err(named(std::io::Error::other(
+            "not a regular file (a device or pipe); give a file path",
+        )));
+    }
+    let target = resolve_links(path).map_err(named)?;
+    if target.is_dir() {
+        return Err(named(std::io::Error::new(
+            std::io::ErrorKind::IsADirectory,
+            "is a directory; give a file path",
+        )));
+    }
+    let mut probe = target.as_os_str().to_owned();
+    probe.push(".tmp");
+    let probe = PathBuf::from(probe);
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(&probe)
+        .map_err(named)?;
+    std::fs::remove_file(&probe).map_err(named)
+}
+
 /// True when `path` exists and is not a regular file, directory or link to one: a device, a pipe,
 /// a socket, or anything under `/dev` or `/proc` (whose links, such as `/dev/stdout`, name
 /// descriptors rather than files).

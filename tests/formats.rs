@@ -208,14 +208,37 @@ fn fit_resumes_from_its_checkpoint() {
     assert!(dir.join("model.ply.state").is_file());
     let (ok, out) = run(&["--iterations", "4", "--resume"]);
     assert!(ok && out.contains("already at iteration 4"), "{out}");
+    // A different --iterations is refused: the schedules are fractions of the run.
     let (ok, out) = run(&["--iterations", "6", "--resume"]);
-    assert!(ok && out.contains("resuming at iteration 4"), "{out}");
+    assert!(
+        !ok && out.contains("for 4 iterations")
+            && out.contains("asks for 6")
+            && out.contains("--init"),
+        "{out}"
+    );
+    // A fit stopped half-way (its state and PLY at iteration 2 of 4) continues to the end.
+    {
+        use dreamscene::splat::train::{load_views, random_init, FitConfig, Trainer};
+        let ctx = common::gpu();
+        let views = load_views(&images, &cams, [0.0; 3]).unwrap();
+        let config = FitConfig {
+            iterations: 4,
+            ..Default::default()
+        };
+        let mut t = Trainer::new(&ctx, &random_init(&cams, 200, 3, 0), views, config).unwrap();
+        t.step().unwrap();
+        t.step().unwrap();
+        write_ply(&dir.join("model.ply"), &t.gaussians().unwrap()).unwrap();
+        t.save_state(&dir.join("model.ply.state")).unwrap();
+    }
+    let (ok, out) = run(&["--iterations", "4", "--resume"]);
+    assert!(ok && out.contains("resuming at iteration 2"), "{out}");
     // A state that belongs to another PLY is refused with the reason.
     std::fs::copy(dir.join("model.ply.state"), dir.join("keep.state")).unwrap();
     let (ok, out) = run(&["--iterations", "2"]);
     assert!(ok, "{out}");
     std::fs::copy(dir.join("keep.state"), dir.join("model.ply.state")).unwrap();
-    let (ok, out) = run(&["--iterations", "8", "--resume"]);
+    let (ok, out) = run(&["--iterations", "4", "--resume"]);
     assert!(!ok && out.contains("model.ply.state"), "{out}");
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -19,8 +19,17 @@ pub fn run(a: Args) -> Result<()> {
     doctor(a.models.as_deref(), a.provider)
 }
 
+/// One component's verdict: what it serves and why it cannot run, if so.
+struct Verdict {
+    what: &'static str,
+    problem: Option<String>,
+    /// Asked for on the command line (--models, --provider): a problem fails the command.
+    asked: bool,
+}
+
 fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
-    let mut ok = true;
+    let mut render_problem: Option<String> = None;
+    let mut sd_problem: Option<String> = None;
     match dreamscene::diffusion::runtime::info() {
         Ok(i) => {
             println!(
@@ -29,19 +38,29 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
                 i.version
             );
             println!("  providers: {}", i.providers.join(", "));
+            let name = format!("{provider:?}").to_lowercase();
+            match dreamscene::diffusion::runtime::check_provider(provider) {
+                Ok(()) => println!("  provider {name}: available"),
+                Err(e) => {
+                    println!("  provider {name}: {e}");
+                    sd_problem = Some(format!("provider {name} unavailable"));
+                }
+            }
         }
         Err(e) => {
             println!("onnx runtime: {e}");
-            ok = false;
+            sd_problem = Some("no ONNX Runtime library".into());
         }
     }
     match models {
-        None => println!(
-            "models: none given (--models DIR or DREAMSCENE_MODELS); generation needs a Stable \
-             Diffusion ONNX export, e.g. `optimum-cli export onnx --model \
-             stabilityai/stable-diffusion-2-1-base DIR`"
-        ),
-        Some(dir) => {
+        None => {
+            println!(
+                "models: none given (--models DIR or DREAMSCENE_MODELS); generation needs a \
+                 Stable Diffusion ONNX export (see the README's model-export recipe)"
+            );
+            sd_problem.get_or_insert("no model directory given".into());
+        }
+        Some(dir) if sd_problem.is_none() => {
             let opts = dreamscene::diffusion::model::ModelOptions {
                 provider,
                 threads: None,
@@ -70,10 +89,14 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
                 }
                 Err(e) => {
                     println!("models: {e}");
-                    ok = false;
+                    sd_problem = Some(format!("the models in {} do not load", dir.display()));
                 }
             }
         }
+        Some(dir) => println!(
+            "models: {} not checked (ONNX Runtime cannot run them here, see above)",
+            dir.display()
+        ),
     }
     match Context::list_devices() {
         Ok(devs) if !devs.is_empty() => {
@@ -83,11 +106,11 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
         }
         Ok(_) => {
             println!("vulkan: no device (install mesa-vulkan-drivers for the lavapipe CPU device)");
-            ok = false;
+            render_problem = Some("no Vulkan device".into());
         }
         Err(e) => {
             println!("vulkan: {e}");
-            ok = false;
+            render_problem = Some("no Vulkan".into());
         }
     }
     match Context::new() {
@@ -108,17 +131,47 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
                 Ok(_) => println!("  kernels: all pipelines built"),
                 Err(e) => {
                     println!("  kernels: {e}");
-                    ok = false;
+                    render_problem.get_or_insert("the kernels do not build".into());
                 }
             }
         }
         Err(e) => {
             println!("selected: none: {e}");
-            ok = false;
+            render_problem.get_or_insert("no usable Vulkan device".into());
         }
     }
-    if !ok {
-        bail!("the engine cannot run here (see above)");
+    let sd_asked = models.is_some() || provider != Provider::Cpu;
+    let verdicts = [
+        Verdict {
+            what: "rendering, fit, demo, draft generation (shape prior)",
+            problem: render_problem.clone(),
+            asked: true,
+        },
+        Verdict {
+            what: "Stable Diffusion generation (--prior sd)",
+            problem: match (&render_problem, sd_problem) {
+                (_, Some(p)) => Some(p),
+                (Some(_), None) => Some("needs Vulkan too".into()),
+                (None, None) => None,
+            },
+            asked: sd_asked,
+        },
+    ];
+    println!("verdict:");
+    let mut failed = vec![];
+    for v in &verdicts {
+        match &v.problem {
+            None => println!("  ready: {}", v.what),
+            Some(p) => {
+                println!("  not ready: {} ({p})", v.what);
+                if v.asked {
+                    failed.push(v.what);
+                }
+            }
+        }
+    }
+    if !failed.is_empty() {
+        bail!("not ready here: {}", failed.join("; "));
     }
     Ok(())
 }

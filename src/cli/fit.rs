@@ -2,10 +2,10 @@
 use super::{create_parent, open_device};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::read_cameras;
-use dreamscene::splat::ply::{read_ply, write_ply};
+use dreamscene::generate::progress::Progress;
+use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::train::{load_views, random_init, FitConfig, Trainer, View};
 use dreamscene::splat::Gaussians;
-use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -43,9 +43,15 @@ pub struct Args {
     /// Seed of the random start and the view order.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Continue an interrupted fit from --out and <out>.state (same --iterations).
+    /// Continue an interrupted fit from --out and <out>.state. It must ask for the same
+    /// --iterations as the interrupted fit (its schedules are fractions of the run); to train
+    /// further, start a new fit with --init <out>.
     #[arg(long, conflicts_with = "init")]
     pub resume: bool,
+    /// Leave out Gaussians of --init with non-finite values (NaN, Inf) or a zero rotation,
+    /// saying how many, instead of refusing the PLY.
+    #[arg(long)]
+    pub drop_invalid: bool,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -61,8 +67,12 @@ pub fn run(a: Args) -> Result<()> {
             );
         }
     }
+    // Find out now, not after the last iteration, that the results cannot be written.
+    create_parent(&a.out)?;
+    check_writable(&a.out)?;
+    check_writable(&state_path(&a.out))?;
     let start = match a.init.or(a.resume.then(|| a.out.clone())) {
-        Some(p) => read_ply(&p)?,
+        Some(p) => super::render::read_splats(&p, a.drop_invalid)?,
         None => {
             if a.init_gaussians == 0 {
                 bail!("--init-gaussians must be at least 1");
@@ -102,7 +112,6 @@ fn fit(
     checkpoint_every: u32,
     resume_from: Option<&Path>,
 ) -> Result<()> {
-    create_parent(out)?;
     let ctx = open_device()?;
     let n_views = views.len();
     let iterations = config.iterations;
@@ -119,13 +128,9 @@ fn fit(
         }
         eprintln!("resuming at iteration {}", t.iteration());
     }
-    let bar = ProgressBar::new(iterations as u64).with_style(
-        ProgressStyle::with_template(
-            "{bar:40} {pos}/{len} [{elapsed_precise}<{eta_precise}] {msg}",
-        )
-        .expect("valid template"),
-    );
-    bar.set_position(t.iteration() as u64);
+    let mut progress = Progress::new(iterations as u64, false);
+    let started = std::time::Instant::now();
+    let first = t.iteration();
     let state = state_path(out);
     let save = |t: &Trainer| -> Result<()> {
         let g = t.gaussians()?;
@@ -135,31 +140,44 @@ fn fit(
     };
     // Loss and PSNR averaged over the last epoch-sized window, for a steadier readout.
     let mut window: std::collections::VecDeque<(f64, f64)> = Default::default();
+    let mean = |w: &std::collections::VecDeque<(f64, f64)>| {
+        let k = w.len().max(1) as f64;
+        let (l, p) = w.iter().fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+        (l / k, p / k)
+    };
     while t.iteration() < iterations {
         let r = t.step()?;
         window.push_back((r.loss, r.psnr));
         if window.len() > n_views {
             window.pop_front();
         }
-        if r.iteration % 10 == 0 || r.iteration == iterations {
-            let k = window.len() as f64;
-            let (l, p) = window
-                .iter()
-                .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
-            bar.set_message(format!(
-                "loss {:.4}  PSNR {:.2} dB  {} Gaussians",
-                l / k,
-                p / k,
-                r.gaussians
-            ));
-        }
-        bar.inc(1);
+        let (l, p) = mean(&window);
+        progress.update(
+            r.iteration as u64,
+            &format!(
+                "fit iteration {}: loss {l:.4}, PSNR {p:.2} dB, {} Gaussians",
+                r.iteration, r.gaussians
+            ),
+        );
         if checkpoint_every > 0 && r.iteration % checkpoint_every == 0 && r.iteration < iterations {
             save(&t)?;
         }
     }
     save(&t)?;
-    bar.finish();
-    println!("wrote {} ({} Gaussians)", out.display(), t.len());
+    progress.finish();
+    let (l, p) = mean(&window);
+    println!(
+        "wrote {} ({} Gaussians): iterations {first} to {iterations} in {:.1} s, PSNR {p:.2} dB \
+         and loss {l:.4} over the last {} views",
+        out.display(),
+        t.len(),
+        started.elapsed().as_secs_f64(),
+        window.len()
+    );
     Ok(())
+}
+
+/// Refuses a path that [`dreamscene::util::write_atomic`] could not write.
+fn check_writable(path: &Path) -> Result<()> {
+    dreamscene::util::check_writable(path).map_err(|e| anyhow::anyhow!("cannot write: {e}"))
 }

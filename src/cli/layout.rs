@@ -24,6 +24,15 @@ pub fn run(a: Args) -> Result<()> {
     create_parent(&a.out)?;
     l.write(&a.out)
         .with_context(|| format!("writing {}", a.out.display()))?;
+    // Written to a device such as /dev/stdout: no picture beside it, and the summary goes to
+    // stderr to keep the JSON clean.
+    if dreamscene::util::is_special(&a.out) {
+        eprintln!("wrote {}: {}", a.out.display(), l.summary(&spec));
+        for r in &l.unsatisfied {
+            eprintln!("  unsatisfied: {r}");
+        }
+        return Ok(());
+    }
     let png = a.out.with_extension("png");
     write_png(&dreamscene::plan::draw::draw_layout(&l), &png)?;
     println!(

@@ -58,12 +58,15 @@ pub fn save_png(img: &RenderOutput, path: &Path) -> Result<()> {
     write_png(&buf, path)
 }
 
-/// Writes a PNG atomically (temporary file, then rename).
+/// Writes a PNG atomically (temporary file, then rename; see `util::write_atomic`).
 pub fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
-    let tmp = path.with_extension("png.tmp");
-    img.save_with_format(&tmp, image::ImageFormat::Png)
-        .with_context(|| format!("writing {}", path.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))
+    let mut bytes = Vec::new();
+    img.write_to(
+        &mut std::io::Cursor::new(&mut bytes),
+        image::ImageFormat::Png,
+    )
+    .with_context(|| format!("encoding {}", path.display()))?;
+    Ok(dreamscene::util::write_atomic(path, &bytes)?)
 }
 
 /// Creates the directory that will hold `file`.

@@ -3,8 +3,9 @@
 use super::{open_device, save_png};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::Camera;
-use dreamscene::export::trajectory::{cameras, open_input, Size, Trajectory};
+use dreamscene::export::trajectory::{cameras, open_input, Input, Size, Subject, Trajectory};
 use dreamscene::generate::progress::Progress;
+use dreamscene::splat::ply::{read_ply_with, Invalid};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use dreamscene::splat::Gaussians;
 use std::path::{Path, PathBuf};
@@ -36,6 +37,10 @@ pub struct Args {
     /// Background colour as R,G,B in [0, 1].
     #[arg(long, default_value = "0,0,0", value_parser = super::parse_rgb)]
     pub background: [f32; 3],
+    /// Leave out Gaussians with non-finite values (NaN, Inf) or a zero rotation, saying how many,
+    /// instead of refusing the PLY.
+    #[arg(long)]
+    pub drop_invalid: bool,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -47,28 +52,76 @@ pub fn run(a: Args) -> Result<()> {
         (None, Some(c)) => Trajectory::Cameras(c),
         _ => bail!("give --cameras FILE or --trajectory orbit|explore|FILE"),
     };
-    let input = open_input(input)?;
+    let is_ply = input.is_file()
+        && !input
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    let input = if a.drop_invalid && is_ply {
+        let cloud = read_splats(input, true)?;
+        let subject = Subject::of_cloud(&cloud)?;
+        Input {
+            cloud,
+            subject,
+            scene: None,
+        }
+    } else {
+        open_input(input)?
+    };
     let cams = cameras(&trajectory, &input.subject, a.frames, a.size)?;
     render_all(&input.cloud, &cams, &a.out, a.background)
 }
 
+/// Reads a splat PLY; with `drop_invalid`, Gaussians with non-finite values or a zero rotation
+/// are left out with a line saying how many, else the file is refused.
+pub fn read_splats(path: &Path, drop_invalid: bool) -> Result<Gaussians> {
+    let how = if drop_invalid {
+        Invalid::Drop
+    } else {
+        Invalid::Refuse
+    };
+    let r = read_ply_with(path, how)?;
+    if r.dropped > 0 {
+        eprintln!(
+            "{}: dropped {} Gaussians with non-finite values or a zero rotation, kept {}",
+            path.display(),
+            r.dropped,
+            r.gaussians.len()
+        );
+    }
+    if r.gaussians.is_empty() {
+        bail!("{}: no Gaussians to use", path.display());
+    }
+    Ok(r.gaussians)
+}
+
+/// Renders every camera into `<out>/<img_name>.png` (sub-directories of `img_name` created) and
+/// says what it wrote.
 pub fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 3]) -> Result<()> {
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let ctx = open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
-    let mut bar = Progress::new(cams.len() as u64, false);
+    let mut progress = Progress::new(cams.len() as u64, false);
+    let mut written = Vec::with_capacity(cams.len());
     for (i, c) in cams.iter().enumerate() {
         let img = r.forward(&ctx, &gg, c, background)?.read()?;
-        let name = if c.img_name.is_empty() {
-            format!("{:05}", c.id)
-        } else {
-            c.img_name.clone()
-        };
-        let path = out.join(format!("{name}.png"));
+        let name = format!("{}.png", c.output_name());
+        let path = out.join(&name);
+        super::create_parent(&path)?;
         save_png(&img, &path)?;
-        bar.update(i as u64 + 1, &name);
+        progress.update(i as u64 + 1, &format!("render {name}"));
+        written.push(name);
     }
-    bar.finish();
+    progress.finish();
+    let shown = match written.as_slice() {
+        [one] => one.clone(),
+        [first, .., last] => format!("{first} ... {last}"),
+        [] => String::new(),
+    };
+    println!(
+        "wrote {} images to {} ({shown})",
+        written.len(),
+        out.display()
+    );
     Ok(())
 }

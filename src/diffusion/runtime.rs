@@ -173,6 +173,11 @@ pub fn available_providers() -> Result<Vec<String>, String> {
     }
 }
 
+/// Whether the loaded ONNX Runtime library can run `p`; the error says why not and what to do.
+pub fn check_provider(p: Provider) -> Result<(), String> {
+    provider_dispatch(p).map(|_| ())
+}
+
 fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, String> {
     match p {
         Provider::Cpu => Ok(vec![ort::ep::CPU::default().build()]),

@@ -540,20 +540,15 @@ pub fn load_views(
 ) -> std::result::Result<Vec<View>, String> {
     let mut views = Vec::with_capacity(cams.len());
     for cam in cams {
-        let candidates = [
-            dir.join(&cam.img_name),
-            dir.join(format!("{}.png", cam.img_name)),
-            dir.join(format!("{}.jpg", cam.img_name)),
-            dir.join(format!("{}.jpeg", cam.img_name)),
-        ];
-        let path = candidates.iter().find(|p| p.is_file()).ok_or_else(|| {
+        let path = find_image(dir, &cam.img_name).ok_or_else(|| {
             format!(
-                "{}: no image for camera {} (looked for {}, .png, .jpg, .jpeg)",
+                "{}: no image for camera {} (looked for {}, .png, .jpg, .jpeg in any case)",
                 dir.display(),
                 cam.id,
                 cam.img_name
             )
         })?;
+        let path = &path;
         let img = image::open(path)
             .map_err(|e| format!("{}: {e}", path.display()))?
             .to_rgba32f();
@@ -583,8 +578,37 @@ pub fn load_views(
     Ok(views)
 }
 
+/// The image file of `img_name` in `dir`: the name itself, or the name with a `.png`, `.jpg` or
+/// `.jpeg` extension in any letter case (`.PNG`, `.JPG` as cameras write them); the first in
+/// name order when several match.
+fn find_image(dir: &std::path::Path, img_name: &str) -> Option<std::path::PathBuf> {
+    let exact = dir.join(img_name);
+    if exact.is_file() {
+        return Some(exact);
+    }
+    let parent = exact.parent()?;
+    let stem = exact.file_name()?.to_str()?;
+    let mut found: Vec<std::path::PathBuf> = std::fs::read_dir(parent)
+        .ok()?
+        .filter_map(|e| e.ok())
+        .filter(|e| {
+            let name = e.file_name();
+            let Some(name) = name.to_str() else {
+                return false;
+            };
+            name.rsplit_once('.').is_some_and(|(s, ext)| {
+                s == stem && ["png", "jpg", "jpeg"].contains(&ext.to_ascii_lowercase().as_str())
+            })
+        })
+        .map(|e| e.path())
+        .filter(|p| p.is_file())
+        .collect();
+    found.sort();
+    found.into_iter().next()
+}
+
 /// Magic and version of the optimiser-state file written beside a fit's PLY.
-const STATE_MAGIC: &[u8; 8] = b"DSFIT\x00\x02\x00";
+const STATE_MAGIC: &[u8; 8] = b"DSFIT\x00\x03\x00";
 
 /// FNV-1a over the Gaussians' means and opacities: ties a state file to the PLY written with it.
 fn fingerprint(g: &Gaussians) -> u64 {
@@ -627,6 +651,8 @@ impl Trainer {
                 buf.extend_from_slice(bytemuck::cast_slice(&v));
             }
         }
+        // The run's length: its schedules are fractions of it, so a resume must keep it.
+        buf.extend_from_slice(&self.config.iterations.to_le_bytes());
         crate::util::write_atomic(path, &buf)
     }
 
@@ -647,7 +673,15 @@ impl Trainer {
         let shown = path.display();
         let data = std::fs::read(path).map_err(|e| format!("{shown}: {e}"))?;
         if data.len() < 32 || &data[..8] != STATE_MAGIC {
-            return Err(format!("{shown}: not a dreamscene fit state (bad header)"));
+            let older = data.len() >= 8 && data[..5] == STATE_MAGIC[..5];
+            return Err(format!(
+                "{shown}: not a dreamscene fit state of this version ({})",
+                if older {
+                    "written by another version"
+                } else {
+                    "bad header"
+                }
+            ));
         }
         let word = |i: usize| u32::from_le_bytes(data[8 + 4 * i..12 + 4 * i].try_into().unwrap());
         let (iteration, step, n, sh) = (word(0), word(1), word(2), word(3));
@@ -696,6 +730,16 @@ impl Trainer {
                 return Err(format!("{shown}: truncated"));
             }
             arrays.push(bytemuck::pod_collect_to_vec(take(len * 4)?));
+        }
+        let total = u32::from_le_bytes(take(4)?.try_into().unwrap());
+        if total != self.config.iterations {
+            return Err(format!(
+                "{shown}: the interrupted fit was for {total} iterations, this one asks for {}; \
+                 --resume continues with the same --iterations (the learning-rate and \
+                 densification schedules are fractions of the run). To train further, start a \
+                 new fit with --init and the PLY",
+                self.config.iterations
+            ));
         }
         if at != data.len() {
             return Err(format!(
