@@ -61,7 +61,7 @@ fn malformed_ply_gets_a_one_line_error_naming_the_file() {
     let cases: Vec<(&str, Vec<u8>, &str)> = vec![
         ("truncated.ply", bytes[..bytes.len() - 10].to_vec(), "truncated"),
         ("notply.ply", b"hello\n".to_vec(), "not a PLY"),
-        ("ascii.ply", String::from_utf8_lossy(&bytes[..40]).replace("binary_little_endian", "ascii").into_bytes(), "ascii"),
+        ("cut_header.ply", String::from_utf8_lossy(&bytes[..40]).replace("binary_little_endian", "ascii").into_bytes(), "before `end_header`"),
         ("noheader.ply", b"ply\nformat binary_little_endian 1.0\n".to_vec(), "end_header"),
         (
             "noopacity.ply",

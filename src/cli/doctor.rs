@@ -56,7 +56,9 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
         None => {
             println!(
                 "models: none given (--models DIR or DREAMSCENE_MODELS); generation needs a \
-                 Stable Diffusion ONNX export (see the README's model-export recipe)"
+                 Stable Diffusion ONNX export, e.g. `optimum-cli export onnx --model \
+                 stabilityai/stable-diffusion-2-1-base --task text-to-image DIR` (the README \
+                 has the recipe)"
             );
             sd_problem.get_or_insert("no model directory given".into());
         }

@@ -145,6 +145,9 @@ fn header<R: BufRead>(r: &mut R) -> Result<(Encoding, Vec<Element>), String> {
         }
         let text = String::from_utf8_lossy(&line);
         let l = text.trim();
+        if number > 1 && !line.ends_with(b"\n") && l != "end_header" {
+            return Err("header ends before `end_header`".into());
+        }
         if number == 1 {
             if l != "ply" {
                 // Enough of the file to say what it is.
