@@ -2,6 +2,7 @@
 //! `x y z nx ny nz f_dc_0..2 f_rest_* opacity scale_0..2 rot_0..3`; `f_rest` is channel-major.
 //! Reads SH degree 0 to 3 in any property order, in any PLY encoding (see [`read`]); writes the
 //! standard order.
+mod header;
 mod read;
 
 use super::cloud::Gaussians;
