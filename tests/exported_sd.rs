@@ -1,0 +1,102 @@
+//! The loader against what the real exporter writes: a tiny random-weight pipeline of Stable
+//! Diffusion's block types exported by `optimum-cli export onnx --task text-to-image` in fp32 and
+//! fp16 (scripts/dev/make_exported_fixture.sh, committed under tests/data/exported-sd), run
+//! through `StableDiffusion` and compared with PyTorch's outputs for the same inputs.
+//! Needs the ONNX Runtime library (scripts/setup.sh installs it); without it this fails.
+use dreamscene::diffusion::model::{Codec, Embedding, ModelOptions, StableDiffusion};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/exported-sd")
+}
+
+fn floats(v: &Value) -> Vec<f32> {
+    v.as_array()
+        .expect("a list of numbers")
+        .iter()
+        .map(|x| x.as_f64().expect("a number") as f32)
+        .collect()
+}
+
+/// Largest difference relative to the reference's largest magnitude (at least 1).
+fn rel_err(got: &[f32], want: &[f32], what: &str) -> f64 {
+    assert_eq!(got.len(), want.len(), "{what}: lengths differ");
+    let scale = want.iter().fold(1.0f64, |m, v| m.max(v.abs() as f64));
+    got.iter()
+        .zip(want)
+        .map(|(a, b)| (*a as f64 - *b as f64).abs())
+        .fold(0.0, f64::max)
+        / scale
+}
+
+#[test]
+fn exporter_output_loads_and_matches_pytorch_in_fp32_and_fp16() {
+    let golden: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir().join("golden.json")).unwrap()).unwrap();
+    let prompt = golden["prompt"].as_str().unwrap();
+    // fp32 agrees with PyTorch to float rounding (measured: below 1e-6); fp16 stores weights and
+    // activations with 11 significant bits, and errors of a few parts in a thousand build up
+    // through the layers (measured: up to 1.7e-3).
+    for (variant, precision, tol) in [("fp32", "fp32", 1e-5), ("fp16", "fp16", 1e-2)] {
+        let opts = ModelOptions {
+            threads: Some(1),
+            ..Default::default()
+        };
+        let mut sd = StableDiffusion::open(&dir().join(variant), &opts)
+            .unwrap_or_else(|e| panic!("{variant}: {e}"));
+        assert_eq!(sd.precision(), precision);
+        let mut errs = vec![];
+        assert!(sd.has_vae_encoder());
+        assert_eq!(sd.default_latent_size(), (8, 8));
+
+        // Our tokenizer gives the ids transformers' CLIPTokenizer gave.
+        let ids: Vec<i64> = golden["input_ids"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_i64().unwrap())
+            .collect();
+        assert_eq!(sd.tokenizer.encode_padded(prompt), ids, "{variant}");
+
+        let emb = sd.encode_text(&[prompt]).unwrap().remove(0);
+        let want = floats(&golden["last_hidden_state"]);
+        let e = rel_err(&emb.data, &want, "text encoder");
+        assert!(e < tol, "{variant} text encoder: {e}");
+        errs.push(("text encoder", e));
+
+        // The UNet on PyTorch's embedding, so its error is its own.
+        let cond = Embedding {
+            data: want,
+            seq: 77,
+            hidden: emb.hidden,
+        };
+        let x = floats(&golden["sample"]);
+        let t = golden["timestep"].as_u64().unwrap() as u32;
+        let out = sd.unet_batch(&[&x], (8, 8), t, &[&cond]).unwrap();
+        let e = rel_err(&out[0], &floats(&golden["out_sample"]), "unet");
+        assert!(e < tol, "{variant} unet: {e}");
+        errs.push(("unet", e));
+
+        let (img, hw) = sd
+            .decode(&floats(&golden["latent"]), 1, (4, 4), Codec::Vae)
+            .unwrap();
+        assert_eq!(hw, (32, 32));
+        let e = rel_err(&img, &floats(&golden["decoded"]), "vae decoder");
+        assert!(e < tol, "{variant} vae decoder: {e}");
+        errs.push(("vae decoder", e));
+
+        let (z, hw) = sd
+            .encode(&floats(&golden["image"]), 1, (32, 32), Codec::Vae)
+            .unwrap();
+        assert_eq!(hw, (4, 4));
+        let e = rel_err(&z, &floats(&golden["latent_mean"]), "vae encoder");
+        assert!(e < tol, "{variant} vae encoder: {e}");
+        errs.push(("vae encoder", e));
+        let shown: Vec<String> = errs.iter().map(|(k, e)| format!("{k} {e:.1e}")).collect();
+        eprintln!(
+            "{variant}: relative errors against PyTorch: {}",
+            shown.join(", ")
+        );
+    }
+}
