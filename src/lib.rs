@@ -4,6 +4,7 @@
 pub mod bench;
 pub mod camera;
 pub mod diffusion;
+pub mod edit;
 pub mod export;
 pub mod generate;
 pub mod gpu;

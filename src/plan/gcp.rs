@@ -421,8 +421,40 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
     Ok(l)
 }
 
+/// A fixed pose for an instance in [`layout_pinned`]: bottom-face centre and yaw (degrees).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pin {
+    pub position: [f64; 3],
+    pub yaw: f64,
+}
+
+/// [`layout`] with the instances named in `pins` kept at their given poses: they are placed
+/// first, as they are, and the others are placed around them (an edit moves or adds objects in a
+/// scene whose other objects stay). Pins naming no instance are ignored.
+pub fn layout_pinned(
+    spec: &SceneSpec,
+    opts: LayoutOptions,
+    pins: &BTreeMap<String, Pin>,
+) -> Result<Layout, SpecError> {
+    spec.validate()?;
+    let room = spec
+        .room
+        .unwrap_or_else(|| choose_room(&spec.instances(), spec.scene_type));
+    Ok(layout_in_pinned(spec, room, opts, pins))
+}
+
 /// The GCP search in `room`, without the fit checks.
 pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
+    layout_in_pinned(spec, room, opts, &BTreeMap::new())
+}
+
+/// [`layout_in`] with pinned instances placed first, as they are.
+fn layout_in_pinned(
+    spec: &SceneSpec,
+    room: Room,
+    opts: LayoutOptions,
+    pins: &BTreeMap<String, Pin>,
+) -> Layout {
     let inst = spec.instances();
     let mut index = BTreeMap::new();
     for (k, i) in inst.iter().enumerate() {
@@ -449,12 +481,23 @@ pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> La
         stacked,
         step,
     };
+    let pinned: Vec<Option<Pose>> = prob
+        .inst
+        .iter()
+        .map(|i| {
+            pins.get(&i.id).map(|p| Pose {
+                c: [p.position[0], p.position[1]],
+                yaw: p.yaw,
+                z: p.position[2],
+            })
+        })
+        .collect();
     let mut best: Option<(f64, Layout)> = None;
     for attempt in 0..opts.restarts.max(1) {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(
             opts.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ attempt as u64,
         );
-        let l = attempt_layout(&prob, spec, room, opts.seed, &mut rng);
+        let l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &pinned);
         let q = quality(&prob, &l);
         if best.as_ref().is_none_or(|b| q > b.0) {
             best = Some((q, l));
@@ -548,11 +591,15 @@ fn attempt_layout(
     room: Room,
     seed: u64,
     rng: &mut rand_chacha::ChaCha8Rng,
+    pinned: &[Option<Pose>],
 ) -> Layout {
     let n = prob.inst.len();
-    let mut placed: Vec<Option<Pose>> = vec![None; n];
+    let mut placed: Vec<Option<Pose>> = pinned.to_vec();
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
     for i in order(prob, rng) {
+        if placed[i].is_some() {
+            continue;
+        }
         let (group, cands) = prob.candidates(i, &placed);
         let boxes: Vec<Option<(Box2, [f64; 4])>> = placed
             .iter()

@@ -5,3 +5,4 @@ pub mod compose;
 pub mod dir;
 pub mod env;
 pub mod sh_rotate;
+pub mod timeline;

@@ -1,0 +1,331 @@
+//! `dreamscene edit DIR <operation>`: change a generated scene in place, atomically, with the
+//! edit recorded in `scene.json`'s history and `undo` to take it back.
+use anyhow::{bail, Context as _, Result};
+use dreamscene::edit::ops::{self, MoveFlags, Pose};
+use dreamscene::edit::parse;
+use dreamscene::edit::reopt::{self, ReoptConfig};
+use dreamscene::edit::{animate, apply_edit, txn, Edit, SceneState};
+use dreamscene::plan::kb::parse_anchor;
+use serde_json::json;
+use std::path::PathBuf;
+
+/// Edit a generated scene in place: move, add, remove, restyle or animate objects, or undo.
+///
+/// Every edit is atomic (a crash leaves the old scene or the new one), re-composes scene.ply,
+/// re-renders the views of renders/cameras.json, and is recorded in scene.json's "history" with
+/// what it replaced, so `undo` restores the previous files byte for byte. After moves, adds and
+/// removals the environment around the old and new footprints is re-optimised with the scene's
+/// prior (oracle or sd; a draft's shape prior has nothing to optimise and says so).
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scene directory `generate` wrote.
+    dir: PathBuf,
+    #[command(subcommand)]
+    op: Op,
+    /// Leave renders/ as it is (no Vulkan device needed for moves, adds and removals of a draft).
+    #[arg(long, global = true)]
+    no_render: bool,
+    /// Iterations of the local re-optimisation and of restyling (prior oracle or sd).
+    #[arg(long, global = true, default_value_t = 150)]
+    iterations: u32,
+    /// Render size of the local re-optimisation and restyling views (a multiple of 8).
+    #[arg(long, global = true, default_value_t = 128)]
+    resolution: u32,
+}
+
+#[derive(clap::Subcommand)]
+enum Op {
+    /// Move, turn or scale an instance: `move sofa1 --by 0.5,0 --rotate 90`, or in words:
+    /// `move "move the sofa back half a metre"`, `move chair1 "turn to face the tv"`.
+    ///
+    /// Directions in words are in the object's own frame (forward is where it faces); flags are
+    /// in the world frame (x east, y north, metres). A pose that passes through a wall or another
+    /// object is refused with the reason unless --force. Objects whose relation to the moved one
+    /// breaks (a coffee table in front of a sofa) are placed again by the layout, the others
+    /// pinned, unless --no-follow.
+    Move {
+        /// An instance id, then optionally a sentence; or the sentence alone.
+        #[arg(required = true, num_args = 1..=2)]
+        target: Vec<String>,
+        /// New centre X,Y (metres, world frame).
+        #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
+        to: Option<[f64; 2]>,
+        /// Shift DX,DY (metres, world frame).
+        #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
+        by: Option<[f64; 2]>,
+        /// Turn by DEG degrees (counter-clockwise seen from above).
+        #[arg(long, allow_hyphen_values = true)]
+        rotate: Option<f64>,
+        /// Turn to face another instance.
+        #[arg(long)]
+        face: Option<String>,
+        /// Multiply the size by S.
+        #[arg(long)]
+        scale: Option<f64>,
+        /// Place it even where it collides.
+        #[arg(long)]
+        force: bool,
+        /// Leave related objects where they are.
+        #[arg(long)]
+        no_follow: bool,
+    },
+    /// Add an object: `add "a green armchair" --near sofa1 --anchor SIDE`. Planned from the
+    /// knowledge base, placed by the layout around the objects already there, generated with
+    /// the scene's prior.
+    Add {
+        description: String,
+        /// Place it next to this instance.
+        #[arg(long)]
+        near: Option<String>,
+        /// SIDE, CORNER, CENTER or OTHERS (default: the category's).
+        #[arg(long)]
+        anchor: Option<String>,
+        /// Object-formation iterations with the sd or oracle prior.
+        #[arg(long, default_value_t = 300)]
+        object_iterations: u32,
+    },
+    /// Remove an instance (its object PLY stays while another instance uses it).
+    Remove { id: String },
+    /// Restyle an instance, the environment or the floor: `restyle sofa1 "a red leather sofa"`.
+    ///
+    /// With sd or oracle priors: the paper's MTS editing rule on that part's Gaussians only,
+    /// the rest frozen bit for bit. With the shape prior: recoloured from the description's
+    /// colour and material words, geometry kept.
+    Restyle {
+        /// An instance id, `environment` (walls and ceiling, or sky) or `floor` (or ground).
+        part: String,
+        description: String,
+        /// Oracle prior: the second reference the edit aims at (object frame for an instance,
+        /// world frame for the environment or floor).
+        #[arg(long)]
+        edit_reference: Option<PathBuf>,
+    },
+    /// Animate an instance: `animate car1 "drive forward 3 m then turn left"` writes keyframes
+    /// (position, yaw, scale) to scene.json's timeline.
+    Animate {
+        id: String,
+        motion: String,
+        /// Total length; the steps share it (default: from the words, else 1.5 s a step).
+        #[arg(long)]
+        seconds: Option<f64>,
+        /// Frames per second of the timeline.
+        #[arg(long, default_value_t = 30.0)]
+        fps: f64,
+    },
+    /// Undo the last edit (scene.json, scene.ply and every other file it changed, byte for byte).
+    Undo,
+    /// List the edits in the history.
+    History,
+}
+
+fn parse_xy(s: &str) -> Result<[f64; 2], String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("`{s}`: {e}"))?;
+    match v.as_slice() {
+        [x, y] if x.is_finite() && y.is_finite() => Ok([*x, *y]),
+        _ => Err(format!("`{s}`: expected two numbers such as 0.5,-1")),
+    }
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let dir = &a.dir;
+    if let Some(what) = txn::recover(dir)? {
+        eprintln!("{}: {what}", dir.display());
+    }
+    match a.op {
+        Op::Undo => {
+            let op = dreamscene::edit::undo(dir)?;
+            println!("undid the last edit ({op}) of {}", dir.display());
+            return Ok(());
+        }
+        Op::History => {
+            let s = dreamscene::scene::dir::read_scene(dir)?;
+            if s.history.is_empty() {
+                println!("no edits");
+            }
+            for (i, e) in s.history.iter().enumerate() {
+                let notes: Vec<String> = e["notes"]
+                    .as_array()
+                    .map(|v| v.iter().filter_map(|x| x.as_str().map(String::from)).collect())
+                    .unwrap_or_default();
+                println!(
+                    "{:>3} {}: {}",
+                    i + 1,
+                    e["op"].as_str().unwrap_or("?"),
+                    notes.join("; ")
+                );
+            }
+            return Ok(());
+        }
+        _ => {}
+    }
+    let state = SceneState::open(dir)?;
+    let cfg = ReoptConfig {
+        iterations: a.iterations,
+        resolution: a.resolution,
+        seed: state.scene.seed,
+    };
+    if a.resolution % 8 != 0 || a.resolution < 16 {
+        bail!("--resolution {}: expected a multiple of 8, at least 16", a.resolution);
+    }
+    let mut ctx = None;
+    let mut device = || -> Result<dreamscene::gpu::Context> {
+        if ctx.is_none() {
+            ctx = Some(crate::open_device()?);
+        }
+        Ok(ctx.clone().expect("just set"))
+    };
+    let (mut edit, footprints): (Edit, Vec<_>) = match a.op {
+        Op::Move {
+            target,
+            to,
+            by,
+            rotate,
+            face,
+            scale,
+            force,
+            no_follow,
+        } => {
+            let flags = MoveFlags {
+                to,
+                by,
+                rotate,
+                face,
+                scale,
+            };
+            let any_flag = flags.to.is_some()
+                || flags.by.is_some()
+                || flags.rotate.is_some()
+                || flags.face.is_some()
+                || flags.scale.is_some();
+            let (id, pose, args) = match target.as_slice() {
+                [id] if state.object(id).is_ok() => {
+                    if !any_flag {
+                        bail!("move {id}: say how (--to, --by, --rotate, --face, --scale, or a sentence)");
+                    }
+                    let p = ops::pose_from_flags(&state, id, &flags)?;
+                    (id.clone(), p, json!({"id": id, "flags": format!("{flags:?}")}))
+                }
+                [id, text] | [text, id] if state.object(id).is_ok() => {
+                    let (sid, p) = sentence_pose(&state, text, Some(id))?;
+                    let p = if any_flag {
+                        let mut s2 = state.clone();
+                        s2 = ops::with_pose(&s2, &sid, p)?;
+                        ops::pose_from_flags(&s2, &sid, &flags)?
+                    } else {
+                        p
+                    };
+                    (sid, p, json!({"id": id, "text": text}))
+                }
+                [text] => {
+                    let (sid, p) = sentence_pose(&state, text, None)?;
+                    (sid, p, json!({"text": text}))
+                }
+                _ => bail!(
+                    "move {}: expected an instance id and/or a sentence",
+                    target.join(" ")
+                ),
+            };
+            let (e, fp) = ops::move_object(&state, &id, pose, force, !no_follow, args)?;
+            (e, fp)
+        }
+        Op::Remove { id } => {
+            let (e, fp) = ops::remove_object(&state, &id)?;
+            (e, vec![fp])
+        }
+        Op::Add {
+            description,
+            near,
+            anchor,
+            object_iterations,
+        } => {
+            let anchor = match anchor {
+                Some(s) => Some(parse_anchor(&s.to_uppercase()).with_context(|| {
+                    format!("--anchor {s}: expected SIDE, CORNER, CENTER or OTHERS")
+                })?),
+                None => None,
+            };
+            let needs_gpu = state.scene.prior.kind != "shape";
+            let c = if needs_gpu { Some(device()?) } else { None };
+            let (e, fp) = reopt::add_object(
+                c.as_ref(),
+                &state,
+                &description,
+                near.as_deref(),
+                anchor,
+                object_iterations,
+                &cfg,
+            )?;
+            (e, vec![fp])
+        }
+        Op::Restyle {
+            part,
+            description,
+            edit_reference,
+        } => {
+            let needs_gpu = state.scene.prior.kind != "shape";
+            let c = if needs_gpu { Some(device()?) } else { None };
+            let e = reopt::restyle(
+                c.as_ref(),
+                &state,
+                &part,
+                &description,
+                edit_reference.as_deref(),
+                &cfg,
+            )?;
+            (e, vec![])
+        }
+        Op::Animate {
+            id,
+            motion,
+            seconds,
+            fps,
+        } => {
+            let e = animate::animate(&state, &id, &motion, seconds, fps)?;
+            (e, vec![])
+        }
+        Op::Undo | Op::History => unreachable!("handled above"),
+    };
+    if !footprints.is_empty() {
+        let c = if state.scene.prior.kind != "shape" {
+            Some(device()?)
+        } else {
+            None
+        };
+        let note = reopt::local_environment(c.as_ref(), &state, &mut edit, &footprints, &cfg)?;
+        edit.notes.push(note);
+    }
+    let ctx = if a.no_render { None } else { Some(device()?) };
+    let op = edit.op.clone();
+    let applied = apply_edit(&state, edit, ctx.as_ref())?;
+    for n in &applied.notes {
+        eprintln!("{n}");
+    }
+    println!(
+        "{op}: done; scene.ply {} Gaussians, {} views re-rendered; `dreamscene edit {} undo` takes it back",
+        applied.gaussians,
+        applied.renders,
+        dir.display()
+    );
+    Ok(())
+}
+
+/// The instance and pose a sentence asks for (`default` is "it").
+fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Result<(String, Pose)> {
+    let objects: Vec<(String, String)> = state
+        .scene
+        .objects
+        .iter()
+        .map(|o| (o.id.clone(), o.category.clone()))
+        .collect();
+    let cmd = parse::parse(text, &objects, default).map_err(anyhow::Error::msg)?;
+    let id = cmd
+        .subject
+        .clone()
+        .context("say which object (an id such as sofa1, or \"the sofa\")")?;
+    let pose = animate::final_pose(state, &id, &cmd)?;
+    Ok((id, pose))
+}

@@ -1,0 +1,224 @@
+//! Turning a prepared edit into one transaction (new PLYs, `scene.ply` re-composed, preview
+//! views re-rendered, `layout.json` kept in step, the history entry with its undo record), and
+//! undoing the last one byte for byte.
+use super::state::SceneState;
+use super::txn::{Backup, Txn, HISTORY};
+use super::{EditError, Result};
+use crate::camera::read_cameras;
+use crate::gpu::Context;
+use crate::plan::spec::Layout;
+use crate::scene::dir::SceneFile;
+use crate::splat::ply::write_ply;
+use crate::splat::raster::{GpuGaussians, Rasterizer};
+use crate::splat::Gaussians;
+use serde_json::{json, Value};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// An edit ready to be applied: the new `scene.json` (without its history entry) and the files
+/// that change.
+#[derive(Debug, Clone)]
+pub struct Edit {
+    /// `move`, `add`, `remove`, `restyle`, `animate`.
+    pub op: String,
+    /// What was asked, recorded in the history entry.
+    pub args: Value,
+    pub scene: SceneFile,
+    /// New or changed clouds by path relative to the scene directory.
+    pub files: BTreeMap<String, Gaussians>,
+    /// Other new or changed files (bytes).
+    pub raw: BTreeMap<String, Vec<u8>>,
+    /// Files the edit removes.
+    pub deletes: Vec<String>,
+    /// The new `layout.json` (when the scene has one).
+    pub layout: Option<Layout>,
+    /// What was done, one line each, for the user and the history.
+    pub notes: Vec<String>,
+}
+
+impl Edit {
+    /// An edit of `state` that changes nothing yet.
+    pub fn new(state: &SceneState, op: &str, args: Value) -> Edit {
+        Edit {
+            op: op.to_string(),
+            args,
+            scene: state.scene.clone(),
+            files: BTreeMap::new(),
+            raw: BTreeMap::new(),
+            deletes: vec![],
+            layout: None,
+            notes: vec![],
+        }
+    }
+}
+
+/// What an applied edit did.
+#[derive(Debug, Clone)]
+pub struct Applied {
+    pub notes: Vec<String>,
+    /// Gaussians of the new `scene.ply`.
+    pub gaussians: usize,
+    /// Preview views re-rendered.
+    pub renders: usize,
+    /// The undo record (`history/NNNN`).
+    pub record: String,
+}
+
+fn io(path: &Path) -> impl Fn(std::io::Error) -> EditError + '_ {
+    move |e| EditError::Io(format!("{}: {e}", path.display()))
+}
+
+/// The background of the preview views (as `generate` renders them).
+const BACKGROUND: [f32; 3] = [0.0; 3];
+
+/// Applies `edit` to the scene `state` was opened from, in one transaction. With `ctx`, the
+/// views of `renders/cameras.json` are re-rendered; without, they are left as they were.
+pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Result<Applied> {
+    let dir = state.dir.as_path();
+    let mut next = state.clone();
+    next.scene = edit.scene.clone();
+    let composed = next.compose(&edit.files)?;
+    let mut t = Txn::begin(dir)?;
+    let result = (|| {
+        for (rel, g) in &edit.files {
+            let p = t.stage_path(rel)?;
+            write_ply(&p, g).map_err(io(&p))?;
+        }
+        for (rel, bytes) in &edit.raw {
+            t.write(rel, bytes)?;
+        }
+        for rel in &edit.deletes {
+            t.delete(rel)?;
+        }
+        if let Some(l) = &edit.layout {
+            let text = serde_json::to_string_pretty(l).map_err(|e| EditError::Io(e.to_string()))?;
+            t.write("layout.json", text.as_bytes())?;
+        }
+        let p = t.stage_path("scene.ply")?;
+        write_ply(&p, &composed).map_err(io(&p))?;
+        let renders = match ctx {
+            Some(ctx) => render_previews(ctx, &mut t, &composed)?,
+            None => 0,
+        };
+        let record = format!("{HISTORY}/{:04}", state.scene.history.len() + 1);
+        let backup = t.backup(&record)?;
+        let mut scene = edit.scene.clone();
+        let mut entry = json!({"op": edit.op});
+        if let (Some(e), Some(a)) = (entry.as_object_mut(), edit.args.as_object()) {
+            for (k, v) in a {
+                e.insert(k.clone(), v.clone());
+            }
+            e.insert("notes".into(), json!(edit.notes));
+            e.insert(
+                "undo".into(),
+                serde_json::to_value(&backup).map_err(|e| EditError::Io(e.to_string()))?,
+            );
+        }
+        scene.history.push(entry);
+        let text =
+            serde_json::to_string_pretty(&scene).map_err(|e| EditError::Io(e.to_string()))?;
+        t.write("scene.json", text.as_bytes())?;
+        Ok((renders, record))
+    })();
+    match result {
+        Ok((renders, record)) => {
+            t.commit()?;
+            Ok(Applied {
+                notes: edit.notes,
+                gaussians: composed.len(),
+                renders,
+                record,
+            })
+        }
+        Err(e) => {
+            t.abort();
+            Err(e)
+        }
+    }
+}
+
+/// Renders every view of `renders/cameras.json` (when there is one) into the stage.
+fn render_previews(ctx: &Context, t: &mut Txn, g: &Gaussians) -> Result<usize> {
+    let cams_path = t.dir().join("renders/cameras.json");
+    if !cams_path.is_file() {
+        return Ok(0);
+    }
+    let cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
+    let r = Rasterizer::new(ctx)?;
+    let gg = GpuGaussians::upload(ctx, g)?;
+    for cam in &cams {
+        let img = r.forward(ctx, &gg, cam, BACKGROUND)?.read()?;
+        let p = t.stage_path(&format!("renders/{}.png", cam.img_name))?;
+        save_png(&p, img.width, img.height, &img.color)?;
+    }
+    Ok(cams.len())
+}
+
+/// Writes an RGB image in [0, 1] as a PNG.
+pub fn save_png(path: &Path, w: u32, h: u32, rgb: &[[f32; 3]]) -> Result<()> {
+    let mut buf = image::RgbImage::new(w, h);
+    for (p, c) in buf.pixels_mut().zip(rgb) {
+        *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
+    }
+    buf.save_with_format(path, image::ImageFormat::Png)
+        .map_err(|e| EditError::Io(format!("{}: {e}", path.display())))
+}
+
+/// Undoes the last edit of `dir`: every file it changed comes back from its record byte for
+/// byte (`scene.json` and `scene.ply` included), files it created go, and the record is removed.
+/// Returns the undone entry's op.
+pub fn undo(dir: &Path) -> Result<String> {
+    super::txn::recover(dir)?;
+    let scene = crate::scene::dir::read_scene(dir)?;
+    let Some(last) = scene.history.last() else {
+        return Err(EditError::Bad(format!(
+            "{}: nothing to undo (scene.json has no edit history)",
+            dir.display()
+        )));
+    };
+    let op = last
+        .get("op")
+        .and_then(|v| v.as_str())
+        .unwrap_or("edit")
+        .to_string();
+    let backup: Backup = last
+        .get("undo")
+        .cloned()
+        .and_then(|v| serde_json::from_value(v).ok())
+        .ok_or_else(|| {
+            EditError::Bad("the last history entry has no undo record; it cannot be undone".into())
+        })?;
+    let record = dir.join(&backup.dir);
+    for rel in &backup.saved {
+        if !record.join(rel).is_file() {
+            return Err(EditError::Io(format!(
+                "{}: missing from the undo record; it cannot be undone",
+                record.join(rel).display()
+            )));
+        }
+    }
+    let mut t = Txn::begin(dir)?;
+    let staged = (|| {
+        for rel in &backup.saved {
+            let p = t.stage_path(rel)?;
+            let src = record.join(rel);
+            if std::fs::hard_link(&src, &p).is_err() {
+                std::fs::copy(&src, &p).map_err(io(&src))?;
+            }
+        }
+        for rel in &backup.created {
+            t.delete(rel)?;
+        }
+        t.cleanup_dir(&backup.dir)
+    })();
+    match staged {
+        Ok(()) => {
+            t.commit()?;
+            Ok(op)
+        }
+        Err(e) => {
+            t.abort();
+            Err(e)
+        }
+    }
+}

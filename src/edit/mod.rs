@@ -1,0 +1,44 @@
+//! Editing a generated scene in place (paper §III-E): move, add, remove, restyle and animate
+//! instances, and undo. Every edit is one transaction ([`txn`]): the changed files are staged,
+//! the ones they replace kept in `history/NNNN/` for undo, `scene.ply` re-composed, the preview
+//! views in `renders/` re-rendered, and the edit recorded in `scene.json`'s `history`; then
+//! everything is put in place at once. The language of plain commands is [`parse`]; the
+//! timeline maths live in [`crate::scene::timeline`].
+pub mod animate;
+pub mod commit;
+pub mod ops;
+pub mod parse;
+pub mod reopt;
+pub mod state;
+pub mod txn;
+
+pub use commit::{apply_edit, undo, Applied, Edit};
+pub use state::SceneState;
+
+/// Why an edit cannot be made. Every message is one line naming what is wrong.
+#[derive(Debug, thiserror::Error)]
+pub enum EditError {
+    /// The request itself: an unknown id, a sentence that says nothing, a bad value.
+    #[error("{0}")]
+    Bad(String),
+    /// A move or add that would collide, with the reasons (`--force` overrides).
+    #[error("refused: {0} (nothing changed; --force places it anyway)")]
+    Collision(String),
+    #[error("{0}")]
+    Io(String),
+    #[error(transparent)]
+    Scene(#[from] crate::scene::dir::SceneError),
+    #[error(transparent)]
+    Ply(#[from] crate::splat::ply::PlyError),
+    #[error("GPU: {0}")]
+    Gpu(String),
+}
+
+impl From<crate::gpu::GpuError> for EditError {
+    fn from(e: crate::gpu::GpuError) -> Self {
+        EditError::Gpu(e.to_string())
+    }
+}
+
+/// Result alias of the edit layer.
+pub type Result<T, E = EditError> = std::result::Result<T, E>;

@@ -1,0 +1,482 @@
+//! The object edits as changes of `scene.json`: move (with the collision check and the GCP
+//! re-run for the partners of broken relations), remove and add (planned from the knowledge
+//! base, placed by GCP with every present object pinned, built by the shape prior). Host-only:
+//! the local re-optimisation and the renders are the caller's.
+use super::commit::Edit;
+use super::state::SceneState;
+use super::{EditError, Result};
+use crate::plan::check::Box2;
+use crate::plan::gcp::{layout_pinned, LayoutOptions, Pin};
+use crate::plan::kb::KnowledgeBase;
+use crate::plan::spec::{
+    Anchor, ObjectSpec, PlacedBy, Relation, RelationKind, SceneSpec, SceneType,
+};
+use crate::scene::dir::SceneObject;
+use serde_json::json;
+use std::collections::BTreeMap;
+
+/// An instance's transform.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    pub position: [f64; 3],
+    /// Degrees, counter-clockwise about +z.
+    pub yaw: f64,
+    pub scale: [f64; 3],
+}
+
+impl Pose {
+    pub fn of(o: &SceneObject) -> Pose {
+        Pose {
+            position: o.position,
+            yaw: o.yaw,
+            scale: o.scale,
+        }
+    }
+
+    /// The facing direction `(−sin yaw, cos yaw)`.
+    pub fn forward(&self) -> [f64; 2] {
+        let (s, c) = self.yaw.to_radians().sin_cos();
+        [-s, c]
+    }
+
+    /// The object's left (facing turned +90°).
+    pub fn left(&self) -> [f64; 2] {
+        let f = self.forward();
+        [-f[1], f[0]]
+    }
+}
+
+/// The yaw (degrees) that faces direction `d`.
+pub fn yaw_facing(d: [f64; 2]) -> f64 {
+    (-d[0]).atan2(d[1]).to_degrees()
+}
+
+/// `yaw` brought into (−180, 180].
+pub fn wrap_yaw(yaw: f64) -> f64 {
+    let mut y = yaw % 360.0;
+    if y > 180.0 {
+        y -= 360.0;
+    }
+    if y <= -180.0 {
+        y += 360.0;
+    }
+    y
+}
+
+/// What `move ID` asks with flags.
+#[derive(Debug, Clone, Default)]
+pub struct MoveFlags {
+    /// New centre (x, y), world frame.
+    pub to: Option<[f64; 2]>,
+    /// Shift (dx, dy), world frame.
+    pub by: Option<[f64; 2]>,
+    /// Turn by this many degrees (counter-clockwise).
+    pub rotate: Option<f64>,
+    /// Turn to face this instance.
+    pub face: Option<String>,
+    /// Multiply the scale by this.
+    pub scale: Option<f64>,
+}
+
+/// The pose `flags` give instance `id`: position (`--to` then `--by`), then yaw (`--rotate`,
+/// or `--face`), then scale.
+pub fn pose_from_flags(state: &SceneState, id: &str, flags: &MoveFlags) -> Result<Pose> {
+    let o = state.object(id)?;
+    let mut p = Pose::of(o);
+    if let Some([x, y]) = flags.to {
+        p.position[0] = x;
+        p.position[1] = y;
+    }
+    if let Some([dx, dy]) = flags.by {
+        p.position[0] += dx;
+        p.position[1] += dy;
+    }
+    if let Some(r) = flags.rotate {
+        p.yaw = wrap_yaw(p.yaw + r);
+    }
+    if let Some(other) = &flags.face {
+        let t = state.object(other)?;
+        if t.id == id {
+            return Err(EditError::Bad(format!("{id} cannot face itself")));
+        }
+        let d = [t.position[0] - p.position[0], t.position[1] - p.position[1]];
+        p.yaw = wrap_yaw(yaw_facing(d));
+    }
+    if let Some(s) = flags.scale {
+        if !(s.is_finite() && s > 0.0) {
+            return Err(EditError::Bad(format!(
+                "--scale {s}: expected a positive factor"
+            )));
+        }
+        p.scale = p.scale.map(|v| v * s);
+    }
+    let finite = p.position.iter().chain(&p.scale).all(|v| v.is_finite()) && p.yaw.is_finite();
+    if !finite {
+        return Err(EditError::Bad("the new transform is not finite".into()));
+    }
+    Ok(p)
+}
+
+/// `state` with instance `id` at `pose` (its size follows the scale).
+pub fn with_pose(state: &SceneState, id: &str, pose: Pose) -> Result<SceneState> {
+    let mut next = state.clone();
+    let old = Pose::of(state.object(id)?);
+    let o = next
+        .scene
+        .objects
+        .iter_mut()
+        .find(|o| o.id == id)
+        .ok_or_else(|| EditError::Bad(format!("no instance `{id}`")))?;
+    o.position = pose.position;
+    o.yaw = pose.yaw;
+    o.scale = pose.scale;
+    if let Some(s) = next.sizes.get_mut(id) {
+        for a in 0..3 {
+            s[a] *= (pose.scale[a] / old.scale[a]).abs();
+        }
+    }
+    Ok(next)
+}
+
+/// Moves instance `id` to `pose`. Refused with the reasons when it would pass through a wall or
+/// another object (unless `force`). When the move breaks a relation of `spec.json` that held,
+/// and `follow` is set, the partners are placed again by GCP with every other object pinned.
+/// Returns the edit and the footprints that changed (old and new, for the local
+/// re-optimisation).
+pub fn move_object(
+    state: &SceneState,
+    id: &str,
+    pose: Pose,
+    force: bool,
+    follow: bool,
+    args: serde_json::Value,
+) -> Result<(Edit, Vec<Box2>)> {
+    let before = state.object(id)?.clone();
+    let mut next = with_pose(state, id, pose)?;
+    let mut notes = vec![];
+    let problems = next.collisions(id, state);
+    if !problems.is_empty() {
+        if !force {
+            return Err(EditError::Collision(problems.join("; ")));
+        }
+        notes.push(format!("placed despite: {} (--force)", problems.join("; ")));
+    }
+    let mut footprints = vec![state.box_of(&before), next.box_of(next.object(id)?)];
+    notes.insert(
+        0,
+        format!(
+            "{id}: position ({:.2}, {:.2}, {:.2}) -> ({:.2}, {:.2}, {:.2}), yaw {:.1} -> {:.1}, scale {:.3} -> {:.3}",
+            before.position[0],
+            before.position[1],
+            before.position[2],
+            pose.position[0],
+            pose.position[1],
+            pose.position[2],
+            before.yaw,
+            pose.yaw,
+            before.scale[0],
+            pose.scale[0]
+        ),
+    );
+    let broken: Vec<&Relation> = state
+        .relations
+        .iter()
+        .filter(|r| (r.subject == id || r.object == id) && state.relation_holds(r))
+        .filter(|r| !next.relation_holds(r))
+        .collect();
+    if !broken.is_empty() {
+        let partners: Vec<String> = broken
+            .iter()
+            .map(|r| {
+                if r.subject == id {
+                    r.object.clone()
+                } else {
+                    r.subject.clone()
+                }
+            })
+            .collect();
+        if follow {
+            let moved = replace_partners(&next, &partners, &[id])?;
+            for (pid, p) in moved {
+                let old = next.object(&pid)?.clone();
+                let cand = with_pose(&next, &pid, p)?;
+                if !cand.collisions(&pid, &next).is_empty() {
+                    notes.push(format!("{pid} stays: no free pose keeps its relation"));
+                    continue;
+                }
+                footprints.push(next.box_of(&old));
+                next = cand;
+                footprints.push(next.box_of(next.object(&pid)?));
+                notes.push(format!(
+                    "{pid} follows: ({:.2}, {:.2}) -> ({:.2}, {:.2}), yaw {:.1}",
+                    old.position[0], old.position[1], p.position[0], p.position[1], p.yaw
+                ));
+            }
+        }
+        for r in &broken {
+            if !next.relation_holds(r) {
+                notes.push(format!(
+                    "relation no longer holds: {} {:?} {}",
+                    r.subject, r.relation, r.object
+                ));
+            }
+        }
+    }
+    let mut edit = Edit::new(state, "move", args);
+    edit.scene = next.scene.clone();
+    edit.layout = state.layout.as_ref().map(|_| next.current_layout());
+    edit.notes = notes;
+    Ok((edit, footprints))
+}
+
+/// New poses for `free` by GCP with every other instance pinned where it is (`extra` pinned
+/// too, even when listed in `free`). Instances GCP could only place by fallback are left out.
+pub fn replace_partners(
+    state: &SceneState,
+    free: &[String],
+    extra: &[&str],
+) -> Result<Vec<(String, Pose)>> {
+    let (spec, key) = gcp_spec(state, None)?;
+    let mut pins = BTreeMap::new();
+    for o in &state.scene.objects {
+        if !free.contains(&o.id) || extra.contains(&o.id.as_str()) {
+            pins.insert(
+                key[&o.id].clone(),
+                Pin {
+                    position: o.position,
+                    yaw: o.yaw,
+                },
+            );
+        }
+    }
+    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
+        .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
+    let mut out = vec![];
+    for o in &state.scene.objects {
+        if pins.contains_key(&key[&o.id]) {
+            continue;
+        }
+        if let Some(p) = l.objects.iter().find(|p| p.id == key[&o.id]) {
+            if p.placed_by == PlacedBy::Constraint {
+                out.push((
+                    o.id.clone(),
+                    Pose {
+                        position: p.position,
+                        yaw: p.yaw,
+                        scale: o.scale,
+                    },
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// A SceneSpec of the present instances for GCP, one category per instance (its own size and
+/// anchor), keyed so that instance `id` is called `key[id]`; `add` appends one more instance.
+fn gcp_spec(
+    state: &SceneState,
+    add: Option<(&str, [f64; 3], Anchor, Vec<Relation>)>,
+) -> Result<(SceneSpec, BTreeMap<String, String>)> {
+    let mut objects = BTreeMap::new();
+    let mut anchors = BTreeMap::new();
+    let mut key = BTreeMap::new();
+    let mut entries: Vec<(String, [f64; 3], Anchor)> = state
+        .scene
+        .objects
+        .iter()
+        .map(|o| (o.id.clone(), state.sizes[&o.id], state.anchors[&o.id]))
+        .collect();
+    let mut relations = state.relations.clone();
+    if let Some((id, size, anchor, rels)) = add {
+        entries.push((id.to_string(), size, anchor));
+        relations.extend(rels);
+    }
+    for (id, size, anchor) in entries {
+        let cat = format!("{id}_");
+        let inst = format!("{cat}1");
+        let size = size.map(|v| v.max(1e-3));
+        objects.insert(
+            cat,
+            ObjectSpec {
+                number: 1,
+                size,
+                description: id.clone(),
+            },
+        );
+        if anchor != Anchor::Others {
+            let anchor = if anchor == Anchor::Corner && state.scene.scene_type == SceneType::Outdoor
+            {
+                Anchor::Side
+            } else {
+                anchor
+            };
+            anchors.insert(inst.clone(), anchor);
+        }
+        key.insert(id, inst);
+    }
+    let relations = relations
+        .iter()
+        .filter_map(|r| {
+            Some(Relation {
+                subject: key.get(&r.subject)?.clone(),
+                relation: r.relation,
+                object: key.get(&r.object)?.clone(),
+            })
+        })
+        .collect();
+    let spec = SceneSpec {
+        scene_type: state.scene.scene_type,
+        scene_text: state.scene.prompt.clone(),
+        room: Some(crate::plan::spec::Room {
+            size: state.scene.room.size,
+        }),
+        objects,
+        anchors,
+        relations,
+    };
+    Ok((spec, key))
+}
+
+/// Removes instance `id`. Its object PLY goes too unless another instance uses it.
+pub fn remove_object(state: &SceneState, id: &str) -> Result<(Edit, Box2)> {
+    let o = state.object(id)?.clone();
+    let mut edit = Edit::new(state, "remove", json!({"id": id}));
+    edit.scene.objects.retain(|x| x.id != id);
+    let shared = edit.scene.objects.iter().any(|x| x.ply == o.ply);
+    if !shared {
+        edit.deletes.push(o.ply.clone());
+    }
+    if let Some(tl) = &mut edit.scene.timeline {
+        tl.tracks.retain(|t| t.id != id);
+        if tl.tracks.is_empty() {
+            edit.scene.timeline = None;
+        }
+    }
+    let mut next = state.clone();
+    next.scene = edit.scene.clone();
+    next.relations.retain(|r| r.subject != id && r.object != id);
+    edit.layout = state.layout.as_ref().map(|_| next.current_layout());
+    edit.notes.push(format!(
+        "{id} removed ({}{})",
+        o.ply,
+        if shared {
+            " kept: another instance uses it"
+        } else {
+            " removed"
+        }
+    ));
+    Ok((edit, state.box_of(&o)))
+}
+
+/// What `add` plans for a description: category, size, anchor and the description itself.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planned {
+    pub category: String,
+    pub size: [f64; 3],
+    pub anchor: Anchor,
+    pub description: String,
+}
+
+/// Plans one object from `text` with the knowledge base: the longest category name or synonym
+/// it contains (singular or plural).
+pub fn plan_object(text: &str) -> Result<Planned> {
+    let kb = KnowledgeBase::builtin();
+    let lower = text.to_lowercase();
+    let words: Vec<&str> = lower
+        .split(|c: char| !(c.is_alphanumeric() || c == '-'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    let joined = format!(" {} ", words.join(" "));
+    let mut best: Option<(usize, &crate::plan::kb::ObjectKind)> = None;
+    for (name, kind) in kb.names() {
+        let forms = [name.to_string(), format!("{name}s"), format!("{name}es")];
+        if forms.iter().any(|f| joined.contains(&format!(" {f} ")))
+            && best.is_none_or(|b| name.len() > b.0)
+        {
+            best = Some((name.len(), kind));
+        }
+    }
+    let Some((_, kind)) = best else {
+        return Err(EditError::Bad(format!(
+            "\"{text}\": no known object category in it (e.g. \"a floor lamp\", \"an armchair\")"
+        )));
+    };
+    let description = if lower.starts_with("a dslr photo") {
+        text.to_string()
+    } else {
+        format!(
+            "A DSLR photo of {}",
+            text.trim_start_matches(|c: char| c.is_whitespace())
+        )
+    };
+    Ok(Planned {
+        category: kind.category.clone(),
+        size: kind.size,
+        anchor: kind.anchor,
+        description,
+    })
+}
+
+/// The next free instance id of `category` (`chair3` after `chair1`, `chair2`).
+pub fn next_id(state: &SceneState, category: &str) -> String {
+    (1..)
+        .map(|k| format!("{category}{k}"))
+        .find(|id| !state.scene.objects.iter().any(|o| &o.id == id))
+        .expect("unbounded")
+}
+
+/// Places a planned object with GCP against the present ones (all pinned), `near` giving a
+/// NEXT relation and `anchor` overriding the knowledge base's. Returns the new instance's id and
+/// pose, and whether every constraint held.
+pub fn place_new(
+    state: &SceneState,
+    planned: &Planned,
+    near: Option<&str>,
+    anchor: Option<Anchor>,
+) -> Result<(String, Pose, bool)> {
+    if let Some(n) = near {
+        state.object(n)?;
+    }
+    let id = next_id(state, &planned.category);
+    let rels: Vec<Relation> = near
+        .map(|n| Relation {
+            subject: id.clone(),
+            relation: RelationKind::Next,
+            object: n.to_string(),
+        })
+        .into_iter()
+        .collect();
+    let anchor = anchor.unwrap_or(planned.anchor);
+    let (spec, key) = gcp_spec(state, Some((&id, planned.size, anchor, rels)))?;
+    let pins: BTreeMap<String, Pin> = state
+        .scene
+        .objects
+        .iter()
+        .map(|o| {
+            (
+                key[&o.id].clone(),
+                Pin {
+                    position: o.position,
+                    yaw: o.yaw,
+                },
+            )
+        })
+        .collect();
+    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
+        .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
+    let p = l
+        .objects
+        .iter()
+        .find(|p| p.id == key[&id])
+        .ok_or_else(|| EditError::Bad("the layout dropped the new object".into()))?;
+    Ok((
+        id,
+        Pose {
+            position: p.position,
+            yaw: p.yaw,
+            scale: [1.0; 3],
+        },
+        p.placed_by == PlacedBy::Constraint,
+    ))
+}

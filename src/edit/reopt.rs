@@ -1,0 +1,833 @@
+//! The edits that need the scene's prior: the local re-optimisation of the environment around
+//! changed footprints, adding an object (generated with the object pipeline), and restyling a
+//! part (the paper's MTS editing rule, ε(y_edit) − ε(y), on that part's Gaussians alone).
+//!
+//! Priors by the scene's `prior.kind`: `shape` (a draft: no optimisation; objects are built and
+//! recoloured from colour and material words), `sd` (Stable Diffusion from `prior.models` or
+//! `DREAMSCENE_MODELS`), `oracle` (the reference scene directory in `prior.models`: its objects
+//! placed where the edited scene has them, and its environment, are what the views should show;
+//! for restyling, a second reference is the target).
+use super::commit::Edit;
+use super::ops::{place_new, plan_object, Pose};
+use super::state::SceneState;
+use super::{EditError, Result};
+use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
+use crate::camera::scene::{valid_viewpoint, SceneBox};
+use crate::camera::Camera;
+use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON};
+use crate::diffusion::model::Codec;
+use crate::diffusion::target::{Guide, Rule};
+use crate::generate::object::{
+    formation_trainer, generate_object, guided_iteration, subset, GuidedView, ObjectConfig,
+};
+use crate::generate::prior::{OraclePrior, Prior, PriorView, SdPrior};
+use crate::generate::progress::Progress;
+use crate::generate::scene::object_ply;
+use crate::generate::scene_stages::stage_fit;
+use crate::gpu::Context;
+use crate::plan::check::Box2;
+use crate::plan::spec::Anchor;
+use crate::scene::compose::{merge, pad_sh, place};
+use crate::scene::dir::SceneObject;
+use crate::shape::{self, ShapeOptions};
+use crate::splat::train::{FitConfig, Trainer, View};
+use crate::splat::Gaussians;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use serde_json::json;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+/// Settings of the prior-driven edits.
+#[derive(Debug, Clone, Copy)]
+pub struct ReoptConfig {
+    /// Guided iterations (local environment, restyle).
+    pub iterations: u32,
+    /// Square render size of their views (a multiple of 8).
+    pub resolution: u32,
+    pub seed: u64,
+}
+
+impl Default for ReoptConfig {
+    fn default() -> Self {
+        ReoptConfig {
+            iterations: 150,
+            resolution: 128,
+            seed: 0,
+        }
+    }
+}
+
+/// Footprints are grown by this much to find the environment they hid (metres).
+pub const MARGIN: f64 = 0.3;
+/// Environment Gaussians below this height are the floor (or ground).
+pub const FLOOR_Z: f32 = 0.05;
+/// Views of the local re-optimisation per footprint, and views per iteration.
+const VIEWS_PER_FOOTPRINT: usize = 12;
+const BATCH: usize = 4;
+/// Passes of the reconstructive fit that follows the guided iterations.
+const RECON_PASSES: u32 = 6;
+
+/// The scene's prior, as the edits use it.
+enum ScenePrior {
+    Shape,
+    Sd(PathBuf),
+    Oracle(PathBuf),
+}
+
+fn scene_prior(state: &SceneState) -> Result<ScenePrior> {
+    let p = &state.scene.prior;
+    match p.kind.as_str() {
+        "shape" => Ok(ScenePrior::Shape),
+        "sd" => p
+            .models
+            .clone()
+            .or_else(|| std::env::var("DREAMSCENE_MODELS").ok())
+            .map(|m| ScenePrior::Sd(PathBuf::from(m)))
+            .ok_or_else(|| {
+                EditError::Bad(
+                    "the scene's prior is sd but no model directory is known (set DREAMSCENE_MODELS)"
+                        .into(),
+                )
+            }),
+        "oracle" => p
+            .models
+            .clone()
+            .map(|m| ScenePrior::Oracle(PathBuf::from(m)))
+            .ok_or_else(|| {
+                EditError::Bad("the scene's oracle prior names no reference directory".into())
+            }),
+        k => Err(EditError::Bad(format!("unknown prior kind `{k}` in scene.json"))),
+    }
+}
+
+fn need(ctx: Option<&Context>) -> Result<&Context> {
+    ctx.ok_or_else(|| EditError::Gpu("this edit needs a Vulkan device".into()))
+}
+
+fn gen(e: crate::generate::object::GenError) -> EditError {
+    EditError::Gpu(e.to_string())
+}
+
+fn open_sd(models: &std::path::Path, prompt: &str, edit: Option<&str>) -> Result<SdPrior> {
+    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default())
+        .map_err(EditError::Bad)?;
+    Ok(SdPrior::new(sd, prompt, edit))
+}
+
+/// The oracle's world for the edited scene: the reference's object PLYs (by category; the
+/// scene's own where the reference has none) placed as `scene` places its instances, and the
+/// reference's environment.
+fn oracle_world(state: &SceneState, refdir: &std::path::Path, edit: &Edit) -> Result<Gaussians> {
+    let mut parts = vec![];
+    for o in &edit.scene.objects {
+        let r = refdir.join(object_ply(&o.category));
+        let g = if r.is_file() {
+            crate::splat::ply::read_ply(&r)?
+        } else {
+            state.load(&o.ply, &edit.files)?
+        };
+        parts.push(place(&g, &o.placement()));
+    }
+    let env = crate::scene::dir::read_scene(refdir)?
+        .environment
+        .map(|e| e.ply)
+        .unwrap_or_else(|| "environment.ply".into());
+    parts.push(crate::splat::ply::read_ply(&refdir.join(env))?);
+    Ok(merge(&parts))
+}
+
+/// Cameras around footprint `b`: a ring at 1.3 to 1.6 m height, looking at the footprint's
+/// centre on the floor, kept inside the room and out of the objects.
+pub fn footprint_cameras(scene: &SceneBox, b: &Box2, count: usize, res: u32) -> Vec<Camera> {
+    let reach = b.half[0].hypot(b.half[1]);
+    let mut out = vec![];
+    let mut k = 0;
+    while out.len() < count && k < count * 8 {
+        let a = k as f64 * 2.399_963; // golden angle: spread over the ring
+        let r = (reach + 1.0) * (1.0 + 0.25 * ((k % 3) as f64));
+        let h = 1.3 + 0.15 * ((k % 3) as f64);
+        let eye = [b.c[0] + r * a.cos(), b.c[1] + r * a.sin(), h];
+        k += 1;
+        if !valid_viewpoint(scene, eye) {
+            continue;
+        }
+        let target = [b.c[0], b.c[1], 0.15];
+        let mut cam = Camera::look_at(eye, target, [0.0, 0.0, 1.0], res, res, 1.0);
+        cam.id = out.len() as u32;
+        cam.img_name = format!("local_{}", out.len());
+        out.push(cam);
+    }
+    out
+}
+
+/// Re-optimises the environment around `footprints` (old and new places of moved, added or
+/// removed objects) with the scene's prior: the environment Gaussians inside the footprints
+/// grown by `MARGIN` are trained, with MTS from cameras around them and then a reconstructive
+/// fit, everything else frozen and written back bit for bit. Puts the new `environment.ply`
+/// into `edit` and says what was done.
+pub fn local_environment(
+    ctx: Option<&Context>,
+    state: &SceneState,
+    edit: &mut Edit,
+    footprints: &[Box2],
+    cfg: &ReoptConfig,
+) -> Result<String> {
+    let prior = scene_prior(state)?;
+    if let ScenePrior::Shape = prior {
+        return Ok(
+            "environment: draft (shape prior) — its initial cloud already covers the floor \
+                   and walls under every footprint; nothing to re-optimise (scenes generated with \
+                   the sd or oracle prior are re-optimised locally)"
+                .into(),
+        );
+    }
+    let Some(env_ref) = edit.scene.environment.clone() else {
+        return Ok("environment: none in this scene; nothing to re-optimise".into());
+    };
+    let ctx = need(ctx)?;
+    let env = state.load(&env_ref.ply, &edit.files)?;
+    let grown: Vec<Box2> = footprints
+        .iter()
+        .map(|b| Box2 {
+            half: [b.half[0] + MARGIN, b.half[1] + MARGIN],
+            ..*b
+        })
+        .collect();
+    let region: Vec<bool> = env
+        .means
+        .iter()
+        .map(|m| grown.iter().any(|b| b.contains([m[0] as f64, m[1] as f64])))
+        .collect();
+    let n_region = region.iter().filter(|r| **r).count();
+    if n_region == 0 {
+        return Ok("environment: no Gaussians under the footprints; nothing to re-optimise".into());
+    }
+    // [objects | environment outside | environment inside], only the last part trained.
+    let mut next = state.clone();
+    next.scene = edit.scene.clone();
+    let objects: Vec<Gaussians> = {
+        let mut loaded: BTreeMap<String, Gaussians> = BTreeMap::new();
+        let mut out = vec![];
+        for o in &next.scene.objects {
+            if !loaded.contains_key(&o.ply) {
+                loaded.insert(o.ply.clone(), next.load(&o.ply, &edit.files)?);
+            }
+            out.push(place(&loaded[&o.ply], &o.placement()));
+        }
+        out
+    };
+    let outside = subset(&env, &region.iter().map(|r| !r).collect::<Vec<_>>());
+    let inside = subset(&env, &region);
+    let mut parts = objects;
+    parts.push(outside);
+    parts.push(inside);
+    let cloud = merge(&parts);
+    let n = cloud.len() as u32;
+    let first = n - n_region as u32;
+    let layout = next.current_layout();
+    let sb = SceneBox::from_layout(&layout);
+    let mut cams = vec![];
+    for b in footprints {
+        cams.extend(footprint_cameras(
+            &sb,
+            b,
+            VIEWS_PER_FOOTPRINT,
+            cfg.resolution,
+        ));
+    }
+    if cams.is_empty() {
+        return Ok("environment: no camera fits around the footprints; left as it was".into());
+    }
+    let text = format!(
+        "{}, 4k, 8k, best quality, ultra-detailed, highres",
+        state.scene.prompt
+    );
+    let mut prior: Box<dyn Prior> = match &prior {
+        ScenePrior::Oracle(dir) => {
+            let world = oracle_world(state, dir, edit)?;
+            Box::new(OraclePrior::new(ctx, &world, None).map_err(EditError::Gpu)?)
+        }
+        ScenePrior::Sd(m) => Box::new(open_sd(m, &text, None)?),
+        ScenePrior::Shape => unreachable!("returned above"),
+    };
+    let iters = cfg.iterations;
+    let mut guide = Guide::new(
+        Rule::Mts { m: 4 },
+        MtsRange {
+            period: iters.max(1),
+            ..SCENE_FLOOR
+        },
+        MtsSettings::default(),
+        Codec::Fast,
+        cfg.seed ^ 0x10ca1,
+    );
+    let mut t = Trainer::guided(ctx, &cloud, stage_fit(iters.max(1), cfg.seed), 1.0)?;
+    t.trainable = Some(first..n);
+    let mut progress = Progress::new(iters as u64, false);
+    let mut loss = 0.0;
+    while t.iteration() < iters {
+        let step = t.iteration() as usize;
+        let views: Vec<GuidedView> = (0..BATCH)
+            .map(|b| GuidedView {
+                camera: cams[(step * BATCH + b) % cams.len()].clone(),
+                background: [1.0; 3],
+                azimuth: 0.0,
+                elevation: -30.0,
+            })
+            .collect();
+        loss = guided_iteration(&mut t, prior.as_mut(), &mut guide, &views, Some(first..n))
+            .map_err(gen)?
+            .loss;
+        progress.update(
+            t.iteration() as u64,
+            &format!("local environment loss {loss:.5}"),
+        );
+    }
+    progress.finish();
+    let mut cloud = t.gaussians()?;
+    drop(t);
+    // Reconstructive: the views once into pseudo-ground truth, then fitted.
+    let mut pg = Guide::new(
+        Rule::PseudoGt,
+        SCENE_RECON,
+        MtsSettings::default(),
+        Codec::Fast,
+        cfg.seed ^ 0x3ec0,
+    );
+    let mut maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
+    let mut views = vec![];
+    for cam in &cams {
+        let bv = maker.render_view(cam, [1.0; 3])?;
+        let target = prior
+            .target(
+                &mut pg,
+                &PriorView {
+                    camera: cam,
+                    render: &bv.color,
+                    background: [1.0; 3],
+                    azimuth: 0.0,
+                    elevation: -30.0,
+                },
+                0,
+            )
+            .map_err(EditError::Gpu)?;
+        views.push(View {
+            camera: cam.clone(),
+            pixels: target,
+        });
+    }
+    drop(maker);
+    let steps = RECON_PASSES * views.len() as u32;
+    let fit = FitConfig {
+        background: [1.0; 3],
+        ..stage_fit(steps, cfg.seed ^ 3)
+    };
+    let mut t = Trainer::new(ctx, &cloud, views, fit)?;
+    t.trainable = Some(first..n);
+    let mut psnr = 0.0;
+    while t.iteration() < steps {
+        psnr = t.step()?.psnr;
+    }
+    cloud = t.gaussians()?;
+    // Write the trained part back into the environment, in its order; the rest as it was.
+    let trained = subset(&cloud, &(0..n).map(|i| i >= first).collect::<Vec<_>>());
+    let trained = pad_sh(&trained, env.sh_degree);
+    let mut out = env.clone();
+    let k3 = out.coeffs() * 3;
+    let mut j = 0;
+    for (i, inside) in region.iter().enumerate() {
+        if *inside {
+            out.means[i] = trained.means[j];
+            out.scales[i] = trained.scales[j];
+            out.rotations[i] = trained.rotations[j];
+            out.opacities[i] = trained.opacities[j];
+            out.sh[i * k3..(i + 1) * k3].copy_from_slice(&trained.sh[j * k3..(j + 1) * k3]);
+            j += 1;
+        }
+    }
+    edit.files.insert(env_ref.ply.clone(), out);
+    Ok(format!(
+        "environment: {n_region} Gaussians around {} footprint(s) re-optimised with the {} prior \
+         ({iters} MTS iterations from {} views, last loss {loss:.4}; reconstructive fit PSNR \
+         {psnr:.1} dB); the rest unchanged",
+        footprints.len(),
+        state.scene.prior.kind,
+        cams.len()
+    ))
+}
+
+/// Adds an object from a description: planned from the knowledge base, placed by GCP around
+/// the present objects (`near`: NEXT to that instance), generated with the scene's prior (shape:
+/// the shape prior; sd or oracle: Formation Pattern Sampling for `object_iterations`). Refused
+/// when no pose is free of collisions.
+pub fn add_object(
+    ctx: Option<&Context>,
+    state: &SceneState,
+    text: &str,
+    near: Option<&str>,
+    anchor: Option<Anchor>,
+    object_iterations: u32,
+    cfg: &ReoptConfig,
+) -> Result<(Edit, Box2)> {
+    let planned = plan_object(text)?;
+    let (id, pose, all_ok) = place_new(state, &planned, near, anchor)?;
+    // The new instance in a state of its own, for the collision check and the layout.
+    let mut next = state.clone();
+    let mut rel = object_ply(&planned.category);
+    if state.dir.join(&rel).exists() || state.scene.objects.iter().any(|o| o.ply == rel) {
+        rel = format!(
+            "objects/{}.ply",
+            id.replace(|c: char| !c.is_alphanumeric(), "_")
+        );
+    }
+    next.scene.objects.push(SceneObject {
+        id: id.clone(),
+        category: planned.category.clone(),
+        ply: rel.clone(),
+        position: pose.position,
+        yaw: pose.yaw,
+        scale: pose.scale,
+    });
+    next.sizes.insert(id.clone(), planned.size);
+    next.anchors
+        .insert(id.clone(), anchor.unwrap_or(planned.anchor));
+    if let Some(n) = near {
+        next.relations.push(crate::plan::spec::Relation {
+            subject: id.clone(),
+            relation: crate::plan::spec::RelationKind::Next,
+            object: n.to_string(),
+        });
+    }
+    let empty = {
+        let mut s = next.clone();
+        s.scene.objects.pop();
+        s
+    };
+    let problems = next.collisions(&id, &empty);
+    if !problems.is_empty() {
+        return Err(EditError::Collision(format!(
+            "no free place for {id}: {}",
+            problems.join("; ")
+        )));
+    }
+    let init = shape::build(
+        &planned.category,
+        planned.size,
+        &planned.description,
+        &ShapeOptions {
+            gaussians: None,
+            seed: state.scene.seed,
+        },
+    )
+    .map_err(|e| EditError::Bad(e.to_string()))?;
+    let frame = ObjectFrame { size: planned.size };
+    let ocfg = ObjectConfig {
+        iterations: object_iterations,
+        resolution: cfg.resolution,
+        sh_degree: 1,
+        recon_views: 12,
+        recon_passes: 8,
+        checkpoint_every: 0,
+        seed: cfg.seed,
+        ..ObjectConfig::default()
+    };
+    let (g, how) = match scene_prior(state)? {
+        ScenePrior::Shape => (init, "shape prior".to_string()),
+        ScenePrior::Sd(m) => {
+            let mut p = open_sd(&m, &planned.description, None)?;
+            let mut pr = Progress::new(0, false);
+            let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)
+                .map_err(gen)?;
+            (g, format!("sd prior, {object_iterations} iterations"))
+        }
+        ScenePrior::Oracle(dir) => {
+            let r = dir.join(object_ply(&planned.category));
+            if !r.is_file() {
+                return Err(EditError::Bad(format!(
+                    "the oracle's reference scene has no {} to generate a {} from",
+                    r.display(),
+                    planned.category
+                )));
+            }
+            let reference = crate::splat::ply::read_ply(&r)?;
+            let ctx = need(ctx)?;
+            let mut p = OraclePrior::new(ctx, &reference, None).map_err(EditError::Gpu)?;
+            let mut pr = Progress::new(0, false);
+            let (g, _) =
+                generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr).map_err(gen)?;
+            (g, format!("oracle prior, {object_iterations} iterations"))
+        }
+    };
+    let mut edit = Edit::new(
+        state,
+        "add",
+        json!({"id": id, "description": text, "near": near, "anchor": anchor.map(|a| format!("{a:?}").to_uppercase())}),
+    );
+    edit.scene = next.scene.clone();
+    edit.layout = state.layout.as_ref().map(|_| next.current_layout());
+    edit.notes.push(format!(
+        "{id} ({}, {:.2} x {:.2} x {:.2} m) added at ({:.2}, {:.2}), yaw {:.0}{}; {} Gaussians by the {how} in {rel}",
+        planned.category,
+        planned.size[0],
+        planned.size[1],
+        planned.size[2],
+        pose.position[0],
+        pose.position[1],
+        pose.yaw,
+        if all_ok { "" } else { " (not every constraint could hold)" },
+        g.len()
+    ));
+    edit.files.insert(rel, g);
+    let b = next.box_of(next.object(&id)?);
+    Ok((edit, b))
+}
+
+/// Which part a restyle names.
+enum Part {
+    Instance(SceneObject),
+    Environment,
+    Floor,
+}
+
+/// The editing prior of the oracle: ε(y) is the exact noise toward the current render (y
+/// describes what the part looks like now), ε(y_edit) the noise toward the render of the second
+/// reference; so ε(y_edit) − ε(y) pulls the part from what it is to the second reference and
+/// vanishes there.
+struct EditOracle {
+    inner: OraclePrior,
+    sched: crate::diffusion::schedule::Schedule,
+}
+
+struct EditPredictor<'a> {
+    sched: &'a crate::diffusion::schedule::Schedule,
+    current: &'a [f32],
+    target: &'a [f32],
+}
+
+impl crate::diffusion::guidance::NoisePredictor for EditPredictor<'_> {
+    fn predict(
+        &mut self,
+        x: &[f32],
+        t: u32,
+        conds: &[crate::diffusion::guidance::Cond],
+    ) -> std::result::Result<Vec<Vec<f32>>, String> {
+        use crate::diffusion::guidance::Cond;
+        let ab = self.sched.alpha_bar(t as i64);
+        let (sa, sn) = (ab.sqrt(), (1.0 - ab).max(1e-12).sqrt());
+        let toward = |z: &[f32]| -> Vec<f32> {
+            x.iter()
+                .zip(z)
+                .map(|(xt, zs)| ((*xt as f64 - sa * *zs as f64) / sn) as f32)
+                .collect()
+        };
+        Ok(conds
+            .iter()
+            .map(|c| match c {
+                Cond::Positive | Cond::Negative => toward(self.current),
+                Cond::Edit => toward(self.target),
+                Cond::Null => vec![0.0; x.len()],
+            })
+            .collect())
+    }
+}
+
+impl Prior for EditOracle {
+    fn kind(&self) -> &'static str {
+        "oracle"
+    }
+    fn target(
+        &mut self,
+        guide: &mut Guide,
+        view: &PriorView,
+        step: u32,
+    ) -> std::result::Result<Vec<[f32; 3]>, String> {
+        let lat = |img: &[[f32; 3]]| -> Vec<f32> {
+            img.iter()
+                .flat_map(|p| p.iter().map(|v| 2.0 * v - 1.0))
+                .collect()
+        };
+        let target = lat(&self.inner.reference_view(view.camera, view.background)?);
+        let current = lat(view.render);
+        let mut p = EditPredictor {
+            sched: &self.sched,
+            current: &current,
+            target: &target,
+        };
+        let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &current, step)?;
+        Ok(zt
+            .chunks_exact(3)
+            .map(|c| [0, 1, 2].map(|k| 0.5 * (c[k] + 1.0)))
+            .collect())
+    }
+}
+
+/// Restyles an instance, the environment or the floor from a new description. With the sd or
+/// oracle prior: MTS editing on that part's Gaussians only (an instance in its own frame from
+/// orbit views; an instance sharing its PLY with others gets a PLY of its own). With the shape
+/// prior: recoloured from the description's colour and material words.
+pub fn restyle(
+    ctx: Option<&Context>,
+    state: &SceneState,
+    part: &str,
+    description: &str,
+    edit_reference: Option<&std::path::Path>,
+    cfg: &ReoptConfig,
+) -> Result<Edit> {
+    let which = match part {
+        "environment" | "walls" | "sky" => Part::Environment,
+        "floor" | "ground" => Part::Floor,
+        id => Part::Instance(state.object(id)?.clone()),
+    };
+    let mut edit = Edit::new(
+        state,
+        "restyle",
+        json!({"part": part, "description": description}),
+    );
+    let prior = scene_prior(state)?;
+    match which {
+        Part::Instance(o) => {
+            let cloud = state.load(&o.ply, &edit.files)?;
+            let size_scaled = state.sizes[&o.id];
+            let size = [0, 1, 2].map(|a| size_scaled[a] / o.scale[a].abs());
+            let new = match prior {
+                ScenePrior::Shape => {
+                    let (g, note) =
+                        recolour_object(&o.category, size, &cloud, description, state.scene.seed)?;
+                    edit.notes.push(format!("{}: {note}", o.id));
+                    g
+                }
+                other => {
+                    let ctx = need(ctx)?;
+                    let mut p: Box<dyn Prior> = match other {
+                        ScenePrior::Oracle(_) => {
+                            let r = edit_reference.ok_or_else(|| {
+                                EditError::Bad(
+                                    "restyle with the oracle prior needs --edit-reference FILE.ply (the second reference, object frame)".into(),
+                                )
+                            })?;
+                            let g = crate::splat::ply::read_ply(r)?;
+                            Box::new(EditOracle {
+                                inner: OraclePrior::new(ctx, &g, None).map_err(EditError::Gpu)?,
+                                sched: crate::diffusion::schedule::Schedule::new(
+                                    crate::diffusion::schedule::SchedulerConfig::sd21_base(),
+                                )
+                                .map_err(EditError::Bad)?,
+                            })
+                        }
+                        ScenePrior::Sd(m) => {
+                            let before = format!("A DSLR photo of a {}", o.category);
+                            Box::new(open_sd(&m, &before, Some(description))?)
+                        }
+                        ScenePrior::Shape => unreachable!("matched above"),
+                    };
+                    let g = edit_object(ctx, &cloud, size, p.as_mut(), cfg)?;
+                    edit.notes.push(format!(
+                        "{}: MTS editing with the {} prior, {} iterations on its {} Gaussians; the rest of the scene unchanged",
+                        o.id, state.scene.prior.kind, cfg.iterations, g.len()
+                    ));
+                    g
+                }
+            };
+            let shared = state
+                .scene
+                .objects
+                .iter()
+                .any(|x| x.id != o.id && x.ply == o.ply);
+            let rel = if shared {
+                let r = format!(
+                    "objects/{}.ply",
+                    o.id.replace(|c: char| !c.is_alphanumeric(), "_")
+                );
+                for x in &mut edit.scene.objects {
+                    if x.id == o.id {
+                        x.ply = r.clone();
+                    }
+                }
+                edit.notes.push(format!(
+                    "{} now has its own PLY {r} (others keep {})",
+                    o.id, o.ply
+                ));
+                r
+            } else {
+                o.ply.clone()
+            };
+            edit.files.insert(rel, new);
+        }
+        Part::Environment | Part::Floor => {
+            let floor = matches!(which, Part::Floor);
+            let env_ref = edit
+                .scene
+                .environment
+                .clone()
+                .ok_or_else(|| EditError::Bad("the scene has no environment".into()))?;
+            let env = state.load(&env_ref.ply, &edit.files)?;
+            let mask: Vec<bool> = env
+                .means
+                .iter()
+                .map(|m| (m[2] < FLOOR_Z) == floor)
+                .collect();
+            let new = match prior {
+                ScenePrior::Shape => {
+                    let (g, note) = recolour_masked(&env, &mask, description)?;
+                    edit.notes.push(format!("{part}: {note}"));
+                    g
+                }
+                _ => {
+                    return Err(EditError::Bad(format!(
+                        "restyling the {part} with the {} prior is not available in this build (objects are)",
+                        state.scene.prior.kind
+                    )))
+                }
+            };
+            edit.files.insert(env_ref.ply.clone(), new);
+        }
+    }
+    Ok(edit)
+}
+
+/// MTS editing of an object-frame cloud from orbit views: every Gaussian of the part trains.
+fn edit_object(
+    ctx: &Context,
+    cloud: &Gaussians,
+    size: [f64; 3],
+    prior: &mut dyn Prior,
+    cfg: &ReoptConfig,
+) -> Result<Gaussians> {
+    let frame = ObjectFrame { size };
+    let ocfg = ObjectConfig {
+        iterations: cfg.iterations,
+        resolution: cfg.resolution,
+        ..ObjectConfig::default()
+    };
+    let mut t = formation_trainer(ctx, cloud, &frame, &ocfg).map_err(gen)?;
+    let mut guide = Guide::new(
+        Rule::Edit,
+        MtsRange {
+            period: cfg.iterations.max(1),
+            ..crate::diffusion::guidance::OBJECT_MTS
+        },
+        MtsSettings::default(),
+        Codec::Fast,
+        cfg.seed ^ 0xed17,
+    );
+    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ 0x7e57);
+    let ranges = OrbitRanges::default();
+    let mut progress = Progress::new(cfg.iterations as u64, false);
+    while t.iteration() < cfg.iterations {
+        let step = t.iteration();
+        let views: Vec<GuidedView> =
+            random_views(&frame, &ranges, step, BATCH, cfg.resolution, &mut rng)
+                .into_iter()
+                .map(|v| GuidedView {
+                    camera: v.camera,
+                    background: [1.0; 3],
+                    azimuth: v.azimuth,
+                    elevation: v.elevation,
+                })
+                .collect();
+        let r = guided_iteration(&mut t, prior, &mut guide, &views, None).map_err(gen)?;
+        progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
+    }
+    progress.finish();
+    Ok(t.gaussians()?)
+}
+
+/// The shape prior's restyle of an object: its shape prior rebuilt from the new description
+/// (same category, size and seed). When the rebuilt geometry is the object's own (a draft), only
+/// the colours are taken; otherwise the object is tinted toward the description's colour.
+fn recolour_object(
+    category: &str,
+    size: [f64; 3],
+    cloud: &Gaussians,
+    description: &str,
+    seed: u64,
+) -> Result<(Gaussians, String)> {
+    let words: Vec<String> = crate::shape::materials::colour_words(description)
+        .into_iter()
+        .map(|w| w.phrase)
+        .collect();
+    if words.is_empty() {
+        return Err(EditError::Bad(format!(
+            "\"{description}\": no colour or material word; the shape prior can only recolour (a scene generated with --prior sd restyles freely)"
+        )));
+    }
+    let rebuilt = shape::build(
+        category,
+        size,
+        description,
+        &ShapeOptions {
+            gaussians: None,
+            seed,
+        },
+    )
+    .map_err(|e| EditError::Bad(e.to_string()))?;
+    if rebuilt.len() == cloud.len() && rebuilt.means == cloud.means && cloud.sh_degree == 0 {
+        let mut out = cloud.clone();
+        out.sh = rebuilt.sh;
+        return Ok((
+            out,
+            format!(
+                "shape prior: recoloured from the words {} (geometry kept bit for bit)",
+                words.join(", ")
+            ),
+        ));
+    }
+    let mask = vec![true; cloud.len()];
+    let (g, _) = recolour_masked(cloud, &mask, description)?;
+    Ok((
+        g,
+        format!(
+            "shape prior: tinted toward the words {} (geometry kept bit for bit)",
+            words.join(", ")
+        ),
+    ))
+}
+
+/// Tints the Gaussians of `mask` toward the first colour word of `description`, keeping each
+/// one's brightness relative to the masked mean (the pattern stays, its colour changes).
+fn recolour_masked(g: &Gaussians, mask: &[bool], description: &str) -> Result<(Gaussians, String)> {
+    use crate::splat::cloud::SH_C0;
+    let words = crate::shape::materials::colour_words(description);
+    let Some(w) = words.first() else {
+        return Err(EditError::Bad(format!(
+            "\"{description}\": no colour or material word; the shape prior can only recolour (a scene generated with --prior sd restyles freely)"
+        )));
+    };
+    let target = w.rgb;
+    let k3 = g.coeffs() * 3;
+    let colour =
+        |i: usize| -> [f64; 3] { std::array::from_fn(|c| 0.5 + SH_C0 * g.sh[i * k3 + c] as f64) };
+    let (mut sum, mut n) = (0.0, 0usize);
+    for i in (0..g.len()).filter(|&i| mask[i]) {
+        let c = colour(i);
+        sum += (c[0] + c[1] + c[2]) / 3.0;
+        n += 1;
+    }
+    let mean = if n > 0 {
+        (sum / n as f64).max(1e-3)
+    } else {
+        1.0
+    };
+    let mut out = g.clone();
+    for i in (0..g.len()).filter(|&i| mask[i]) {
+        let c = colour(i);
+        let rel = (c[0] + c[1] + c[2]) / 3.0 / mean;
+        for ch in 0..3 {
+            let v = (target[ch] as f64 * rel).clamp(0.0, 1.0);
+            out.sh[i * k3 + ch] = ((v - 0.5) / SH_C0) as f32;
+        }
+    }
+    Ok((
+        out,
+        format!(
+            "shape prior: {n} Gaussians recoloured to \"{}\" ({:.2}, {:.2}, {:.2}), pattern kept",
+            w.phrase, target[0], target[1], target[2]
+        ),
+    ))
+}
+
+/// The pose of an instance, for callers that hold only the scene object.
+pub fn pose(o: &SceneObject) -> Pose {
+    Pose::of(o)
+}

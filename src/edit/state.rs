@@ -1,0 +1,269 @@
+//! What an edit reads of a scene directory and the host-side checks it makes: `scene.json`,
+//! the instances' sizes and anchors (from `layout.json`, else the object PLY's extent), the
+//! relations of `spec.json`, oriented-box collisions against the walls and the other objects,
+//! and composition of a scene whose changed PLYs are still in memory. Host-only.
+use super::EditError;
+use crate::plan::check::{penetration, relation_holds_box, wall_distances, Box2, TOLERANCE};
+use crate::plan::spec::{Anchor, Layout, PlacedBy, PlacedObject, Relation, SceneType};
+use crate::scene::compose::{merge, place};
+use crate::scene::dir::{read_scene, SceneFile, SceneObject};
+use crate::splat::ply::read_ply;
+use crate::splat::Gaussians;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// A scene directory opened for editing.
+#[derive(Debug, Clone)]
+pub struct SceneState {
+    pub dir: PathBuf,
+    pub scene: SceneFile,
+    /// `layout.json`, kept in step with `scene.json` by the edits (absent in hand-made scenes).
+    pub layout: Option<Layout>,
+    /// Relations between instances (`spec.json`'s, those naming present instances).
+    pub relations: Vec<Relation>,
+    /// Size ([w, d, h], metres, scale applied) and anchor of every instance, by id.
+    pub sizes: BTreeMap<String, [f64; 3]>,
+    pub anchors: BTreeMap<String, Anchor>,
+}
+
+impl SceneState {
+    /// Opens `dir` (its `scene.json` checked; sizes from `layout.json` or the object PLYs).
+    pub fn open(dir: &Path) -> Result<SceneState, EditError> {
+        let scene = read_scene(dir)?;
+        let layout: Option<Layout> = std::fs::read_to_string(dir.join("layout.json"))
+            .ok()
+            .and_then(|t| serde_json::from_str(&t).ok());
+        let relations: Vec<Relation> = std::fs::read_to_string(dir.join("spec.json"))
+            .ok()
+            .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+            .and_then(|v| serde_json::from_value(v.get("relations")?.clone()).ok())
+            .unwrap_or_default();
+        let mut sizes = BTreeMap::new();
+        let mut anchors = BTreeMap::new();
+        for o in &scene.objects {
+            let planned = layout
+                .as_ref()
+                .and_then(|l| l.objects.iter().find(|p| p.id == o.id));
+            let size = match planned {
+                Some(p) => p.size,
+                None => {
+                    let g = read_ply(&dir.join(&o.ply))?;
+                    let e = extent(&g);
+                    [0, 1, 2].map(|a| e[a] * o.scale[a].abs())
+                }
+            };
+            sizes.insert(o.id.clone(), size);
+            anchors.insert(o.id.clone(), planned.map_or(Anchor::Others, |p| p.anchor));
+        }
+        let ids: Vec<&str> = scene.objects.iter().map(|o| o.id.as_str()).collect();
+        let relations = relations
+            .into_iter()
+            .filter(|r| ids.contains(&r.subject.as_str()) && ids.contains(&r.object.as_str()))
+            .collect();
+        Ok(SceneState {
+            dir: dir.to_path_buf(),
+            scene,
+            layout,
+            relations,
+            sizes,
+            anchors,
+        })
+    }
+
+    /// The instance `id`, or an error listing the ids there are.
+    pub fn object(&self, id: &str) -> Result<&SceneObject, EditError> {
+        self.scene
+            .objects
+            .iter()
+            .find(|o| o.id == id)
+            .ok_or_else(|| {
+                let ids: Vec<&str> = self.scene.objects.iter().map(|o| o.id.as_str()).collect();
+                EditError::Bad(format!(
+                    "no instance `{id}` in the scene (it has {})",
+                    if ids.is_empty() {
+                        "none".to_string()
+                    } else {
+                        ids.join(", ")
+                    }
+                ))
+            })
+    }
+
+    /// The footprint box of instance `o` at its current transform.
+    pub fn box_of(&self, o: &SceneObject) -> Box2 {
+        let s = self.sizes.get(&o.id).copied().unwrap_or([0.0; 3]);
+        Box2::new(
+            [o.position[0], o.position[1]],
+            o.yaw,
+            [s[0], s[1]],
+            o.position[2],
+            o.position[2] + s[2],
+        )
+    }
+
+    /// The layout of the current scene (positions, yaws and sizes of `scene.json`, anchors kept).
+    pub fn current_layout(&self) -> Layout {
+        let objects = self
+            .scene
+            .objects
+            .iter()
+            .map(|o| {
+                let planned = self
+                    .layout
+                    .as_ref()
+                    .and_then(|l| l.objects.iter().find(|p| p.id == o.id));
+                PlacedObject {
+                    id: o.id.clone(),
+                    category: o.category.clone(),
+                    size: self.sizes[&o.id],
+                    position: o.position,
+                    yaw: o.yaw,
+                    anchor: self.anchors[&o.id],
+                    placed_by: planned.map_or(PlacedBy::Constraint, |p| p.placed_by),
+                }
+            })
+            .collect();
+        let unsatisfied = self
+            .relations
+            .iter()
+            .filter(|r| !self.relation_holds(r))
+            .cloned()
+            .collect();
+        Layout {
+            scene_type: self.scene.scene_type,
+            room: crate::plan::spec::Room {
+                size: self.scene.room.size,
+            },
+            seed: self.layout.as_ref().map_or(self.scene.seed, |l| l.seed),
+            objects,
+            unsatisfied,
+        }
+    }
+
+    /// Whether relation `r` holds between the current instances.
+    pub fn relation_holds(&self, r: &Relation) -> bool {
+        let find = |id: &str| self.scene.objects.iter().find(|o| o.id == id);
+        match (find(&r.subject), find(&r.object)) {
+            (Some(s), Some(o)) => relation_holds_box(&self.box_of(s), r.relation, &self.box_of(o)),
+            _ => true,
+        }
+    }
+
+    /// Why instance `id` at its current transform collides, compared with `before` (its state
+    /// before the edit: a collision already there and not made deeper is not the edit's doing).
+    /// Empty when it is free.
+    pub fn collisions(&self, id: &str, before: &SceneState) -> Vec<String> {
+        let Ok(o) = self.object(id) else {
+            return vec![];
+        };
+        let b = self.box_of(o);
+        let old = before.object(id).ok().map(|p| before.box_of(p));
+        let mut out = vec![];
+        let room = self.scene.room.size;
+        let walls = wall_distances(&b, room);
+        let old_walls = old.map(|ob| wall_distances(&ob, room));
+        let names = match self.scene.scene_type {
+            SceneType::Indoor => [
+                "west wall (x = -W/2)",
+                "east wall (x = +W/2)",
+                "south wall (y = -D/2)",
+                "north wall (y = +D/2)",
+            ],
+            SceneType::Outdoor => [
+                "ground's west edge",
+                "ground's east edge",
+                "ground's south edge",
+                "ground's north edge",
+            ],
+        };
+        for k in 0..4 {
+            let was = old_walls.map_or(0.0, |w| w[k].min(0.0));
+            if walls[k] < -TOLERANCE && walls[k] < was - 1e-6 {
+                out.push(format!(
+                    "{id} would pass {:.2} m through the {}",
+                    -walls[k], names[k]
+                ));
+            }
+        }
+        if b.z1 > room[2] + TOLERANCE {
+            out.push(format!(
+                "{id} would reach {:.2} m, above the {} at {:.2} m",
+                b.z1,
+                if self.scene.scene_type == SceneType::Indoor {
+                    "ceiling"
+                } else {
+                    "sky"
+                },
+                room[2]
+            ));
+        }
+        for other in &self.scene.objects {
+            if other.id == id {
+                continue;
+            }
+            let p = penetration(&b, &self.box_of(other));
+            let was = old
+                .zip(before.object(&other.id).ok())
+                .map_or(0.0, |(ob, op)| {
+                    penetration(&ob, &before.box_of(op)).max(0.0)
+                });
+            if p > TOLERANCE && p > was + 1e-6 {
+                out.push(format!("{id} would overlap {} by {p:.2} m", other.id));
+            }
+        }
+        out
+    }
+
+    /// The merged world-frame cloud of the scene with `overlay`'s clouds (by relative path) in
+    /// place of the files: what `scene.ply` becomes once the overlay is written.
+    pub fn compose(&self, overlay: &BTreeMap<String, Gaussians>) -> Result<Gaussians, EditError> {
+        let mut loaded: BTreeMap<&str, Gaussians> = BTreeMap::new();
+        for o in &self.scene.objects {
+            if !loaded.contains_key(o.ply.as_str()) {
+                loaded.insert(&o.ply, self.load(&o.ply, overlay)?);
+            }
+        }
+        let mut parts: Vec<Gaussians> = self
+            .scene
+            .objects
+            .iter()
+            .map(|o| place(&loaded[o.ply.as_str()], &o.placement()))
+            .collect();
+        if let Some(env) = &self.scene.environment {
+            if !self.scene.stage_pending("environment") {
+                parts.push(self.load(&env.ply, overlay)?);
+            }
+        }
+        Ok(merge(&parts))
+    }
+
+    /// The cloud at `rel`: from `overlay` when it holds it, else read from the directory.
+    pub fn load(
+        &self,
+        rel: &str,
+        overlay: &BTreeMap<String, Gaussians>,
+    ) -> Result<Gaussians, EditError> {
+        if let Some(g) = overlay.get(rel) {
+            return Ok(g.clone());
+        }
+        let path = self.dir.join(rel);
+        if !path.is_file() {
+            return Err(EditError::Bad(format!(
+                "{}: not found (named in scene.json)",
+                path.display()
+            )));
+        }
+        Ok(read_ply(&path)?)
+    }
+}
+
+/// Extent `[w, d, h]` of an object-frame cloud (means): twice the largest |x| and |y|, top z.
+pub fn extent(g: &Gaussians) -> [f64; 3] {
+    let mut e = [0.0f64; 3];
+    for m in &g.means {
+        e[0] = e[0].max(2.0 * (m[0] as f64).abs());
+        e[1] = e[1].max(2.0 * (m[1] as f64).abs());
+        e[2] = e[2].max(m[2] as f64);
+    }
+    e
+}

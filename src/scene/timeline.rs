@@ -1,0 +1,159 @@
+//! 4D timelines (`scene.json`'s `timeline`): an instance with a track takes its transform from
+//! the track's keys at time t, the others keep their static transform. Keys are interpolated
+//! `linear`ly (position, yaw in degrees as stored, so a spin of 720° stays a spin, and scale),
+//! held (`step`) or eased (`smooth`, a smoothstep between keys); before the first key and after
+//! the last the nearest key holds. Host-only.
+use super::compose::Placement;
+use super::dir::{compose_scene, read_scene, SceneError, SceneFile, Timeline, Track};
+use crate::splat::Gaussians;
+use std::path::Path;
+
+/// How a track moves between keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interpolation {
+    Linear,
+    Step,
+    Smooth,
+}
+
+impl Interpolation {
+    /// The interpolation named `name` (`linear`, `step`, `smooth`); an unknown name is linear.
+    pub fn parse(name: &str) -> Interpolation {
+        match name {
+            "step" | "hold" | "constant" => Interpolation::Step,
+            "smooth" | "ease" | "cubic" => Interpolation::Smooth,
+            _ => Interpolation::Linear,
+        }
+    }
+}
+
+/// The transform of `track` at time `t` (seconds). A track without keys gives `None`.
+pub fn sample(track: &Track, t: f64) -> Option<Placement> {
+    let keys = &track.keys;
+    let first = keys.first()?;
+    let last = keys.last()?;
+    let at = |k: &super::dir::Key| Placement {
+        yaw: k.yaw,
+        scale: k.scale,
+        position: k.position,
+    };
+    if !(t > first.t) {
+        return Some(at(first));
+    }
+    if t >= last.t {
+        return Some(at(last));
+    }
+    // The segment [a, b] holding t (keys sorted by time; equal times jump).
+    let j = keys.partition_point(|k| k.t <= t).max(1);
+    let (a, b) = (&keys[j - 1], &keys[j]);
+    let span = b.t - a.t;
+    let u = if span > 0.0 { (t - a.t) / span } else { 1.0 };
+    let u = match Interpolation::parse(&track.interpolation) {
+        Interpolation::Linear => u,
+        Interpolation::Step => 0.0,
+        Interpolation::Smooth => u * u * (3.0 - 2.0 * u),
+    };
+    let mix = |x: f64, y: f64| x + (y - x) * u;
+    Some(Placement {
+        yaw: mix(a.yaw, b.yaw),
+        scale: [0, 1, 2].map(|i| mix(a.scale[i], b.scale[i])),
+        position: [0, 1, 2].map(|i| mix(a.position[i], b.position[i])),
+    })
+}
+
+/// The track of instance `id`, if the timeline has one.
+pub fn track<'a>(timeline: &'a Timeline, id: &str) -> Option<&'a Track> {
+    timeline.tracks.iter().find(|tr| tr.id == id)
+}
+
+/// `scene` with every tracked instance moved to its transform at time `t`.
+pub fn scene_at(scene: &SceneFile, t: f64) -> SceneFile {
+    let mut out = scene.clone();
+    if let Some(tl) = &scene.timeline {
+        for o in &mut out.objects {
+            if let Some(p) = track(tl, &o.id).and_then(|tr| sample(tr, t)) {
+                o.position = p.position;
+                o.yaw = p.yaw;
+                o.scale = p.scale;
+            }
+        }
+    }
+    out
+}
+
+/// The scene's merged world-frame cloud at time `t` (seconds): every instance under its
+/// transform at `t` (its track's, or its static one), then the environment. For a static scene
+/// (no timeline) this is `scene.ply`'s content at any `t`.
+pub fn compose_at(dir: &Path, t: f64) -> Result<Gaussians, SceneError> {
+    let scene = read_scene(dir)?;
+    compose_scene(dir, &scene_at(&scene, t))
+}
+
+/// The times of the frames of a timeline: `0, 1/fps, …` up to and including its duration.
+pub fn frame_times(timeline: &Timeline) -> Vec<f64> {
+    let fps = if timeline.fps > 0.0 {
+        timeline.fps
+    } else {
+        30.0
+    };
+    let n = (timeline.duration.max(0.0) * fps).round() as usize;
+    (0..=n).map(|i| i as f64 / fps).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::dir::Key;
+
+    fn key(t: f64, x: f64, yaw: f64, s: f64) -> Key {
+        Key {
+            t,
+            position: [x, 0.0, 0.0],
+            yaw,
+            scale: [s; 3],
+        }
+    }
+
+    fn tr(interp: &str) -> Track {
+        Track {
+            id: "car1".into(),
+            interpolation: interp.into(),
+            keys: vec![
+                key(0.0, 0.0, 0.0, 1.0),
+                key(2.0, 4.0, 720.0, 2.0),
+                key(3.0, 4.0, 720.0, 1.0),
+            ],
+        }
+    }
+
+    #[test]
+    fn linear_keys_interpolate_and_hold_outside() {
+        let t = tr("linear");
+        let p = sample(&t, 0.5).unwrap();
+        assert!((p.position[0] - 1.0).abs() < 1e-12);
+        assert!((p.yaw - 180.0).abs() < 1e-12, "spins are not wrapped");
+        assert!((p.scale[0] - 1.25).abs() < 1e-12);
+        assert_eq!(sample(&t, -1.0).unwrap().position[0], 0.0);
+        assert_eq!(sample(&t, 9.0).unwrap().scale[0], 1.0);
+        assert!((sample(&t, 2.5).unwrap().scale[2] - 1.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn step_holds_and_smooth_eases() {
+        assert_eq!(sample(&tr("step"), 1.9).unwrap().position[0], 0.0);
+        let s = sample(&tr("smooth"), 0.5).unwrap().position[0];
+        // smoothstep(0.25) = 0.15625 of the way
+        assert!((s - 4.0 * 0.15625).abs() < 1e-12);
+        assert!((sample(&tr("smooth"), 1.0).unwrap().position[0] - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn frame_times_cover_the_duration() {
+        let tl = Timeline {
+            duration: 1.0,
+            fps: 4.0,
+            tracks: vec![],
+        };
+        assert_eq!(frame_times(&tl), vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+    }
+}
