@@ -63,6 +63,8 @@ enum Command {
     /// seconds: each object is its procedural shape prior and the environment its initial
     /// surfaces, with no optimisation.
     Generate(cli::generate::Args),
+    /// Edit a generated scene in place: move, add, remove, restyle or animate objects, or undo.
+    Edit(cli::edit::Args),
     /// Place the objects of a scene spec (spec.json) with graph-based constraint placement.
     ///
     /// Writes layout.json: every instance placed exactly once, collision-free, with the relations
@@ -111,6 +113,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Object(a) => cli::object::run(a),
         Command::Plan(a) => cli::plan::run(a),
         Command::Generate(a) => cli::generate::run(a),
+        Command::Edit(a) => cli::edit::run(a),
         Command::Layout(a) => cli::layout::run(a),
         Command::Export(a) => cli::export::run(a),
         Command::Doctor(a) => cli::doctor::run(a),

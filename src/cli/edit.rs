@@ -174,7 +174,7 @@ pub fn run(a: Args) -> Result<()> {
     let mut ctx = None;
     let mut device = || -> Result<dreamscene::gpu::Context> {
         if ctx.is_none() {
-            ctx = Some(crate::open_device()?);
+            ctx = Some(super::open_device()?);
         }
         Ok(ctx.clone().expect("just set"))
     };

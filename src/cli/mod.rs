@@ -2,6 +2,7 @@
 pub mod bench;
 pub mod demo;
 pub mod doctor;
+pub mod edit;
 pub mod export;
 pub mod fit;
 pub mod generate;
