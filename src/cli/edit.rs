@@ -149,7 +149,11 @@ pub fn run(a: Args) -> Result<()> {
             for (i, e) in s.history.iter().enumerate() {
                 let notes: Vec<String> = e["notes"]
                     .as_array()
-                    .map(|v| v.iter().filter_map(|x| x.as_str().map(String::from)).collect())
+                    .map(|v| {
+                        v.iter()
+                            .filter_map(|x| x.as_str().map(String::from))
+                            .collect()
+                    })
                     .unwrap_or_default();
                 println!(
                     "{:>3} {}: {}",
@@ -169,7 +173,10 @@ pub fn run(a: Args) -> Result<()> {
         seed: state.scene.seed,
     };
     if a.resolution % 8 != 0 || a.resolution < 16 {
-        bail!("--resolution {}: expected a multiple of 8, at least 16", a.resolution);
+        bail!(
+            "--resolution {}: expected a multiple of 8, at least 16",
+            a.resolution
+        );
     }
     let mut ctx = None;
     let mut device = || -> Result<dreamscene::gpu::Context> {
@@ -207,7 +214,11 @@ pub fn run(a: Args) -> Result<()> {
                         bail!("move {id}: say how (--to, --by, --rotate, --face, --scale, or a sentence)");
                     }
                     let p = ops::pose_from_flags(&state, id, &flags)?;
-                    (id.clone(), p, json!({"id": id, "flags": format!("{flags:?}")}))
+                    (
+                        id.clone(),
+                        p,
+                        json!({"id": id, "flags": format!("{flags:?}")}),
+                    )
                 }
                 [id, text] | [text, id] if state.object(id).is_ok() => {
                     let (sid, p) = sentence_pose(&state, text, Some(id))?;

@@ -118,7 +118,7 @@ fn seconds_re() -> &'static Regex {
     static R: OnceLock<Regex> = OnceLock::new();
     R.get_or_init(|| {
         re(&format!(
-            r"\b(?:in|over|for|during|taking|within)\s+({NUM})\s*(?:seconds?|secs?|s)\b|\b({NUM})\s*(?:-\s*)?(?:seconds?|secs?|s)\s+long\b"
+            r"\b(?:in|over|for|during|taking|within)\s+({NUM})\s*(?:seconds?|secs?|s)\b|\b({NUM})\s*(?:-\s*)?(?:seconds?|secs?|s)\s+long\b|\b(?:wait|waits|pause|pauses|stop|stops|stay|stays|rest|rests)\s+({NUM})\s*(?:seconds?|secs?|s)\b"
         ))
     })
 }
@@ -148,10 +148,10 @@ fn metres(caps: &regex::Captures) -> Option<f64> {
 
 /// Degrees of an angle match (turns counted as 360°).
 fn degrees(caps: &regex::Captures) -> Option<f64> {
-    if let Some(w) = caps.get(5) {
+    if let Some(w) = caps.get(4) {
         return number(w.as_str()).map(|n| 360.0 * n);
     }
-    if let Some(q) = caps.get(6) {
+    if let Some(q) = caps.get(5) {
         return Some(if q.as_str() == "quarter" { 90.0 } else { 180.0 });
     }
     let n = number(caps.get(1)?.as_str())?;
@@ -306,7 +306,7 @@ fn step(
     let has = |w: &str| Regex::new(&format!(r"\b(?:{w})\b")).is_ok_and(|r| r.is_match(c));
     let seconds = seconds_re()
         .captures(c)
-        .and_then(|k| number(k.get(1).or(k.get(2))?.as_str()));
+        .and_then(|k| number(k.get(1).or(k.get(2)).or(k.get(3))?.as_str()));
     // Remove the duration so its number is not read as a distance or count.
     let c_owned = seconds_re().replace_all(c, " ").to_string();
     let c = c_owned.as_str();
@@ -336,18 +336,15 @@ fn step(
         return out(Step::Pause);
     }
     // Scale.
-    if has("grow|grows|bigger|larger|enlarge|scale|scaled|shrink|shrinks|smaller|double|halve|size")
-    {
+    if has("grow|grows|big|bigger|large|larger|enlarge|scale|scaled|shrink|shrinks|small|smaller|double|halve|size") {
         let pct = Regex::new(r"(\d+(?:\.\d+)?)\s*(?:%|percent)")
             .ok()
             .and_then(|r| r.captures(c))
             .and_then(|k| k[1].parse::<f64>().ok());
-        let times = Regex::new(&format!(
-            r"\b(?:by|to|x)\s*({NUM})\s*(?:x|times)?\b|\b({NUM})\s*(?:x|times)\b"
-        ))
-        .ok()
-        .and_then(|r| r.captures(c))
-        .and_then(|k| number(k.get(1).or(k.get(2))?.as_str()));
+        let times = Regex::new(&format!(r"\b(?:by|to|x)\s*({NUM})\s*(?:x|times)?\b|\b({NUM})\s*(?:x|times)\b"))
+            .ok()
+            .and_then(|r| r.captures(c))
+            .and_then(|k| number(k.get(1).or(k.get(2))?.as_str()));
         let shrink = has("shrink|shrinks|smaller|halve|reduce");
         let factor = if has("twice|double") {
             2.0
