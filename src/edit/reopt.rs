@@ -18,7 +18,7 @@ use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::{
-    formation_trainer, generate_object, guided_iteration, subset, GuidedView, ObjectConfig,
+    generate_object, guided_iteration, subset, GuidedView, ObjectConfig,
 };
 use crate::generate::prior::{OraclePrior, Prior, PriorView, SdPrior};
 use crate::generate::progress::Progress;
@@ -262,7 +262,7 @@ pub fn local_environment(
         Codec::Fast,
         cfg.seed ^ 0x10ca1,
     );
-    let mut t = Trainer::guided(ctx, &cloud, stage_fit(iters.max(1), cfg.seed), 1.0)?;
+    let mut t = Trainer::guided(ctx, &cloud, local_fit(iters.max(1), cfg.seed), 1.0)?;
     t.trainable = Some(first..n);
     let mut progress = Progress::new(iters as u64, false);
     let mut loss = 0.0;
@@ -321,7 +321,7 @@ pub fn local_environment(
     let steps = RECON_PASSES * views.len() as u32;
     let fit = FitConfig {
         background: [1.0; 3],
-        ..stage_fit(steps, cfg.seed ^ 3)
+        ..local_fit(steps, cfg.seed ^ 3)
     };
     let mut t = Trainer::new(ctx, &cloud, views, fit)?;
     t.trainable = Some(first..n);
@@ -355,6 +355,34 @@ pub fn local_environment(
         state.scene.prior.kind,
         cams.len()
     ))
+}
+
+/// The scene stages' learning rates with a faster colour rate: a local edit runs for a few
+/// hundred steps, not thousands, and its Gaussians start far from their colour (hidden floor).
+fn local_fit(iterations: u32, seed: u64) -> FitConfig {
+    FitConfig {
+        lr_sh: 0.05,
+        lr_sh_final: Some(0.02),
+        ..stage_fit(iterations, seed)
+    }
+}
+
+/// Appearance editing: colours fast, geometry refined slowly, no densification (the part keeps
+/// its Gaussians one for one).
+fn restyle_fit(iterations: u32, seed: u64) -> FitConfig {
+    FitConfig {
+        iterations,
+        lr_means: (8e-4 / 3.5, 1.6e-5 / 3.5),
+        lr_sh: 0.05,
+        lr_sh_final: Some(0.01),
+        lr_scales: 0.002,
+        lr_rotations: 0.001,
+        lr_opacities: 0.02,
+        densify: false,
+        opacity_reset: 0.0,
+        seed,
+        ..FitConfig::default()
+    }
 }
 
 /// Adds an object from a description: planned from the knowledge base, placed by GCP around
@@ -695,12 +723,12 @@ fn edit_object(
     cfg: &ReoptConfig,
 ) -> Result<Gaussians> {
     let frame = ObjectFrame { size };
-    let ocfg = ObjectConfig {
-        iterations: cfg.iterations,
-        resolution: cfg.resolution,
-        ..ObjectConfig::default()
-    };
-    let mut t = formation_trainer(ctx, cloud, &frame, &ocfg).map_err(gen)?;
+    let mut t = Trainer::guided(
+        ctx,
+        cloud,
+        restyle_fit(cfg.iterations, cfg.seed),
+        frame.extent(),
+    )?;
     let mut guide = Guide::new(
         Rule::Edit,
         MtsRange {
