@@ -81,6 +81,14 @@ fn check(text: &str, default: Option<&str>, subject: &str, want: &[(Step, Option
     }
 }
 
+/// A sentence, the instance the caller names, who should move, and the steps meant.
+type Case = (
+    &'static str,
+    Option<&'static str>,
+    &'static str,
+    Vec<(Step, Option<f64>)>,
+);
+
 fn shift(forward: f64, left: f64) -> (Step, Option<f64>) {
     (Step::Shift { forward, left }, None)
 }
@@ -108,7 +116,7 @@ fn place(t: &str, relation: RelationKind) -> (Step, Option<f64>) {
 
 #[test]
 fn move_sentences_mean_what_they_say() {
-    let sentences: Vec<(&str, Option<&str>, &str, Vec<(Step, Option<f64>)>)> = vec![
+    let sentences: Vec<Case> = vec![
         (
             "move the sofa back half a metre",
             None,
@@ -281,7 +289,7 @@ fn move_sentences_mean_what_they_say() {
 
 #[test]
 fn motion_sentences_mean_what_they_say() {
-    let seq: Vec<(&str, Option<&str>, &str, Vec<(Step, Option<f64>)>)> = vec![
+    let seq: Vec<Case> = vec![
         (
             "the car drives forward 3 m",
             None,

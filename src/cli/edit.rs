@@ -279,7 +279,7 @@ pub fn run(a: Args) -> Result<()> {
         } => {
             let needs_gpu = state.scene.prior.kind != "shape";
             let c = if needs_gpu { Some(device()?) } else { None };
-            let e = reopt::restyle(
+            let e = dreamscene::edit::restyle::restyle(
                 c.as_ref(),
                 &state,
                 &part,

@@ -9,6 +9,7 @@ pub mod commit;
 pub mod ops;
 pub mod parse;
 pub mod reopt;
+pub mod restyle;
 pub mod state;
 pub mod txn;
 

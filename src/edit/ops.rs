@@ -131,8 +131,8 @@ pub fn with_pose(state: &SceneState, id: &str, pose: Pose) -> Result<SceneState>
     o.yaw = pose.yaw;
     o.scale = pose.scale;
     if let Some(s) = next.sizes.get_mut(id) {
-        for a in 0..3 {
-            s[a] *= (pose.scale[a] / old.scale[a]).abs();
+        for (a, v) in s.iter_mut().enumerate() {
+            *v *= (pose.scale[a] / old.scale[a]).abs();
         }
     }
     Ok(next)

@@ -382,9 +382,10 @@ fn step(
         });
     }
     // Circling another object.
-    if has("circle|circles|circling|orbit|orbits|around|round")
-        && first_target.is_some()
-        && !has("turn around|spin around|turns around")
+    if let Some(target) = first_target
+        .clone()
+        .filter(|_| has("circle|circles|circling|orbit|orbits|around|round"))
+        .filter(|_| !has("turn around|spin around|turns around"))
     {
         let turns = angle.map_or(1.0, |a| a / 360.0);
         let sign = if has("clockwise")
@@ -395,7 +396,7 @@ fn step(
             1.0
         };
         return out(Step::Circle {
-            target: first_target.expect("checked"),
+            target,
             turns: sign * turns,
         });
     }

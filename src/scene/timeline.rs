@@ -37,7 +37,8 @@ pub fn sample(track: &Track, t: f64) -> Option<Placement> {
         scale: k.scale,
         position: k.position,
     };
-    if !(t > first.t) {
+    // NaN times hold the first key too.
+    if t.is_nan() || t <= first.t {
         return Some(at(first));
     }
     if t >= last.t {
