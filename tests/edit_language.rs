@@ -1,6 +1,7 @@
 //! Plain-language move and motion commands, parsed as a person means them: who moves, the
 //! steps, distances with units, angles and their sense, relative places and durations. Then the
-//! keyframes of written motions at chosen times, and the timeline that `compose_at` plays.
+//! keyframes of written motions at chosen times, the timeline that `compose_at` plays, and the
+//! shape prior's restyle (recolouring).
 //! Host-only (no device).
 use dreamscene::edit::animate::{animate, final_pose, keyframes};
 use dreamscene::edit::parse::{parse, Step, DEFAULT_DISTANCE, SMALL_DISTANCE};
@@ -587,4 +588,60 @@ fn animation_timeline_plays_through_compose_at_and_warns_of_walls() {
         "{:?}",
         e.notes
     );
+}
+
+#[test]
+fn shape_prior_restyle_recolours_from_colour_words_and_says_so() {
+    use dreamscene::edit::reopt::ReoptConfig;
+    use dreamscene::edit::restyle::restyle;
+    use dreamscene::splat::cloud::SH_C0;
+    let d = scene_dir("restyle");
+    let st = SceneState::open(&d).unwrap();
+    let cfg = ReoptConfig::default();
+    let old = dreamscene::splat::ply::read_ply(&d.join("objects/chair.ply")).unwrap();
+    let e = restyle(
+        None,
+        &st,
+        "chair1",
+        "a bright red leather chair",
+        None,
+        &cfg,
+    )
+    .unwrap();
+    assert!(
+        e.notes
+            .iter()
+            .any(|n| n.contains("shape prior: recoloured") && n.contains("red")),
+        "{:?}",
+        e.notes
+    );
+    let new = &e.files["objects/chair.ply"];
+    assert_eq!(new.means, old.means, "geometry kept");
+    assert_eq!(new.scales, old.scales);
+    let mean = |g: &dreamscene::splat::Gaussians, c: usize| {
+        g.sh.iter()
+            .skip(c)
+            .step_by(3)
+            .map(|v| 0.5 + SH_C0 * *v as f64)
+            .sum::<f64>()
+            / g.len() as f64
+    };
+    assert!(mean(new, 0) > mean(new, 1) + 0.2 && mean(new, 0) > mean(new, 2) + 0.2);
+    // The floor: only Gaussians below 5 cm change.
+    let env = dreamscene::splat::ply::read_ply(&d.join("environment.ply")).unwrap();
+    let e = restyle(None, &st, "floor", "a dark green carpet", None, &cfg).unwrap();
+    let out = &e.files["environment.ply"];
+    let (mut changed, mut kept) = (0, 0);
+    for i in 0..env.len() {
+        if env.means[i][2] < 0.05 {
+            changed += (out.sh[i * 3..i * 3 + 3] != env.sh[i * 3..i * 3 + 3]) as usize;
+        } else {
+            assert_eq!(out.sh[i * 3..i * 3 + 3], env.sh[i * 3..i * 3 + 3]);
+            kept += 1;
+        }
+    }
+    assert!(changed > 1000 && kept > 1000, "{changed} {kept}");
+    // Without a colour or material word the shape prior has nothing to do.
+    let err = restyle(None, &st, "chair1", "a nicer chair", None, &cfg).unwrap_err();
+    assert!(err.to_string().contains("can only recolour"), "{err}");
 }

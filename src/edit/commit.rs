@@ -93,6 +93,12 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
         if let Some(l) = &edit.layout {
             let text = serde_json::to_string_pretty(l).map_err(|e| EditError::Io(e.to_string()))?;
             t.write("layout.json", text.as_bytes())?;
+            if dir.join("layout.png").is_file() {
+                let p = t.stage_path("layout.png")?;
+                crate::plan::draw::draw_layout(l)
+                    .save_with_format(&p, image::ImageFormat::Png)
+                    .map_err(|e| EditError::Io(format!("{}: {e}", p.display())))?;
+            }
         }
         let p = t.stage_path("scene.ply")?;
         write_ply(&p, &composed).map_err(io(&p))?;
