@@ -285,7 +285,11 @@ fn gcp_spec(
         .scene
         .objects
         .iter()
-        .map(|o| (o.id.clone(), state.sizes[&o.id], state.anchors[&o.id]))
+        .map(|o| {
+            let size = state.sizes.get(&o.id).copied().unwrap_or([0.0; 3]);
+            let anchor = state.anchors.get(&o.id).copied().unwrap_or(Anchor::Others);
+            (o.id.clone(), size, anchor)
+        })
         .collect();
     let mut relations = state.relations.clone();
     if let Some((id, size, anchor, rels)) = add {

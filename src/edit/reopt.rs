@@ -208,6 +208,12 @@ pub fn local_environment(
     // [objects | environment outside | environment inside], only the last part trained.
     let mut next = state.clone();
     next.scene = edit.scene.clone();
+    if let Some(l) = &edit.layout {
+        for o in &l.objects {
+            next.sizes.insert(o.id.clone(), o.size);
+            next.anchors.insert(o.id.clone(), o.anchor);
+        }
+    }
     let objects: Vec<Gaussians> = {
         let mut loaded: BTreeMap<String, Gaussians> = BTreeMap::new();
         let mut out = vec![];
@@ -448,7 +454,7 @@ pub fn add_object(
         ScenePrior::Shape => (init, "shape prior".to_string()),
         ScenePrior::Sd(m) => {
             let mut p = open_sd(&m, &planned.description, None)?;
-            let mut pr = Progress::new(0, false);
+            let mut pr = Progress::new(0, true);
             let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)
                 .map_err(gen)?;
             (g, format!("sd prior, {object_iterations} iterations"))
@@ -465,7 +471,7 @@ pub fn add_object(
             let reference = crate::splat::ply::read_ply(&r)?;
             let ctx = need(ctx)?;
             let mut p = OraclePrior::new(ctx, &reference, None).map_err(EditError::Gpu)?;
-            let mut pr = Progress::new(0, false);
+            let mut pr = Progress::new(0, true);
             let (g, _) =
                 generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr).map_err(gen)?;
             (g, format!("oracle prior, {object_iterations} iterations"))

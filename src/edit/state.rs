@@ -115,10 +115,10 @@ impl SceneState {
                 PlacedObject {
                     id: o.id.clone(),
                     category: o.category.clone(),
-                    size: self.sizes[&o.id],
+                    size: self.sizes.get(&o.id).copied().unwrap_or([0.0; 3]),
                     position: o.position,
                     yaw: o.yaw,
-                    anchor: self.anchors[&o.id],
+                    anchor: self.anchors.get(&o.id).copied().unwrap_or(Anchor::Others),
                     placed_by: planned.map_or(PlacedBy::Constraint, |p| p.placed_by),
                 }
             })
