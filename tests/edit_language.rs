@@ -532,6 +532,10 @@ fn animation_timeline_plays_through_compose_at_and_warns_of_walls() {
     let d = scene_dir("anim");
     let st = SceneState::open(&d).unwrap();
     let chair = st.object("chair1").unwrap().clone();
+    // A static scene composes at any time to what scene.ply holds.
+    let still = compose_at(&d, 1.0).unwrap();
+    let ply = dreamscene::splat::ply::read_ply(&d.join("scene.ply")).unwrap();
+    assert!(still.means == ply.means && still.sh == ply.sh);
     let e = animate(
         &st,
         "chair1",

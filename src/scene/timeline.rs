@@ -3,8 +3,9 @@
 //! `linear`ly (position, yaw in degrees as stored, so a spin of 720° stays a spin, and scale),
 //! held (`step`) or eased (`smooth`, a smoothstep between keys); before the first key and after
 //! the last the nearest key holds. Host-only.
-use super::compose::Placement;
-use super::dir::{compose_scene, read_scene, SceneError, SceneFile, Timeline, Track};
+use super::compose::{merge, place, Placement};
+use super::dir::{read_scene, SceneError, SceneFile, Timeline, Track};
+use crate::splat::ply::read_ply;
 use crate::splat::Gaussians;
 use std::path::Path;
 
@@ -84,10 +85,81 @@ pub fn scene_at(scene: &SceneFile, t: f64) -> SceneFile {
 
 /// The scene's merged world-frame cloud at time `t` (seconds): every instance under its
 /// transform at `t` (its track's, or its static one), then the environment. For a static scene
-/// (no timeline) this is `scene.ply`'s content at any `t`.
+/// (no timeline) this is `scene.ply`'s content at any `t`. Reads the directory on every call; a
+/// frame loop keeps an [`Animated`] instead.
 pub fn compose_at(dir: &Path, t: f64) -> Result<Gaussians, SceneError> {
-    let scene = read_scene(dir)?;
-    compose_scene(dir, &scene_at(&scene, t))
+    Ok(Animated::open(dir)?.at(t))
+}
+
+/// A scene directory loaded once for playing its timeline: [`Animated::at`] only places and
+/// merges.
+#[derive(Debug, Clone)]
+pub struct Animated {
+    pub scene: SceneFile,
+    /// Each distinct object PLY, by its path in `scene.json`.
+    clouds: std::collections::HashMap<String, Gaussians>,
+    /// The environment, when present and finished.
+    environment: Option<Gaussians>,
+}
+
+impl Animated {
+    /// Reads `scene.json`, every object PLY it names and the environment.
+    pub fn open(dir: &Path) -> Result<Animated, SceneError> {
+        let scene = read_scene(dir)?;
+        let mut clouds = std::collections::HashMap::new();
+        for o in &scene.objects {
+            if !clouds.contains_key(&o.ply) {
+                clouds.insert(o.ply.clone(), load(dir, &o.ply)?);
+            }
+        }
+        let environment = match &scene.environment {
+            Some(env) if !scene.stage_pending("environment") => Some(load(dir, &env.ply)?),
+            _ => None,
+        };
+        Ok(Animated {
+            scene,
+            clouds,
+            environment,
+        })
+    }
+
+    /// Whether the scene has a timeline with at least one track.
+    pub fn is_animated(&self) -> bool {
+        self.scene
+            .timeline
+            .as_ref()
+            .is_some_and(|t| !t.tracks.is_empty())
+    }
+
+    /// The merged world-frame cloud at time `t`, as [`compose_at`].
+    pub fn at(&self, t: f64) -> Gaussians {
+        let at = scene_at(&self.scene, t);
+        let mut parts: Vec<Gaussians> = at
+            .objects
+            .iter()
+            .map(|o| place(&self.clouds[&o.ply], &o.placement()))
+            .collect();
+        if let Some(env) = &self.environment {
+            parts.push(env.clone());
+        }
+        merge(&parts)
+    }
+}
+
+fn load(dir: &Path, rel: &str) -> Result<Gaussians, SceneError> {
+    let path = dir.join(rel);
+    if !path.is_file() {
+        return Err(SceneError::File {
+            path: path.display().to_string(),
+            msg: "not found (named in scene.json)".into(),
+        });
+    }
+    let g = read_ply(&path)?;
+    g.check().map_err(|m| SceneError::File {
+        path: path.display().to_string(),
+        msg: m,
+    })?;
+    Ok(g)
 }
 
 /// The times of the frames of a timeline: `0, 1/fps, …` up to and including its duration.
