@@ -640,3 +640,196 @@ fn oracle_restyle_moves_the_object_to_the_second_reference_and_freezes_the_rest(
         );
     }
 }
+
+fn run_cli(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The centre of the Gaussians of `g` whose index is in `range`.
+fn centre(g: &Gaussians, range: std::ops::Range<usize>) -> [f64; 3] {
+    let n = range.len() as f64;
+    let mut c = [0.0; 3];
+    for m in &g.means[range] {
+        for k in 0..3 {
+            c[k] += m[k] as f64 / n;
+        }
+    }
+    c
+}
+
+/// An animated scene plays in `export --time`, `render --time` and `video`: the exported cloud
+/// at a time is the scene composed with the keyed transform (the chair 0.6 m along its track, the
+/// rest where it was), renders at two times differ, and a video from one fixed camera shows the
+/// object moving from frame to frame over the timeline's length.
+#[test]
+fn an_animated_scene_plays_in_export_render_and_video() {
+    let (dir, _) = draft("anim");
+    let d = dir.to_str().unwrap();
+    let before = instance(&dir, "chair1");
+    ok(&edit(
+        &dir,
+        &[
+            "--no-render",
+            "animate",
+            "chair1",
+            "move left 0.6 m",
+            "--seconds",
+            "1",
+        ],
+    ));
+    // The track ends 0.6 m from where it starts (to the chair's left, in the floor plane).
+    let tl = read_scene(&dir).unwrap().timeline.expect("a timeline");
+    assert!((tl.duration - 1.0).abs() < 1e-9, "{}", tl.duration);
+
+    let range = range_of(&dir, "chair1");
+    let export_at = |t: &str, name: &str| -> Gaussians {
+        let out = dir.join(name);
+        ok(&run_cli(&[
+            "export",
+            d,
+            "--format",
+            "ply",
+            "--scene-frame",
+            "--time",
+            t,
+            "--out",
+            out.to_str().unwrap(),
+        ]));
+        read_ply(&out).unwrap()
+    };
+    let g0 = export_at("0", "t0.ply");
+    let g1 = export_at("1", "t1.ply");
+    let still = read_ply(&dir.join("scene.ply")).unwrap();
+    assert_eq!(g0.len(), still.len());
+    let (c0, c1, cs) = (
+        centre(&g0, range.clone()),
+        centre(&g1, range.clone()),
+        centre(&still, range.clone()),
+    );
+    let dist = |a: [f64; 3], b: [f64; 3]| {
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    };
+    assert!(
+        dist(c0, cs) < 1e-4,
+        "t = 0 is the static pose: {c0:?} vs {cs:?}"
+    );
+    assert!(
+        (dist(c0, c1) - 0.6).abs() < 0.02,
+        "the chair moved {:.3} m, not 0.6 m",
+        dist(c0, c1)
+    );
+    assert!((c1[2] - c0[2]).abs() < 1e-4, "the move stays on the floor");
+    // Left of a chair at yaw ψ is (−cos ψ, −sin ψ).
+    let yaw = before.yaw.to_radians();
+    let along = (c1[0] - c0[0]) * -yaw.cos() + (c1[1] - c0[1]) * -yaw.sin();
+    assert!(along > 0.55, "moved {along:.3} m to the chair's left");
+    // Everything that is not the chair stays bit for bit.
+    let others = |g: &Gaussians| -> Vec<[f32; 3]> {
+        (0..g.len())
+            .filter(|i| !range.contains(i))
+            .map(|i| g.means[i])
+            .collect()
+    };
+    assert!(others(&g1) == others(&still), "static parts moved");
+    // A time is refused for a single PLY, and a negative time anywhere.
+    let o = run_cli(&[
+        "export",
+        dir.join("t0.ply").to_str().unwrap(),
+        "--format",
+        "ply",
+        "--time",
+        "0.5",
+        "--out",
+        dir.join("x.ply").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let o = run_cli(&[
+        "render",
+        d,
+        "--trajectory",
+        "orbit",
+        "--time",
+        "-1",
+        "--out",
+        d,
+    ]);
+    assert!(!o.status.success());
+
+    // render --time from a camera that sees the chair's path: the two times differ.
+    let mut cam = Camera::look_at(
+        [-0.6, -0.9, 1.7],
+        [1.5, -0.9, 0.3],
+        [0.0, 0.0, 1.0],
+        64,
+        64,
+        1.2,
+    );
+    cam.img_name = "view".into();
+    let cams = dir.join("chair_view.json");
+    write_cameras(&cams, std::slice::from_ref(&cam)).unwrap();
+    for (t, sub) in [("0", "r0"), ("1", "r1")] {
+        ok(&run_cli(&[
+            "render",
+            d,
+            "--cameras",
+            cams.to_str().unwrap(),
+            "--time",
+            t,
+            "--out",
+            dir.join(sub).to_str().unwrap(),
+        ]));
+    }
+    let a = image::open(dir.join("r0/view.png")).unwrap().to_rgb8();
+    let b = image::open(dir.join("r1/view.png")).unwrap().to_rgb8();
+    let changed = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();
+    assert!(
+        changed > 20,
+        "only {changed} pixels changed between t = 0 and t = 1"
+    );
+
+    // video from four copies of that camera at 4 fps: frames at t = 0, 0.25, 0.5, 0.75 differ
+    // only by the motion.
+    let four: Vec<Camera> = (0..4)
+        .map(|i| {
+            let mut c = cam.clone();
+            c.id = i;
+            c.img_name = format!("f{i}");
+            c
+        })
+        .collect();
+    let fixed = dir.join("fixed.json");
+    write_cameras(&fixed, &four).unwrap();
+    let gif = dir.join("anim.gif");
+    let o = run_cli(&[
+        "video",
+        d,
+        "--trajectory",
+        fixed.to_str().unwrap(),
+        "--fps",
+        "4",
+        "--out",
+        gif.to_str().unwrap(),
+    ]);
+    let err = ok(&o);
+    assert!(err.contains("timeline"), "{err}");
+    use image::AnimationDecoder;
+    let frames: Vec<image::RgbaImage> = image::codecs::gif::GifDecoder::new(
+        std::io::BufReader::new(std::fs::File::open(&gif).unwrap()),
+    )
+    .unwrap()
+    .into_frames()
+    .map(|f| f.unwrap().into_buffer())
+    .collect();
+    assert_eq!(frames.len(), 4);
+    for w in frames.windows(2) {
+        let d = w[0]
+            .pixels()
+            .zip(w[1].pixels())
+            .filter(|(p, q)| p != q)
+            .count();
+        assert!(d > 5, "consecutive frames differ in only {d} pixels");
+    }
+}

@@ -165,10 +165,10 @@ fn resumed_fit_matches_an_uninterrupted_one() {
             .sum::<f64>()
             / want.len() as f64
     };
-    // The run-to-run difference varies between runs (1e-4 to 3e-4 here), so it is measured twice
-    // and the larger taken.
+    // The run-to-run difference varies between runs (5e-5 to 3e-4 here, more under load), so it
+    // is measured three times and the largest taken.
     let mut d_twice = 0.0f64;
-    for _ in 0..2 {
+    for _ in 0..3 {
         let mut again = Trainer::new(&ctx, &init, views.clone(), config.clone()).unwrap();
         run(&mut again, 20);
         d_twice = d_twice.max(diff(&again.gaussians().unwrap()));
@@ -183,12 +183,12 @@ fn resumed_fit_matches_an_uninterrupted_one() {
     );
     let noise = d_twice.max(1e-7);
     assert!(
-        d_resumed < 4.0 * noise,
+        d_resumed < 6.0 * noise,
         "resumed fit drifted by {d_resumed:e}"
     );
     // Restarting Adam moves the result well outside that band, so the test can tell the two.
     assert!(
-        d_restarted > 8.0 * noise,
+        d_restarted > 12.0 * noise,
         "the test cannot tell: {d_restarted:e}"
     );
 

@@ -50,6 +50,10 @@ pub struct Args {
     /// dreamscene) instead of the viewers' convention (x right, y down, z forward; SPZ y up).
     #[arg(long)]
     pub scene_frame: bool,
+    /// Play the scene's timeline (scene.json `timeline`, made by `edit animate`) to this time in
+    /// seconds and export the scene as it stands then.
+    #[arg(long)]
+    pub time: Option<f64>,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -60,7 +64,7 @@ pub fn run(a: Args) -> Result<()> {
     if a.scene_frame && format == Format::Glb {
         bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
     }
-    let g = load_input(&a.input)?;
+    let g = load_input(&a.input, a.time)?;
     if format == Format::Splat && g.sh_degree > 0 {
         eprintln!(
             "note: .splat holds only the diffuse colour; the view-dependent colour (SH degree {}) \

@@ -3,7 +3,7 @@
 use super::{open_device, save_png};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::Camera;
-use dreamscene::export::trajectory::{cameras, open_input, Input, Size, Subject, Trajectory};
+use dreamscene::export::trajectory::{cameras, open_input_at, Input, Size, Subject, Trajectory};
 use dreamscene::generate::progress::Progress;
 use dreamscene::splat::ply::{read_ply_with, Invalid};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
@@ -41,6 +41,10 @@ pub struct Args {
     /// instead of refusing the PLY.
     #[arg(long)]
     pub drop_invalid: bool,
+    /// Play the scene's timeline (scene.json `timeline`, made by `edit animate`) to this time in
+    /// seconds before rendering.
+    #[arg(long)]
+    pub time: Option<f64>,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -56,7 +60,7 @@ pub fn run(a: Args) -> Result<()> {
         && !input
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let input = if a.drop_invalid && is_ply {
+    let input = if a.drop_invalid && is_ply && a.time.is_none() {
         let cloud = read_splats(input, true)?;
         let subject = Subject::of_cloud(&cloud)?;
         Input {
@@ -65,7 +69,7 @@ pub fn run(a: Args) -> Result<()> {
             scene: None,
         }
     } else {
-        open_input(input)?
+        open_input_at(input, a.time)?
     };
     let cams = cameras(&trajectory, &input.subject, a.frames, a.size)?;
     render_all(&input.cloud, &cams, &a.out, a.background)

@@ -3,8 +3,11 @@
 use super::open_device;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::export::trajectory::{cameras, open_input, Size, Trajectory};
-use dreamscene::export::video::{depth_far, render_video, StaticCloud, VideoOptions};
+use dreamscene::export::video::{
+    depth_far, render_video, FrameSource, StaticCloud, TimelineSource, VideoOptions,
+};
 use dreamscene::generate::progress::Progress;
+use dreamscene::scene::timeline::Animated;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -19,9 +22,9 @@ pub struct Args {
     /// outdoors) or a cameras.json (one frame per camera).
     #[arg(long, default_value = "orbit")]
     pub trajectory: Trajectory,
-    /// Length in seconds (orbit and explore).
-    #[arg(long, default_value_t = 4.0)]
-    pub seconds: f64,
+    /// Length in seconds (orbit and explore): 4, or the scene's timeline when it has one.
+    #[arg(long)]
+    pub seconds: Option<f64>,
     /// Frames per second.
     #[arg(long, default_value_t = 30.0)]
     pub fps: f64,
@@ -56,8 +59,21 @@ pub fn frame_count(seconds: f64, fps: f64) -> Result<usize> {
 
 pub fn run(a: Args) -> Result<()> {
     dreamscene::export::encode::Container::of(&a.out)?;
-    let frames = frame_count(a.seconds, a.fps)?;
     let input = open_input(&a.input)?;
+    // A scene with a timeline plays it: the motion and the camera path together.
+    let animated = match &input.scene {
+        Some((dir, _)) => Some(Animated::open(dir)?).filter(|s| s.is_animated()),
+        None => None,
+    };
+    let timeline_seconds = animated
+        .as_ref()
+        .and_then(|s| s.scene.timeline.as_ref())
+        .map(|t| t.duration);
+    let seconds = a
+        .seconds
+        .or(timeline_seconds.filter(|d| *d > 0.0))
+        .unwrap_or(4.0);
+    let frames = frame_count(seconds, a.fps)?;
     let cams = cameras(&a.trajectory, &input.subject, frames, a.size)?;
     super::create_parent(&a.out)?;
     let (min, max) = input.subject.bounds();
@@ -69,10 +85,19 @@ pub fn run(a: Args) -> Result<()> {
     let depth = a.depth.then(|| depth_path(&a.out));
     let ctx = open_device()?;
     let mut progress = Progress::new(cams.len() as u64, false);
-    let mut source = StaticCloud::new(input.cloud);
+    let mut source: Box<dyn FrameSource> = match animated {
+        Some(scene) => {
+            eprintln!(
+                "playing the scene's timeline ({:.1} s) along the camera path",
+                timeline_seconds.unwrap_or(0.0)
+            );
+            Box::new(TimelineSource::new(scene))
+        }
+        None => Box::new(StaticCloud::new(input.cloud)),
+    };
     let report = render_video(
         &ctx,
-        &mut source,
+        source.as_mut(),
         &cams,
         &opts,
         &a.out,

@@ -128,8 +128,9 @@ pub type Result<T> = std::result::Result<T, ExportError>;
 /// The cloud an input path stands for, through the loader `video`, `render` and `view` use
 /// ([`trajectory::open_input`]): a scene directory (or its `scene.json`) composed into its merged
 /// world-frame cloud, the cloud `generate` writes as `scene.ply`, or a splat PLY.
-pub fn load_input(path: &Path) -> Result<Gaussians> {
-    Ok(trajectory::open_input(path)?.cloud)
+/// With `time`, a scene's timeline is played to that time first.
+pub fn load_input(path: &Path, time: Option<f64>) -> Result<Gaussians> {
+    Ok(trajectory::open_input_at(path, time)?.cloud)
 }
 
 /// Checks what every format needs: consistent arrays, at least one Gaussian, finite numbers.

@@ -161,6 +161,20 @@ pub struct Input {
 
 /// Opens `path`: a scene directory, a `scene.json`, or a splat PLY.
 pub fn open_input(path: &Path) -> Result<Input> {
+    open_input_at(path, None)
+}
+
+/// As [`open_input`], with a scene's timeline played to `time` seconds when one is given (the
+/// instances with a track take their transform at that time; a static scene is the same at any
+/// time). A splat PLY has no timeline, so a time is refused for one.
+pub fn open_input_at(path: &Path, time: Option<f64>) -> Result<Input> {
+    if let Some(t) = time {
+        if !t.is_finite() || t < 0.0 {
+            return Err(TrajectoryError::Invalid(format!(
+                "--time {t}: give a time in seconds, 0 or more"
+            )));
+        }
+    }
     let is_json = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("json"));
@@ -171,7 +185,10 @@ pub fn open_input(path: &Path) -> Result<Input> {
             path.parent().unwrap_or(Path::new(".")).to_path_buf()
         };
         let scene = read_scene(path)?;
-        let cloud = compose_scene(&dir, &scene)?;
+        let cloud = match time {
+            Some(t) => crate::scene::timeline::Animated::open(&dir)?.at(t),
+            None => compose_scene(&dir, &scene)?,
+        };
         if cloud.is_empty() {
             return Err(TrajectoryError::Invalid(format!(
                 "{}: the scene has no Gaussians yet",
@@ -188,6 +205,12 @@ pub fn open_input(path: &Path) -> Result<Input> {
     if !path.exists() {
         return Err(TrajectoryError::Invalid(format!(
             "{}: not found (give a scene directory or a splat PLY)",
+            path.display()
+        )));
+    }
+    if time.is_some() {
+        return Err(TrajectoryError::Invalid(format!(
+            "{}: --time plays a scene's timeline; give the scene directory, not a PLY",
             path.display()
         )));
     }

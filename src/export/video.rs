@@ -57,6 +57,28 @@ impl FrameSource for StaticCloud {
     }
 }
 
+/// A scene with a timeline: the cloud is composed anew at every frame's time.
+pub struct TimelineSource {
+    scene: crate::scene::timeline::Animated,
+    current: Gaussians,
+}
+
+impl TimelineSource {
+    pub fn new(scene: crate::scene::timeline::Animated) -> TimelineSource {
+        TimelineSource {
+            scene,
+            current: Gaussians::default(),
+        }
+    }
+}
+
+impl FrameSource for TimelineSource {
+    fn gaussians_at(&mut self, t: f64) -> Option<&Gaussians> {
+        self.current = self.scene.at(t);
+        Some(&self.current)
+    }
+}
+
 /// How frames are drawn and timed.
 #[derive(Debug, Clone)]
 pub struct VideoOptions {
