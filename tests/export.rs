@@ -653,9 +653,9 @@ fn bad_input_fails_with_one_line_and_keeps_the_old_output() {
         (&dir.join("missing.ply"), "spz", &[], "not found"),
         (&not_scene, "spz", &[], "not a scene directory"),
         (&garbage, "spz", &[], "PLY"),
-        (&nan_ply, "spz", &[], "non-finite"),
+        (&nan_ply, "spz", &[], "not finite"),
         (&far, "spz", &[], "2048"),
-        (&nan_ply, "spz", &["--compat"], "--compat"),
+        (&far, "spz", &["--compat"], "--compat"),
         (&far, "glb", &["--scene-frame"], "y up"),
     ];
     for (input, format, extra, expect) in cases {
