@@ -110,7 +110,11 @@ fn scene_word(s: SceneType) -> &'static str {
 /// Extracts and parses the JSON object of an LLM answer, tolerating code fences, prose around
 /// it, comments, trailing commas, single quotes and bare enum words as values.
 pub fn parse_loose_json(text: &str) -> Result<Value, String> {
-    let fence = Regex::new(r"(?s)```(?:json|JSON|json5)?\s*(.*?)```").expect("valid regex");
+    static FENCE: std::sync::OnceLock<Regex> = std::sync::OnceLock::new();
+    static BARE: std::sync::OnceLock<Regex> = std::sync::OnceLock::new();
+    let fence = FENCE.get_or_init(|| {
+        Regex::new(r"(?s)```(?:json|JSON|json5)?\s*(.*?)```").expect("valid regex")
+    });
     let body = fence
         .captures(text)
         .map(|c| c[1].to_string())
@@ -122,8 +126,9 @@ pub fn parse_loose_json(text: &str) -> Result<Value, String> {
     }
     let obj = &body[start..=end];
     // Bare words as values (`"sofa1": SIDE`) become strings; true/false/null stay.
-    let bare =
-        Regex::new(r#":\s*([A-Za-z_][A-Za-z_ ]*[A-Za-z_])\s*([,}\]\n])"#).expect("valid regex");
+    let bare = BARE.get_or_init(|| {
+        Regex::new(r#":\s*([A-Za-z_][A-Za-z_ ]*[A-Za-z_])\s*([,}\]\n])"#).expect("valid regex")
+    });
     let quoted = bare.replace_all(obj, |c: &regex::Captures| {
         let w = &c[1];
         if ["true", "false", "null"].contains(&w) {
