@@ -5,6 +5,8 @@
 //! re-optimised to the reference, and restyling moves an object to a second reference with the
 //! rest of the scene unchanged bit for bit.
 mod common;
+#[allow(dead_code)]
+mod export_support;
 use dreamscene::camera::object::{orbit_camera, ObjectFrame};
 use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::generate::scene::write_draft_scene;
@@ -734,6 +736,71 @@ fn an_animated_scene_plays_in_export_render_and_video() {
             .collect()
     };
     assert!(others(&g1) == others(&still), "static parts moved");
+    // Without --time the glb keeps the motion: one node per instance and an animation of
+    // chair1's node over the timeline's frames, valid glTF (the validator also checks that the
+    // accessors' bounds are their data), its translations the track's positions in glTF's y-up
+    // frame ((x, y, z) -> (x, z, -y)).
+    export_support::require_readers();
+    let glb = dir.join("anim.glb");
+    ok(&run_cli(&[
+        "export",
+        d,
+        "--format",
+        "glb",
+        "--out",
+        glb.to_str().unwrap(),
+    ]));
+    let bytes = std::fs::read(&glb).unwrap();
+    let renamed = dir.join("anim-renamed.glb");
+    std::fs::write(
+        &renamed,
+        export_support::rename_extension_attributes(&bytes),
+    )
+    .unwrap();
+    let report = export_support::reader_json("validate", &renamed);
+    assert_eq!(report["issues"]["numErrors"].as_u64(), Some(0), "{report}");
+    assert_eq!(
+        report["issues"]["numWarnings"].as_u64(),
+        Some(0),
+        "{report}"
+    );
+    let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+    let doc: serde_json::Value = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+    let nodes = doc["nodes"].as_array().unwrap();
+    let chair = nodes
+        .iter()
+        .position(|n| n["name"] == "chair1")
+        .expect("a chair1 node");
+    assert_eq!(nodes.len(), 4, "environment and three instances");
+    let anim = &doc["animations"][0];
+    let channel = anim["channels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["target"]["path"] == "translation")
+        .unwrap();
+    assert_eq!(channel["target"]["node"].as_u64(), Some(chair as u64));
+    let sampler = &anim["samplers"][channel["sampler"].as_u64().unwrap() as usize];
+    let input = &doc["accessors"][sampler["input"].as_u64().unwrap() as usize];
+    assert_eq!(input["count"].as_u64(), Some(31), "1 s at 30 fps");
+    let output = &doc["accessors"][sampler["output"].as_u64().unwrap() as usize];
+    let bound = |k: &str, i: usize| output[k][i].as_f64().unwrap();
+    let keys = &tl.tracks[0].keys;
+    let (p0, p1) = (keys[0].position, keys[keys.len() - 1].position);
+    for (i, (a, b)) in [(p0[0], p1[0]), (p0[2], p1[2]), (-p0[1], -p1[1])]
+        .into_iter()
+        .enumerate()
+    {
+        assert!(
+            (bound("min", i) - a.min(b)).abs() < 1e-5,
+            "min {i}: {output}"
+        );
+        assert!(
+            (bound("max", i) - a.max(b)).abs() < 1e-5,
+            "max {i}: {output}"
+        );
+    }
+
     // A time is refused for a single PLY, and a negative time anywhere.
     let o = run_cli(&[
         "export",

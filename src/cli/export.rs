@@ -64,6 +64,25 @@ pub fn run(a: Args) -> Result<()> {
     if a.scene_frame && format == Format::Glb {
         bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
     }
+    // A scene with a timeline exported to glb without --time keeps its motion: one node per
+    // instance, animated as the timeline says.
+    if format == Format::Glb && a.time.is_none() && a.input.is_dir() {
+        let scene = dreamscene::scene::timeline::Animated::open(&a.input)?;
+        if scene.is_animated() {
+            super::create_parent(&a.out)?;
+            let bytes = dreamscene::export::glb::encode_animated(&scene)?;
+            dreamscene::util::write_atomic(&a.out, &bytes)
+                .with_context(|| format!("writing {}", a.out.display()))?;
+            let tracks = scene.scene.timeline.as_ref().map_or(0, |t| t.tracks.len());
+            println!(
+                "wrote {} (glb, y up, {} instances as nodes, {tracks} animated over the timeline,                  {} bytes)",
+                a.out.display(),
+                scene.scene.objects.len(),
+                bytes.len()
+            );
+            return Ok(());
+        }
+    }
     let g = load_input(&a.input, a.time)?;
     if format == Format::Splat && g.sh_degree > 0 {
         eprintln!(

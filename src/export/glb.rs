@@ -59,6 +59,7 @@ pub struct GlbBuilder {
     accessors: Vec<Value>,
     meshes: Vec<Value>,
     nodes: Vec<Value>,
+    animations: Vec<Value>,
 }
 
 /// A node's placement: glTF translation and rotation (x, y, z, w), in the parent's frame.
@@ -66,6 +67,7 @@ pub struct GlbBuilder {
 pub struct NodeTransform {
     pub translation: Option<[f64; 3]>,
     pub rotation: Option<[f64; 4]>,
+    pub scale: Option<[f64; 3]>,
 }
 
 impl GlbBuilder {
@@ -74,15 +76,41 @@ impl GlbBuilder {
         GlbBuilder::default()
     }
 
-    /// Appends `bytes` as a buffer view (4-byte aligned) and returns its index.
+    /// Appends `bytes` as a vertex-attribute buffer view (4-byte aligned) and returns its index.
     fn view(&mut self, bytes: &[u8]) -> usize {
+        let v = self.plain_view(bytes);
+        self.views[v]["target"] = json!(ARRAY_BUFFER);
+        v
+    }
+
+    /// Appends `bytes` as a buffer view without a target (animation data).
+    fn plain_view(&mut self, bytes: &[u8]) -> usize {
         let offset = self.bin.len();
         self.bin.extend_from_slice(bytes);
         self.bin.resize(self.bin.len().next_multiple_of(4), 0);
         self.views.push(json!({
-            "buffer": 0, "byteOffset": offset, "byteLength": bytes.len(), "target": ARRAY_BUFFER
+            "buffer": 0, "byteOffset": offset, "byteLength": bytes.len()
         }));
         self.views.len() - 1
+    }
+
+    /// A float accessor of animation data (`comps` components a key), with min/max.
+    fn animation_floats(&mut self, data: &[f32], comps: usize, ty: &str) -> usize {
+        let bytes: Vec<u8> = data.iter().flat_map(|v| v.to_le_bytes()).collect();
+        let view = self.plain_view(&bytes);
+        let mut lo = vec![f32::INFINITY; comps];
+        let mut hi = vec![f32::NEG_INFINITY; comps];
+        for row in data.chunks_exact(comps) {
+            for (j, &v) in row.iter().enumerate() {
+                lo[j] = lo[j].min(v);
+                hi[j] = hi[j].max(v);
+            }
+        }
+        self.accessors.push(json!({
+            "bufferView": view, "componentType": FLOAT, "count": data.len() / comps,
+            "type": ty, "min": lo, "max": hi
+        }));
+        self.accessors.len() - 1
     }
 
     /// A float accessor of `comps` components a Gaussian (`ty` SCALAR, VEC3 or VEC4).
@@ -190,11 +218,52 @@ impl GlbBuilder {
         if let Some(r) = t.rotation {
             node["rotation"] = json!(r);
         }
+        if let Some(sc) = t.scale {
+            node["scale"] = json!(sc);
+        }
         self.nodes.push(node);
         self.nodes.len() - 1
     }
 
     /// The `.glb` bytes: the 12-byte header, the JSON chunk (space-padded) and the BIN chunk.
+    /// Adds an animation moving `node` through `keys` (time in seconds, transform), sampled
+    /// linearly between keys.
+    pub fn add_node_animation(&mut self, name: &str, node: usize, keys: &[(f64, NodeTransform)]) {
+        let times: Vec<f32> = keys.iter().map(|k| k.0 as f32).collect();
+        let input = self.animation_floats(&times, 1, "SCALAR");
+        let mut samplers = vec![];
+        let mut channels = vec![];
+        let t: Vec<f32> = keys
+            .iter()
+            .flat_map(|k| k.1.translation.unwrap_or([0.0; 3]).map(|v| v as f32))
+            .collect();
+        let r: Vec<f32> = keys
+            .iter()
+            .flat_map(|k| {
+                k.1.rotation
+                    .unwrap_or([0.0, 0.0, 0.0, 1.0])
+                    .map(|v| v as f32)
+            })
+            .collect();
+        let s: Vec<f32> = keys
+            .iter()
+            .flat_map(|k| k.1.scale.unwrap_or([1.0; 3]).map(|v| v as f32))
+            .collect();
+        for (path, data, comps, ty) in [
+            ("translation", t, 3, "VEC3"),
+            ("rotation", r, 4, "VEC4"),
+            ("scale", s, 3, "VEC3"),
+        ] {
+            let output = self.animation_floats(&data, comps, ty);
+            samplers.push(json!({ "input": input, "output": output, "interpolation": "LINEAR" }));
+            channels.push(json!({
+                "sampler": samplers.len() - 1, "target": { "node": node, "path": path }
+            }));
+        }
+        self.animations
+            .push(json!({ "name": name, "samplers": samplers, "channels": channels }));
+    }
+
     pub fn finish(self) -> Result<Vec<u8>> {
         let roots: Vec<usize> = (0..self.nodes.len()).collect();
         let doc = json!({
@@ -209,6 +278,10 @@ impl GlbBuilder {
             "bufferViews": self.views,
             "buffers": [{ "byteLength": self.bin.len() }],
         });
+        let mut doc = doc;
+        if !self.animations.is_empty() {
+            doc["animations"] = json!(self.animations);
+        }
         let mut text = serde_json::to_vec(&doc)
             .map_err(|e| ExportError::Unrepresentable(format!("glTF JSON: {e}")))?;
         text.resize(text.len().next_multiple_of(4), b' ');
@@ -228,6 +301,60 @@ impl GlbBuilder {
         out.extend(self.bin);
         Ok(out)
     }
+}
+
+/// An instance's placement (world frame: `Rz(yaw) · diag(scale) · p + position`) as a glTF node
+/// transform for a mesh stored in the glTF frame: the translation rotated to y up, the yaw a
+/// rotation about glTF's +y, the scale's y and z swapped.
+pub fn node_transform(p: &crate::scene::compose::Placement) -> NodeTransform {
+    let half = p.yaw.to_radians() / 2.0;
+    NodeTransform {
+        translation: Some([p.position[0], p.position[2], -p.position[1]]),
+        rotation: Some([0.0, half.sin(), 0.0, half.cos()]),
+        scale: Some([p.scale[0], p.scale[2], p.scale[1]]),
+    }
+}
+
+/// The `.glb` of a scene with a timeline: one mesh per object PLY (object frame) and the
+/// environment's, one node per instance placed as `scene.json` says, and one animation per
+/// track, sampled at the timeline's frame rate (so every interpolation plays as the engine
+/// plays it). Viewers that apply node transforms to splats play it; SH bands are stored in the
+/// object frame, so view-dependent colour turns with the node only where the viewer rotates it.
+pub fn encode_animated(scene: &crate::scene::timeline::Animated) -> Result<Vec<u8>> {
+    use crate::scene::timeline::{frame_times, sample, track};
+    let mut b = GlbBuilder::new();
+    if let Some(env) = scene.environment() {
+        let mesh = b.add_splats("environment", &to_gltf_frame(env))?;
+        b.add_node("environment", mesh, NodeTransform::default());
+    }
+    let mut meshes: std::collections::HashMap<&str, usize> = Default::default();
+    let file = &scene.scene;
+    for o in &file.objects {
+        let mesh = match meshes.get(o.ply.as_str()) {
+            Some(m) => *m,
+            None => {
+                let g = scene.object_cloud(&o.ply).ok_or_else(|| {
+                    ExportError::Unrepresentable(format!("{}: object not loaded", o.ply))
+                })?;
+                let m = b.add_splats(&o.category, &to_gltf_frame(g))?;
+                meshes.insert(o.ply.as_str(), m);
+                m
+            }
+        };
+        let node = b.add_node(&o.id, mesh, node_transform(&o.placement()));
+        if let Some(tl) = &file.timeline {
+            if let Some(tr) = track(tl, &o.id) {
+                let keys: Vec<(f64, NodeTransform)> = frame_times(tl)
+                    .into_iter()
+                    .filter_map(|t| sample(tr, t).map(|p| (t, node_transform(&p))))
+                    .collect();
+                if !keys.is_empty() {
+                    b.add_node_animation(&o.id, node, &keys);
+                }
+            }
+        }
+    }
+    b.finish()
 }
 
 /// The `.glb` of `g` (project world frame): one mesh, one node, in glTF's y-up frame.

@@ -131,6 +131,16 @@ impl Animated {
             .is_some_and(|t| !t.tracks.is_empty())
     }
 
+    /// The object-frame cloud of an object PLY named in `scene.json`.
+    pub fn object_cloud(&self, ply: &str) -> Option<&Gaussians> {
+        self.clouds.get(ply)
+    }
+
+    /// The environment's world-frame cloud, when the scene has a finished one.
+    pub fn environment(&self) -> Option<&Gaussians> {
+        self.environment.as_ref()
+    }
+
     /// The merged world-frame cloud at time `t`, as [`compose_at`].
     pub fn at(&self, t: f64) -> Gaussians {
         let at = scene_at(&self.scene, t);

@@ -308,3 +308,26 @@ pub fn sh_frame_diff(
     }
     worst
 }
+
+/// The GLB with every `KHR_gaussian_splatting:NAME` attribute renamed `_KHR_gaussian_splatting_NAME`
+/// (JSON chunk re-padded, lengths rewritten).
+pub fn rename_extension_attributes(glb: &[u8]) -> Vec<u8> {
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json = std::str::from_utf8(&glb[20..20 + json_len]).unwrap();
+    let mut json = json
+        .replace("\"KHR_gaussian_splatting:", "\"_KHR_gaussian_splatting_")
+        .into_bytes();
+    while json.len() % 4 != 0 {
+        json.push(b' ');
+    }
+    let bin = &glb[20 + json_len..];
+    let mut out = Vec::new();
+    out.extend(b"glTF");
+    out.extend(2u32.to_le_bytes());
+    out.extend(((12 + 8 + json.len() + bin.len()) as u32).to_le_bytes());
+    out.extend((json.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(json);
+    out.extend(bin);
+    out
+}
