@@ -12,7 +12,9 @@ use crate::diffusion::guidance::{MtsRange, MtsSettings};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::{guided_iteration, GuidedView};
-use crate::generate::prior::{OraclePrior, Prior, PriorView};
+use crate::generate::prior::{
+    from_latent, to_latent, OraclePredictor, OraclePrior, Prior, PriorView,
+};
 use crate::generate::progress::Progress;
 use crate::gpu::Context;
 use crate::scene::dir::SceneObject;
@@ -57,39 +59,6 @@ struct EditOracle {
     sched: crate::diffusion::schedule::Schedule,
 }
 
-struct EditPredictor<'a> {
-    sched: &'a crate::diffusion::schedule::Schedule,
-    current: &'a [f32],
-    target: &'a [f32],
-}
-
-impl crate::diffusion::guidance::NoisePredictor for EditPredictor<'_> {
-    fn predict(
-        &mut self,
-        x: &[f32],
-        t: u32,
-        conds: &[crate::diffusion::guidance::Cond],
-    ) -> std::result::Result<Vec<Vec<f32>>, String> {
-        use crate::diffusion::guidance::Cond;
-        let ab = self.sched.alpha_bar(t as i64);
-        let (sa, sn) = (ab.sqrt(), (1.0 - ab).max(1e-12).sqrt());
-        let toward = |z: &[f32]| -> Vec<f32> {
-            x.iter()
-                .zip(z)
-                .map(|(xt, zs)| ((*xt as f64 - sa * *zs as f64) / sn) as f32)
-                .collect()
-        };
-        Ok(conds
-            .iter()
-            .map(|c| match c {
-                Cond::Positive | Cond::Negative => toward(self.current),
-                Cond::Edit => toward(self.target),
-                Cond::Null => vec![0.0; x.len()],
-            })
-            .collect())
-    }
-}
-
 impl Prior for EditOracle {
     fn kind(&self) -> &'static str {
         "oracle"
@@ -100,23 +69,17 @@ impl Prior for EditOracle {
         view: &PriorView,
         step: u32,
     ) -> std::result::Result<Vec<[f32; 3]>, String> {
-        let lat = |img: &[[f32; 3]]| -> Vec<f32> {
-            img.iter()
-                .flat_map(|p| p.iter().map(|v| 2.0 * v - 1.0))
-                .collect()
-        };
-        let target = lat(&self.inner.reference_view(view.camera, view.background)?);
-        let current = lat(view.render);
-        let mut p = EditPredictor {
+        // The oracle's editing rule: ε(y) points at the current render and ε(y_edit) at the
+        // second reference, so the edit stops exactly there.
+        let target = to_latent(&self.inner.reference_view(view.camera, view.background)?);
+        let current = to_latent(view.render);
+        let mut p = OraclePredictor {
             sched: &self.sched,
-            current: &current,
-            target: &target,
+            reference: &current,
+            edit: Some(&target),
         };
         let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &current, step)?;
-        Ok(zt
-            .chunks_exact(3)
-            .map(|c| [0, 1, 2].map(|k| 0.5 * (c[k] + 1.0)))
-            .collect())
+        Ok(from_latent(&zt, false))
     }
 }
 

@@ -62,11 +62,12 @@ fn unflat(v: &[f32]) -> Vec<[f32; 3]> {
     v.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
 }
 
-/// Noise predictions of the oracle for one view.
-struct OraclePredictor<'a> {
-    sched: &'a Schedule,
-    reference: &'a [f32],
-    edit: Option<&'a [f32]>,
+/// Noise predictions of the oracle for one view: the exact noise toward `reference` for the
+/// positive and negative prompts, toward `edit` for the edit prompt, zero for the null prompt.
+pub(crate) struct OraclePredictor<'a> {
+    pub(crate) sched: &'a Schedule,
+    pub(crate) reference: &'a [f32],
+    pub(crate) edit: Option<&'a [f32]>,
 }
 
 impl NoisePredictor for OraclePredictor<'_> {
@@ -145,11 +146,11 @@ impl OraclePrior {
 }
 
 /// `2x − 1`, the oracle's latent of an image.
-fn to_latent(img: &[[f32; 3]]) -> Vec<f32> {
+pub(crate) fn to_latent(img: &[[f32; 3]]) -> Vec<f32> {
     flat(img).iter().map(|v| 2.0 * v - 1.0).collect()
 }
 
-fn from_latent(z: &[f32], clamp: bool) -> Vec<[f32; 3]> {
+pub(crate) fn from_latent(z: &[f32], clamp: bool) -> Vec<[f32; 3]> {
     let x: Vec<f32> = z
         .iter()
         .map(|v| {
