@@ -8,7 +8,6 @@ mod common;
 use dreamscene::camera::Camera;
 use dreamscene::export::video::{render_video, FrameSource, VideoOptions};
 use dreamscene::splat::cloud::SH_C0;
-use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::Gaussians;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
@@ -126,28 +125,6 @@ fn frame_loop_asks_the_source_for_each_frame_time_and_draws_what_it_gives() {
     std::fs::remove_dir_all(&d).ok();
 }
 
-/// Two clusters of 2000 small Gaussians each, red around x = +0.5 and blue around x = −0.5,
-/// 0.5 m above the floor.
-fn two_clusters(path: &Path) {
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-    let n = Normal::new(0.0f32, 0.12).unwrap();
-    let mut g = Gaussians::default();
-    for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
-        for _ in 0..2000 {
-            g.means.push([
-                cx + n.sample(&mut rng),
-                n.sample(&mut rng),
-                0.5 + n.sample(&mut rng),
-            ]);
-            g.scales.push([-3.5; 3]);
-            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-            g.opacities.push(4.0);
-            g.sh.extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
-        }
-    }
-    write_ply(path, &g).unwrap();
-}
-
 /// ffprobe's frame count and size of the first video stream.
 fn probe(path: &Path) -> (usize, u32, u32) {
     let o = Command::new("ffprobe")
@@ -194,7 +171,7 @@ fn mean_abs_diff(a: &[u8], b: &[u8]) -> f64 {
 fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
     let d = tmp("mp4");
     let ply = d.join("clusters.ply");
-    two_clusters(&ply);
+    common::two_clusters(&ply, 2000, 0.12, 3);
     let out = d.join("orbit.mp4");
     let o = run(&[
         "video",
@@ -265,7 +242,7 @@ fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
 fn gif_holds_every_frame_and_bad_requests_fail_in_one_line() {
     let d = tmp("gif");
     let ply = d.join("clusters.ply");
-    two_clusters(&ply);
+    common::two_clusters(&ply, 2000, 0.12, 3);
     let out = d.join("orbit.gif");
     let o = run(&[
         "video",

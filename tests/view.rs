@@ -5,11 +5,7 @@
 //! busy port and a viewer without its npm packages are one-line errors, and SIGINT (Ctrl-C)
 //! stops the server with exit status 0. The screenshot script fails if the page asks for any URL
 //! outside the server under test.
-use dreamscene::splat::cloud::SH_C0;
-use dreamscene::splat::ply::write_ply;
-use dreamscene::splat::Gaussians;
-use rand::SeedableRng;
-use rand_distr::{Distribution, Normal};
+mod common;
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
@@ -19,27 +15,6 @@ fn tmp(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-/// 3000 Gaussians each: red around x = +0.5, blue around x = −0.5.
-fn two_clusters(path: &Path) {
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
-    let n = Normal::new(0.0f32, 0.15).unwrap();
-    let mut g = Gaussians::default();
-    for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
-        for _ in 0..3000 {
-            g.means.push([
-                cx + n.sample(&mut rng),
-                n.sample(&mut rng),
-                0.5 + n.sample(&mut rng),
-            ]);
-            g.scales.push([-3.5; 3]);
-            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-            g.opacities.push(4.0);
-            g.sh.extend(col.map(|c| ((c as f64 - 0.5) / SH_C0) as f32));
-        }
-    }
-    write_ply(path, &g).unwrap();
 }
 
 /// Starts `view` on a free port and returns the process and its URL.
@@ -73,7 +48,7 @@ fn interrupt(child: &mut Child) -> std::process::ExitStatus {
 fn browser_shows_red_on_the_left_and_blue_on_the_right() {
     let d = tmp("browser");
     let ply = d.join("clusters.ply");
-    two_clusters(&ply);
+    common::two_clusters(&ply, 3000, 0.15, 5);
     let (mut child, url) = serve(&ply, "0");
     let shot = d.join("shot.png");
     let viewer = Path::new(env!("CARGO_MANIFEST_DIR")).join("viewer");
@@ -123,7 +98,7 @@ fn browser_shows_red_on_the_left_and_blue_on_the_right() {
 fn busy_port_and_missing_packages_are_clear_errors() {
     let d = tmp("errors");
     let ply = d.join("clusters.ply");
-    two_clusters(&ply);
+    common::two_clusters(&ply, 3000, 0.15, 5);
     let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     let port = listener.local_addr().unwrap().port().to_string();
     let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))

@@ -68,3 +68,26 @@ pub fn crowded_tile() -> (dreamscene::splat::Gaussians, dreamscene::camera::Came
     }
     (g, cam)
 }
+
+/// Two clusters of `n` small opaque Gaussians each (normal spread `sigma`), red around
+/// x = +0.5 and blue around x = −0.5, 0.5 m above the floor, written to `path` as a splat PLY.
+pub fn two_clusters(path: &std::path::Path, n: usize, sigma: f32, seed: u64) {
+    use rand_distr::{Distribution, Normal};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let normal = Normal::new(0.0f32, sigma).unwrap();
+    let mut g = dreamscene::splat::Gaussians::default();
+    for (cx, col) in [(0.5f32, [1.0f32, 0.0, 0.0]), (-0.5, [0.0, 0.0, 1.0])] {
+        for _ in 0..n {
+            g.means.push([
+                cx + normal.sample(&mut rng),
+                normal.sample(&mut rng),
+                0.5 + normal.sample(&mut rng),
+            ]);
+            g.scales.push([-3.5; 3]);
+            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
+            g.opacities.push(4.0);
+            g.sh.extend(col.map(|c| ((c as f64 - 0.5) / dreamscene::splat::cloud::SH_C0) as f32));
+        }
+    }
+    dreamscene::splat::ply::write_ply(path, &g).unwrap();
+}
