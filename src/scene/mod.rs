@@ -4,5 +4,6 @@
 pub mod compose;
 pub mod dir;
 pub mod env;
+pub mod lock;
 pub mod sh_rotate;
 pub mod timeline;
