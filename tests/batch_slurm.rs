@@ -49,7 +49,10 @@ fn root() -> PathBuf {
 
 fn have(cmd: &str) -> bool {
     Command::new("sh")
-        .args(["-c", &format!("command -v {cmd} || test -x /usr/sbin/{cmd}")])
+        .args([
+            "-c",
+            &format!("command -v {cmd} || test -x /usr/sbin/{cmd}"),
+        ])
         .output()
         .is_ok_and(|o| o.status.success())
 }
@@ -57,10 +60,17 @@ fn have(cmd: &str) -> bool {
 impl Cluster {
     /// A cluster in a fresh directory, or `None` (with the reason printed) where it cannot run.
     fn up(work: &Path) -> Option<Cluster> {
-        let missing: Vec<&str> = ["slurmctld", "slurmd", "munged", "sbatch", "squeue", "unshare"]
-            .into_iter()
-            .filter(|c| !have(c))
-            .collect();
+        let missing: Vec<&str> = [
+            "slurmctld",
+            "slurmd",
+            "munged",
+            "sbatch",
+            "squeue",
+            "unshare",
+        ]
+        .into_iter()
+        .filter(|c| !have(c))
+        .collect();
         if !missing.is_empty() {
             println!(
                 "SKIPPED: the Slurm test needs {} (scripts/setup.sh installs slurmctld slurmd \
@@ -134,11 +144,15 @@ impl Cluster {
 
     /// `(task, state)` of every task of `job` (for MinJobAge after the end).
     fn states(&self, job: &str) -> Vec<(String, String)> {
-        self.ok("squeue", &["-t", "all", "-h", "-j", job, "-o", "%i %T"], &[])
-            .lines()
-            .filter_map(|l| l.split_once(' '))
-            .map(|(a, b)| (a.to_string(), b.to_string()))
-            .collect()
+        self.ok(
+            "squeue",
+            &["-t", "all", "-h", "-j", job, "-o", "%i %T"],
+            &[],
+        )
+        .lines()
+        .filter_map(|l| l.split_once(' '))
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect()
     }
 
     fn wait(&self, job: &str, limit: Duration) {
@@ -167,7 +181,10 @@ fn same_tree(a: &Path, b: &Path) {
             if p.is_dir() {
                 files(&p, base, out);
             } else if p.file_name().unwrap() != ".lock" {
-                out.insert(p.strip_prefix(base).unwrap().into(), std::fs::read(&p).unwrap());
+                out.insert(
+                    p.strip_prefix(base).unwrap().into(),
+                    std::fs::read(&p).unwrap(),
+                );
             }
         }
     }
@@ -175,9 +192,20 @@ fn same_tree(a: &Path, b: &Path) {
     files(a, a, &mut fa);
     files(b, b, &mut fb);
     let (na, nb): (Vec<_>, Vec<_>) = (fa.keys().collect(), fb.keys().collect());
-    assert_eq!(na, nb, "{} and {} list the same files", a.display(), b.display());
+    assert_eq!(
+        na,
+        nb,
+        "{} and {} list the same files",
+        a.display(),
+        b.display()
+    );
     for (k, v) in &fa {
-        assert!(v == &fb[k], "{} differs from {}", a.join(k).display(), b.join(k).display());
+        assert!(
+            v == &fb[k],
+            "{} differs from {}",
+            a.join(k).display(),
+            b.join(k).display()
+        );
     }
 }
 
@@ -214,7 +242,11 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
             .args(FLAGS)
             .output()
             .unwrap();
-        assert!(st.status.success(), "{}", String::from_utf8_lossy(&st.stderr));
+        assert!(
+            st.status.success(),
+            "{}",
+            String::from_utf8_lossy(&st.stderr)
+        );
     }
     cl.wait(&job, Duration::from_secs(240));
     let states = cl.states(&job);
@@ -223,12 +255,18 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     let ix = index::read(&out).unwrap();
     assert_eq!(ix.scenes.len(), 12);
     for (k, r) in ix.scenes.iter().enumerate() {
-        assert_eq!((r.id.as_str(), r.status, r.attempts), (id(k).as_str(), Status::Done, 1));
+        assert_eq!(
+            (r.id.as_str(), r.status, r.attempts),
+            (id(k).as_str(), Status::Done, 1)
+        );
         let shard = format!("shard {}/4", shard_of(&r.id, 4));
         assert!(r.worker.as_deref().unwrap().ends_with(&shard), "{r:?}");
         same_tree(&out.join(&r.id), &serial.join(&r.id));
     }
-    println!("array of 4 over 12 scenes (and the serial reference): {:.1} s", t0.elapsed().as_secs_f64());
+    println!(
+        "array of 4 over 12 scenes (and the serial reference): {:.1} s",
+        t0.elapsed().as_secs_f64()
+    );
 
     // ---- a task cancelled mid-run, then requeued ----
     let t1 = Instant::now();
@@ -239,7 +277,10 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     let target = (0..2u32)
         .max_by_key(|&s| (0..6).filter(|&k| shard_of(&id(k), 2) == s).count())
         .unwrap();
-    let theirs: Vec<String> = (0..6).map(id).filter(|i| shard_of(i, 2) == target).collect();
+    let theirs: Vec<String> = (0..6)
+        .map(id)
+        .filter(|i| shard_of(i, 2) == target)
+        .collect();
     assert!(theirs.len() >= 3);
     let job2 = cl.sbatch(
         &["--array=0-1"],
@@ -251,11 +292,17 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     let deadline = Instant::now() + Duration::from_secs(120);
     loop {
         let ix = index::read(&out2).unwrap_or_default();
-        let done = theirs.iter().filter(|i| ix.status(i) == Status::Done).count();
+        let done = theirs
+            .iter()
+            .filter(|i| ix.status(i) == Status::Done)
+            .count();
         if done >= 1 {
             break;
         }
-        assert!(Instant::now() < deadline, "no scene of task {task} finished");
+        assert!(
+            Instant::now() < deadline,
+            "no scene of task {task} finished"
+        );
         std::thread::sleep(Duration::from_millis(50));
     }
     cl.ok("scancel", &[&task], &[]);
@@ -276,7 +323,11 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
         "the cancel came after task {task} had finished its scenes"
     );
     cl.ok("scontrol", &["requeue", &task], &[]);
-    cl.ok("scontrol", &["update", &format!("JobId={task}"), "StartTime=now"], &[]);
+    cl.ok(
+        "scontrol",
+        &["update", &format!("JobId={task}"), "StartTime=now"],
+        &[],
+    );
     cl.wait(&job2, Duration::from_secs(180));
     let after = index::read(&out2).unwrap();
     for r in &after.scenes {
@@ -290,16 +341,32 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
         same_tree(&out2.join(&r.id), &serial.join(&r.id));
     }
     let redone = after.scenes.iter().filter(|r| r.attempts > 1).count();
-    assert!(redone <= 1, "at most the interrupted scene was claimed twice");
-    println!("cancel + requeue of 6 scenes: {:.1} s", t1.elapsed().as_secs_f64());
+    assert!(
+        redone <= 1,
+        "at most the interrupted scene was claimed twice"
+    );
+    println!(
+        "cancel + requeue of 6 scenes: {:.1} s",
+        t1.elapsed().as_secs_f64()
+    );
 
     // ---- one scene over three object shards and the dependent scene step ----
     let t2 = Instant::now();
     let scene = work.join("sharded");
     let env = [("PROMPT", PROMPTS[4]), ("OUT", scene.to_str().unwrap())];
-    let objects = cl.sbatch(&["--array=0-2"], "scene.sbatch", &[&["objects"][..], &FLAGS].concat(), &env);
+    let objects = cl.sbatch(
+        &["--array=0-2"],
+        "scene.sbatch",
+        &[&["objects"][..], &FLAGS].concat(),
+        &env,
+    );
     let dep = format!("--dependency=afterok:{objects}");
-    let step = cl.sbatch(&[&dep], "scene.sbatch", &[&["scene"][..], &FLAGS].concat(), &env);
+    let step = cl.sbatch(
+        &[&dep],
+        "scene.sbatch",
+        &[&["scene"][..], &FLAGS].concat(),
+        &env,
+    );
     cl.wait(&step, Duration::from_secs(120));
     let all = [cl.states(&objects), cl.states(&step)].concat();
     assert!(all.iter().all(|(_, s)| s == "COMPLETED"), "{all:?}");
@@ -309,7 +376,11 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     for k in 0..3 {
         let log = std::fs::read_to_string(work.join(format!("dreamscene-scene-{objects}_{k}.log")))
             .unwrap();
-        let line = log.lines().find(|l| l.starts_with("objects shard")).unwrap().to_string();
+        let line = log
+            .lines()
+            .find(|l| l.starts_with("objects shard"))
+            .unwrap()
+            .to_string();
         let list = line.split_once(": ").unwrap().1;
         built.extend(
             list.split(", ")
@@ -323,7 +394,10 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     assert_eq!(n, built.len(), "a category built twice: {built:?}");
     let objects_dir = std::fs::read_dir(scene.join("objects")).unwrap().count();
     assert_eq!(n, objects_dir, "every object built by one shard");
-    println!("3 object shards + scene step: {:.1} s", t2.elapsed().as_secs_f64());
+    println!(
+        "3 object shards + scene step: {:.1} s",
+        t2.elapsed().as_secs_f64()
+    );
     drop(cl);
     let _ = std::fs::remove_dir_all(&work);
 }

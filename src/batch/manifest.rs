@@ -112,9 +112,16 @@ mod tests {
 
     #[test]
     fn text_lines_are_numbered_prompts_without_blanks_or_comments() {
-        let m = parse("a bedroom\n\n# not this\n  a kitchen with two stools  \n", false).unwrap();
+        let m = parse(
+            "a bedroom\n\n# not this\n  a kitchen with two stools  \n",
+            false,
+        )
+        .unwrap();
         assert_eq!(m.len(), 2);
-        assert_eq!((m[0].id.as_str(), m[0].prompt.as_str()), ("0001", "a bedroom"));
+        assert_eq!(
+            (m[0].id.as_str(), m[0].prompt.as_str()),
+            ("0001", "a bedroom")
+        );
         assert_eq!(
             (m[1].id.as_str(), m[1].prompt.as_str()),
             ("0002", "a kitchen with two stools")
@@ -135,9 +142,15 @@ mod tests {
     #[test]
     fn bad_lines_are_named() {
         let unknown = parse(r#"{"prompt": "x", "colour": 1}"#, true).unwrap_err();
-        assert!(unknown.contains("line 1") && unknown.contains("colour"), "{unknown}");
-        let dup = parse("{\"id\":\"a\",\"prompt\":\"x\"}\n{\"id\":\"a\",\"prompt\":\"y\"}", true)
-            .unwrap_err();
+        assert!(
+            unknown.contains("line 1") && unknown.contains("colour"),
+            "{unknown}"
+        );
+        let dup = parse(
+            "{\"id\":\"a\",\"prompt\":\"x\"}\n{\"id\":\"a\",\"prompt\":\"y\"}",
+            true,
+        )
+        .unwrap_err();
         assert!(dup.contains("`a` appears twice"), "{dup}");
         let path = parse(r#"{"id": "../up", "prompt": "x"}"#, true).unwrap_err();
         assert!(path.contains("../up"), "{path}");

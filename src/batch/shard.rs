@@ -140,8 +140,14 @@ mod tests {
         }
         // FNV-1a is fixed by its definition, not by this build: the empty id's hash is the
         // offset basis, and "a" hashes to 0xaf63dc4c8601ec8c.
-        assert_eq!(shard_of("", 1_000_003), (0xcbf29ce484222325u64 % 1_000_003) as u32);
-        assert_eq!(shard_of("a", 1_000_003), (0xaf63dc4c8601ec8cu64 % 1_000_003) as u32);
+        assert_eq!(
+            shard_of("", 1_000_003),
+            (0xcbf29ce484222325u64 % 1_000_003) as u32
+        );
+        assert_eq!(
+            shard_of("a", 1_000_003),
+            (0xaf63dc4c8601ec8cu64 % 1_000_003) as u32
+        );
     }
 
     #[test]
@@ -165,9 +171,13 @@ mod tests {
         let mut seen = vec![0; ids.len()];
         for pod in 0..4 {
             let idx = pod.to_string();
-            let s = resolve(None, None, &env(&[("JOB_COMPLETION_INDEX", &idx), ("DREAMSCENE_SHARDS", "4")]))
-                .unwrap()
-                .unwrap();
+            let s = resolve(
+                None,
+                None,
+                &env(&[("JOB_COMPLETION_INDEX", &idx), ("DREAMSCENE_SHARDS", "4")]),
+            )
+            .unwrap()
+            .unwrap();
             for (k, id) in ids.iter().enumerate() {
                 seen[k] += usize::from(s.owns(id));
             }
@@ -177,15 +187,24 @@ mod tests {
 
     #[test]
     fn slurm_arrays_with_offsets_and_steps() {
-        let e = env(&[("SLURM_ARRAY_TASK_ID", "3"), ("SLURM_ARRAY_TASK_COUNT", "4")]);
-        assert_eq!(resolve(None, None, &e).unwrap(), Some(Shard { index: 3, count: 4 }));
+        let e = env(&[
+            ("SLURM_ARRAY_TASK_ID", "3"),
+            ("SLURM_ARRAY_TASK_COUNT", "4"),
+        ]);
+        assert_eq!(
+            resolve(None, None, &e).unwrap(),
+            Some(Shard { index: 3, count: 4 })
+        );
         let e = env(&[
             ("SLURM_ARRAY_TASK_ID", "7"),
             ("SLURM_ARRAY_TASK_COUNT", "3"),
             ("SLURM_ARRAY_TASK_MIN", "1"),
             ("SLURM_ARRAY_TASK_STEP", "3"),
         ]);
-        assert_eq!(resolve(None, None, &e).unwrap(), Some(Shard { index: 2, count: 3 }));
+        assert_eq!(
+            resolve(None, None, &e).unwrap(),
+            Some(Shard { index: 2, count: 3 })
+        );
         assert!(resolve(None, None, &env(&[("SLURM_ARRAY_TASK_ID", "1")])).is_err());
         // An explicit --shard wins; empty variables are unset.
         let explicit = Some(Shard { index: 0, count: 2 });

@@ -101,16 +101,16 @@ pub fn run(
             path: dir.display().to_string(),
             msg: err.to_string(),
         })?;
-        let lock = match SceneLock::acquire(&dir, Wait::NoWait, &format!("dreamscene batch ({who})"))
-        {
-            Ok(l) => l,
-            Err(LockError::Busy { holder, .. }) => {
-                log(&format!("{}: held by {holder}; skipped", e.id));
-                sum.busy += 1;
-                continue;
-            }
-            Err(LockError::Io { path, msg }) => return Err(BatchError::Io { path, msg }),
-        };
+        let lock =
+            match SceneLock::acquire(&dir, Wait::NoWait, &format!("dreamscene batch ({who})")) {
+                Ok(l) => l,
+                Err(LockError::Busy { holder, .. }) => {
+                    log(&format!("{}: held by {holder}; skipped", e.id));
+                    sum.busy += 1;
+                    continue;
+                }
+                Err(LockError::Io { path, msg }) => return Err(BatchError::Io { path, msg }),
+            };
         // Another worker may have finished it between the read above and the claim.
         if index::read(&opts.out)?.status(&e.id) == Status::Done {
             sum.skipped += 1;
@@ -244,8 +244,14 @@ mod tests {
             shard: None,
             name: "again".into(),
         };
-        let sum = run(&opts, &entries, &stop, &mut |_, _| Ok(Outcome::default()), &mut |_| {})
-            .unwrap();
+        let sum = run(
+            &opts,
+            &entries,
+            &stop,
+            &mut |_, _| Ok(Outcome::default()),
+            &mut |_| {},
+        )
+        .unwrap();
         assert!(sum.stopped && sum.left == 24 && sum.done == 0);
         let mut ran = vec![];
         let sum = run(

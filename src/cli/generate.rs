@@ -259,7 +259,11 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
 
 /// The spec and layout: re-read from `out` when resuming and both are there (an LLM plan is
 /// not asked again), else planned afresh.
-pub(super) fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpec, Layout)> {
+pub(super) fn plan_or_reuse(
+    text: &str,
+    a: &GenerateArgs,
+    resume: bool,
+) -> Result<(SceneSpec, Layout)> {
     let (spec_path, layout_path) = (a.out.join("spec.json"), a.out.join("layout.json"));
     if resume && spec_path.is_file() && layout_path.is_file() {
         let spec = SceneSpec::read(&spec_path)?;

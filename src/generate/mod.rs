@@ -4,8 +4,8 @@
 pub mod checkpoint;
 pub mod filter;
 pub mod object;
+pub mod object_shard;
 pub mod prior;
 pub mod progress;
 pub mod scene;
 pub mod scene_stages;
-pub mod object_shard;
