@@ -71,3 +71,21 @@ if [ ! -f "$READERS_DIR/node_modules/.package-lock.json" ] ||
   (cd "$READERS_DIR" && npm ci --no-audit --no-fund --loglevel=error)
 fi
 test -x "$READERS_DIR/node_modules/.bin/splat-transform" || { echo "export test readers missing in $READERS_DIR/node_modules" >&2; exit 1; }
+
+# The batch tests: a real single-node Slurm (started inside the test) and the offline Kubernetes
+# schema check. Optional: where they cannot be installed the tests say so and skip.
+slurm_pkgs=(slurmctld slurmd slurm-client munge)
+slurm_missing=()
+for p in "${slurm_pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || slurm_missing+=("$p")
+done
+if ((${#slurm_missing[@]})); then
+  echo "installing (for the batch tests): ${slurm_missing[*]}"
+  apt_install "${slurm_missing[@]}" || echo "could not install ${slurm_missing[*]}; the Slurm tests will skip" >&2
+fi
+if ! command -v kubernetes-validate >/dev/null; then
+  echo "installing kubernetes-validate (for the batch tests)"
+  python3 -m pip install --quiet kubernetes-validate 2>/dev/null ||
+    python3 -m pip install --quiet --break-system-packages kubernetes-validate ||
+    echo "could not install kubernetes-validate; the job file test will skip" >&2
+fi

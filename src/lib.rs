@@ -1,6 +1,7 @@
 //! dreamscene: text to editable 3D Gaussian-splat scenes on any Vulkan GPU.
 #![deny(unsafe_op_in_unsafe_fn)]
 
+pub mod batch;
 pub mod bench;
 pub mod camera;
 pub mod diffusion;

@@ -63,6 +63,15 @@ enum Command {
     /// seconds: each object is its procedural shape prior and the environment its initial
     /// surfaces, with no optimisation.
     Generate(cli::generate::Args),
+    /// Generate many scenes from a manifest (one prompt a line, or JSONL of {"id", "prompt",
+    /// "seed", ...generate flags}) into DIR/<id>/, each exactly as `generate` writes it.
+    ///
+    /// Each scene is claimed through its scene lock, so workers started on the same manifest
+    /// never do a scene twice; finished scenes are skipped and unfinished ones resume. The
+    /// worker's shard comes from --shard I/N, a Slurm job array or a Kubernetes Indexed Job
+    /// (JOB_COMPLETION_INDEX with --shards). SIGTERM stops it after the current scene.
+    /// DIR/index.json records every scene, DIR/index.html is a contact sheet; --status DIR counts.
+    Batch(cli::batch::Args),
     /// Edit a generated scene in place: move, add, remove, restyle or animate objects, or undo.
     Edit(cli::edit::Args),
     /// Place the objects of a scene spec (spec.json) with graph-based constraint placement.
@@ -113,6 +122,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Object(a) => cli::object::run(a),
         Command::Plan(a) => cli::plan::run(a),
         Command::Generate(a) => cli::generate::run(a),
+        Command::Batch(a) => cli::batch::run(a),
         Command::Edit(a) => cli::edit::run(a),
         Command::Layout(a) => cli::layout::run(a),
         Command::Export(a) => cli::export::run(a),

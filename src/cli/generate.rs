@@ -48,15 +48,7 @@ const BACKGROUND: [f32; 3] = [0.0; 3];
 pub fn run_with(a: GenerateArgs) -> Result<()> {
     let start = Instant::now();
     let models = models_dir(a.models.as_deref());
-    let draft = match (&a.prior, a.draft) {
-        (_, true) | (PriorChoice::Shape, _) => true,
-        (PriorChoice::Auto, _) => models.is_none(),
-        (PriorChoice::Sd, _) if models.is_none() => bail!(
-            "--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS); --draft \
-             makes a draft scene without one"
-        ),
-        (PriorChoice::Sd | PriorChoice::Oracle(_), _) => false,
-    };
+    let draft = draft_mode(&a, models.as_deref())?;
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let existing = out.join("scene.json");
@@ -116,6 +108,19 @@ pub fn run_with(a: GenerateArgs) -> Result<()> {
         d = out.display(),
     );
     Ok(())
+}
+
+/// Whether `a` makes a draft (shape priors, no optimisation), given the models found.
+pub(super) fn draft_mode(a: &GenerateArgs, models: Option<&Path>) -> Result<bool> {
+    Ok(match (&a.prior, a.draft) {
+        (_, true) | (PriorChoice::Shape, _) => true,
+        (PriorChoice::Auto, _) => models.is_none(),
+        (PriorChoice::Sd, _) if models.is_none() => bail!(
+            "--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS); --draft \
+             makes a draft scene without one"
+        ),
+        (PriorChoice::Sd | PriorChoice::Oracle(_), _) => false,
+    })
 }
 
 /// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling,
@@ -254,7 +259,11 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
 
 /// The spec and layout: re-read from `out` when resuming and both are there (an LLM plan is
 /// not asked again), else planned afresh.
-fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpec, Layout)> {
+pub(super) fn plan_or_reuse(
+    text: &str,
+    a: &GenerateArgs,
+    resume: bool,
+) -> Result<(SceneSpec, Layout)> {
     let (spec_path, layout_path) = (a.out.join("spec.json"), a.out.join("layout.json"));
     if resume && spec_path.is_file() && layout_path.is_file() {
         let spec = SceneSpec::read(&spec_path)?;
@@ -265,7 +274,7 @@ fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpe
 }
 
 /// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
-fn render_explore(
+pub(super) fn render_explore(
     g: &Gaussians,
     layout: &Layout,
     count: usize,
@@ -339,10 +348,19 @@ pub struct Args {
     /// Continue an interrupted run in --out (same prompt and seed).
     #[arg(long)]
     pub resume: bool,
+    /// One stage of a scene spread over workers: `objects` (with --shard I/N: that shard's
+    /// objects) or `scene` (environment, composition and renders once every object is there).
+    #[arg(long, value_enum)]
+    pub stage: Option<super::stage::Stage>,
+    /// With --stage objects: the worker's shard I/N of the scene's objects (default: all; also
+    /// from SLURM_ARRAY_TASK_ID/COUNT or JOB_COMPLETION_INDEX with DREAMSCENE_SHARDS).
+    #[arg(long, value_parser = dreamscene::batch::shard::Shard::parse)]
+    pub shard: Option<dreamscene::batch::shard::Shard>,
 }
 
 pub fn run(a: Args) -> Result<()> {
-    run_with(GenerateArgs {
+    let (stage, shard) = (a.stage, a.shard);
+    let args = GenerateArgs {
         prompt: a.prompt,
         out: a.out,
         dialogue: a.dialogue,
@@ -360,5 +378,9 @@ pub fn run(a: Args) -> Result<()> {
         env_density: a.env_density,
         seed: a.seed,
         resume: a.resume,
-    })
+    };
+    match stage {
+        Some(st) => super::stage::run(&args, st, shard),
+        None => run_with(args),
+    }
 }

@@ -1,4 +1,5 @@
 //! The verbs' glue, one file each: a clap `Args` struct and `run`. Shared helpers below.
+pub mod batch;
 pub mod bench;
 pub mod demo;
 pub mod doctor;
@@ -10,6 +11,7 @@ pub mod layout;
 pub mod object;
 pub mod plan;
 pub mod render;
+pub mod stage;
 pub mod video;
 pub mod view;
 

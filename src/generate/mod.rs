@@ -4,6 +4,7 @@
 pub mod checkpoint;
 pub mod filter;
 pub mod object;
+pub mod object_shard;
 pub mod prior;
 pub mod progress;
 pub mod scene;

@@ -153,6 +153,44 @@ pub fn check_resume(existing: &SceneFile, prompt: &str, seed: u64) -> Result<boo
         .all(|n| existing.stages.iter().any(|s| s.name == *n && s.done)))
 }
 
+/// The draft PLY of one category, `objects/<category>.ply`: kept when `keep` and a valid one is
+/// there, else built from its shape prior and written. Returns it and whether it was built.
+pub fn draft_object(
+    out: &Path,
+    spec: &SceneSpec,
+    cat: &str,
+    size: [f64; 3],
+    seed: u64,
+    keep: bool,
+) -> Result<(Gaussians, bool)> {
+    let path = out.join(object_ply(cat));
+    if keep && path.is_file() {
+        if let Some(g) = read_ply(&path)
+            .ok()
+            .filter(|g| g.check().is_ok() && !g.is_empty())
+        {
+            return Ok((g, false));
+        }
+    }
+    let description = spec
+        .objects
+        .get(cat)
+        .map(|o| o.description.clone())
+        .unwrap_or_else(|| format!("a {cat}"));
+    let g = shape::build(
+        cat,
+        size,
+        &description,
+        &ShapeOptions {
+            gaussians: None,
+            seed,
+        },
+    )
+    .with_context(|| format!("building the shape prior of `{cat}`"))?;
+    write_ply(&path, &g).with_context(|| format!("writing {}", path.display()))?;
+    Ok((g, true))
+}
+
 /// Writes the draft scene into `dir` (which holds spec.json and layout.json already): object
 /// PLYs (kept when `keep_objects` and present), `environment.ply`, `scene.ply`, `scene.json` and
 /// an empty `checkpoints/`. Every file is written atomically; `progress` gets one line a stage.
@@ -184,38 +222,10 @@ pub fn write_draft_scene(
     let mut built = vec![];
     let mut object_gaussians = BTreeMap::new();
     for (cat, size) in category_sizes(spec, layout) {
-        let rel = object_ply(&cat);
-        let path = out.join(&rel);
-        let kept = if keep_objects && path.is_file() {
-            read_ply(&path)
-                .ok()
-                .filter(|g| g.check().is_ok() && !g.is_empty())
-        } else {
-            None
-        };
-        let g = match kept {
-            Some(g) => g,
-            None => {
-                let description = spec
-                    .objects
-                    .get(&cat)
-                    .map(|o| o.description.clone())
-                    .unwrap_or_else(|| format!("a {cat}"));
-                let g = shape::build(
-                    &cat,
-                    size,
-                    &description,
-                    &ShapeOptions {
-                        gaussians: None,
-                        seed,
-                    },
-                )
-                .with_context(|| format!("building the shape prior of `{cat}`"))?;
-                write_ply(&path, &g).with_context(|| format!("writing {}", path.display()))?;
-                built.push(cat.clone());
-                g
-            }
-        };
+        let (g, was_built) = draft_object(out, spec, &cat, size, seed, keep_objects)?;
+        if was_built {
+            built.push(cat.clone());
+        }
         progress(&format!(
             "object {cat}: {} Gaussians ({:.2} x {:.2} x {:.2} m){}",
             g.len(),
