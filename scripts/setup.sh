@@ -71,3 +71,10 @@ if [ ! -f "$READERS_DIR/node_modules/.package-lock.json" ] ||
   (cd "$READERS_DIR" && npm ci --no-audit --no-fund --loglevel=error)
 fi
 test -x "$READERS_DIR/node_modules/.bin/splat-transform" || { echo "export test readers missing in $READERS_DIR/node_modules" >&2; exit 1; }
+
+# Blender 3.4 (Debian) reads the engine-ready glb in tests/export_engine.rs; its glTF add-on needs
+# numpy. Optional: that test says it skipped when Blender cannot be installed.
+if ! command -v blender >/dev/null; then
+  echo "installing blender and python3-numpy (the engine export's DCC reader)"
+  apt_install blender python3-numpy || echo "blender could not be installed; tests/export_engine.rs will skip its Blender check" >&2
+fi

@@ -211,3 +211,32 @@ impl SceneLabels {
         Ok(keep)
     }
 }
+
+/// Composes the scene in `dir` and writes `scene.ply` with its labels and `labels.json` beside
+/// it, both atomically; returns the composed cloud (what `generate` writes).
+pub fn write_labelled_scene(
+    dir: &std::path::Path,
+    scene: &SceneFile,
+) -> Result<crate::splat::Gaussians> {
+    let parts = crate::scene::dir::compose_parts(dir, scene)
+        .map_err(|e| ExportError::Unrepresentable(e.to_string()))?;
+    let n = scene.objects.len();
+    let counts: Vec<usize> = parts[..n].iter().map(|g| g.len()).collect();
+    let env = parts[n..].iter().map(|g| g.len()).sum();
+    let labels = SceneLabels::new(scene, &counts, env)?;
+    let cloud = crate::scene::compose::merge(&parts);
+    let write_err = |path: std::path::PathBuf| {
+        move |source| ExportError::Write {
+            path: path.display().to_string(),
+            source,
+        }
+    };
+    let ply = dir.join("scene.ply");
+    crate::splat::ply::write_ply_labelled(&ply, &cloud, Some(&labels.per_gaussian()))
+        .map_err(write_err(ply))?;
+    let json = dir.join("labels.json");
+    let text = serde_json::to_string_pretty(&labels.to_json())
+        .map_err(|e| ExportError::Unrepresentable(e.to_string()))?;
+    crate::util::write_atomic(&json, text.as_bytes()).map_err(write_err(json))?;
+    Ok(cloud)
+}
