@@ -367,13 +367,11 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         }));
         b.add_child(root, n);
     }
-    let doors: Vec<[f64; 2]> = input
-        .openings
-        .iter()
-        .filter(|o| o.kind == "door")
-        .map(|o| inside_point(o, 0.6))
-        .collect();
-    for (k, (p, near)) in nav.spawn_points(&doors, 2).into_iter().enumerate() {
+    for (k, (p, near)) in nav
+        .spawn_points(&door_points(input), 2)
+        .into_iter()
+        .enumerate()
+    {
         let n = b.push_node(json!({
             "name": format!("spawn_{k}"), "translation": y_up(p),
             "extras": { "spawn": k, "near": near }
@@ -387,6 +385,16 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         b.use_extension("KHR_physics_rigid_bodies");
     }
     Ok((b.finish()?, nav))
+}
+
+/// The points 0.6 m inside the room in front of each door, where spawn points go first.
+pub fn door_points(input: &SceneInput) -> Vec<[f64; 2]> {
+    input
+        .openings
+        .iter()
+        .filter(|o| o.kind == "door")
+        .map(|o| inside_point(o, 0.6))
+        .collect()
 }
 
 /// The point `d` metres inside the room in front of an opening.
