@@ -25,8 +25,8 @@ fn main() -> anyhow::Result<()> {
     let mut blend = |x: i64, y: i64, c: [u8; 3], a: f64| {
         if x >= 0 && y >= 0 && (x as u32) < img.width() && (y as u32) < img.height() {
             let p = img.get_pixel_mut(x as u32, y as u32);
-            for k in 0..3 {
-                p.0[k] = (f64::from(p.0[k]) * (1.0 - a) + f64::from(c[k]) * a) as u8;
+            for (v, &ck) in p.0.iter_mut().zip(&c) {
+                *v = (f64::from(*v) * (1.0 - a) + f64::from(ck) * a) as u8;
             }
         }
     };

@@ -14,7 +14,6 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
-#[allow(dead_code)]
 mod common;
 #[allow(dead_code)]
 mod export_support;

@@ -172,7 +172,7 @@ impl NavMesh {
         let i = ((p[0] - self.origin[0]) / self.cell).floor();
         let j = ((p[1] - self.origin[1]) / self.cell).floor();
         (i >= 0.0 && j >= 0.0 && (i as usize) < self.nx && (j as usize) < self.ny)
-            .then(|| (i as usize, j as usize))
+            .then_some((i as usize, j as usize))
     }
 
     fn centre(&self, k: usize) -> [f64; 2] {
@@ -215,11 +215,11 @@ impl NavMesh {
     fn clearance(&self) -> Vec<u32> {
         let mut d = vec![u32::MAX; self.walkable.len()];
         let mut q = VecDeque::new();
-        for k in 0..self.walkable.len() {
+        for (k, (dk, &walk)) in d.iter_mut().zip(&self.walkable).enumerate() {
             let (i, j) = (k % self.nx, k / self.nx);
             let edge = i == 0 || j == 0 || i + 1 == self.nx || j + 1 == self.ny;
-            if !self.walkable[k] || edge {
-                d[k] = u32::from(self.walkable[k]);
+            if !walk || edge {
+                *dk = u32::from(walk);
                 q.push_back(k);
             }
         }
