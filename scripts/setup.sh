@@ -89,3 +89,9 @@ if ! command -v kubernetes-validate >/dev/null; then
     python3 -m pip install --quiet --break-system-packages kubernetes-validate ||
     echo "could not install kubernetes-validate; the job file test will skip" >&2
 fi
+# Blender 3.4 (Debian) reads the engine-ready glb in tests/export_engine.rs; its glTF add-on needs
+# numpy. Optional: that test says it skipped when Blender cannot be installed.
+if ! command -v blender >/dev/null; then
+  echo "installing blender and python3-numpy (the engine export's DCC reader)"
+  apt_install blender python3-numpy || echo "blender could not be installed; tests/export_engine.rs will skip its Blender check" >&2
+fi

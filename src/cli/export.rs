@@ -54,6 +54,27 @@ pub struct Args {
     /// seconds and export the scene as it stands then.
     #[arg(long)]
     pub time: Option<f64>,
+    /// Engine export (a scene directory): keep only these instances, categories or `walls`
+    /// (comma separated; ids with spaces or `_`).
+    #[arg(long, value_delimiter = ',')]
+    pub only: Vec<String>,
+    /// Engine export (a scene directory): leave out these instances, categories or `walls`.
+    #[arg(long, value_delimiter = ',')]
+    pub without: Vec<String>,
+    /// glb of a scene: each object's collider, its layout box or the convex hull of its opaque
+    /// Gaussians.
+    #[arg(long, value_enum, default_value = "box")]
+    pub colliders: CollidersArg,
+    /// glb of a scene: the navmesh agent's radius in metres (footprints grow by it).
+    #[arg(long, default_value_t = 0.25)]
+    pub agent_radius: f64,
+}
+
+/// `--colliders`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum CollidersArg {
+    Box,
+    Hull,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -82,6 +103,9 @@ pub fn run(a: Args) -> Result<()> {
             );
             return Ok(());
         }
+    }
+    if let Some(done) = engine_export(&a, format)? {
+        return Ok(done);
     }
     let g = load_input(&a.input, a.time)?;
     if format == Format::Splat && g.sh_degree > 0 {
@@ -115,4 +139,94 @@ pub fn run(a: Args) -> Result<()> {
         if a.compat { " compat" } else { "" },
     );
     Ok(())
+}
+
+/// The exports of a scene directory that know its instances: the engine-ready glb (nodes,
+/// colliders, navmesh, labels) and the labelled PLY; a labelled PLY re-exported as PLY keeps its
+/// labels. `None` when the plain path applies.
+fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
+    use dreamscene::export::engine;
+    let scene_dir = a.input.is_dir() && a.time.is_none();
+    let selecting = !a.only.is_empty() || !a.without.is_empty();
+    if selecting && !scene_dir {
+        bail!("--only/--without need a scene directory (they name its instances)");
+    }
+    if !(a.agent_radius.is_finite() && (0.0..2.0).contains(&a.agent_radius)) {
+        bail!("--agent-radius must be between 0 and 2 metres");
+    }
+    if !scene_dir {
+        let is_ply = a
+            .input
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("ply"));
+        if format == Format::Ply && is_ply && a.time.is_none() {
+            let (g, labels) = dreamscene::splat::ply::read_ply_labelled(&a.input)?;
+            if labels.is_some() {
+                super::create_parent(&a.out)?;
+                let opts = Options {
+                    compat: a.compat,
+                    scene_frame: a.scene_frame,
+                };
+                dreamscene::export::export_labelled(&g, labels.as_ref(), format, opts, &a.out)?;
+                println!(
+                    "wrote {} ({} Gaussians, labels kept)",
+                    a.out.display(),
+                    g.len()
+                );
+                return Ok(Some(()));
+            }
+        }
+        return Ok(None);
+    }
+    let start = std::time::Instant::now();
+    let opts = engine::EngineOptions {
+        colliders: match a.colliders {
+            CollidersArg::Box => engine::Colliders::Box,
+            CollidersArg::Hull => engine::Colliders::Hull,
+        },
+        agent: dreamscene::export::navmesh::Agent {
+            radius: a.agent_radius,
+            ..Default::default()
+        },
+        only: a.only.clone(),
+        without: a.without.clone(),
+        ..Default::default()
+    };
+    match format {
+        Format::Glb => {
+            super::create_parent(&a.out)?;
+            let (bytes, nav) = engine::export_scene(&a.input, &opts, &a.out)?;
+            println!(
+                "wrote {} (glb, y up: nodes, colliders, navmesh of {:.1} m², {} bytes) and {} in {:.2} s",
+                a.out.display(),
+                nav.area(),
+                bytes,
+                engine::navmesh_path(&a.out).display(),
+                start.elapsed().as_secs_f64()
+            );
+            Ok(Some(()))
+        }
+        Format::Ply => {
+            let input = engine::read_input(&a.input)?;
+            let keep = input.labels.select(&a.only, &a.without)?;
+            let all = input.labels.per_gaussian();
+            let kept: Vec<bool> = all.instance.iter().map(|&i| keep[usize::from(i)]).collect();
+            let g = engine::select(&input.cloud, &kept);
+            let labels = all.filter(&kept);
+            super::create_parent(&a.out)?;
+            let o = Options {
+                compat: a.compat,
+                scene_frame: a.scene_frame,
+            };
+            dreamscene::export::export_labelled(&g, Some(&labels), format, o, &a.out)?;
+            println!(
+                "wrote {} ({} Gaussians with instance_id and semantic_id, ply)",
+                a.out.display(),
+                g.len()
+            );
+            Ok(Some(()))
+        }
+        _ if selecting => bail!("--only/--without apply to --format glb and ply"),
+        _ => Ok(None),
+    }
 }

@@ -229,10 +229,8 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             done: true,
         });
     }
-    let composed = dreamscene::scene::dir::compose_scene(out, &scene)?;
-    let scene_path = out.join("scene.ply");
-    dreamscene::splat::ply::write_ply(&scene_path, &composed)
-        .with_context(|| format!("writing {}", scene_path.display()))?;
+    // scene.ply carries instance_id and semantic_id; labels.json names them.
+    let composed = dreamscene::export::labels::write_labelled_scene(out, &scene)?;
     dreamscene::scene::dir::write_scene(out, &scene)?;
     if a.renders > 0 {
         render_explore(

@@ -18,6 +18,8 @@
 //! quaternions and SH included, before writing (baked into the data rather than put in a node
 //! rotation, so viewers that do not rotate SH by the node still light it right). [`GlbBuilder`] can hold several meshes and nodes (one per object instance,
 //! with node translations and rotations); [`encode`] writes one node for the whole cloud.
+mod graph;
+
 use super::{sigmoid, ExportError, Result};
 use crate::scene::sh_rotate::Mat3;
 use crate::splat::cloud::SH_C0;
@@ -60,6 +62,10 @@ pub struct GlbBuilder {
     meshes: Vec<Value>,
     nodes: Vec<Value>,
     animations: Vec<Value>,
+    /// Extensions used besides [`EXTENSION`], in first-use order.
+    used: Vec<String>,
+    /// Document-level extension objects.
+    root_extensions: serde_json::Map<String, Value>,
 }
 
 /// A node's placement: glTF translation and rotation (x, y, z, w), in the parent's frame.
@@ -265,11 +271,22 @@ impl GlbBuilder {
     }
 
     pub fn finish(self) -> Result<Vec<u8>> {
-        let roots: Vec<usize> = (0..self.nodes.len()).collect();
+        let child: std::collections::HashSet<u64> = self
+            .nodes
+            .iter()
+            .filter_map(|n| n["children"].as_array())
+            .flatten()
+            .filter_map(Value::as_u64)
+            .collect();
+        let roots: Vec<usize> = (0..self.nodes.len())
+            .filter(|i| !child.contains(&(*i as u64)))
+            .collect();
+        let mut used = vec![EXTENSION.to_string()];
+        used.extend(self.used.iter().cloned());
         let doc = json!({
             "asset": { "version": "2.0",
                        "generator": concat!("dreamscene ", env!("CARGO_PKG_VERSION")) },
-            "extensionsUsed": [EXTENSION],
+            "extensionsUsed": used,
             "scene": 0,
             "scenes": [{ "nodes": roots }],
             "nodes": self.nodes,
@@ -281,6 +298,9 @@ impl GlbBuilder {
         let mut doc = doc;
         if !self.animations.is_empty() {
             doc["animations"] = json!(self.animations);
+        }
+        if !self.root_extensions.is_empty() {
+            doc["extensions"] = Value::Object(self.root_extensions);
         }
         let mut text = serde_json::to_vec(&doc)
             .map_err(|e| ExportError::Unrepresentable(format!("glTF JSON: {e}")))?;

@@ -16,8 +16,12 @@
 //!
 //! [`load_input`] is the one place that turns a command's input path (a scene directory or a
 //! splat PLY) into the cloud to export.
+pub mod collider;
 pub mod encode;
+pub mod engine;
 pub mod glb;
+pub mod labels;
+pub mod navmesh;
 pub mod ply;
 pub mod splat;
 pub mod spz;
@@ -161,6 +165,18 @@ pub fn check_exportable(g: &Gaussians) -> Result<()> {
 /// it), so a failed export never leaves half a file or spoils an older one. The cloud is first
 /// turned into the format's frame (see the module notes).
 pub fn export(g: &Gaussians, format: Format, opts: Options, out: &Path) -> Result<()> {
+    export_labelled(g, None, format, opts, out)
+}
+
+/// [`export`] with per-Gaussian labels, which the PLY formats write as `instance_id` and
+/// `semantic_id` (the other formats have no place for them).
+pub fn export_labelled(
+    g: &Gaussians,
+    labels: Option<&crate::splat::ply::Labels>,
+    format: Format,
+    opts: Options,
+    out: &Path,
+) -> Result<()> {
     check_exportable(g)?;
     if opts.compat && format != Format::Ply {
         return Err(ExportError::Unrepresentable(
@@ -180,8 +196,8 @@ pub fn export(g: &Gaussians, format: Format, opts: Options, out: &Path) -> Resul
         &viewer
     };
     let bytes = match format {
-        Format::Ply if opts.compat => return ply::write_compat(out, g),
-        Format::Ply => return ply::write(out, g),
+        Format::Ply if opts.compat => return ply::write_compat(out, g, labels),
+        Format::Ply => return ply::write(out, g, labels),
         Format::Splat => splat::encode(g),
         Format::Spz => spz::encode(g)?,
         Format::Glb => glb::encode(g)?,

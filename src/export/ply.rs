@@ -4,7 +4,7 @@
 //! vertex. Both write the cloud in the frame they are given (see [`super`] for frames).
 use super::{ExportError, Result};
 use crate::scene::compose::pad_sh;
-use crate::splat::ply::write_ply;
+use crate::splat::ply::{write_ply_labelled, Labels};
 use crate::splat::Gaussians;
 use std::path::Path;
 
@@ -12,15 +12,16 @@ use std::path::Path;
 /// 3 scales + 4 rotation floats.
 pub const COMPAT_VERTEX_BYTES: usize = 62 * 4;
 
-/// Writes `g` as an INRIA PLY at its own SH degree, atomically.
-pub fn write(path: &Path, g: &Gaussians) -> Result<()> {
-    write_ply(path, g).map_err(|source| ExportError::Write {
+/// Writes `g` as an INRIA PLY at its own SH degree, atomically, with `labels` after the INRIA
+/// properties when given.
+pub fn write(path: &Path, g: &Gaussians, labels: Option<&Labels>) -> Result<()> {
+    write_ply_labelled(path, g, labels).map_err(|source| ExportError::Write {
         path: path.display().to_string(),
         source,
     })
 }
 
 /// Writes `g` padded to SH degree 3 (the 248-byte vertex layout), atomically.
-pub fn write_compat(path: &Path, g: &Gaussians) -> Result<()> {
-    write(path, &pad_sh(g, 3))
+pub fn write_compat(path: &Path, g: &Gaussians, labels: Option<&Labels>) -> Result<()> {
+    write(path, &pad_sh(g, 3), labels)
 }

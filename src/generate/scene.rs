@@ -258,10 +258,8 @@ pub fn write_draft_scene(
         scene.environment.as_ref().map_or("", |e| e.kind.as_str()),
         env_g.len()
     ));
-    let composed = dir::compose_scene(out, &scene)?;
-    let scene_path = out.join("scene.ply");
-    write_ply(&scene_path, &composed)
-        .with_context(|| format!("writing {}", scene_path.display()))?;
+    // scene.ply carries instance_id and semantic_id; labels.json names them.
+    let composed = crate::export::labels::write_labelled_scene(out, &scene)?;
     dir::write_scene(out, &scene)?;
     progress(&format!(
         "scene: {} Gaussians, scene.json written",

@@ -264,6 +264,12 @@ pub fn write_scene(dir: &Path, scene: &SceneFile) -> Result<(), SceneError> {
 /// The environment is left out while a stage named `environment` is listed as not done. All
 /// parts are padded to the highest SH degree among them. The caller writes `scene.ply`.
 pub fn compose_scene(dir: &Path, scene: &SceneFile) -> Result<Gaussians, SceneError> {
+    Ok(merge(&compose_parts(dir, scene)?))
+}
+
+/// The parts [`compose_scene`] merges, in its order: one placed cloud per instance of
+/// `scene.objects`, then the environment when it is included.
+pub fn compose_parts(dir: &Path, scene: &SceneFile) -> Result<Vec<Gaussians>, SceneError> {
     scene
         .validate()
         .map_err(|m| file_err(&dir.join("scene.json"), m))?;
@@ -283,7 +289,7 @@ pub fn compose_scene(dir: &Path, scene: &SceneFile) -> Result<Gaussians, SceneEr
             parts.push(load(dir, &env.ply)?);
         }
     }
-    Ok(merge(&parts))
+    Ok(parts)
 }
 
 fn load(dir: &Path, rel: &str) -> Result<Gaussians, SceneError> {

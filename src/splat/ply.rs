@@ -6,7 +6,7 @@ mod header;
 mod read;
 
 use super::cloud::Gaussians;
-pub use read::{parse_ply, Invalid, PlyRead};
+pub use read::{parse_ply, Invalid, Labels, PlyRead};
 use std::io::BufReader;
 use std::path::Path;
 
@@ -37,9 +37,34 @@ pub fn read_ply_with(path: &Path, invalid: Invalid) -> Result<PlyRead, PlyError>
     parse_ply(&mut BufReader::new(file), invalid).map_err(err)
 }
 
+/// Reads a splat PLY and its per-Gaussian labels, if it has them.
+pub fn read_ply_labelled(path: &Path) -> Result<(Gaussians, Option<Labels>), PlyError> {
+    read_ply_with(path, Invalid::Refuse).map(|r| (r.gaussians, r.labels))
+}
+
 /// Writes a splat PLY (through a temporary file, so a crash never leaves half a file).
 pub fn write_ply(path: &Path, g: &Gaussians) -> std::io::Result<()> {
+    write_ply_labelled(path, g, None)
+}
+
+/// Writes a splat PLY with `instance_id` (ushort) and `semantic_id` (uchar) after the INRIA
+/// properties when `labels` is given (one of each per Gaussian).
+pub fn write_ply_labelled(
+    path: &Path,
+    g: &Gaussians,
+    labels: Option<&Labels>,
+) -> std::io::Result<()> {
     g.check().map_err(std::io::Error::other)?;
+    if let Some(l) = labels {
+        if l.instance.len() != g.len() || l.semantic.len() != g.len() {
+            return Err(std::io::Error::other(format!(
+                "{} Gaussians but {} instance and {} semantic labels",
+                g.len(),
+                l.instance.len(),
+                l.semantic.len()
+            )));
+        }
+    }
     let k = g.coeffs();
     let per = k - 1;
     let mut header = String::from("ply\nformat binary_little_endian 1.0\n");
@@ -56,6 +81,9 @@ pub fn write_ply(path: &Path, g: &Gaussians) -> std::io::Result<()> {
     names.extend((0..4).map(|i| format!("rot_{i}")));
     for n in &names {
         header += &format!("property float {n}\n");
+    }
+    if labels.is_some() {
+        header += "property ushort instance_id\nproperty uchar semantic_id\n";
     }
     header += "end_header\n";
     let mut out = header.into_bytes();
@@ -75,6 +103,10 @@ pub fn write_ply(path: &Path, g: &Gaussians) -> std::io::Result<()> {
         row.extend(g.rotations[i]);
         for v in row {
             out.extend(v.to_le_bytes());
+        }
+        if let Some(l) = labels {
+            out.extend(l.instance[i].to_le_bytes());
+            out.push(l.semantic[i]);
         }
     }
     crate::util::write_atomic(path, &out)

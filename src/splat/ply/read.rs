@@ -29,6 +29,34 @@ pub enum Invalid {
 pub struct PlyRead {
     pub gaussians: Gaussians,
     pub dropped: usize,
+    /// The per-Gaussian labels, when the file has an `instance_id` property (`semantic_id`
+    /// reads as 0 where absent); one per kept Gaussian.
+    pub labels: Option<Labels>,
+}
+
+/// Per-Gaussian labels (ARCHITECTURE.md, "Labels"): the instance (0 = walls, floor, ground)
+/// and the semantic class, as `labels.json` names them.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Labels {
+    pub instance: Vec<u16>,
+    pub semantic: Vec<u8>,
+}
+
+impl Labels {
+    /// The labels of the Gaussians `keep` says to keep, in order.
+    pub fn filter(&self, keep: &[bool]) -> Labels {
+        let pick = |i: &usize| keep.get(*i).copied().unwrap_or(false);
+        Labels {
+            instance: (0..self.instance.len())
+                .filter(pick)
+                .map(|i| self.instance[i])
+                .collect(),
+            semantic: (0..self.semantic.len())
+                .filter(pick)
+                .map(|i| self.semantic[i])
+                .collect(),
+        }
+    }
 }
 
 /// Reads values row by row in either encoding.
@@ -216,6 +244,10 @@ pub fn parse_ply<R: BufRead>(r: &mut R, invalid: Invalid) -> Result<PlyRead, Str
     let dc = [need("f_dc_0")?, need("f_dc_1")?, need("f_dc_2")?];
     let op = need("opacity")?;
     let sc = [need("scale_0")?, need("scale_1")?, need("scale_2")?];
+    // Labels are integers of any type (splat-transform rewrites them as `uint`), or floats.
+    let label_idx = |name: &str| idx(name).filter(|&i| matches!(props[i].kind, Kind::Scalar(_)));
+    let (inst_at, sem_at) = (label_idx("instance_id"), label_idx("semantic_id"));
+    let mut labels = inst_at.map(|_| Labels::default());
     let rot = [
         need("rot_0")?,
         need("rot_1")?,
@@ -282,6 +314,12 @@ pub fn parse_ply<R: BufRead>(r: &mut R, invalid: Invalid) -> Result<PlyRead, Str
         g.scales.push(sc.map(f));
         g.rotations.push(rot.map(f));
         g.opacities.push(f(op));
+        if let (Some(l), Some(i)) = (labels.as_mut(), inst_at) {
+            l.instance
+                .push(vals[i].clamp(0.0, f64::from(u16::MAX)) as u16);
+            l.semantic
+                .push(sem_at.map_or(0, |s| vals[s].clamp(0.0, 255.0) as u8));
+        }
         for c in 0..k {
             for ch in 0..3 {
                 g.sh.push(if c == 0 {
@@ -301,6 +339,7 @@ pub fn parse_ply<R: BufRead>(r: &mut R, invalid: Invalid) -> Result<PlyRead, Str
     Ok(PlyRead {
         gaussians: g,
         dropped: bad,
+        labels,
     })
 }
 

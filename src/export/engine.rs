@@ -1,0 +1,458 @@
+//! The engine-ready `.glb` of a scene directory (ARCHITECTURE.md, "Engine-ready glb"): a root
+//! node `dreamscene` (extras: units, room, the id → category table) holding
+//!
+//! - `splats`: every Gaussian as one `KHR_gaussian_splatting` primitive (world frame), with
+//!   `_FEATURE_ID_0` = instance id and `EXT_mesh_features`;
+//! - one node per instance, named by its id with spaces as `_`, posed by `scene.json`, extras
+//!   `{id, category, instance_id, semantic, semantic_id, size_m, gaussians: [start, count]}`,
+//!   with a `collider_<id>` child: a box of its layout size (or of its Gaussians' bounds), or
+//!   with [`Colliders::Hull`] the convex prism around its opaque Gaussians;
+//! - `collider_floor` and `collider_wall_<side>` (openings cut out); outdoors only the ground;
+//! - `navmesh` ([`super::navmesh`]) and `spawn_<n>` nodes on it.
+//!
+//! Colliders carry `OMI_physics_body`/`OMI_physics_shape` (Godot 4) and the Khronos draft
+//! `KHR_physics_rigid_bodies`/`KHR_implicit_shapes`, all in `extensionsUsed` only.
+use super::collider::{self, Mesh};
+use super::glb::{to_gltf_frame, GlbBuilder};
+use super::labels::{node_name, SceneLabels};
+use super::navmesh::{Agent, NavMesh, Obstacle};
+use super::{ExportError, Result};
+use crate::scene::compose::merge;
+use crate::scene::dir::{compose_parts, read_scene, SceneFile};
+use crate::splat::Gaussians;
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// Which collider each object gets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Colliders {
+    /// The oriented box of its layout size.
+    #[default]
+    Box,
+    /// The convex prism around its opaque Gaussians.
+    Hull,
+}
+
+/// What the engine export writes.
+#[derive(Debug, Clone, Default)]
+pub struct EngineOptions {
+    pub colliders: Colliders,
+    pub agent: Agent,
+    /// Navmesh cell side, metres (0 = 0.1).
+    pub cell: f64,
+    /// Instances, categories or `walls` to keep (empty = all).
+    pub only: Vec<String>,
+    /// Instances, categories or `walls` to leave out.
+    pub without: Vec<String>,
+}
+
+/// A scene read for export: the scene file, its parts and labels, layout sizes and openings.
+pub struct SceneInput {
+    pub scene: SceneFile,
+    pub labels: SceneLabels,
+    pub cloud: Gaussians,
+    /// World-frame size of each instance (scene order).
+    pub sizes: Vec<[f64; 3]>,
+    pub openings: Vec<collider::Opening>,
+}
+
+/// Reads a scene directory: composes it and finds each instance's size (layout.json, scaled by
+/// the instance's scale; else its Gaussians' bounds) and the openings (scene.json, else
+/// layout.json).
+pub fn read_input(dir: &Path) -> Result<SceneInput> {
+    let dir = if dir.is_file() {
+        dir.parent().unwrap_or(Path::new("."))
+    } else {
+        dir
+    };
+    let bad = |e: crate::scene::dir::SceneError| ExportError::Unrepresentable(e.to_string());
+    let scene = read_scene(dir).map_err(bad)?;
+    let parts = compose_parts(dir, &scene).map_err(bad)?;
+    let n = scene.objects.len();
+    let counts: Vec<usize> = parts[..n].iter().map(Gaussians::len).collect();
+    let env: usize = parts[n..].iter().map(Gaussians::len).sum();
+    let labels = SceneLabels::new(&scene, &counts, env)?;
+    let layout: Value = std::fs::read_to_string(dir.join("layout.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok())
+        .unwrap_or(Value::Null);
+    let scene_value = serde_json::to_value(&scene).unwrap_or(Value::Null);
+    let mut openings = collider::openings(&scene_value);
+    if openings.is_empty() {
+        openings = collider::openings(&layout);
+    }
+    let sizes = scene
+        .objects
+        .iter()
+        .zip(&parts)
+        .map(|(o, g)| {
+            let planned = layout["objects"].as_array().and_then(|a| {
+                let e = a.iter().find(|e| e["id"].as_str() == Some(o.id.as_str()))?;
+                let s = e["size"].as_array()?;
+                Some([
+                    s.first()?.as_f64()?,
+                    s.get(1)?.as_f64()?,
+                    s.get(2)?.as_f64()?,
+                ])
+            });
+            match planned {
+                Some(s) => [0, 1, 2].map(|a| s[a] * o.scale[a].abs()),
+                None => local_bounds(g, &o.placement())
+                    .map_or([0.0; 3], |(lo, hi)| [0, 1, 2].map(|a| hi[a] - lo[a])),
+            }
+        })
+        .collect();
+    Ok(SceneInput {
+        scene,
+        labels,
+        cloud: merge(&parts),
+        sizes,
+        openings,
+    })
+}
+
+/// Object-frame bounds (after yaw is undone, relative to the instance position) of a placed
+/// cloud's opaque Gaussians (sigmoid(opacity) >= 0.5; all when none is).
+fn local_points(g: &Gaussians, p: &crate::scene::compose::Placement) -> Vec<[f64; 3]> {
+    let (s, c) = p.yaw.to_radians().sin_cos();
+    let opaque = g.opacities.iter().any(|&o| o >= 0.0);
+    g.means
+        .iter()
+        .zip(&g.opacities)
+        .filter(|(_, &o)| !opaque || o >= 0.0)
+        .map(|(m, _)| {
+            let d = [0, 1, 2].map(|a| f64::from(m[a]) - p.position[a]);
+            [c * d[0] + s * d[1], -s * d[0] + c * d[1], d[2]]
+        })
+        .collect()
+}
+
+fn local_bounds(
+    g: &Gaussians,
+    p: &crate::scene::compose::Placement,
+) -> Option<([f64; 3], [f64; 3])> {
+    let pts = local_points(g, p);
+    if pts.is_empty() {
+        return None;
+    }
+    let m = Mesh {
+        vertices: pts,
+        triangles: vec![],
+    };
+    Some(m.bounds())
+}
+
+/// Scene frame (z up) to glTF (y up): `(x, y, z)` to `(x, z, -y)`.
+fn y_up(v: [f64; 3]) -> [f32; 3] {
+    [v[0] as f32, v[2] as f32, -v[1] as f32]
+}
+
+fn add_mesh(b: &mut GlbBuilder, name: &str, m: &Mesh, offset: [f64; 3]) -> usize {
+    let pos: Vec<[f32; 3]> = m
+        .vertices
+        .iter()
+        .map(|v| y_up([v[0] - offset[0], v[1] - offset[1], v[2] - offset[2]]))
+        .collect();
+    let idx: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+    b.add_triangles(name, &pos, &idx, Value::Null)
+}
+
+/// The physics blocks of a static collider node: OMI body + shape, KHR rigid body + shape.
+struct Physics {
+    omi: Vec<Value>,
+    khr: Vec<Value>,
+}
+
+impl Physics {
+    /// `shape` is an OMI shape; a box also becomes a KHR implicit shape, a mesh a KHR node
+    /// geometry.
+    fn attach(&mut self, b: &mut GlbBuilder, node: usize, shape: Value, convex: bool) {
+        self.omi.push(shape.clone());
+        let omi = self.omi.len() - 1;
+        let khr_geometry = if shape["type"] == "box" {
+            self.khr.push(shape);
+            json!({ "shape": self.khr.len() - 1 })
+        } else {
+            json!({ "node": node, "convexHull": convex })
+        };
+        b.set_node_field(
+            node,
+            "extensions",
+            json!({
+                "OMI_physics_body": { "collider": { "shape": omi } },
+                "KHR_physics_rigid_bodies": { "collider": { "geometry": khr_geometry } }
+            }),
+        );
+    }
+}
+
+/// Writes the engine-ready `.glb` of the scene in `dir` and returns its bytes and the navmesh.
+pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavMesh)> {
+    let (scene, labels) = (&input.scene, &input.labels);
+    let keep = labels.select(&opts.only, &opts.without)?;
+    let all = labels.per_gaussian();
+    let kept: Vec<bool> = all.instance.iter().map(|&i| keep[usize::from(i)]).collect();
+    let cloud = select(&input.cloud, &kept);
+    if cloud.is_empty() {
+        return Err(ExportError::Unrepresentable(
+            "the selection (--only/--without) keeps no Gaussian".into(),
+        ));
+    }
+    let ids = all.filter(&kept).instance;
+    let mut b = GlbBuilder::new();
+    let room = scene.room.size;
+    let indoor = scene
+        .environment
+        .as_ref()
+        .is_none_or(|e| e.kind != "hemisphere");
+    let categories: serde_json::Map<String, Value> = labels
+        .instances
+        .iter()
+        .filter(|i| keep[usize::from(i.instance_id)])
+        .map(|i| (node_name(&i.id), json!(i.category)))
+        .collect();
+    let root = b.push_node(json!({
+        "name": "dreamscene",
+        "extras": {
+            "units": "metres", "up": "+y", "prompt": scene.prompt,
+            "scene_type": if indoor { "indoor" } else { "outdoor" },
+            "room_size_m": room, "categories": categories,
+            "labels": labels.to_json()["semantic"].clone(),
+        }
+    }));
+    let mesh = b.add_splats("splats", &to_gltf_frame(&cloud))?;
+    b.add_feature_ids(mesh, &ids, "instance");
+    let splats = b.push_node(json!({ "name": "splats", "mesh": mesh }));
+    b.add_child(root, splats);
+
+    let mut phys = Physics {
+        omi: vec![],
+        khr: vec![],
+    };
+    let mut obstacles = vec![];
+    for ((o, inst), size) in scene
+        .objects
+        .iter()
+        .zip(&labels.instances)
+        .zip(&input.sizes)
+    {
+        let p = o.placement();
+        obstacles.push(Obstacle {
+            centre: [p.position[0], p.position[1]],
+            half: [size[0] / 2.0, size[1] / 2.0],
+            yaw: p.yaw,
+            z: [p.position[2], p.position[2] + size[2]],
+        });
+        if !keep[usize::from(inst.instance_id)] {
+            continue;
+        }
+        let name = node_name(&o.id);
+        let half = (p.yaw.to_radians() / 2.0).sin_cos();
+        let node = b.push_node(json!({
+            "name": name,
+            "translation": y_up(p.position),
+            "rotation": [0.0, half.0, 0.0, half.1],
+            "extras": {
+                "id": o.id, "category": o.category, "instance_id": inst.instance_id,
+                "semantic": o.category, "semantic_id": inst.semantic_id, "size_m": size,
+                "yaw_deg": o.yaw, "gaussians": [inst.start, inst.count],
+            }
+        }));
+        b.add_child(root, node);
+        let hull = (opts.colliders == Colliders::Hull)
+            .then(|| {
+                let g = select_range(&input.cloud, inst.start, inst.count);
+                let pts = local_points(&g, &p);
+                let (z0, z1) = pts
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| {
+                        (a.min(q[2]), b.max(q[2]))
+                    });
+                let xy: Vec<[f64; 2]> = pts.iter().map(|q| [q[0], q[1]]).collect();
+                collider::hull_prism(&xy, z0, z1)
+            })
+            .flatten();
+        let cname = format!("collider_{name}");
+        let extras = json!({ "collider_of": o.id });
+        let col = match hull {
+            Some(m) => {
+                let mesh = add_mesh(&mut b, &cname, &m, [0.0; 3]);
+                let n = b.push_node(json!({ "name": cname, "mesh": mesh, "extras": extras }));
+                phys.attach(
+                    &mut b,
+                    n,
+                    json!({"type": "convex", "convex": {"mesh": mesh}}),
+                    true,
+                );
+                n
+            }
+            None => {
+                let mut m = Mesh::default();
+                let h = [size[0] / 2.0, size[1] / 2.0, size[2] / 2.0];
+                m.add_box([-h[0], -h[1], -h[2]], h);
+                let mesh = add_mesh(&mut b, &cname, &m, [0.0; 3]);
+                let n = b.push_node(json!({
+                    "name": cname, "mesh": mesh, "extras": extras,
+                    "translation": [0.0, h[2], 0.0]
+                }));
+                let gl = [size[0], size[2], size[1]];
+                phys.attach(&mut b, n, json!({"type": "box", "box": {"size": gl}}), true);
+                n
+            }
+        };
+        b.add_child(node, col);
+    }
+
+    // The floor (or ground) and the walls.
+    if keep[0] {
+        let t = collider::WALL;
+        let mut floor = Mesh::default();
+        floor.add_box(
+            [-room[0] / 2.0, -room[1] / 2.0, -t],
+            [room[0] / 2.0, room[1] / 2.0, 0.0],
+        );
+        let mesh = add_mesh(&mut b, "collider_floor", &floor, [0.0, 0.0, -t / 2.0]);
+        let n = b.push_node(json!({
+            "name": "collider_floor", "mesh": mesh, "translation": [0.0, -t / 2.0, 0.0],
+            "extras": { "collider_of": "floor" }
+        }));
+        let size = [room[0], t, room[1]];
+        phys.attach(
+            &mut b,
+            n,
+            json!({"type": "box", "box": {"size": size}}),
+            true,
+        );
+        b.add_child(root, n);
+        if indoor {
+            for (side, m) in collider::walls(room, &input.openings) {
+                let name = format!("collider_wall_{side}");
+                let mesh = add_mesh(&mut b, &name, &m, [0.0; 3]);
+                let cut: Vec<&str> = input
+                    .openings
+                    .iter()
+                    .filter(|o| o.wall == side)
+                    .map(|o| o.kind.as_str())
+                    .collect();
+                let n = b.push_node(json!({
+                    "name": name, "mesh": mesh,
+                    "extras": { "collider_of": format!("wall {side}"), "openings": cut }
+                }));
+                phys.attach(
+                    &mut b,
+                    n,
+                    json!({"type": "trimesh", "trimesh": {"mesh": mesh}}),
+                    false,
+                );
+                b.add_child(root, n);
+            }
+        }
+    }
+
+    // The navmesh and spawn points (every obstacle counts, kept or not: it is the scene's floor).
+    let cell = if opts.cell > 0.0 { opts.cell } else { 0.1 };
+    let nav = NavMesh::build([room[0], room[1]], &obstacles, opts.agent, cell);
+    if !nav.triangles.is_empty() {
+        let m = Mesh {
+            vertices: nav.vertices.clone(),
+            triangles: nav.triangles.clone(),
+        };
+        let mesh = add_mesh(&mut b, "navmesh", &m, [0.0; 3]);
+        let n = b.push_node(json!({
+            "name": "navmesh", "mesh": mesh,
+            "extras": {
+                "agent_radius": opts.agent.radius, "agent_height": opts.agent.height,
+                "max_climb": opts.agent.climb, "cell": cell, "walkable_m2": nav.area(),
+            }
+        }));
+        b.add_child(root, n);
+    }
+    for (k, (p, near)) in nav
+        .spawn_points(&door_points(input), 2)
+        .into_iter()
+        .enumerate()
+    {
+        let n = b.push_node(json!({
+            "name": format!("spawn_{k}"), "translation": y_up(p),
+            "extras": { "spawn": k, "near": near }
+        }));
+        b.add_child(root, n);
+    }
+    if !phys.omi.is_empty() {
+        b.set_root_extension("OMI_physics_shape", json!({ "shapes": phys.omi }));
+        b.use_extension("OMI_physics_body");
+        b.set_root_extension("KHR_implicit_shapes", json!({ "shapes": phys.khr }));
+        b.use_extension("KHR_physics_rigid_bodies");
+    }
+    Ok((b.finish()?, nav))
+}
+
+/// The points 0.6 m inside the room in front of each door, where spawn points go first.
+pub fn door_points(input: &SceneInput) -> Vec<[f64; 2]> {
+    input
+        .openings
+        .iter()
+        .filter(|o| o.kind == "door")
+        .map(|o| inside_point(o, 0.6))
+        .collect()
+}
+
+/// The point `d` metres inside the room in front of an opening.
+fn inside_point(o: &collider::Opening, d: f64) -> [f64; 2] {
+    let [x, y, _] = o.position;
+    match o.wall.as_str() {
+        "north" => [x, y - d],
+        "south" => [x, y + d],
+        "east" => [x - d, y],
+        _ => [x + d, y],
+    }
+}
+
+/// Reads the scene in `dir` and writes the engine glb to `out` and the navmesh as OBJ beside
+/// it (`<stem>.navmesh.obj`), atomically; returns the glb's size and the navmesh.
+pub fn export_scene(dir: &Path, opts: &EngineOptions, out: &Path) -> Result<(usize, NavMesh)> {
+    let input = read_input(dir)?;
+    let (bytes, nav) = encode(&input, opts)?;
+    let write = |p: &Path, b: &[u8]| {
+        crate::util::write_atomic(p, b).map_err(|source| ExportError::Write {
+            path: p.display().to_string(),
+            source,
+        })
+    };
+    write(out, &bytes)?;
+    write(&navmesh_path(out), nav.to_obj().as_bytes())?;
+    Ok((bytes.len(), nav))
+}
+
+/// Where [`export_scene`] writes the navmesh OBJ for a glb at `out`.
+pub fn navmesh_path(out: &Path) -> std::path::PathBuf {
+    let stem = out
+        .file_stem()
+        .map_or("scene".into(), |s| s.to_string_lossy());
+    out.with_file_name(format!("{stem}.navmesh.obj"))
+}
+
+/// The Gaussians of `g` that `keep` marks, in order.
+pub fn select(g: &Gaussians, keep: &[bool]) -> Gaussians {
+    let k = g.coeffs() * 3;
+    let on = |i: &usize| keep.get(*i).copied().unwrap_or(false);
+    let idx: Vec<usize> = (0..g.len()).filter(on).collect();
+    Gaussians {
+        means: idx.iter().map(|&i| g.means[i]).collect(),
+        scales: idx.iter().map(|&i| g.scales[i]).collect(),
+        rotations: idx.iter().map(|&i| g.rotations[i]).collect(),
+        opacities: idx.iter().map(|&i| g.opacities[i]).collect(),
+        sh: idx
+            .iter()
+            .flat_map(|&i| g.sh[i * k..(i + 1) * k].iter().copied())
+            .collect(),
+        sh_degree: g.sh_degree,
+    }
+}
+
+/// Gaussians `start..start + count` of `g` (clamped to its length).
+fn select_range(g: &Gaussians, start: usize, count: usize) -> Gaussians {
+    let end = (start + count).min(g.len());
+    let keep: Vec<bool> = (0..g.len()).map(|i| i >= start && i < end).collect();
+    select(g, &keep)
+}
