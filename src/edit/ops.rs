@@ -249,7 +249,12 @@ pub fn replace_partners(
             );
         }
     }
-    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
+    let l = layout_pinned(
+        &spec,
+        LayoutOptions::seeded(state.scene.seed),
+        &pins,
+        state.layout.as_ref().map(|l| l.openings.as_slice()),
+    )
         .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
     let mut out = vec![];
     for o in &state.scene.objects {
@@ -467,7 +472,12 @@ pub fn place_new(
             )
         })
         .collect();
-    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
+    let l = layout_pinned(
+        &spec,
+        LayoutOptions::seeded(state.scene.seed),
+        &pins,
+        state.layout.as_ref().map(|l| l.openings.as_slice()),
+    )
         .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
     let p = l
         .objects
