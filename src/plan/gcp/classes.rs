@@ -91,9 +91,13 @@ impl Placements {
         })
     }
 
-    /// The placement of `category`, if the table has it.
+    /// The placement of `category` (or of the knowledge-base category it is a synonym of),
+    /// if the table has it.
     pub fn get(&self, category: &str) -> Option<&Placement> {
-        self.by_category.get(category)
+        self.by_category.get(category).or_else(|| {
+            let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
+            self.by_category.get(&kb.category)
+        })
     }
 
     /// The class of `category` (floor when the table does not name it).
@@ -103,15 +107,21 @@ impl Placements {
 }
 
 /// The class `category` takes in `spec`: an on_surface thing whose scene has none of its
-/// supports hangs on the wall when it has a height, else stands on the floor.
+/// supports hangs on the wall when it has a height, else stands on the floor; one with a height
+/// that the spec puts against a wall (SIDE: "a TV on the wall") hangs there.
 pub fn effective_class(spec: &SceneSpec, category: &str) -> Class {
     let table = Placements::builtin();
+    let on_wall = spec.objects.get(category).is_some_and(|o| {
+        (1..=o.number).any(|k| spec.anchors.get(&format!("{category}{k}")) == Some(&Anchor::Side))
+    });
     match table.get(category) {
         Some(Placement {
             class: Class::OnSurface(h),
             supports,
         }) => {
-            if supports.iter().any(|s| spec.objects.contains_key(s)) {
+            if let (Some(h), true) = (h, on_wall) {
+                Class::OnWall(*h)
+            } else if supports.iter().any(|s| spec.objects.contains_key(s)) {
                 Class::OnSurface(*h)
             } else if let Some(h) = h {
                 Class::OnWall(*h)
@@ -148,6 +158,7 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     let mut added = vec![];
+    let mut unstack: Vec<String> = vec![];
     let cats: Vec<(String, u32, [f64; 3])> = spec
         .objects
         .iter()
@@ -164,6 +175,8 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                         *a = Anchor::Side;
                     }
                     if let Class::OnWall(h) = class {
+                        // hung on the wall, it rests on nothing
+                        unstack.push(id.clone());
                         mounts.wall.insert(id, h);
                     }
                 }
@@ -178,6 +191,8 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                             && matches!(r.relation, RelationKind::Over | RelationKind::Under)
                     });
                     if has_own {
+                        // a thing on a support keeps no anchor of its own
+                        spec.anchors.remove(&id);
                         continue;
                     }
                     let Some(p) = Placements::builtin().get(&cat) else {
@@ -209,6 +224,32 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                     }
                 }
                 _ => {}
+            }
+        }
+    }
+    spec.relations.retain(|r| {
+        !(unstack.contains(&r.subject)
+            && matches!(r.relation, RelationKind::Over | RelationKind::Under))
+    });
+    // A desk or table "facing the window" is used facing it: its back to the window, and the
+    // seats at it face the window.
+    let facing: Vec<String> = spec
+        .anchors
+        .iter()
+        .filter(|(_, a)| **a == Anchor::FaceWindow)
+        .map(|(id, _)| id.clone())
+        .collect();
+    for id in facing {
+        let seats: Vec<String> = spec
+            .relations
+            .iter()
+            .filter(|r| r.object == id && r.relation == RelationKind::At)
+            .map(|r| r.subject.clone())
+            .collect();
+        if !seats.is_empty() {
+            spec.anchors.insert(id, Anchor::Window);
+            for s in seats {
+                spec.anchors.insert(s, Anchor::FaceWindow);
             }
         }
     }
