@@ -100,6 +100,14 @@ impl Placements {
         })
     }
 
+    /// Whether `category` holds things (a support of some on_surface category): a desk, a
+    /// counter, a table, used from its front.
+    pub fn is_support(&self, category: &str) -> bool {
+        self.by_category
+            .values()
+            .any(|p| p.supports.iter().any(|s| s == category))
+    }
+
     /// The class of `category` (floor when the table does not name it).
     pub fn class(&self, category: &str) -> Class {
         self.get(category).map_or(Class::Floor, |p| p.class)
@@ -231,8 +239,8 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         !(unstack.contains(&r.subject)
             && matches!(r.relation, RelationKind::Over | RelationKind::Under))
     });
-    // A desk or table "facing the window" is used facing it: its back to the window, and the
-    // seats at it face the window.
+    // A desk, table or counter "facing the window" (a support: used from its front) is used
+    // facing it: its back to the window, and the seats at it face the window.
     let facing: Vec<String> = spec
         .anchors
         .iter()
@@ -246,7 +254,8 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
             .filter(|r| r.object == id && r.relation == RelationKind::At)
             .map(|r| r.subject.clone())
             .collect();
-        if !seats.is_empty() {
+        let cat = base(&id).to_string();
+        if !seats.is_empty() || Placements::builtin().is_support(&cat) {
             spec.anchors.insert(id, Anchor::Window);
             for s in seats {
                 spec.anchors.insert(s, Anchor::FaceWindow);
