@@ -16,6 +16,7 @@ use super::spec::{
 use rand::{Rng, SeedableRng};
 
 pub mod classes;
+mod compose;
 mod fit;
 pub mod openings;
 mod poses;
@@ -105,6 +106,12 @@ struct Problem {
     /// Per instance: (relation, other instance, true when this instance is the subject).
     rels: Vec<Vec<(RelationKind, usize, bool)>>,
     stacked: BTreeSet<(usize, usize)>,
+    /// Per instance: against a wall with a face to keep free (a wardrobe, a bookcase).
+    faced: Vec<bool>,
+    /// Per instance: hung on a wall (touching it).
+    wall_hung: Vec<bool>,
+    /// OPPOSITE pairs (subject, object): sightlines to keep clear.
+    sightlines: Vec<(usize, usize)>,
     step: f64,
 }
 
@@ -343,6 +350,13 @@ impl Problem {
         if self.zones.iter().any(|z| penetration(&b, z) > 0.0) {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
+        // A thing hung on a wall touches it, facing into the room.
+        if self.wall_hung[i]
+            && !(wd.iter().any(|&v| v <= WALL_MARGIN + 0.03)
+                && anchor_holds_in(&b, Anchor::Side, self.scene, self.room, &[]))
+        {
+            return (false, 0, 0, f64::NEG_INFINITY);
+        }
         let ab = b.aabb();
         let mut clearance = WALKWAY;
         for (j, pb) in boxes.iter().enumerate() {
@@ -400,7 +414,9 @@ impl Problem {
                 }
             }
         }
-        let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + jitter;
+        let comp = self.composition(i, p, &b, placed, boxes);
+        let score =
+            10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
 }
@@ -537,7 +553,27 @@ fn layout_in_pinned(
     }
     let [w, d, _] = room.size;
     let step = (w.min(d) / 30.0).clamp(0.1, 0.5);
+    let faced: Vec<bool> = inst
+        .iter()
+        .map(|i| {
+            spec.scene_type == SceneType::Indoor
+                && classes::effective_class(spec, &i.category) == classes::Class::AgainstWall
+        })
+        .collect();
+    let sightlines: Vec<(usize, usize)> = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Opposite)
+        .map(|r| (index[&r.subject], index[&r.object]))
+        .collect();
+    let wall_hung: Vec<bool> = inst
+        .iter()
+        .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
+        .collect();
     let mut prob = Problem {
+        faced,
+        wall_hung,
+        sightlines,
         hung,
         openings: vec![],
         zones: vec![],
