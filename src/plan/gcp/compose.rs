@@ -2,7 +2,7 @@
 //! OPPOSITE pair (a TV and its sofa) on one axis with nothing taller than 0.6 m between them;
 //! the face of a thing against a wall (a wardrobe's doors, a bookcase's shelves, a fireplace)
 //! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
-//! back, not in front of its face.
+//! back, not in front of its face; a thing on a support centred on it when the centre is free.
 use super::{Pose, Problem};
 use crate::plan::check::{overlap_depth, Box2};
 use crate::plan::spec::RelationKind;
@@ -82,6 +82,11 @@ impl Problem {
                             score -= 6.0;
                         }
                     }
+                }
+                RelationKind::Over if subject => {
+                    // centred on its support unless the centre is taken
+                    let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
+                    score -= 8.0 * d;
                 }
                 RelationKind::Next if subject => {
                     if bj.local(p.c)[1] > bj.half[1] {
