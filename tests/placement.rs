@@ -71,20 +71,34 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
     match r["rule"].as_str().unwrap_or("") {
         "count" => {
             let n = subjects.len();
-            let ok = r.get("n").and_then(Value::as_u64).map_or(n >= 1, |k| n as u64 == k);
+            let ok = r
+                .get("n")
+                .and_then(Value::as_u64)
+                .map_or(n >= 1, |k| n as u64 == k);
             out.push((ok, format!("{}: {n}", w[0])));
         }
         "on" => {
             let sups = pick(l, &words(r, "support"), &[]);
             for s in subjects {
                 let ok = sups.iter().any(|t| on_support(s, t));
-                out.push((ok, format!("{} on a {:?}: z = {:.2}", s.id, words(r, "support"), s.position[2])));
+                out.push((
+                    ok,
+                    format!(
+                        "{} on a {:?}: z = {:.2}",
+                        s.id,
+                        words(r, "support"),
+                        s.position[2]
+                    ),
+                ));
             }
         }
         "wall_mounted" => {
             for s in subjects {
                 let g = wall_gap(s, room);
-                out.push((s.position[2] >= 0.4 && g <= 0.2, format!("{} z {:.2} gap {g:.2}", s.id, s.position[2])));
+                out.push((
+                    s.position[2] >= 0.4 && g <= 0.2,
+                    format!("{} z {:.2} gap {g:.2}", s.id, s.position[2]),
+                ));
             }
         }
         "against_wall" => {
@@ -107,14 +121,18 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
             let t = pick(l, &words(r, "target"), &[]);
             for s in subjects {
                 let b = Box2::of(s);
-                let Some(t) = t.iter().min_by(|a, c| {
-                    gap(&b, &Box2::of(a)).total_cmp(&gap(&b, &Box2::of(c)))
-                }) else {
+                let Some(t) = t
+                    .iter()
+                    .min_by(|a, c| gap(&b, &Box2::of(a)).total_cmp(&gap(&b, &Box2::of(c))))
+                else {
                     out.push((false, "no target".into()));
                     break;
                 };
                 let a = facing_footprint_error(&b, &Box2::of(t));
-                out.push((a <= num("deg", 40.0), format!("{} faces {}: {a:.0}°", s.id, t.id)));
+                out.push((
+                    a <= num("deg", 40.0),
+                    format!("{} faces {}: {a:.0}°", s.id, t.id),
+                ));
             }
         }
         kind @ ("near_window" | "faces_window") => {
@@ -129,13 +147,19 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
                     break;
                 };
                 if kind == "near_window" {
-                    out.push((d <= num("d", 1.0), format!("{} {d:.2} m from a window", s.id)));
+                    out.push((
+                        d <= num("d", 1.0),
+                        format!("{} {d:.2} m from a window", s.id),
+                    ));
                 } else {
                     let to = [win.position[0] - b.c[0], win.position[1] - b.c[1]];
                     let n = (to[0] * to[0] + to[1] * to[1]).sqrt().max(1e-9);
                     let c = (to[0] * b.ey[0] + to[1] * b.ey[1]) / n;
                     let a = c.clamp(-1.0, 1.0).acos().to_degrees();
-                    out.push((a <= 40.0 && d <= 2.0, format!("{} faces a window: {a:.0}°, {d:.2} m", s.id)));
+                    out.push((
+                        a <= 40.0 && d <= 2.0,
+                        format!("{} faces a window: {a:.0}°, {d:.2} m", s.id),
+                    ));
                 }
             }
         }
@@ -194,7 +218,10 @@ fn own_placement_prompts_are_placed_as_people_place_things() {
         cases.len(),
         start.elapsed().as_secs_f64()
     );
-    assert!(held as f64 >= 0.95 * total as f64, "{held}/{total} rules held");
+    assert!(
+        held as f64 >= 0.95 * total as f64,
+        "{held}/{total} rules held"
+    );
 }
 
 /// Plans and lays out `prompt` (seed `seed`).
@@ -206,7 +233,10 @@ fn lay(prompt: &str, seed: u64) -> Layout {
 }
 
 fn find<'a>(l: &'a Layout, category: &str) -> Vec<&'a PlacedObject> {
-    l.objects.iter().filter(|o| o.category == category).collect()
+    l.objects
+        .iter()
+        .filter(|o| o.category == category)
+        .collect()
 }
 
 fn top(o: &PlacedObject) -> f64 {
@@ -216,10 +246,26 @@ fn top(o: &PlacedObject) -> f64 {
 #[test]
 fn small_things_stand_on_their_supports() {
     for (prompt, thing, support) in [
-        ("a gaming room with a gaming desk, two monitors and a gaming chair", "monitor", "gaming desk"),
-        ("a bedroom with a bed, a nightstand and a table lamp", "table lamp", "nightstand"),
-        ("a science lab with two science benches and four microscopes", "microscope", "science bench"),
-        ("a kitchen with a kitchen counter, a stove and a toaster", "toaster", "kitchen counter"),
+        (
+            "a gaming room with a gaming desk, two monitors and a gaming chair",
+            "monitor",
+            "gaming desk",
+        ),
+        (
+            "a bedroom with a bed, a nightstand and a table lamp",
+            "table lamp",
+            "nightstand",
+        ),
+        (
+            "a science lab with two science benches and four microscopes",
+            "microscope",
+            "science bench",
+        ),
+        (
+            "a kitchen with a kitchen counter, a stove and a toaster",
+            "toaster",
+            "kitchen counter",
+        ),
     ] {
         let l = lay(prompt, 0);
         let sups = find(&l, support);
@@ -243,24 +289,55 @@ fn small_things_stand_on_their_supports() {
 #[test]
 fn wall_things_hang_on_walls() {
     for (prompt, thing) in [
-        ("a classroom with a blackboard and ten school desks", "blackboard"),
-        ("an office with a desk and a whiteboard on the wall", "whiteboard"),
-        ("a bedroom with a bed and a full length mirror on the wall", "full length mirror"),
-        ("a home theater with a projector screen and a sofa", "projector screen"),
+        (
+            "a classroom with a blackboard and ten school desks",
+            "blackboard",
+        ),
+        (
+            "an office with a desk and a whiteboard on the wall",
+            "whiteboard",
+        ),
+        (
+            "a bedroom with a bed and a full length mirror on the wall",
+            "full length mirror",
+        ),
+        (
+            "a home theater with a projector screen and a sofa",
+            "projector screen",
+        ),
     ] {
         let l = lay(prompt, 0);
         let o = find(&l, thing);
         assert!(!o.is_empty(), "{prompt}: no {thing}");
         for o in o {
-            assert!(o.position[2] >= 0.4, "{prompt}: {} at z = {}", o.id, o.position[2]);
-            assert!(wall_gap(o, l.room.size) <= 0.05, "{prompt}: {} off the wall", o.id);
-            assert!(top(o) <= l.room.size[2], "{prompt}: {} through the ceiling", o.id);
+            assert!(
+                o.position[2] >= 0.4,
+                "{prompt}: {} at z = {}",
+                o.id,
+                o.position[2]
+            );
+            assert!(
+                wall_gap(o, l.room.size) <= 0.05,
+                "{prompt}: {} off the wall",
+                o.id
+            );
+            assert!(
+                top(o) <= l.room.size[2],
+                "{prompt}: {} through the ceiling",
+                o.id
+            );
         }
     }
     // A fireplace stands against a wall, square to it, never a fallback.
-    let l = lay("a living room with a fireplace, a sofa and two armchairs", 3);
+    let l = lay(
+        "a living room with a fireplace, a sofa and two armchairs",
+        3,
+    );
     let f = find(&l, "fireplace")[0];
-    assert!(wall_gap(f, l.room.size) <= 0.05 && f.yaw.rem_euclid(90.0) < 1e-6, "{f:?}");
+    assert!(
+        wall_gap(f, l.room.size) <= 0.05 && f.yaw.rem_euclid(90.0) < 1e-6,
+        "{f:?}"
+    );
     assert_eq!(f.placed_by, PlacedBy::Constraint);
 }
 
@@ -273,17 +350,29 @@ fn rooms_have_doors_and_windows_kept_clear() {
             "a kitchen with a fridge, a stove, a kitchen counter and a pantry shelf",
         ] {
             let l = lay(prompt, seed);
-            let doors: Vec<&Opening> = l.openings.iter().filter(|o| o.kind == OpeningKind::Door).collect();
+            let doors: Vec<&Opening> = l
+                .openings
+                .iter()
+                .filter(|o| o.kind == OpeningKind::Door)
+                .collect();
             assert!(!doors.is_empty(), "{prompt}: no door");
             for o in &l.openings {
                 // on a wall's inner face, inside its span
                 let [x, y, z] = o.position;
                 let [w, d, h] = l.room.size;
                 let on = match o.wall {
-                    Wall::North => (y - 0.5 * d).abs() < 1e-9 && x.abs() + 0.5 * o.width <= 0.5 * w + 1e-9,
-                    Wall::South => (y + 0.5 * d).abs() < 1e-9 && x.abs() + 0.5 * o.width <= 0.5 * w + 1e-9,
-                    Wall::East => (x - 0.5 * w).abs() < 1e-9 && y.abs() + 0.5 * o.width <= 0.5 * d + 1e-9,
-                    Wall::West => (x + 0.5 * w).abs() < 1e-9 && y.abs() + 0.5 * o.width <= 0.5 * d + 1e-9,
+                    Wall::North => {
+                        (y - 0.5 * d).abs() < 1e-9 && x.abs() + 0.5 * o.width <= 0.5 * w + 1e-9
+                    }
+                    Wall::South => {
+                        (y + 0.5 * d).abs() < 1e-9 && x.abs() + 0.5 * o.width <= 0.5 * w + 1e-9
+                    }
+                    Wall::East => {
+                        (x - 0.5 * w).abs() < 1e-9 && y.abs() + 0.5 * o.width <= 0.5 * d + 1e-9
+                    }
+                    Wall::West => {
+                        (x + 0.5 * w).abs() < 1e-9 && y.abs() + 0.5 * o.width <= 0.5 * d + 1e-9
+                    }
                 };
                 assert!(on && z + o.height <= h, "{prompt}: {o:?}");
                 let zone = match o.kind {
@@ -319,13 +408,23 @@ fn window_and_door_phrases_are_satisfied() {
         .filter(|o| o.kind == OpeningKind::Window)
         .any(|w| opening_distance(&Box2::of(d), w) <= 1.0);
     assert!(near, "{d:?} {:?}", l.openings);
-    let l = lay("a living room where the sofa faces the window, and a coffee table", 2);
+    let l = lay(
+        "a living room where the sofa faces the window, and a coffee table",
+        2,
+    );
     let s = find(&l, "sofa")[0];
     assert_eq!(s.anchor, Anchor::FaceWindow);
     assert_eq!(s.placed_by, PlacedBy::Constraint, "{s:?} {:?}", l.openings);
     let l = lay("a hallway with a shoe rack next to the door and a bench", 0);
     let r = find(&l, "shoe rack")[0];
     assert_eq!(r.anchor, Anchor::Door);
-    let door = l.openings.iter().find(|o| o.kind == OpeningKind::Door).expect("door");
-    assert!(opening_distance(&Box2::of(r), door) <= 1.0, "{r:?} {door:?}");
+    let door = l
+        .openings
+        .iter()
+        .find(|o| o.kind == OpeningKind::Door)
+        .expect("door");
+    assert!(
+        opening_distance(&Box2::of(r), door) <= 1.0,
+        "{r:?} {door:?}"
+    );
 }

@@ -255,7 +255,7 @@ pub fn replace_partners(
         &pins,
         state.layout.as_ref().map(|l| l.openings.as_slice()),
     )
-        .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
+    .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
     let mut out = vec![];
     for o in &state.scene.objects {
         if pins.contains_key(&key[&o.id]) {
@@ -478,7 +478,7 @@ pub fn place_new(
         &pins,
         state.layout.as_ref().map(|l| l.openings.as_slice()),
     )
-        .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
+    .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
     let p = l
         .objects
         .iter()

@@ -366,7 +366,9 @@ pub fn anchor_holds_in(
 ) -> bool {
     let of = |k: OpeningKind| openings.iter().filter(move |o| o.kind == k);
     match anchor {
-        Anchor::Window => of(OpeningKind::Window).any(|w| opening_distance(b, w) <= WINDOW_DISTANCE),
+        Anchor::Window => {
+            of(OpeningKind::Window).any(|w| opening_distance(b, w) <= WINDOW_DISTANCE)
+        }
         Anchor::FaceWindow => {
             let nearest = of(OpeningKind::Window)
                 .map(|w| (opening_distance(b, w), w))

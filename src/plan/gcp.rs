@@ -6,12 +6,12 @@
 //! seeded restarts keep the best layout. No object is ever dropped: when nothing satisfies its
 //! constraints it takes the best pose it can get and is marked `fallback`.
 use super::check::{
-    anchor_holds_in, opening_zone, penetration, relation_holds_box, wall_distances, Box2, CORNER_DISTANCE,
-    TOLERANCE,
+    anchor_holds_in, opening_zone, penetration, relation_holds_box, wall_distances, Box2,
+    CORNER_DISTANCE, TOLERANCE,
 };
 use super::spec::{
-    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, Relation,
-    RelationKind, Room, SceneSpec, SceneType, SpecError,
+    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, Relation, RelationKind, Room,
+    SceneSpec, SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
 
@@ -415,8 +415,7 @@ impl Problem {
             }
         }
         let comp = self.composition(i, p, &b, placed, boxes);
-        let score =
-            10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
+        let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
 }

@@ -161,7 +161,10 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
     let mut load: BTreeMap<String, f64> = BTreeMap::new();
     for r in &spec.relations {
         if r.relation == RelationKind::Over {
-            let a = spec.objects.get(base(&r.subject)).map_or(0.0, |o| o.size[0] * o.size[1]);
+            let a = spec
+                .objects
+                .get(base(&r.subject))
+                .map_or(0.0, |o| o.size[0] * o.size[1]);
             *load.entry(r.object.clone()).or_default() += a;
         }
     }
@@ -213,13 +216,11 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                     let so = &spec.objects[sup];
                     let top = so.size[0] * so.size[1];
                     // the least loaded instance of the support, by the share of its top used
-                    let best = (1..=so.number)
-                        .map(|m| format!("{sup}{m}"))
-                        .min_by(|a, b| {
-                            let la = load.get(a).copied().unwrap_or(0.0) / top;
-                            let lb = load.get(b).copied().unwrap_or(0.0) / top;
-                            la.total_cmp(&lb)
-                        });
+                    let best = (1..=so.number).map(|m| format!("{sup}{m}")).min_by(|a, b| {
+                        let la = load.get(a).copied().unwrap_or(0.0) / top;
+                        let lb = load.get(b).copied().unwrap_or(0.0) / top;
+                        la.total_cmp(&lb)
+                    });
                     if let Some(oid) = best {
                         *load.entry(oid.clone()).or_default() += size[0] * size[1];
                         // a thing on a support keeps no anchor of its own
@@ -290,10 +291,23 @@ mod tests {
     #[test]
     fn classes_of_the_issue() {
         let t = Placements::builtin();
-        for c in ["whiteboard", "blackboard", "painting", "projector screen", "wall shelf"] {
+        for c in [
+            "whiteboard",
+            "blackboard",
+            "painting",
+            "projector screen",
+            "wall shelf",
+        ] {
             assert!(matches!(t.class(c), Class::OnWall(h) if h >= 0.4), "{c}");
         }
-        for c in ["wardrobe", "bookshelf", "fireplace", "stove", "refrigerator", "dresser"] {
+        for c in [
+            "wardrobe",
+            "bookshelf",
+            "fireplace",
+            "stove",
+            "refrigerator",
+            "dresser",
+        ] {
             assert_eq!(t.class(c), Class::AgainstWall, "{c}");
         }
         for (c, s) in [

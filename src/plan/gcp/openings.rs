@@ -123,13 +123,27 @@ impl super::Problem {
             let into = super::yaw_facing(n);
             let toward = into + 180.0;
             let base = [o.position[0], o.position[1]];
-            let at = |along: f64, out_: f64| [base[0] + a[0] * along + n[0] * out_, base[1] + a[1] * along + n[1] * out_];
+            let at = |along: f64, out_: f64| {
+                [
+                    base[0] + a[0] * along + n[0] * out_,
+                    base[1] + a[1] * along + n[1] * out_,
+                ]
+            };
             match anchor {
                 Anchor::Window => {
                     for along in [0.0, -0.5 * o.width, 0.5 * o.width, -o.width, o.width] {
-                        for (yaw, depth) in [(into, s[1]), (toward, s[1]), (into + 90.0, s[0]), (into - 90.0, s[0])] {
+                        for (yaw, depth) in [
+                            (into, s[1]),
+                            (toward, s[1]),
+                            (into + 90.0, s[0]),
+                            (into - 90.0, s[0]),
+                        ] {
                             for gap in [0.02, 0.3] {
-                                out.push(super::Pose { c: at(along, gap + 0.5 * depth), yaw, z });
+                                out.push(super::Pose {
+                                    c: at(along, gap + 0.5 * depth),
+                                    yaw,
+                                    z,
+                                });
                             }
                         }
                     }
@@ -137,15 +151,24 @@ impl super::Problem {
                 Anchor::FaceWindow => {
                     for along in [0.0, -0.3 * o.width, 0.3 * o.width] {
                         for gap in [0.3, 0.6, 1.0, 1.5] {
-                            out.push(super::Pose { c: at(along, gap + 0.5 * s[1]), yaw: toward, z });
+                            out.push(super::Pose {
+                                c: at(along, gap + 0.5 * s[1]),
+                                yaw: toward,
+                                z,
+                            });
                         }
                     }
                 }
                 _ => {
                     let side = 0.5 * o.width + 0.1 + 0.5 * s[0].max(s[1]);
                     for along in [-side, side, -side - 0.3, side + 0.3] {
-                        for (yaw, depth) in [(into, s[1]), (into + 90.0, s[0]), (into - 90.0, s[0])] {
-                            out.push(super::Pose { c: at(along, 0.02 + 0.5 * depth), yaw, z });
+                        for (yaw, depth) in [(into, s[1]), (into + 90.0, s[0]), (into - 90.0, s[0])]
+                        {
+                            out.push(super::Pose {
+                                c: at(along, 0.02 + 0.5 * depth),
+                                yaw,
+                                z,
+                            });
                         }
                     }
                 }
