@@ -194,12 +194,17 @@ fn own_placement_prompts_are_placed_as_people_place_things() {
     let cases: Vec<Value> = serde_json::from_str(text).expect("placement_own.json");
     assert!(cases.len() >= 30, "{} prompts", cases.len());
     let start = std::time::Instant::now();
-    let (mut held, mut total, mut right) = (0, 0, 0);
+    let (mut held, mut total, mut right, mut unreachable) = (0, 0, 0, 0);
     for c in &cases {
         let prompt = c["prompt"].as_str().expect("prompt");
         let plan = plan_prompt(prompt).expect("planned");
         let l = layout(&plan.spec, LayoutOptions::seeded(0)).expect("laid out");
         assert!(validity_problems(&l, &plan.spec).is_empty(), "{prompt}");
+        let stuck = dreamscene::plan::check::walk::unreachable(&l);
+        if !stuck.is_empty() {
+            eprintln!("{prompt}: unreachable from the door: {stuck:?}");
+        }
+        unreachable += stuck.len();
         let mut all = true;
         for r in c["rules"].as_array().expect("rules") {
             let res = judge(r, &l);
@@ -214,7 +219,7 @@ fn own_placement_prompts_are_placed_as_people_place_things() {
         right += all as usize;
     }
     eprintln!(
-        "{right}/{} prompts fully right, {held}/{total} rules held, {:.1} s",
+        "{right}/{} prompts fully right, {held}/{total} rules held, {unreachable} things out of reach, {:.1} s",
         cases.len(),
         start.elapsed().as_secs_f64()
     );
@@ -393,6 +398,13 @@ fn rooms_have_doors_and_windows_kept_clear() {
             }
         }
     }
+    // a person coming in by the door reaches every floor thing (0.3 m radius, 10 cm grid)
+    let mut stuck = vec![];
+    for seed in 0..6 {
+        let l = lay("a cozy living room", seed);
+        stuck.extend(dreamscene::plan::check::walk::unreachable(&l));
+    }
+    assert!(stuck.is_empty(), "unreachable over 6 seeds: {stuck:?}");
     // "no windows" is honoured
     let l = lay("a windowless storage room with two storage shelves", 0);
     assert!(l.openings.iter().all(|o| o.kind == OpeningKind::Door));

@@ -4,6 +4,8 @@ use super::spec::{
     Anchor, Layout, Opening, OpeningKind, PlacedObject, RelationKind, SceneSpec, SceneType,
 };
 
+pub mod walk;
+
 /// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.
 #[derive(Debug, Clone, Copy)]
 pub struct Box2 {

@@ -632,6 +632,8 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
             q -= 5.0;
         }
     }
+    // everything a person can walk up to from the door
+    q -= 2.0 * super::check::walk::unreachable(l).len() as f64;
     q - l.unsatisfied.len() as f64
 }
 

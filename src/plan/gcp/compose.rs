@@ -88,10 +88,8 @@ impl Problem {
                     let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
                     score -= 8.0 * d;
                 }
-                RelationKind::Next if subject => {
-                    if bj.local(p.c)[1] > bj.half[1] {
-                        score -= 3.0;
-                    }
+                RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
+                    score -= 3.0;
                 }
                 _ => {}
             }
@@ -100,10 +98,12 @@ impl Problem {
         if b.z0 < 1.0 {
             for (j, bj) in boxes.iter().enumerate() {
                 let Some((bj, _)) = bj else { continue };
-                if self.faced[j] && !self.related(i, j) && !self.is_stacked(i, j) {
-                    if overlap_depth(b, &face_zone(bj)) > 0.05 {
-                        score -= 4.0;
-                    }
+                if self.faced[j]
+                    && !self.related(i, j)
+                    && !self.is_stacked(i, j)
+                    && overlap_depth(b, &face_zone(bj)) > 0.05
+                {
+                    score -= 4.0;
                 }
             }
         }
@@ -111,10 +111,12 @@ impl Problem {
             let zone = face_zone(b);
             for (j, bj) in boxes.iter().enumerate() {
                 let Some((bj, _)) = bj else { continue };
-                if bj.z0 < 1.0 && !self.related(i, j) && !self.is_stacked(i, j) {
-                    if overlap_depth(bj, &zone) > 0.05 {
-                        score -= 4.0;
-                    }
+                if bj.z0 < 1.0
+                    && !self.related(i, j)
+                    && !self.is_stacked(i, j)
+                    && overlap_depth(bj, &zone) > 0.05
+                {
+                    score -= 4.0;
                 }
             }
         }
