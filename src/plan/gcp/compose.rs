@@ -2,10 +2,12 @@
 //! OPPOSITE pair (a TV and its sofa) on one axis with nothing taller than 0.6 m between them;
 //! the face of a thing against a wall (a wardrobe's doors, a bookcase's shelves, a fireplace)
 //! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
-//! back, not in front of its face; a thing on a support centred on it when the centre is free.
+//! back, not in front of its face; a thing alone on its support centred on it (at its back
+//! when the support stands against a wall); a thing by a
+//! window or door as close to it as it can stand.
 use super::{Pose, Problem};
-use crate::plan::check::{overlap_depth, Box2};
-use crate::plan::spec::RelationKind;
+use crate::plan::check::{opening_distance, overlap_depth, Box2};
+use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
 
 /// Height above which a thing blocks a sightline (m).
 pub const SIGHTLINE_HEIGHT: f64 = 0.6;
@@ -31,6 +33,14 @@ fn face_zone(b: &Box2) -> Box2 {
 }
 
 impl Problem {
+    /// How many things rest on instance `j`.
+    fn load(&self, j: usize) -> usize {
+        self.rels[j]
+            .iter()
+            .filter(|r| r.0 == RelationKind::Over && !r.2)
+            .count()
+    }
+
     fn related(&self, i: usize, j: usize) -> bool {
         self.rels[i].iter().any(|r| r.1 == j)
     }
@@ -83,15 +93,39 @@ impl Problem {
                         }
                     }
                 }
-                RelationKind::Over if subject => {
-                    // centred on its support unless the centre is taken
-                    let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
+                RelationKind::Over if subject && self.load(j) == 1 => {
+                    // alone on its support: centred on it, at its back when the support
+                    // stands against a wall (a TV on its stand, a monitor on a desk)
+                    let back = if self.faced[j] {
+                        (bj.half[1] - 0.5 * self.inst[i].size[1]).max(0.0)
+                    } else {
+                        0.0
+                    };
+                    let t = [bj.c[0] - bj.ey[0] * back, bj.c[1] - bj.ey[1] * back];
+                    let d = ((p.c[0] - t[0]).powi(2) + (p.c[1] - t[1]).powi(2)).sqrt();
                     score -= 8.0 * d;
                 }
                 RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
                     score -= 3.0;
                 }
                 _ => {}
+            }
+        }
+        // Things by a window or door stand as close to it as they can.
+        let kind = match self.inst[i].anchor {
+            Anchor::Window => Some(OpeningKind::Window),
+            Anchor::Door => Some(OpeningKind::Door),
+            _ => None,
+        };
+        if let Some(kind) = kind {
+            let d = self
+                .openings
+                .iter()
+                .filter(|o| o.kind == kind)
+                .map(|o| opening_distance(b, o))
+                .fold(f64::INFINITY, f64::min);
+            if d.is_finite() {
+                score -= 4.0 * d.min(2.0);
             }
         }
         // Faces of things against walls.
