@@ -249,8 +249,13 @@ pub fn replace_partners(
             );
         }
     }
-    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
-        .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
+    let l = layout_pinned(
+        &spec,
+        LayoutOptions::seeded(state.scene.seed),
+        &pins,
+        state.layout.as_ref().map(|l| l.openings.as_slice()),
+    )
+    .map_err(|e| EditError::Bad(format!("re-running the layout: {e}")))?;
     let mut out = vec![];
     for o in &state.scene.objects {
         if pins.contains_key(&key[&o.id]) {
@@ -467,8 +472,13 @@ pub fn place_new(
             )
         })
         .collect();
-    let l = layout_pinned(&spec, LayoutOptions::seeded(state.scene.seed), &pins)
-        .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
+    let l = layout_pinned(
+        &spec,
+        LayoutOptions::seeded(state.scene.seed),
+        &pins,
+        state.layout.as_ref().map(|l| l.openings.as_slice()),
+    )
+    .map_err(|e| EditError::Bad(format!("placing the new object: {e}")))?;
     let p = l
         .objects
         .iter()

@@ -137,6 +137,10 @@ impl SceneState {
             seed: self.layout.as_ref().map_or(self.scene.seed, |l| l.seed),
             objects,
             unsatisfied,
+            openings: self
+                .layout
+                .as_ref()
+                .map_or_else(Vec::new, |l| l.openings.clone()),
         }
     }
 

@@ -119,8 +119,19 @@ pub fn scene_file(
             .collect(),
         timeline: None,
         history: vec![],
-        extra: Default::default(),
+        extra: openings_key(layout),
     }
+}
+
+/// The layout's doors and windows as scene.json's `openings` key (indoor rooms).
+fn openings_key(layout: &Layout) -> serde_json::Map<String, serde_json::Value> {
+    let mut m = serde_json::Map::new();
+    if !layout.openings.is_empty() {
+        if let Ok(v) = serde_json::to_value(&layout.openings) {
+            m.insert("openings".to_string(), v);
+        }
+    }
+    m
 }
 
 /// The environment kind of a scene type.
@@ -307,6 +318,21 @@ mod tests {
         assert!(s.objects.iter().all(|o| o.ply == object_ply(&o.category)));
         assert_eq!(object_ply("coffee table"), "objects/coffee_table.ply");
         assert!(s.validate().is_ok());
+    }
+
+    #[test]
+    fn scene_json_carries_the_layouts_openings() {
+        let spec = plan_offline("a bedroom");
+        let l = layout(&spec, LayoutOptions::seeded(2)).unwrap();
+        assert!(!l.openings.is_empty());
+        let prior = dir::Prior {
+            kind: "shape".into(),
+            models: None,
+        };
+        let s = scene_file("a bedroom", 2, &spec, &l, prior);
+        let back: Vec<crate::plan::spec::Opening> =
+            serde_json::from_value(s.extra["openings"].clone()).unwrap();
+        assert_eq!(back, l.openings);
     }
 
     #[test]

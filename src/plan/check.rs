@@ -1,6 +1,10 @@
 //! The meaning of relations, anchors and validity (ARCHITECTURE.md), as predicates on placed
 //! objects. The layout search filters candidates with them and the tests check layouts with them.
-use super::spec::{Anchor, Layout, PlacedObject, RelationKind, SceneSpec, SceneType};
+use super::spec::{
+    Anchor, Layout, Opening, OpeningKind, PlacedObject, RelationKind, SceneSpec, SceneType,
+};
+
+pub mod walk;
 
 /// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.
 #[derive(Debug, Clone, Copy)]
@@ -290,7 +294,103 @@ pub fn anchor_holds(o: &PlacedObject, anchor: Anchor, scene: SceneType, room: [f
     anchor_holds_box(&Box2::of(o), anchor, scene, room)
 }
 
-/// [`anchor_holds`] on a box.
+/// Largest footprint distance to a window's span of WINDOW.
+pub const WINDOW_DISTANCE: f64 = 1.0;
+/// Largest footprint distance to the window's span of FACE_WINDOW.
+pub const FACE_WINDOW_DISTANCE: f64 = 2.0;
+/// Largest footprint distance to a door's span of DOOR.
+pub const DOOR_DISTANCE: f64 = 1.0;
+/// Depth of a door's clear zone inside the room.
+pub const DOOR_CLEAR_DEPTH: f64 = 0.8;
+/// Facing tolerance of FACE_WINDOW (degrees).
+pub const FACE_WINDOW_TOLERANCE: f64 = 30.0;
+
+/// Distance from a footprint to an opening's span on the floor.
+pub fn opening_distance(b: &Box2, o: &Opening) -> f64 {
+    let (a, e) = o.span();
+    b.corners()
+        .iter()
+        .map(|&p| seg_point_dist(p, a, e))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A door's clear zone: its width (plus 5 cm a side) by [`DOOR_CLEAR_DEPTH`] (plus 10 cm)
+/// inside the room, floor to the top of the door.
+pub fn door_zone(o: &Opening) -> Box2 {
+    let n = o.wall.inward();
+    let depth = DOOR_CLEAR_DEPTH + 0.1;
+    let c = [
+        o.position[0] + n[0] * 0.5 * depth,
+        o.position[1] + n[1] * 0.5 * depth,
+    ];
+    let yaw = if o.wall.along()[0] != 0.0 { 0.0 } else { 90.0 };
+    Box2::new(c, yaw, [o.width + 0.1, depth], 0.0, o.height.max(1.9))
+}
+
+/// The space a window keeps free of tall furniture: its width, 0.45 m deep, from 10 cm above
+/// the sill to its top (a desk or sink under the sill may stand there; a wardrobe may not).
+pub fn window_zone(o: &Opening) -> Box2 {
+    let n = o.wall.inward();
+    let depth = 0.45;
+    let c = [
+        o.position[0] + n[0] * 0.5 * depth,
+        o.position[1] + n[1] * 0.5 * depth,
+    ];
+    let yaw = if o.wall.along()[0] != 0.0 { 0.0 } else { 90.0 };
+    Box2::new(
+        c,
+        yaw,
+        [o.width, depth],
+        o.position[2] + 0.1,
+        o.position[2] + o.height,
+    )
+}
+
+/// The zone an opening keeps clear (door) or uncovered (window).
+pub fn opening_zone(o: &Opening) -> Box2 {
+    match o.kind {
+        OpeningKind::Door => door_zone(o),
+        OpeningKind::Window => window_zone(o),
+    }
+}
+
+/// [`anchor_holds_box`] in a room with `openings`. WINDOW: the footprint is within
+/// [`WINDOW_DISTANCE`] of a window's span. FACE_WINDOW: the window nearest the footprint is
+/// within [`FACE_WINDOW_DISTANCE`] of it, and the object faces that window's centre within
+/// [`FACE_WINDOW_TOLERANCE`]. DOOR: the footprint is within [`DOOR_DISTANCE`] of a door's span
+/// and outside its clear zone. Without openings none of the three holds.
+pub fn anchor_holds_in(
+    b: &Box2,
+    anchor: Anchor,
+    scene: SceneType,
+    room: [f64; 3],
+    openings: &[Opening],
+) -> bool {
+    let of = |k: OpeningKind| openings.iter().filter(move |o| o.kind == k);
+    match anchor {
+        Anchor::Window => {
+            of(OpeningKind::Window).any(|w| opening_distance(b, w) <= WINDOW_DISTANCE)
+        }
+        Anchor::FaceWindow => {
+            let nearest = of(OpeningKind::Window)
+                .map(|w| (opening_distance(b, w), w))
+                .min_by(|a, c| a.0.total_cmp(&c.0));
+            nearest.is_some_and(|(d, w)| {
+                let to = [w.position[0] - b.c[0], w.position[1] - b.c[1]];
+                let l = (to[0] * to[0] + to[1] * to[1]).sqrt().max(1e-9);
+                let c = (to[0] * b.ey[0] + to[1] * b.ey[1]) / l;
+                d <= FACE_WINDOW_DISTANCE
+                    && c.clamp(-1.0, 1.0).acos().to_degrees() <= FACE_WINDOW_TOLERANCE
+            })
+        }
+        Anchor::Door => of(OpeningKind::Door).any(|d| {
+            opening_distance(b, d) <= DOOR_DISTANCE && overlap_depth(b, &door_zone(d)) <= 0.0
+        }),
+        a => anchor_holds_box(b, a, scene, room),
+    }
+}
+
+/// [`anchor_holds`] on a box (the opening anchors need [`anchor_holds_in`]).
 pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 3]) -> bool {
     let d = wall_distances(b, room);
     let facing_dot = |w: usize| b.ey[0] * WALL_NORMALS[w][0] + b.ey[1] * WALL_NORMALS[w][1];
@@ -312,6 +412,7 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
             let near: Vec<usize> = (0..4).filter(|&w| d[w] <= CORNER_DISTANCE + 1e-9).collect();
             near.len() == 2 && near.iter().all(|&w| facing_dot(w) > 0.0)
         }
+        Anchor::Window | Anchor::FaceWindow | Anchor::Door => false,
     }
 }
 

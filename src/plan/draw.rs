@@ -3,7 +3,7 @@
 //! line back to its object, so that no two markers overlap) and a legend beside the plan that
 //! names each number. North (+y) is up.
 use super::check::Box2;
-use super::spec::{Layout, PlacedBy, SceneType};
+use super::spec::{Layout, OpeningKind, PlacedBy, SceneType};
 use font8x8::UnicodeFonts;
 use image::{Rgb, RgbImage};
 
@@ -309,7 +309,8 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
         let (col, row) = (i as i64 / rows, i as i64 % rows);
         let x = plan_w as i64 + col * LEGEND_COL + 4;
         let y = MARGIN as i64 + row * LEGEND_ROW;
-        let mut line = format!("{:>2} {}", i + 1, o.id);
+        let fallback = o.placed_by == PlacedBy::Fallback;
+        let mut line = format!("{:>2}{}{}", i + 1, if fallback { "*" } else { " " }, o.id);
         line.truncate(((LEGEND_COL - 8) / 8) as usize);
         let colour_box = colour(&o.category);
         for yy in y..y + 8 {
@@ -317,13 +318,61 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
                 cv.put(xx, yy, colour_box);
             }
         }
-        cv.px_text(x + 12, y, &line, Rgb([0, 0, 0]));
+        let ink = if fallback {
+            Rgb([200, 30, 30])
+        } else {
+            Rgb([0, 0, 0])
+        };
+        cv.px_text(x + 12, y, &line, ink);
+    }
+    if l.objects.iter().any(|o| o.placed_by == PlacedBy::Fallback) {
+        let y = h as i64 - MARGIN as i64 + 8;
+        cv.px_text(
+            plan_w as i64 + 4,
+            y,
+            "* fallback: constraints unmet",
+            Rgb([200, 30, 30]),
+        );
     }
     let outline = Rgb([20, 20, 20]);
     let corners = [[-hw, -hd], [hw, -hd], [hw, hd], [-hw, hd]];
     for k in 0..4 {
         cv.line(corners[k], corners[(k + 1) % 4], outline, 4.0);
     }
+    draw_openings(&mut cv, l);
     cv.text([0.0, -hd - 14.0 / scale], &caption(l), outline);
     cv.img
+}
+
+/// Doors (a gap in the wall with the leaf swung open into the room) and windows (a pale blue
+/// pane in the wall).
+fn draw_openings(cv: &mut Canvas, l: &Layout) {
+    for o in &l.openings {
+        let (a, b) = o.span();
+        let n = o.wall.inward();
+        match o.kind {
+            OpeningKind::Door => {
+                cv.line(a, b, Rgb([255, 255, 255]), 6.0);
+                // the leaf, open at right angles, and its swing
+                let leaf = [a[0] + n[0] * o.width, a[1] + n[1] * o.width];
+                cv.line(a, leaf, Rgb([150, 90, 40]), 3.0);
+                let steps = 12;
+                let along = [b[0] - a[0], b[1] - a[1]];
+                let mut prev = b;
+                for k in 1..=steps {
+                    let t = k as f64 / steps as f64 * std::f64::consts::FRAC_PI_2;
+                    let p = [
+                        a[0] + along[0] * t.cos() + n[0] * o.width * t.sin(),
+                        a[1] + along[1] * t.cos() + n[1] * o.width * t.sin(),
+                    ];
+                    cv.line(prev, p, Rgb([170, 140, 110]), 1.0);
+                    prev = p;
+                }
+            }
+            OpeningKind::Window => {
+                cv.line(a, b, Rgb([120, 180, 235]), 6.0);
+                cv.line(a, b, Rgb([40, 90, 160]), 1.0);
+            }
+        }
+    }
 }

@@ -6,16 +6,19 @@
 //! seeded restarts keep the best layout. No object is ever dropped: when nothing satisfies its
 //! constraints it takes the best pose it can get and is marked `fallback`.
 use super::check::{
-    anchor_holds_box, penetration, relation_holds_box, wall_distances, Box2, CORNER_DISTANCE,
-    TOLERANCE,
+    anchor_holds_in, opening_zone, penetration, relation_holds_box, wall_distances, Box2,
+    CORNER_DISTANCE, TOLERANCE,
 };
 use super::spec::{
-    Anchor, Instance, Layout, PlacedBy, PlacedObject, Relation, RelationKind, Room, SceneSpec,
-    SceneType, SpecError,
+    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, Relation, RelationKind, Room,
+    SceneSpec, SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
 
+pub mod classes;
+mod compose;
 mod fit;
+pub mod openings;
 mod poses;
 use fit::join_names;
 pub use fit::smallest_room;
@@ -89,14 +92,26 @@ pub fn choose_room(instances: &[Instance], scene: SceneType) -> Room {
     }
 }
 
+#[derive(Clone)]
 struct Problem {
     scene: SceneType,
+    /// Per instance: the height its bottom hangs at (on a wall or from the ceiling).
+    hung: Vec<Option<f64>>,
+    /// Doors and windows of this attempt, and the zones they keep clear.
+    openings: Vec<Opening>,
+    zones: Vec<Box2>,
     room: [f64; 3],
     inst: Vec<Instance>,
     index: BTreeMap<String, usize>,
     /// Per instance: (relation, other instance, true when this instance is the subject).
     rels: Vec<Vec<(RelationKind, usize, bool)>>,
     stacked: BTreeSet<(usize, usize)>,
+    /// Per instance: against a wall with a face to keep free (a wardrobe, a bookcase).
+    faced: Vec<bool>,
+    /// Per instance: hung on a wall (touching it).
+    wall_hung: Vec<bool>,
+    /// OPPOSITE pairs (subject, object): sightlines to keep clear.
+    sightlines: Vec<(usize, usize)>,
     step: f64,
 }
 
@@ -142,6 +157,7 @@ impl Problem {
         let [w, d, _] = self.room;
         let (hw, hd) = (0.5 * w, 0.5 * d);
         let s = self.inst[i].size;
+        let z0 = self.hung[i].unwrap_or(0.0);
         let mut out = vec![];
         let grid = |lo: f64, hi: f64| -> Vec<f64> {
             if hi < lo {
@@ -175,7 +191,7 @@ impl Problem {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,
-                                    z: 0.0,
+                                    z: z0,
                                 });
                             }
                         }
@@ -185,7 +201,7 @@ impl Problem {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,
-                                    z: 0.0,
+                                    z: z0,
                                 });
                             }
                         }
@@ -228,24 +244,47 @@ impl Problem {
                             out.push(Pose {
                                 c: [x, y],
                                 yaw,
-                                z: 0.0,
+                                z: z0,
                             });
                         }
                     }
                 }
             }
         }
+        out.extend(self.opening_candidates(i));
         // Poses derived from each placed partner.
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };
             let bj = self.boxed(j, &pj);
             let sj = self.inst[j].size;
             if subject && rel == RelationKind::Over {
-                out.push(Pose {
-                    c: pj.c,
-                    yaw: pj.yaw,
-                    z: bj.z1,
-                });
+                // spots over the support's top, centre first
+                let free = |k: usize| (0.5 * (sj[k] - s[k])).max(0.0);
+                let (fx, fy) = (free(0), free(1));
+                for (lx, ly) in [
+                    (0.0, 0.0),
+                    (-fx, 0.0),
+                    (fx, 0.0),
+                    (-0.5 * fx, 0.0),
+                    (0.5 * fx, 0.0),
+                    (0.0, -fy),
+                    (-fx, -fy),
+                    (fx, -fy),
+                    (-0.5 * fx, -fy),
+                    (0.5 * fx, -fy),
+                    (0.0, fy),
+                    (-fx, fy),
+                    (fx, fy),
+                ] {
+                    out.push(Pose {
+                        c: [
+                            pj.c[0] + lx * bj.ex[0] + ly * bj.ey[0],
+                            pj.c[1] + lx * bj.ex[1] + ly * bj.ey[1],
+                        ],
+                        yaw: pj.yaw,
+                        z: bj.z1,
+                    });
+                }
                 continue;
             }
             if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
@@ -285,7 +324,7 @@ impl Problem {
                         let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
                         let face = yaw_facing(to);
                         for yaw in [face, face + 180.0, face + 90.0, face - 90.0, pj.yaw] {
-                            out.push(Pose { c, yaw, z: 0.0 });
+                            out.push(Pose { c, yaw, z: z0 });
                         }
                     }
                 }
@@ -306,6 +345,16 @@ impl Problem {
         let b = self.boxed(i, p);
         let wd = wall_distances(&b, self.room);
         if wd.iter().any(|&v| v < -1e-9) || b.z1 > self.room[2] + 1e-9 {
+            return (false, 0, 0, f64::NEG_INFINITY);
+        }
+        if self.zones.iter().any(|z| penetration(&b, z) > 0.0) {
+            return (false, 0, 0, f64::NEG_INFINITY);
+        }
+        // A thing hung on a wall touches it, facing into the room.
+        if self.wall_hung[i]
+            && !(wd.iter().any(|&v| v <= WALL_MARGIN + 0.03)
+                && anchor_holds_in(&b, Anchor::Side, self.scene, self.room, &[]))
+        {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
         let ab = b.aabb();
@@ -329,10 +378,19 @@ impl Problem {
             }
         }
         let mut total = 1;
-        let mut ok = anchor_holds_box(&b, self.inst[i].anchor, self.scene, self.room) as usize;
+        let mut ok = anchor_holds_in(
+            &b,
+            self.inst[i].anchor,
+            self.scene,
+            self.room,
+            &self.openings,
+        ) as usize;
         let mut near = 0.0;
         let mut pose_bonus = 0.0;
-        let free_yaw = !matches!(self.inst[i].anchor, Anchor::Side | Anchor::Corner);
+        let free_yaw = !matches!(
+            self.inst[i].anchor,
+            Anchor::Side | Anchor::Corner | Anchor::FaceWindow
+        );
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };
             let bj = self.boxed(j, &pj);
@@ -356,7 +414,8 @@ impl Problem {
                 }
             }
         }
-        let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + jitter;
+        let comp = self.composition(i, p, &b, placed, boxes);
+        let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
 }
@@ -430,32 +489,53 @@ pub struct Pin {
 
 /// [`layout`] with the instances named in `pins` kept at their given poses: they are placed
 /// first, as they are, and the others are placed around them (an edit moves or adds objects in a
-/// scene whose other objects stay). Pins naming no instance are ignored.
+/// scene whose other objects stay), in a room with the given `openings` (the scene's; `None`:
+/// new ones). Pins naming no instance are ignored.
 pub fn layout_pinned(
     spec: &SceneSpec,
     opts: LayoutOptions,
     pins: &BTreeMap<String, Pin>,
+    openings: Option<&[Opening]>,
 ) -> Result<Layout, SpecError> {
     spec.validate()?;
     let room = spec
         .room
         .unwrap_or_else(|| choose_room(&spec.instances(), spec.scene_type));
-    Ok(layout_in_pinned(spec, room, opts, pins))
+    Ok(layout_in_pinned(spec, room, opts, pins, openings))
 }
 
 /// The GCP search in `room`, without the fit checks.
 pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
-    layout_in_pinned(spec, room, opts, &BTreeMap::new())
+    layout_in_pinned(spec, room, opts, &BTreeMap::new(), None)
 }
 
-/// [`layout_in`] with pinned instances placed first, as they are.
+/// [`layout_in`] with pinned instances placed first, as they are. The placement classes
+/// (kb/placement.txt) become anchors and OVER relations of a working copy of the spec first.
 fn layout_in_pinned(
     spec: &SceneSpec,
     room: Room,
     opts: LayoutOptions,
     pins: &BTreeMap<String, Pin>,
+    openings: Option<&[Opening]>,
 ) -> Layout {
+    let mut work = spec.clone();
+    let mounts = classes::apply(&mut work);
+    let spec = &work;
     let inst = spec.instances();
+    let hung: Vec<Option<f64>> = inst
+        .iter()
+        .map(|i| {
+            let h = room.size[2];
+            if mounts.ceiling.contains(&i.id) {
+                Some((h - i.size[2]).max(0.0))
+            } else {
+                mounts
+                    .wall
+                    .get(&i.id)
+                    .map(|&z| z.min(h - i.size[2] - 0.05).max(0.0))
+            }
+        })
+        .collect();
     let mut index = BTreeMap::new();
     for (k, i) in inst.iter().enumerate() {
         index.insert(i.id.clone(), k);
@@ -472,7 +552,30 @@ fn layout_in_pinned(
     }
     let [w, d, _] = room.size;
     let step = (w.min(d) / 30.0).clamp(0.1, 0.5);
-    let prob = Problem {
+    let faced: Vec<bool> = inst
+        .iter()
+        .map(|i| {
+            spec.scene_type == SceneType::Indoor
+                && classes::effective_class(spec, &i.category) == classes::Class::AgainstWall
+        })
+        .collect();
+    let sightlines: Vec<(usize, usize)> = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Opposite)
+        .map(|r| (index[&r.subject], index[&r.object]))
+        .collect();
+    let wall_hung: Vec<bool> = inst
+        .iter()
+        .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
+        .collect();
+    let mut prob = Problem {
+        faced,
+        wall_hung,
+        sightlines,
+        hung,
+        openings: vec![],
+        zones: vec![],
         scene: spec.scene_type,
         room: room.size,
         inst,
@@ -497,7 +600,18 @@ fn layout_in_pinned(
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(
             opts.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ attempt as u64,
         );
-        let l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &pinned);
+        prob.openings = match (openings, spec.scene_type) {
+            (Some(o), _) => o.to_vec(),
+            (None, SceneType::Indoor) => openings::generate(
+                room.size,
+                !openings::says_no_windows(&spec.scene_text),
+                &mut rng,
+            ),
+            (None, SceneType::Outdoor) => vec![],
+        };
+        prob.zones = prob.openings.iter().map(opening_zone).collect();
+        let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &pinned);
+        l.openings = prob.openings.clone();
         let q = quality(&prob, &l);
         if best.as_ref().is_none_or(|b| q > b.0) {
             best = Some((q, l));
@@ -510,13 +624,16 @@ fn layout_in_pinned(
 fn quality(prob: &Problem, l: &Layout) -> f64 {
     let mut q = 0.0;
     for o in &l.objects {
-        if super::check::anchor_holds(o, o.anchor, prob.scene, prob.room) {
+        let b = super::check::Box2::of(o);
+        if anchor_holds_in(&b, o.anchor, prob.scene, prob.room, &prob.openings) {
             q += 1.0;
         }
         if o.placed_by == PlacedBy::Fallback {
             q -= 5.0;
         }
     }
+    // everything a person can walk up to from the door
+    q -= 2.0 * super::check::walk::unreachable(l).len() as f64;
     q - l.unsatisfied.len() as f64
 }
 
@@ -665,6 +782,7 @@ fn attempt_layout(
         seed,
         objects,
         unsatisfied,
+        openings: vec![],
     }
 }
 

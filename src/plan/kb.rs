@@ -53,6 +53,9 @@ pub fn parse_anchor(s: &str) -> Option<Anchor> {
         "SIDE" | "WALL" | "EDGE" => Some(Anchor::Side),
         "CORNER" => Some(Anchor::Corner),
         "OTHERS" | "OTHER" | "ANY" | "ANYWHERE" | "NONE" => Some(Anchor::Others),
+        "WINDOW" => Some(Anchor::Window),
+        "FACE_WINDOW" => Some(Anchor::FaceWindow),
+        "DOOR" => Some(Anchor::Door),
         _ => None,
     }
 }

@@ -20,6 +20,13 @@ pub enum Anchor {
     Side,
     Corner,
     Others,
+    /// Beside a window: footprint within [`crate::plan::check::WINDOW_DISTANCE`] of a window's span.
+    Window,
+    /// Facing a window: see [`crate::plan::check::anchor_holds_in`].
+    #[serde(rename = "FACE_WINDOW")]
+    FaceWindow,
+    /// Beside a door, outside its clear zone: see [`crate::plan::check::anchor_holds_in`].
+    Door,
 }
 
 /// Pairwise relation: "subject is RELATION of object", in the object's own frame.
@@ -170,6 +177,68 @@ pub struct Layout {
     pub seed: u64,
     pub objects: Vec<PlacedObject>,
     pub unsatisfied: Vec<Relation>,
+    /// Doors and windows of an indoor room (empty outdoors).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub openings: Vec<Opening>,
+}
+
+/// Door or window.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum OpeningKind {
+    Door,
+    Window,
+}
+
+/// The wall an opening is in: north is +y, east +x.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Wall {
+    North,
+    South,
+    East,
+    West,
+}
+
+/// A door or window (ARCHITECTURE.md "Openings"): `position` is the bottom centre of the
+/// opening on the wall's inner face (z = sill height, 0 for a door).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Opening {
+    pub kind: OpeningKind,
+    pub wall: Wall,
+    pub position: [f64; 3],
+    pub width: f64,
+    pub height: f64,
+}
+
+impl Wall {
+    /// The unit vector from the wall into the room.
+    pub fn inward(self) -> [f64; 2] {
+        match self {
+            Wall::North => [0.0, -1.0],
+            Wall::South => [0.0, 1.0],
+            Wall::East => [-1.0, 0.0],
+            Wall::West => [1.0, 0.0],
+        }
+    }
+
+    /// The unit vector along the wall (east or north).
+    pub fn along(self) -> [f64; 2] {
+        match self {
+            Wall::North | Wall::South => [1.0, 0.0],
+            Wall::East | Wall::West => [0.0, 1.0],
+        }
+    }
+}
+
+impl Opening {
+    /// The opening's span on the floor: its two ends on the wall's inner face.
+    pub fn span(&self) -> ([f64; 2], [f64; 2]) {
+        let a = self.wall.along();
+        let h = 0.5 * self.width;
+        let [x, y, _] = self.position;
+        ([x - a[0] * h, y - a[1] * h], [x + a[0] * h, y + a[1] * h])
+    }
 }
 
 /// A spec or layout problem, naming what is wrong.

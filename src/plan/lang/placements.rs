@@ -80,6 +80,18 @@ pub(super) fn read_placements(r: &mut Reading) {
     ];
     let anchor_phrases: &[(&str, Anchor)] = &[
         (
+            r"\b(?:facing|faces|face|looking out(?: of)?|looking at|looks out(?: of)?|turned to(?:wards?)?|towards?) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide )?windows?\b",
+            Anchor::FaceWindow,
+        ),
+        (
+            r"\b(?:by|near|under|beneath|below|beside|next to|in front of|at|close to|against|in) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide )?windows?\b",
+            Anchor::Window,
+        ),
+        (
+            r"\b(?:by|near|beside|next to|at|close to|inside|behind) (?:the )?(?:front |main |entrance |back )?door(?:way)?\b",
+            Anchor::Door,
+        ),
+        (
             r"\b(?:centered|centred|in the (?:center|centre|middle)(?: of the room)?)\b",
             Anchor::Center,
         ),

@@ -1,0 +1,333 @@
+//! Placement classes (kb/placement.txt): where a category stands. `floor` and `against_wall`
+//! things have a floor footprint of their own; `on_wall` things hang on a wall at a mounting
+//! height; `on_surface` things rest on the top of a support (OVER); `ceiling` things hang from
+//! the ceiling. [`apply`] turns the classes into the spec's own terms (a SIDE anchor, an OVER
+//! relation to a support) before the search, and [`Mounts`] gives the search the heights.
+use crate::plan::spec::{Anchor, Relation, RelationKind, SceneSpec, SceneType};
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// Where a category stands.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Class {
+    Floor,
+    AgainstWall,
+    /// Hung on a wall, its bottom face at this height (m).
+    OnWall(f64),
+    /// On one of the supports; hung on a wall at this height when the scene has none.
+    OnSurface(Option<f64>),
+    Ceiling,
+}
+
+/// One line of the table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Placement {
+    pub class: Class,
+    /// Categories that can hold it (on_surface), most fitting first.
+    pub supports: Vec<String>,
+}
+
+/// The placement table by category.
+#[derive(Debug, Clone, Default)]
+pub struct Placements {
+    by_category: BTreeMap<String, Placement>,
+}
+
+impl Placements {
+    /// Parses the table; errors name the line.
+    pub fn parse(text: &str) -> Result<Placements, String> {
+        let mut by_category = BTreeMap::new();
+        for (n, line) in text.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |m: &str| format!("placement.txt line {}: {m}", n + 1);
+            let f: Vec<&str> = line.split('|').map(str::trim).collect();
+            if f.len() != 4 {
+                return Err(err("needs 4 fields: category | class | height | supports"));
+            }
+            let height = match f[2] {
+                "-" => None,
+                h => Some(
+                    h.parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite() && *v >= 0.0 && *v < 10.0)
+                        .ok_or_else(|| err(&format!("height `{h}`")))?,
+                ),
+            };
+            let class = match (f[1], height) {
+                ("floor", None) => Class::Floor,
+                ("against_wall", None) => Class::AgainstWall,
+                ("on_wall", Some(h)) => Class::OnWall(h),
+                ("on_surface", h) => Class::OnSurface(h),
+                ("ceiling", None) => Class::Ceiling,
+                (c, _) => return Err(err(&format!("class `{c}` with height `{}`", f[2]))),
+            };
+            let supports: Vec<String> = if f[3] == "-" {
+                vec![]
+            } else {
+                f[3].split(',').map(|s| s.trim().to_string()).collect()
+            };
+            if matches!(class, Class::OnSurface(_)) == supports.is_empty() {
+                return Err(err("on_surface, and only it, names its supports"));
+            }
+            if by_category
+                .insert(f[0].to_string(), Placement { class, supports })
+                .is_some()
+            {
+                return Err(err(&format!("`{}` listed twice", f[0])));
+            }
+        }
+        Ok(Placements { by_category })
+    }
+
+    /// The built-in table.
+    pub fn builtin() -> &'static Placements {
+        static P: OnceLock<Placements> = OnceLock::new();
+        P.get_or_init(|| {
+            Placements::parse(include_str!("../kb/placement.txt"))
+                .expect("the built-in placement table is valid (tested)")
+        })
+    }
+
+    /// The placement of `category` (or of the knowledge-base category it is a synonym of),
+    /// if the table has it.
+    pub fn get(&self, category: &str) -> Option<&Placement> {
+        self.by_category.get(category).or_else(|| {
+            let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
+            self.by_category.get(&kb.category)
+        })
+    }
+
+    /// Whether `category` holds things (a support of some on_surface category): a desk, a
+    /// counter, a table, used from its front.
+    pub fn is_support(&self, category: &str) -> bool {
+        self.by_category
+            .values()
+            .any(|p| p.supports.iter().any(|s| s == category))
+    }
+
+    /// The class of `category` (floor when the table does not name it).
+    pub fn class(&self, category: &str) -> Class {
+        self.get(category).map_or(Class::Floor, |p| p.class)
+    }
+}
+
+/// The class `category` takes in `spec`: an on_surface thing whose scene has none of its
+/// supports hangs on the wall when it has a height, else stands on the floor; one with a height
+/// that the spec puts against a wall (SIDE: "a TV on the wall") hangs there.
+pub fn effective_class(spec: &SceneSpec, category: &str) -> Class {
+    let table = Placements::builtin();
+    let on_wall = spec.objects.get(category).is_some_and(|o| {
+        (1..=o.number).any(|k| spec.anchors.get(&format!("{category}{k}")) == Some(&Anchor::Side))
+    });
+    match table.get(category) {
+        Some(Placement {
+            class: Class::OnSurface(h),
+            supports,
+        }) => {
+            if let (Some(h), true) = (h, on_wall) {
+                Class::OnWall(*h)
+            } else if supports.iter().any(|s| spec.objects.contains_key(s)) {
+                Class::OnSurface(*h)
+            } else if let Some(h) = h {
+                Class::OnWall(*h)
+            } else {
+                Class::Floor
+            }
+        }
+        Some(p) => p.class,
+        None => Class::Floor,
+    }
+}
+
+/// Heights the search gives instances: wall mounting heights and ceiling things.
+#[derive(Debug, Clone, Default)]
+pub struct Mounts {
+    /// Instance id -> bottom-face height on its wall.
+    pub wall: BTreeMap<String, f64>,
+    /// Instance ids hung from the ceiling.
+    pub ceiling: Vec<String>,
+}
+
+/// Puts the placement classes into `spec`'s own terms: against_wall and on_wall things without
+/// an anchor of the user's take SIDE (indoor); an on_surface thing with no OVER/UNDER relation
+/// of its own goes OVER a support instance (the first support category present, spread over
+/// its instances by their top area). Returns the wall heights and ceiling things.
+pub fn apply(spec: &mut SceneSpec) -> Mounts {
+    let mut mounts = Mounts::default();
+    let indoor = spec.scene_type == SceneType::Indoor;
+    let mut load: BTreeMap<String, f64> = BTreeMap::new();
+    for r in &spec.relations {
+        if r.relation == RelationKind::Over {
+            let a = spec
+                .objects
+                .get(base(&r.subject))
+                .map_or(0.0, |o| o.size[0] * o.size[1]);
+            *load.entry(r.object.clone()).or_default() += a;
+        }
+    }
+    let mut added = vec![];
+    let mut unstack: Vec<String> = vec![];
+    let cats: Vec<(String, u32, [f64; 3])> = spec
+        .objects
+        .iter()
+        .map(|(c, o)| (c.clone(), o.number, o.size))
+        .collect();
+    for (cat, n, size) in cats {
+        let class = effective_class(spec, &cat);
+        for k in 1..=n {
+            let id = format!("{cat}{k}");
+            match class {
+                Class::AgainstWall | Class::OnWall(_) if indoor => {
+                    let a = spec.anchors.entry(id.clone()).or_insert(Anchor::Side);
+                    if *a == Anchor::Others || *a == Anchor::Center {
+                        *a = Anchor::Side;
+                    }
+                    if let Class::OnWall(h) = class {
+                        // hung on the wall, it rests on nothing
+                        unstack.push(id.clone());
+                        mounts.wall.insert(id, h);
+                    }
+                }
+                Class::OnWall(h) => {
+                    // outdoors there is no wall: it stands where it is put, at its height
+                    mounts.wall.insert(id, h);
+                }
+                Class::Ceiling if indoor => mounts.ceiling.push(id),
+                Class::OnSurface(_) => {
+                    let has_own = spec.relations.iter().any(|r| {
+                        r.subject == id
+                            && matches!(r.relation, RelationKind::Over | RelationKind::Under)
+                    });
+                    if has_own {
+                        // a thing on a support keeps no anchor of its own
+                        spec.anchors.remove(&id);
+                        continue;
+                    }
+                    let Some(p) = Placements::builtin().get(&cat) else {
+                        continue;
+                    };
+                    let Some(sup) = p.supports.iter().find(|s| spec.objects.contains_key(*s))
+                    else {
+                        continue;
+                    };
+                    let so = &spec.objects[sup];
+                    let top = so.size[0] * so.size[1];
+                    // the least loaded instance of the support, by the share of its top used
+                    let best = (1..=so.number).map(|m| format!("{sup}{m}")).min_by(|a, b| {
+                        let la = load.get(a).copied().unwrap_or(0.0) / top;
+                        let lb = load.get(b).copied().unwrap_or(0.0) / top;
+                        la.total_cmp(&lb)
+                    });
+                    if let Some(oid) = best {
+                        *load.entry(oid.clone()).or_default() += size[0] * size[1];
+                        // a thing on a support keeps no anchor of its own
+                        spec.anchors.remove(&id);
+                        added.push(Relation {
+                            subject: id,
+                            relation: RelationKind::Over,
+                            object: oid,
+                        });
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    spec.relations.retain(|r| {
+        !(unstack.contains(&r.subject)
+            && matches!(r.relation, RelationKind::Over | RelationKind::Under))
+    });
+    // A desk, table or counter "facing the window" (a support: used from its front) is used
+    // facing it: its back to the window, and the seats at it face the window.
+    let facing: Vec<String> = spec
+        .anchors
+        .iter()
+        .filter(|(_, a)| **a == Anchor::FaceWindow)
+        .map(|(id, _)| id.clone())
+        .collect();
+    for id in facing {
+        let seats: Vec<String> = spec
+            .relations
+            .iter()
+            .filter(|r| r.object == id && r.relation == RelationKind::At)
+            .map(|r| r.subject.clone())
+            .collect();
+        let cat = base(&id).to_string();
+        if !seats.is_empty() || Placements::builtin().is_support(&cat) {
+            spec.anchors.insert(id, Anchor::Window);
+            for s in seats {
+                spec.anchors.insert(s, Anchor::FaceWindow);
+            }
+        }
+    }
+    spec.relations.extend(added);
+    mounts
+}
+
+fn base(id: &str) -> &str {
+    id.trim_end_matches(|c: char| c.is_ascii_digit())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::kb::KnowledgeBase;
+
+    #[test]
+    fn every_category_has_a_placement_class() {
+        let table = Placements::builtin();
+        let missing: Vec<&str> = KnowledgeBase::builtin()
+            .objects
+            .iter()
+            .map(|o| o.category.as_str())
+            .filter(|c| table.get(c).is_none())
+            .collect();
+        assert!(missing.is_empty(), "no placement class: {missing:?}");
+    }
+
+    #[test]
+    fn classes_of_the_issue() {
+        let t = Placements::builtin();
+        for c in [
+            "whiteboard",
+            "blackboard",
+            "painting",
+            "projector screen",
+            "wall shelf",
+        ] {
+            assert!(matches!(t.class(c), Class::OnWall(h) if h >= 0.4), "{c}");
+        }
+        for c in [
+            "wardrobe",
+            "bookshelf",
+            "fireplace",
+            "stove",
+            "refrigerator",
+            "dresser",
+        ] {
+            assert_eq!(t.class(c), Class::AgainstWall, "{c}");
+        }
+        for (c, s) in [
+            ("table lamp", "nightstand"),
+            ("laptop", "desk"),
+            ("microscope", "science bench"),
+            ("toaster", "kitchen counter"),
+            ("cash register", "counter"),
+            ("vase", "dining table"),
+        ] {
+            let p = t.get(c).expect(c);
+            assert!(p.supports.iter().any(|x| x == s), "{c} on {s}");
+        }
+    }
+
+    #[test]
+    fn malformed_lines_are_named() {
+        let e = Placements::parse("lamp | on_surface | - | -\n").unwrap_err();
+        assert!(e.contains("line 1"), "{e}");
+        let e = Placements::parse("# c\nclock | on_wall | high | -\n").unwrap_err();
+        assert!(e.contains("line 2") && e.contains("high"), "{e}");
+    }
+}

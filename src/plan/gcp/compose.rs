@@ -1,0 +1,159 @@
+//! Composition as furnishers do it, as soft terms of the search's score: the two ends of an
+//! OPPOSITE pair (a TV and its sofa) on one axis with nothing taller than 0.6 m between them;
+//! the face of a thing against a wall (a wardrobe's doors, a bookcase's shelves, a fireplace)
+//! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
+//! back, not in front of its face; a thing alone on its support centred on it (at its back
+//! when the support stands against a wall); a thing by a
+//! window or door as close to it as it can stand.
+use super::{Pose, Problem};
+use crate::plan::check::{opening_distance, overlap_depth, Box2};
+use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
+
+/// Height above which a thing blocks a sightline (m).
+pub const SIGHTLINE_HEIGHT: f64 = 0.6;
+/// Depth kept free in front of a thing against a wall (m).
+pub const FACE_CLEARANCE: f64 = 0.6;
+
+/// Whether the segment from `a` to `c` (ends excluded) passes through `b`'s footprint.
+fn crosses(b: &Box2, a: [f64; 2], c: [f64; 2]) -> bool {
+    (1..24).any(|k| {
+        let t = k as f64 / 24.0;
+        b.contains([a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])])
+    })
+}
+
+/// The free space in front of `b`'s face.
+fn face_zone(b: &Box2) -> Box2 {
+    let c = [
+        b.c[0] + b.ey[0] * (b.half[1] + 0.5 * FACE_CLEARANCE),
+        b.c[1] + b.ey[1] * (b.half[1] + 0.5 * FACE_CLEARANCE),
+    ];
+    let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
+    Box2::new(c, yaw, [2.0 * b.half[0], FACE_CLEARANCE], 0.0, 2.0)
+}
+
+impl Problem {
+    /// How many things rest on instance `j`.
+    fn load(&self, j: usize) -> usize {
+        self.rels[j]
+            .iter()
+            .filter(|r| r.0 == RelationKind::Over && !r.2)
+            .count()
+    }
+
+    fn related(&self, i: usize, j: usize) -> bool {
+        self.rels[i].iter().any(|r| r.1 == j)
+    }
+
+    /// The composition term of pose `p` (box `b`) for instance `i` (0 at best, negative).
+    pub(super) fn composition(
+        &self,
+        i: usize,
+        p: &Pose,
+        b: &Box2,
+        placed: &[Option<Pose>],
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> f64 {
+        let mut score = 0.0;
+        let boxed = |j: usize| boxes[j].as_ref().map(|x| x.0);
+        // Sightlines of the placed OPPOSITE pairs that this pose would cross.
+        if b.z1 > SIGHTLINE_HEIGHT {
+            for &(a, c) in &self.sightlines {
+                if a == i || c == i || self.is_stacked(i, a) || self.is_stacked(i, c) {
+                    continue;
+                }
+                if let (Some(pa), Some(pc)) = (placed[a], placed[c]) {
+                    if crosses(b, pa.c, pc.c) {
+                        score -= 6.0;
+                    }
+                }
+            }
+        }
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(bj) = boxed(j) else { continue };
+            match rel {
+                RelationKind::Opposite => {
+                    // on the partner's axis (the object's frame), and nothing tall between
+                    let lateral = if subject {
+                        bj.local(p.c)[0]
+                    } else {
+                        b.local(bj.c)[0]
+                    };
+                    score -= 5.0 * lateral.abs().min(2.0);
+                    for (k, bk) in boxes.iter().enumerate() {
+                        let Some((bk, _)) = bk else { continue };
+                        if k == j || bk.z1 <= SIGHTLINE_HEIGHT {
+                            continue;
+                        }
+                        if self.is_stacked(k, i) || self.is_stacked(k, j) {
+                            continue;
+                        }
+                        if crosses(bk, p.c, bj.c) {
+                            score -= 6.0;
+                        }
+                    }
+                }
+                RelationKind::Over if subject && self.load(j) == 1 => {
+                    // alone on its support: centred on it, at its back when the support
+                    // stands against a wall (a TV on its stand, a monitor on a desk)
+                    let back = if self.faced[j] {
+                        (bj.half[1] - 0.5 * self.inst[i].size[1]).max(0.0)
+                    } else {
+                        0.0
+                    };
+                    let t = [bj.c[0] - bj.ey[0] * back, bj.c[1] - bj.ey[1] * back];
+                    let d = ((p.c[0] - t[0]).powi(2) + (p.c[1] - t[1]).powi(2)).sqrt();
+                    score -= 8.0 * d;
+                }
+                RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
+                    score -= 3.0;
+                }
+                _ => {}
+            }
+        }
+        // Things by a window or door stand as close to it as they can.
+        let kind = match self.inst[i].anchor {
+            Anchor::Window => Some(OpeningKind::Window),
+            Anchor::Door => Some(OpeningKind::Door),
+            _ => None,
+        };
+        if let Some(kind) = kind {
+            let d = self
+                .openings
+                .iter()
+                .filter(|o| o.kind == kind)
+                .map(|o| opening_distance(b, o))
+                .fold(f64::INFINITY, f64::min);
+            if d.is_finite() {
+                score -= 4.0 * d.min(2.0);
+            }
+        }
+        // Faces of things against walls.
+        if b.z0 < 1.0 {
+            for (j, bj) in boxes.iter().enumerate() {
+                let Some((bj, _)) = bj else { continue };
+                if self.faced[j]
+                    && !self.related(i, j)
+                    && !self.is_stacked(i, j)
+                    && overlap_depth(b, &face_zone(bj)) > 0.05
+                {
+                    score -= 4.0;
+                }
+            }
+        }
+        if self.faced[i] {
+            let zone = face_zone(b);
+            for (j, bj) in boxes.iter().enumerate() {
+                let Some((bj, _)) = bj else { continue };
+                if bj.z0 < 1.0
+                    && !self.related(i, j)
+                    && !self.is_stacked(i, j)
+                    && overlap_depth(bj, &zone) > 0.05
+                {
+                    score -= 4.0;
+                }
+            }
+        }
+        score
+    }
+}

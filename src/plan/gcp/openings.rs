@@ -1,0 +1,179 @@
+//! Doors and windows of an indoor room (ARCHITECTURE.md "Openings"): one door, 0.9 m wide,
+//! near a corner of a seeded wall; a window centred on the wall opposite it and, at random, on
+//! one side wall (two on a wall of 6 m or more), 0.9 m sill. A room whose sentence says it has
+//! no windows gets none.
+use crate::plan::spec::{Opening, OpeningKind, Wall};
+use rand::Rng;
+
+/// Door width and height (m).
+pub const DOOR: [f64; 2] = [0.9, 2.1];
+/// Window sill height (m).
+pub const SILL: f64 = 0.9;
+
+/// Whether `text` asks for a room without windows.
+pub fn says_no_windows(text: &str) -> bool {
+    let t = text.to_lowercase();
+    [
+        "no window",
+        "windowless",
+        "without windows",
+        "without a window",
+    ]
+    .iter()
+    .any(|p| t.contains(p))
+}
+
+/// Length of `wall` in a room of size `room`.
+fn length(wall: Wall, room: [f64; 3]) -> f64 {
+    match wall {
+        Wall::North | Wall::South => room[0],
+        Wall::East | Wall::West => room[1],
+    }
+}
+
+/// The point on `wall`'s inner face at `t` metres along it from its middle, at height `z`.
+fn on_wall(wall: Wall, room: [f64; 3], t: f64, z: f64) -> [f64; 3] {
+    let (hw, hd) = (0.5 * room[0], 0.5 * room[1]);
+    match wall {
+        Wall::North => [t, hd, z],
+        Wall::South => [t, -hd, z],
+        Wall::East => [hw, t, z],
+        Wall::West => [-hw, t, z],
+    }
+}
+
+fn opposite(w: Wall) -> Wall {
+    match w {
+        Wall::North => Wall::South,
+        Wall::South => Wall::North,
+        Wall::East => Wall::West,
+        Wall::West => Wall::East,
+    }
+}
+
+/// Seeded openings of a room of size `room`.
+pub fn generate(room: [f64; 3], windows: bool, rng: &mut impl Rng) -> Vec<Opening> {
+    const WALLS: [Wall; 4] = [Wall::South, Wall::North, Wall::East, Wall::West];
+    let mut out = vec![];
+    let door_wall = WALLS[rng.gen_range(0..4)];
+    let len = length(door_wall, room);
+    let w = DOOR[0].min(0.6 * len);
+    let h = DOOR[1].min(room[2] - 0.1);
+    let reach = (0.5 * len - 0.5 * w - 0.15).max(0.0);
+    let t = [-reach, reach, -0.5 * reach, 0.5 * reach][rng.gen_range(0..4)];
+    out.push(Opening {
+        kind: OpeningKind::Door,
+        wall: door_wall,
+        position: on_wall(door_wall, room, t, 0.0),
+        width: w,
+        height: h,
+    });
+    if !windows {
+        return out;
+    }
+    let mut walls = vec![opposite(door_wall)];
+    let sides: Vec<Wall> = WALLS
+        .iter()
+        .copied()
+        .filter(|&x| x != door_wall && x != opposite(door_wall))
+        .collect();
+    if rng.gen_bool(0.5) {
+        walls.push(sides[rng.gen_range(0..sides.len())]);
+    }
+    let height = (room[2] - SILL - 0.3).clamp(0.6, 1.3);
+    for wall in walls {
+        let len = length(wall, room);
+        if len < 2.0 {
+            continue;
+        }
+        let n = if len >= 6.0 { 2 } else { 1 };
+        let width = (0.3 * len / n as f64).clamp(0.6, 1.4);
+        for k in 0..n {
+            let t = len * (k as f64 + 0.5) / n as f64 - 0.5 * len;
+            out.push(Opening {
+                kind: OpeningKind::Window,
+                wall,
+                position: on_wall(wall, room, t, SILL),
+                width,
+                height,
+            });
+        }
+    }
+    out
+}
+
+impl super::Problem {
+    /// Candidate poses of instance `i` that its opening anchor asks for: along a window's wall
+    /// in front of it (WINDOW), facing it from 0.3–1.5 m (FACE_WINDOW), beside a door's clear
+    /// zone (DOOR). Empty for the other anchors.
+    pub(super) fn opening_candidates(&self, i: usize) -> Vec<super::Pose> {
+        use crate::plan::spec::Anchor;
+        let anchor = self.inst[i].anchor;
+        let kind = match anchor {
+            Anchor::Window | Anchor::FaceWindow => OpeningKind::Window,
+            Anchor::Door => OpeningKind::Door,
+            _ => return vec![],
+        };
+        let s = self.inst[i].size;
+        let z = self.hung[i].unwrap_or(0.0);
+        let mut out = vec![];
+        for o in self.openings.iter().filter(|o| o.kind == kind) {
+            let n = o.wall.inward();
+            let a = o.wall.along();
+            let into = super::yaw_facing(n);
+            let toward = into + 180.0;
+            let base = [o.position[0], o.position[1]];
+            let at = |along: f64, out_: f64| {
+                [
+                    base[0] + a[0] * along + n[0] * out_,
+                    base[1] + a[1] * along + n[1] * out_,
+                ]
+            };
+            match anchor {
+                Anchor::Window => {
+                    for along in [0.0, -0.5 * o.width, 0.5 * o.width, -o.width, o.width] {
+                        for (yaw, depth) in [
+                            (into, s[1]),
+                            (toward, s[1]),
+                            (into + 90.0, s[0]),
+                            (into - 90.0, s[0]),
+                        ] {
+                            for gap in [0.02, 0.3] {
+                                out.push(super::Pose {
+                                    c: at(along, gap + 0.5 * depth),
+                                    yaw,
+                                    z,
+                                });
+                            }
+                        }
+                    }
+                }
+                Anchor::FaceWindow => {
+                    for along in [0.0, -0.3 * o.width, 0.3 * o.width] {
+                        for gap in [0.3, 0.6, 1.0, 1.5] {
+                            out.push(super::Pose {
+                                c: at(along, gap + 0.5 * s[1]),
+                                yaw: toward,
+                                z,
+                            });
+                        }
+                    }
+                }
+                _ => {
+                    let side = 0.5 * o.width + 0.1 + 0.5 * s[0].max(s[1]);
+                    for along in [-side, side, -side - 0.3, side + 0.3] {
+                        for (yaw, depth) in [(into, s[1]), (into + 90.0, s[0]), (into - 90.0, s[0])]
+                        {
+                            out.push(super::Pose {
+                                c: at(along, 0.02 + 0.5 * depth),
+                                yaw,
+                                z,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+}
