@@ -17,21 +17,22 @@ use crate::camera::Camera;
 use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::generate::object::{
-    generate_object, guided_iteration, subset, GuidedView, ObjectConfig,
-};
-use crate::generate::prior::{OraclePrior, Prior, PriorView, SdPrior};
+use crate::generate::object::{generate_object, subset, ObjectConfig};
+use crate::generate::prior::{OraclePrior, Prior, SdPrior};
 use crate::generate::progress::Progress;
 use crate::generate::scene::object_ply;
 use crate::generate::scene_stages::stage_fit;
+use crate::generate::stage::{pseudo_ground_truth, run_fit, run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
 use crate::plan::check::Box2;
 use crate::plan::spec::Anchor;
 use crate::scene::compose::{merge, pad_sh, place};
 use crate::scene::dir::SceneObject;
 use crate::shape::{self, ShapeOptions};
-use crate::splat::train::{FitConfig, Trainer, View};
+use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 use serde_json::json;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -271,27 +272,43 @@ pub fn local_environment(
         cfg.seed ^ 0x10ca1,
     );
     let mut t = Trainer::guided(ctx, &cloud, local_fit(iters.max(1), cfg.seed), 1.0)?;
-    t.trainable = Some(first..n);
     let mut progress = Progress::new(iters as u64, false);
-    let mut loss = 0.0;
-    while t.iteration() < iters {
-        let step = t.iteration() as usize;
-        let views: Vec<GuidedView> = (0..BATCH)
-            .map(|b| GuidedView {
-                camera: cams[(step * BATCH + b) % cams.len()].clone(),
-                background: [1.0; 3],
-                azimuth: 0.0,
-                elevation: -30.0,
-            })
-            .collect();
-        loss = guided_iteration(&mut t, prior.as_mut(), &mut guide, &views, Some(first..n))
-            .map_err(gen)?
-            .loss;
-        progress.update(
-            t.iteration() as u64,
-            &format!("local environment loss {loss:.5}"),
-        );
-    }
+    let local_view = |camera: &Camera| GuidedView {
+        camera: camera.clone(),
+        background: [1.0; 3],
+        azimuth: 0.0,
+        elevation: -30.0,
+    };
+    let mut views = |step: u32, _: &mut ChaCha8Rng| {
+        (0..BATCH)
+            .map(|b| local_view(&cams[(step as usize * BATCH + b) % cams.len()]))
+            .collect()
+    };
+    let mut stage = GuidedStage {
+        iterations: iters,
+        trainable: Some(first..n),
+        sh: None,
+        checkpoint_every: 0,
+        views: &mut views,
+    };
+    // The views are fixed: the stage's generator is never drawn from.
+    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
+    let loss = run_guided(
+        &mut stage,
+        &mut t,
+        prior.as_mut(),
+        &mut guide,
+        &mut rng,
+        &mut |t, r, _, _, _| {
+            progress.update(
+                t.iteration() as u64,
+                &format!("local environment loss {:.5}", r.loss),
+            );
+            Ok(())
+        },
+    )
+    .map_err(gen)?
+    .loss;
     progress.finish();
     let mut cloud = t.gaussians()?;
     drop(t);
@@ -303,29 +320,9 @@ pub fn local_environment(
         Codec::Fast,
         cfg.seed ^ 0x3ec0,
     );
-    let mut maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
-    let mut views = vec![];
-    for cam in &cams {
-        let bv = maker.render_view(cam, [1.0; 3])?;
-        let target = prior
-            .target(
-                &mut pg,
-                &PriorView {
-                    camera: cam,
-                    render: &bv.color,
-                    background: [1.0; 3],
-                    azimuth: 0.0,
-                    elevation: -30.0,
-                },
-                0,
-            )
-            .map_err(EditError::Gpu)?;
-        views.push(View {
-            camera: cam.clone(),
-            pixels: target,
-        });
-    }
-    drop(maker);
+    let views: Vec<GuidedView> = cams.iter().map(local_view).collect();
+    let views =
+        pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH).map_err(gen)?;
     let steps = RECON_PASSES * views.len() as u32;
     let fit = FitConfig {
         background: [1.0; 3],
@@ -333,10 +330,9 @@ pub fn local_environment(
     };
     let mut t = Trainer::new(ctx, &cloud, views, fit)?;
     t.trainable = Some(first..n);
-    let mut psnr = 0.0;
-    while t.iteration() < steps {
-        psnr = t.step()?.psnr;
-    }
+    let psnr = run_fit(&mut t, steps, 0, &mut |_, _, _| Ok(()))
+        .map_err(gen)?
+        .map_or(0.0, |r| r.psnr);
     cloud = t.gaussians()?;
     // Write the trained part back into the environment, in its order; the rest as it was.
     let trained = subset(&cloud, &(0..n).map(|i| i >= first).collect::<Vec<_>>());

@@ -11,11 +11,11 @@ use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
 use crate::diffusion::guidance::{MtsRange, MtsSettings};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::generate::object::{guided_iteration, GuidedView};
 use crate::generate::prior::{
     from_latent, to_latent, OraclePredictor, OraclePrior, Prior, PriorView,
 };
 use crate::generate::progress::Progress;
+use crate::generate::stage::{run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
 use crate::scene::dir::SceneObject;
 use crate::shape::{self, ShapeOptions};
@@ -235,21 +235,36 @@ fn edit_object(
     let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ 0x7e57);
     let ranges = OrbitRanges::default();
     let mut progress = Progress::new(cfg.iterations as u64, false);
-    while t.iteration() < cfg.iterations {
-        let step = t.iteration();
-        let views: Vec<GuidedView> =
-            random_views(&frame, &ranges, step, BATCH, cfg.resolution, &mut rng)
-                .into_iter()
-                .map(|v| GuidedView {
-                    camera: v.camera,
-                    background: [1.0; 3],
-                    azimuth: v.azimuth,
-                    elevation: v.elevation,
-                })
-                .collect();
-        let r = guided_iteration(&mut t, prior, &mut guide, &views, None).map_err(gen)?;
-        progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
-    }
+    let mut views = |step: u32, rng: &mut ChaCha8Rng| {
+        random_views(&frame, &ranges, step, BATCH, cfg.resolution, rng)
+            .into_iter()
+            .map(|v| GuidedView {
+                camera: v.camera,
+                background: [1.0; 3],
+                azimuth: v.azimuth,
+                elevation: v.elevation,
+            })
+            .collect()
+    };
+    let mut stage = GuidedStage {
+        iterations: cfg.iterations,
+        trainable: None,
+        sh: None,
+        checkpoint_every: 0,
+        views: &mut views,
+    };
+    run_guided(
+        &mut stage,
+        &mut t,
+        prior,
+        &mut guide,
+        &mut rng,
+        &mut |t, r, _, _, _| {
+            progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
+            Ok(())
+        },
+    )
+    .map_err(gen)?;
     progress.finish();
     Ok(t.gaussians()?)
 }

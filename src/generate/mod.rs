@@ -8,3 +8,4 @@ pub mod prior;
 pub mod progress;
 pub mod scene;
 pub mod scene_stages;
+pub mod stage;

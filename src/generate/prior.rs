@@ -52,6 +52,16 @@ pub trait Prior {
         view: &PriorView,
         step: u32,
     ) -> Result<Vec<[f32; 3]>, String>;
+    /// The targets of all views of an iteration, in order: what [`Prior::target`] gives view by
+    /// view, in one call so that a prior can batch its model calls.
+    fn targets(
+        &mut self,
+        guide: &mut Guide,
+        views: &[PriorView],
+        step: u32,
+    ) -> Result<Vec<Vec<[f32; 3]>>, String> {
+        views.iter().map(|v| self.target(guide, v, step)).collect()
+    }
 }
 
 fn flat(img: &[[f32; 3]]) -> Vec<f32> {
