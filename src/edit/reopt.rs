@@ -17,7 +17,7 @@ use crate::camera::Camera;
 use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::generate::object::{generate_object, subset, ObjectConfig};
+use crate::generate::object::{generate_object, subset, GenError, ObjectConfig};
 use crate::generate::prior::{OraclePrior, Prior, SdPrior};
 use crate::generate::progress::Progress;
 use crate::generate::scene::object_ply;
@@ -104,17 +104,18 @@ pub(super) fn need(ctx: Option<&Context>) -> Result<&Context> {
     ctx.ok_or_else(|| EditError::Gpu("this edit needs a Vulkan device".into()))
 }
 
-pub(super) fn gen(e: crate::generate::object::GenError) -> EditError {
-    EditError::Gpu(e.to_string())
-}
-
 pub(super) fn open_sd(
     models: &std::path::Path,
     prompt: &str,
     edit: Option<&str>,
 ) -> Result<SdPrior> {
     let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default())
-        .map_err(EditError::Bad)?;
+        .map_err(|msg| {
+            GenError::Prior(crate::diffusion::Error::Model {
+                path: models.to_path_buf(),
+                msg,
+            })
+        })?;
     Ok(SdPrior::new(sd, prompt, edit))
 }
 
@@ -255,7 +256,7 @@ pub fn local_environment(
     let mut prior: Box<dyn Prior> = match &prior {
         ScenePrior::Oracle(dir) => {
             let world = oracle_world(state, dir, edit)?;
-            Box::new(OraclePrior::new(ctx, &world, None).map_err(EditError::Gpu)?)
+            Box::new(OraclePrior::new(ctx, &world, None)?)
         }
         ScenePrior::Sd(m) => Box::new(open_sd(m, &text, None)?),
         ScenePrior::Shape => unreachable!("returned above"),
@@ -307,7 +308,7 @@ pub fn local_environment(
             Ok(())
         },
     )
-    .map_err(gen)?
+    ?
     .loss;
     progress.finish();
     let mut cloud = t.gaussians()?;
@@ -322,7 +323,7 @@ pub fn local_environment(
     );
     let views: Vec<GuidedView> = cams.iter().map(local_view).collect();
     let views =
-        pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH).map_err(gen)?;
+        pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH)?;
     let steps = RECON_PASSES * views.len() as u32;
     let fit = FitConfig {
         background: [1.0; 3],
@@ -331,7 +332,7 @@ pub fn local_environment(
     let mut t = Trainer::new(ctx, &cloud, views, fit)?;
     t.trainable = Some(first..n);
     let psnr = run_fit(&mut t, steps, 0, &mut |_, _, _| Ok(()))
-        .map_err(gen)?
+        ?
         .map_or(0.0, |r| r.psnr);
     cloud = t.gaussians()?;
     // Write the trained part back into the environment, in its order; the rest as it was.
@@ -452,7 +453,7 @@ pub fn add_object(
             let mut p = open_sd(&m, &planned.description, None)?;
             let mut pr = Progress::new(0, true);
             let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)
-                .map_err(gen)?;
+                ?;
             (g, format!("sd prior, {object_iterations} iterations"))
         }
         ScenePrior::Oracle(dir) => {
@@ -466,10 +467,10 @@ pub fn add_object(
             }
             let reference = crate::splat::ply::read_ply(&r)?;
             let ctx = need(ctx)?;
-            let mut p = OraclePrior::new(ctx, &reference, None).map_err(EditError::Gpu)?;
+            let mut p = OraclePrior::new(ctx, &reference, None)?;
             let mut pr = Progress::new(0, true);
             let (g, _) =
-                generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr).map_err(gen)?;
+                generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("oracle prior, {object_iterations} iterations"))
         }
     };

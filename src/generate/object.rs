@@ -134,7 +134,7 @@ pub enum GenError {
     #[error(transparent)]
     Gpu(#[from] crate::gpu::GpuError),
     #[error("prior: {0}")]
-    Prior(String),
+    Prior(#[from] crate::diffusion::Error),
     #[error("{0}")]
     Checkpoint(String),
     #[error("{path}: {err}")]

@@ -19,6 +19,8 @@ use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor};
 use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
 use crate::diffusion::target::Guide;
+use crate::diffusion::Error;
+use super::object::GenError;
 use crate::gpu::Context;
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
@@ -51,7 +53,7 @@ pub trait Prior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String>;
+    ) -> Result<Vec<[f32; 3]>, GenError>;
     /// The targets of all views of an iteration, in order: what [`Prior::target`] gives view by
     /// view, in one call so that a prior can batch its model calls.
     fn targets(
@@ -59,7 +61,7 @@ pub trait Prior {
         guide: &mut Guide,
         views: &[PriorView],
         step: u32,
-    ) -> Result<Vec<Vec<[f32; 3]>>, String> {
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
         views.iter().map(|v| self.target(guide, v, step)).collect()
     }
 }
@@ -120,20 +122,20 @@ impl OraclePrior {
         ctx: &Context,
         reference: &Gaussians,
         edit: Option<&Gaussians>,
-    ) -> Result<OraclePrior, String> {
-        let up = |g: &Gaussians| GpuGaussians::upload(ctx, g).map_err(|e| e.to_string());
+    ) -> Result<OraclePrior, GenError> {
+        let up = |g: &Gaussians| GpuGaussians::upload(ctx, g);
         Ok(OraclePrior {
             ctx: ctx.clone(),
-            raster: Rasterizer::new(ctx).map_err(|e| e.to_string())?,
+            raster: Rasterizer::new(ctx)?,
             reference: up(reference)?,
             edit: edit.map(up).transpose()?,
-            sched: Schedule::new(SchedulerConfig::sd21_base())?,
+            sched: Schedule::new(SchedulerConfig::sd21_base()).map_err(Error::Run)?,
             frame: Mutex::new(None),
         })
     }
 
     /// The reference rendered from `cam` over `bg`: what the oracle believes the view shows.
-    pub fn reference_view(&self, cam: &Camera, bg: [f32; 3]) -> Result<Vec<[f32; 3]>, String> {
+    pub fn reference_view(&self, cam: &Camera, bg: [f32; 3]) -> Result<Vec<[f32; 3]>, GenError> {
         self.render(&self.reference, cam, bg)
     }
 
@@ -142,16 +144,14 @@ impl OraclePrior {
         g: &GpuGaussians,
         cam: &Camera,
         bg: [f32; 3],
-    ) -> Result<Vec<[f32; 3]>, String> {
+    ) -> Result<Vec<[f32; 3]>, GenError> {
         let mut slot = self.frame.lock().unwrap_or_else(|e| e.into_inner());
         let frame = match slot.as_mut() {
             Some(f) => f,
-            None => slot.insert(Frame::new(&self.ctx).map_err(|e| e.to_string())?),
+            None => slot.insert(Frame::new(&self.ctx)?),
         };
-        self.raster
-            .forward_into(&self.ctx, g, cam, bg, frame, true)
-            .and_then(|()| frame.colour())
-            .map_err(|e| e.to_string())
+        self.raster.forward_into(&self.ctx, g, cam, bg, frame, true)?;
+        Ok(frame.colour()?)
     }
 }
 
@@ -189,7 +189,7 @@ impl Prior for OraclePrior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String> {
+    ) -> Result<Vec<[f32; 3]>, GenError> {
         let reference = to_latent(&self.render(&self.reference, view.camera, view.background)?);
         let edit = match &self.edit {
             Some(e) => Some(to_latent(&self.render(e, view.camera, view.background)?)),
@@ -201,7 +201,9 @@ impl Prior for OraclePrior {
             reference: &reference,
             edit: edit.as_deref(),
         };
-        let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &z, step)?;
+        let (zt, _, _) = guide
+            .latent_target(&mut p, &self.sched, &z, step)
+            .map_err(Error::Run)?;
         Ok(from_latent(&zt, is_pseudo_gt(guide)))
     }
 }
@@ -247,24 +249,27 @@ impl Prior for SdPrior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String> {
+    ) -> Result<Vec<[f32; 3]>, GenError> {
         let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
         if !self.cache.contains_key(&pos) {
             let edit = self
                 .edit
                 .as_ref()
                 .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
-            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref())?;
+            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref()).map_err(Error::Run)?;
             self.cache.insert(pos.clone(), c);
         }
         let cond = &self.cache[&pos];
         let (w, h) = (view.camera.width as usize, view.camera.height as usize);
-        let t = guide.image_target(&mut self.sd, cond, &flat(view.render), w, h, step)?;
+        let t = guide
+            .image_target(&mut self.sd, cond, &flat(view.render), w, h, step)
+            .map_err(Error::Run)?;
         if (t.width, t.height) != (w, h) {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
                 t.width, t.height
-            ));
+            ))
+            .into());
         }
         let mut img = unflat(&t.image);
         if is_pseudo_gt(guide) {

@@ -24,6 +24,7 @@ use crate::diffusion::guidance::{
 };
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
+use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::plan::spec::{Layout, SceneSpec, SceneType};
 use crate::scene::compose::{merge, pad_sh, place, Placement};
@@ -103,8 +104,9 @@ impl SceneConfig {
 pub trait ScenePriors {
     /// `sd` or `oracle:DIR`, for scene.json and logs.
     fn kind(&self) -> String;
-    fn for_object(&mut self, category: &str, description: &str) -> Result<&mut dyn Prior, String>;
-    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, String>;
+    fn for_object(&mut self, category: &str, description: &str)
+        -> Result<&mut dyn Prior, GenError>;
+    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, GenError>;
 }
 
 /// Stable Diffusion for everything: the object's description, then the scene text.
@@ -114,11 +116,15 @@ impl ScenePriors for SdScenePriors {
     fn kind(&self) -> String {
         "sd".into()
     }
-    fn for_object(&mut self, _category: &str, description: &str) -> Result<&mut dyn Prior, String> {
+    fn for_object(
+        &mut self,
+        _category: &str,
+        description: &str,
+    ) -> Result<&mut dyn Prior, GenError> {
         self.0.set_prompt(description);
         Ok(&mut self.0)
     }
-    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, String> {
+    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, GenError> {
         self.0.set_prompt(text);
         Ok(&mut self.0)
     }
@@ -146,15 +152,19 @@ impl ScenePriors for OracleScenePriors {
     fn kind(&self) -> String {
         format!("oracle:{}", self.dir.display())
     }
-    fn for_object(&mut self, category: &str, _d: &str) -> Result<&mut dyn Prior, String> {
+    fn for_object(&mut self, category: &str, _d: &str) -> Result<&mut dyn Prior, GenError> {
         let path = self.dir.join(object_ply(category));
-        let g = read_ply(&path).map_err(|e| format!("the oracle's reference: {e}"))?;
+        let g = read_ply(&path).map_err(|e| {
+            GenError::Prior(Error::Oracle(format!("the oracle's reference: {e}")))
+        })?;
         self.current = Some(OraclePrior::new(&self.ctx, &g, None)?);
         Ok(self.current.as_mut().expect("just set"))
     }
-    fn for_scene(&mut self, _text: &str) -> Result<&mut dyn Prior, String> {
-        let scene = crate::scene::dir::read_scene(&self.dir).map_err(|e| e.to_string())?;
-        let g = crate::scene::dir::compose_scene(&self.dir, &scene).map_err(|e| e.to_string())?;
+    fn for_scene(&mut self, _text: &str) -> Result<&mut dyn Prior, GenError> {
+        let oracle = |e: String| GenError::Prior(Error::Oracle(e));
+        let scene = crate::scene::dir::read_scene(&self.dir).map_err(|e| oracle(e.to_string()))?;
+        let g = crate::scene::dir::compose_scene(&self.dir, &scene)
+            .map_err(|e| oracle(e.to_string()))?;
         self.current = Some(OraclePrior::new(&self.ctx, &g, None)?);
         Ok(self.current.as_mut().expect("just set"))
     }
@@ -323,10 +333,8 @@ pub fn generate_scene(
                 seed: cfg.seed,
             },
         )
-        .map_err(|e| GenError::Prior(e.to_string()))?;
-        let prior = priors
-            .for_object(cat, &description)
-            .map_err(GenError::Prior)?;
+        .map_err(|e| GenError::Prior(Error::Input(e.to_string())))?;
+        let prior = priors.for_object(cat, &description)?;
         let odir = ck.join("objects").join(cat.replace(' ', "_"));
         let c = Checkpoints {
             dir: &odir,
@@ -418,7 +426,7 @@ pub fn generate_scene(
         if run.stages_done > k as u32 || iters == 0 {
             continue;
         }
-        let prior = priors.for_scene(&text).map_err(GenError::Prior)?;
+        let prior = priors.for_scene(&text)?;
         let mut guide = Guide::new(
             Rule::Mts { m: 4 },
             MtsRange {
@@ -498,7 +506,7 @@ pub fn generate_scene(
     }
     // ---- stage 3: reconstructive ----
     if run.stages_done < 3 && cfg.recon_views > 0 && cfg.recon_passes > 0 {
-        let prior = priors.for_scene(&text).map_err(GenError::Prior)?;
+        let prior = priors.for_scene(&text)?;
         let mut guide = Guide::new(
             Rule::PseudoGt,
             SCENE_RECON,

@@ -10,6 +10,7 @@ use super::object::GenError;
 use super::prior::{Prior, PriorView};
 use crate::camera::Camera;
 use crate::diffusion::target::Guide;
+use crate::diffusion::Error;
 use crate::gpu::{Context, Timings};
 use crate::splat::train::{FitConfig, StepReport, Trainer, View};
 use crate::splat::Gaussians;
@@ -162,17 +163,15 @@ pub fn guided_iteration(
         })
         .collect();
     let tp = Instant::now();
-    let targets = prior
-        .targets(guide, &asked, step)
-        .map_err(GenError::Prior)?;
+    let targets = prior.targets(guide, &asked, step)?;
     report.prior_seconds = tp.elapsed().as_secs_f64();
     drop(asked);
     if targets.len() != views.len() {
-        return Err(GenError::Prior(format!(
+        return Err(GenError::Prior(Error::Run(format!(
             "the prior returned {} targets for {} views",
             targets.len(),
             views.len()
-        )));
+        ))));
     }
     let mut grads = Vec::with_capacity(views.len());
     for (bv, target) in batch.iter().zip(&targets) {
@@ -240,7 +239,7 @@ pub fn pseudo_ground_truth(
                 elevation: v.elevation,
             })
             .collect();
-        let targets = prior.targets(guide, &asked, 0).map_err(GenError::Prior)?;
+        let targets = prior.targets(guide, &asked, 0)?;
         drop(asked);
         for (v, pixels) in chunk.iter().zip(targets) {
             out.push(View {
