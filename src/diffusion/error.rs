@@ -16,6 +16,9 @@ pub enum Error {
     /// Inputs of sizes the models cannot take (renders not a multiple of 8, wrong lengths).
     #[error("diffusion input: {0}")]
     Input(String),
+    /// The chosen prior cannot run as asked (no model directory, an unknown kind in scene.json).
+    #[error("{0}")]
+    Unavailable(String),
     /// The oracle was asked for something it has no reference for.
     #[error("oracle: {0}")]
     Oracle(String),

@@ -19,6 +19,7 @@ use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::{generate_object, subset, GenError, ObjectConfig};
 use crate::generate::prior::{OraclePrior, Prior, SdPrior};
+use crate::generate::prior_spec::PriorSpec;
 use crate::generate::progress::Progress;
 use crate::generate::scene::object_ply;
 use crate::generate::scene_stages::stage_fit;
@@ -74,29 +75,15 @@ pub(super) enum ScenePrior {
     Oracle(PathBuf),
 }
 
+/// The scene's prior as scene.json records it ([`PriorSpec::from_record`]).
 pub(super) fn scene_prior(state: &SceneState) -> Result<ScenePrior> {
-    let p = &state.scene.prior;
-    match p.kind.as_str() {
-        "shape" => Ok(ScenePrior::Shape),
-        "sd" => p
-            .models
-            .clone()
-            .or_else(|| std::env::var("DREAMSCENE_MODELS").ok())
-            .map(|m| ScenePrior::Sd(PathBuf::from(m)))
-            .ok_or_else(|| {
-                EditError::Bad(
-                    "the scene's prior is sd but no model directory is known (set DREAMSCENE_MODELS)"
-                        .into(),
-                )
-            }),
-        "oracle" => p
-            .models
-            .clone()
-            .map(|m| ScenePrior::Oracle(PathBuf::from(m)))
-            .ok_or_else(|| {
-                EditError::Bad("the scene's oracle prior names no reference directory".into())
-            }),
-        k => Err(EditError::Bad(format!("unknown prior kind `{k}` in scene.json"))),
+    let env = std::env::var("DREAMSCENE_MODELS").ok().map(PathBuf::from);
+    match PriorSpec::from_record(&state.scene.prior, env) {
+        Ok((PriorSpec::Sd, Some(m))) => Ok(ScenePrior::Sd(m)),
+        Ok((PriorSpec::Oracle(r), _)) => Ok(ScenePrior::Oracle(r)),
+        Ok(_) => Ok(ScenePrior::Shape),
+        Err(GenError::Prior(e)) => Err(EditError::Bad(e.to_string())),
+        Err(e) => Err(e.into()),
     }
 }
 

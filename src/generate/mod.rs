@@ -5,6 +5,7 @@ pub mod checkpoint;
 pub mod filter;
 pub mod object;
 pub mod prior;
+pub mod prior_spec;
 pub mod progress;
 pub mod scene;
 pub mod scene_stages;
