@@ -239,6 +239,23 @@ impl SdPrior {
     }
 }
 
+impl SdPrior {
+    /// The cached conditioning of a view's direction (the text encoder runs once a direction).
+    fn conditioning(&mut self, view: &PriorView) -> Result<String, GenError> {
+        let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
+        if !self.cache.contains_key(&pos) {
+            let edit = self
+                .edit
+                .as_ref()
+                .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
+            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref())
+                .map_err(Error::Run)?;
+            self.cache.insert(pos.clone(), c);
+        }
+        Ok(pos)
+    }
+}
+
 impl Prior for SdPrior {
     fn kind(&self) -> &'static str {
         "sd"
@@ -250,33 +267,58 @@ impl Prior for SdPrior {
         view: &PriorView,
         step: u32,
     ) -> Result<Vec<[f32; 3]>, GenError> {
-        let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
-        if !self.cache.contains_key(&pos) {
-            let edit = self
-                .edit
-                .as_ref()
-                .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
-            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref()).map_err(Error::Run)?;
-            self.cache.insert(pos.clone(), c);
+        Ok(self
+            .targets(guide, std::slice::from_ref(view), step)?
+            .remove(0))
+    }
+
+    /// One encode and one decode of the autoencoder for all views (the views of an iteration
+    /// share their size); the guidance per view in order, as view by view.
+    fn targets(
+        &mut self,
+        guide: &mut Guide,
+        views: &[PriorView],
+        step: u32,
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
+        let Some(first) = views.first() else {
+            return Ok(vec![]);
+        };
+        let (w, h) = (first.camera.width as usize, first.camera.height as usize);
+        if views
+            .iter()
+            .any(|v| (v.camera.width as usize, v.camera.height as usize) != (w, h))
+        {
+            return Err(Error::Input("the views of one batch differ in size".into()).into());
         }
-        let cond = &self.cache[&pos];
-        let (w, h) = (view.camera.width as usize, view.camera.height as usize);
-        let t = guide
-            .image_target(&mut self.sd, cond, &flat(view.render), w, h, step)
+        let keys = views
+            .iter()
+            .map(|v| self.conditioning(v))
+            .collect::<Result<Vec<_>, _>>()?;
+        let conds: Vec<&Conditioning> = keys.iter().map(|k| &self.cache[k]).collect();
+        let flats: Vec<Vec<f32>> = views.iter().map(|v| flat(v.render)).collect();
+        let renders: Vec<&[f32]> = flats.iter().map(Vec::as_slice).collect();
+        let targets = guide
+            .image_targets(&mut self.sd, &conds, &renders, w, h, step)
             .map_err(Error::Run)?;
-        if (t.width, t.height) != (w, h) {
-            return Err(Error::Input(format!(
-                "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
-                t.width, t.height
-            ))
-            .into());
-        }
-        let mut img = unflat(&t.image);
-        if is_pseudo_gt(guide) {
-            for p in &mut img {
-                *p = p.map(|v| v.clamp(0.0, 1.0));
-            }
-        }
-        Ok(img)
+        let clamp = is_pseudo_gt(guide);
+        targets
+            .into_iter()
+            .map(|t| {
+                if (t.width, t.height) != (w, h) {
+                    return Err(Error::Input(format!(
+                        "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
+                        t.width, t.height
+                    ))
+                    .into());
+                }
+                let mut img = unflat(&t.image);
+                if clamp {
+                    for p in &mut img {
+                        *p = p.map(|v| v.clamp(0.0, 1.0));
+                    }
+                }
+                Ok(img)
+            })
+            .collect()
     }
 }
