@@ -96,13 +96,14 @@ pub(super) fn open_sd(
     prompt: &str,
     edit: Option<&str>,
 ) -> Result<SdPrior> {
-    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default())
-        .map_err(|msg| {
+    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default()).map_err(
+        |msg| {
             GenError::Prior(crate::diffusion::Error::Model {
                 path: models.to_path_buf(),
                 msg,
             })
-        })?;
+        },
+    )?;
     Ok(SdPrior::new(sd, prompt, edit))
 }
 
@@ -294,8 +295,7 @@ pub fn local_environment(
             );
             Ok(())
         },
-    )
-    ?
+    )?
     .loss;
     progress.finish();
     let mut cloud = t.gaussians()?;
@@ -309,8 +309,7 @@ pub fn local_environment(
         cfg.seed ^ 0x3ec0,
     );
     let views: Vec<GuidedView> = cams.iter().map(local_view).collect();
-    let views =
-        pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH)?;
+    let views = pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH)?;
     let steps = RECON_PASSES * views.len() as u32;
     let fit = FitConfig {
         background: [1.0; 3],
@@ -318,9 +317,7 @@ pub fn local_environment(
     };
     let mut t = Trainer::new(ctx, &cloud, views, fit)?;
     t.trainable = Some(first..n);
-    let psnr = run_fit(&mut t, steps, 0, &mut |_, _, _| Ok(()))
-        ?
-        .map_or(0.0, |r| r.psnr);
+    let psnr = run_fit(&mut t, steps, 0, &mut |_, _, _| Ok(()))?.map_or(0.0, |r| r.psnr);
     cloud = t.gaussians()?;
     // Write the trained part back into the environment, in its order; the rest as it was.
     let trained = subset(&cloud, &(0..n).map(|i| i >= first).collect::<Vec<_>>());
@@ -439,8 +436,7 @@ pub fn add_object(
         ScenePrior::Sd(m) => {
             let mut p = open_sd(&m, &planned.description, None)?;
             let mut pr = Progress::new(0, true);
-            let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)
-                ?;
+            let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("sd prior, {object_iterations} iterations"))
         }
         ScenePrior::Oracle(dir) => {
@@ -456,8 +452,7 @@ pub fn add_object(
             let ctx = need(ctx)?;
             let mut p = OraclePrior::new(ctx, &reference, None)?;
             let mut pr = Progress::new(0, true);
-            let (g, _) =
-                generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
+            let (g, _) = generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("oracle prior, {object_iterations} iterations"))
         }
     };

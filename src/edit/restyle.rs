@@ -11,10 +11,10 @@ use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
 use crate::diffusion::guidance::{MtsRange, MtsSettings};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
+use crate::generate::object::GenError;
 use crate::generate::prior::{
     from_latent, to_latent, OraclePredictor, OraclePrior, Prior, PriorView,
 };
-use crate::generate::object::GenError;
 use crate::generate::progress::Progress;
 use crate::generate::stage::{run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
@@ -266,8 +266,7 @@ fn edit_object(
             progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
             Ok(())
         },
-    )
-    ?;
+    )?;
     progress.finish();
     Ok(t.gaussians()?)
 }

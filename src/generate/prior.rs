@@ -14,13 +14,13 @@
 //!   number: its fixed point is the reference.
 //!
 //! The `shape` prior has no targets (the object is its shape prior), so it is not a [`Prior`].
+use super::object::GenError;
 use crate::camera::Camera;
 use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor};
 use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
 use crate::diffusion::target::Guide;
 use crate::diffusion::Error;
-use super::object::GenError;
 use crate::gpu::Context;
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
@@ -150,7 +150,8 @@ impl OraclePrior {
             Some(f) => f,
             None => slot.insert(Frame::new(&self.ctx)?),
         };
-        self.raster.forward_into(&self.ctx, g, cam, bg, frame, true)?;
+        self.raster
+            .forward_into(&self.ctx, g, cam, bg, frame, true)?;
         Ok(frame.colour()?)
     }
 }
@@ -248,8 +249,8 @@ impl SdPrior {
                 .edit
                 .as_ref()
                 .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
-            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref())
-                .map_err(Error::Run)?;
+            let c =
+                Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref()).map_err(Error::Run)?;
             self.cache.insert(pos.clone(), c);
         }
         Ok(pos)

@@ -154,9 +154,8 @@ impl ScenePriors for OracleScenePriors {
     }
     fn for_object(&mut self, category: &str, _d: &str) -> Result<&mut dyn Prior, GenError> {
         let path = self.dir.join(object_ply(category));
-        let g = read_ply(&path).map_err(|e| {
-            GenError::Prior(Error::Oracle(format!("the oracle's reference: {e}")))
-        })?;
+        let g = read_ply(&path)
+            .map_err(|e| GenError::Prior(Error::Oracle(format!("the oracle's reference: {e}"))))?;
         self.current = Some(OraclePrior::new(&self.ctx, &g, None)?);
         Ok(self.current.as_mut().expect("just set"))
     }
