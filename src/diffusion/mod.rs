@@ -8,5 +8,6 @@ pub mod runtime;
 pub mod schedule;
 pub mod target;
 pub mod tokenizer;
+pub mod webgpu;
 
 pub use error::Error;
