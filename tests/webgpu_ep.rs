@@ -102,6 +102,7 @@ fn compare_providers() {
             let enc = sd.encode(&f("image"), 1, (32, 32), Codec::Vae).unwrap().0;
             results.push([emb[0].data.clone(), unet, dec, enc]);
         }
+        let mut differs = false;
         for (k, name) in ["text encoder", "unet", "vae decoder", "vae encoder"]
             .iter()
             .enumerate()
@@ -109,6 +110,12 @@ fn compare_providers() {
             let e = max_rel(&results[1][k], &results[0][k]);
             eprintln!("{variant} {name}: webgpu vs cpu {e:.1e}");
             assert!(e < tol, "{variant} {name}: {e} (tolerance {tol})");
+            differs |= e > 0.0;
         }
+        // Bit-identical outputs everywhere would mean the sessions fell back to the CPU.
+        assert!(
+            differs,
+            "{variant}: the WebGPU sessions ran on the CPU provider"
+        );
     }
 }
