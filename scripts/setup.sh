@@ -51,6 +51,58 @@ PY
 fi
 test -f "$ORT_DIR/libonnxruntime.so.$ORT_VERSION" || { echo "ONNX Runtime library missing in $ORT_DIR" >&2; exit 1; }
 
+# ONNX Runtime's WebGPU execution provider (a plugin library on Dawn, Vulkan on Linux; `--provider
+# webgpu`), from the PyPI wheel `onnxruntime-ep-webgpu`, beside libonnxruntime.
+WEBGPU_EP_VERSION=0.4.0
+if [ ! -f "$ORT_DIR/libonnxruntime_providers_webgpu.so" ]; then
+  echo "installing the WebGPU execution provider $WEBGPU_EP_VERSION into $ORT_DIR"
+  tmp="$(mktemp -d)"
+  python3 -m pip download --quiet --no-deps --only-binary=:all: \
+    "onnxruntime-ep-webgpu==$WEBGPU_EP_VERSION" -d "$tmp"
+  python3 - "$tmp" "$ORT_DIR" <<'PY'
+import glob, os, sys, zipfile
+tmp, out = sys.argv[1:]
+wheel = glob.glob(os.path.join(tmp, "onnxruntime_ep_webgpu-*.whl"))[0]
+with zipfile.ZipFile(wheel) as z:
+    for name in z.namelist():
+        if os.path.basename(name) == "libonnxruntime_providers_webgpu.so":
+            with open(os.path.join(out, "libonnxruntime_providers_webgpu.so"), "wb") as f:
+                f.write(z.read(name))
+PY
+  rm -rf "$tmp"
+fi
+
+# Mesa 25's lavapipe for the WebGPU EP's tests (Dawn rejects Debian 12's Mesa 22.3 lavapipe: no
+# dynamic indexing of descriptor arrays). Fetched from bookworm-backports with a private apt state
+# and extracted, so the system's driver (which the kernels' tests use) and apt sources stay as
+# they are; only processes that source $MESA_DIR/env.sh see it.
+MESA_DIR="${XDG_DATA_HOME:-$HOME/.local/share}/dreamscene/mesa25"
+if [ ! -f "$MESA_DIR/env.sh" ] && grep -qs 'VERSION_CODENAME=bookworm' /etc/os-release; then
+  echo "installing Mesa 25 lavapipe (bookworm-backports) privately into $MESA_DIR"
+  A="$MESA_DIR/apt"
+  mkdir -p "$A/lists/partial" "$A/cache/archives/partial" "$A/etc/preferences.d" "$MESA_DIR/debs"
+  MIRROR=$(awk '/^URIs:/{print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null)
+  echo "deb ${MIRROR:-http://deb.debian.org/debian} bookworm-backports main" > "$A/etc/sources.list"
+  O=(-o "Dir::Etc::SourceList=$A/etc/sources.list" -o Dir::Etc::SourceParts=/dev/null
+     -o "Dir::State::Lists=$A/lists" -o "Dir::Cache=$A/cache"
+     -o Dir::Etc::Preferences=/dev/null -o "Dir::Etc::PreferencesParts=$A/etc/preferences.d")
+  apt-get "${O[@]}" update -qq
+  (cd "$MESA_DIR/debs" && apt-get "${O[@]}" download -qq mesa-vulkan-drivers/bookworm-backports \
+    libdrm2/bookworm-backports libdrm-amdgpu1/bookworm-backports)
+  for f in "$MESA_DIR"/debs/*.deb; do dpkg-deb -x "$f" "$MESA_DIR/root"; done
+  L="$MESA_DIR/root/usr/lib/x86_64-linux-gnu"
+  sed "s#\"libvulkan_lvp.so\"#\"$L/libvulkan_lvp.so\"#" \
+    "$MESA_DIR/root/usr/share/vulkan/icd.d/lvp_icd.json" > "$MESA_DIR/lvp_icd.json"
+  mkdir -p "$MESA_DIR/xdg" && chmod 700 "$MESA_DIR/xdg"
+  cat > "$MESA_DIR/env.sh" <<EOT
+export VK_DRIVER_FILES=$MESA_DIR/lvp_icd.json
+export VK_ICD_FILENAMES=$MESA_DIR/lvp_icd.json
+export LD_LIBRARY_PATH=$L
+export XDG_RUNTIME_DIR=$MESA_DIR/xdg
+EOT
+  rm -rf "$A" "$MESA_DIR/debs"
+fi
+
 # The browser viewer's npm packages (Spark and three.js; playwright-core for the browser test),
 # exactly as viewer/package-lock.json names them.
 VIEWER_DIR="$(cd "$(dirname "$0")/.." && pwd)/viewer"

@@ -428,7 +428,6 @@ pub fn bench_generate(
     runs: usize,
 ) -> std::result::Result<GenerateFigures, crate::generate::object::GenError> {
     use crate::camera::object::{ObjectFrame, OrbitRanges};
-    use crate::generate::object::GenError;
     use crate::generate::object::{
         formation_guide, formation_iteration, formation_trainer, ObjectConfig,
     };
@@ -444,7 +443,7 @@ pub fn bench_generate(
         ..ObjectConfig::default()
     };
     let reference = object_cloud(&frame, n, 11);
-    let mut prior = OraclePrior::new(ctx, &reference, None).map_err(GenError::Prior)?;
+    let mut prior = OraclePrior::new(ctx, &reference, None)?;
     let mut t = formation_trainer(ctx, &object_cloud(&frame, n, 12), &frame, &cfg)?;
     t.set_timed(true);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(13);
@@ -483,7 +482,7 @@ pub fn bench_scene_stage(
     use crate::diffusion::guidance::{MtsSettings, SCENE_ENVIRONMENT};
     use crate::diffusion::model::Codec;
     use crate::diffusion::target::{Guide, Rule};
-    use crate::generate::object::{guided_iteration, GenError};
+    use crate::generate::object::guided_iteration;
     use crate::generate::prior::OraclePrior;
     use crate::generate::scene_stages::{stage_fit, stage_views};
     use crate::splat::train::Trainer;
@@ -497,7 +496,7 @@ pub fn bench_scene_stage(
         // storage-binding limit.
         Gaussians::random(&mut rng, n, lo, hi, scale, 0)
     };
-    let mut prior = OraclePrior::new(ctx, &cloud(21), None).map_err(GenError::Prior)?;
+    let mut prior = OraclePrior::new(ctx, &cloud(21), None)?;
     let mut t = Trainer::guided(ctx, &cloud(22), stage_fit(1000, 0), 1.0)?;
     t.set_timed(true);
     let scene = SceneBox {

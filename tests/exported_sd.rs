@@ -100,3 +100,49 @@ fn exporter_output_loads_and_matches_pytorch_in_fp32_and_fp16() {
         );
     }
 }
+
+/// The batched prior (one autoencoder encode and decode for all views of an iteration) gives
+/// each view the target the per-view prior gives it: same noise, same timesteps, same image.
+#[test]
+fn batched_image_targets_equal_the_per_view_targets() {
+    use dreamscene::diffusion::guidance::{MtsSettings, OBJECT_MTS};
+    use dreamscene::diffusion::model::Conditioning;
+    use dreamscene::diffusion::target::{Guide, Rule};
+    use rand::{Rng, SeedableRng};
+    let opts = ModelOptions {
+        threads: Some(1),
+        ..Default::default()
+    };
+    let mut sd = StableDiffusion::open(&dir().join("fp32"), &opts).unwrap();
+    let front = Conditioning::new(&mut sd, "a red chair, front view", "blurry", None).unwrap();
+    let back = Conditioning::new(&mut sd, "a red chair, back view", "blurry", None).unwrap();
+    let conds = [&front, &back, &front];
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+    let renders: Vec<Vec<f32>> = (0..3)
+        .map(|_| (0..32 * 32 * 3).map(|_| rng.gen::<f32>()).collect())
+        .collect();
+    let refs: Vec<&[f32]> = renders.iter().map(Vec::as_slice).collect();
+    for rule in [Rule::Mts { m: 4 }, Rule::PseudoGt] {
+        let guide = || Guide::new(rule, OBJECT_MTS, MtsSettings::default(), Codec::Vae, 7);
+        let mut one = guide();
+        let per: Vec<_> = refs
+            .iter()
+            .zip(conds)
+            .map(|(r, c)| one.image_target(&mut sd, c, r, 32, 32, 10).unwrap())
+            .collect();
+        let mut all = guide();
+        let batched = all
+            .image_targets(&mut sd, &conds, &refs, 32, 32, 10)
+            .unwrap();
+        assert_eq!(batched.len(), 3);
+        assert_eq!(one.rng_position(), all.rng_position(), "{rule:?}");
+        for (i, (a, b)) in per.iter().zip(&batched).enumerate() {
+            assert_eq!(a.timesteps, b.timesteps, "{rule:?} view {i}");
+            // The autoencoder over a batch of 3 against 3 batches of 1: float rounding only.
+            let e = rel_err(&b.image, &a.image, "batched target");
+            assert!(e < 1e-5, "{rule:?} view {i}: relative error {e}");
+        }
+        // The views differ, so a batch that mixed them up could not pass.
+        assert!(rel_err(&per[0].image, &per[1].image, "views") > 1e-3);
+    }
+}

@@ -212,15 +212,9 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         a.seed,
         &spec,
         &layout,
-        dreamscene::scene::dir::Prior {
-            kind: match &a.prior {
-                PriorChoice::Oracle(_) => "oracle".into(),
-                _ => "sd".into(),
-            },
-            models: match &a.prior {
-                PriorChoice::Oracle(d) => Some(d.display().to_string()),
-                _ => models.map(|m| m.display().to_string()),
-            },
+        match &a.prior {
+            PriorChoice::Oracle(_) => a.prior.record(None),
+            _ => PriorChoice::Sd.record(models),
         },
     );
     for name in ["floor", "reconstruction"] {

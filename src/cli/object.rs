@@ -19,27 +19,11 @@ use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use dreamscene::splat::Gaussians;
 use std::path::{Path, PathBuf};
 
-/// Which prior, as `--prior` names it.
-#[derive(Debug, Clone, PartialEq)]
-pub enum PriorChoice {
-    Auto,
-    Sd,
-    Shape,
-    Oracle(PathBuf),
-}
+/// Which prior, as `--prior` names it (the library's [`PriorSpec`]).
+pub use dreamscene::generate::prior_spec::PriorSpec as PriorChoice;
 
 pub fn parse_prior(s: &str) -> Result<PriorChoice, String> {
-    match s {
-        "auto" => Ok(PriorChoice::Auto),
-        "sd" => Ok(PriorChoice::Sd),
-        "shape" => Ok(PriorChoice::Shape),
-        _ => match s.strip_prefix("oracle:") {
-            Some(p) if !p.is_empty() => Ok(PriorChoice::Oracle(PathBuf::from(p))),
-            _ => Err(format!(
-                "'{s}': expected auto, sd, shape or oracle:FILE (a reference PLY)"
-            )),
-        },
-    }
+    PriorChoice::parse(s)
 }
 
 /// The guidance rule of the formation stage by name.

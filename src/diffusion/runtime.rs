@@ -21,6 +21,8 @@ pub enum Provider {
     Cpu,
     /// CUDA (needs a library built with it, e.g. from the `onnxruntime-gpu` wheel).
     Cuda,
+    /// WebGPU on Vulkan (the `onnxruntime-ep-webgpu` plugin library beside ONNX Runtime).
+    Webgpu,
 }
 
 /// Where the library may be, in search order, each with how it was found.
@@ -181,6 +183,13 @@ pub fn check_provider(p: Provider) -> Result<(), String> {
 fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, String> {
     match p {
         Provider::Cpu => Ok(vec![ort::ep::CPU::default().build()]),
+        Provider::Webgpu => {
+            // Reached through its devices (OnnxModel::load), not appended by name.
+            let l = loaded()?;
+            super::webgpu::register(&l.env, &l.library)?;
+            super::webgpu::devices(&l.env)?;
+            Ok(vec![])
+        }
         Provider::Cuda => {
             if !ort::ep::CUDA::is_available().unwrap_or(false) {
                 return Err(format!(
@@ -277,9 +286,19 @@ impl OnnxModel {
         }
         let env = &loaded()?.env;
         let eps = provider_dispatch(provider)?;
-        let mut b = Session::builder(env)
-            .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
-            .map_err(|e| format!("{shown}: {e}"))?;
+        let mut b = if provider == Provider::Webgpu {
+            let devs = super::webgpu::devices(env)?;
+            Session::builder(env)
+                .and_then(|b| {
+                    b.with_devices(devs, Some(&super::webgpu::options()))
+                        .map_err(|e| e.into())
+                })
+                .map_err(|e| format!("{shown}: {e}"))?
+        } else {
+            Session::builder(env)
+                .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
+                .map_err(|e| format!("{shown}: {e}"))?
+        };
         if let Some(n) = threads {
             b = b
                 .with_intra_threads(n)

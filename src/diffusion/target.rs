@@ -198,6 +198,69 @@ impl Guide {
     }
 }
 
+impl Guide {
+    /// The image targets of all views of an iteration (each `h × w × 3` in [0, 1], view `i`
+    /// under `conds[i]`): one autoencoder encode of the whole batch, the guidance of each view
+    /// in order (the same noise and timesteps as [`Guide::image_target`] view by view), one
+    /// decode of the whole batch.
+    pub fn image_targets(
+        &mut self,
+        sd: &mut StableDiffusion,
+        conds: &[&Conditioning],
+        renders: &[&[f32]],
+        width: usize,
+        height: usize,
+        step: u32,
+    ) -> Result<Vec<ImageTarget>, String> {
+        let n = renders.len();
+        if n == 0 {
+            return Ok(vec![]);
+        }
+        if conds.len() != n {
+            return Err(format!("{n} renders and {} conditionings", conds.len()));
+        }
+        let mut x = Vec::with_capacity(n * width * height * 3);
+        for r in renders {
+            if r.len() != width * height * 3 {
+                return Err(format!(
+                    "render has {} values, expected {width}×{height}×3",
+                    r.len()
+                ));
+            }
+            x.extend(hwc01_to_chw11(r, width, height));
+        }
+        let (z, hw) = sd.encode(&x, n, (height, width), self.codec)?;
+        let per = z.len() / n;
+        let sched = sd.schedule.clone();
+        let mut guided = Vec::with_capacity(z.len());
+        let mut meta = Vec::with_capacity(n);
+        for (zi, cond) in z.chunks_exact(per).zip(conds) {
+            let mut p = UnetPredictor {
+                sd,
+                cond,
+                hw,
+                runs: 0,
+            };
+            let (zt, timesteps, latent_rms) = self.latent_target(&mut p, &sched, zi, step)?;
+            guided.extend(zt);
+            meta.push((timesteps, latent_rms));
+        }
+        let (img, (h, w)) = sd.decode(&guided, n, hw, self.codec)?;
+        let per = img.len() / n;
+        Ok(img
+            .chunks_exact(per)
+            .zip(meta)
+            .map(|(im, (timesteps, latent_rms))| ImageTarget {
+                image: chw11_to_hwc01(im, w, h),
+                width: w,
+                height: h,
+                timesteps,
+                latent_rms,
+            })
+            .collect())
+    }
+}
+
 /// ½ w Σ (x − x̃)² and its gradient w (x − x̃) with respect to the render.
 pub fn target_loss(render: &[f32], target: &[f32], weight: f32) -> (f64, Vec<f32>) {
     let mut loss = 0.0f64;

@@ -33,6 +33,9 @@ pub enum EditError {
     Ply(#[from] crate::splat::ply::PlyError),
     #[error("GPU: {0}")]
     Gpu(String),
+    /// The generator (its prior, its GPU work or its checkpoints) failed.
+    #[error(transparent)]
+    Gen(#[from] crate::generate::object::GenError),
 }
 
 impl From<crate::gpu::GpuError> for EditError {

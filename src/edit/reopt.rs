@@ -17,21 +17,23 @@ use crate::camera::Camera;
 use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::generate::object::{
-    generate_object, guided_iteration, subset, GuidedView, ObjectConfig,
-};
-use crate::generate::prior::{OraclePrior, Prior, PriorView, SdPrior};
+use crate::generate::object::{generate_object, subset, GenError, ObjectConfig};
+use crate::generate::prior::{OraclePrior, Prior, SdPrior};
+use crate::generate::prior_spec::PriorSpec;
 use crate::generate::progress::Progress;
 use crate::generate::scene::object_ply;
 use crate::generate::scene_stages::stage_fit;
+use crate::generate::stage::{pseudo_ground_truth, run_fit, run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
 use crate::plan::check::Box2;
 use crate::plan::spec::Anchor;
 use crate::scene::compose::{merge, pad_sh, place};
 use crate::scene::dir::SceneObject;
 use crate::shape::{self, ShapeOptions};
-use crate::splat::train::{FitConfig, Trainer, View};
+use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 use serde_json::json;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -73,29 +75,15 @@ pub(super) enum ScenePrior {
     Oracle(PathBuf),
 }
 
+/// The scene's prior as scene.json records it ([`PriorSpec::from_record`]).
 pub(super) fn scene_prior(state: &SceneState) -> Result<ScenePrior> {
-    let p = &state.scene.prior;
-    match p.kind.as_str() {
-        "shape" => Ok(ScenePrior::Shape),
-        "sd" => p
-            .models
-            .clone()
-            .or_else(|| std::env::var("DREAMSCENE_MODELS").ok())
-            .map(|m| ScenePrior::Sd(PathBuf::from(m)))
-            .ok_or_else(|| {
-                EditError::Bad(
-                    "the scene's prior is sd but no model directory is known (set DREAMSCENE_MODELS)"
-                        .into(),
-                )
-            }),
-        "oracle" => p
-            .models
-            .clone()
-            .map(|m| ScenePrior::Oracle(PathBuf::from(m)))
-            .ok_or_else(|| {
-                EditError::Bad("the scene's oracle prior names no reference directory".into())
-            }),
-        k => Err(EditError::Bad(format!("unknown prior kind `{k}` in scene.json"))),
+    let env = std::env::var("DREAMSCENE_MODELS").ok().map(PathBuf::from);
+    match PriorSpec::from_record(&state.scene.prior, env) {
+        Ok((PriorSpec::Sd, Some(m))) => Ok(ScenePrior::Sd(m)),
+        Ok((PriorSpec::Oracle(r), _)) => Ok(ScenePrior::Oracle(r)),
+        Ok(_) => Ok(ScenePrior::Shape),
+        Err(GenError::Prior(e)) => Err(EditError::Bad(e.to_string())),
+        Err(e) => Err(e.into()),
     }
 }
 
@@ -103,17 +91,19 @@ pub(super) fn need(ctx: Option<&Context>) -> Result<&Context> {
     ctx.ok_or_else(|| EditError::Gpu("this edit needs a Vulkan device".into()))
 }
 
-pub(super) fn gen(e: crate::generate::object::GenError) -> EditError {
-    EditError::Gpu(e.to_string())
-}
-
 pub(super) fn open_sd(
     models: &std::path::Path,
     prompt: &str,
     edit: Option<&str>,
 ) -> Result<SdPrior> {
-    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default())
-        .map_err(EditError::Bad)?;
+    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default()).map_err(
+        |msg| {
+            GenError::Prior(crate::diffusion::Error::Model {
+                path: models.to_path_buf(),
+                msg,
+            })
+        },
+    )?;
     Ok(SdPrior::new(sd, prompt, edit))
 }
 
@@ -254,7 +244,7 @@ pub fn local_environment(
     let mut prior: Box<dyn Prior> = match &prior {
         ScenePrior::Oracle(dir) => {
             let world = oracle_world(state, dir, edit)?;
-            Box::new(OraclePrior::new(ctx, &world, None).map_err(EditError::Gpu)?)
+            Box::new(OraclePrior::new(ctx, &world, None)?)
         }
         ScenePrior::Sd(m) => Box::new(open_sd(m, &text, None)?),
         ScenePrior::Shape => unreachable!("returned above"),
@@ -271,27 +261,42 @@ pub fn local_environment(
         cfg.seed ^ 0x10ca1,
     );
     let mut t = Trainer::guided(ctx, &cloud, local_fit(iters.max(1), cfg.seed), 1.0)?;
-    t.trainable = Some(first..n);
     let mut progress = Progress::new(iters as u64, false);
-    let mut loss = 0.0;
-    while t.iteration() < iters {
-        let step = t.iteration() as usize;
-        let views: Vec<GuidedView> = (0..BATCH)
-            .map(|b| GuidedView {
-                camera: cams[(step * BATCH + b) % cams.len()].clone(),
-                background: [1.0; 3],
-                azimuth: 0.0,
-                elevation: -30.0,
-            })
-            .collect();
-        loss = guided_iteration(&mut t, prior.as_mut(), &mut guide, &views, Some(first..n))
-            .map_err(gen)?
-            .loss;
-        progress.update(
-            t.iteration() as u64,
-            &format!("local environment loss {loss:.5}"),
-        );
-    }
+    let local_view = |camera: &Camera| GuidedView {
+        camera: camera.clone(),
+        background: [1.0; 3],
+        azimuth: 0.0,
+        elevation: -30.0,
+    };
+    let mut views = |step: u32, _: &mut ChaCha8Rng| {
+        (0..BATCH)
+            .map(|b| local_view(&cams[(step as usize * BATCH + b) % cams.len()]))
+            .collect()
+    };
+    let mut stage = GuidedStage {
+        iterations: iters,
+        trainable: Some(first..n),
+        sh: None,
+        checkpoint_every: 0,
+        views: &mut views,
+    };
+    // The views are fixed: the stage's generator is never drawn from.
+    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
+    let loss = run_guided(
+        &mut stage,
+        &mut t,
+        prior.as_mut(),
+        &mut guide,
+        &mut rng,
+        &mut |t, r, _, _, _| {
+            progress.update(
+                t.iteration() as u64,
+                &format!("local environment loss {:.5}", r.loss),
+            );
+            Ok(())
+        },
+    )?
+    .loss;
     progress.finish();
     let mut cloud = t.gaussians()?;
     drop(t);
@@ -303,29 +308,8 @@ pub fn local_environment(
         Codec::Fast,
         cfg.seed ^ 0x3ec0,
     );
-    let mut maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
-    let mut views = vec![];
-    for cam in &cams {
-        let bv = maker.render_view(cam, [1.0; 3])?;
-        let target = prior
-            .target(
-                &mut pg,
-                &PriorView {
-                    camera: cam,
-                    render: &bv.color,
-                    background: [1.0; 3],
-                    azimuth: 0.0,
-                    elevation: -30.0,
-                },
-                0,
-            )
-            .map_err(EditError::Gpu)?;
-        views.push(View {
-            camera: cam.clone(),
-            pixels: target,
-        });
-    }
-    drop(maker);
+    let views: Vec<GuidedView> = cams.iter().map(local_view).collect();
+    let views = pseudo_ground_truth(ctx, &cloud, prior.as_mut(), &mut pg, &views, BATCH)?;
     let steps = RECON_PASSES * views.len() as u32;
     let fit = FitConfig {
         background: [1.0; 3],
@@ -333,10 +317,7 @@ pub fn local_environment(
     };
     let mut t = Trainer::new(ctx, &cloud, views, fit)?;
     t.trainable = Some(first..n);
-    let mut psnr = 0.0;
-    while t.iteration() < steps {
-        psnr = t.step()?.psnr;
-    }
+    let psnr = run_fit(&mut t, steps, 0, &mut |_, _, _| Ok(()))?.map_or(0.0, |r| r.psnr);
     cloud = t.gaussians()?;
     // Write the trained part back into the environment, in its order; the rest as it was.
     let trained = subset(&cloud, &(0..n).map(|i| i >= first).collect::<Vec<_>>());
@@ -455,8 +436,7 @@ pub fn add_object(
         ScenePrior::Sd(m) => {
             let mut p = open_sd(&m, &planned.description, None)?;
             let mut pr = Progress::new(0, true);
-            let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)
-                .map_err(gen)?;
+            let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("sd prior, {object_iterations} iterations"))
         }
         ScenePrior::Oracle(dir) => {
@@ -470,10 +450,9 @@ pub fn add_object(
             }
             let reference = crate::splat::ply::read_ply(&r)?;
             let ctx = need(ctx)?;
-            let mut p = OraclePrior::new(ctx, &reference, None).map_err(EditError::Gpu)?;
+            let mut p = OraclePrior::new(ctx, &reference, None)?;
             let mut pr = Progress::new(0, true);
-            let (g, _) =
-                generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr).map_err(gen)?;
+            let (g, _) = generate_object(ctx, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("oracle prior, {object_iterations} iterations"))
         }
     };

@@ -4,18 +4,19 @@
 //! frame; the rest of the scene is not touched. With a draft's shape prior the part is
 //! recoloured from the description's colour and material words, geometry kept, and it says so.
 use super::commit::Edit;
-use super::reopt::{gen, need, open_sd, scene_prior, ReoptConfig, ScenePrior, BATCH, FLOOR_Z};
+use super::reopt::{need, open_sd, scene_prior, ReoptConfig, ScenePrior, BATCH, FLOOR_Z};
 use super::state::SceneState;
 use super::{EditError, Result};
 use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
 use crate::diffusion::guidance::{MtsRange, MtsSettings};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::generate::object::{guided_iteration, GuidedView};
+use crate::generate::object::GenError;
 use crate::generate::prior::{
     from_latent, to_latent, OraclePredictor, OraclePrior, Prior, PriorView,
 };
 use crate::generate::progress::Progress;
+use crate::generate::stage::{run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
 use crate::scene::dir::SceneObject;
 use crate::shape::{self, ShapeOptions};
@@ -68,7 +69,7 @@ impl Prior for EditOracle {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> std::result::Result<Vec<[f32; 3]>, String> {
+    ) -> std::result::Result<Vec<[f32; 3]>, GenError> {
         // The oracle's editing rule: ε(y) points at the current render and ε(y_edit) at the
         // second reference, so the edit stops exactly there.
         let target = to_latent(&self.inner.reference_view(view.camera, view.background)?);
@@ -78,7 +79,9 @@ impl Prior for EditOracle {
             reference: &current,
             edit: Some(&target),
         };
-        let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &current, step)?;
+        let (zt, _, _) = guide
+            .latent_target(&mut p, &self.sched, &current, step)
+            .map_err(crate::diffusion::Error::Run)?;
         Ok(from_latent(&zt, false))
     }
 }
@@ -129,7 +132,7 @@ pub fn restyle(
                             })?;
                             let g = crate::splat::ply::read_ply(r)?;
                             Box::new(EditOracle {
-                                inner: OraclePrior::new(ctx, &g, None).map_err(EditError::Gpu)?,
+                                inner: OraclePrior::new(ctx, &g, None)?,
                                 sched: crate::diffusion::schedule::Schedule::new(
                                     crate::diffusion::schedule::SchedulerConfig::sd21_base(),
                                 )
@@ -235,21 +238,35 @@ fn edit_object(
     let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ 0x7e57);
     let ranges = OrbitRanges::default();
     let mut progress = Progress::new(cfg.iterations as u64, false);
-    while t.iteration() < cfg.iterations {
-        let step = t.iteration();
-        let views: Vec<GuidedView> =
-            random_views(&frame, &ranges, step, BATCH, cfg.resolution, &mut rng)
-                .into_iter()
-                .map(|v| GuidedView {
-                    camera: v.camera,
-                    background: [1.0; 3],
-                    azimuth: v.azimuth,
-                    elevation: v.elevation,
-                })
-                .collect();
-        let r = guided_iteration(&mut t, prior, &mut guide, &views, None).map_err(gen)?;
-        progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
-    }
+    let mut views = |step: u32, rng: &mut ChaCha8Rng| {
+        random_views(&frame, &ranges, step, BATCH, cfg.resolution, rng)
+            .into_iter()
+            .map(|v| GuidedView {
+                camera: v.camera,
+                background: [1.0; 3],
+                azimuth: v.azimuth,
+                elevation: v.elevation,
+            })
+            .collect()
+    };
+    let mut stage = GuidedStage {
+        iterations: cfg.iterations,
+        trainable: None,
+        sh: None,
+        checkpoint_every: 0,
+        views: &mut views,
+    };
+    run_guided(
+        &mut stage,
+        &mut t,
+        prior,
+        &mut guide,
+        &mut rng,
+        &mut |t, r, _, _, _| {
+            progress.update(t.iteration() as u64, &format!("restyle loss {:.5}", r.loss));
+            Ok(())
+        },
+    )?;
     progress.finish();
     Ok(t.gaussians()?)
 }

@@ -2,7 +2,8 @@
 //! state beside it (iteration, Adam moments, the trainer's generator), and `run.json` with the
 //! stage, the positions of the run's random generators and the Gaussian counts. Each checkpoint
 //! writes new numbered files first and `run.json` last (atomically), then removes the old files,
-//! so a kill at any moment leaves a complete checkpoint: the last one `run.json` names.
+//! so a kill at any moment leaves a complete checkpoint: the last one `run.json` names. The scene
+//! stages write the same files ([`write_trainer`]) under their own cursor, `scene_run.json`.
 use super::object::{Checkpoints, Counts, GenError};
 use crate::splat::ply::{read_ply, write_ply};
 use crate::splat::train::Trainer;
@@ -52,6 +53,42 @@ pub struct RunState {
 }
 
 const RUN: &str = "run.json";
+
+/// Writes a stage checkpoint of `t` into `dir`: the cloud as `<stage>_<iteration>.ply` and the
+/// optimiser state (iteration, Adam moments, the trainer's generator) beside it as `.state`.
+/// Returns the PLY's name, which the caller's cursor records once both files are written.
+pub fn write_trainer(dir: &Path, stage: &str, t: &Trainer) -> Result<String, GenError> {
+    std::fs::create_dir_all(dir).map_err(|err| GenError::Io {
+        path: dir.to_path_buf(),
+        err,
+    })?;
+    let name = format!("{stage}_{:06}.ply", t.iteration());
+    let path = dir.join(&name);
+    let g = t.gaussians()?;
+    write_ply(&path, &g).map_err(|err| GenError::Io {
+        path: path.clone(),
+        err,
+    })?;
+    let state = dir.join(format!("{name}.state"));
+    t.save_state(&state)
+        .map_err(|err| GenError::Io { path: state, err })?;
+    Ok(name)
+}
+
+/// Restores into `t` the optimiser state a [`write_trainer`] checkpoint named `name` holds.
+pub fn restore_trainer(dir: &Path, name: &str, t: &mut Trainer) -> Result<(), GenError> {
+    t.restore(&dir.join(format!("{name}.state"))).map_err(ck)
+}
+
+/// Removes the checkpoint files of `old` once the cursor names `keep` instead.
+pub fn remove_old(dir: &Path, old: Option<String>, keep: Option<&str>) {
+    if let Some(o) = old {
+        if Some(o.as_str()) != keep {
+            let _ = std::fs::remove_file(dir.join(&o));
+            let _ = std::fs::remove_file(dir.join(format!("{o}.state")));
+        }
+    }
+}
 
 fn ck(msg: String) -> GenError {
     GenError::Checkpoint(msg)
@@ -123,8 +160,8 @@ impl RunState {
         let name = self
             .ply
             .as_ref()
-            .expect("a stage checkpoint names its cloud");
-        t.restore(&dir.join(format!("{name}.state"))).map_err(ck)
+            .ok_or_else(|| ck(format!("{}: the checkpoint names no cloud", dir.display())))?;
+        restore_trainer(dir, name, t)
     }
 
     fn commit(&mut self, c: &Checkpoints, new_ply: Option<String>) -> Result<(), GenError> {
@@ -136,33 +173,12 @@ impl RunState {
             path: path.clone(),
             err,
         })?;
-        if let Some(o) = old {
-            if Some(&o) != self.ply.as_ref() {
-                let _ = std::fs::remove_file(c.dir.join(&o));
-                let _ = std::fs::remove_file(c.dir.join(format!("{o}.state")));
-            }
-        }
+        remove_old(c.dir, old, self.ply.as_deref());
         Ok(())
     }
 
     fn write_stage(&mut self, c: &Checkpoints, t: &Trainer, prefix: &str) -> Result<(), GenError> {
-        std::fs::create_dir_all(c.dir).map_err(|err| GenError::Io {
-            path: c.dir.to_path_buf(),
-            err,
-        })?;
-        let name = format!("{prefix}_{:06}.ply", t.iteration());
-        let path = c.dir.join(&name);
-        let g = t.gaussians()?;
-        let io = |err| GenError::Io {
-            path: path.clone(),
-            err,
-        };
-        write_ply(&path, &g).map_err(io)?;
-        t.save_state(&c.dir.join(format!("{name}.state")))
-            .map_err(|err| GenError::Io {
-                path: path.clone(),
-                err,
-            })?;
+        let name = write_trainer(c.dir, prefix, t)?;
         self.iteration = t.iteration();
         self.commit(c, Some(name))
     }

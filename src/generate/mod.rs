@@ -6,6 +6,8 @@ pub mod filter;
 pub mod object;
 pub mod object_shard;
 pub mod prior;
+pub mod prior_spec;
 pub mod progress;
 pub mod scene;
 pub mod scene_stages;
+pub mod stage;

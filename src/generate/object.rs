@@ -7,15 +7,19 @@
 //! Checkpoints hold everything needed to continue exactly (see [`super::checkpoint`]).
 use super::checkpoint::{RunState, Stage};
 use super::filter::{self, FilterConfig};
-use super::prior::{Prior, PriorView};
+use super::prior::Prior;
 use super::progress::Progress;
+pub use super::stage::{guided_iteration, image_loss, GuidedView, IterationReport};
+use super::stage::{
+    pseudo_ground_truth, run_fit, run_guided, stage_iteration, GuidedStage, ShSchedule, ViewSource,
+};
 use crate::camera::object::{random_views, ring_views, sphere_views, ObjectFrame, OrbitRanges};
 use crate::diffusion::guidance::{MtsRange, MtsRule, MtsSettings, OBJECT_MTS, OBJECT_RECON};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
-use crate::gpu::{Context, Timings};
+use crate::gpu::Context;
 use crate::splat::score::ScoreRule;
-use crate::splat::train::{FitConfig, Trainer, View};
+use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -130,7 +134,7 @@ pub enum GenError {
     #[error(transparent)]
     Gpu(#[from] crate::gpu::GpuError),
     #[error("prior: {0}")]
-    Prior(String),
+    Prior(#[from] crate::diffusion::Error),
     #[error("{0}")]
     Checkpoint(String),
     #[error("{path}: {err}")]
@@ -285,38 +289,31 @@ pub fn generate_object(
             }
         };
         let ranges = OrbitRanges::default();
-        while t.iteration() < cfg.iterations {
-            let r = formation_iteration(
-                &mut t,
-                prior,
-                &mut form_guide,
-                &mut rng,
-                frame,
-                &ranges,
-                cfg,
-            )?;
-            let all = r.seconds;
-            split[0] += r.apply_seconds;
-            split[1] += r.prior_seconds;
-            split[2] += all - r.apply_seconds - r.prior_seconds;
-            let loss = r.loss;
-            stage_seconds[0] += all;
-            progress.update(
-                t.iteration() as u64,
-                &format!("formation loss {loss:.5} gaussians {}", t.len()),
-            );
-            let it = t.iteration();
-            if let Some(c) = ckpt {
-                if cfg.checkpoint_every > 0 && it % cfg.checkpoint_every == 0 && it < cfg.iterations
-                {
+        let mut views = formation_views(frame, &ranges, cfg);
+        let mut stage = formation_stage(cfg, &mut views);
+        let totals = run_guided(
+            &mut stage,
+            &mut t,
+            prior,
+            &mut form_guide,
+            &mut rng,
+            &mut |t, r, guide, rng, due| {
+                stage_seconds[0] += r.seconds;
+                progress.update(
+                    t.iteration() as u64,
+                    &format!("formation loss {:.5} gaussians {}", r.loss, t.len()),
+                );
+                if let (Some(c), true) = (ckpt, due) {
                     run.rng = rng.get_word_pos();
-                    run.guide = form_guide.rng_position();
+                    run.guide = guide.rng_position();
                     run.recon_guide = recon_guide.rng_position();
                     run.stage_seconds = stage_seconds;
-                    run.save_formation(c, &t)?;
+                    run.save_formation(c, t)?;
                 }
-            }
-        }
+                Ok(())
+            },
+        )?;
+        split = totals.split;
         // ---- filtering ----
         let tf = Instant::now();
         run.counts.before_filter = t.len();
@@ -365,29 +362,17 @@ pub fn generate_object(
         // Pseudo-ground truth, made once from the filtered cloud (deterministic given the
         // guide's position, so a resumed run makes the same targets).
         recon_guide.set_rng_position(run.recon_guide);
-        let mut maker = Trainer::guided(ctx, &filtered, recon_fit(cfg), frame.extent())?;
-        let mut views = vec![];
-        for v in ring_views(frame, cfg.recon_views, cfg.resolution) {
-            let bv = maker.render_view(&v.camera, [1.0; 3])?;
-            let target = prior
-                .target(
-                    &mut recon_guide,
-                    &PriorView {
-                        camera: &v.camera,
-                        render: &bv.color,
-                        background: [1.0; 3],
-                        azimuth: v.azimuth,
-                        elevation: v.elevation,
-                    },
-                    0,
-                )
-                .map_err(GenError::Prior)?;
-            views.push(View {
+        let views: Vec<GuidedView> = ring_views(frame, cfg.recon_views, cfg.resolution)
+            .into_iter()
+            .map(|v| GuidedView {
                 camera: v.camera,
-                pixels: target,
-            });
-        }
-        drop(maker);
+                background: [1.0; 3],
+                azimuth: v.azimuth,
+                elevation: v.elevation,
+            })
+            .collect();
+        let views =
+            pseudo_ground_truth(ctx, &filtered, prior, &mut recon_guide, &views, cfg.batch)?;
         let mut t = if run.iteration > 0 {
             let c = ckpt.expect("resume has checkpoints");
             let g = run.load_ply(c.dir)?;
@@ -397,9 +382,12 @@ pub fn generate_object(
         } else {
             Trainer::new(ctx, &filtered, views, recon_fit(cfg))?
         };
-        let steps = cfg.recon_steps();
-        while t.iteration() < steps {
-            let r = t.step()?;
+        let every = if ckpt.is_some() {
+            cfg.checkpoint_every
+        } else {
+            0
+        };
+        run_fit(&mut t, cfg.recon_steps(), every, &mut |t, r, due| {
             progress.update(
                 cfg.iterations as u64 + r.iteration as u64,
                 &format!(
@@ -407,14 +395,12 @@ pub fn generate_object(
                     r.loss, r.psnr, r.gaussians
                 ),
             );
-            if let Some(c) = ckpt {
-                let it = t.iteration();
-                if cfg.checkpoint_every > 0 && it % cfg.checkpoint_every == 0 && it < steps {
-                    run.stage_seconds = stage_seconds;
-                    run.save_recon(c, &t)?;
-                }
+            if let (Some(c), true) = (ckpt, due) {
+                run.stage_seconds = stage_seconds;
+                run.save_recon(c, t)?;
             }
-        }
+            Ok(())
+        })?;
         stage_seconds[2] += tr.elapsed().as_secs_f64();
         result = t.gaussians()?;
     }
@@ -434,22 +420,6 @@ pub fn generate_object(
             formation_split: split,
         },
     ))
-}
-
-/// What one formation iteration took.
-#[derive(Debug, Clone, Default)]
-pub struct IterationReport {
-    /// The batch's mean loss.
-    pub loss: f64,
-    /// Wall time of the whole iteration.
-    pub seconds: f64,
-    /// Wall time of the prior's targets.
-    pub prior_seconds: f64,
-    /// Wall time of the backward passes and Adam ([`Trainer::apply`]).
-    pub apply_seconds: f64,
-    /// GPU times of the renders, backward passes and Adam (empty unless the trainer is timed,
-    /// [`Trainer::set_timed`]).
-    pub kernels: Timings,
 }
 
 /// The formation trainer for `init` (the authors' formation learning rates and schedule).
@@ -472,9 +442,43 @@ pub fn formation_guide(cfg: &ObjectConfig) -> Guide {
     guide(cfg, cfg.rule, OBJECT_MTS_FOR(cfg), 0x6d7473)
 }
 
-/// One formation iteration (the body of Algorithm 2's loop): raise the SH degree on schedule,
-/// draw `cfg.batch` random views with their backgrounds, render them, ask the prior for their
-/// targets, and apply the image loss's gradient in one Adam step.
+/// The formation stage's views: `cfg.batch` random orbit views, each with its background
+/// (white, or with probability `cfg.background_aug` random or black).
+pub fn formation_views<'a>(
+    frame: &'a ObjectFrame,
+    ranges: &'a OrbitRanges,
+    cfg: &'a ObjectConfig,
+) -> impl FnMut(u32, &mut ChaCha8Rng) -> Vec<GuidedView> + 'a {
+    move |step, rng| {
+        random_views(frame, ranges, step, cfg.batch, cfg.resolution, rng)
+            .into_iter()
+            .map(|v| GuidedView {
+                background: background(rng, cfg.background_aug),
+                camera: v.camera,
+                azimuth: v.azimuth,
+                elevation: v.elevation,
+            })
+            .collect()
+    }
+}
+
+/// The formation stage (Algorithm 2's loop): every Gaussian trains, the SH degree rises on
+/// schedule, checkpoints every `cfg.checkpoint_every` iterations.
+pub fn formation_stage<'a>(cfg: &ObjectConfig, views: &'a mut ViewSource<'a>) -> GuidedStage<'a> {
+    GuidedStage {
+        iterations: cfg.iterations,
+        trainable: None,
+        sh: Some(ShSchedule {
+            degree: cfg.sh_degree,
+            every: cfg.sh_every,
+        }),
+        checkpoint_every: cfg.checkpoint_every,
+        views,
+    }
+}
+
+/// One formation iteration (the body of Algorithm 2's loop), for measurements: the formation
+/// stage's [`stage_iteration`].
 pub fn formation_iteration(
     t: &mut Trainer,
     prior: &mut dyn Prior,
@@ -484,83 +488,9 @@ pub fn formation_iteration(
     ranges: &OrbitRanges,
     cfg: &ObjectConfig,
 ) -> Result<IterationReport, GenError> {
-    let t0 = Instant::now();
-    let step = t.iteration();
-    let want_degree = (step / cfg.sh_every.max(1)).min(cfg.sh_degree);
-    if t.device_gaussians().sh_degree < want_degree {
-        t.set_sh_degree(want_degree)?;
-    }
-    let views: Vec<GuidedView> = random_views(frame, ranges, step, cfg.batch, cfg.resolution, rng)
-        .into_iter()
-        .map(|v| GuidedView {
-            background: background(rng, cfg.background_aug),
-            camera: v.camera,
-            azimuth: v.azimuth,
-            elevation: v.elevation,
-        })
-        .collect();
-    let mut report = guided_iteration(t, prior, guide, &views, None)?;
-    report.seconds = t0.elapsed().as_secs_f64();
-    Ok(report)
-}
-
-/// One view of a guided iteration: camera, background and the angles its prompt depends on.
-#[derive(Debug, Clone)]
-pub struct GuidedView {
-    pub camera: crate::camera::Camera,
-    pub background: [f32; 3],
-    pub azimuth: f64,
-    pub elevation: f64,
-}
-
-/// The body shared by object formation and the scene stages: render `views`, ask the prior for
-/// their targets, and apply the image loss's gradient in one Adam step (only `trainable`
-/// Gaussians move when it is set).
-pub fn guided_iteration(
-    t: &mut Trainer,
-    prior: &mut dyn Prior,
-    guide: &mut Guide,
-    views: &[GuidedView],
-    trainable: Option<std::ops::Range<u32>>,
-) -> Result<IterationReport, GenError> {
-    let t0 = Instant::now();
-    let step = t.iteration();
-    let mut batch = vec![];
-    let mut grads = vec![];
-    let mut report = IterationReport::default();
-    for v in views {
-        let bv = t.render_view(&v.camera, v.background)?;
-        report
-            .kernels
-            .entries
-            .extend_from_slice(&bv.frame.timings.entries);
-        let tp = Instant::now();
-        let target = prior
-            .target(
-                guide,
-                &PriorView {
-                    camera: &v.camera,
-                    render: &bv.color,
-                    background: v.background,
-                    azimuth: v.azimuth,
-                    elevation: v.elevation,
-                },
-                step,
-            )
-            .map_err(GenError::Prior)?;
-        report.prior_seconds += tp.elapsed().as_secs_f64();
-        let (l, g) = image_loss(&bv.color, &target, guide.settings.lambda);
-        report.loss += l / views.len() as f64;
-        grads.push(g);
-        batch.push(bv);
-    }
-    let ta = Instant::now();
-    let timings = t.apply(&batch, &grads, trainable)?;
-    report.apply_seconds = ta.elapsed().as_secs_f64();
-    report.kernels.entries.extend(timings.entries);
-    t.recycle(batch);
-    report.seconds = t0.elapsed().as_secs_f64();
-    Ok(report)
+    let mut views = formation_views(frame, ranges, cfg);
+    let mut stage = formation_stage(cfg, &mut views);
+    stage_iteration(&mut stage, t, prior, guide, rng)
 }
 
 /// The formation range with the run's length as its period (T_end reaches its floor at the end).
@@ -570,27 +500,6 @@ fn OBJECT_MTS_FOR(cfg: &ObjectConfig) -> MtsRange {
         period: cfg.iterations.max(1),
         ..OBJECT_MTS
     }
-}
-
-/// The loss `mean ½ (x − x̃)² / λ` over pixels and channels and its gradient: the guidance's
-/// λ-scaled step toward the target, normalised back so that the loss reads like a mean squared
-/// error against what the prior believes the view shows.
-pub fn image_loss(render: &[[f32; 3]], target: &[[f32; 3]], lambda: f64) -> (f64, Vec<[f32; 3]>) {
-    let n = (render.len() * 3).max(1) as f64;
-    let k = (1.0 / lambda.max(1e-6)) / n;
-    let mut loss = 0.0;
-    let g = render
-        .iter()
-        .zip(target)
-        .map(|(x, t)| {
-            std::array::from_fn(|c| {
-                let d = (x[c] - t[c]) as f64;
-                loss += 0.5 * d * d * k;
-                (d * k) as f32
-            })
-        })
-        .collect();
-    (loss, g)
 }
 
 /// The Gaussians where `keep` is true.

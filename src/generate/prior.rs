@@ -14,11 +14,13 @@
 //!   number: its fixed point is the reference.
 //!
 //! The `shape` prior has no targets (the object is its shape prior), so it is not a [`Prior`].
+use super::object::GenError;
 use crate::camera::Camera;
 use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor};
 use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
 use crate::diffusion::target::Guide;
+use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
@@ -51,7 +53,17 @@ pub trait Prior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String>;
+    ) -> Result<Vec<[f32; 3]>, GenError>;
+    /// The targets of all views of an iteration, in order: what [`Prior::target`] gives view by
+    /// view, in one call so that a prior can batch its model calls.
+    fn targets(
+        &mut self,
+        guide: &mut Guide,
+        views: &[PriorView],
+        step: u32,
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
+        views.iter().map(|v| self.target(guide, v, step)).collect()
+    }
 }
 
 fn flat(img: &[[f32; 3]]) -> Vec<f32> {
@@ -110,20 +122,20 @@ impl OraclePrior {
         ctx: &Context,
         reference: &Gaussians,
         edit: Option<&Gaussians>,
-    ) -> Result<OraclePrior, String> {
-        let up = |g: &Gaussians| GpuGaussians::upload(ctx, g).map_err(|e| e.to_string());
+    ) -> Result<OraclePrior, GenError> {
+        let up = |g: &Gaussians| GpuGaussians::upload(ctx, g);
         Ok(OraclePrior {
             ctx: ctx.clone(),
-            raster: Rasterizer::new(ctx).map_err(|e| e.to_string())?,
+            raster: Rasterizer::new(ctx)?,
             reference: up(reference)?,
             edit: edit.map(up).transpose()?,
-            sched: Schedule::new(SchedulerConfig::sd21_base())?,
+            sched: Schedule::new(SchedulerConfig::sd21_base()).map_err(Error::Run)?,
             frame: Mutex::new(None),
         })
     }
 
     /// The reference rendered from `cam` over `bg`: what the oracle believes the view shows.
-    pub fn reference_view(&self, cam: &Camera, bg: [f32; 3]) -> Result<Vec<[f32; 3]>, String> {
+    pub fn reference_view(&self, cam: &Camera, bg: [f32; 3]) -> Result<Vec<[f32; 3]>, GenError> {
         self.render(&self.reference, cam, bg)
     }
 
@@ -132,16 +144,15 @@ impl OraclePrior {
         g: &GpuGaussians,
         cam: &Camera,
         bg: [f32; 3],
-    ) -> Result<Vec<[f32; 3]>, String> {
+    ) -> Result<Vec<[f32; 3]>, GenError> {
         let mut slot = self.frame.lock().unwrap_or_else(|e| e.into_inner());
         let frame = match slot.as_mut() {
             Some(f) => f,
-            None => slot.insert(Frame::new(&self.ctx).map_err(|e| e.to_string())?),
+            None => slot.insert(Frame::new(&self.ctx)?),
         };
         self.raster
-            .forward_into(&self.ctx, g, cam, bg, frame, true)
-            .and_then(|()| frame.colour())
-            .map_err(|e| e.to_string())
+            .forward_into(&self.ctx, g, cam, bg, frame, true)?;
+        Ok(frame.colour()?)
     }
 }
 
@@ -179,7 +190,7 @@ impl Prior for OraclePrior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String> {
+    ) -> Result<Vec<[f32; 3]>, GenError> {
         let reference = to_latent(&self.render(&self.reference, view.camera, view.background)?);
         let edit = match &self.edit {
             Some(e) => Some(to_latent(&self.render(e, view.camera, view.background)?)),
@@ -191,7 +202,9 @@ impl Prior for OraclePrior {
             reference: &reference,
             edit: edit.as_deref(),
         };
-        let (zt, _, _) = guide.latent_target(&mut p, &self.sched, &z, step)?;
+        let (zt, _, _) = guide
+            .latent_target(&mut p, &self.sched, &z, step)
+            .map_err(Error::Run)?;
         Ok(from_latent(&zt, is_pseudo_gt(guide)))
     }
 }
@@ -227,6 +240,23 @@ impl SdPrior {
     }
 }
 
+impl SdPrior {
+    /// The cached conditioning of a view's direction (the text encoder runs once a direction).
+    fn conditioning(&mut self, view: &PriorView) -> Result<String, GenError> {
+        let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
+        if !self.cache.contains_key(&pos) {
+            let edit = self
+                .edit
+                .as_ref()
+                .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
+            let c =
+                Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref()).map_err(Error::Run)?;
+            self.cache.insert(pos.clone(), c);
+        }
+        Ok(pos)
+    }
+}
+
 impl Prior for SdPrior {
     fn kind(&self) -> &'static str {
         "sd"
@@ -237,31 +267,59 @@ impl Prior for SdPrior {
         guide: &mut Guide,
         view: &PriorView,
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, String> {
-        let (pos, neg) = view_prompts(&self.prompt, &self.negative, view.azimuth, view.elevation);
-        if !self.cache.contains_key(&pos) {
-            let edit = self
-                .edit
-                .as_ref()
-                .map(|e| view_prompts(e, &self.negative, view.azimuth, view.elevation).0);
-            let c = Conditioning::new(&mut self.sd, &pos, &neg, edit.as_deref())?;
-            self.cache.insert(pos.clone(), c);
+    ) -> Result<Vec<[f32; 3]>, GenError> {
+        Ok(self
+            .targets(guide, std::slice::from_ref(view), step)?
+            .remove(0))
+    }
+
+    /// One encode and one decode of the autoencoder for all views (the views of an iteration
+    /// share their size); the guidance per view in order, as view by view.
+    fn targets(
+        &mut self,
+        guide: &mut Guide,
+        views: &[PriorView],
+        step: u32,
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
+        let Some(first) = views.first() else {
+            return Ok(vec![]);
+        };
+        let (w, h) = (first.camera.width as usize, first.camera.height as usize);
+        if views
+            .iter()
+            .any(|v| (v.camera.width as usize, v.camera.height as usize) != (w, h))
+        {
+            return Err(Error::Input("the views of one batch differ in size".into()).into());
         }
-        let cond = &self.cache[&pos];
-        let (w, h) = (view.camera.width as usize, view.camera.height as usize);
-        let t = guide.image_target(&mut self.sd, cond, &flat(view.render), w, h, step)?;
-        if (t.width, t.height) != (w, h) {
-            return Err(format!(
-                "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
-                t.width, t.height
-            ));
-        }
-        let mut img = unflat(&t.image);
-        if is_pseudo_gt(guide) {
-            for p in &mut img {
-                *p = p.map(|v| v.clamp(0.0, 1.0));
-            }
-        }
-        Ok(img)
+        let keys = views
+            .iter()
+            .map(|v| self.conditioning(v))
+            .collect::<Result<Vec<_>, _>>()?;
+        let conds: Vec<&Conditioning> = keys.iter().map(|k| &self.cache[k]).collect();
+        let flats: Vec<Vec<f32>> = views.iter().map(|v| flat(v.render)).collect();
+        let renders: Vec<&[f32]> = flats.iter().map(Vec::as_slice).collect();
+        let targets = guide
+            .image_targets(&mut self.sd, &conds, &renders, w, h, step)
+            .map_err(Error::Run)?;
+        let clamp = is_pseudo_gt(guide);
+        targets
+            .into_iter()
+            .map(|t| {
+                if (t.width, t.height) != (w, h) {
+                    return Err(Error::Input(format!(
+                        "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
+                        t.width, t.height
+                    ))
+                    .into());
+                }
+                let mut img = unflat(&t.image);
+                if clamp {
+                    for p in &mut img {
+                        *p = p.map(|v| v.clamp(0.0, 1.0));
+                    }
+                }
+                Ok(img)
+            })
+            .collect()
     }
 }

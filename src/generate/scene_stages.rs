@@ -10,12 +10,12 @@
 //! Densification stays off in the scene stages so the frozen ranges keep their indices (the
 //! initial environment is already dense). Each object, each stage and every
 //! `checkpoint_every` iterations is checkpointed in `checkpoints/`, and `resume` continues.
-use super::object::{
-    generate_object, guided_iteration, Checkpoints, GenError, GuidedView, ObjectConfig,
-};
-use super::prior::{OraclePrior, Prior, PriorView, SdPrior};
+use super::checkpoint::{remove_old, restore_trainer, write_trainer};
+use super::object::{generate_object, Checkpoints, GenError, ObjectConfig};
+use super::prior::{OraclePrior, Prior, SdPrior};
 use super::progress::Progress;
 use super::scene::{category_sizes, object_ply};
+use super::stage::{pseudo_ground_truth, run_fit, run_guided, GuidedStage, GuidedView};
 use crate::camera::object::ObjectFrame;
 use crate::camera::scene::{stage_cameras, SceneBox, Stage};
 use crate::camera::Camera;
@@ -24,13 +24,14 @@ use crate::diffusion::guidance::{
 };
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
+use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::plan::spec::{Layout, SceneSpec, SceneType};
 use crate::scene::compose::{merge, pad_sh, place, Placement};
 use crate::scene::env::{draft_colours, init_environment, EnvOptions};
 use crate::shape::{self, ShapeOptions};
 use crate::splat::ply::{read_ply, write_ply};
-use crate::splat::train::{FitConfig, Trainer, View};
+use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -103,8 +104,9 @@ impl SceneConfig {
 pub trait ScenePriors {
     /// `sd` or `oracle:DIR`, for scene.json and logs.
     fn kind(&self) -> String;
-    fn for_object(&mut self, category: &str, description: &str) -> Result<&mut dyn Prior, String>;
-    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, String>;
+    fn for_object(&mut self, category: &str, description: &str)
+        -> Result<&mut dyn Prior, GenError>;
+    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, GenError>;
 }
 
 /// Stable Diffusion for everything: the object's description, then the scene text.
@@ -114,11 +116,15 @@ impl ScenePriors for SdScenePriors {
     fn kind(&self) -> String {
         "sd".into()
     }
-    fn for_object(&mut self, _category: &str, description: &str) -> Result<&mut dyn Prior, String> {
+    fn for_object(
+        &mut self,
+        _category: &str,
+        description: &str,
+    ) -> Result<&mut dyn Prior, GenError> {
         self.0.set_prompt(description);
         Ok(&mut self.0)
     }
-    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, String> {
+    fn for_scene(&mut self, text: &str) -> Result<&mut dyn Prior, GenError> {
         self.0.set_prompt(text);
         Ok(&mut self.0)
     }
@@ -146,15 +152,18 @@ impl ScenePriors for OracleScenePriors {
     fn kind(&self) -> String {
         format!("oracle:{}", self.dir.display())
     }
-    fn for_object(&mut self, category: &str, _d: &str) -> Result<&mut dyn Prior, String> {
+    fn for_object(&mut self, category: &str, _d: &str) -> Result<&mut dyn Prior, GenError> {
         let path = self.dir.join(object_ply(category));
-        let g = read_ply(&path).map_err(|e| format!("the oracle's reference: {e}"))?;
+        let g = read_ply(&path)
+            .map_err(|e| GenError::Prior(Error::Oracle(format!("the oracle's reference: {e}"))))?;
         self.current = Some(OraclePrior::new(&self.ctx, &g, None)?);
         Ok(self.current.as_mut().expect("just set"))
     }
-    fn for_scene(&mut self, _text: &str) -> Result<&mut dyn Prior, String> {
-        let scene = crate::scene::dir::read_scene(&self.dir).map_err(|e| e.to_string())?;
-        let g = crate::scene::dir::compose_scene(&self.dir, &scene).map_err(|e| e.to_string())?;
+    fn for_scene(&mut self, _text: &str) -> Result<&mut dyn Prior, GenError> {
+        let oracle = |e: String| GenError::Prior(Error::Oracle(e));
+        let scene = crate::scene::dir::read_scene(&self.dir).map_err(|e| oracle(e.to_string()))?;
+        let g = crate::scene::dir::compose_scene(&self.dir, &scene)
+            .map_err(|e| oracle(e.to_string()))?;
         self.current = Some(OraclePrior::new(&self.ctx, &g, None)?);
         Ok(self.current.as_mut().expect("just set"))
     }
@@ -323,10 +332,8 @@ pub fn generate_scene(
                 seed: cfg.seed,
             },
         )
-        .map_err(|e| GenError::Prior(e.to_string()))?;
-        let prior = priors
-            .for_object(cat, &description)
-            .map_err(GenError::Prior)?;
+        .map_err(|e| GenError::Prior(Error::Input(e.to_string())))?;
+        let prior = priors.for_object(cat, &description)?;
         let odir = ck.join("objects").join(cat.replace(' ', "_"));
         let c = Checkpoints {
             dir: &odir,
@@ -418,7 +425,7 @@ pub fn generate_scene(
         if run.stages_done > k as u32 || iters == 0 {
             continue;
         }
-        let prior = priors.for_scene(&text).map_err(GenError::Prior)?;
+        let prior = priors.for_scene(&text)?;
         let mut guide = Guide::new(
             Rule::Mts { m: 4 },
             MtsRange {
@@ -434,10 +441,8 @@ pub fn generate_scene(
         );
         let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ 0x5ce7e ^ k as u64);
         let mut t = Trainer::guided(ctx, &cloud, stage_fit(iters, cfg.seed ^ k as u64), 1.0)?;
-        t.trainable = Some(trainable.clone());
         if let Some(ply) = run.ply.as_ref().filter(|_| run.iteration > 0) {
-            t.restore(&cloud_path(&format!("{ply}.state")))
-                .map_err(GenError::Checkpoint)?;
+            restore_trainer(&ck, ply, &mut t)?;
             rng.set_word_pos(run.rng);
             guide.set_rng_position(run.guide);
             log(&format!(
@@ -455,29 +460,38 @@ pub fn generate_scene(
             cfg.seed + k as u64,
         );
         let mut progress = Progress::new(iters as u64, false);
-        while t.iteration() < iters {
-            let step = t.iteration();
-            let views = stage_views(&cams, step, cfg.batch, iters, &mut rng);
-            let loss = guided_iteration(&mut t, prior, &mut guide, &views, None)?.loss;
-            progress.update(
-                t.iteration() as u64,
-                &format!("stage {} loss {loss:.5}", k + 1),
-            );
-            let it = t.iteration();
-            if cfg.checkpoint_every > 0 && it % cfg.checkpoint_every == 0 && it < iters {
-                let name = format!("stage{}_{it:06}.ply", k + 1);
-                let g = t.gaussians()?;
-                write_ply(&cloud_path(&name), &g).map_err(io(&ck))?;
-                t.save_state(&cloud_path(&format!("{name}.state")))
-                    .map_err(io(&ck))?;
-                let old = run.ply.replace(name);
-                run.iteration = it;
-                run.rng = rng.get_word_pos();
-                run.guide = guide.rng_position();
-                run.save(&ck, &fp)?;
-                remove_old(&ck, old, run.ply.as_deref());
-            }
-        }
+        let mut views =
+            |step, rng: &mut ChaCha8Rng| stage_views(&cams, step, cfg.batch, iters, rng);
+        let mut desc = GuidedStage {
+            iterations: iters,
+            trainable: Some(trainable.clone()),
+            sh: None,
+            checkpoint_every: cfg.checkpoint_every,
+            views: &mut views,
+        };
+        run_guided(
+            &mut desc,
+            &mut t,
+            prior,
+            &mut guide,
+            &mut rng,
+            &mut |t, r, guide, rng, due| {
+                progress.update(
+                    t.iteration() as u64,
+                    &format!("stage {} loss {:.5}", k + 1, r.loss),
+                );
+                if due {
+                    let name = write_trainer(&ck, &format!("stage{}", k + 1), t)?;
+                    let old = run.ply.replace(name);
+                    run.iteration = t.iteration();
+                    run.rng = rng.get_word_pos();
+                    run.guide = guide.rng_position();
+                    run.save(&ck, &fp)?;
+                    remove_old(&ck, old, run.ply.as_deref());
+                }
+                Ok(())
+            },
+        )?;
         progress.finish();
         cloud = t.gaussians()?;
         let name = format!("stage{}_done.ply", k + 1);
@@ -491,7 +505,7 @@ pub fn generate_scene(
     }
     // ---- stage 3: reconstructive ----
     if run.stages_done < 3 && cfg.recon_views > 0 && cfg.recon_passes > 0 {
-        let prior = priors.for_scene(&text).map_err(GenError::Prior)?;
+        let prior = priors.for_scene(&text)?;
         let mut guide = Guide::new(
             Rule::PseudoGt,
             SCENE_RECON,
@@ -502,37 +516,26 @@ pub fn generate_scene(
             Codec::Fast,
             cfg.seed ^ 0x3ec0,
         );
-        let mut maker = Trainer::guided(ctx, &cloud, stage_fit(1, 0), 1.0)?;
-        let mut views = vec![];
-        for cam in stage_cameras(
+        let views: Vec<GuidedView> = stage_cameras(
             Stage::Three,
             &sb,
             cfg.recon_views,
             cfg.resolution,
             cfg.resolution,
             cfg.seed + 3,
-        ) {
-            let bv = maker.render_view(&cam, [1.0; 3])?;
-            let (azimuth, elevation) = angles(&cam);
-            let target = prior
-                .target(
-                    &mut guide,
-                    &PriorView {
-                        camera: &cam,
-                        render: &bv.color,
-                        background: [1.0; 3],
-                        azimuth,
-                        elevation,
-                    },
-                    0,
-                )
-                .map_err(GenError::Prior)?;
-            views.push(View {
-                camera: cam,
-                pixels: target,
-            });
-        }
-        drop(maker);
+        )
+        .into_iter()
+        .map(|camera| {
+            let (azimuth, elevation) = angles(&camera);
+            GuidedView {
+                camera,
+                background: [1.0; 3],
+                azimuth,
+                elevation,
+            }
+        })
+        .collect();
+        let views = pseudo_ground_truth(ctx, &cloud, prior, &mut guide, &views, cfg.batch)?;
         let steps = cfg.recon_passes * views.len() as u32;
         let fit = FitConfig {
             background: [1.0; 3],
@@ -546,13 +549,13 @@ pub fn generate_scene(
         let mut t = Trainer::new(ctx, &cloud, views, fit)?;
         t.trainable = Some(if outdoor { split[1]..n } else { 0..n });
         let mut progress = Progress::new(steps as u64, false);
-        while t.iteration() < steps {
-            let r = t.step()?;
+        run_fit(&mut t, steps, 0, &mut |_, r, _| {
             progress.update(
                 r.iteration as u64,
                 &format!("stage 3 loss {:.4} psnr {:.1}", r.loss, r.psnr),
             );
-        }
+            Ok(())
+        })?;
         progress.finish();
         cloud = t.gaussians()?;
         let name = "stage3_done.ply".to_string();
@@ -602,13 +605,4 @@ fn unplace(g: &Gaussians, yaw: f64, scale: [f64; 3], position: [f64; 3]) -> Gaus
     let a = transform(g, 0.0, [1.0; 3], position.map(|v| -v));
     let b = transform(&a, -yaw, [1.0; 3], [0.0; 3]);
     transform(&b, 0.0, scale.map(|s| 1.0 / s), [0.0; 3])
-}
-
-fn remove_old(dir: &Path, old: Option<String>, keep: Option<&str>) {
-    if let Some(o) = old {
-        if Some(o.as_str()) != keep {
-            let _ = std::fs::remove_file(dir.join(&o));
-            let _ = std::fs::remove_file(dir.join(format!("{o}.state")));
-        }
-    }
 }
