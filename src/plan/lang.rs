@@ -622,7 +622,52 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         .split(|c: char| !c.is_alphanumeric() && c != '\'')
         .filter(|w| !w.is_empty())
         .collect();
-    let english = words.iter().filter(|w| english().contains(w)).count();
-    r.not_english = words.len() >= 3 && english == 0;
+    // Words an English reader knows: function words, request verbs, object and scene names.
+    let (_, objects_by_name) = object_matcher(kb);
+    let (_, scenes_by_name) = scene_matcher(kb);
+    let known = words
+        .iter()
+        .filter(|w| {
+            english().contains(w)
+                || is_function_word(w)
+                || is_verb(w)
+                || number_of(w).is_some()
+                || objects_by_name.contains_key(**w)
+                || scenes_by_name.contains_key(**w)
+        })
+        .count();
+    r.not_english = words.len() >= 3 && other_language(text, known, words.len());
     r
+}
+
+/// Whether `text` is written in another language than English: `whatlang`'s trigram detector
+/// among the languages people most often write requests in, trusted only when it is confident
+/// or few of the words are ones an English reader knows, and never when half of them are (a
+/// short English list of nouns can look like anything to a trigram model).
+fn other_language(text: &str, english_words: usize, words: usize) -> bool {
+    use whatlang::{Detector, Lang};
+    static DETECTOR: OnceLock<Detector> = OnceLock::new();
+    let detector = DETECTOR.get_or_init(|| {
+        Detector::with_allowlist(vec![
+            Lang::Eng,
+            Lang::Spa,
+            Lang::Fra,
+            Lang::Deu,
+            Lang::Ita,
+            Lang::Por,
+            Lang::Nld,
+            Lang::Pol,
+            Lang::Swe,
+            Lang::Dan,
+            Lang::Tur,
+            Lang::Rus,
+            Lang::Cmn,
+            Lang::Jpn,
+        ])
+    });
+    let Some(info) = detector.detect(text) else {
+        return false;
+    };
+    let share = english_words as f64 / words.max(1) as f64;
+    info.lang() != Lang::Eng && (info.confidence() >= 0.3 || share < 0.34) && share < 0.5
 }

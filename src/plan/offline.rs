@@ -229,7 +229,7 @@ fn fmt_size(s: [f64; 3]) -> String {
 pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let kb = KnowledgeBase::builtin();
     let r: Reading = lang::read(kb, prompt);
-    if r.not_english && r.scene.is_none() {
+    if r.not_english {
         return Err(PlanError::NotEnglish(prompt.trim().to_string()));
     }
     if r.scene.is_none() && r.mentions.is_empty() {
