@@ -8,7 +8,9 @@ use super::kb::KnowledgeBase;
 use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, find_lengths, Dims};
 
+mod counts;
 mod placements;
+use counts::read_counts;
 use placements::read_placements;
 use regex::Regex;
 use std::collections::BTreeMap;
@@ -141,6 +143,14 @@ pub struct Mention {
     pub negated: bool,
     /// Width, depth, height stated for it (metres; zero where not stated).
     pub size: [f64; 3],
+    /// "each umbrella", "every desk": the object named before, not a new one.
+    pub reference: bool,
+    /// "two chairs at each table": the mention whose every instance gets `count` of these.
+    pub each_of: Option<usize>,
+    /// "a bench down each side of every table": parts of each instance (2 sides); 1 otherwise.
+    pub parts: u32,
+    /// "in four rows of six": the number of rows (0 when not in rows).
+    pub rows: u32,
 }
 
 /// What a request says.
@@ -160,6 +170,8 @@ pub struct Reading {
     pub anchors: Vec<(usize, Anchor)>,
     /// "for 24 students".
     pub people: Option<u32>,
+    /// "a table for six": (table mention, seats at each of its instances).
+    pub seats_for: Vec<(usize, u32)>,
     /// "small" / "large" said of the scene.
     pub scale: f64,
     /// Nothing in the text looks like English.
@@ -497,7 +509,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                             count = Some(m * n.max(1));
                         }
                     }
-                } else if prev2.is_some_and(|p| ["sets", "set", "rows", "row"].contains(&p)) {
+                } else if prev2.is_some_and(|p| ["sets", "set"].contains(&p)) {
                     count = prev3.and_then(number_of);
                 } else if prev2.is_some_and(|p| ["lots", "plenty", "lot"].contains(&p)) {
                     count = Some(6);
@@ -505,6 +517,11 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 if prev3.is_some_and(|p| NEGATORS.contains(&p)) {
                     negated = true;
                 }
+            }
+            Some("single") if prev2.and_then(number_of).is_some_and(|n| n > 1) => {
+                // "30 single desks": the number counts, "single" describes
+                count = prev2.and_then(number_of);
+                adjectives.insert(0, "single".to_string());
             }
             Some(w) => {
                 if let Some(n) = number_of(w) {
@@ -568,6 +585,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             definite,
             negated,
             size,
+            reference: false,
+            each_of: None,
+            parts: 1,
+            rows: 0,
         });
         prev_end = end;
     }
@@ -616,6 +637,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         }
     }
 
+    read_counts(&mut r);
     read_placements(&mut r);
 
     let words: Vec<&str> = t

@@ -196,6 +196,46 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
+/// The seat category that goes round `table`: one the plan already has, else the first of the
+/// usual seats that the functional groups put at such a table.
+fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
+    const USUAL: &[&str] = &[
+        "dining chair",
+        "cafe chair",
+        "patio chair",
+        "office chair",
+        "bar stool",
+    ];
+    let probe = |seat: &str| {
+        let mut objects = BTreeMap::new();
+        for c in [table, seat] {
+            objects.insert(
+                c.to_string(),
+                ObjectSpec {
+                    number: 1,
+                    size: [1.0, 1.0, 1.0],
+                    description: String::new(),
+                },
+            );
+        }
+        let spec = SceneSpec {
+            scene_type: SceneType::Indoor,
+            scene_text: String::new(),
+            room: None,
+            objects,
+            anchors: BTreeMap::new(),
+            relations: vec![],
+        };
+        super::groups::group_of(&spec, seat).is_some_and(|(_, t)| t == table)
+    };
+    counts
+        .keys()
+        .map(String::as_str)
+        .chain(USUAL.iter().copied())
+        .find(|s| *s != table && probe(s))
+        .map(str::to_string)
+}
+
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,
 /// else from a size class named by its words.
 fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
@@ -264,9 +304,15 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
     let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    // "two chairs at each table": (category, per instance, category of the distributor).
+    let mut distributed: Vec<(String, u32, String)> = vec![];
     for (m, cat) in r.mentions.iter().zip(&cats) {
         if m.negated {
             negated.insert(cat.clone());
+            continue;
+        }
+        if m.reference {
+            // "each umbrella": the umbrellas named before
             continue;
         }
         if !m.known && !unknown.contains_key(cat) {
@@ -290,6 +336,10 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 sizes.insert(cat.clone(), size);
             }
         }
+        if let Some(x) = m.each_of {
+            distributed.push((cat.clone(), m.count.unwrap_or(1) * m.parts, cats[x].clone()));
+            continue;
+        }
         match m.count {
             Some(n) => {
                 *explicit.entry(cat.clone()).or_default() += n;
@@ -311,6 +361,39 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     for (c, n) in &explicit {
         counts.insert(c.clone(), *n);
     }
+    // Distributive counts multiply by the instances of what they distribute over.
+    let mut spread: BTreeMap<String, u32> = BTreeMap::new();
+    for (c, per, x) in &distributed {
+        let over = counts.get(x).copied().unwrap_or(1).max(1);
+        *spread.entry(c.clone()).or_default() += per * over;
+    }
+    for (c, n) in spread {
+        let total = explicit.get(&c).copied().unwrap_or(0) + n;
+        explicit.insert(c.clone(), total);
+        counts.insert(c, total);
+    }
+    // "A table for six": that many seats at each of those tables.
+    let mut seated = false;
+    for &(ti, per) in &r.seats_for {
+        let table = &cats[ti];
+        let Some(&tables) = counts.get(table) else {
+            continue;
+        };
+        let Some(seat) = seat_for(table, &counts) else {
+            continue;
+        };
+        seated = true;
+        let n = per * tables.max(1);
+        let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
+            explicit[&seat].max(n)
+        } else {
+            n
+        };
+        explicit.insert(seat.clone(), total);
+        named.insert(seat.clone());
+        counts.insert(seat, total);
+    }
+    let people = if seated { None } else { r.people };
     // Negation removes the category, defaults included.
     for c in &negated {
         counts.remove(c);
@@ -369,7 +452,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     counts.get(*c).copied().unwrap_or(0),
                 )
             });
-        if let Some(p) = r.people.filter(|_| main_seat == Some(seat)) {
+        if let Some(p) = people.filter(|_| main_seat == Some(seat)) {
             if !seat_named {
                 counts.insert(seat.clone(), p);
             }
@@ -394,7 +477,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
-    if r.people.is_some()
+    if people.is_some()
         && !counts
             .keys()
             .any(|c| super::groups::group_of(&probe, c).is_some())
