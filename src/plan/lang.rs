@@ -170,6 +170,8 @@ pub struct Reading {
     pub anchors: Vec<(usize, Anchor)>,
     /// "for 24 students".
     pub people: Option<u32>,
+    /// "just a bed and a chest, nothing else": only what the text names.
+    pub exclusive: bool,
     /// "a table for six": (table mention, seats at each of its instances).
     pub seats_for: Vec<(usize, u32)>,
     /// "small" / "large" said of the scene.
@@ -637,6 +639,8 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         }
     }
 
+    r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
+        .is_match(&t);
     read_counts(&mut r);
     read_placements(&mut r);
 

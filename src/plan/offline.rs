@@ -399,6 +399,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         counts.remove(c);
         named.remove(c);
     }
+    // Named objects fill the roles of the defaults they replace.
+    notes.extend(super::roles::apply(&mut counts, &named, r.exclusive));
+    // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
+    for c in &negated {
+        if let Some(role) = super::roles::role_of(c) {
+            counts.retain(|k, _| named.contains(k) || super::roles::role_of(k) != Some(role));
+        }
+    }
 
     // Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" 24
     // seats, "20 chairs" the tables they need.
