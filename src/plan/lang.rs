@@ -164,6 +164,8 @@ pub struct Reading {
     /// Room floor [W, D] and height, metres.
     pub room: Option<[f64; 2]>,
     pub room_height: Option<f64>,
+    /// The room's size was given without a unit and read as metres.
+    pub room_unitless: bool,
     /// (subject mention, relation, object mention) indices into `mentions`.
     pub relations: Vec<(usize, RelationKind, usize)>,
     /// Anchors the text gives (mention index).
@@ -606,6 +608,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             }
         } else if r.room.is_none() && d.values.len() >= 2 {
             r.room = Some([d.values[0], d.values[1]]);
+            r.room_unitless = d.unitless;
             if let Some(&h) = d.values.get(2) {
                 r.room_height = Some(h);
             }
@@ -628,17 +631,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             }
         }
     }
-    if let Some((_, s, _)) = r.scene {
-        let pre = &t[..s];
-        if re(r"\b(?:small|tiny|compact|little|cramped|narrow)\s*(?:[a-z'-]+\s+)?$").is_match(pre) {
-            r.scale = 0.75;
-        } else if re(r"\b(?:large|big|huge|spacious|grand|vast|open)\s*(?:[a-z'-]+\s+)?$")
-            .is_match(pre)
-        {
-            r.scale = 1.35;
-        }
-    }
-
+    r.scale = room_scale(&t, &r.mentions, r.scene.map(|(_, s, _)| s));
     r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
         .is_match(&t);
     read_counts(&mut r);
@@ -664,6 +657,50 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         .count();
     r.not_english = words.len() >= 3 && other_language(text, known, words.len());
     r
+}
+
+/// The room's size word ("a tiny bathroom", "a bedroom that's tiny", "quite cramped", "a box
+/// room") as a factor on the floor area the furniture needs (`kb/words.txt`: room_tiny,
+/// room_small, room_large); a size word inside an object's noun phrase ("a small table") is the
+/// object's, not the room's.
+fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 {
+    let words = words_in(t, 0, t.len());
+    let mut scale: f64 = 1.0;
+    for (k, &(pos, w)) in words.iter().enumerate() {
+        let two = words
+            .get(k + 1)
+            .map(|(_, n)| format!("{w} {n}"))
+            .unwrap_or_default();
+        let factor = if word_list("room_tiny").contains(&w)
+            || word_list("room_tiny").contains(&two.replace(' ', "-").as_str())
+        {
+            0.4
+        } else if word_list("room_small").contains(&w) {
+            0.6
+        } else if word_list("room_large").contains(&w) {
+            1.35
+        } else {
+            continue;
+        };
+        // The noun this word describes: the next mention or scene name before punctuation.
+        let rest: Vec<&(usize, &str)> = words[k + 1..]
+            .iter()
+            .take_while(|(_, x)| *x != ",")
+            .take(4)
+            .collect();
+        let object = rest.iter().any(|(p, _)| {
+            mentions.iter().any(|m| m.start == *p)
+                && scene_start != Some(*p)
+                && !mentions.iter().any(|m| m.start == *p && m.category.ends_with("room"))
+        });
+        let scene_next = rest.iter().any(|(p, _)| scene_start == Some(*p));
+        if object && !scene_next {
+            continue;
+        }
+        let _ = pos;
+        scale = if factor < 1.0 { scale.min(factor) } else { scale.max(factor) };
+    }
+    scale
 }
 
 /// Whether `text` is written in another language than English: `whatlang`'s trigram detector

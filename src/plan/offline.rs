@@ -196,6 +196,47 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
+/// Floor of a room the text calls small or tiny: the furniture's room scaled by `scale` in
+/// area, never smaller than what the named objects need in use (their footprints at half the
+/// floor, the longest with a walkway) nor than a small room's side; the defaults are then
+/// trimmed to fit by `capacity::fit`.
+fn small_room(
+    spec: &SceneSpec,
+    named: &BTreeSet<String>,
+    full: [f64; 3],
+    scale: f64,
+    scene_type: SceneType,
+) -> [f64; 3] {
+    let named_inst: Vec<_> = spec
+        .instances()
+        .into_iter()
+        .filter(|i| named.contains(&i.category))
+        .collect();
+    let margin = super::capacity::USE_MARGIN;
+    let need: f64 = named_inst
+        .iter()
+        .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
+        .sum::<f64>()
+        / 0.5;
+    let longest = spec
+        .instances()
+        .iter()
+        .filter(|i| named.contains(&i.category))
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    let base_side: f64 = match scene_type {
+        SceneType::Indoor if scale < 0.5 => 1.8,
+        SceneType::Indoor => 2.2,
+        SceneType::Outdoor => 6.0,
+    };
+    let min_side = base_side.max(longest + 0.4);
+    let area = (full[0] * full[1] * scale).max(need);
+    let w = (area * 1.25).sqrt().max(min_side);
+    let d = (area / w).max(min_side);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    [r(w), r(d), full[2]]
+}
+
 /// The seat category that goes round `table`: one the plan already has, else the first of the
 /// usual seats that the functional groups put at such a table.
 fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
@@ -701,21 +742,24 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
         None => {
             let mut room = room_for(&spec.instances(), scene_type);
-            if r.scale != 1.0 {
+            if r.scale < 1.0 {
+                room.size = small_room(&spec, &named, room.size, r.scale, scene_type);
+            } else if r.scale > 1.0 {
                 let s = r.scale.sqrt();
-                let min_side = if scene_type == SceneType::Indoor {
-                    2.5
-                } else {
-                    6.0
-                };
                 for k in 0..2 {
-                    room.size[k] = ((room.size[k] * s).max(min_side) * 10.0).ceil() / 10.0;
+                    room.size[k] = (room.size[k] * s * 10.0).ceil() / 10.0;
                 }
             }
             room
         }
     };
     spec.room = Some(room);
+    if r.room_unitless {
+        notes.push(format!(
+            "room size {} x {} has no unit: read as metres",
+            room.size[0], room.size[1]
+        ));
+    }
     let fitted = fit(&mut spec, &named, stated.is_some() || r.scale < 1.0)?;
     notes.extend(fitted);
     Ok(Plan { spec, named, notes })
