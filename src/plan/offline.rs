@@ -196,10 +196,10 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
-/// Floor of a room the text calls small or tiny: the furniture's room scaled by `scale` in
-/// area, never smaller than what the named objects need in use (their footprints at half the
-/// floor, the longest with a walkway) nor than a small room's side; the defaults are then
-/// trimmed to fit by `capacity::fit`.
+/// Floor of a room the text calls small or tiny: what the named objects need in use (their
+/// footprints with room to use them at half the floor, a little more when tiny; the longest
+/// with a walkway), or with nothing named the scene's furniture room scaled by `scale`; never
+/// below a small room's side. The defaults are then trimmed to fit by `capacity::fit`.
 fn small_room(
     spec: &SceneSpec,
     named: &BTreeSet<String>,
@@ -213,11 +213,14 @@ fn small_room(
         .filter(|i| named.contains(&i.category))
         .collect();
     let margin = super::capacity::USE_MARGIN;
+    // The share of the floor the named furniture may take: more in a room called tiny.
+    let occupancy = if scale < 0.5 { 0.55 } else { 0.5 };
     let need: f64 = named_inst
         .iter()
+        .filter(|i| i.size[2] >= 0.05)
         .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
         .sum::<f64>()
-        / 0.5;
+        / occupancy;
     let longest = spec
         .instances()
         .iter()
@@ -230,7 +233,12 @@ fn small_room(
         SceneType::Outdoor => 6.0,
     };
     let min_side = base_side.max(longest + 0.4);
-    let area = (full[0] * full[1] * scale).max(need);
+    // What the text names sets the floor; with nothing named, the scene's furniture scaled.
+    let area = if named_inst.is_empty() {
+        full[0] * full[1] * scale
+    } else {
+        need.min(full[0] * full[1])
+    };
     let w = (area * 1.25).sqrt().max(min_side);
     let d = (area / w).max(min_side);
     let r = |v: f64| (v * 10.0).ceil() / 10.0;
