@@ -359,6 +359,13 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         {
             continue;
         }
+        // "a computer lab", "a piano bar": a noun right before the scene's name names the kind
+        // of scene, not an object in it.
+        if r.scene.is_some_and(|(_, s, _)| {
+            s > m.end() && t[m.end()..s].trim().is_empty() && !m.as_str().is_empty()
+        }) {
+            continue;
+        }
         let (cat, plural) = table[m.as_str()].clone();
         if let Some(last) = raw.last_mut() {
             if last.2 == cat && t[last.1..m.start()].trim().is_empty() {
@@ -501,6 +508,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                     negated = true;
                 }
             }
+            Some("of") if prev2 == Some("instead") => {
+                // "a sofa bed instead of a bed"
+                negated = true;
+            }
             Some("of") => {
                 // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
                 if let Some(n) = prev2.and_then(number_of) {
@@ -521,6 +532,13 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 if prev3.is_some_and(|p| NEGATORS.contains(&p)) {
                     negated = true;
                 }
+            }
+            Some("other" | "more" | "additional" | "extra")
+                if prev2.is_some_and(|p| NEGATORS.contains(&p)) =>
+            {
+                // "no other beds": none besides those named
+                negated = true;
+                adjectives.insert(0, "other".to_string());
             }
             Some("single") if prev2.and_then(number_of).is_some_and(|n| n > 1) => {
                 // "30 single desks": the number counts, "single" describes

@@ -355,9 +355,15 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
     // "two chairs at each table": (category, per instance, category of the distributor).
     let mut distributed: Vec<(String, u32, String)> = vec![];
+    let mut others: BTreeSet<String> = BTreeSet::new();
     for (m, cat) in r.mentions.iter().zip(&cats) {
         if m.negated {
-            negated.insert(cat.clone());
+            if m.adjectives.iter().any(|a| a == "other") {
+                // "no other beds": no default of that kind or role, the named ones stay
+                others.insert(cat.clone());
+            } else {
+                negated.insert(cat.clone());
+            }
             continue;
         }
         if m.reference {
@@ -450,8 +456,13 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     // Named objects fill the roles of the defaults they replace.
     notes.extend(super::roles::apply(&mut counts, &named, r.exclusive));
+    for c in &others {
+        if !named.contains(c) {
+            counts.remove(c);
+        }
+    }
     // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
-    for c in &negated {
+    for c in negated.iter().chain(&others) {
         if let Some(role) = super::roles::role_of(c) {
             counts.retain(|k, _| named.contains(k) || super::roles::role_of(k) != Some(role));
         }
