@@ -692,9 +692,9 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
         let factor = if word_list("room_tiny").contains(&w)
             || word_list("room_tiny").contains(&two.replace(' ', "-").as_str())
         {
-            0.4
+            0.35
         } else if word_list("room_small").contains(&w) {
-            0.6
+            0.5
         } else if word_list("room_large").contains(&w) {
             1.35
         } else {

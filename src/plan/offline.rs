@@ -214,7 +214,7 @@ fn small_room(
         .collect();
     let margin = super::capacity::USE_MARGIN;
     // The share of the floor the named furniture may take: more in a room called tiny.
-    let occupancy = if scale < 0.5 { 0.55 } else { 0.5 };
+    let occupancy = if scale < 0.45 { 0.55 } else { 0.5 };
     let need: f64 = named_inst
         .iter()
         .filter(|i| i.size[2] >= 0.05)
@@ -228,7 +228,7 @@ fn small_room(
         .map(|i| i.size[0].max(i.size[1]))
         .fold(0.0, f64::max);
     let base_side: f64 = match scene_type {
-        SceneType::Indoor if scale < 0.5 => 1.8,
+        SceneType::Indoor if scale < 0.45 => 1.8,
         SceneType::Indoor => 2.2,
         SceneType::Outdoor => 6.0,
     };
