@@ -200,3 +200,19 @@ pub fn plan_to_dir(
     )?;
     Ok((spec, l))
 }
+
+/// "; 1 relation unsatisfied: chair1 faces table1" (each named), or nothing when all hold.
+pub fn unsatisfied_note(l: &dreamscene::plan::spec::Layout) -> String {
+    match l.unsatisfied.len() {
+        0 => String::new(),
+        n => format!(
+            "; {n} relation{} unsatisfied: {}",
+            if n == 1 { "" } else { "s" },
+            l.unsatisfied
+                .iter()
+                .map(|r| r.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}

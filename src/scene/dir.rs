@@ -251,6 +251,25 @@ fn looks_like(v: &Value) -> Option<&'static str> {
     }
 }
 
+/// The files `scene.json` promises that are not in `dir`: every instance's object PLY, the
+/// environment PLY (once its stage is done) and `scene.ply`, each named once, relative to `dir`.
+pub fn missing_files(dir: &Path, scene: &SceneFile) -> Vec<String> {
+    let mut promised: Vec<&str> = scene.objects.iter().map(|o| o.ply.as_str()).collect();
+    if let Some(env) = &scene.environment {
+        if !scene.stage_pending("environment") {
+            promised.push(&env.ply);
+        }
+    }
+    promised.push("scene.ply");
+    let mut missing: Vec<String> = vec![];
+    for rel in promised {
+        if !dir.join(rel).is_file() && !missing.iter().any(|m| m == rel) {
+            missing.push(rel.to_string());
+        }
+    }
+    missing
+}
+
 /// Writes `dir/scene.json` atomically (a temporary sibling renamed over it).
 pub fn write_scene(dir: &Path, scene: &SceneFile) -> Result<(), SceneError> {
     let path = dir.join("scene.json");
