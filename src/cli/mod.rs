@@ -70,6 +70,31 @@ pub fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
     Ok(dreamscene::util::write_atomic(path, &bytes)?)
 }
 
+/// The scene directory `input` names (a directory, or its scene.json), or None for a PLY.
+fn scene_dir_of(input: &Path) -> Option<std::path::PathBuf> {
+    if input.is_dir() {
+        return Some(input.to_path_buf());
+    }
+    let json = input
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    json.then(|| match input.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    })
+}
+
+/// Runs `read` on `input` while no edit is being put in place when it is a scene, so a reader
+/// sees the scene before an edit or after it, never a mix (a PLY is read as it is).
+pub fn read_input<T>(input: &Path, read: impl FnOnce() -> Result<T>) -> Result<T> {
+    match scene_dir_of(input) {
+        Some(dir) if dir.join("scene.json").is_file() => {
+            dreamscene::edit::txn::read_consistent(&dir, read)?
+        }
+        _ => read(),
+    }
+}
+
 /// Creates the directory that will hold `file`.
 pub fn create_parent(file: &Path) -> Result<()> {
     match file.parent().filter(|d| !d.as_os_str().is_empty()) {

@@ -53,7 +53,7 @@ pub fn viewer_dir() -> Result<PathBuf> {
 
 pub fn run(a: Args) -> Result<()> {
     let viewer = viewer_dir()?;
-    let input = open_input(&a.input)?;
+    let input = super::read_input(&a.input, || Ok(open_input(&a.input)?))?;
     let name = a
         .input
         .file_name()

@@ -367,4 +367,38 @@ mod tests {
         assert!(!d.join("gone").exists());
         assert_eq!(recover(&d).unwrap(), None);
     }
+
+    #[test]
+    fn a_reader_sees_every_file_of_one_commit_never_a_mix() {
+        let d = tmp("readers");
+        std::fs::write(d.join("scene.json"), "0").unwrap();
+        std::fs::write(d.join("a.ply"), "0").unwrap();
+        let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let reader = {
+            let (d, stop) = (d.clone(), stop.clone());
+            std::thread::spawn(move || {
+                let mut reads = 0;
+                while !stop.load(std::sync::atomic::Ordering::SeqCst) {
+                    let (j, a) = read_consistent(&d, || {
+                        let j = std::fs::read_to_string(d.join("scene.json")).unwrap();
+                        std::thread::yield_now();
+                        (j, std::fs::read_to_string(d.join("a.ply")).unwrap())
+                    })
+                    .unwrap();
+                    assert_eq!(j, a, "scene.json and a.ply of one commit");
+                    reads += 1;
+                }
+                reads
+            })
+        };
+        for n in 1..100 {
+            let mut t = Txn::begin(&d).unwrap();
+            t.write("a.ply", n.to_string().as_bytes()).unwrap();
+            t.write("scene.json", n.to_string().as_bytes()).unwrap();
+            t.commit().unwrap();
+        }
+        stop.store(true, std::sync::atomic::Ordering::SeqCst);
+        let reads = reader.join().expect("the reader saw no mix");
+        assert!(reads > 0, "the reader read");
+    }
 }
