@@ -27,10 +27,12 @@ pub struct Args {
     #[arg(long, global = true)]
     no_render: bool,
     /// Iterations of the local re-optimisation and of restyling (prior oracle or sd).
-    #[arg(long, global = true, default_value_t = 150)]
+    #[arg(long, global = true, default_value_t = 150,
+          value_parser = clap::value_parser!(u32).range(1..=100_000))]
     iterations: u32,
     /// Render size of the local re-optimisation and restyling views (a multiple of 8).
-    #[arg(long, global = true, default_value_t = 128)]
+    #[arg(long, global = true, default_value_t = 128,
+          value_parser = clap::value_parser!(u32).range(16..=2048))]
     resolution: u32,
     /// When another command is writing the scene, exit at once naming it instead of waiting.
     #[arg(long, global = true)]
@@ -85,7 +87,8 @@ enum Op {
         #[arg(long)]
         anchor: Option<String>,
         /// Object-formation iterations with the sd or oracle prior.
-        #[arg(long, default_value_t = 300)]
+        #[arg(long, default_value_t = 300,
+              value_parser = clap::value_parser!(u32).range(1..=100_000))]
         object_iterations: u32,
     },
     /// Remove an instance (its object PLY stays while another instance uses it).

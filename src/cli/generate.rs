@@ -426,6 +426,15 @@ fn render_explore(
     Ok(())
 }
 
+fn positive_density(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 && v <= 1e6 => Ok(v),
+        _ => Err(format!(
+            "'{s}': expected a positive number of Gaussians per m² (at most 1e6)"
+        )),
+    }
+}
+
 #[derive(clap::Args)]
 pub struct Args {
     /// What to build, e.g. "a cozy living room".
@@ -450,28 +459,28 @@ pub struct Args {
     #[arg(long)]
     pub draft: bool,
     /// Environment optimisation iterations.
-    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub iterations: u32,
     /// Formation (MTS) iterations per object.
-    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub object_iterations: u32,
     /// Render size in pixels (square).
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
     pub resolution: u32,
     /// Views along the exploring path written to renders/ (0: none).
-    #[arg(long, default_value_t = 8)]
-    pub renders: usize,
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u64).range(0..=1000))]
+    pub renders: u64,
     /// Passes of the scene's reconstructive stage over its 80 views.
-    #[arg(long, default_value_t = 25)]
+    #[arg(long, default_value_t = 25, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub recon_passes: u32,
     /// Passes of each object's reconstruction fit over its 20 views.
-    #[arg(long, default_value_t = 40)]
+    #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub object_recon_passes: u32,
     /// Gaussians of each object's shape prior (default: from its surface area, 30k-60k).
-    #[arg(long)]
-    pub object_gaussians: Option<usize>,
+    #[arg(long, value_parser = clap::value_parser!(u64).range(100..=2_000_000))]
+    pub object_gaussians: Option<u64>,
     /// Environment Gaussians per square metre of wall, ceiling and floor (capped at 300k).
-    #[arg(long, default_value_t = 1500.0)]
+    #[arg(long, default_value_t = 1500.0, value_parser = positive_density)]
     pub env_density: f64,
     /// Seed of the layout and the generation.
     #[arg(long, default_value_t = 0)]
@@ -500,10 +509,10 @@ pub fn run(a: Args) -> Result<()> {
         iterations: a.iterations,
         object_iterations: a.object_iterations,
         resolution: a.resolution,
-        renders: a.renders,
+        renders: a.renders as usize,
         recon_passes: a.recon_passes,
         object_recon_passes: a.object_recon_passes,
-        object_gaussians: a.object_gaussians,
+        object_gaussians: a.object_gaussians.map(|n| n as usize),
         env_density: a.env_density,
         seed: a.seed,
         resume: a.resume,

@@ -18,6 +18,30 @@ use dreamscene::gpu::Context;
 use dreamscene::splat::raster::RenderOutput;
 use std::path::Path;
 
+/// An error and its causes in one line, each thing said once: a cause that repeats a path (or
+/// anything else) the line already holds drops the repeat.
+pub fn error_line(chain: &[String]) -> String {
+    let mut out = String::new();
+    for cause in chain {
+        let mut rest = cause.trim();
+        while let Some((head, tail)) = rest.split_once(": ") {
+            if out.contains(head.trim()) {
+                rest = tail.trim();
+            } else {
+                break;
+            }
+        }
+        if rest.is_empty() || out.contains(rest) {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push_str(": ");
+        }
+        out.push_str(rest);
+    }
+    out
+}
+
 pub fn parse_hw(s: &str) -> Result<(usize, usize), String> {
     let (h, w) = s
         .split_once(['x', 'X'])
@@ -102,5 +126,23 @@ pub fn create_parent(file: &Path) -> Result<()> {
             std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
         }
         None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn an_error_line_says_each_path_once() {
+        let chain = [
+            "writing ro/x.spz".to_string(),
+            "ro/x.spz: Operation not permitted (os error 1)".to_string(),
+            "Operation not permitted (os error 1)".to_string(),
+        ];
+        assert_eq!(
+            super::error_line(&chain),
+            "writing ro/x.spz: Operation not permitted (os error 1)"
+        );
+        let plain = ["a: b".to_string(), "c".to_string()];
+        assert_eq!(super::error_line(&plain), "a: b: c", "distinct causes kept");
     }
 }

@@ -133,7 +133,7 @@ pub fn filter_config(off: bool, fraction: f64, rule: &str) -> Result<Option<Filt
 pub fn models_dir(models: Option<&Path>) -> Option<PathBuf> {
     models
         .map(Path::to_path_buf)
-        .or_else(|| std::env::var_os("DREAMSCENE_MODELS").map(PathBuf::from))
+        .or_else(|| dreamscene::util::env_path("DREAMSCENE_MODELS"))
 }
 
 pub const NO_MODELS: &str = "no diffusion models found (--models DIR or DREAMSCENE_MODELS): \

@@ -53,9 +53,7 @@ impl LlmArgs {
         self.llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
             url,
             model,
-            api_key: std::env::var("OPENAI_API_KEY")
-                .ok()
-                .filter(|k| !k.is_empty()),
+            api_key: dreamscene::util::env_var("OPENAI_API_KEY"),
             timeout: std::time::Duration::from_secs(timeout.max(1)),
             retries: 2,
         })

@@ -32,8 +32,7 @@ const REQUIRED: [&str; 3] = [
 
 /// The viewer directory: `DREAMSCENE_VIEWER_DIR`, else the source tree's `viewer/`.
 pub fn viewer_dir() -> Result<PathBuf> {
-    let dir = std::env::var_os("DREAMSCENE_VIEWER_DIR")
-        .map(PathBuf::from)
+    let dir = dreamscene::util::env_path("DREAMSCENE_VIEWER_DIR")
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("viewer"));
     if !dir.join("index.html").is_file() {
         bail!(

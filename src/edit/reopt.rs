@@ -80,7 +80,7 @@ pub(super) fn scene_prior(state: &SceneState) -> Result<ScenePrior> {
         "sd" => p
             .models
             .clone()
-            .or_else(|| std::env::var("DREAMSCENE_MODELS").ok())
+            .or_else(|| crate::util::env_var("DREAMSCENE_MODELS"))
             .map(|m| ScenePrior::Sd(PathBuf::from(m)))
             .ok_or_else(|| {
                 EditError::Bad(
