@@ -79,6 +79,7 @@ enum Op {
     /// knowledge base, placed by the layout around the objects already there, generated with
     /// the scene's prior.
     Add {
+        /// What to add, e.g. "a green armchair".
         description: String,
         /// Place it next to this instance.
         #[arg(long)]
@@ -92,7 +93,10 @@ enum Op {
         object_iterations: u32,
     },
     /// Remove an instance (its object PLY stays while another instance uses it).
-    Remove { id: String },
+    Remove {
+        /// The instance to remove, e.g. chair2 (`edit DIR history` and scene.json list them).
+        id: String,
+    },
     /// Restyle an instance, the environment or the floor: `restyle sofa1 "a red leather sofa"`.
     ///
     /// With sd or oracle priors: the paper's MTS editing rule on that part's Gaussians only,
@@ -101,6 +105,7 @@ enum Op {
     Restyle {
         /// An instance id, `environment` (walls and ceiling, or sky) or `floor` (or ground).
         part: String,
+        /// The new look, e.g. "a red leather sofa".
         description: String,
         /// Oracle prior: the second reference the edit aims at (object frame for an instance,
         /// world frame for the environment or floor).
@@ -110,7 +115,9 @@ enum Op {
     /// Animate an instance: `animate car1 "drive forward 3 m then turn left"` writes keyframes
     /// (position, yaw, scale) to scene.json's timeline.
     Animate {
+        /// The instance to animate, e.g. car1.
         id: String,
+        /// The motion in words, e.g. "drive forward 3 m then turn left".
         motion: String,
         /// Total length; the steps share it (default: from the words, else 1.5 s a step).
         #[arg(long)]
