@@ -157,13 +157,10 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(what) = txn::recover(dir)? {
         eprintln!("{}: {what}", dir.display());
     }
-    match a.op {
-        Op::Undo => {
-            let op = dreamscene::edit::undo(dir)?;
-            println!("undid the last edit ({op}) of {}", dir.display());
-            return Ok(());
-        }
-        _ => {}
+    if let Op::Undo = a.op {
+        let op = dreamscene::edit::undo(dir)?;
+        println!("undid the last edit ({op}) of {}", dir.display());
+        return Ok(());
     }
     let state = SceneState::open(dir)?;
     let cfg = ReoptConfig {
@@ -171,7 +168,7 @@ pub fn run(a: Args) -> Result<()> {
         resolution: a.resolution,
         seed: state.scene.seed,
     };
-    if a.resolution % 8 != 0 || a.resolution < 16 {
+    if !a.resolution.is_multiple_of(8) || a.resolution < 16 {
         bail!(
             "--resolution {}: expected a multiple of 8, at least 16",
             a.resolution

@@ -261,7 +261,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             a.env_density
         );
     }
-    if a.resolution % 8 != 0 {
+    if !a.resolution.is_multiple_of(8) {
         bail!(
             "--resolution {}: the priors need a multiple of 8",
             a.resolution

@@ -156,7 +156,7 @@ struct Mp4Sink {
 
 impl Mp4Sink {
     fn new(path: &Path, width: u32, height: u32, fps: f64) -> Result<Mp4Sink> {
-        if width % 2 != 0 || height % 2 != 0 || width < 16 || height < 16 {
+        if !width.is_multiple_of(2) || !height.is_multiple_of(2) || width < 16 || height < 16 {
             return Err(EncodeError::Invalid(format!(
                 "MP4 size {width}x{height}: H.264 needs even sides of at least 16 pixels"
             )));

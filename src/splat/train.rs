@@ -397,11 +397,11 @@ impl Trainer {
         let until = (c.densify_until * total) as u32;
         let reset_every = (c.opacity_reset * total) as u32;
         if c.densify && it < until {
-            if it > from && it % c.densify_every.max(1) == 0 {
+            if it > from && it.is_multiple_of(c.densify_every.max(1)) {
                 let prune_big = reset_every > 0 && it > reset_every;
                 self.densify_and_prune(prune_big)?;
             }
-            if reset_every > 0 && it % reset_every == 0 {
+            if reset_every > 0 && it.is_multiple_of(reset_every) {
                 self.reset_opacity()?;
             }
         }
