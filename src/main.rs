@@ -101,13 +101,22 @@ fn main() {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
+    // An empty variable means unset, as scripts write `NAME=` to unset one; clap's `env` would
+    // take the empty value as given. Done before any thread starts.
+    for (name, value) in std::env::vars_os() {
+        let n = name.to_string_lossy();
+        let ours = n.starts_with("DREAMSCENE_") || n == "OPENAI_API_KEY";
+        if ours && value.to_string_lossy().trim().is_empty() {
+            std::env::remove_var(&name);
+        }
+    }
     let cli = Cli::parse();
     if let Err(e) = run(cli) {
         let chain: Vec<String> = e
             .chain()
             .map(|c| c.to_string().replace('\n', " "))
             .collect();
-        eprintln!("error: {}", chain.join(": "));
+        eprintln!("error: {}", cli::error_line(&chain));
         std::process::exit(1);
     }
 }

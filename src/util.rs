@@ -163,10 +163,23 @@ fn describe_json(t: &str) -> String {
     }
 }
 
+/// Environment variable `name`, with an empty or blank value meaning unset (scripts unset a
+/// variable by writing `NAME=`). Every variable the program reads goes through here.
+pub fn env_var(name: &str) -> Option<String> {
+    std::env::var(name).ok().filter(|v| !v.trim().is_empty())
+}
+
+/// [`env_var`] as a path (non-UTF-8 values kept), empty meaning unset.
+pub fn env_path(name: &str) -> Option<std::path::PathBuf> {
+    std::env::var_os(name)
+        .filter(|v| !v.to_string_lossy().trim().is_empty())
+        .map(std::path::PathBuf::from)
+}
+
 /// The value of environment variable `name` among `choices` (name, value); unset gives `None`,
 /// and a value that is none of the names gives `None` with a warning naming the choices.
 pub fn env_choice<T: Copy>(name: &str, choices: &[(&str, T)]) -> Option<T> {
-    let v = std::env::var(name).ok()?;
+    let v = env_var(name)?;
     let found = choices.iter().find(|c| c.0 == v).map(|c| c.1);
     if found.is_none() {
         let names: Vec<&str> = choices.iter().map(|c| c.0).collect();

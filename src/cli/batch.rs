@@ -178,6 +178,9 @@ fn scene_args(a: &Args, e: &Entry, out: &Path) -> Result<GenerateArgs> {
         env_density: e.env_density.unwrap_or(a.env_density),
         seed: e.seed.unwrap_or(a.seed),
         resume: true,
+        force: false,
+        no_wait: true,
+        lock_held: true,
     })
 }
 

@@ -6,6 +6,7 @@ use dreamscene::edit::parse;
 use dreamscene::edit::reopt::{self, ReoptConfig};
 use dreamscene::edit::{animate, apply_edit, txn, Edit, SceneState};
 use dreamscene::plan::kb::parse_anchor;
+use dreamscene::scene::lock::{SceneLock, Wait};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -26,11 +27,16 @@ pub struct Args {
     #[arg(long, global = true)]
     no_render: bool,
     /// Iterations of the local re-optimisation and of restyling (prior oracle or sd).
-    #[arg(long, global = true, default_value_t = 150)]
+    #[arg(long, global = true, default_value_t = 150,
+          value_parser = clap::value_parser!(u32).range(1..=100_000))]
     iterations: u32,
     /// Render size of the local re-optimisation and restyling views (a multiple of 8).
-    #[arg(long, global = true, default_value_t = 128)]
+    #[arg(long, global = true, default_value_t = 128,
+          value_parser = clap::value_parser!(u32).range(16..=2048))]
     resolution: u32,
+    /// When another command is writing the scene, exit at once naming it instead of waiting.
+    #[arg(long, global = true)]
+    no_wait: bool,
 }
 
 #[derive(clap::Subcommand)]
@@ -73,6 +79,7 @@ enum Op {
     /// knowledge base, placed by the layout around the objects already there, generated with
     /// the scene's prior.
     Add {
+        /// What to add, e.g. "a green armchair".
         description: String,
         /// Place it next to this instance.
         #[arg(long)]
@@ -81,11 +88,15 @@ enum Op {
         #[arg(long)]
         anchor: Option<String>,
         /// Object-formation iterations with the sd or oracle prior.
-        #[arg(long, default_value_t = 300)]
+        #[arg(long, default_value_t = 300,
+              value_parser = clap::value_parser!(u32).range(1..=100_000))]
         object_iterations: u32,
     },
     /// Remove an instance (its object PLY stays while another instance uses it).
-    Remove { id: String },
+    Remove {
+        /// The instance to remove, e.g. chair2 (`edit DIR history` and scene.json list them).
+        id: String,
+    },
     /// Restyle an instance, the environment or the floor: `restyle sofa1 "a red leather sofa"`.
     ///
     /// With sd or oracle priors: the paper's MTS editing rule on that part's Gaussians only,
@@ -94,6 +105,7 @@ enum Op {
     Restyle {
         /// An instance id, `environment` (walls and ceiling, or sky) or `floor` (or ground).
         part: String,
+        /// The new look, e.g. "a red leather sofa".
         description: String,
         /// Oracle prior: the second reference the edit aims at (object frame for an instance,
         /// world frame for the environment or floor).
@@ -103,7 +115,9 @@ enum Op {
     /// Animate an instance: `animate car1 "drive forward 3 m then turn left"` writes keyframes
     /// (position, yaw, scale) to scene.json's timeline.
     Animate {
+        /// The instance to animate, e.g. car1.
         id: String,
+        /// The motion in words, e.g. "drive forward 3 m then turn left".
         motion: String,
         /// Total length; the steps share it (default: from the words, else 1.5 s a step).
         #[arg(long)]
@@ -132,39 +146,21 @@ fn parse_xy(s: &str) -> Result<[f64; 2], String> {
 
 pub fn run(a: Args) -> Result<()> {
     let dir = &a.dir;
+    if let Op::History = a.op {
+        return history(dir);
+    }
+    // The scene is checked before anything is created in it.
+    dreamscene::scene::dir::read_scene(dir)?;
+    let wait = if a.no_wait { Wait::NoWait } else { Wait::Block };
+    let command = std::env::args().collect::<Vec<_>>().join(" ");
+    let _lock = SceneLock::acquire(dir, wait, &command)?;
     if let Some(what) = txn::recover(dir)? {
         eprintln!("{}: {what}", dir.display());
     }
-    match a.op {
-        Op::Undo => {
-            let op = dreamscene::edit::undo(dir)?;
-            println!("undid the last edit ({op}) of {}", dir.display());
-            return Ok(());
-        }
-        Op::History => {
-            let s = dreamscene::scene::dir::read_scene(dir)?;
-            if s.history.is_empty() {
-                println!("no edits");
-            }
-            for (i, e) in s.history.iter().enumerate() {
-                let notes: Vec<String> = e["notes"]
-                    .as_array()
-                    .map(|v| {
-                        v.iter()
-                            .filter_map(|x| x.as_str().map(String::from))
-                            .collect()
-                    })
-                    .unwrap_or_default();
-                println!(
-                    "{:>3} {}: {}",
-                    i + 1,
-                    e["op"].as_str().unwrap_or("?"),
-                    notes.join("; ")
-                );
-            }
-            return Ok(());
-        }
-        _ => {}
+    if let Op::Undo = a.op {
+        let op = dreamscene::edit::undo(dir)?;
+        println!("undid the last edit ({op}) of {}", dir.display());
+        return Ok(());
     }
     let state = SceneState::open(dir)?;
     let cfg = ReoptConfig {
@@ -172,7 +168,7 @@ pub fn run(a: Args) -> Result<()> {
         resolution: a.resolution,
         seed: state.scene.seed,
     };
-    if a.resolution % 8 != 0 || a.resolution < 16 {
+    if !a.resolution.is_multiple_of(8) || a.resolution < 16 {
         bail!(
             "--resolution {}: expected a multiple of 8, at least 16",
             a.resolution
@@ -217,7 +213,7 @@ pub fn run(a: Args) -> Result<()> {
                     (
                         id.clone(),
                         p,
-                        json!({"id": id, "flags": format!("{flags:?}")}),
+                        json!({"id": id, "flags": flags_text(&flags)}),
                     )
                 }
                 [id, text] | [text, id] if state.object(id).is_ok() => {
@@ -298,7 +294,7 @@ pub fn run(a: Args) -> Result<()> {
             let e = animate::animate(&state, &id, &motion, seconds, fps)?;
             (e, vec![])
         }
-        Op::Undo | Op::History => unreachable!("handled above"),
+        Op::Undo | Op::History => bail!("handled above"),
     };
     if !footprints.is_empty() {
         let c = if state.scene.prior.kind != "shape" {
@@ -322,6 +318,59 @@ pub fn run(a: Args) -> Result<()> {
         dir.display()
     );
     Ok(())
+}
+
+/// The move flags as they would be typed (`--by 0.5,0 --rotate 90`).
+fn flags_text(f: &MoveFlags) -> String {
+    let mut out = vec![];
+    if let Some([x, y]) = f.to {
+        out.push(format!("--to {x},{y}"));
+    }
+    if let Some([x, y]) = f.by {
+        out.push(format!("--by {x},{y}"));
+    }
+    if let Some(r) = f.rotate {
+        out.push(format!("--rotate {r}"));
+    }
+    if let Some(id) = &f.face {
+        out.push(format!("--face {id}"));
+    }
+    if let Some(s) = f.scale {
+        out.push(format!("--scale {s}"));
+    }
+    out.join(" ")
+}
+
+/// `edit DIR history`: one short line an edit (what was asked), read while no edit is being put
+/// in place.
+fn history(dir: &std::path::Path) -> Result<()> {
+    let s = txn::read_consistent(dir, || dreamscene::scene::dir::read_scene(dir))??;
+    if s.history.is_empty() {
+        println!("no edits");
+    }
+    for (i, e) in s.history.iter().enumerate() {
+        println!("{:>3} {}", i + 1, history_line(e));
+    }
+    Ok(())
+}
+
+/// What an edit asked, in one short line: its op, the instance and the words or flags given.
+fn history_line(e: &serde_json::Value) -> String {
+    let mut parts = vec![e["op"].as_str().unwrap_or("edit").to_string()];
+    for key in ["id", "part", "text", "description", "motion", "flags"] {
+        if let Some(v) = e.get(key).and_then(|v| v.as_str()) {
+            parts.push(match key {
+                "text" | "description" | "motion" => format!("\"{v}\""),
+                _ => v.to_string(),
+            });
+        }
+    }
+    let line = parts.join(" ");
+    if line.chars().count() > 100 {
+        format!("{}...", line.chars().take(97).collect::<String>())
+    } else {
+        line
+    }
 }
 
 /// The instance and pose a sentence asks for (`default` is "it").

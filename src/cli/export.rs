@@ -36,9 +36,9 @@ impl From<FormatArg> for Format {
 pub struct Args {
     /// A scene directory (written by `generate`) or its scene.json, or a splat PLY.
     pub input: PathBuf,
-    /// Output format.
+    /// Output format (default: from the extension of --out: .ply, .splat, .spz or .glb).
     #[arg(long, value_enum)]
-    pub format: FormatArg,
+    pub format: Option<FormatArg>,
     /// Output file (written atomically; its directory is created if missing).
     #[arg(long)]
     pub out: PathBuf,
@@ -77,8 +77,20 @@ pub enum CollidersArg {
     Hull,
 }
 
+/// The format `--out`'s extension names, if it names one.
+fn format_of(out: &std::path::Path) -> Option<FormatArg> {
+    let ext = out.extension()?.to_str()?.to_ascii_lowercase();
+    <FormatArg as clap::ValueEnum>::from_str(&ext, true).ok()
+}
+
 pub fn run(a: Args) -> Result<()> {
-    let format = Format::from(a.format);
+    let Some(format) = a.format.or_else(|| format_of(&a.out)) else {
+        bail!(
+            "{}: give --format ply|splat|spz|glb (the extension names none)",
+            a.out.display()
+        );
+    };
+    let format = Format::from(format);
     if a.compat && format != Format::Ply {
         bail!("--compat applies to --format ply only");
     }
@@ -88,7 +100,10 @@ pub fn run(a: Args) -> Result<()> {
     // A scene with a timeline exported to glb without --time keeps its motion: one node per
     // instance, animated as the timeline says.
     if format == Format::Glb && a.time.is_none() && a.input.is_dir() {
-        let scene = dreamscene::scene::timeline::Animated::open(&a.input)?;
+        let scene = super::read_input(&a.input, || {
+            Ok(dreamscene::scene::timeline::Animated::open(&a.input)?)
+        })
+        .map_err(|e| intact_ply_hint(&a.input, e))?;
         if scene.is_animated() {
             super::create_parent(&a.out)?;
             let bytes = dreamscene::export::glb::encode_animated(&scene)?;
@@ -107,7 +122,8 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(done) = engine_export(&a, format)? {
         return Ok(done);
     }
-    let g = load_input(&a.input, a.time)?;
+    let g = super::read_input(&a.input, || Ok(load_input(&a.input, a.time)?))
+        .map_err(|e| intact_ply_hint(&a.input, e))?;
     if format == Format::Splat && g.sh_degree > 0 {
         eprintln!(
             "note: .splat holds only the diffuse colour; the view-dependent colour (SH degree {}) \
@@ -228,5 +244,19 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
         }
         _ if selecting => bail!("--only/--without apply to --format glb and ply"),
         _ => Ok(None),
+    }
+}
+
+/// A scene whose scene.json cannot be read may still have an intact scene.ply: say so.
+fn intact_ply_hint(input: &std::path::Path, e: anyhow::Error) -> anyhow::Error {
+    let ply = input.join("scene.ply");
+    if input.is_dir() && ply.is_file() {
+        anyhow::anyhow!(
+            "{e}; its merged cloud {} is there: `dreamscene export {}` exports that",
+            ply.display(),
+            ply.display()
+        )
+    } else {
+        e
     }
 }

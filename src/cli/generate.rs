@@ -9,6 +9,7 @@ use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
 use dreamscene::plan::spec::{Layout, SceneSpec};
 use dreamscene::scene::dir::read_scene;
+use dreamscene::scene::lock::{CommitGuard, SceneLock, Wait};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
 use dreamscene::splat::Gaussians;
 use std::path::{Path, PathBuf};
@@ -34,6 +35,12 @@ pub struct GenerateArgs {
     pub env_density: f64,
     pub seed: u64,
     pub resume: bool,
+    /// Replace a scene already in `out`, whole.
+    pub force: bool,
+    /// Exit at once when another command writes `out`.
+    pub no_wait: bool,
+    /// The caller already holds `out`'s scene lock (`batch` claims a scene by locking it).
+    pub lock_held: bool,
 }
 
 /// `--prior` for a scene: auto, sd, shape or oracle:DIR (a reference scene directory).
@@ -51,41 +58,144 @@ pub fn run_with(a: GenerateArgs) -> Result<()> {
     let draft = draft_mode(&a, models.as_deref())?;
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
+    let created = !out.exists();
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let result = locked(&a, &text, draft, models.as_deref(), start);
+    if result.is_err() && created {
+        // A run that failed before writing anything leaves no empty directory behind.
+        remove_if_empty(out);
+    }
+    result
+}
+
+/// Files of a scene directory that are not the scene: the locks.
+const LOCK_FILES: [&str; 2] = [
+    dreamscene::scene::lock::LOCK_FILE,
+    dreamscene::scene::lock::COMMIT_LOCK_FILE,
+];
+
+/// The entries of `dir` other than its lock files.
+fn contents(dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut out = vec![];
+    for e in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
+        let e = e.with_context(|| format!("reading {}", dir.display()))?;
+        if !LOCK_FILES.iter().any(|l| e.file_name() == *l) {
+            out.push(e.path());
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+fn remove_if_empty(dir: &Path) {
+    if contents(dir).is_ok_and(|c| c.is_empty()) {
+        let _ = std::fs::remove_dir_all(dir);
+    }
+}
+
+/// The run, once `out` is locked and checked: a non-empty `out` that is not this run's own
+/// unfinished scene is refused (naming --resume and --force); --force empties it first.
+fn locked(
+    a: &GenerateArgs,
+    text: &str,
+    draft: bool,
+    models: Option<&Path>,
+    start: Instant,
+) -> Result<()> {
+    let out = &a.out;
+    let wait = if a.no_wait { Wait::NoWait } else { Wait::Block };
+    let command = std::env::args().collect::<Vec<_>>().join(" ");
+    let _lock = if a.lock_held {
+        None
+    } else {
+        Some(SceneLock::acquire(out, wait, &command)?)
+    };
     let existing = out.join("scene.json");
+    let found = contents(out)?;
+    if a.force {
+        // Replaced whole: nothing of the old scene stays beside the new one.
+        let _readers_out = CommitGuard::acquire(out)?;
+        for p in &found {
+            let removed = if p.is_dir() && !p.is_symlink() {
+                std::fs::remove_dir_all(p)
+            } else {
+                std::fs::remove_file(p)
+            };
+            removed.with_context(|| format!("--force: removing {}", p.display()))?;
+        }
+    } else if !found.is_empty() {
+        let own_run = out.join("spec.json").is_file() || existing.is_file();
+        if !(a.resume && own_run) {
+            let what = match read_scene(out) {
+                Ok(s) if !s.history.is_empty() => {
+                    format!("a scene with {} edits", s.history.len())
+                }
+                Ok(_) => "a scene".to_string(),
+                Err(_) => format!("{} entries", found.len()),
+            };
+            bail!(
+                "{} is not empty (it holds {what}); --resume continues an unfinished run of the \
+                 same prompt, --force replaces it, or give another --out",
+                out.display()
+            );
+        }
+    }
     let mut keep = false;
     if a.resume && existing.is_file() {
         let scene = read_scene(out).context("--resume")?;
-        if check_resume(&scene, &text, a.seed)? {
-            println!(
-                "{} is complete ({} objects); nothing to do",
-                out.display(),
-                scene.objects.len()
-            );
-            return Ok(());
+        if check_resume(&scene, text, a.seed)? {
+            let missing = dreamscene::scene::dir::missing_files(out, &scene);
+            if missing.is_empty() {
+                let redone = complete_renders(out, a)?;
+                if redone == 0 {
+                    println!(
+                        "{} is complete ({} objects); nothing to do",
+                        out.display(),
+                        scene.objects.len()
+                    );
+                } else {
+                    println!(
+                        "{}: rendered the {redone} missing views; the scene is complete",
+                        out.display()
+                    );
+                }
+                return Ok(());
+            }
+            if !scene.history.is_empty() {
+                bail!(
+                    "{}: {} missing, and the scene has {} edits that redoing it would lose; \
+                     `dreamscene edit {} undo` back to an intact state, or --force to start again",
+                    out.display(),
+                    missing.join(", "),
+                    scene.history.len(),
+                    out.display()
+                );
+            }
+            eprintln!("--resume: {} missing; redoing them", missing.join(", "));
         }
         keep = true;
     }
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     if !draft {
-        return full(&a, &text, models.as_deref(), start);
+        return full(a, text, models, start);
     }
+    let (spec, layout) = plan_or_reuse(text, a, keep)?;
+    eprintln!(
+        "plan: {} objects in {:.1} x {:.1} x {:.1} m{}",
+        layout.objects.len(),
+        layout.room.size[0],
+        layout.room.size[1],
+        layout.room.size[2],
+        super::plan::unsatisfied_note(&layout)
+    );
+    let report = write_draft_scene(out, text, a.seed, &spec, &layout, keep, &mut |l| {
+        eprintln!("{l}")
+    })?;
+    // Said once a draft is written, not before an error.
     if models.is_none() {
         eprintln!("{NO_MODELS}");
     } else {
         eprintln!("--draft: a draft scene from the shape priors, without the diffusion models");
     }
-    let (spec, layout) = plan_or_reuse(&text, &a, keep)?;
-    eprintln!(
-        "plan: {} objects in {:.1} x {:.1} x {:.1} m ({} relations unsatisfied)",
-        layout.objects.len(),
-        layout.room.size[0],
-        layout.room.size[1],
-        layout.room.size[2],
-        layout.unsatisfied.len()
-    );
-    let report = write_draft_scene(out, &text, a.seed, &spec, &layout, keep, &mut |l| {
-        eprintln!("{l}")
-    })?;
     let renders = out.join("renders");
     if a.renders > 0 {
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
@@ -162,7 +272,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             a.env_density
         );
     }
-    if a.resolution % 8 != 0 {
+    if !a.resolution.is_multiple_of(8) {
         bail!(
             "--resolution {}: the priors need a multiple of 8",
             a.resolution
@@ -265,6 +375,42 @@ pub(super) fn plan_or_reuse(
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
 }
 
+/// Renders the views `renders/cameras.json` lists that are not there (all of them, along the
+/// exploring path, when cameras.json itself is missing and views were asked for) from
+/// `scene.ply`. Returns how many were rendered.
+fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<usize> {
+    let dir = out.join("renders");
+    let cams_path = dir.join("cameras.json");
+    let cams = if cams_path.is_file() {
+        dreamscene::camera::read_cameras(&cams_path)?
+    } else if a.renders > 0 {
+        let layout = Layout::read(&out.join("layout.json"))?;
+        let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
+        render_explore(&g, &layout, a.renders, a.resolution, &dir)?;
+        return Ok(a.renders);
+    } else {
+        return Ok(0);
+    };
+    let missing: Vec<_> = cams
+        .iter()
+        .filter(|c| !dir.join(format!("{}.png", c.img_name)).is_file())
+        .collect();
+    if missing.is_empty() {
+        return Ok(0);
+    }
+    let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
+    let ctx = super::open_device()?;
+    let r = Rasterizer::new(&ctx)?;
+    let gg = GpuGaussians::upload(&ctx, &g)?;
+    for cam in &missing {
+        let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
+        let path = dir.join(format!("{}.png", cam.img_name));
+        super::create_parent(&path)?;
+        super::save_png(&img, &path)?;
+    }
+    Ok(missing.len())
+}
+
 /// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
 pub(super) fn render_explore(
     g: &Gaussians,
@@ -285,6 +431,15 @@ pub(super) fn render_explore(
         super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
     }
     Ok(())
+}
+
+fn positive_density(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 && v <= 1e6 => Ok(v),
+        _ => Err(format!(
+            "'{s}': expected a positive number of Gaussians per m² (at most 1e6)"
+        )),
+    }
 }
 
 #[derive(clap::Args)]
@@ -311,34 +466,35 @@ pub struct Args {
     #[arg(long)]
     pub draft: bool,
     /// Environment optimisation iterations.
-    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub iterations: u32,
     /// Formation (MTS) iterations per object.
-    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 1500, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub object_iterations: u32,
     /// Render size in pixels (square).
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
     pub resolution: u32,
     /// Views along the exploring path written to renders/ (0: none).
-    #[arg(long, default_value_t = 8)]
-    pub renders: usize,
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u64).range(0..=1000))]
+    pub renders: u64,
     /// Passes of the scene's reconstructive stage over its 80 views.
-    #[arg(long, default_value_t = 25)]
+    #[arg(long, default_value_t = 25, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub recon_passes: u32,
     /// Passes of each object's reconstruction fit over its 20 views.
-    #[arg(long, default_value_t = 40)]
+    #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub object_recon_passes: u32,
     /// Gaussians of each object's shape prior (default: from its surface area, 30k-60k).
-    #[arg(long)]
-    pub object_gaussians: Option<usize>,
+    #[arg(long, value_parser = clap::value_parser!(u64).range(100..=2_000_000))]
+    pub object_gaussians: Option<u64>,
     /// Environment Gaussians per square metre of wall, ceiling and floor (capped at 300k).
-    #[arg(long, default_value_t = 1500.0)]
+    #[arg(long, default_value_t = 1500.0, value_parser = positive_density)]
     pub env_density: f64,
     /// Seed of the layout and the generation.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Continue an interrupted run in --out (same prompt and seed).
-    #[arg(long)]
+    /// Continue an interrupted run in --out (same prompt and seed): every output a finished
+    /// stage promises is checked and what is missing is redone.
+    #[arg(long, conflicts_with = "force")]
     pub resume: bool,
     /// One stage of a scene spread over workers: `objects` (with --shard I/N: that shard's
     /// objects) or `scene` (environment, composition and renders once every object is there).
@@ -348,6 +504,12 @@ pub struct Args {
     /// from SLURM_ARRAY_TASK_ID/COUNT or JOB_COMPLETION_INDEX with DREAMSCENE_SHARDS).
     #[arg(long, value_parser = dreamscene::batch::shard::Shard::parse)]
     pub shard: Option<dreamscene::batch::shard::Shard>,
+    /// Replace the scene already in --out, whole (its edits and renders included).
+    #[arg(long)]
+    pub force: bool,
+    /// When another command is writing --out, exit at once naming it instead of waiting.
+    #[arg(long)]
+    pub no_wait: bool,
 }
 
 pub fn run(a: Args) -> Result<()> {
@@ -363,13 +525,16 @@ pub fn run(a: Args) -> Result<()> {
         iterations: a.iterations,
         object_iterations: a.object_iterations,
         resolution: a.resolution,
-        renders: a.renders,
+        renders: a.renders as usize,
         recon_passes: a.recon_passes,
         object_recon_passes: a.object_recon_passes,
-        object_gaussians: a.object_gaussians,
+        object_gaussians: a.object_gaussians.map(|n| n as usize),
         env_density: a.env_density,
         seed: a.seed,
         resume: a.resume,
+        force: a.force,
+        no_wait: a.no_wait,
+        lock_held: false,
     };
     match stage {
         Some(st) => super::stage::run(&args, st, shard),

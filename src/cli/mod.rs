@@ -20,6 +20,30 @@ use dreamscene::gpu::Context;
 use dreamscene::splat::raster::RenderOutput;
 use std::path::Path;
 
+/// An error and its causes in one line, each thing said once: a cause that repeats a path (or
+/// anything else) the line already holds drops the repeat.
+pub fn error_line(chain: &[String]) -> String {
+    let mut out = String::new();
+    for cause in chain {
+        let mut rest = cause.trim();
+        while let Some((head, tail)) = rest.split_once(": ") {
+            if out.contains(head.trim()) {
+                rest = tail.trim();
+            } else {
+                break;
+            }
+        }
+        if rest.is_empty() || out.contains(rest) {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push_str(": ");
+        }
+        out.push_str(rest);
+    }
+    out
+}
+
 pub fn parse_hw(s: &str) -> Result<(usize, usize), String> {
     let (h, w) = s
         .split_once(['x', 'X'])
@@ -72,6 +96,31 @@ pub fn write_png(img: &image::RgbImage, path: &Path) -> Result<()> {
     Ok(dreamscene::util::write_atomic(path, &bytes)?)
 }
 
+/// The scene directory `input` names (a directory, or its scene.json), or None for a PLY.
+fn scene_dir_of(input: &Path) -> Option<std::path::PathBuf> {
+    if input.is_dir() {
+        return Some(input.to_path_buf());
+    }
+    let json = input
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    json.then(|| match input.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    })
+}
+
+/// Runs `read` on `input` while no edit is being put in place when it is a scene, so a reader
+/// sees the scene before an edit or after it, never a mix (a PLY is read as it is).
+pub fn read_input<T>(input: &Path, read: impl FnOnce() -> Result<T>) -> Result<T> {
+    match scene_dir_of(input) {
+        Some(dir) if dir.join("scene.json").is_file() => {
+            dreamscene::edit::txn::read_consistent(&dir, read)?
+        }
+        _ => read(),
+    }
+}
+
 /// Creates the directory that will hold `file`.
 pub fn create_parent(file: &Path) -> Result<()> {
     match file.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -79,5 +128,23 @@ pub fn create_parent(file: &Path) -> Result<()> {
             std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
         }
         None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn an_error_line_says_each_path_once() {
+        let chain = [
+            "writing ro/x.spz".to_string(),
+            "ro/x.spz: Operation not permitted (os error 1)".to_string(),
+            "Operation not permitted (os error 1)".to_string(),
+        ];
+        assert_eq!(
+            super::error_line(&chain),
+            "writing ro/x.spz: Operation not permitted (os error 1)"
+        );
+        let plain = ["a: b".to_string(), "c".to_string()];
+        assert_eq!(super::error_line(&plain), "a: b: c", "distinct causes kept");
     }
 }

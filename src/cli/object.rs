@@ -117,7 +117,7 @@ pub fn filter_config(off: bool, fraction: f64, rule: &str) -> Result<Option<Filt
 pub fn models_dir(models: Option<&Path>) -> Option<PathBuf> {
     models
         .map(Path::to_path_buf)
-        .or_else(|| std::env::var_os("DREAMSCENE_MODELS").map(PathBuf::from))
+        .or_else(|| dreamscene::util::env_path("DREAMSCENE_MODELS"))
 }
 
 pub const NO_MODELS: &str = "no diffusion models found (--models DIR or DREAMSCENE_MODELS): \
@@ -198,7 +198,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
                         },
                     )
                     .map_err(anyhow::Error::msg)?;
-                    if a.config.resolution % 8 != 0 {
+                    if !a.config.resolution.is_multiple_of(8) {
                         bail!(
                             "--resolution {}: Stable Diffusion needs a multiple of 8",
                             cfg.resolution

@@ -53,9 +53,7 @@ impl LlmArgs {
         self.llm_url.map(|url| dreamscene::plan::llm::LlmConfig {
             url,
             model,
-            api_key: std::env::var("OPENAI_API_KEY")
-                .ok()
-                .filter(|k| !k.is_empty()),
+            api_key: dreamscene::util::env_var("OPENAI_API_KEY"),
             timeout: std::time::Duration::from_secs(timeout.max(1)),
             retries: 2,
         })
@@ -199,4 +197,20 @@ pub fn plan_to_dir(
         &out.join("layout.png"),
     )?;
     Ok((spec, l))
+}
+
+/// "; 1 relation unsatisfied: chair1 faces table1" (each named), or nothing when all hold.
+pub fn unsatisfied_note(l: &dreamscene::plan::spec::Layout) -> String {
+    match l.unsatisfied.len() {
+        0 => String::new(),
+        n => format!(
+            "; {n} relation{} unsatisfied: {}",
+            if n == 1 { "" } else { "s" },
+            l.unsatisfied
+                .iter()
+                .map(|r| r.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
 }

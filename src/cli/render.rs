@@ -69,7 +69,7 @@ pub fn run(a: Args) -> Result<()> {
             scene: None,
         }
     } else {
-        open_input_at(input, a.time)?
+        super::read_input(input, || Ok(open_input_at(input, a.time)?))?
     };
     let cams = cameras(&trajectory, &input.subject, a.frames, a.size)?;
     render_all(&input.cloud, &cams, &a.out, a.background)

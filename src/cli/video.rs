@@ -59,12 +59,15 @@ pub fn frame_count(seconds: f64, fps: f64) -> Result<usize> {
 
 pub fn run(a: Args) -> Result<()> {
     dreamscene::export::encode::Container::of(&a.out)?;
-    let input = open_input(&a.input)?;
     // A scene with a timeline plays it: the motion and the camera path together.
-    let animated = match &input.scene {
-        Some((dir, _)) => Some(Animated::open(dir)?).filter(|s| s.is_animated()),
-        None => None,
-    };
+    let (input, animated) = super::read_input(&a.input, || {
+        let input = open_input(&a.input)?;
+        let animated = match &input.scene {
+            Some((dir, _)) => Some(Animated::open(dir)?).filter(|s| s.is_animated()),
+            None => None,
+        };
+        Ok((input, animated))
+    })?;
     let timeline_seconds = animated
         .as_ref()
         .and_then(|s| s.scene.timeline.as_ref())

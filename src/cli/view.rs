@@ -32,8 +32,7 @@ const REQUIRED: [&str; 3] = [
 
 /// The viewer directory: `DREAMSCENE_VIEWER_DIR`, else the source tree's `viewer/`.
 pub fn viewer_dir() -> Result<PathBuf> {
-    let dir = std::env::var_os("DREAMSCENE_VIEWER_DIR")
-        .map(PathBuf::from)
+    let dir = dreamscene::util::env_path("DREAMSCENE_VIEWER_DIR")
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("viewer"));
     if !dir.join("index.html").is_file() {
         bail!(
@@ -53,7 +52,7 @@ pub fn viewer_dir() -> Result<PathBuf> {
 
 pub fn run(a: Args) -> Result<()> {
     let viewer = viewer_dir()?;
-    let input = open_input(&a.input)?;
+    let input = super::read_input(&a.input, || Ok(open_input(&a.input)?))?;
     let name = a
         .input
         .file_name()

@@ -29,16 +29,16 @@ pub enum Provider {
 pub fn library_candidates() -> Vec<(PathBuf, &'static str)> {
     let mut out = vec![];
     for var in ["DREAMSCENE_ORT_LIB", "ORT_DYLIB_PATH"] {
-        if let Some(p) = std::env::var_os(var).filter(|v| !v.is_empty()) {
-            out.push((PathBuf::from(p), var));
+        if let Some(p) = crate::util::env_path(var) {
+            out.push((p, var));
         }
     }
     let mut dirs: Vec<PathBuf> = vec![];
-    if let Some(d) = std::env::var_os("XDG_DATA_HOME").filter(|v| !v.is_empty()) {
-        dirs.push(PathBuf::from(d).join("dreamscene/onnxruntime"));
+    if let Some(d) = crate::util::env_path("XDG_DATA_HOME") {
+        dirs.push(d.join("dreamscene/onnxruntime"));
     }
-    if let Some(h) = std::env::var_os("HOME").filter(|v| !v.is_empty()) {
-        dirs.push(PathBuf::from(h).join(".local/share/dreamscene/onnxruntime"));
+    if let Some(h) = crate::util::env_path("HOME") {
+        dirs.push(h.join(".local/share/dreamscene/onnxruntime"));
     }
     if let Some(exe_dir) = std::env::current_exe()
         .ok()

@@ -75,6 +75,10 @@ const BACKGROUND: [f32; 3] = [0.0; 3];
 /// views of `renders/cameras.json` are re-rendered; without, they are left as they were.
 pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Result<Applied> {
     let dir = state.dir.as_path();
+    // An edit never writes a scene.json that could not be read back (and so not undone).
+    edit.scene
+        .validate()
+        .map_err(|m| EditError::Bad(format!("refused: {m} (nothing changed)")))?;
     let mut next = state.clone();
     next.scene = edit.scene.clone();
     let composed = next.compose(&edit.files)?;

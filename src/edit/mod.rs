@@ -30,6 +30,8 @@ pub enum EditError {
     #[error(transparent)]
     Scene(#[from] crate::scene::dir::SceneError),
     #[error(transparent)]
+    Lock(#[from] crate::scene::lock::LockError),
+    #[error(transparent)]
     Ply(#[from] crate::splat::ply::PlyError),
     #[error("GPU: {0}")]
     Gpu(String),

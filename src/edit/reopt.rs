@@ -77,7 +77,7 @@ pub(super) enum ScenePrior {
 
 /// The scene's prior as scene.json records it ([`PriorSpec::from_record`]).
 pub(super) fn scene_prior(state: &SceneState) -> Result<ScenePrior> {
-    let env = std::env::var("DREAMSCENE_MODELS").ok().map(PathBuf::from);
+    let env = crate::util::env_var("DREAMSCENE_MODELS").map(PathBuf::from);
     match PriorSpec::from_record(&state.scene.prior, env) {
         Ok((PriorSpec::Sd, Some(m))) => Ok(ScenePrior::Sd(m)),
         Ok((PriorSpec::Oracle(r), _)) => Ok(ScenePrior::Oracle(r)),

@@ -1,5 +1,5 @@
 //! The video frame loop: each frame asks a [`FrameSource`] for the Gaussians at its time,
-//! renders them on the engine from its camera and hands the image to a [`VideoSink`]; with a
+//! renders them on the engine from its camera and hands the image to a [`VideoSink`](super::encode::VideoSink); with a
 //! depth path, the expected depth goes to a second video beside the colour one.
 //!
 //! A static scene is one cloud, uploaded once; an animated one (a `scene.json` timeline) gives a

@@ -132,9 +132,7 @@ unsafe extern "system" fn on_message(
 }
 
 fn env_flag(name: &str) -> Option<bool> {
-    std::env::var(name)
-        .ok()
-        .map(|v| !matches!(v.trim(), "" | "0" | "false" | "no" | "off"))
+    crate::util::env_var(name).map(|v| !matches!(v.trim(), "" | "0" | "false" | "no" | "off"))
 }
 
 fn type_rank(t: vk::PhysicalDeviceType) -> u32 {
@@ -167,9 +165,7 @@ impl Context {
     fn open(min_subgroup: Option<u32>) -> Result<Self> {
         let want_validation = env_flag("DREAMSCENE_VALIDATION").unwrap_or(cfg!(debug_assertions));
         let require_validation = env_flag("DREAMSCENE_REQUIRE_VALIDATION").unwrap_or(false);
-        let selector = std::env::var("DREAMSCENE_DEVICE")
-            .ok()
-            .filter(|s| !s.trim().is_empty());
+        let selector = crate::util::env_var("DREAMSCENE_DEVICE");
         Self::create(
             want_validation,
             require_validation,

@@ -30,7 +30,9 @@ impl Canvas {
     }
 
     fn line(&mut self, a: [f64; 2], b: [f64; 2], c: Rgb<u8>, width: f64) {
-        let (pa, pb) = (self.to_px(a), self.to_px(b));
+        let Some((pa, pb)) = self.clip(self.to_px(a), self.to_px(b), width) else {
+            return;
+        };
         let len = ((pb[0] - pa[0]).powi(2) + (pb[1] - pa[1]).powi(2)).sqrt();
         let steps = (len * 2.0).ceil().max(1.0) as usize;
         let r = (width / 2.0).ceil() as i64;
@@ -48,8 +50,45 @@ impl Canvas {
         }
     }
 
+    /// The part of the pixel segment a-b that lies on the image (grown by `width`), so that a
+    /// line's cost is bounded by the image's size, not by how far off it an end lies (an object
+    /// moved by hand to x = 1e8). None when none of it does.
+    fn clip(&self, a: [f64; 2], b: [f64; 2], width: f64) -> Option<([f64; 2], [f64; 2])> {
+        let lo = -width - 1.0;
+        let hi = [
+            self.img.width() as f64 + width + 1.0,
+            self.img.height() as f64 + width + 1.0,
+        ];
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        for k in 0..2 {
+            for (p, q) in [(-d[k], a[k] - lo), (d[k], hi[k] - a[k])] {
+                if p == 0.0 {
+                    if q < 0.0 {
+                        return None;
+                    }
+                } else {
+                    let r = q / p;
+                    if p < 0.0 {
+                        t0 = t0.max(r);
+                    } else {
+                        t1 = t1.min(r);
+                    }
+                }
+            }
+        }
+        if t0.is_nan() || t1.is_nan() || t0 > t1 {
+            return None;
+        }
+        let at = |t: f64| [a[0] + d[0] * t, a[1] + d[1] * t];
+        Some((at(t0), at(t1)))
+    }
+
     /// A one-pixel line between pixel positions.
     fn px_line(&mut self, a: [f64; 2], b: [f64; 2], c: Rgb<u8>) {
+        let Some((a, b)) = self.clip(a, b, 1.0) else {
+            return;
+        };
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
         let steps = (len * 2.0).ceil().max(1.0) as usize;
         for k in 0..=steps {
@@ -79,8 +118,12 @@ impl Canvas {
     fn fill_box(&mut self, b: &Box2, c: Rgb<u8>) {
         let [x0, y0, x1, y1] = b.aabb();
         let (p0, p1) = (self.to_px([x0, y1]), self.to_px([x1, y0]));
-        for py in p0[1].floor() as i64..=p1[1].ceil() as i64 {
-            for px in p0[0].floor() as i64..=p1[0].ceil() as i64 {
+        // Only the pixels on the image are visited, however far off it the box lies.
+        let (w, h) = (self.img.width() as f64, self.img.height() as f64);
+        let ys = p0[1].floor().max(0.0) as i64..=p1[1].ceil().min(h) as i64;
+        let xs = p0[0].floor().max(0.0) as i64..=p1[0].ceil().min(w) as i64;
+        for py in ys {
+            for px in xs.clone() {
                 let w = [
                     self.origin[0] + (px as f64 + 0.5 - MARGIN) / self.scale,
                     self.origin[1]
@@ -341,6 +384,23 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
     }
     draw_openings(&mut cv, l);
     cv.text([0.0, -hd - 14.0 / scale], &caption(l), outline);
+    if l.objects.iter().any(|o| o.placed_by == PlacedBy::Fallback) {
+        // The key to the red outlines, in the top margin.
+        let red = Rgb([200, 30, 30]);
+        for k in 0..4 {
+            cv.px_line(
+                [4.0, 4.0 + k as f64 * 2.0],
+                [20.0, 4.0 + k as f64 * 2.0],
+                red,
+            );
+        }
+        cv.px_text(
+            24,
+            4,
+            "red outline: placed by fallback (a relation relaxed)",
+            red,
+        );
+    }
     cv.img
 }
 

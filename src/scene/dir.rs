@@ -14,6 +14,29 @@ use std::path::{Path, PathBuf};
 /// The `scene.json` version this build reads and writes.
 pub const VERSION: u32 = 1;
 
+/// Bounds on what `scene.json` may say (metres, degrees, seconds): values outside them are
+/// refused in one line before any work, so no loop's cost follows a hand-edited coordinate.
+pub const MIN_ROOM: f64 = 0.1;
+pub const MAX_ROOM: f64 = 1000.0;
+/// How far outside its room (or ground area) an instance may stand.
+pub const MAX_OUTSIDE: f64 = 10.0;
+pub const MAX_SCALE: f64 = 1000.0;
+pub const MAX_YAW: f64 = 1e6;
+pub const MAX_SECONDS: f64 = 3600.0;
+pub const MAX_FPS: f64 = 240.0;
+
+/// How far `p` lies outside the room of size `room` (centred on the origin, floor at z = 0),
+/// metres; 0 inside.
+pub fn outside_room(room: [f64; 3], p: [f64; 3]) -> f64 {
+    let gap = |v: f64, lo: f64, hi: f64| (lo - v).max(v - hi).max(0.0);
+    let g = [
+        gap(p[0], -0.5 * room[0], 0.5 * room[0]),
+        gap(p[1], -0.5 * room[1], 0.5 * room[1]),
+        gap(p[2], 0.0, room[2]),
+    ];
+    (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt()
+}
+
 /// `scene.json`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SceneFile {
@@ -159,6 +182,15 @@ impl SceneFile {
                 self.version
             ));
         }
+        let room = self.room.size;
+        if !room
+            .iter()
+            .all(|v| v.is_finite() && (MIN_ROOM..=MAX_ROOM).contains(v))
+        {
+            return Err(format!(
+                "room size {room:?} is outside {MIN_ROOM} to {MAX_ROOM} m a side"
+            ));
+        }
         let mut ids = std::collections::HashSet::new();
         for o in &self.objects {
             if !ids.insert(o.id.as_str()) {
@@ -170,6 +202,58 @@ impl SceneFile {
             }
             if o.scale.contains(&0.0) {
                 return Err(format!("instance `{}` has a zero scale", o.id));
+            }
+            if !o
+                .scale
+                .iter()
+                .all(|s| (1.0 / MAX_SCALE..=MAX_SCALE).contains(&s.abs()))
+            {
+                return Err(format!(
+                    "instance `{}` has scale {:?}, outside 1/{MAX_SCALE} to {MAX_SCALE}",
+                    o.id, o.scale
+                ));
+            }
+            if o.yaw.abs() > MAX_YAW {
+                return Err(format!(
+                    "instance `{}` has yaw {} degrees (at most {MAX_YAW} either way)",
+                    o.id, o.yaw
+                ));
+            }
+            let out = outside_room(room, o.position);
+            if out > MAX_OUTSIDE {
+                return Err(format!(
+                    "instance `{}` at ({:.1}, {:.1}, {:.1}) is {out:.1} m outside the {:.1} x \
+                     {:.1} x {:.1} m room (at most {MAX_OUTSIDE} m); move it back in scene.json",
+                    o.id, o.position[0], o.position[1], o.position[2], room[0], room[1], room[2]
+                ));
+            }
+        }
+        if let Some(t) = &self.timeline {
+            if !(t.duration.is_finite() && (0.0..=MAX_SECONDS).contains(&t.duration)) {
+                return Err(format!(
+                    "timeline duration {} s is outside 0 to {MAX_SECONDS} s",
+                    t.duration
+                ));
+            }
+            if !(t.fps.is_finite() && (1.0..=MAX_FPS).contains(&t.fps)) {
+                return Err(format!("timeline fps {} is outside 1 to {MAX_FPS}", t.fps));
+            }
+            for track in &t.tracks {
+                for k in &track.keys {
+                    let finite = k.position.iter().chain(&k.scale).all(|v| v.is_finite())
+                        && k.yaw.is_finite()
+                        && k.t.is_finite();
+                    if !finite
+                        || !(0.0..=MAX_SECONDS).contains(&k.t)
+                        || outside_room(room, k.position) > MAX_OUTSIDE
+                    {
+                        return Err(format!(
+                            "timeline key of `{}` at t = {} is not finite, or outside the \
+                             timeline or the room",
+                            track.id, k.t
+                        ));
+                    }
+                }
             }
         }
         Ok(())
@@ -249,6 +333,25 @@ fn looks_like(v: &Value) -> Option<&'static str> {
     } else {
         None
     }
+}
+
+/// The files `scene.json` promises that are not in `dir`: every instance's object PLY, the
+/// environment PLY (once its stage is done) and `scene.ply`, each named once, relative to `dir`.
+pub fn missing_files(dir: &Path, scene: &SceneFile) -> Vec<String> {
+    let mut promised: Vec<&str> = scene.objects.iter().map(|o| o.ply.as_str()).collect();
+    if let Some(env) = &scene.environment {
+        if !scene.stage_pending("environment") {
+            promised.push(&env.ply);
+        }
+    }
+    promised.push("scene.ply");
+    let mut missing: Vec<String> = vec![];
+    for rel in promised {
+        if !dir.join(rel).is_file() && !missing.iter().any(|m| m == rel) {
+            missing.push(rel.to_string());
+        }
+    }
+    missing
 }
 
 /// Writes `dir/scene.json` atomically (a temporary sibling renamed over it).

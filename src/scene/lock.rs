@@ -93,6 +93,73 @@ impl Drop for SceneLock {
     }
 }
 
+/// The file that orders a scene's commits against its readers (`DIR/.commit.lock`).
+///
+/// A writer holds [`SceneLock`] for its whole run (minutes with the sd prior) but changes the
+/// files the readers see only while it applies a committed journal (milliseconds): it holds
+/// this file's lock exclusively then ([`CommitGuard`]), and `render`, `video`, `export` and
+/// `view` hold it shared while they read the scene's files ([`ReadGuard`]), so a reader sees
+/// the scene before an edit or after it, never a mix, and never waits for a whole edit.
+pub const COMMIT_LOCK_FILE: &str = ".commit.lock";
+
+/// Held exclusively while a writer puts a committed edit in place; dropping it lets readers in.
+#[derive(Debug)]
+pub struct CommitGuard {
+    _file: File,
+}
+
+/// Held shared while a reader reads a scene's files; dropping it lets writers commit.
+#[derive(Debug)]
+pub struct ReadGuard {
+    _file: Option<File>,
+}
+
+fn open_commit_lock(dir: &Path, create: bool) -> Result<File, LockError> {
+    let path = dir.join(COMMIT_LOCK_FILE);
+    OpenOptions::new()
+        .read(true)
+        .write(create)
+        .create(create)
+        .truncate(false)
+        .open(&path)
+        .map_err(|e| LockError::Io {
+            path: path.display().to_string(),
+            msg: e.to_string(),
+        })
+}
+
+impl CommitGuard {
+    /// Waits until no reader is reading `dir`, then keeps them out until dropped.
+    pub fn acquire(dir: &Path) -> Result<CommitGuard, LockError> {
+        let file = open_commit_lock(dir, true)?;
+        file.lock().map_err(|e| LockError::Io {
+            path: dir.join(COMMIT_LOCK_FILE).display().to_string(),
+            msg: e.to_string(),
+        })?;
+        Ok(CommitGuard { _file: file })
+    }
+}
+
+impl ReadGuard {
+    /// Waits until no writer is putting an edit in place in `dir`, then keeps writers from
+    /// doing so until dropped. A scene nobody may write (a read-only directory without the
+    /// lock file) needs no guard: the guard is then empty.
+    pub fn acquire(dir: &Path) -> Result<ReadGuard, LockError> {
+        let file = match open_commit_lock(dir, true) {
+            Ok(f) => f,
+            Err(_) => match open_commit_lock(dir, false) {
+                Ok(f) => f,
+                Err(_) => return Ok(ReadGuard { _file: None }),
+            },
+        };
+        file.lock_shared().map_err(|e| LockError::Io {
+            path: dir.join(COMMIT_LOCK_FILE).display().to_string(),
+            msg: e.to_string(),
+        })?;
+        Ok(ReadGuard { _file: Some(file) })
+    }
+}
+
 /// Who holds the lock, as its note says ("pid N (command)"), or "another process".
 fn holder_of(file: &mut File) -> String {
     let mut s = String::new();
@@ -128,6 +195,21 @@ mod tests {
         let again = SceneLock::acquire(&dir, Wait::NoWait, "edit restyle");
         assert!(again.is_ok(), "released lock can be taken again");
         drop(again);
+        // Readers share the commit lock; a committing writer excludes them.
+        let r1 = ReadGuard::acquire(&dir).expect("first reader");
+        let r2 = ReadGuard::acquire(&dir).expect("readers share");
+        let f = open_commit_lock(&dir, true).expect("lock file");
+        assert!(
+            matches!(f.try_lock(), Err(TryLockError::WouldBlock)),
+            "a commit waits for the readers"
+        );
+        drop((r1, r2));
+        let c = CommitGuard::acquire(&dir).expect("commit after the readers");
+        assert!(
+            matches!(f.try_lock_shared(), Err(TryLockError::WouldBlock)),
+            "a reader waits for the commit"
+        );
+        drop(c);
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -68,15 +68,18 @@ pub fn archetype_names() -> &'static [&'static str] {
     &archetypes::NAMES
 }
 
-/// The archetype of a category (its name or a synonym) through the knowledge base; unknown
-/// categories get [`DEFAULT_ARCHETYPE`].
+/// The archetype of a category (its name or a synonym) through the knowledge base: the one its
+/// row names, else the one its words suggest; unknown categories get [`DEFAULT_ARCHETYPE`].
 pub fn archetype_of(category: &str) -> &'static str {
     let name = category.trim().to_lowercase();
-    KnowledgeBase::builtin()
-        .object(&name)
-        .and_then(|o| archetypes::NAMES.iter().find(|n| **n == o.archetype))
-        .copied()
-        .unwrap_or(DEFAULT_ARCHETYPE)
+    match KnowledgeBase::builtin().object(&name) {
+        Some(o) => archetypes::NAMES
+            .iter()
+            .find(|n| **n == o.archetype)
+            .copied()
+            .unwrap_or_else(|| archetype_by_keyword(&o.category)),
+        None => DEFAULT_ARCHETYPE,
+    }
 }
 
 /// The archetype a category name suggests by its words, for knowledge-base rows without an
@@ -234,4 +237,22 @@ fn sample(
 fn norm3(a: [f64; 3]) -> [f64; 3] {
     let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
     a.map(|v| v / l)
+}
+
+#[cfg(test)]
+mod kb_tests {
+    use super::*;
+
+    #[test]
+    fn every_knowledge_base_row_names_a_known_archetype() {
+        for o in &KnowledgeBase::builtin().objects {
+            assert!(
+                archetypes::NAMES.contains(&o.archetype.as_str()),
+                "objects.txt: `{}` names unknown archetype `{}`",
+                o.category,
+                o.archetype
+            );
+        }
+        assert_eq!(archetype_by_keyword("desk chair"), "chair", "by words");
+    }
 }

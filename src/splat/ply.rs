@@ -1,6 +1,6 @@
 //! INRIA 3DGS splat PLY: binary little-endian, one `vertex` element of float properties
 //! `x y z nx ny nz f_dc_0..2 f_rest_* opacity scale_0..2 rot_0..3`; `f_rest` is channel-major.
-//! Reads SH degree 0 to 3 in any property order, in any PLY encoding (see [`read`]); writes the
+//! Reads SH degree 0 to 3 in any property order, in any PLY encoding (see `read`); writes the
 //! standard order.
 mod header;
 mod read;

@@ -1,6 +1,6 @@
 //! The CPU reference of the backward pass in plain Rust and f64: gradients of a loss given
 //! dL/d(pixel colour) with respect to every raw Gaussian parameter. The GPU backward must match
-//! it; it is itself checked against central finite differences of [`reference::render_with`]
+//! it; it is itself checked against central finite differences of [`super::reference::render_with`]
 //! in smooth mode.
 //!
 //! Two stages, as on the GPU: the blend backward gives each Gaussian's screen-space gradient
@@ -287,7 +287,7 @@ pub fn sh_basis_grad(degree: u32, d: [f64; 3]) -> Vec<[f64; 3]> {
 }
 
 /// Derivative of a loss through the rotation matrix of a normalised quaternion (w, x, y, z):
-/// `gr = dL/dR` (rows as in [`reference::quat_to_mat`]), returns dL/d(normalised quaternion).
+/// `gr = dL/dR` (rows as in [`super::reference::quat_to_mat`]), returns dL/d(normalised quaternion).
 pub fn quat_mat_backward(q: [f64; 4], gr: &M3) -> [f64; 4] {
     let [r, x, y, z] = q;
     let g = gr;
@@ -309,7 +309,7 @@ pub fn quat_mat_backward(q: [f64; 4], gr: &M3) -> [f64; 4] {
 }
 
 /// The projection backward of Gaussian `i`: from its screen-space gradient to its raw parameters.
-/// The Gaussian must be projectable ([`reference::project_raw`] not `None`).
+/// The Gaussian must be projectable ([`super::reference::project_raw`] not `None`).
 pub fn project_backward(g: &Gaussians, i: usize, cam: &Camera, g2: &Grad2d) -> ParamGrad {
     let (rcw, t) = cam.world_to_camera();
     let m = g.means[i].map(f64::from);

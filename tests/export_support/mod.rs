@@ -317,7 +317,7 @@ pub fn rename_extension_attributes(glb: &[u8]) -> Vec<u8> {
     let mut json = json
         .replace("\"KHR_gaussian_splatting:", "\"_KHR_gaussian_splatting_")
         .into_bytes();
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
     let bin = &glb[20 + json_len..];

@@ -1,0 +1,272 @@
+//! Nothing lost, through the command line: `generate --out` onto a scene refuses (naming
+//! --resume and --force), --force replaces it whole, a failed run leaves no directory, --resume
+//! renders the views cameras.json lists that are missing, a second writer with --no-wait names
+//! the holder, empty environment variables mean unset, values out of bounds in scene.json are
+//! refused in one line naming the instance, and messages say each path once.
+use dreamscene::scene::dir::read_scene;
+use dreamscene::scene::lock::{SceneLock, Wait};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("ds-lost-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn run(args: &[&str], env: &[(&str, &str)]) -> Output {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_dreamscene"));
+    c.env_remove("DREAMSCENE_MODELS").args(args);
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    c.output().expect("run dreamscene")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).to_string()
+}
+
+const PROMPT: &str = "a small bedroom with a bed and a desk";
+
+/// A draft at the smallest sizes, with `renders` views of 16 pixels.
+fn draft(out: &Path, renders: &str, extra: &[&str]) -> Output {
+    let o = out.to_string_lossy().to_string();
+    let mut args = vec![
+        "generate",
+        PROMPT,
+        "--out",
+        &o,
+        "--renders",
+        renders,
+        "--resolution",
+        "16",
+    ];
+    args.extend_from_slice(extra);
+    run(&args, &[])
+}
+
+#[test]
+fn generate_refuses_an_existing_scene_force_replaces_it_whole_and_failures_leave_nothing() {
+    let root = tmp("overwrite");
+    let out = root.join("scene");
+    let o = draft(&out, "0", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let before = std::fs::read(out.join("scene.json")).expect("scene.json");
+    std::fs::write(out.join("notes.txt"), "mine").expect("a stray file");
+    let o = draft(&out, "0", &[]);
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused");
+    assert!(
+        err.contains("--resume") && err.contains("--force") && err.lines().count() == 1,
+        "one line naming --resume and --force: {err}"
+    );
+    assert_eq!(
+        std::fs::read(out.join("scene.json")).expect("scene.json"),
+        before,
+        "nothing changed"
+    );
+    let o = draft(&out, "0", &["--force"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        !out.join("notes.txt").exists(),
+        "--force leaves no stale file"
+    );
+    assert!(out.join("scene.json").is_file(), "the new scene");
+    // A prompt that cannot be planned leaves no directory behind.
+    let bad = root.join("bad");
+    let b = bad.to_string_lossy().to_string();
+    let o = run(&["generate", "asdf qwerty zxcv", "--out", &b], &[]);
+    assert!(!o.status.success(), "refused");
+    assert!(!bad.exists(), "no empty output directory: {}", stderr(&o));
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn resume_renders_the_views_cameras_json_lists_that_are_missing() {
+    let root = tmp("resume");
+    let out = root.join("scene");
+    let o = draft(&out, "3", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let cams = dreamscene::camera::read_cameras(&out.join("renders/cameras.json")).expect("cams");
+    assert_eq!(cams.len(), 3, "three views listed");
+    let png = |i: usize| out.join(format!("renders/{}.png", cams[i].img_name));
+    let kept = std::fs::read(png(0)).expect("first view");
+    // As if killed during the render stage: two of the three views are missing.
+    std::fs::remove_file(png(1)).expect("remove");
+    std::fs::remove_file(png(2)).expect("remove");
+    let o = draft(&out, "3", &["--resume"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.contains('2'), "says it rendered 2: {said}");
+    for i in 0..3 {
+        assert!(png(i).is_file(), "view {i} there after --resume");
+    }
+    assert_eq!(
+        std::fs::read(png(0)).expect("first"),
+        kept,
+        "present views kept"
+    );
+    // A missing object PLY of an unedited scene is made again.
+    let ply = out.join(&read_scene(&out).expect("scene").objects[0].ply);
+    std::fs::remove_file(&ply).expect("remove");
+    let o = draft(&out, "3", &["--resume"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(ply.is_file(), "{} made again", ply.display());
+    let o = draft(&out, "3", &["--resume"]);
+    assert!(
+        String::from_utf8_lossy(&o.stdout).contains("nothing to do"),
+        "complete now"
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn a_second_writer_waits_or_with_no_wait_names_the_holder() {
+    let root = tmp("busy");
+    let out = root.join("scene");
+    let o = draft(&out, "0", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let held = SceneLock::acquire(&out, Wait::NoWait, "a test holding the scene").expect("lock");
+    let d = out.to_string_lossy().to_string();
+    let o = run(
+        &["edit", &d, "--no-wait", "move", "bed1", "--by", "0.1,0"],
+        &[],
+    );
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused while held");
+    assert!(
+        err.contains("a test holding the scene") && err.contains(&std::process::id().to_string()),
+        "names the holder's pid and command: {err}"
+    );
+    let o = draft(&out, "0", &["--resume", "--no-wait"]);
+    assert!(!o.status.success(), "generate --resume refused too");
+    assert!(
+        stderr(&o).contains("a test holding the scene"),
+        "{}",
+        stderr(&o)
+    );
+    drop(held);
+    let o = run(
+        &[
+            "edit",
+            &d,
+            "--no-wait",
+            "move",
+            "bed1",
+            "--by",
+            "0.1,0",
+            "--force",
+            "--no-render",
+        ],
+        &[],
+    );
+    assert!(o.status.success(), "admitted once released: {}", stderr(&o));
+    let h = run(&["edit", &d, "history"], &[]);
+    let text = String::from_utf8_lossy(&h.stdout).to_string();
+    assert_eq!(
+        text.trim(),
+        "1 move bed1 --by 0.1,0",
+        "one short line an edit"
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn empty_environment_variables_mean_unset() {
+    let root = tmp("env");
+    let out = root.join("scene");
+    let o = out.to_string_lossy().to_string();
+    let empty = [
+        ("DREAMSCENE_MODELS", ""),
+        ("DREAMSCENE_LLM_URL", ""),
+        ("DREAMSCENE_LLM_MODEL", ""),
+        ("DREAMSCENE_DEVICE", ""),
+        ("OPENAI_API_KEY", ""),
+    ];
+    // With DREAMSCENE_LLM_URL empty the planner stays offline (no request anywhere) and with
+    // DREAMSCENE_MODELS empty the scene is a draft.
+    let g = run(&["generate", PROMPT, "--out", &o, "--renders", "0"], &empty);
+    assert!(g.status.success(), "{}", stderr(&g));
+    assert_eq!(read_scene(&out).expect("scene").prior.kind, "shape");
+    let d = run(&["doctor"], &empty);
+    assert!(
+        !stderr(&d).contains("a value is required"),
+        "{}",
+        stderr(&d)
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn out_of_bounds_values_are_refused_in_one_line_and_messages_say_each_path_once() {
+    let root = tmp("bounds");
+    let out = root.join("scene");
+    let o = draft(&out, "0", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let d = out.to_string_lossy().to_string();
+    // A move that would put the bed 150 m outside the room is refused even with --force.
+    let o = run(
+        &[
+            "edit",
+            &d,
+            "move",
+            "bed1",
+            "--by",
+            "150,0",
+            "--force",
+            "--no-render",
+        ],
+        &[],
+    );
+    assert!(!o.status.success(), "refused");
+    assert!(stderr(&o).contains("outside the"), "{}", stderr(&o));
+    // The same position written by hand is named before any work, in one line.
+    let path = out.join("scene.json");
+    let mut v: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&path).expect("read")).expect("json");
+    let objects = v["objects"].as_array_mut().expect("objects");
+    let i = objects
+        .iter()
+        .position(|o| o["id"] == "bed1")
+        .expect("bed1");
+    objects[i]["position"][0] = serde_json::json!(1e8);
+    std::fs::write(&path, serde_json::to_vec(&v).expect("json")).expect("write");
+    let start = std::time::Instant::now();
+    let o = run(
+        &["edit", &d, "move", "bed1", "--by", "0.1,0", "--no-render"],
+        &[],
+    );
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused");
+    assert!(
+        err.contains("bed1") && err.contains("outside") && err.lines().count() == 1,
+        "{err}"
+    );
+    assert!(start.elapsed().as_secs() < 5, "at once");
+    // export names the intact scene.ply beside a scene.json it cannot use.
+    let x = root.join("x.spz").to_string_lossy().to_string();
+    let o = run(&["export", &d, "--out", &x], &[]);
+    assert!(
+        stderr(&o).contains("scene.ply") && stderr(&o).contains("dreamscene export"),
+        "{}",
+        stderr(&o)
+    );
+    // --format from the extension, and a write error naming its path once.
+    let ply = out.join("scene.ply").to_string_lossy().to_string();
+    let o = run(&["export", &ply, "--out", &x], &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let blocked = root.join("file");
+    std::fs::write(&blocked, "not a directory").expect("write");
+    let y = blocked.join("y.spz").to_string_lossy().to_string();
+    let o = run(&["export", &ply, "--out", &y], &[]);
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused");
+    let name = blocked.to_string_lossy().to_string();
+    assert!(
+        err.matches(name.as_str()).count() == 1,
+        "the path once: {err}"
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
