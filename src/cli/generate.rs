@@ -3,7 +3,7 @@
 //! scene stages are refused with a one-line reason.
 use super::object::{models_dir, PriorChoice, NO_MODELS};
 use anyhow::{bail, Context as _, Result};
-use dreamscene::camera::scene::{explore_path, SceneBox};
+use dreamscene::camera::scene::{render_views, SceneBox};
 use dreamscene::camera::write_cameras;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
@@ -97,8 +97,12 @@ pub fn run_with(a: GenerateArgs) -> Result<()> {
     let renders = out.join("renders");
     if a.renders > 0 {
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_explore(&g, &layout, a.renders, a.resolution, &renders)?;
-        eprintln!("renders: {} views along the exploring path", a.renders);
+        render_chosen(&g, &layout, a.renders, a.resolution, &renders)?;
+        eprintln!(
+            "renders: {} views chosen by what they show; contact sheet {}/overview.png",
+            a.renders,
+            renders.display()
+        );
     }
     println!(
         "draft scene: {} objects ({} categories), {} Gaussians ({} environment) in {:.1} s; \
@@ -230,7 +234,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         .with_context(|| format!("writing {}", scene_path.display()))?;
     dreamscene::scene::dir::write_scene(out, &scene)?;
     if a.renders > 0 {
-        render_explore(
+        render_chosen(
             &composed,
             &layout,
             a.renders,
@@ -264,8 +268,9 @@ fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpe
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
 }
 
-/// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
-fn render_explore(
+/// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
+/// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
+fn render_chosen(
     g: &Gaussians,
     layout: &Layout,
     count: usize,
@@ -273,17 +278,24 @@ fn render_explore(
     dir: &Path,
 ) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let cams = explore_path(&SceneBox::from_layout(layout), count, res, res);
+    let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
     let ctx = super::open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
+    let mut shots = vec![];
     for cam in &cams {
         let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
         super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        shots.push(img);
     }
-    Ok(())
+    let tiles: Vec<_> = shots
+        .iter()
+        .map(|i| (i.width, i.height, i.color.as_slice()))
+        .collect();
+    let sheet = dreamscene::util::contact_sheet(&tiles, 4, 256);
+    super::write_png(&sheet, &dir.join("overview.png"))
 }
 
 #[derive(clap::Args)]

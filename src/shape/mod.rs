@@ -15,10 +15,13 @@
 mod appliances;
 mod archetypes;
 mod cases;
+pub mod functions;
 mod furniture;
 pub mod materials;
 mod more;
 pub mod parts;
+mod structures;
+mod things;
 
 pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
 pub use parts::{Part, Primitive};
