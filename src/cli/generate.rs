@@ -1,5 +1,5 @@
 //! `dreamscene generate`: a scene directory from a sentence. This build makes the draft (shape
-//! priors, initial environment, composition, renders along an exploring path); the optimising
+//! priors, initial environment, composition, renders chosen by what they show); the optimising
 //! scene stages are refused with a one-line reason.
 use super::object::{models_dir, PriorChoice, NO_MODELS};
 use anyhow::{bail, Context as _, Result};
@@ -330,7 +330,7 @@ pub struct Args {
     /// Render size in pixels (square).
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
     pub resolution: u32,
-    /// Views along the exploring path written to renders/ (0: none).
+    /// Views chosen by what they show written to renders/, with overview.png (0: none).
     #[arg(long, default_value_t = 8)]
     pub renders: usize,
     /// Passes of the scene's reconstructive stage over its 80 views.

@@ -57,9 +57,18 @@ pub fn water(b: &mut Builder) {
         // A ring wall (outer side, top, inner side down to the water) and the water disc.
         let ri = (hw - rim) / hw;
         let ay = hd / hw;
-        let ring = vec![[ri * hw, surface], [ri * hw, wall], [hw, wall], [hw, 0.0]];
+        // A closed solid of revolution from the axis: base, outer wall, rim top, inner wall down
+        // to the water level, and the water's bed there.
+        let ring = vec![
+            [0.0, 0.0],
+            [hw, 0.0],
+            [hw, wall],
+            [ri * hw, wall],
+            [ri * hw, surface - 0.01],
+            [0.0, surface - 0.01],
+        ];
         b.revolved(Top, 0, [0.0, 0.0, 0.0], IDENTITY, ay, ring);
-        b.frustum(Water, [0.0, 0.0, surface - 0.01], ri * hw, ri * hd, 1.0, 0.01);
+        b.frustum(Water, [0.0, 0.0, surface - 0.01], ri * hw, ri * hd, 1.0, 0.012);
     } else {
         b.cuboid(Water, [-hw + rim, -hd + rim, surface - 0.01], [hw - rim, hd - rim, surface]);
         for (lo, hi) in [

@@ -165,27 +165,41 @@ pub fn dispenser(b: &mut Builder) {
     b.frustum(Glass, [0.0, 0.0, h - 0.06 * h], r, r, 0.6, 0.06 * h);
 }
 
-/// A four-legged animal at the planned size, facing +y: body, neck and head, tail.
+/// A four-legged animal at the planned size: body, neck and head, tail. It stands along the
+/// longer side of its footprint, head towards +y (or +x when wider than deep: a rocking horse).
 pub fn quadruped(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let along_x = b.w > b.d;
+    // Lay the animal out in (across, along) coordinates, then map them to the object frame.
+    let (ha, hl, h) = if along_x {
+        (b.d / 2.0, b.w / 2.0, b.h)
+    } else {
+        (b.w / 2.0, b.d / 2.0, b.h)
+    };
+    let map = |p: [f64; 3]| if along_x { [p[1], -p[0], p[2]] } else { p };
+    let rad = |r: [f64; 3]| if along_x { [r[1], r[0], r[2]] } else { r };
     let leg_h = 0.5 * h;
-    let lr = (0.16 * hw).min(0.05 * b.d).max(0.01);
+    let lr = (0.16 * ha).min(0.05 * 2.0 * hl).max(0.01);
     for sx in [-1.0, 1.0] {
-        for y in [-0.62 * hd, 0.55 * hd] {
-            b.frustum(Body, [sx * 0.5 * hw, y, 0.0], lr, lr, 1.3, leg_h + 0.05 * h);
+        for y in [-0.62 * hl, 0.55 * hl] {
+            b.frustum(Body, map([sx * 0.5 * ha, y, 0.0]), lr, lr, 1.3, leg_h + 0.05 * h);
         }
     }
     let bz = leg_h + 0.16 * h;
-    b.ellipsoid(Body, [0.0, -0.05 * hd, bz], [0.92 * hw, 0.7 * hd, 0.2 * h]);
-    let neck0 = [0.0, 0.55 * hd, bz + 0.05 * h];
-    let head = [0.0, 0.82 * hd, 0.86 * h];
-    b.rod(Body, neck0, head, 0.45 * hw);
-    b.ellipsoid(Body, head, [0.5 * hw, 0.18 * hd, 0.09 * h]);
+    b.ellipsoid(Body, map([0.0, -0.05 * hl, bz]), rad([0.92 * ha, 0.7 * hl, 0.2 * h]));
+    let neck0 = map([0.0, 0.55 * hl, bz + 0.05 * h]);
+    let head = [0.0, 0.82 * hl, 0.86 * h];
+    b.rod(Body, neck0, map(head), 0.45 * ha);
+    b.ellipsoid(Body, map(head), rad([0.5 * ha, 0.18 * hl, 0.09 * h]));
     for sx in [-1.0, 1.0] {
-        b.ellipsoid(Body, [sx * 0.3 * hw, 0.78 * hd, 0.96 * h], [0.1 * hw, 0.04 * hd, 0.04 * h]);
-        b.ellipsoid(Interior, [sx * 0.25 * hw, 0.88 * hd, 0.9 * h], [0.05 * hw, 0.02 * hd, 0.02 * h]);
+        b.ellipsoid(Body, map([sx * 0.3 * ha, 0.78 * hl, 0.96 * h]), rad([0.1 * ha, 0.04 * hl, 0.04 * h]));
+        b.ellipsoid(Interior, map([sx * 0.25 * ha, 0.88 * hl, 0.9 * h]), rad([0.05 * ha, 0.02 * hl, 0.02 * h]));
     }
-    b.rod(Body, [0.0, -0.75 * hd, bz + 0.05 * h], [0.0, -0.97 * hd, bz - 0.2 * h], 0.12 * hw);
+    b.rod(
+        Body,
+        map([0.0, -0.75 * hl, bz + 0.05 * h]),
+        map([0.0, -0.97 * hl, bz - 0.2 * h]),
+        0.12 * ha,
+    );
 }
 
 /// A perched bird facing +y: an upright egg body, a round head with a beak and eyes, folded

@@ -285,6 +285,18 @@ struct Candidate {
     /// Which objects it shows (centre in frame).
     shows: Vec<bool>,
     dir: [f64; 2],
+    /// Horizontal distance to the nearest object covering part of the frame (metres).
+    near: f64,
+}
+
+/// Horizontal distance from `p` to an object's footprint (0 inside).
+fn footprint_distance(o: &ObjectBox, p: [f64; 3]) -> f64 {
+    let (s, c) = o.yaw.to_radians().sin_cos();
+    let (dx, dy) = (p[0] - o.position[0], p[1] - o.position[1]);
+    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
+    let ox = (lx.abs() - 0.5 * o.size[0]).max(0.0);
+    let oy = (ly.abs() - 0.5 * o.size[1]).max(0.0);
+    ox.hypot(oy)
 }
 
 /// `count` render views of `scene` chosen by what they show (see the module doc), named
@@ -346,7 +358,16 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 })
                 .collect();
             let dir = [(t[0] - p[0]) / d, (t[1] - p[1]) / d];
+            // How close the nearest object in the frame stands: a foreground lampshade or chair
+            // back hides the room even under the share limit.
+            let near = scene
+                .objects
+                .iter()
+                .filter(|o| frame_share(&cam, o) > 0.03)
+                .map(|o| footprint_distance(o, *p))
+                .fold(f64::INFINITY, f64::min);
             cands.push(Candidate {
+                near,
                 cam,
                 stats,
                 shows,
@@ -392,7 +413,9 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
             let over = (c.stats.largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
                 - 6.0 * near
-                - 5.0 * over;
+                - 5.0 * over
+                - 3.0 * (c.stats.largest - 0.2).max(0.0)
+                - 3.0 * (1.0 - c.near).max(0.0);
             if best.is_none_or(|(_, s)| score > s) {
                 best = Some((i, score));
             }
