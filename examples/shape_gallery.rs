@@ -81,7 +81,10 @@ fn main() -> anyhow::Result<()> {
     let kb = KnowledgeBase::builtin();
     let (cats, pairs): (Vec<String>, bool) = match args.get(3).map(String::as_str) {
         None => (EVERYDAY.iter().map(|s| s.to_string()).collect(), false),
-        Some("all") => (kb.objects.iter().map(|o| o.category.clone()).collect(), true),
+        Some("all") => (
+            kb.objects.iter().map(|o| o.category.clone()).collect(),
+            true,
+        ),
         Some("archetypes") => (
             archetype_names()
                 .iter()
@@ -94,7 +97,10 @@ fn main() -> anyhow::Result<()> {
                 .collect(),
             true,
         ),
-        Some(list) => (list.split(',').map(|s| s.trim().to_string()).collect(), true),
+        Some(list) => (
+            list.split(',').map(|s| s.trim().to_string()).collect(),
+            true,
+        ),
     };
     let ctx = Context::new()?;
     let raster = Rasterizer::new(&ctx)?;

@@ -178,24 +178,6 @@ pub fn env_choice<T: Copy>(name: &str, choices: &[(&str, T)]) -> Option<T> {
     found
 }
 
-#[cfg(test)]
-mod tests {
-    use super::env_choice;
-
-    #[test]
-    fn env_choice_reads_known_values_and_ignores_others() {
-        let var = "DREAMSCENE_TEST_ENV_CHOICE";
-        let choices = [("a", 1), ("b", 2)];
-        std::env::remove_var(var);
-        assert_eq!(env_choice(var, &choices), None);
-        std::env::set_var(var, "b");
-        assert_eq!(env_choice(var, &choices), Some(2));
-        std::env::set_var(var, "c");
-        assert_eq!(env_choice(var, &choices), None);
-        std::env::remove_var(var);
-    }
-}
-
 /// A contact sheet: `images` (RGB in [0, 1], each `width x height` row-major) scaled to tiles
 /// `tile` pixels wide, `cols` to a row, on white with a 4-pixel gap (`renders/overview.png`).
 pub fn contact_sheet(images: &[(u32, u32, &[[f32; 3]])], cols: u32, tile: u32) -> image::RgbImage {
@@ -204,7 +186,9 @@ pub fn contact_sheet(images: &[(u32, u32, &[[f32; 3]])], cols: u32, tile: u32) -
     let rows = (images.len() as u32).div_ceil(cols).max(1);
     let th = images
         .first()
-        .map_or(tile, |(w, h, _)| (tile as u64 * *h as u64 / (*w).max(1) as u64) as u32)
+        .map_or(tile, |(w, h, _)| {
+            (tile as u64 * *h as u64 / (*w).max(1) as u64) as u32
+        })
         .max(1);
     let mut sheet = image::RgbImage::from_pixel(
         cols * (tile + gap) + gap,
@@ -226,4 +210,22 @@ pub fn contact_sheet(images: &[(u32, u32, &[[f32; 3]])], cols: u32, tile: u32) -
         );
     }
     sheet
+}
+
+#[cfg(test)]
+mod tests {
+    use super::env_choice;
+
+    #[test]
+    fn env_choice_reads_known_values_and_ignores_others() {
+        let var = "DREAMSCENE_TEST_ENV_CHOICE";
+        let choices = [("a", 1), ("b", 2)];
+        std::env::remove_var(var);
+        assert_eq!(env_choice(var, &choices), None);
+        std::env::set_var(var, "b");
+        assert_eq!(env_choice(var, &choices), Some(2));
+        std::env::set_var(var, "c");
+        assert_eq!(env_choice(var, &choices), None);
+        std::env::remove_var(var);
+    }
 }

@@ -270,13 +270,7 @@ fn plan_or_reuse(text: &str, a: &GenerateArgs, resume: bool) -> Result<(SceneSpe
 
 /// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
 /// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
-fn render_chosen(
-    g: &Gaussians,
-    layout: &Layout,
-    count: usize,
-    res: u32,
-    dir: &Path,
-) -> Result<()> {
+fn render_chosen(g: &Gaussians, layout: &Layout, count: usize, res: u32, dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)

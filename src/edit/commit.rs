@@ -160,10 +160,19 @@ fn render_previews(
     }
     let mut cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
     if let (Some(l), Some(first)) = (layout, cams.first()) {
-        let fresh = render_views(&SceneBox::from_layout(l), cams.len(), first.width, first.height);
+        let fresh = render_views(
+            &SceneBox::from_layout(l),
+            cams.len(),
+            first.width,
+            first.height,
+        );
         for old in &cams {
             let stale = !fresh.iter().any(|c| c.img_name == old.img_name);
-            if stale && t.dir().join(format!("renders/{}.png", old.img_name)).is_file() {
+            if stale
+                && t.dir()
+                    .join(format!("renders/{}.png", old.img_name))
+                    .is_file()
+            {
                 t.delete(&format!("renders/{}.png", old.img_name))?;
             }
         }

@@ -315,7 +315,10 @@ pub fn light_draft<'a>(
             if !lo[0].is_finite() {
                 return None;
             }
-            let c = [0.5 * (lo[0] + hi[0]) * o.scale[0], 0.5 * (lo[1] + hi[1]) * o.scale[1]];
+            let c = [
+                0.5 * (lo[0] + hi[0]) * o.scale[0],
+                0.5 * (lo[1] + hi[1]) * o.scale[1],
+            ];
             let (s, co) = o.yaw.to_radians().sin_cos();
             Some(crate::scene::env::LitBox {
                 position: [

@@ -6,9 +6,9 @@ use super::cases as c;
 use super::furniture as f;
 use super::materials::{Rgb, Role};
 use super::more as m;
+use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::structures as st;
 use super::things as t;
-use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 
 /// Collects parts in the object frame for a size `[w, d, h]`.
 pub struct Builder {
@@ -265,6 +265,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
     arch!("post", st::post, [Frame], [Frame => [0.25, 0.25, 0.27], Metal => [0.22, 0.22, 0.24], Body => [0.40, 0.40, 0.42]]),
     arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
+    arch!("treadmill", t::treadmill, [Body], [Body => [0.15, 0.15, 0.16], Interior => [0.05, 0.05, 0.05], Metal => [0.60, 0.61, 0.63], Screen => [0.10, 0.25, 0.35]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

@@ -263,8 +263,16 @@ pub fn bench(b: &mut Builder) {
         let inset = (0.08 * b.w).min(0.12);
         for sx in [-1.0, 1.0] {
             let x = sx * (hw - inset);
-            b.cuboid(Frame, [x - 0.03, -hd + 0.02, 0.0], [x + 0.03, hd - 0.03, seat - t]);
-            b.cuboid(Frame, [x - 0.03, -hd + 0.04, seat - t], [x + 0.03, -hd + 0.1, h]);
+            b.cuboid(
+                Frame,
+                [x - 0.03, -hd + 0.02, 0.0],
+                [x + 0.03, hd - 0.03, seat - t],
+            );
+            b.cuboid(
+                Frame,
+                [x - 0.03, -hd + 0.04, seat - t],
+                [x + 0.03, -hd + 0.1, h],
+            );
         }
         return;
     }

@@ -30,13 +30,21 @@ pub fn tent(b: &mut Builder) {
             let half = hw * (1.0 - t1);
             let y = sy * (hd - 0.004);
             let role = if door && t1 <= 0.7 { Interior } else { Canvas };
-            let dw = if door { 0.32 * hw * (1.0 - t1 / 0.7) } else { 0.0 };
+            let dw = if door {
+                0.32 * hw * (1.0 - t1 / 0.7)
+            } else {
+                0.0
+            };
             if role == Interior {
                 b.cuboid(Canvas, [-half, y - 0.002, h * t0], [-dw, y + 0.002, h * t1]);
                 b.cuboid(Canvas, [dw, y - 0.002, h * t0], [half, y + 0.002, h * t1]);
                 b.cuboid(Interior, [-dw, y - 0.003, h * t0], [dw, y + 0.001, h * t1]);
             } else {
-                b.cuboid(Canvas, [-half, y - 0.002, h * t0], [half, y + 0.002, h * t1]);
+                b.cuboid(
+                    Canvas,
+                    [-half, y - 0.002, h * t0],
+                    [half, y + 0.002, h * t1],
+                );
             }
         }
     }
@@ -68,9 +76,20 @@ pub fn water(b: &mut Builder) {
             [0.0, surface - 0.01],
         ];
         b.revolved(Top, 0, [0.0, 0.0, 0.0], IDENTITY, ay, ring);
-        b.frustum(Water, [0.0, 0.0, surface - 0.01], ri * hw, ri * hd, 1.0, 0.012);
+        b.frustum(
+            Water,
+            [0.0, 0.0, surface - 0.01],
+            ri * hw,
+            ri * hd,
+            1.0,
+            0.012,
+        );
     } else {
-        b.cuboid(Water, [-hw + rim, -hd + rim, surface - 0.01], [hw - rim, hd - rim, surface]);
+        b.cuboid(
+            Water,
+            [-hw + rim, -hd + rim, surface - 0.01],
+            [hw - rim, hd - rim, surface],
+        );
         for (lo, hi) in [
             ([-hw, -hd, 0.0], [hw, -hd + rim, wall]),
             ([-hw, hd - rim, 0.0], [hw, hd, wall]),
@@ -83,10 +102,28 @@ pub fn water(b: &mut Builder) {
     if tall {
         let m = hw.min(hd);
         b.cylinder(Top, [0.0, 0.0, 0.0], 0.12 * m, h - 0.12 * h);
-        let bowl = vec![[0.0, h - 0.2 * h], [0.45 * m, h - 0.2 * h], [0.6 * m, h - 0.05 * h]];
+        let bowl = vec![
+            [0.0, h - 0.2 * h],
+            [0.45 * m, h - 0.2 * h],
+            [0.6 * m, h - 0.05 * h],
+        ];
         b.revolved(Top, 0, [0.0, 0.0, 0.0], IDENTITY, hd / hw, bowl);
-        b.frustum(Water, [0.0, 0.0, h - 0.08 * h], 0.56 * m, 0.56 * hd.min(hw), 1.0, 0.01);
-        b.frustum(Water, [0.0, 0.0, h - 0.08 * h], 0.05 * m, 0.05 * m, 0.3, 0.08 * h - 0.005);
+        b.frustum(
+            Water,
+            [0.0, 0.0, h - 0.08 * h],
+            0.56 * m,
+            0.56 * hd.min(hw),
+            1.0,
+            0.01,
+        );
+        b.frustum(
+            Water,
+            [0.0, 0.0, h - 0.08 * h],
+            0.05 * m,
+            0.05 * m,
+            0.3,
+            0.08 * h - 0.005,
+        );
     }
 }
 
@@ -101,7 +138,12 @@ pub fn bridge(b: &mut Builder) {
         let y0 = -hd + i as f64 * b.d / n as f64;
         let y1 = y0 + 0.9 * b.d / n as f64;
         let z = deck(0.5 * (y0 + y1));
-        b.cuboid_v(Top, (i % 3) as u32, [-hw + 0.05, y0, z], [hw - 0.05, y1, z + 0.05]);
+        b.cuboid_v(
+            Top,
+            (i % 3) as u32,
+            [-hw + 0.05, y0, z],
+            [hw - 0.05, y1, z + 0.05],
+        );
     }
     let posts = ((b.d / 0.9) as usize).max(2) + 1;
     for sx in [-1.0, 1.0] {
@@ -110,7 +152,11 @@ pub fn bridge(b: &mut Builder) {
         for i in 0..posts {
             let y = -hd + 0.04 + i as f64 * (b.d - 0.08) / (posts - 1) as f64;
             let z = deck(y);
-            b.cuboid(Frame, [x - 0.04, y - 0.04, 0.0], [x + 0.04, y + 0.04, z + 0.05 + rail_h]);
+            b.cuboid(
+                Frame,
+                [x - 0.04, y - 0.04, 0.0],
+                [x + 0.04, y + 0.04, z + 0.05 + rail_h],
+            );
             let top = [x, y, z + 0.05 + rail_h];
             if let Some(p) = prev {
                 b.rod(Frame, p, top, 0.03);
@@ -141,15 +187,32 @@ pub fn tower(b: &mut Builder) {
             b.rod(Frame, mid, [-sx * mid[0], mid[1], mid[2]], 0.025);
         }
     }
-    b.cuboid(Top, [-top - 0.1, -top - 0.1, deck], [top + 0.1, top + 0.1, deck + 0.08]);
+    b.cuboid(
+        Top,
+        [-top - 0.1, -top - 0.1, deck],
+        [top + 0.1, top + 0.1, deck + 0.08],
+    );
     let hut = 0.75 * top;
-    b.cuboid(Body, [-hut, -hut, deck + 0.08], [hut, hut, deck + 0.08 + 0.55 * (h - deck)]);
+    b.cuboid(
+        Body,
+        [-hut, -hut, deck + 0.08],
+        [hut, hut, deck + 0.08 + 0.55 * (h - deck)],
+    );
     let wz = deck + 0.08 + 0.25 * (h - deck);
-    b.cuboid(Interior, [-0.6 * hut, hut, wz], [0.6 * hut, hut + 0.004, wz + 0.2 * (h - deck)]);
+    b.cuboid(
+        Interior,
+        [-0.6 * hut, hut, wz],
+        [0.6 * hut, hut + 0.004, wz + 0.2 * (h - deck)],
+    );
     let rz = deck + 0.08 + 0.55 * (h - deck);
     b.frustum(Shade, [0.0, 0.0, rz], top + 0.15, top + 0.15, 0.05, h - rz);
     for sx in [-1.0, 1.0] {
-        b.rod(Metal, [sx * 0.22, hd - 0.05, 0.0], [sx * 0.22, top + 0.1, deck + 0.08], 0.02);
+        b.rod(
+            Metal,
+            [sx * 0.22, hd - 0.05, 0.0],
+            [sx * 0.22, top + 0.1, deck + 0.08],
+            0.02,
+        );
     }
     for i in 1..8 {
         let t = i as f64 / 8.0;
@@ -170,8 +233,19 @@ pub fn castle(b: &mut Builder) {
             b.frustum(Top, [c[0], c[1], 0.6 * h], 1.1 * r, 1.1 * r, 0.05, 0.25 * h);
         }
     }
-    b.cuboid(Body, [-0.4 * hw, -0.4 * hd, 0.4 * h], [0.4 * hw, 0.4 * hd, 0.75 * h]);
-    b.frustum(Top, [0.0, 0.0, 0.75 * h], 0.3 * hw, 0.3 * hd, 0.05, 0.25 * h);
+    b.cuboid(
+        Body,
+        [-0.4 * hw, -0.4 * hd, 0.4 * h],
+        [0.4 * hw, 0.4 * hd, 0.75 * h],
+    );
+    b.frustum(
+        Top,
+        [0.0, 0.0, 0.75 * h],
+        0.3 * hw,
+        0.3 * hd,
+        0.05,
+        0.25 * h,
+    );
     b.cuboid(
         Interior,
         [-0.15 * hw, hd - r - 0.004, 0.0],
@@ -187,7 +261,11 @@ pub fn lantern(b: &mut Builder) {
     b.cuboid(Body, [-0.7 * m, -0.7 * m, 0.0], [0.7 * m, 0.7 * m, 0.1 * h]);
     let post = (0.25 * m).max(0.03);
     b.cuboid(Body, [-post, -post, 0.1 * h], [post, post, 0.55 * h]);
-    b.cuboid(Body, [-0.8 * m, -0.8 * m, 0.55 * h], [0.8 * m, 0.8 * m, 0.6 * h]);
+    b.cuboid(
+        Body,
+        [-0.8 * m, -0.8 * m, 0.55 * h],
+        [0.8 * m, 0.8 * m, 0.6 * h],
+    );
     let lamp = 0.6 * m;
     b.cuboid(Light, [-lamp, -lamp, 0.6 * h], [lamp, lamp, 0.8 * h]);
     for sx in [-1.0, 1.0] {
@@ -242,7 +320,11 @@ pub fn palm(b: &mut Builder) {
                 Foliage,
                 k,
                 mid,
-                [0.95 * seg + 0.03, 0.22 * m * (1.0 - 0.5 * t) + 0.03, 0.04 + 0.02 * m],
+                [
+                    0.95 * seg + 0.03,
+                    0.22 * m * (1.0 - 0.5 * t) + 0.03,
+                    0.04 + 0.02 * m,
+                ],
                 rot_z(a),
             );
             prev = p;
@@ -257,11 +339,26 @@ pub fn post(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let m = hw.min(hd);
     let r = (0.012 * h).clamp(0.012, 0.25).min(0.3 * m);
-    b.frustum(Metal, [0.0, 0.0, 0.0], 0.8 * m, 0.8 * m, 0.5, 0.03 + 0.01 * h);
-    let head_h = (0.12 * h).min(0.5).max(0.08);
+    b.frustum(
+        Metal,
+        [0.0, 0.0, 0.0],
+        0.8 * m,
+        0.8 * m,
+        0.5,
+        0.03 + 0.01 * h,
+    );
+    let head_h = (0.12 * h).clamp(0.08, 0.5);
     b.cylinder(Frame, [0.0, 0.0, 0.0], r, h - 0.6 * head_h);
     let s = (0.45 * m).min(2.0 * head_h).max(2.0 * r);
     b.cuboid(Body, [-s, -s, h - head_h], [s, s, h]);
-    b.cuboid(Top, [-1.1 * s, -1.1 * s, h - 0.1 * head_h], [1.1 * s, 1.1 * s, h]);
-    b.cuboid(Interior, [-0.4 * s, s, h - 0.7 * head_h], [0.4 * s, s + 0.004, h - 0.3 * head_h]);
+    b.cuboid(
+        Top,
+        [-1.1 * s, -1.1 * s, h - 0.1 * head_h],
+        [1.1 * s, 1.1 * s, h],
+    );
+    b.cuboid(
+        Interior,
+        [-0.4 * s, s, h - 0.7 * head_h],
+        [0.4 * s, s + 0.004, h - 0.3 * head_h],
+    );
 }

@@ -23,7 +23,8 @@ mod views;
 
 pub use paths::{explore_path, inference_circle, orbit};
 pub use views::{
-    eye_height, frame_share, framing_score, overview_camera, render_views, view_stats, ViewStats, MAX_OBJECT_SHARE,
+    eye_height, frame_share, framing_score, overview_camera, render_views, view_stats, ViewStats,
+    MAX_OBJECT_SHARE,
 };
 
 use super::Camera;

@@ -109,9 +109,19 @@ pub fn view_stats(scene: &SceneBox, cam: &Camera) -> ViewStats {
         covered: 0.0,
     };
     for o in &scene.objects {
-        let c = to_cam(cam, [o.position[0], o.position[1], o.position[2] + 0.5 * o.size[2]]);
+        let c = to_cam(
+            cam,
+            [
+                o.position[0],
+                o.position[1],
+                o.position[2] + 0.5 * o.size[2],
+            ],
+        );
         if c[2] > NEAR {
-            let (u, v) = (cam.fx * c[0] / c[2] + 0.5 * w, cam.fy * c[1] / c[2] + 0.5 * h);
+            let (u, v) = (
+                cam.fx * c[0] / c[2] + 0.5 * w,
+                cam.fy * c[1] / c[2] + 0.5 * h,
+            );
             if (0.0..=w).contains(&u) && (0.0..=h).contains(&v) {
                 s.in_view += 1;
             }
@@ -274,7 +284,14 @@ pub fn overview_camera(scene: &SceneBox, width: u32, height: u32) -> Camera {
         }
     }
     best.map(|(c, _)| c).unwrap_or_else(|| {
-        camera([0.0, -hy.max(1.0), z], target, [0.0, 0.0, 1.0], width, height, fov_x)
+        camera(
+            [0.0, -hy.max(1.0), z],
+            target,
+            [0.0, 0.0, 1.0],
+            width,
+            height,
+            fov_x,
+        )
     })
 }
 
@@ -316,7 +333,13 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
         positions.extend(super::nearest_valid(scene, [0.0, 0.0, eye]));
     }
     let mut targets: Vec<[f64; 3]> = vec![[0.0, 0.0, 0.0]];
-    let centre = |o: &ObjectBox| [o.position[0], o.position[1], o.position[2] + 0.5 * o.size[2]];
+    let centre = |o: &ObjectBox| {
+        [
+            o.position[0],
+            o.position[1],
+            o.position[2] + 0.5 * o.size[2],
+        ]
+    };
     for (i, a) in scene.objects.iter().enumerate() {
         targets.push(centre(a));
         for b in &scene.objects[i + 1..] {
@@ -421,9 +444,9 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
             }
         }
         let Some((i, _)) = best else { break };
-        for k in 0..n {
-            if cands[i].shows[k] {
-                seen[k] += 1;
+        for (s, shown) in seen.iter_mut().zip(&cands[i].shows) {
+            if *shown {
+                *s += 1;
             }
         }
         taken.push(i);

@@ -82,7 +82,12 @@ fn surface(p: [f64; 3], room: [f64; 3]) -> Surface {
     if out_xy < -1e-4 {
         return Surface::Floor;
     }
-    let d = [(hx - p[0]).abs(), (hx + p[0]).abs(), (hy - p[1]).abs(), (hy + p[1]).abs()];
+    let d = [
+        (hx - p[0]).abs(),
+        (hx + p[0]).abs(),
+        (hy - p[1]).abs(),
+        (hy + p[1]).abs(),
+    ];
     let k = (0..4).min_by(|a, b| d[*a].total_cmp(&d[*b])).unwrap_or(0);
     match k {
         0 => Surface::Wall("east", p[1]),
@@ -141,7 +146,11 @@ pub fn bake_light(
                 let z = p[2];
                 k *= 1.0 - 0.25 * (-z / 0.2).exp();
                 k *= 1.0 - 0.12 * (-(room[2] - z) / 0.25).exp();
-                let along = if matches!(side, "east" | "west") { hy } else { hx };
+                let along = if matches!(side, "east" | "west") {
+                    hy
+                } else {
+                    hx
+                };
                 k *= 1.0 - 0.2 * (-(along - u.abs()).max(0.0) / 0.25).exp();
                 for b in &solid {
                     k *= 1.0 - 0.3 * (-b.distance(p) / 0.25).exp();
@@ -222,6 +231,68 @@ pub fn openings_of(v: Option<&serde_json::Value>) -> Vec<Opening> {
         .unwrap_or_default()
 }
 
+/// Re-materialises the floor (`floor`) or the walls and ceiling of a draft environment from a
+/// restyle description with the same rules as a new draft ("dark green carpet" gives a green
+/// speckled carpet, not tinted planks). Floor Gaussians are those inside the room box near
+/// z = 0; every other one is wall or ceiling (kept), so no strip along the floor keeps the old
+/// colour.
+/// `None` when the description names no colour or material of that surface.
+pub fn restyle_surface(
+    env: &Gaussians,
+    scene_type: SceneType,
+    room: [f64; 3],
+    floor: bool,
+    description: &str,
+    seed: u64,
+) -> Option<(Gaussians, String)> {
+    let noun = if floor { "floor" } else { "walls" };
+    let text = format!("{description} {noun}");
+    let plain = super::draft_colours(scene_type, "");
+    let c = super::draft_colours(scene_type, &text);
+    let (base, pattern, was) = if floor {
+        (c.floor, c.floor_pattern, (plain.floor, plain.floor_pattern))
+    } else {
+        (c.wall, c.wall_pattern, (plain.wall, plain.wall_pattern))
+    };
+    if (base, pattern) == was {
+        return None;
+    }
+    let k3 = env.coeffs() * 3;
+    let mut out = env.clone();
+    let mut n = 0usize;
+    for i in 0..env.len() {
+        let p = env.means[i].map(|v| v as f64);
+        let on_floor = match scene_type {
+            SceneType::Indoor => matches!(surface(p, room), Surface::Floor),
+            SceneType::Outdoor => p[2].abs() < 0.05,
+        };
+        // The ceiling keeps its white: a restyle names the walls.
+        let ceiling =
+            scene_type == SceneType::Indoor && matches!(surface(p, room), Surface::Ceiling);
+        if on_floor != floor || ceiling {
+            continue;
+        }
+        let (u, v) = if floor {
+            (p[0], p[1])
+        } else {
+            (p[0] + p[1], p[2])
+        };
+        let speck = super::colours::hash(i as i64, 17, seed);
+        let rgb = super::shade(base, pattern, u as f32, v as f32, speck, seed);
+        for (ch, c) in rgb.iter().enumerate() {
+            out.sh[i * k3 + ch] = ((*c as f64 - 0.5) / SH_C0) as f32;
+        }
+        n += 1;
+    }
+    Some((
+        out,
+        format!(
+            "shape prior: {n} Gaussians of the {noun} re-materialised as ({:.2}, {:.2}, {:.2}) {pattern:?}",
+            base[0], base[1], base[2]
+        ),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -278,7 +349,12 @@ mod tests {
         assert!(grey(&g, 0) < 0.6 * 0.8, "{}", grey(&g, 0));
         assert!(grey(&g, 1) > 0.85 * 0.8, "{}", grey(&g, 1));
         // The window pane is brighter than the plain wall beside it; the wall foot is skirting.
-        assert!(grey(&g, 3) > grey(&g, 2), "{} vs {}", grey(&g, 3), grey(&g, 2));
+        assert!(
+            grey(&g, 3) > grey(&g, 2),
+            "{} vs {}",
+            grey(&g, 3),
+            grey(&g, 2)
+        );
         assert!(grey(&g, 4) > 0.8, "{}", grey(&g, 4));
     }
 }

@@ -14,7 +14,7 @@ mod colours;
 mod light;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
-pub use light::{bake_light, openings_of, LitBox, Opening};
+pub use light::{bake_light, openings_of, restyle_surface, LitBox, Opening};
 
 use crate::plan::spec::SceneType;
 use crate::splat::cloud::SH_C0;
