@@ -160,12 +160,17 @@ fn render_previews(
     }
     let mut cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
     if let (Some(l), Some(first)) = (layout, cams.first()) {
-        let fresh = render_views(
+        let mut fresh = render_views(
             &SceneBox::from_layout(l),
             cams.len(),
             first.width,
             first.height,
         );
+        // The views keep their names (and ids): scripts and users know them.
+        for (c, old) in fresh.iter_mut().zip(&cams) {
+            c.id = old.id;
+            c.img_name = old.img_name.clone();
+        }
         for old in &cams {
             let stale = !fresh.iter().any(|c| c.img_name == old.img_name);
             if stale

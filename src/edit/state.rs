@@ -231,9 +231,7 @@ impl SceneState {
             .collect();
         if let Some(env) = &self.scene.environment {
             if !self.scene.stage_pending("environment") {
-                let mut e = self.load(&env.ply, overlay)?;
-                crate::scene::dir::light_draft(&self.scene, &|rel| loaded.get(rel), &mut e);
-                parts.push(e);
+                parts.push(self.load(&env.ply, overlay)?);
             }
         }
         Ok(merge(&parts))
