@@ -57,7 +57,7 @@ enum Command {
     /// Generate a scene from a sentence (or a dialogue): plan, lay out, make the objects and the
     /// environment, compose them. Writes the scene directory: scene.json, spec.json,
     /// layout.json, layout.png, objects/<category>.ply, environment.ply, scene.ply, renders/
-    /// (views along an exploring path, with cameras.json) and checkpoints/.
+    /// (views chosen by what they show, with cameras.json and overview.png) and checkpoints/.
     ///
     /// Without diffusion models (or with --draft or --prior shape) the scene is a draft in
     /// seconds: each object is its procedural shape prior and the environment its initial

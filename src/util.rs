@@ -191,6 +191,40 @@ pub fn env_choice<T: Copy>(name: &str, choices: &[(&str, T)]) -> Option<T> {
     found
 }
 
+/// A contact sheet: `images` (RGB in [0, 1], each `width x height` row-major) scaled to tiles
+/// `tile` pixels wide, `cols` to a row, on white with a 4-pixel gap (`renders/overview.png`).
+pub fn contact_sheet(images: &[(u32, u32, &[[f32; 3]])], cols: u32, tile: u32) -> image::RgbImage {
+    let gap = 4u32;
+    let cols = cols.clamp(1, images.len().max(1) as u32);
+    let rows = (images.len() as u32).div_ceil(cols).max(1);
+    let th = images
+        .first()
+        .map_or(tile, |(w, h, _)| {
+            (tile as u64 * *h as u64 / (*w).max(1) as u64) as u32
+        })
+        .max(1);
+    let mut sheet = image::RgbImage::from_pixel(
+        cols * (tile + gap) + gap,
+        rows * (th + gap) + gap,
+        image::Rgb([255, 255, 255]),
+    );
+    for (k, (w, h, px)) in images.iter().enumerate() {
+        let mut img = image::RgbImage::new(*w, *h);
+        for (p, c) in img.pixels_mut().zip(px.iter()) {
+            *p = image::Rgb(c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8));
+        }
+        let small = image::imageops::resize(&img, tile, th, image::imageops::FilterType::Triangle);
+        let (x, y) = (k as u32 % cols, k as u32 / cols);
+        image::imageops::replace(
+            &mut sheet,
+            &small,
+            (gap + x * (tile + gap)) as i64,
+            (gap + y * (th + gap)) as i64,
+        );
+    }
+    sheet
+}
+
 #[cfg(test)]
 mod tests {
     use super::env_choice;

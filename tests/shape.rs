@@ -315,3 +315,54 @@ fn archetypes_cover_the_knowledge_base_and_unknowns_default_to_box() {
     .unwrap();
     assert!(!g.is_empty());
 }
+
+#[test]
+fn every_category_maps_to_an_archetype_of_its_own_function() {
+    use dreamscene::shape::functions::{archetype_functions, category_functions};
+    let cats = category_functions();
+    let archs = archetype_functions();
+    // Every archetype says what it can show, and only archetypes that exist are listed.
+    for a in archetype_names() {
+        assert!(
+            archs.contains_key(a),
+            "archetype `{a}` has no row in archetype_functions.txt"
+        );
+    }
+    for a in archs.keys() {
+        assert!(
+            archetype_names().contains(a),
+            "archetype_functions.txt names `{a}`, no archetype"
+        );
+    }
+    let mut wrong = vec![];
+    for o in &KnowledgeBase::builtin().objects {
+        let Some(f) = cats.get(o.category.as_str()) else {
+            wrong.push(format!(
+                "`{}` has no row in category_functions.txt",
+                o.category
+            ));
+            continue;
+        };
+        let arch = archetype_of(&o.category);
+        if !archs.get(arch).is_some_and(|fs| fs.contains(f)) {
+            wrong.push(format!(
+                "`{}` is for `{f}` but its archetype `{arch}` shows {:?}",
+                o.category,
+                archs.get(arch)
+            ));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "{} categories:\n{}",
+        wrong.len(),
+        wrong.join("\n")
+    );
+    // Function classes no archetype shows are typos.
+    for (c, f) in &cats {
+        assert!(
+            archs.values().any(|fs| fs.contains(f)),
+            "`{c}`: no archetype shows `{f}`"
+        );
+    }
+}

@@ -1,9 +1,9 @@
 //! `dreamscene generate`: a scene directory from a sentence. This build makes the draft (shape
-//! priors, initial environment, composition, renders along an exploring path); the optimising
+//! priors, initial environment, composition, renders chosen by what they show); the optimising
 //! scene stages are refused with a one-line reason.
 use super::object::{models_dir, PriorChoice, NO_MODELS};
 use anyhow::{bail, Context as _, Result};
-use dreamscene::camera::scene::{explore_path, SceneBox};
+use dreamscene::camera::scene::{render_views, SceneBox};
 use dreamscene::camera::write_cameras;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
@@ -199,8 +199,12 @@ fn locked(
     let renders = out.join("renders");
     if a.renders > 0 {
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_explore(&g, &layout, a.renders, a.resolution, &renders)?;
-        eprintln!("renders: {} views along the exploring path", a.renders);
+        render_chosen(&g, &layout, a.renders, a.resolution, &renders)?;
+        eprintln!(
+            "renders: {} views chosen by what they show; contact sheet {}/overview.png",
+            a.renders,
+            renders.display()
+        );
     }
     println!(
         "draft scene: {} objects ({} categories), {} Gaussians ({} environment) in {:.1} s; \
@@ -337,7 +341,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
     let composed = dreamscene::export::labels::write_labelled_scene(out, &scene)?;
     dreamscene::scene::dir::write_scene(out, &scene)?;
     if a.renders > 0 {
-        render_explore(
+        render_chosen(
             &composed,
             &layout,
             a.renders,
@@ -375,8 +379,8 @@ pub(super) fn plan_or_reuse(
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
 }
 
-/// Renders the views `renders/cameras.json` lists that are not there (all of them, along the
-/// exploring path, when cameras.json itself is missing and views were asked for) from
+/// Renders the views `renders/cameras.json` lists that are not there (all of them, chosen by
+/// what they show, when cameras.json itself is missing and views were asked for) from
 /// `scene.ply`. Returns how many were rendered.
 fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<usize> {
     let dir = out.join("renders");
@@ -386,7 +390,7 @@ fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<usize> {
     } else if a.renders > 0 {
         let layout = Layout::read(&out.join("layout.json"))?;
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_explore(&g, &layout, a.renders, a.resolution, &dir)?;
+        render_chosen(&g, &layout, a.renders, a.resolution, &dir)?;
         return Ok(a.renders);
     } else {
         return Ok(0);
@@ -411,8 +415,9 @@ fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<usize> {
     Ok(missing.len())
 }
 
-/// Renders `count` views along the exploring path into `dir`, with `dir/cameras.json`.
-pub(super) fn render_explore(
+/// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
+/// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
+pub(super) fn render_chosen(
     g: &Gaussians,
     layout: &Layout,
     count: usize,
@@ -420,17 +425,24 @@ pub(super) fn render_explore(
     dir: &Path,
 ) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let cams = explore_path(&SceneBox::from_layout(layout), count, res, res);
+    let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
     let ctx = super::open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
+    let mut shots = vec![];
     for cam in &cams {
         let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
         super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        shots.push(img);
     }
-    Ok(())
+    let tiles: Vec<_> = shots
+        .iter()
+        .map(|i| (i.width, i.height, i.color.as_slice()))
+        .collect();
+    let sheet = dreamscene::util::contact_sheet(&tiles, 4, 256);
+    super::write_png(&sheet, &dir.join("overview.png"))
 }
 
 fn positive_density(s: &str) -> Result<f64, String> {
@@ -474,7 +486,7 @@ pub struct Args {
     /// Render size in pixels (square).
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
     pub resolution: u32,
-    /// Views along the exploring path written to renders/ (0: none).
+    /// Views chosen by what they show written to renders/, with overview.png (0: none).
     #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u64).range(0..=1000))]
     pub renders: u64,
     /// Passes of the scene's reconstructive stage over its 80 views.

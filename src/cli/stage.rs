@@ -4,7 +4,7 @@
 //! every object is there, naming any that is missing, then writes the environment, scene.ply,
 //! scene.json and the renders exactly as a single `generate` does. Also the timed stages that
 //! `batch` runs for each draft scene.
-use super::generate::{draft_mode, plan_or_reuse, render_explore, GenerateArgs};
+use super::generate::{draft_mode, plan_or_reuse, render_chosen, GenerateArgs};
 use super::object::models_dir;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::batch::index::StageTime;
@@ -103,7 +103,7 @@ fn scene_stage(a: &GenerateArgs, text: &str, spec: &SceneSpec, layout: &Layout) 
     let report = write_draft_scene(&a.out, text, a.seed, spec, layout, true, &mut |_| {})?;
     if a.renders > 0 {
         let g = dreamscene::splat::ply::read_ply(&a.out.join("scene.ply"))?;
-        render_explore(&g, layout, a.renders, a.resolution, &a.out.join("renders"))?;
+        render_chosen(&g, layout, a.renders, a.resolution, &a.out.join("renders"))?;
     }
     Ok(report.scene_gaussians)
 }

@@ -2,6 +2,7 @@
 //! splat renderer scripts/setup.sh installed there) on 127.0.0.1. Nothing is fetched from the
 //! network: every file the page loads comes from this server. Ctrl-C stops it.
 use anyhow::{anyhow, bail, Context as _, Result};
+use dreamscene::camera::scene::overview_camera;
 use dreamscene::camera::Camera;
 use dreamscene::export::trajectory::{cameras, open_input, Size, Subject, Trajectory};
 use dreamscene::splat::ply::write_ply;
@@ -129,14 +130,18 @@ fn scene_info(
         width: 640,
         height: 480,
     };
-    let cam: Camera = cameras(&Trajectory::Orbit, subject, 1, Some(size))?
-        .into_iter()
-        .next()
-        .ok_or_else(|| anyhow!("no start view"))?;
+    // A room opens on an overview from high in a corner; a lone cloud on its orbit's first view.
+    let cam: Camera = match subject {
+        Subject::Scene(scene) => overview_camera(scene, size.width, size.height),
+        Subject::Cloud { .. } => cameras(&Trajectory::Orbit, subject, 1, Some(size))?
+            .into_iter()
+            .next()
+            .ok_or_else(|| anyhow!("no start view"))?,
+    };
     let forward = [cam.rotation[0][2], cam.rotation[1][2], cam.rotation[2][2]];
-    // Orbit about the point the first view looks at: the cloud's centre, or the room centre.
+    // Orbit about the point the first view looks at: the cloud's centre, or the room's floor.
     let centre = match subject {
-        Subject::Scene(_) => [0.0; 3],
+        Subject::Scene(s) => [0.0, 0.0, 0.15 * s.room[2].min(4.0)],
         Subject::Cloud { min, max } => [0, 1, 2].map(|k| 0.5 * (min[k] + max[k])),
     };
     let c = [0, 1, 2].map(|k| centre[k] - cam.position[k]);

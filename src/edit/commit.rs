@@ -4,7 +4,8 @@
 use super::state::SceneState;
 use super::txn::{Backup, Txn, HISTORY};
 use super::{EditError, Result};
-use crate::camera::read_cameras;
+use crate::camera::scene::{render_views, SceneBox};
+use crate::camera::{read_cameras, write_cameras};
 use crate::gpu::Context;
 use crate::plan::spec::Layout;
 use crate::scene::dir::SceneFile;
@@ -107,7 +108,7 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
         let p = t.stage_path("scene.ply")?;
         write_ply(&p, &composed).map_err(io(&p))?;
         let renders = match ctx {
-            Some(ctx) => render_previews(ctx, &mut t, &composed)?,
+            Some(ctx) => render_previews(ctx, &mut t, &composed, edit.layout.as_ref())?,
             None => 0,
         };
         let record = format!("{HISTORY}/{:04}", state.scene.history.len() + 1);
@@ -147,20 +148,64 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
     }
 }
 
-/// Renders every view of `renders/cameras.json` (when there is one) into the stage.
-fn render_previews(ctx: &Context, t: &mut Txn, g: &Gaussians) -> Result<usize> {
+/// Renders the preview views into the stage, with their contact sheet `renders/overview.png`.
+/// When the edit changed the layout, the views are chosen afresh for it (as many, at the same
+/// size, as `renders/cameras.json` had), so no view keeps looking at what was moved or removed;
+/// otherwise the views of `renders/cameras.json` are kept. Nothing happens without that file.
+fn render_previews(
+    ctx: &Context,
+    t: &mut Txn,
+    g: &Gaussians,
+    layout: Option<&Layout>,
+) -> Result<usize> {
     let cams_path = t.dir().join("renders/cameras.json");
     if !cams_path.is_file() {
         return Ok(0);
     }
-    let cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
+    let mut cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
+    if let (Some(l), Some(first)) = (layout, cams.first()) {
+        let mut fresh = render_views(
+            &SceneBox::from_layout(l),
+            cams.len(),
+            first.width,
+            first.height,
+        );
+        // The views keep their names (and ids): scripts and users know them.
+        for (c, old) in fresh.iter_mut().zip(&cams) {
+            c.id = old.id;
+            c.img_name = old.img_name.clone();
+        }
+        for old in &cams {
+            let stale = !fresh.iter().any(|c| c.img_name == old.img_name);
+            if stale
+                && t.dir()
+                    .join(format!("renders/{}.png", old.img_name))
+                    .is_file()
+            {
+                t.delete(&format!("renders/{}.png", old.img_name))?;
+            }
+        }
+        let p = t.stage_path("renders/cameras.json")?;
+        write_cameras(&p, &fresh).map_err(io(&p))?;
+        cams = fresh;
+    }
     let r = Rasterizer::new(ctx)?;
     let gg = GpuGaussians::upload(ctx, g)?;
+    let mut shots = vec![];
     for cam in &cams {
         let img = r.forward(ctx, &gg, cam, BACKGROUND)?.read()?;
         let p = t.stage_path(&format!("renders/{}.png", cam.img_name))?;
         save_png(&p, img.width, img.height, &img.color)?;
+        shots.push(img);
     }
+    let tiles: Vec<_> = shots
+        .iter()
+        .map(|i| (i.width, i.height, i.color.as_slice()))
+        .collect();
+    let p = t.stage_path("renders/overview.png")?;
+    crate::util::contact_sheet(&tiles, 4, 256)
+        .save_with_format(&p, image::ImageFormat::Png)
+        .map_err(|e| EditError::Io(format!("{}: {e}", p.display())))?;
     Ok(cams.len())
 }
 

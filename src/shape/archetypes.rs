@@ -7,6 +7,8 @@ use super::furniture as f;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
+use super::structures as st;
+use super::things as t;
 
 /// Collects parts in the object frame for a size `[w, d, h]`.
 pub struct Builder {
@@ -245,6 +247,26 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("pavilion", m::pavilion, [Body], [Body => WHITE, Top => [0.45, 0.30, 0.22]]),
     arch!("chest", m::chest, [Body], [Metal => [0.30, 0.28, 0.25]]),
     arch!("fence", m::fence, [Frame], [Frame => WHITE]),
+    arch!("tent", st::tent, [Shade, Canvas], [Shade => [0.20, 0.45, 0.30], Canvas => [0.25, 0.50, 0.34]]),
+    arch!("water", st::water, [Top], [Top => STONE, Water => [0.22, 0.45, 0.58], Interior => [0.12, 0.22, 0.26]]),
+    arch!("bridge", st::bridge, [Top, Frame], [Top => [0.52, 0.36, 0.22], Frame => [0.42, 0.28, 0.17]]),
+    arch!("tower", st::tower, [Body], [Frame => [0.85, 0.84, 0.80], Body => [0.85, 0.20, 0.15], Shade => [0.90, 0.88, 0.84], Metal => [0.60, 0.60, 0.62]]),
+    arch!("castle", st::castle, [Body], [Body => [0.84, 0.74, 0.55], Top => [0.78, 0.66, 0.46]]),
+    arch!("lantern", st::lantern, [Body, Top], [Body => STONE, Top => [0.58, 0.56, 0.52], Light => [1.0, 0.86, 0.55]]),
+    arch!("palm", st::palm, [Foliage], [Trunk => [0.52, 0.40, 0.28], Foliage => [0.22, 0.50, 0.18]]),
+    arch!("tripod", t::tripod, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.20, 0.20, 0.21], Glass => [0.25, 0.35, 0.45]]),
+    arch!("console", t::console, [Body, Top], [Body => [0.30, 0.32, 0.36], Top => [0.45, 0.47, 0.50]]),
+    arch!("robot", t::robot, [Body], [Body => [0.78, 0.80, 0.83], Metal => [0.35, 0.36, 0.38], Light => [0.35, 0.80, 0.95]]),
+    arch!("lounger", t::lounger, [Upholstery], [Upholstery => [0.92, 0.90, 0.85], Frame => [0.55, 0.40, 0.26]]),
+    arch!("dispenser", t::dispenser, [Body], [Body => WHITE, Glass => [0.55, 0.72, 0.88], Handle => [0.25, 0.40, 0.80]]),
+    arch!("quadruped", t::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
+    arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
+    arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
+    arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
+    arch!("post", st::post, [Frame], [Frame => [0.25, 0.25, 0.27], Metal => [0.22, 0.22, 0.24], Body => [0.40, 0.40, 0.42]]),
+    arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
+    arch!("treadmill", t::treadmill, [Body], [Body => [0.15, 0.15, 0.16], Interior => [0.05, 0.05, 0.05], Metal => [0.60, 0.61, 0.63], Screen => [0.10, 0.25, 0.35]]),
+    arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -247,9 +247,46 @@ pub fn stool(b: &mut Builder) {
     }
 }
 
+/// A bench: a slab seat on two end frames; taller than 0.65 m it is a seat at 0.45 m with a
+/// backrest of slats at the back (−y), as park benches and pews have.
 pub fn bench(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let t = (0.1 * h).clamp(0.03, 0.06);
+    if h > 0.65 && b.d < 1.2 {
+        let seat = 0.45f64.min(0.55 * h);
+        b.cuboid(Seat, [-hw, -hd + 0.06, seat - t], [hw, hd, seat]);
+        for k in 0..3 {
+            let z0 = seat + 0.08 + k as f64 * (h - seat - 0.08) / 3.0;
+            let z1 = z0 + 0.7 * (h - seat - 0.08) / 3.0;
+            b.cuboid(Seat, [-hw, -hd, z0], [hw, -hd + 0.04, z1]);
+        }
+        let inset = (0.08 * b.w).min(0.12);
+        for sx in [-1.0, 1.0] {
+            let x = sx * (hw - inset);
+            b.cuboid(
+                Frame,
+                [x - 0.03, -hd + 0.02, 0.0],
+                [x + 0.03, hd - 0.03, seat - t],
+            );
+            b.cuboid(
+                Frame,
+                [x - 0.03, -hd + 0.04, seat - t],
+                [x + 0.03, -hd + 0.1, h],
+            );
+        }
+        return;
+    }
+    if h > 0.65 {
+        // Deep and tall: tiers of seats rising to the back (bleachers, stepped seating).
+        let n = ((h / 0.45).round() as usize).clamp(2, 8);
+        for k in 0..n {
+            let z = h * (k + 1) as f64 / n as f64;
+            let y0 = hd - b.d * (k + 1) as f64 / n as f64;
+            b.cuboid(Frame, [-hw, y0, 0.0], [hw, y0 + b.d / n as f64, z - t]);
+            b.cuboid(Seat, [-hw, y0, z - t], [hw, y0 + b.d / n as f64, z]);
+        }
+        return;
+    }
     b.cuboid(Seat, [-hw, -hd, h - t], [hw, hd, h]);
     let inset = (0.08 * b.w).min(0.12);
     for sx in [-1.0, 1.0] {

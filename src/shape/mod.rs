@@ -15,10 +15,13 @@
 mod appliances;
 mod archetypes;
 mod cases;
+pub mod functions;
 mod furniture;
 pub mod materials;
 mod more;
 pub mod parts;
+mod structures;
+mod things;
 
 pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
 pub use parts::{Part, Primitive};
@@ -111,6 +114,25 @@ pub fn archetype_by_keyword(category: &str) -> &'static str {
         ("monitor", "screen"),
         ("counter", "counter"),
         ("car", "vehicle"),
+        ("tent", "tent"),
+        ("pond", "water"),
+        ("fountain", "water"),
+        ("bridge", "bridge"),
+        ("tower", "tower"),
+        ("lantern", "lantern"),
+        ("palm", "palm"),
+        ("telescope", "tripod"),
+        ("robot", "robot"),
+        ("lounger", "lounger"),
+        ("deckchair", "lounger"),
+        ("horse", "quadruped"),
+        ("dog", "quadruped"),
+        ("bird", "bird"),
+        ("owl", "bird"),
+        ("parrot", "bird"),
+        ("easel", "easel"),
+        ("grill", "grill"),
+        ("barbecue", "grill"),
     ];
     let c = category.to_lowercase();
     RULES
@@ -210,10 +232,14 @@ fn sample(
                 continue;
             }
             let nrm = s.normal();
+            // A soft key light from above the front-right, and occlusion towards the floor
+            // (objects stand in their own contact shade), so forms read in a lone draft too.
             let lit = if flat {
                 1.0
             } else {
-                0.8 + 0.2 * (nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2])
+                let ndl = nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2];
+                let t = (s.pos[2] / (0.35 * h).clamp(0.05, 0.5)).clamp(0.0, 1.0);
+                (0.78 + 0.24 * ndl.max(-0.4)) * (0.8 + 0.2 * t * t * (3.0 - 2.0 * t))
             };
             let k = (lit * part_shade * jitter) as f32;
             g.means.push(s.pos.map(|v| v as f32));

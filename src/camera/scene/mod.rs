@@ -19,8 +19,13 @@
 //! offset scaled by 0.98 (1.02 when it fell inside the object it orbits), as the authors do, for
 //! at most [`MAX_TRIES`] tries; then the nearest valid point of a 0.2 m grid takes its place.
 mod paths;
+mod views;
 
 pub use paths::{explore_path, inference_circle, orbit};
+pub use views::{
+    eye_height, frame_share, framing_score, overview_camera, render_views, view_stats, ViewStats,
+    MAX_OBJECT_SHARE,
+};
 
 use super::Camera;
 use crate::plan::spec::{Layout, SceneType};

@@ -329,10 +329,12 @@ fn fbm(u: f32, v: f32, size: f32, seed: u64) -> f32 {
 /// The colour of `base` under `pattern` at surface coordinates (u, v) metres; `speck` is this
 /// point's own uniform random number in [0, 1) (per-Gaussian variation).
 pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed: u64) -> [f32; 3] {
-    let mut k = 1.0 + 0.06 * (speck - 0.5);
+    // Painted surfaces get only a trace of per-point speckle (it read as stucco at 512²).
+    let grain = if pattern == Plain { 0.012 } else { 0.06 };
+    let mut k = 1.0 + grain * (speck - 0.5);
     let mut mix_to: Option<([f32; 3], f32)> = None;
     match pattern {
-        Plain => k *= 1.0 + 0.06 * (fbm(u, v, 0.8, seed) - 0.5),
+        Plain => k *= 1.0 + 0.035 * (fbm(u, v, 1.5, seed) - 0.5),
         Boards => {
             let (bw, bl) = (0.14, 1.3);
             let row = (v / bw).floor();

@@ -4,14 +4,17 @@
 //! builds [`Gaussians`].
 //!
 //! The Gaussians are flat surfels lying in their surface (scale along the normal a tenth of the
-//! spacing, tangent scales 0.6 of it, so neighbours overlap and the draft walls look solid), laid
+//! spacing, tangent scales 0.9 of it, so neighbours overlap and the draft walls look solid: at 0.6
+//! the jittered grid left pinholes that read as a speckled stucco), laid
 //! on a jittered grid (planes) or a Fibonacci / sunflower lattice (hemisphere, disk) so that there
 //! are no holes, with SH degree 0 and a high opacity. Counts follow area: `density` Gaussians per
 //! square metre, scaled down together when the total would pass `cap`. The authors use 400k per
 //! wall and 300k for the floor (2.3M, random uniform points, opacity 0.1); a draft needs far fewer.
 mod colours;
+mod light;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
+pub use light::{bake_light, openings_of, restyle_surface, LitBox, Opening};
 
 use crate::plan::spec::SceneType;
 use crate::splat::cloud::SH_C0;
@@ -69,7 +72,7 @@ impl Default for EnvOptions {
 /// How far the walls and ceiling are pushed outward: U(0, 2 cm), as the authors do.
 pub const WALL_PUSH: f64 = 0.02;
 /// Tangent scale of a surfel as a fraction of the point spacing (neighbours overlap).
-const TANGENT_SCALE: f64 = 0.6;
+const TANGENT_SCALE: f64 = 0.9;
 /// Normal scale of a surfel as a fraction of the point spacing (flat).
 const NORMAL_SCALE: f64 = 0.1;
 
