@@ -270,3 +270,35 @@ fn out_of_bounds_values_are_refused_in_one_line_and_messages_say_each_path_once(
     );
     let _ = std::fs::remove_dir_all(&root);
 }
+
+#[test]
+fn video_and_render_check_their_output_before_rendering() {
+    let root = tmp("early");
+    let out = root.join("scene");
+    let o = draft(&out, "0", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let d = out.to_string_lossy().to_string();
+    // A regular file where the output's directory should be: nothing can be written under it
+    // (even as root, unlike a read-only mode bit).
+    let blocker = root.join("blocker");
+    std::fs::write(&blocker, b"x").expect("write blocker");
+    let gif = blocker.join("x.gif").to_string_lossy().to_string();
+    // Enough frames that rendering them all would take far longer than the check.
+    let o = run(
+        &["video", &d, "--out", &gif, "--seconds", "60", "--fps", "30"],
+        &[],
+    );
+    let err = stderr(&o);
+    assert!(!o.status.success(), "video refused");
+    assert!(err.contains("blocker"), "names the path: {err}");
+    assert!(!err.contains("frame"), "no frame rendered first: {err}");
+    let dir = blocker.join("views").to_string_lossy().to_string();
+    let o = run(&["render", &d, "--trajectory", "orbit", "--out", &dir], &[]);
+    assert!(!o.status.success(), "render refused");
+    assert!(stderr(&o).contains("blocker"), "{}", stderr(&o));
+    assert!(
+        std::fs::read(&blocker).expect("blocker kept") == b"x",
+        "nothing overwritten"
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -18,7 +18,7 @@ pub mod view;
 use anyhow::{Context as _, Result};
 use dreamscene::gpu::Context;
 use dreamscene::splat::raster::RenderOutput;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// An error and its causes in one line, each thing said once: a cause that repeats a path (or
 /// anything else) the line already holds drops the repeat.
@@ -119,6 +119,27 @@ pub fn read_input<T>(input: &Path, read: impl FnOnce() -> Result<T>) -> Result<T
         }
         _ => read(),
     }
+}
+
+/// Checks, before any long work, that `file` can be written: its directory is created and a
+/// probe file is written there and removed. The probe never touches `file` itself, so an existing
+/// output stays as it is until the real write replaces it.
+pub fn check_writable(file: &Path) -> Result<()> {
+    create_parent(file)?;
+    let dir = match file.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(d) => d.to_path_buf(),
+        None => PathBuf::from("."),
+    };
+    check_writable_dir(&dir).with_context(|| format!("cannot write {}", file.display()))
+}
+
+/// Checks that files can be created in `dir` (created if missing), before any long work.
+pub fn check_writable_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let probe = dir.join(format!(".dreamscene-write-check-{}", std::process::id()));
+    std::fs::write(&probe, b"").map_err(|e| anyhow::anyhow!("{}: {e}", dir.display()))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
 }
 
 /// Creates the directory that will hold `file`.

@@ -72,6 +72,7 @@ pub fn run(a: Args) -> Result<()> {
         super::read_input(input, || Ok(open_input_at(input, a.time)?))?
     };
     let cams = cameras(&trajectory, &input.subject, a.frames, a.size)?;
+    super::check_writable_dir(&a.out)?;
     render_all(&input.cloud, &cams, &a.out, a.background)
 }
 
