@@ -165,9 +165,21 @@ fn planned_prompts_lay_out_validly() {
         if let Some([w, d]) = size {
             assert_eq!([room[0], room[1]], [*w, *d], "{p}: room size kept");
         } else if spec.scene_type == SceneType::Indoor && !p.contains("square") {
-            let area: f64 = spec.instances().iter().map(|i| i.size[0] * i.size[1]).sum();
+            // A room asked small is trimmed to the capacity's occupancy (floor footprints).
+            let small = ["small", "tiny", "cramped"].iter().any(|w| p.contains(w));
+            let (area, limit) = if small {
+                (
+                    dreamscene::plan::capacity::floor_area(&spec),
+                    dreamscene::plan::capacity::TRIM_OCCUPANCY,
+                )
+            } else {
+                (
+                    spec.instances().iter().map(|i| i.size[0] * i.size[1]).sum(),
+                    INDOOR_OCCUPANCY,
+                )
+            };
             assert!(
-                area / (room[0] * room[1]) <= INDOOR_OCCUPANCY + 1e-9,
+                area / (room[0] * room[1]) <= limit + 1e-9,
                 "{p}: occupancy"
             );
         }

@@ -8,7 +8,9 @@ use super::kb::KnowledgeBase;
 use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, find_lengths, Dims};
 
+mod counts;
 mod placements;
+use counts::read_counts;
 use placements::read_placements;
 use regex::Regex;
 use std::collections::BTreeMap;
@@ -141,6 +143,14 @@ pub struct Mention {
     pub negated: bool,
     /// Width, depth, height stated for it (metres; zero where not stated).
     pub size: [f64; 3],
+    /// "each umbrella", "every desk": the object named before, not a new one.
+    pub reference: bool,
+    /// "two chairs at each table": the mention whose every instance gets `count` of these.
+    pub each_of: Option<usize>,
+    /// "a bench down each side of every table": parts of each instance (2 sides); 1 otherwise.
+    pub parts: u32,
+    /// "in four rows of six": the number of rows (0 when not in rows).
+    pub rows: u32,
 }
 
 /// What a request says.
@@ -154,12 +164,18 @@ pub struct Reading {
     /// Room floor [W, D] and height, metres.
     pub room: Option<[f64; 2]>,
     pub room_height: Option<f64>,
+    /// The room's size was given without a unit and read as metres.
+    pub room_unitless: bool,
     /// (subject mention, relation, object mention) indices into `mentions`.
     pub relations: Vec<(usize, RelationKind, usize)>,
     /// Anchors the text gives (mention index).
     pub anchors: Vec<(usize, Anchor)>,
     /// "for 24 students".
     pub people: Option<u32>,
+    /// "just a bed and a chest, nothing else": only what the text names.
+    pub exclusive: bool,
+    /// "a table for six": (table mention, seats at each of its instances).
+    pub seats_for: Vec<(usize, u32)>,
     /// "small" / "large" said of the scene.
     pub scale: f64,
     /// Nothing in the text looks like English.
@@ -343,6 +359,13 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         {
             continue;
         }
+        // "a computer lab", "a piano bar": a noun right before the scene's name names the kind
+        // of scene, not an object in it.
+        if r.scene.is_some_and(|(_, s, _)| {
+            s > m.end() && t[m.end()..s].trim().is_empty() && !m.as_str().is_empty()
+        }) {
+            continue;
+        }
         let (cat, plural) = table[m.as_str()].clone();
         if let Some(last) = raw.last_mut() {
             if last.2 == cat && t[last.1..m.start()].trim().is_empty() {
@@ -485,6 +508,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                     negated = true;
                 }
             }
+            Some("of") if prev2 == Some("instead") => {
+                // "a sofa bed instead of a bed"
+                negated = true;
+            }
             Some("of") => {
                 // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
                 if let Some(n) = prev2.and_then(number_of) {
@@ -497,7 +524,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                             count = Some(m * n.max(1));
                         }
                     }
-                } else if prev2.is_some_and(|p| ["sets", "set", "rows", "row"].contains(&p)) {
+                } else if prev2.is_some_and(|p| ["sets", "set"].contains(&p)) {
                     count = prev3.and_then(number_of);
                 } else if prev2.is_some_and(|p| ["lots", "plenty", "lot"].contains(&p)) {
                     count = Some(6);
@@ -505,6 +532,18 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 if prev3.is_some_and(|p| NEGATORS.contains(&p)) {
                     negated = true;
                 }
+            }
+            Some("other" | "more" | "additional" | "extra")
+                if prev2.is_some_and(|p| NEGATORS.contains(&p)) =>
+            {
+                // "no other beds": none besides those named
+                negated = true;
+                adjectives.insert(0, "other".to_string());
+            }
+            Some("single") if prev2.and_then(number_of).is_some_and(|n| n > 1) => {
+                // "30 single desks": the number counts, "single" describes
+                count = prev2.and_then(number_of);
+                adjectives.insert(0, "single".to_string());
             }
             Some(w) => {
                 if let Some(n) = number_of(w) {
@@ -568,6 +607,10 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             definite,
             negated,
             size,
+            reference: false,
+            each_of: None,
+            parts: 1,
+            rows: 0,
         });
         prev_end = end;
     }
@@ -583,6 +626,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             }
         } else if r.room.is_none() && d.values.len() >= 2 {
             r.room = Some([d.values[0], d.values[1]]);
+            r.room_unitless = d.unitless;
             if let Some(&h) = d.values.get(2) {
                 r.room_height = Some(h);
             }
@@ -605,24 +649,106 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             }
         }
     }
-    if let Some((_, s, _)) = r.scene {
-        let pre = &t[..s];
-        if re(r"\b(?:small|tiny|compact|little|cramped|narrow)\s*(?:[a-z'-]+\s+)?$").is_match(pre) {
-            r.scale = 0.75;
-        } else if re(r"\b(?:large|big|huge|spacious|grand|vast|open)\s*(?:[a-z'-]+\s+)?$")
-            .is_match(pre)
-        {
-            r.scale = 1.35;
-        }
-    }
-
+    r.scale = room_scale(&t, &r.mentions, r.scene.map(|(_, s, _)| s));
+    r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
+        .is_match(&t);
+    read_counts(&mut r);
     read_placements(&mut r);
 
     let words: Vec<&str> = t
         .split(|c: char| !c.is_alphanumeric() && c != '\'')
         .filter(|w| !w.is_empty())
         .collect();
-    let english = words.iter().filter(|w| english().contains(w)).count();
-    r.not_english = words.len() >= 3 && english == 0;
+    // Words an English reader knows: function words, request verbs, object and scene names.
+    let (_, objects_by_name) = object_matcher(kb);
+    let (_, scenes_by_name) = scene_matcher(kb);
+    let known = words
+        .iter()
+        .filter(|w| {
+            english().contains(w)
+                || is_function_word(w)
+                || is_verb(w)
+                || number_of(w).is_some()
+                || objects_by_name.contains_key(**w)
+                || scenes_by_name.contains_key(**w)
+        })
+        .count();
+    r.not_english = words.len() >= 3 && other_language(text, known, words.len());
     r
+}
+
+/// The room's size word ("a tiny bathroom", "a bedroom that's tiny", "quite cramped", "a box
+/// room") as a factor on the floor area the furniture needs (`kb/words.txt`: room_tiny,
+/// room_small, room_large); a size word inside an object's noun phrase ("a small table") is the
+/// object's, not the room's.
+fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 {
+    let words = words_in(t, 0, t.len());
+    let mut scale: f64 = 1.0;
+    for (k, &(pos, w)) in words.iter().enumerate() {
+        let two = words
+            .get(k + 1)
+            .map(|(_, n)| format!("{w} {n}"))
+            .unwrap_or_default();
+        let factor = if word_list("room_tiny").contains(&w)
+            || word_list("room_tiny").contains(&two.replace(' ', "-").as_str())
+        {
+            0.35
+        } else if word_list("room_small").contains(&w) {
+            0.5
+        } else if word_list("room_large").contains(&w) {
+            1.35
+        } else {
+            continue;
+        };
+        // The noun this word describes: the next mention or scene name before punctuation.
+        let rest: Vec<&(usize, &str)> = words[k + 1..]
+            .iter()
+            .take_while(|(_, x)| *x != ",")
+            .take(4)
+            .collect();
+        let object = rest.iter().any(|(p, _)| {
+            mentions.iter().any(|m| m.start == *p)
+                && scene_start != Some(*p)
+                && !mentions.iter().any(|m| m.start == *p && m.category.ends_with("room"))
+        });
+        let scene_next = rest.iter().any(|(p, _)| scene_start == Some(*p));
+        if object && !scene_next {
+            continue;
+        }
+        let _ = pos;
+        scale = if factor < 1.0 { scale.min(factor) } else { scale.max(factor) };
+    }
+    scale
+}
+
+/// Whether `text` is written in another language than English: `whatlang`'s trigram detector
+/// among the languages people most often write requests in, trusted only when it is confident
+/// or few of the words are ones an English reader knows, and never when half of them are (a
+/// short English list of nouns can look like anything to a trigram model).
+fn other_language(text: &str, english_words: usize, words: usize) -> bool {
+    use whatlang::{Detector, Lang};
+    static DETECTOR: OnceLock<Detector> = OnceLock::new();
+    let detector = DETECTOR.get_or_init(|| {
+        Detector::with_allowlist(vec![
+            Lang::Eng,
+            Lang::Spa,
+            Lang::Fra,
+            Lang::Deu,
+            Lang::Ita,
+            Lang::Por,
+            Lang::Nld,
+            Lang::Pol,
+            Lang::Swe,
+            Lang::Dan,
+            Lang::Tur,
+            Lang::Rus,
+            Lang::Cmn,
+            Lang::Jpn,
+        ])
+    });
+    let Some(info) = detector.detect(text) else {
+        return false;
+    };
+    let share = english_words as f64 / words.max(1) as f64;
+    info.lang() != Lang::Eng && (info.confidence() >= 0.3 || share < 0.34) && share < 0.5
 }

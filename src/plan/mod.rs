@@ -10,5 +10,6 @@ pub mod kb;
 pub mod lang;
 pub mod llm;
 pub mod offline;
+pub mod roles;
 pub mod spec;
 pub mod units;

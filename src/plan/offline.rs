@@ -196,6 +196,95 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
+/// Floor of a room the text calls small or tiny: what the named objects need in use (their
+/// footprints with room to use them at half the floor, a little more when tiny; the longest
+/// with a walkway), or with nothing named the scene's furniture room scaled by `scale`; never
+/// below a small room's side. The defaults are then trimmed to fit by `capacity::fit`.
+fn small_room(
+    spec: &SceneSpec,
+    named: &BTreeSet<String>,
+    full: [f64; 3],
+    scale: f64,
+    scene_type: SceneType,
+) -> [f64; 3] {
+    let named_inst: Vec<_> = spec
+        .instances()
+        .into_iter()
+        .filter(|i| named.contains(&i.category))
+        .collect();
+    let margin = super::capacity::USE_MARGIN;
+    // The share of the floor the named furniture may take: more in a room called tiny.
+    let occupancy = if scale < 0.45 { 0.55 } else { 0.5 };
+    let need: f64 = named_inst
+        .iter()
+        .filter(|i| i.size[2] >= 0.05)
+        .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
+        .sum::<f64>()
+        / occupancy;
+    let longest = spec
+        .instances()
+        .iter()
+        .filter(|i| named.contains(&i.category))
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    let base_side: f64 = match scene_type {
+        SceneType::Indoor if scale < 0.45 => 1.8,
+        SceneType::Indoor => 2.2,
+        SceneType::Outdoor => 6.0,
+    };
+    let min_side = base_side.max(longest + 0.4);
+    // What the text names sets the floor; with nothing named, the scene's furniture scaled.
+    let area = if named_inst.is_empty() {
+        full[0] * full[1] * scale
+    } else {
+        need.min(full[0] * full[1])
+    };
+    let w = (area * 1.25).sqrt().max(min_side);
+    let d = (area / w).max(min_side);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    [r(w), r(d), full[2]]
+}
+
+/// The seat category that goes round `table`: one the plan already has, else the first of the
+/// usual seats that the functional groups put at such a table.
+fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
+    const USUAL: &[&str] = &[
+        "dining chair",
+        "cafe chair",
+        "patio chair",
+        "office chair",
+        "bar stool",
+    ];
+    let probe = |seat: &str| {
+        let mut objects = BTreeMap::new();
+        for c in [table, seat] {
+            objects.insert(
+                c.to_string(),
+                ObjectSpec {
+                    number: 1,
+                    size: [1.0, 1.0, 1.0],
+                    description: String::new(),
+                },
+            );
+        }
+        let spec = SceneSpec {
+            scene_type: SceneType::Indoor,
+            scene_text: String::new(),
+            room: None,
+            objects,
+            anchors: BTreeMap::new(),
+            relations: vec![],
+        };
+        super::groups::group_of(&spec, seat).is_some_and(|(_, t)| t == table)
+    };
+    counts
+        .keys()
+        .map(String::as_str)
+        .chain(USUAL.iter().copied())
+        .find(|s| *s != table && probe(s))
+        .map(str::to_string)
+}
+
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,
 /// else from a size class named by its words.
 fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
@@ -229,7 +318,7 @@ fn fmt_size(s: [f64; 3]) -> String {
 pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let kb = KnowledgeBase::builtin();
     let r: Reading = lang::read(kb, prompt);
-    if r.not_english && r.scene.is_none() {
+    if r.not_english {
         return Err(PlanError::NotEnglish(prompt.trim().to_string()));
     }
     if r.scene.is_none() && r.mentions.is_empty() {
@@ -264,9 +353,21 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
     let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    // "two chairs at each table": (category, per instance, category of the distributor).
+    let mut distributed: Vec<(String, u32, String)> = vec![];
+    let mut others: BTreeSet<String> = BTreeSet::new();
     for (m, cat) in r.mentions.iter().zip(&cats) {
         if m.negated {
-            negated.insert(cat.clone());
+            if m.adjectives.iter().any(|a| a == "other") {
+                // "no other beds": no default of that kind or role, the named ones stay
+                others.insert(cat.clone());
+            } else {
+                negated.insert(cat.clone());
+            }
+            continue;
+        }
+        if m.reference {
+            // "each umbrella": the umbrellas named before
             continue;
         }
         if !m.known && !unknown.contains_key(cat) {
@@ -290,6 +391,10 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 sizes.insert(cat.clone(), size);
             }
         }
+        if let Some(x) = m.each_of {
+            distributed.push((cat.clone(), m.count.unwrap_or(1) * m.parts, cats[x].clone()));
+            continue;
+        }
         match m.count {
             Some(n) => {
                 *explicit.entry(cat.clone()).or_default() += n;
@@ -311,10 +416,56 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     for (c, n) in &explicit {
         counts.insert(c.clone(), *n);
     }
+    // Distributive counts multiply by the instances of what they distribute over.
+    let mut spread: BTreeMap<String, u32> = BTreeMap::new();
+    for (c, per, x) in &distributed {
+        let over = counts.get(x).copied().unwrap_or(1).max(1);
+        *spread.entry(c.clone()).or_default() += per * over;
+    }
+    for (c, n) in spread {
+        let total = explicit.get(&c).copied().unwrap_or(0) + n;
+        explicit.insert(c.clone(), total);
+        counts.insert(c, total);
+    }
+    // "A table for six": that many seats at each of those tables.
+    let mut seated = false;
+    for &(ti, per) in &r.seats_for {
+        let table = &cats[ti];
+        let Some(&tables) = counts.get(table) else {
+            continue;
+        };
+        let Some(seat) = seat_for(table, &counts) else {
+            continue;
+        };
+        seated = true;
+        let n = per * tables.max(1);
+        let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
+            explicit[&seat].max(n)
+        } else {
+            n
+        };
+        explicit.insert(seat.clone(), total);
+        named.insert(seat.clone());
+        counts.insert(seat, total);
+    }
+    let people = if seated { None } else { r.people };
     // Negation removes the category, defaults included.
     for c in &negated {
         counts.remove(c);
         named.remove(c);
+    }
+    // Named objects fill the roles of the defaults they replace.
+    notes.extend(super::roles::apply(&mut counts, &named, r.exclusive));
+    for c in &others {
+        if !named.contains(c) {
+            counts.remove(c);
+        }
+    }
+    // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
+    for c in negated.iter().chain(&others) {
+        if let Some(role) = super::roles::role_of(c) {
+            counts.retain(|k, _| named.contains(k) || super::roles::role_of(k) != Some(role));
+        }
     }
 
     // Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" 24
@@ -369,7 +520,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     counts.get(*c).copied().unwrap_or(0),
                 )
             });
-        if let Some(p) = r.people.filter(|_| main_seat == Some(seat)) {
+        if let Some(p) = people.filter(|_| main_seat == Some(seat)) {
             if !seat_named {
                 counts.insert(seat.clone(), p);
             }
@@ -394,7 +545,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
-    if r.people.is_some()
+    if people.is_some()
         && !counts
             .keys()
             .any(|c| super::groups::group_of(&probe, c).is_some())
@@ -610,21 +761,24 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
         None => {
             let mut room = room_for(&spec.instances(), scene_type);
-            if r.scale != 1.0 {
+            if r.scale < 1.0 {
+                room.size = small_room(&spec, &named, room.size, r.scale, scene_type);
+            } else if r.scale > 1.0 {
                 let s = r.scale.sqrt();
-                let min_side = if scene_type == SceneType::Indoor {
-                    2.5
-                } else {
-                    6.0
-                };
                 for k in 0..2 {
-                    room.size[k] = ((room.size[k] * s).max(min_side) * 10.0).ceil() / 10.0;
+                    room.size[k] = (room.size[k] * s * 10.0).ceil() / 10.0;
                 }
             }
             room
         }
     };
     spec.room = Some(room);
+    if r.room_unitless {
+        notes.push(format!(
+            "room size {} x {} has no unit: read as metres",
+            room.size[0], room.size[1]
+        ));
+    }
     let fitted = fit(&mut spec, &named, stated.is_some() || r.scale < 1.0)?;
     notes.extend(fitted);
     Ok(Plan { spec, named, notes })

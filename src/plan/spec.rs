@@ -254,7 +254,7 @@ pub enum SpecError {
 }
 
 /// Most instances of one category a spec may ask for.
-pub const MAX_NUMBER: u32 = 20;
+pub const MAX_NUMBER: u32 = 120;
 
 impl SceneSpec {
     /// The instances, in category order then index: `sofa1`, `sofa2`, ...

@@ -12,6 +12,8 @@ pub struct Dims {
     pub values: Vec<f64>,
     /// An area in square metres instead ("20 square meters"): `values` is empty then.
     pub area: Option<f64>,
+    /// No unit was given ("a bedroom 3 x 4"): the numbers were read as metres.
+    pub unitless: bool,
 }
 
 const UNIT: &str = r#"(?:mm|millimet(?:er|re)s?|cm|centimet(?:er|re)s?|m|met(?:er|re)s?|ft|feet|foot|in|inch|inches|'|"|′|″)"#;
@@ -68,8 +70,14 @@ pub fn find_dims(t: &str) -> Vec<Dims> {
             .iter()
             .map(|&k| c.get(k).and_then(|u| unit_scale(u.as_str())))
             .collect();
-        let Some(default) = units.iter().rev().flatten().next().copied() else {
-            continue;
+        // No unit at all: metres when every number is a plausible length in metres.
+        let unitless = units.iter().all(Option::is_none);
+        let plausible = nums.iter().flatten().count() >= 2
+            && nums.iter().flatten().all(|&n| (1.0..=60.0).contains(&n));
+        let default = match units.iter().rev().flatten().next().copied() {
+            Some(u) => u,
+            None if plausible => 1.0,
+            None => continue,
         };
         let values: Vec<f64> = nums
             .iter()
@@ -81,6 +89,7 @@ pub fn find_dims(t: &str) -> Vec<Dims> {
             end: m.end(),
             values,
             area: None,
+            unitless,
         });
     }
     for c in area_re().captures_iter(t) {
@@ -99,6 +108,7 @@ pub fn find_dims(t: &str) -> Vec<Dims> {
             end: m.end(),
             values: vec![],
             area: Some(if feet { a * 0.3048 * 0.3048 } else { a }),
+            unitless: false,
         });
     }
     out.sort_by_key(|d| d.start);

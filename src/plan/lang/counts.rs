@@ -1,0 +1,216 @@
+//! Counts that compose across noun phrases: distributive phrases ("four tables with two chairs
+//! each", "a laptop on every desk", "three tables, each with a lamp and a vase", "a bench down
+//! each side"), seats of a table ("a table for six", "eight tables, each laid for four") and rows
+//! ("six rows of ten seats", "two rows of recliners, three in each row"). A mention after
+//! "each" or "every" refers back to an object already named, never a new one.
+use super::{number_of, re, Reading};
+
+/// How many of a thing "each side" and its kin stand for.
+const PARTS: &[(&str, u32)] = &[
+    ("side", 2),
+    ("end", 2),
+    ("corner", 4),
+    ("wall", 4),
+];
+
+/// The mention a later "each"/"every" phrase distributes over: the nearest mention before `pos`
+/// that names several things (a count above one or a plural), of another category than `not`.
+fn distributor(r: &Reading, pos: usize, not: &str) -> Option<usize> {
+    r.mentions
+        .iter()
+        .enumerate()
+        .rev()
+        .find(|(_, m)| {
+            m.end <= pos
+                && !m.negated
+                && !m.reference
+                && m.category != not
+                && (m.count.is_some_and(|n| n > 1) || (m.plural && m.count.is_none()))
+        })
+        .map(|(i, _)| i)
+}
+
+/// The first named mention of the category of mention `i` (what "each umbrella" refers to).
+fn referent(r: &Reading, i: usize) -> usize {
+    let cat = &r.mentions[i].category;
+    r.mentions
+        .iter()
+        .position(|m| &m.category == cat && !m.reference && !m.negated)
+        .unwrap_or(i)
+}
+
+/// Multiplier of a part phrase ("each side" = 2) at the start of `s`.
+fn part(s: &str) -> Option<u32> {
+    let w = s.split_whitespace().next()?;
+    let w = w.trim_matches(|c: char| !c.is_alphabetic());
+    PARTS
+        .iter()
+        .find(|(p, _)| *p == w || format!("{p}s") == w)
+        .map(|&(_, n)| n)
+}
+
+/// Reads the distributive counts, seats and rows of `r` (after its mentions).
+pub(super) fn read_counts(r: &mut Reading) {
+    let t = r.text.clone();
+    // "each X" / "every X": a reference to X.
+    let each_before = re(r"\b(?:each|every)\s+(?:[a-z'-]+\s+){0,2}$");
+    for k in 0..r.mentions.len() {
+        let m = &r.mentions[k];
+        let from = m.start.saturating_sub(30);
+        let from = (from..=m.start)
+            .find(|&i| t.is_char_boundary(i))
+            .unwrap_or(m.start);
+        if each_before.is_match(&t[from..m.start]) && m.count.is_none() && !m.negated {
+            let earlier = r.mentions[..k]
+                .iter()
+                .any(|o| o.category == m.category && !o.negated);
+            let m = &mut r.mentions[k];
+            m.reference = earlier;
+            m.definite = true;
+        }
+    }
+    let n = r.mentions.len();
+    // "Y each", "Y apiece", "Y per X", "Y at each X", "Y beneath each one", "Y on each side".
+    let tail_re = re(
+        r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece)\b(?: (one|of them|side|sides|end|ends|corner|corners|wall))?)",
+    );
+    for k in 0..n {
+        let m = &r.mentions[k];
+        if m.negated || m.reference || m.each_of.is_some() {
+            continue;
+        }
+        let next = r.mentions.get(k + 1).map(|o| o.start).unwrap_or(t.len());
+        let clause_end = t[m.end..]
+            .find([',', ';', '.', '!', '?'])
+            .map(|i| m.end + i)
+            .unwrap_or(t.len());
+        let tail = &t[m.end..next.min(clause_end + 1).max(m.end)];
+        let Some(c) = tail_re.captures(tail) else {
+            continue;
+        };
+        // Words between the noun and "each" are placement words, not a new clause.
+        let lead = &tail[..c.get(1).map(|g| g.start()).unwrap_or(0)];
+        if lead.contains(" with ") || lead.contains(" and ") || lead.split_whitespace().count() > 4 {
+            continue;
+        }
+        let word = c.get(1).map(|g| g.as_str()).unwrap_or("");
+        let what = c.get(2).map(|g| g.as_str());
+        let after_each = c.get(0).map(|g| g.end()).unwrap_or(0);
+        let cat = m.category.clone();
+        if let Some(p) = what.and_then(part) {
+            // "two cannons on each side": as many as the parts, times a named owner if any
+            // ("a bench down each side of every table").
+            let rest = &tail[after_each..];
+            let owner = if rest.trim_start().starts_with("of ") {
+                (k + 1..n)
+                    .find(|&j| r.mentions[j].reference && r.mentions[j].start <= next + 40)
+                    .map(|j| referent(r, j))
+            } else {
+                None
+            };
+            let m = &mut r.mentions[k];
+            m.parts = p;
+            m.each_of = owner;
+            if owner.is_none() {
+                m.count = Some(m.count.unwrap_or(1) * p);
+                m.parts = 1;
+            }
+            continue;
+        }
+        let over = match (word, what) {
+            ("per" | "each" | "every", None) if next <= m.end + tail.len() && k + 1 < n => {
+                // "per table", "at each bench": the next mention, a reference
+                let nm = &r.mentions[k + 1];
+                if t[m.end..nm.start].trim_end().ends_with(word) && nm.reference {
+                    Some(referent(r, k + 1))
+                } else if word == "each" || word == "apiece" {
+                    distributor(r, m.start, &cat)
+                } else {
+                    None
+                }
+            }
+            _ => distributor(r, m.start, &cat),
+        };
+        if let Some(x) = over {
+            r.mentions[k].each_of = Some(x);
+        }
+    }
+    // "X, each with Y and Z", "X, each sheltering a pair of Y".
+    let each_clause = re(r"\beach (?:with|having|holding|has|gets|topped with|[a-z]+ing)\b");
+    for c in each_clause.find_iter(&t) {
+        let Some(x) = distributor(r, c.start(), "") else {
+            continue;
+        };
+        let end = t[c.end()..]
+            .find([',', ';', '.', '!', '?'])
+            .map(|i| c.end() + i)
+            .unwrap_or(t.len());
+        for m in r.mentions.iter_mut() {
+            if m.start >= c.end() && m.end <= end && !m.negated && !m.reference && m.each_of.is_none()
+            {
+                m.each_of = Some(x);
+            }
+        }
+    }
+    // Seats of a table: "a table for six", "tables for two", "each laid for four", "that seats 8".
+    let seats = re(
+        r"^[ ,]*(?:each )?(?:(?:that|which) )?(?:(?:is )?(?:laid|set|seating|seats|seat) )?(?:for )?([0-9]+|[a-z]+)\b",
+    );
+    for k in 0..n {
+        let m = &r.mentions[k];
+        if m.negated || m.reference {
+            continue;
+        }
+        let tail = &t[m.end..t.len().min(m.end + 40)];
+        let Some(c) = seats.captures(tail) else {
+            continue;
+        };
+        let whole = c.get(0).map(|g| g.as_str()).unwrap_or("");
+        if !(whole.contains("for ") || whole.contains("seat")) {
+            continue;
+        }
+        if let Some(v) = number_of(&c[1]).filter(|&v| v >= 2) {
+            r.seats_for.push((k, v));
+        }
+    }
+    // Rows: "N rows of M Y", "Y in N rows of M", "N rows of Y, M in each row".
+    let rows_of_m = re(r"\b([0-9]+|[a-z]+) (?:rows|lines|columns) of ([0-9]+|[a-z]+)\b");
+    for c in rows_of_m.captures_iter(&t) {
+        let (Some(a), Some(b)) = (number_of(&c[1]), number_of(&c[2])) else {
+            continue;
+        };
+        if a < 2 {
+            continue;
+        }
+        let end = c.get(0).map(|g| g.end()).unwrap_or(0);
+        let start = c.get(0).map(|g| g.start()).unwrap_or(0);
+        // the thing in rows: right after ("rows of ten seats"), else right before ("desks in ...")
+        let after = r.mentions.iter().position(|m| {
+            m.start >= end && t[end..m.start].split_whitespace().all(super::is_adjective)
+        });
+        let before = r
+            .mentions
+            .iter()
+            .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3);
+        if let Some(i) = after.or(before) {
+            let m = &mut r.mentions[i];
+            if after.is_some() || m.count.is_none() {
+                m.count = Some(a * b);
+                m.rows = a;
+            }
+        }
+    }
+    let rows_then = re(
+        r"\b([0-9]+|[a-z]+) (?:rows|lines) of [^,.;]*?[,;]? (?:with )?([0-9]+|[a-z]+) (?:in each|per|to a|in every|on each|each) (?:row|line)\b",
+    );
+    for c in rows_then.captures_iter(&t) {
+        let (Some(a), Some(b)) = (number_of(&c[1]), number_of(&c[2])) else {
+            continue;
+        };
+        let (s, e) = c.get(0).map(|g| (g.start(), g.end())).unwrap_or((0, 0));
+        if let Some(m) = r.mentions.iter_mut().find(|m| m.start >= s && m.end <= e && !m.negated) {
+            m.count = Some(a * b);
+            m.rows = a;
+        }
+    }
+}

@@ -1,0 +1,146 @@
+//! Roles that furniture fills (`kb/roles.txt`): a named object that fills a role replaces the
+//! scene's default of that role instead of adding to it ("a single bed" in a bedroom is its bed),
+//! a default that serves only what is absent goes (no TV, no TV stand), and "nothing else" /
+//! "just ..." keeps only what the text names.
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::OnceLock;
+
+/// The role table: role name to categories, and "needs" lines: category to what it serves.
+struct Roles {
+    roles: Vec<(String, Vec<String>)>,
+    needs: Vec<(String, Vec<String>)>,
+}
+
+fn roles() -> &'static Roles {
+    static R: OnceLock<Roles> = OnceLock::new();
+    R.get_or_init(|| {
+        let mut r = Roles {
+            roles: vec![],
+            needs: vec![],
+        };
+        for line in include_str!("kb/roles.txt").lines() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let cols: Vec<&str> = line.split('|').map(str::trim).collect();
+            let list = |s: &str| -> Vec<String> {
+                s.split(',')
+                    .map(|c| c.trim().to_string())
+                    .filter(|c| !c.is_empty())
+                    .collect()
+            };
+            match cols.as_slice() {
+                ["needs", cat, served] => r.needs.push((cat.to_string(), list(served))),
+                [role, cats] => r.roles.push((role.to_string(), list(cats))),
+                _ => {}
+            }
+        }
+        r
+    })
+}
+
+/// The role `category` fills, if any.
+pub fn role_of(category: &str) -> Option<&'static str> {
+    roles()
+        .roles
+        .iter()
+        .find(|(_, cats)| cats.iter().any(|c| c == category))
+        .map(|(r, _)| r.as_str())
+}
+
+/// Removes from `counts` the defaults (categories not in `named`) that a named object's role
+/// replaces, those serving only absent things, and with `exclusive` every default. One note
+/// per category removed.
+pub fn apply(
+    counts: &mut BTreeMap<String, u32>,
+    named: &BTreeSet<String>,
+    exclusive: bool,
+) -> Vec<String> {
+    let mut notes = vec![];
+    if exclusive {
+        let gone: Vec<String> = counts
+            .keys()
+            .filter(|c| !named.contains(*c))
+            .cloned()
+            .collect();
+        for c in gone {
+            counts.remove(&c);
+            notes.push(format!("default {c} left out: the text asks for nothing else"));
+        }
+        return notes;
+    }
+    for (role, cats) in &roles().roles {
+        let Some(by) = cats.iter().find(|c| named.contains(*c)) else {
+            continue;
+        };
+        for c in cats {
+            if !named.contains(c) && counts.remove(c).is_some() {
+                notes.push(format!("default {c} left out: the named {by} is the {role}"));
+            }
+        }
+    }
+    // Twice: a removal can leave another default serving nothing.
+    for _ in 0..2 {
+        for (c, served) in &roles().needs {
+            if counts.contains_key(c)
+                && !named.contains(c)
+                && !served.iter().any(|s| counts.contains_key(s))
+            {
+                counts.remove(c);
+                notes.push(format!(
+                    "default {c} left out: nothing it serves ({}) is planned",
+                    served.join(", ")
+                ));
+            }
+        }
+    }
+    notes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plan(defaults: &[(&str, u32)], named: &[&str]) -> BTreeMap<String, u32> {
+        let mut counts: BTreeMap<String, u32> =
+            defaults.iter().map(|(c, n)| (c.to_string(), *n)).collect();
+        for c in named {
+            counts.insert(c.to_string(), 1);
+        }
+        let named: BTreeSet<String> = named.iter().map(|c| c.to_string()).collect();
+        apply(&mut counts, &named, false);
+        counts
+    }
+
+    #[test]
+    fn a_named_object_replaces_the_default_of_its_role() {
+        let c = plan(&[("bed", 1), ("nightstand", 2)], &["single bed"]);
+        assert!(!c.contains_key("bed"), "{c:?}");
+        assert_eq!(c.get("nightstand"), Some(&2));
+        let c = plan(&[("blackboard", 1)], &["whiteboard"]);
+        assert!(!c.contains_key("blackboard"), "{c:?}");
+    }
+
+    #[test]
+    fn a_default_serving_nothing_goes() {
+        let c = plan(&[("tv stand", 1), ("sofa", 1)], &[]);
+        assert!(!c.contains_key("tv stand"), "{c:?}");
+        let c = plan(&[("tv stand", 1), ("tv", 1)], &[]);
+        assert!(c.contains_key("tv stand"), "{c:?}");
+    }
+
+    #[test]
+    fn every_role_category_is_a_knowledge_base_category() {
+        let kb = crate::plan::kb::KnowledgeBase::builtin();
+        assert!(roles().roles.len() >= 5);
+        for (_, cats) in roles().roles.iter().chain(&roles().needs) {
+            for c in cats {
+                assert!(
+                    kb.object(c).is_some_and(|o| o.category == *c),
+                    "`{c}` of kb/roles.txt is no category of kb/objects.txt"
+                );
+            }
+        }
+    }
+}
