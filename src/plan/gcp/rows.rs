@@ -6,7 +6,7 @@
 //! for what the rows face, a walkway behind, and every door's clear zone.
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
-use crate::plan::spec::{OpeningKind, RelationKind, SceneSpec};
+use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
 
 /// Free depth kept in front of the first row (for the board, screen or stage and its view).
 const FRONT: f64 = 1.8;
@@ -89,8 +89,7 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
     let cols = n.div_ceil(rows);
     // a seat drawn up to each (a chair at a desk, stools at a bench) needs room between rows
     let seated = spec.relations.iter().any(|r| {
-        matches!(r.relation, RelationKind::At | RelationKind::Around)
-            && base(&r.object) == cat
+        matches!(r.relation, RelationKind::At | RelationKind::Around) && base(&r.object) == cat
     });
     // what the rows face (a stage, a screen) and a metre to see it from
     let target = spec
@@ -212,22 +211,42 @@ impl Problem {
         placed: &[Option<Pose>],
     ) -> Option<(Vec<Pose>, [f64; 2])> {
         let [w, d, _] = self.room;
-        let mut tries: Vec<([f64; 2], f64)> = vec![];
-        for f in [[0.0, 1.0], [0.0, -1.0], [1.0, 0.0], [-1.0, 0.0]] {
+        // rows asked by or facing a window face a wall with one, close to it
+        let by_window = matches!(
+            self.inst[ids[0]].anchor,
+            Anchor::Window | Anchor::FaceWindow
+        );
+        let mut tries: Vec<([f64; 2], bool, f64)> = vec![];
+        for (f, wall) in [
+            ([0.0, 1.0], Wall::North),
+            ([0.0, -1.0], Wall::South),
+            ([1.0, 0.0], Wall::East),
+            ([-1.0, 0.0], Wall::West),
+        ] {
             let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
             let [na, nl] = b.needs();
             let slack = (across - na).min(along - nl + b.front - FRONT_MIN);
-            tries.push((f, slack));
+            let window = by_window
+                && self
+                    .openings
+                    .iter()
+                    .any(|o| o.kind == OpeningKind::Window && o.wall == wall);
+            tries.push((f, window, slack));
         }
-        // the most room first; equal rooms keep the order (north first)
-        tries.sort_by(|a, b| b.1.total_cmp(&a.1));
-        for (f, slack) in tries {
+        // a window first when asked, then the most room; ties keep the order (north first)
+        tries.sort_by(|a, b| b.1.cmp(&a.1).then(b.2.total_cmp(&a.2)));
+        for (f, window, slack) in tries {
             if slack < 0.0 {
                 continue;
             }
             let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
-            let front = (along - b.depth() - BEHIND).min(b.front).max(FRONT_MIN);
-            let rest = along - b.depth() - BEHIND - front;
+            let want = if window { FRONT_MIN } else { b.front };
+            let front = (along - b.depth() - BEHIND).min(want).max(FRONT_MIN);
+            let rest = if window {
+                0.0
+            } else {
+                along - b.depth() - BEHIND - front
+            };
             // the block's centre along the facing: behind the front band, the rest shared
             let v0 = 0.5 * along - front - 0.5 * rest.max(0.0) - 0.5 * b.depth();
             if b.width().max(b.target_width) > across {

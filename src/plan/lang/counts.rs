@@ -6,12 +6,7 @@
 use super::{number_of, re, Reading};
 
 /// How many of a thing "each side" and its kin stand for.
-const PARTS: &[(&str, u32)] = &[
-    ("side", 2),
-    ("end", 2),
-    ("corner", 4),
-    ("wall", 4),
-];
+const PARTS: &[(&str, u32)] = &[("side", 2), ("end", 2), ("corner", 4), ("wall", 4)];
 
 /// The mention a later "each"/"every" phrase distributes over: the nearest mention before `pos`
 /// that names several things (a count above one or a plural), of another category than `not`.
@@ -90,7 +85,8 @@ pub(super) fn read_counts(r: &mut Reading) {
         };
         // Words between the noun and "each" are placement words, not a new clause.
         let lead = &tail[..c.get(1).map(|g| g.start()).unwrap_or(0)];
-        if lead.contains(" with ") || lead.contains(" and ") || lead.split_whitespace().count() > 4 {
+        if lead.contains(" with ") || lead.contains(" and ") || lead.split_whitespace().count() > 4
+        {
             continue;
         }
         let word = c.get(1).map(|g| g.as_str()).unwrap_or("");
@@ -146,7 +142,11 @@ pub(super) fn read_counts(r: &mut Reading) {
             .map(|i| c.end() + i)
             .unwrap_or(t.len());
         for m in r.mentions.iter_mut() {
-            if m.start >= c.end() && m.end <= end && !m.negated && !m.reference && m.each_of.is_none()
+            if m.start >= c.end()
+                && m.end <= end
+                && !m.negated
+                && !m.reference
+                && m.each_of.is_none()
             {
                 m.each_of = Some(x);
             }
@@ -208,13 +208,18 @@ pub(super) fn read_counts(r: &mut Reading) {
             continue;
         };
         let (s, e) = c.get(0).map(|g| (g.start(), g.end())).unwrap_or((0, 0));
-        if let Some(m) = r.mentions.iter_mut().find(|m| m.start >= s && m.end <= e && !m.negated) {
+        if let Some(m) = r
+            .mentions
+            .iter_mut()
+            .find(|m| m.start >= s && m.end <= e && !m.negated)
+        {
             m.count = Some(a * b);
             m.rows = a;
         }
     }
     // "ten pews, five each side of the aisle": two blocks side by side, five rows deep.
-    let each_side = re(r"\b([0-9]+|[a-z]+) (?:on )?(?:each|either) side of the (?:aisle|nave|gangway)\b");
+    let each_side =
+        re(r"\b([0-9]+|[a-z]+) (?:on )?(?:each|either) side of the (?:aisle|nave|gangway)\b");
     for c in each_side.captures_iter(&t) {
         let Some(n) = number_of(&c[1]) else { continue };
         let start = c.get(0).map(|g| g.start()).unwrap_or(0);
