@@ -444,8 +444,8 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
         let mut r = choose_room(&inst, spec.scene_type);
         // rows asked: wide and deep enough for the block, its walkways and its front
         let need = rows::room_for_rows(spec);
-        for k in 0..2 {
-            r.size[k] = r.size[k].max((need[k] * 10.0).ceil() / 10.0);
+        for (v, n) in r.size.iter_mut().zip(need) {
+            *v = v.max((n * 10.0).ceil() / 10.0);
         }
         r
     });

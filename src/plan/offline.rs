@@ -782,8 +782,8 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
             // things asked in rows: wide and deep enough for the block and its front
             let need = super::gcp::rows::room_for_rows(&spec);
-            for k in 0..2 {
-                room.size[k] = room.size[k].max((need[k] * 10.0).ceil() / 10.0);
+            for (v, n) in room.size.iter_mut().zip(need) {
+                *v = v.max((n * 10.0).ceil() / 10.0);
             }
             room
         }
