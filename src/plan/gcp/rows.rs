@@ -1,9 +1,12 @@
 //! Things asked in rows ("four rows of six desks", "twelve desks in three rows", "a row of five
 //! treadmills"): one block of aligned rows, every instance turned the same way, toward the front
-//! of the room, where the thing the rows face (a board, screen, stage, altar) is then placed by
-//! the search. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances, side by side;
-//! rows of four or more, or of long things (pews, benches), are split by a centre aisle. The block keeps a free band at the front
-//! for what the rows face, a walkway behind, and every door's clear zone.
+//! of the room. What the rows face (their OPPOSITE or ROW partner, else the first category of
+//! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall,
+//! centred before them. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
+//! one fewer (every row is used), side by side; rows of four or more, or of long things (pews,
+//! benches), are split by a centre aisle. The block keeps a free band at the front for what the
+//! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
+//! face a wall with one.
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
@@ -63,7 +66,14 @@ impl Block {
 
     /// Local (across, along) centre of instance `k`; along grows toward the front.
     fn slot(&self, k: usize) -> [f64; 2] {
-        let (row, col) = (k / self.cols, k % self.cols);
+        // every row used: the first n % rows rows hold one more than the others
+        let (base, extra) = (self.n / self.rows, self.n % self.rows);
+        let (row, col) = if k < extra * (base + 1) {
+            (k / (base + 1), k % (base + 1))
+        } else {
+            let k = k - extra * (base + 1);
+            (extra + k / base, k % base)
+        };
         let aisle = if col >= self.cols.div_ceil(2) {
             self.aisle
         } else {
