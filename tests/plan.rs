@@ -178,7 +178,10 @@ fn planned_prompts_lay_out_validly() {
                     INDOOR_OCCUPANCY,
                 )
             };
-            assert!(area / (room[0] * room[1]) <= limit + 1e-9, "{p}: occupancy");
+            assert!(
+                area / (room[0] * room[1]) <= limit + 1e-9,
+                "{p}: occupancy"
+            );
         }
         let l = layout(&spec, LayoutOptions::seeded(1)).unwrap();
         let problems = validity_problems(&l, &spec);

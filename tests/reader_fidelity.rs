@@ -87,11 +87,7 @@ fn own_prompts_are_read_the_way_people_mean_them() {
     let share = held as f64 / total as f64;
     eprintln!("own set: {held}/{total} rules held\n{}", failed.join("\n"));
     // The level reached when this test was written (98/109); it may only go up.
-    assert!(
-        share >= 0.89,
-        "{held}/{total} rules held:\n{}",
-        failed.join("\n")
-    );
+    assert!(share >= 0.89, "{held}/{total} rules held:\n{}", failed.join("\n"));
 }
 
 fn plan(prompt: &str) -> SceneSpec {
@@ -113,8 +109,7 @@ fn issue_21_distributive_counts() {
     assert_eq!(n(&s, "umbrella", &["stand"]), 3);
     let s = plan("a dining room with a table for six");
     assert_eq!(n(&s, "chair", &["arm", "bar"]), 6);
-    let s =
-        plan("an office: 6 desks in two rows of three, each with an office chair and a monitor");
+    let s = plan("an office: 6 desks in two rows of three, each with an office chair and a monitor");
     assert_eq!(n(&s, "desk", &[]), 6);
     assert!(n(&s, "row", &[]) == 0);
 }
@@ -139,9 +134,7 @@ fn issue_21_named_objects_fill_roles() {
 
 #[test]
 fn issue_21_other_languages_are_refused() {
-    let e = plan_prompt("un salon acogedor con un sofá")
-        .err()
-        .map(|e| e.to_string());
+    let e = plan_prompt("un salon acogedor con un sofá").err().map(|e| e.to_string());
     assert!(e.is_some_and(|e| e.contains("--llm-url")));
 }
 

@@ -709,20 +709,14 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
         let object = rest.iter().any(|(p, _)| {
             mentions.iter().any(|m| m.start == *p)
                 && scene_start != Some(*p)
-                && !mentions
-                    .iter()
-                    .any(|m| m.start == *p && m.category.ends_with("room"))
+                && !mentions.iter().any(|m| m.start == *p && m.category.ends_with("room"))
         });
         let scene_next = rest.iter().any(|(p, _)| scene_start == Some(*p));
         if object && !scene_next {
             continue;
         }
         let _ = pos;
-        scale = if factor < 1.0 {
-            scale.min(factor)
-        } else {
-            scale.max(factor)
-        };
+        scale = if factor < 1.0 { scale.min(factor) } else { scale.max(factor) };
     }
     scale
 }

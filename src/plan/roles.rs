@@ -66,9 +66,7 @@ pub fn apply(
             .collect();
         for c in gone {
             counts.remove(&c);
-            notes.push(format!(
-                "default {c} left out: the text asks for nothing else"
-            ));
+            notes.push(format!("default {c} left out: the text asks for nothing else"));
         }
         return notes;
     }
@@ -78,9 +76,7 @@ pub fn apply(
         };
         for c in cats {
             if !named.contains(c) && counts.remove(c).is_some() {
-                notes.push(format!(
-                    "default {c} left out: the named {by} is the {role}"
-                ));
+                notes.push(format!("default {c} left out: the named {by} is the {role}"));
             }
         }
     }
