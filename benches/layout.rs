@@ -28,6 +28,7 @@ fn spec30() -> SceneSpec {
                 number: n,
                 size,
                 description: format!("A DSLR photo of a {cat}"),
+                rows: 0,
             },
         );
         for k in 1..=n {

@@ -231,6 +231,7 @@ fn random_specs_always_give_valid_layouts() {
                         rng.gen_range(0.05..2.2),
                     ],
                     description: "A DSLR photo of a thing".into(),
+                    rows: 0,
                 },
             );
         }

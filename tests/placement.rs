@@ -183,6 +183,46 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
                 out.push((blocked.is_empty(), format!("door blocked by {blocked:?}")));
             }
         }
+        "rows" => {
+            // all turned within 15° of the first; rows are bands along its facing 0.4 m apart
+            if subjects.len() < 2 {
+                out.push((false, format!("{} in rows", subjects.len())));
+                return out;
+            }
+            let f = Box2::of(subjects[0]).ey;
+            let same = subjects.iter().all(|s| {
+                let e = Box2::of(s).ey;
+                f[0] * e[0] + f[1] * e[1] >= 15f64.to_radians().cos()
+            });
+            let mut proj: Vec<f64> = subjects
+                .iter()
+                .map(|s| f[0] * s.position[0] + f[1] * s.position[1])
+                .collect();
+            proj.sort_by(f64::total_cmp);
+            let rows = 1 + proj.windows(2).filter(|p| p[1] - p[0] > 0.4).count();
+            let want = num("n", 1.0) as usize;
+            out.push((
+                same && rows == want,
+                format!("same facing {same}, {rows} rows (want {want})"),
+            ));
+        }
+        "each" => {
+            let anchors = pick(l, &words(r, "anchor"), &words(r, "anchor_exclude"));
+            for t in &anchors {
+                let bt = Box2::of(t);
+                let n = subjects
+                    .iter()
+                    .filter(|s| gap(&Box2::of(s), &bt) <= num("gap", 0.4))
+                    .count();
+                out.push((
+                    n as f64 >= num("k", 1.0),
+                    format!("{}: {n} within reach", t.id),
+                ));
+            }
+            if anchors.is_empty() {
+                out.push((false, "no anchor".into()));
+            }
+        }
         k => panic!("rule kind {k} is not judged here"),
     }
     out

@@ -217,6 +217,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             number: 20,
             size: [0.6, 0.5, 0.5],
             description: "A DSLR photo of a crate".into(),
+            rows: 0,
         },
     );
     objects.insert(
@@ -225,6 +226,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             number: 20,
             size: [0.6, 0.6, 0.9],
             description: "A DSLR photo of a barrel".into(),
+            rows: 0,
         },
     );
     objects.insert(
@@ -233,6 +235,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             number: 20,
             size: [0.9, 0.5, 0.55],
             description: "A DSLR photo of a chest".into(),
+            rows: 0,
         },
     );
     let mut spec = SceneSpec {

@@ -79,7 +79,7 @@ pub struct MoveFlags {
 }
 
 /// The pose `flags` give instance `id`: position (`--to` then `--by`), then yaw (`--rotate`,
-/// or `--face`), then scale.
+/// or `--face`; a seat of a group moved without either turns to face its partner), then scale.
 pub fn pose_from_flags(state: &SceneState, id: &str, flags: &MoveFlags) -> Result<Pose> {
     let o = state.object(id)?;
     let mut p = Pose::of(o);
@@ -93,6 +93,21 @@ pub fn pose_from_flags(state: &SceneState, id: &str, flags: &MoveFlags) -> Resul
     }
     if let Some(r) = flags.rotate {
         p.yaw = wrap_yaw(p.yaw + r);
+    } else if flags.face.is_none() && (flags.to.is_some() || flags.by.is_some()) {
+        // a seat of a group (at a table, a desk, round a fire) turns to face its partner
+        let partner = state.relations.iter().find(|r| {
+            r.subject == id
+                && matches!(
+                    r.relation,
+                    RelationKind::At | RelationKind::Around | RelationKind::Circle
+                )
+        });
+        if let Some(t) = partner.and_then(|r| state.object(&r.object).ok()) {
+            let d = [t.position[0] - p.position[0], t.position[1] - p.position[1]];
+            if d[0].hypot(d[1]) > 1e-6 {
+                p.yaw = wrap_yaw(yaw_facing(d));
+            }
+        }
     }
     if let Some(other) = &flags.face {
         let t = state.object(other)?;
@@ -152,14 +167,24 @@ pub fn move_object(
     args: serde_json::Value,
 ) -> Result<(Edit, Vec<Box2>)> {
     let before = state.object(id)?.clone();
+    let mut pose = pose;
     let mut next = with_pose(state, id, pose)?;
     let mut notes = vec![];
     let problems = next.collisions(id, state);
     if !problems.is_empty() {
-        if !force {
+        if force {
+            notes.push(format!("placed despite: {} (--force)", problems.join("; ")));
+        } else if let Some((p, cand)) = nearest_free(state, id, pose)? {
+            notes.push(format!(
+                "the asked pose collides ({}); the nearest free pose is {:.2} m from it",
+                problems.join("; "),
+                dist2(p.position, pose.position)
+            ));
+            pose = p;
+            next = cand;
+        } else {
             return Err(EditError::Collision(problems.join("; ")));
         }
-        notes.push(format!("placed despite: {} (--force)", problems.join("; ")));
     }
     let mut footprints = vec![state.box_of(&before), next.box_of(next.object(id)?)];
     notes.insert(
@@ -178,6 +203,13 @@ pub fn move_object(
             pose.scale[0]
         ),
     );
+    let shift = [
+        pose.position[0] - before.position[0],
+        pose.position[1] - before.position[1],
+    ];
+    if shift[0].hypot(shift[1]) >= 0.005 {
+        notes.insert(1, format!("{id} -> {}", world_words(shift)));
+    }
     let broken: Vec<&Relation> = state
         .relations
         .iter()
@@ -227,6 +259,52 @@ pub fn move_object(
     edit.layout = state.layout.as_ref().map(|_| next.current_layout());
     edit.notes = notes;
     Ok((edit, footprints))
+}
+
+/// Most a colliding move is shifted to find a free pose (metres).
+const NEAREST_REACH: f64 = 0.5;
+
+/// The free pose nearest `pose` for `id` (same yaw and height; rings 5 cm apart, 16 directions
+/// each), with the state it gives; `None` when nothing within [`NEAREST_REACH`] is free.
+fn nearest_free(state: &SceneState, id: &str, pose: Pose) -> Result<Option<(Pose, SceneState)>> {
+    let steps = (NEAREST_REACH / 0.05).round() as usize;
+    for ring in 1..=steps {
+        let r = ring as f64 * 0.05;
+        for k in 0..16 {
+            let a = k as f64 * std::f64::consts::TAU / 16.0;
+            let mut p = pose;
+            p.position[0] += r * a.cos();
+            p.position[1] += r * a.sin();
+            let cand = with_pose(state, id, p)?;
+            if cand.collisions(id, state).is_empty() {
+                return Ok(Some((p, cand)));
+            }
+        }
+    }
+    Ok(None)
+}
+
+fn dist2(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// A world-frame shift in words: "0.30 m east", "0.20 m north and 0.10 m west" (north is +y,
+/// east +x; a component under 5 mm is left out).
+pub fn world_words(d: [f64; 2]) -> String {
+    let mut parts = vec![];
+    if d[1].abs() >= 0.005 {
+        let w = if d[1] > 0.0 { "north" } else { "south" };
+        parts.push(format!("{:.2} m {w}", d[1].abs()));
+    }
+    if d[0].abs() >= 0.005 {
+        let w = if d[0] > 0.0 { "east" } else { "west" };
+        parts.push(format!("{:.2} m {w}", d[0].abs()));
+    }
+    if parts.is_empty() {
+        "in place".into()
+    } else {
+        parts.join(" and ")
+    }
 }
 
 /// New poses for `free` by GCP with every other instance pinned where it is (`extra` pinned
@@ -311,6 +389,7 @@ fn gcp_spec(
                 number: 1,
                 size,
                 description: id.clone(),
+                rows: 0,
             },
         );
         if anchor != Anchor::Others {
@@ -435,8 +514,8 @@ pub fn next_id(state: &SceneState, category: &str) -> String {
         .expect("unbounded")
 }
 
-/// Places a planned object with GCP against the present ones (all pinned), `near` giving a
-/// NEXT relation and `anchor` overriding the knowledge base's. Returns the new instance's id and
+/// Places a planned object with GCP against the present ones (all pinned), `near` giving the
+/// group relation the two categories form (AROUND, AT, ...; NEXT when none) and `anchor` overriding the knowledge base's. Returns the new instance's id and
 /// pose, and whether every constraint held.
 pub fn place_new(
     state: &SceneState,
@@ -444,14 +523,20 @@ pub fn place_new(
     near: Option<&str>,
     anchor: Option<Anchor>,
 ) -> Result<(String, Pose, bool)> {
+    // near a partner it forms a group with: the group's relation (a chair at a table faces it)
+    let mut relation = RelationKind::Next;
     if let Some(n) = near {
-        state.object(n)?;
+        let partner = state.object(n)?;
+        if let Some(r) = crate::plan::groups::relation_between(&planned.category, &partner.category)
+        {
+            relation = r;
+        }
     }
     let id = next_id(state, &planned.category);
     let rels: Vec<Relation> = near
         .map(|n| Relation {
             subject: id.clone(),
-            relation: RelationKind::Next,
+            relation,
             object: n.to_string(),
         })
         .into_iter()

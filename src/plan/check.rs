@@ -264,7 +264,7 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
             (CIRCLE_GAP.0..=CIRCLE_GAP.1).contains(&g)
                 && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
         }
-        RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) <= FACING_TOLERANCE,
+        RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) >= 180.0 - FACING_TOLERANCE,
     }
 }
 

@@ -20,6 +20,7 @@ mod compose;
 mod fit;
 pub mod openings;
 mod poses;
+pub mod rows;
 use fit::join_names;
 pub use fit::smallest_room;
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
@@ -439,9 +440,15 @@ fn is_group(rel: RelationKind) -> bool {
 pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError> {
     spec.validate()?;
     let inst = spec.instances();
-    let room = spec
-        .room
-        .unwrap_or_else(|| choose_room(&inst, spec.scene_type));
+    let room = spec.room.unwrap_or_else(|| {
+        let mut r = choose_room(&inst, spec.scene_type);
+        // rows asked: wide and deep enough for the block, its walkways and its front
+        let need = rows::room_for_rows(spec);
+        for (v, n) in r.size.iter_mut().zip(need) {
+            *v = v.max((n * 10.0).ceil() / 10.0);
+        }
+        r
+    });
     let big: Vec<String> = spec
         .objects
         .iter()
@@ -610,7 +617,9 @@ fn layout_in_pinned(
             (None, SceneType::Outdoor) => vec![],
         };
         prob.zones = prob.openings.iter().map(opening_zone).collect();
-        let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &pinned);
+        let mut fixed = pinned.clone();
+        prob.place_rows(spec, &mut fixed);
+        let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
         l.openings = prob.openings.clone();
         let q = quality(&prob, &l);
         if best.as_ref().is_none_or(|b| q > b.0) {

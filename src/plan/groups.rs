@@ -4,7 +4,7 @@
 //! the head of a bed, seats round a fire, desks in rows facing a board, a lamp on a nightstand
 //! or desk, the TV across from the sofa with the coffee table between, a rug under the group.
 //! They become relations of the spec (AROUND, AT, FLANK, CIRCLE, ROW and the plain kinds) that
-//! the GCP layout satisfies; offline and LLM plans both go through [`apply`].
+//! the GCP layout satisfies (sun loungers in pairs beneath a parasol); offline and LLM plans both go through [`apply`].
 use super::spec::{Relation, RelationKind, SceneSpec};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -182,6 +182,12 @@ const RULES: &[Rule] = &[
         per_object: Some(1),
     },
     Rule {
+        subjects: &["lounge chair", "pool lounger"],
+        relation: RelationKind::Under,
+        objects: &["beach umbrella"],
+        per_object: Some(2),
+    },
+    Rule {
         subjects: &["rug"],
         relation: RelationKind::Under,
         objects: &["coffee table", "dining table", "round table", "bed", "desk"],
@@ -224,6 +230,15 @@ pub fn group_of(spec: &SceneSpec, subject: &str) -> Option<(RelationKind, String
             .find(|o| spec.objects.contains_key(**o))
             .map(|o| (r.relation, o.to_string()))
     })
+}
+
+/// The group relation a `subject` category takes to an `object` category (a cafe chair to a
+/// cafe table: AROUND; an office chair to a desk: AT), if they form a group.
+pub fn relation_between(subject: &str, object: &str) -> Option<RelationKind> {
+    RULES
+        .iter()
+        .find(|r| r.subjects.contains(&subject) && r.objects.contains(&object))
+        .map(|r| r.relation)
 }
 
 /// How many subjects one `object` instance seats in its group with `subject` (the table's

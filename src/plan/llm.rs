@@ -281,6 +281,7 @@ fn parse_objects(
                 number,
                 size,
                 description,
+                rows: 0,
             },
         );
     }

@@ -138,6 +138,7 @@ fn generic_room(prompt: &str) -> SceneSpec {
                 number: n,
                 size: o.size,
                 description: describe(o, &[], &[]),
+                rows: 0,
             },
         );
         for k in 1..=n {
@@ -264,6 +265,7 @@ fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
                     number: 1,
                     size: [1.0, 1.0, 1.0],
                     description: String::new(),
+                    rows: 0,
                 },
             );
         }
@@ -489,6 +491,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                         number: *n,
                         size,
                         description: String::new(),
+                        rows: 0,
                     },
                 )
             })
@@ -613,7 +616,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
     }
 
-    // The spec.
+    // The spec; a category in rows keeps the most rows any mention of it asks.
+    let mut rows: BTreeMap<String, u32> = BTreeMap::new();
+    for (m, c) in r.mentions.iter().zip(&cats) {
+        if m.rows > 0 && !m.negated {
+            let e = rows.entry(c.clone()).or_insert(0);
+            *e = (*e).max(m.rows);
+        }
+    }
     let mut objects = BTreeMap::new();
     for (c, n) in &counts {
         let (size, description) = match kb.object(c) {
@@ -644,6 +654,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 number: *n,
                 size,
                 description,
+                rows: rows.get(c).copied().unwrap_or(0).min(*n),
             },
         );
     }
@@ -768,6 +779,11 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 for k in 0..2 {
                     room.size[k] = (room.size[k] * s * 10.0).ceil() / 10.0;
                 }
+            }
+            // things asked in rows: wide and deep enough for the block and its front
+            let need = super::gcp::rows::room_for_rows(&spec);
+            for (v, n) in room.size.iter_mut().zip(need) {
+                *v = v.max((n * 10.0).ceil() / 10.0);
             }
             room
         }

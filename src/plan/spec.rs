@@ -49,7 +49,9 @@ pub enum RelationKind {
     Flank,
     /// Seats gathered round a fire: 0.6–1.5 m away, facing it.
     Circle,
-    /// In front of the object, turned the same way (desks whose users face a board).
+    /// In front of the object (the subject's centre beyond the object's front face, in the
+    /// object's frame) and turned to face it: the subject's facing is within 30° of the
+    /// opposite of the object's (desks, seats, pews in rows facing a board, screen or altar).
     Row,
 }
 
@@ -116,6 +118,14 @@ pub struct ObjectSpec {
     /// [width, depth, height] in metres.
     pub size: [f64; 3],
     pub description: String,
+    /// The rows the instances stand in ("in four rows of six", "in a row"): aligned rows, all
+    /// turned the same way toward the front; 0 (the default, not written) when no rows are asked.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub rows: u32,
+}
+
+fn is_zero(v: &u32) -> bool {
+    *v == 0
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

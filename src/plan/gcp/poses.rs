@@ -96,7 +96,7 @@ impl Problem {
                 }
             }
             RelationKind::Row => {
-                // A lattice of rows in front of the partner, turned as it is.
+                // A lattice of rows in front of the partner, turned toward it.
                 let pitch_x = s[0] + 0.5;
                 let pitch_y = s[1] + 1.1;
                 let [w, d, _] = self.room;
@@ -107,7 +107,20 @@ impl Problem {
                     for k in -n_x..=n_x {
                         out.push(Pose {
                             c: at(k as f64 * pitch_x, ly),
-                            yaw: pj.yaw,
+                            yaw: pj.yaw + 180.0,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            RelationKind::Under => {
+                // Beneath the partner's footprint: centred, or one of a pair side by side
+                // (loungers under a parasol), turned as it is or about.
+                for lx in [0.0, -0.5 * s[0] - 0.05, 0.5 * s[0] + 0.05] {
+                    for yaw in [pj.yaw, pj.yaw + 180.0] {
+                        out.push(Pose {
+                            c: at(lx, 0.0),
+                            yaw,
                             z: 0.0,
                         });
                     }

@@ -196,8 +196,8 @@ pub(super) fn read_counts(r: &mut Reading) {
             let m = &mut r.mentions[i];
             if after.is_some() || m.count.is_none() {
                 m.count = Some(a * b);
-                m.rows = a;
             }
+            m.rows = a;
         }
     }
     let rows_then = re(
@@ -215,6 +215,47 @@ pub(super) fn read_counts(r: &mut Reading) {
         {
             m.count = Some(a * b);
             m.rows = a;
+        }
+    }
+    // "ten pews, five each side of the aisle": two blocks side by side, five rows deep.
+    let each_side =
+        re(r"\b([0-9]+|[a-z]+) (?:on )?(?:each|either) side of the (?:aisle|nave|gangway)\b");
+    for c in each_side.captures_iter(&t) {
+        let Some(n) = number_of(&c[1]) else { continue };
+        let start = c.get(0).map(|g| g.start()).unwrap_or(0);
+        if let Some(m) = r
+            .mentions
+            .iter_mut()
+            .rev()
+            .find(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
+        {
+            if m.rows == 0 && !m.negated {
+                m.rows = n;
+            }
+        }
+    }
+    // Rows without a count of their own: "Y in N rows", "Y, two rows", "a row of Y", "Y in a row".
+    let rows_only = re(r"\b(a|one|[0-9]+|[a-z]+) (?:single )?(?:rows?|lines?)\b( of)?");
+    for c in rows_only.captures_iter(&t) {
+        let n = match &c[1] {
+            "a" | "one" => Some(1),
+            w => number_of(w),
+        };
+        let Some(n) = n else { continue };
+        let (start, end) = c.get(0).map(|g| (g.start(), g.end())).unwrap_or((0, 0));
+        let i = if c.get(2).is_some() {
+            r.mentions
+                .iter()
+                .position(|m| m.start >= end && t[end..m.start].split_whitespace().count() <= 2)
+        } else {
+            r.mentions
+                .iter()
+                .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
+        };
+        if let Some(m) = i.map(|i| &mut r.mentions[i]) {
+            if m.rows == 0 && !m.negated {
+                m.rows = n;
+            }
         }
     }
 }

@@ -1,0 +1,340 @@
+//! Things asked in rows ("four rows of six desks", "twelve desks in three rows", "a row of five
+//! treadmills"): one block of aligned rows, every instance turned the same way, toward the front
+//! of the room. What the rows face (their OPPOSITE or ROW partner, else the first category of
+//! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall,
+//! centred before them. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
+//! one fewer (every row is used), side by side; rows of four or more, or of long things (pews,
+//! benches), are split by a centre aisle. The block keeps a free band at the front for what the
+//! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
+//! face a wall with one.
+use super::{yaw_facing, Pose, Problem};
+use crate::plan::check::{penetration, Box2};
+use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
+
+/// Free depth kept in front of the first row (for the board, screen or stage and its view).
+const FRONT: f64 = 1.8;
+/// The least front depth a tight room may keep.
+const FRONT_MIN: f64 = 1.0;
+/// Walkway behind the last row and beside the rows.
+const BEHIND: f64 = 0.9;
+/// The centre aisle of rows of four or more.
+const AISLE: f64 = 1.0;
+
+/// The shape of one category's block: instances, rows, columns, pitch across and along.
+struct Block {
+    n: usize,
+    rows: usize,
+    cols: usize,
+    size: [f64; 2],
+    gap_x: f64,
+    gap_y: f64,
+    aisle: f64,
+    /// Free depth in front of the first row: [`FRONT`], or what the rows face and its view,
+    /// and deep enough that the ends of a wide row still see the front (0.55 x its width).
+    front: f64,
+    /// The category the rows face: the object of their OPPOSITE or ROW relations, else the
+    /// first of kb/fronts.txt the scene holds.
+    target: Option<String>,
+    /// The width of what the rows face (0 when nothing).
+    target_width: f64,
+}
+
+/// kb/fronts.txt: what rows face, most telling first.
+fn fronts() -> impl Iterator<Item = &'static str> {
+    include_str!("../kb/fronts.txt")
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+}
+
+impl Block {
+    fn width(&self) -> f64 {
+        self.cols as f64 * self.size[0] + (self.cols - 1) as f64 * self.gap_x + self.aisle
+    }
+
+    fn depth(&self) -> f64 {
+        self.rows as f64 * self.size[1] + (self.rows - 1) as f64 * self.gap_y
+    }
+
+    /// Room [across, along] the block needs: walkways at both sides and behind, the front band.
+    fn needs(&self) -> [f64; 2] {
+        [
+            (self.width() + 2.0 * BEHIND).max(self.target_width + 0.4),
+            self.depth() + self.front + BEHIND,
+        ]
+    }
+
+    /// Local (across, along) centre of instance `k`; along grows toward the front.
+    fn slot(&self, k: usize) -> [f64; 2] {
+        // every row used: the first n % rows rows hold one more than the others
+        let (base, extra) = (self.n / self.rows, self.n % self.rows);
+        let (row, col) = if k < extra * (base + 1) {
+            (k / (base + 1), k % (base + 1))
+        } else {
+            let k = k - extra * (base + 1);
+            (extra + k / base, k % base)
+        };
+        let aisle = if col >= self.cols.div_ceil(2) {
+            self.aisle
+        } else {
+            0.0
+        };
+        let x = -0.5 * self.width()
+            + 0.5 * self.size[0]
+            + col as f64 * (self.size[0] + self.gap_x)
+            + aisle;
+        let y = 0.5 * self.depth() - 0.5 * self.size[1] - row as f64 * (self.size[1] + self.gap_y);
+        [x, y]
+    }
+}
+
+/// The block of category `cat` (`None` when it is not in rows or has fewer than two).
+fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
+    let o = spec.objects.get(cat)?;
+    let n = o.number as usize;
+    if o.rows == 0 || n < 2 {
+        return None;
+    }
+    let rows = (o.rows as usize).min(n);
+    let cols = n.div_ceil(rows);
+    // a seat drawn up to each (a chair at a desk, stools at a bench) needs room between rows
+    let seated = spec.relations.iter().any(|r| {
+        matches!(r.relation, RelationKind::At | RelationKind::Around) && base(&r.object) == cat
+    });
+    // what the rows face (a stage, a screen) and a metre to see it from
+    let target = spec
+        .relations
+        .iter()
+        .filter(|r| matches!(r.relation, RelationKind::Opposite | RelationKind::Row))
+        .filter(|r| base(&r.subject) == cat)
+        .map(|r| base(&r.object).to_string())
+        .next()
+        .or_else(|| {
+            fronts()
+                .find(|f| *f != cat && spec.objects.contains_key(*f))
+                .map(str::to_string)
+        });
+    let front = target
+        .as_deref()
+        .and_then(|t| spec.objects.get(t))
+        .map(|t| t.size[0].min(t.size[1]) + 1.0)
+        .unwrap_or(0.0)
+        .max(FRONT);
+    let target_width = target
+        .as_deref()
+        .and_then(|t| spec.objects.get(t))
+        .map(|t| t.size[0])
+        .unwrap_or(0.0);
+    let s = [o.size[0], o.size[1]];
+    let mut b = Block {
+        target_width,
+        target,
+        front,
+        n,
+        rows,
+        cols,
+        size: s,
+        gap_x: (0.25 * s[0]).clamp(0.08, 0.5),
+        gap_y: if seated {
+            1.1
+        } else {
+            (0.7 * s[1]).clamp(0.45, 1.0)
+        },
+        aisle: if cols >= 4 || (cols >= 2 && s[0] >= 1.5) {
+            AISLE
+        } else {
+            0.0
+        },
+    };
+    b.front = b.front.max(0.55 * b.width());
+    Some(b)
+}
+
+/// The category of an instance id (`desk12` -> `desk`).
+fn base(id: &str) -> &str {
+    id.trim_end_matches(|c: char| c.is_ascii_digit())
+}
+
+/// The smallest [w, d] that holds every block of `spec` facing +y (a room chosen by floor area
+/// alone can be too narrow for ten seats abreast).
+pub fn room_for_rows(spec: &SceneSpec) -> [f64; 2] {
+    let mut need = [0.0f64, 0.0f64];
+    for cat in spec.objects.keys() {
+        if let Some(b) = block(spec, cat) {
+            let [a, l] = b.needs();
+            need = [need[0].max(a), need[1].max(l)];
+        }
+    }
+    need
+}
+
+impl Problem {
+    /// Poses for every instance of every category in rows that `placed` leaves free, written
+    /// into `placed` (the block of a category with an instance already placed is left alone).
+    /// The front is the wall the block's rows face: tried in the order that leaves most room.
+    pub(super) fn place_rows(&self, spec: &SceneSpec, placed: &mut [Option<Pose>]) {
+        for cat in spec.objects.keys() {
+            let Some(b) = block(spec, cat) else { continue };
+            let ids: Vec<usize> = (1..=b.n)
+                .filter_map(|k| self.index.get(&format!("{cat}{k}")).copied())
+                .collect();
+            if ids.len() != b.n || ids.iter().any(|&i| placed[i].is_some()) {
+                continue;
+            }
+            if let Some((poses, f)) = self.block_poses(&b, &ids, placed) {
+                for (&i, p) in ids.iter().zip(poses) {
+                    placed[i] = Some(p);
+                }
+                let t = b.target.as_ref().map(|t| format!("{t}1"));
+                if let Some(&t) = t.and_then(|t| self.index.get(&t)) {
+                    self.place_front(t, f, placed);
+                }
+            }
+        }
+    }
+
+    /// Stands what the rows face (instance `t`) against the front wall, centred before the
+    /// rows and turned to them, when it is free there; else the search places it.
+    fn place_front(&self, t: usize, f: [f64; 2], placed: &mut [Option<Pose>]) {
+        if placed[t].is_some() {
+            return;
+        }
+        let [w, d, _] = self.room;
+        let along = if f[0] == 0.0 { d } else { w };
+        let s = self.inst[t].size;
+        let v = 0.5 * along - 0.02 - 0.5 * s[1];
+        let p = Pose {
+            c: [v * f[0], v * f[1]],
+            yaw: yaw_facing([-f[0], -f[1]]),
+            z: self.hung[t].unwrap_or(0.0),
+        };
+        if self.block_is_free(&[t], &[p], placed) {
+            placed[t] = Some(p);
+        }
+    }
+
+    /// The block's poses and the way its rows face, or `None` when no way fits.
+    fn block_poses(
+        &self,
+        b: &Block,
+        ids: &[usize],
+        placed: &[Option<Pose>],
+    ) -> Option<(Vec<Pose>, [f64; 2])> {
+        let [w, d, _] = self.room;
+        // rows asked by or facing a window face a wall with one, close to it
+        let by_window = matches!(
+            self.inst[ids[0]].anchor,
+            Anchor::Window | Anchor::FaceWindow
+        );
+        let mut tries: Vec<([f64; 2], bool, f64)> = vec![];
+        for (f, wall) in [
+            ([0.0, 1.0], Wall::North),
+            ([0.0, -1.0], Wall::South),
+            ([1.0, 0.0], Wall::East),
+            ([-1.0, 0.0], Wall::West),
+        ] {
+            let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
+            let [na, nl] = b.needs();
+            let slack = (across - na).min(along - nl + b.front - FRONT_MIN);
+            let window = by_window
+                && self
+                    .openings
+                    .iter()
+                    .any(|o| o.kind == OpeningKind::Window && o.wall == wall);
+            tries.push((f, window, slack));
+        }
+        // a window first when asked, then the most room; ties keep the order (north first)
+        tries.sort_by(|a, b| b.1.cmp(&a.1).then(b.2.total_cmp(&a.2)));
+        for (f, window, slack) in tries {
+            if slack < 0.0 {
+                continue;
+            }
+            let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
+            let want = if window { FRONT_MIN } else { b.front };
+            let front = (along - b.depth() - BEHIND).min(want).max(FRONT_MIN);
+            let rest = if window {
+                0.0
+            } else {
+                along - b.depth() - BEHIND - front
+            };
+            // the block's centre along the facing: behind the front band, the rest shared
+            let v0 = 0.5 * along - front - 0.5 * rest.max(0.0) - 0.5 * b.depth();
+            if b.width().max(b.target_width) > across {
+                continue;
+            }
+            let e = [f[1], -f[0]];
+            let yaw = yaw_facing(f);
+            let poses: Vec<Pose> = (0..b.n)
+                .map(|k| {
+                    let [u, v] = b.slot(k);
+                    let v = v + v0;
+                    Pose {
+                        c: [u * e[0] + v * f[0], u * e[1] + v * f[1]],
+                        yaw,
+                        z: 0.0,
+                    }
+                })
+                .collect();
+            if self.block_is_free(ids, &poses, placed) {
+                return Some((poses, f));
+            }
+        }
+        None
+    }
+
+    /// Inside the room, clear of door zones and of what is placed already.
+    fn block_is_free(&self, ids: &[usize], poses: &[Pose], placed: &[Option<Pose>]) -> bool {
+        let [w, d, _] = self.room;
+        let others: Vec<Box2> = placed
+            .iter()
+            .enumerate()
+            .filter_map(|(j, p)| p.map(|p| self.boxed(j, &p)))
+            .collect();
+        let doors: Vec<&Box2> = self
+            .openings
+            .iter()
+            .zip(&self.zones)
+            .filter(|(o, _)| o.kind == OpeningKind::Door)
+            .map(|(_, z)| z)
+            .collect();
+        ids.iter().zip(poses).all(|(&i, p)| {
+            let bx = self.boxed(i, p);
+            let [x0, y0, x1, y1] = bx.aabb();
+            let inside = x0 >= -0.5 * w && x1 <= 0.5 * w && y0 >= -0.5 * d && y1 <= 0.5 * d;
+            inside
+                && doors.iter().all(|z| penetration(&bx, z) <= 0.0)
+                && others.iter().all(|o| penetration(&bx, o) <= 0.0)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(n: u32, rows: u32, size: [f64; 3]) -> SceneSpec {
+        let text = format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","objects":{{"seat":{{"number":{n},"size":{size:?},"description":"d","rows":{rows}}}}}}}"#
+        );
+        serde_json::from_str(&text).expect("spec")
+    }
+
+    #[test]
+    fn a_block_has_the_rows_asked_and_its_slots_do_not_overlap() {
+        for (n, rows) in [(15, 3), (12, 5), (6, 1), (100, 10)] {
+            let b = block(&spec(n, rows, [0.6, 0.6, 0.9]), "seat").expect("block");
+            let slots: Vec<[f64; 2]> = (0..b.n).map(|k| b.slot(k)).collect();
+            let mut ys: Vec<f64> = slots.iter().map(|s| s[1]).collect();
+            ys.sort_by(f64::total_cmp);
+            ys.dedup_by(|a, c| (*a - *c).abs() < 1e-9);
+            assert_eq!(ys.len(), rows as usize, "{n} in {rows}");
+            for (i, a) in slots.iter().enumerate() {
+                for c in &slots[i + 1..] {
+                    let apart = (a[0] - c[0]).abs() >= 0.6 || (a[1] - c[1]).abs() >= 0.6;
+                    assert!(apart, "{n} in {rows}: {a:?} {c:?}");
+                }
+            }
+        }
+        assert!(block(&spec(4, 0, [0.6, 0.6, 0.9]), "seat").is_none());
+    }
+}
