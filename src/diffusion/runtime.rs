@@ -205,6 +205,35 @@ fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, Stri
     }
 }
 
+/// A session builder on `provider` with `threads` intra-op threads; errors name `shown`.
+fn builder(
+    provider: Provider,
+    threads: Option<usize>,
+    shown: &str,
+) -> Result<ort::session::builder::SessionBuilder, String> {
+    let env = &loaded()?.env;
+    let eps = provider_dispatch(provider)?;
+    let mut b = if provider == Provider::Webgpu {
+        let devs = super::webgpu::devices(env)?;
+        Session::builder(env)
+            .and_then(|b| {
+                b.with_devices(devs, Some(&super::webgpu::options()))
+                    .map_err(|e| e.into())
+            })
+            .map_err(|e| format!("{shown}: {e}"))?
+    } else {
+        Session::builder(env)
+            .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
+            .map_err(|e| format!("{shown}: {e}"))?
+    };
+    if let Some(n) = threads {
+        b = b
+            .with_intra_threads(n)
+            .map_err(|e| format!("{shown}: {e}"))?;
+    }
+    Ok(b)
+}
+
 /// A tensor's element type and rank as a model declares them.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Port {
@@ -284,29 +313,34 @@ impl OnnxModel {
         if !path.is_file() {
             return Err(format!("{shown}: model file missing"));
         }
-        let env = &loaded()?.env;
-        let eps = provider_dispatch(provider)?;
-        let mut b = if provider == Provider::Webgpu {
-            let devs = super::webgpu::devices(env)?;
-            Session::builder(env)
-                .and_then(|b| {
-                    b.with_devices(devs, Some(&super::webgpu::options()))
-                        .map_err(|e| e.into())
-                })
-                .map_err(|e| format!("{shown}: {e}"))?
-        } else {
-            Session::builder(env)
-                .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
-                .map_err(|e| format!("{shown}: {e}"))?
-        };
-        if let Some(n) = threads {
-            b = b
-                .with_intra_threads(n)
-                .map_err(|e| format!("{shown}: {e}"))?;
-        }
-        let session = b
+        let session = builder(provider, threads, &shown)?
             .commit_from_file(path)
             .map_err(|e| format!("{shown}: ONNX Runtime cannot load the model: {e}"))?;
+        Self::checked(path, session, inputs, outputs)
+    }
+
+    /// Loads an in-memory model (named `name` in errors) on `provider`, checked as [`Self::load`].
+    pub fn load_bytes(
+        name: &str,
+        bytes: &[u8],
+        provider: Provider,
+        threads: Option<usize>,
+        inputs: &[PortSpec],
+        outputs: &[PortSpec],
+    ) -> Result<OnnxModel, String> {
+        let session = builder(provider, threads, name)?
+            .commit_from_memory(bytes)
+            .map_err(|e| format!("{name}: ONNX Runtime cannot load the model: {e}"))?;
+        Self::checked(Path::new(name), session, inputs, outputs)
+    }
+
+    fn checked(
+        path: &Path,
+        session: Session,
+        inputs: &[PortSpec],
+        outputs: &[PortSpec],
+    ) -> Result<OnnxModel, String> {
+        let shown = path.display().to_string();
         let collect = |list: &[ort::value::Outlet], what: &str| -> Result<Vec<Port>, String> {
             list.iter()
                 .map(|o| {
