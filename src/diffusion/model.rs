@@ -144,6 +144,10 @@ fn load_autoencoder(
 impl StableDiffusion {
     /// Opens and checks a model directory.
     pub fn open(dir: &Path, opts: &ModelOptions) -> Result<StableDiffusion, String> {
+        let opts = &ModelOptions {
+            provider: opts.provider.resolved(),
+            ..*opts
+        };
         let shown = dir.display();
         if !dir.is_dir() {
             return Err(format!("{shown}: model directory not found"));
