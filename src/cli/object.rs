@@ -198,7 +198,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
                         },
                     )
                     .map_err(anyhow::Error::msg)?;
-                    if a.config.resolution % 8 != 0 {
+                    if !a.config.resolution.is_multiple_of(8) {
                         bail!(
                             "--resolution {}: Stable Diffusion needs a multiple of 8",
                             cfg.resolution
