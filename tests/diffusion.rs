@@ -609,6 +609,15 @@ fn cli_doctor_and_unet_bench() {
         "{out}"
     );
     assert!(out.contains("fp32") && out.contains("8x8 latents"), "{out}");
+    // Which providers can run, and which one auto picks on this machine and why.
+    use dreamscene::diffusion::runtime::{choose_auto, gpu_facts};
+    assert!(out.contains("provider cpu: can run"), "{out}");
+    for p in ["cuda", "webgpu"] {
+        assert!(out.contains(&format!("provider {p}: ")), "{out}");
+    }
+    let (auto, why) = choose_auto(gpu_facts());
+    let line = format!("auto picks {}: {why}", format!("{auto:?}").to_lowercase());
+    assert!(out.contains(&line), "{line} not in {out}");
     assert!(
         !out.contains("missing:") && !out.contains("optional:"),
         "{out}"

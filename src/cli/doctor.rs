@@ -11,7 +11,7 @@ pub struct Args {
     #[arg(long, env = "DREAMSCENE_MODELS")]
     pub models: Option<PathBuf>,
     /// ONNX Runtime execution provider.
-    #[arg(long, value_enum, default_value_t = Provider::Cpu)]
+    #[arg(long, value_enum, default_value_t = Provider::Auto)]
     pub provider: Provider,
 }
 
@@ -38,13 +38,24 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
                 i.version
             );
             println!("  providers: {}", i.providers.join(", "));
-            let name = format!("{provider:?}").to_lowercase();
-            match dreamscene::diffusion::runtime::check_provider(provider) {
-                Ok(()) => println!("  provider {name}: available"),
-                Err(e) => {
-                    println!("  provider {name}: {e}");
-                    sd_problem = Some(format!("provider {name} unavailable"));
+            use dreamscene::diffusion::runtime::{check_provider, choose_auto, gpu_facts};
+            let name = |p: Provider| format!("{p:?}").to_lowercase();
+            // Which providers can run here, which one `auto` takes and why.
+            let mut failed = vec![];
+            for p in [Provider::Cpu, Provider::Cuda, Provider::Webgpu] {
+                match check_provider(p) {
+                    Ok(()) => println!("  provider {}: can run", name(p)),
+                    Err(e) => {
+                        println!("  provider {}: cannot run: {e}", name(p));
+                        failed.push(p);
+                    }
                 }
+            }
+            let (auto, why) = choose_auto(gpu_facts());
+            println!("  auto picks {}: {why}", name(auto));
+            let asked = provider.resolved();
+            if failed.contains(&asked) {
+                sd_problem = Some(format!("provider {} unavailable", name(asked)));
             }
         }
         Err(e) => {
@@ -142,7 +153,7 @@ fn doctor(models: Option<&Path>, provider: Provider) -> Result<()> {
             render_problem.get_or_insert("no usable Vulkan device".into());
         }
     }
-    let sd_asked = models.is_some() || provider != Provider::Cpu;
+    let sd_asked = models.is_some() || !matches!(provider, Provider::Cpu | Provider::Auto);
     let verdicts = [
         Verdict {
             what: "rendering, fit, demo, draft generation (shape prior)",

@@ -355,8 +355,8 @@ pub struct Args {
     /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
     #[arg(long)]
     pub models: Option<PathBuf>,
-    /// ONNX Runtime provider for the models.
-    #[arg(long, value_enum, default_value = "cpu")]
+    /// ONNX Runtime provider for the models (auto: a GPU provider on a real GPU, else the CPU).
+    #[arg(long, value_enum, default_value = "auto")]
     pub provider: Provider,
     /// auto (sd when models are found, else shape), sd, shape, or oracle:REF.ply.
     #[arg(long, default_value = "auto", value_parser = parse_prior)]

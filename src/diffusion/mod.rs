@@ -4,6 +4,7 @@
 pub mod error;
 pub mod guidance;
 pub mod model;
+pub mod probe;
 pub mod runtime;
 pub mod schedule;
 pub mod target;

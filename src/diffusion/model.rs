@@ -65,6 +65,11 @@ pub struct StableDiffusion {
     unet: OnnxModel,
     vae: Autoencoder,
     fast: Option<Autoencoder>,
+    opts: ModelOptions,
+    /// UNet run sizes (latent size, batch) the provider probe has passed.
+    probed: Vec<((usize, usize), usize)>,
+    /// The most items one UNet run takes (the probe's split), none when unlimited.
+    max_batch: Option<usize>,
 }
 
 fn read_json(path: &Path) -> Result<serde_json::Value, String> {
@@ -139,6 +144,10 @@ fn load_autoencoder(
 impl StableDiffusion {
     /// Opens and checks a model directory.
     pub fn open(dir: &Path, opts: &ModelOptions) -> Result<StableDiffusion, String> {
+        let opts = &ModelOptions {
+            provider: opts.provider.resolved(),
+            ..*opts
+        };
         let shown = dir.display();
         if !dir.is_dir() {
             return Err(format!("{shown}: model directory not found"));
@@ -266,7 +275,65 @@ impl StableDiffusion {
             unet,
             vae,
             fast,
+            opts: *opts,
+            probed: vec![],
+            max_batch: None,
         })
+    }
+
+    /// The provider the models run on (the CPU after the probe fell back).
+    pub fn provider(&self) -> Provider {
+        self.opts.provider
+    }
+
+    /// The most items one UNet run takes after the probe split the batch.
+    pub fn unet_max_batch(&self) -> Option<usize> {
+        self.max_batch
+    }
+
+    /// Probes a GPU provider at a UNet run of `batch` items at latent size `hw` (once per size)
+    /// and acts on the verdict: splits later runs, or reloads every model on the CPU provider
+    /// with a warning. The CPU provider is not probed.
+    pub fn probe_provider(&mut self, hw: (usize, usize), batch: usize) -> Result<(), String> {
+        self.probe_provider_with(hw, batch, None)
+    }
+
+    /// [`Self::probe_provider`] with a test hook that plants wrong provider outputs.
+    pub fn probe_provider_with(
+        &mut self,
+        hw: (usize, usize),
+        batch: usize,
+        tamper: Option<super::probe::Tamper>,
+    ) -> Result<(), String> {
+        if (self.opts.provider == Provider::Cpu && tamper.is_none())
+            || self.probed.contains(&(hw, batch))
+        {
+            return Ok(());
+        }
+        let sizes =
+            super::probe::ProbeSizes::for_unet(&self.dir, hw, batch, self.precision() == "fp16");
+        let report = super::probe::probe(self.opts.provider, &sizes, tamper)?;
+        let name = format!("{:?}", self.opts.provider).to_lowercase();
+        match report.verdict {
+            super::probe::Verdict::Trust => {}
+            super::probe::Verdict::Split { max_batch } => {
+                eprintln!(
+                    "warning: provider {name}: a {batch}-item UNet run is wrong on this device;                      running at most {max_batch} items at a time"
+                );
+                self.max_batch = Some(self.max_batch.map_or(max_batch, |m| m.min(max_batch)));
+                self.probed.push((hw, max_batch));
+            }
+            super::probe::Verdict::Fallback { reason } => {
+                eprintln!("warning: provider {name}: {reason}; using the CPU provider instead");
+                let cpu = ModelOptions {
+                    provider: Provider::Cpu,
+                    ..self.opts
+                };
+                *self = StableDiffusion::open(&self.dir, &cpu)?;
+            }
+        }
+        self.probed.push((hw, batch));
+        Ok(())
     }
 
     /// The latent size the UNet declares, else `unet/config.json`'s `sample_size`, else 64.
@@ -351,6 +418,14 @@ impl StableDiffusion {
                 hw.1,
                 conds.len()
             ));
+        }
+        self.probe_provider(hw, b)?;
+        if let Some(m) = self.max_batch.filter(|m| *m < b) {
+            let mut out = Vec::with_capacity(b);
+            for (s, c) in samples.chunks(m).zip(conds.chunks(m)) {
+                out.extend(self.unet_batch(s, hw, t, c)?);
+            }
+            return Ok(out);
         }
         let (seq, hidden) = (conds[0].seq, conds[0].hidden);
         let sample: Vec<f32> = samples.concat();

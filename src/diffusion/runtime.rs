@@ -23,6 +23,68 @@ pub enum Provider {
     Cuda,
     /// WebGPU on Vulkan (the `onnxruntime-ep-webgpu` plugin library beside ONNX Runtime).
     Webgpu,
+    /// A GPU provider on a real GPU, else the CPU (see [`choose_auto`]).
+    Auto,
+}
+
+/// What [`choose_auto`] looks at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GpuFacts {
+    /// Linux shows a GPU (a DRM card under /sys/class/drm, or NVIDIA's /dev/nvidiactl).
+    pub real_gpu: bool,
+    /// The loaded ONNX Runtime library has the CUDA provider.
+    pub cuda: bool,
+    /// The WebGPU plugin library is installed beside ONNX Runtime.
+    pub webgpu: bool,
+}
+
+/// The provider `auto` takes and why: on a real GPU, CUDA when the library has it, else WebGPU
+/// when its plugin is installed; otherwise the CPU (a software Vulkan device such as lavapipe is
+/// no faster than the CPU provider).
+pub fn choose_auto(f: GpuFacts) -> (Provider, &'static str) {
+    match f {
+        GpuFacts {
+            real_gpu: false, ..
+        } => (
+            Provider::Cpu,
+            "no GPU (no DRM card in /sys/class/drm, no /dev/nvidiactl)",
+        ),
+        GpuFacts { cuda: true, .. } => (
+            Provider::Cuda,
+            "a GPU, and the ONNX Runtime library has the CUDA provider",
+        ),
+        GpuFacts { webgpu: true, .. } => (
+            Provider::Webgpu,
+            "a GPU, and the WebGPU provider is installed beside ONNX Runtime",
+        ),
+        _ => (
+            Provider::Cpu,
+            "a GPU, but neither the CUDA nor the WebGPU provider is installed \
+             (`bash scripts/setup.sh` installs WebGPU, `--cuda` the CUDA build)",
+        ),
+    }
+}
+
+/// The facts of this machine and library (the library is loaded if it can be).
+pub fn gpu_facts() -> GpuFacts {
+    let real_gpu = super::webgpu::drm_card() || Path::new("/dev/nvidiactl").exists();
+    let lib = loaded().ok();
+    GpuFacts {
+        real_gpu,
+        cuda: lib.is_some() && ort::ep::CUDA::is_available().unwrap_or(false),
+        webgpu: lib
+            .is_some_and(|l| super::webgpu::library(&l.library).is_some_and(|p| p.is_file())),
+    }
+}
+
+impl Provider {
+    /// The concrete provider: `auto` chosen for this machine, others as they are.
+    pub fn resolved(self) -> Provider {
+        match self {
+            Provider::Auto => choose_auto(gpu_facts()).0,
+            p => p,
+        }
+    }
 }
 
 /// Where the library may be, in search order, each with how it was found.
@@ -181,7 +243,8 @@ pub fn check_provider(p: Provider) -> Result<(), String> {
 }
 
 fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, String> {
-    match p {
+    match p.resolved() {
+        Provider::Auto => Ok(vec![ort::ep::CPU::default().build()]),
         Provider::Cpu => Ok(vec![ort::ep::CPU::default().build()]),
         Provider::Webgpu => {
             // Reached through its devices (OnnxModel::load), not appended by name.
@@ -203,6 +266,36 @@ fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, Stri
             Ok(vec![ort::ep::CUDA::default().build().error_on_failure()])
         }
     }
+}
+
+/// A session builder on `provider` with `threads` intra-op threads; errors name `shown`.
+fn builder(
+    provider: Provider,
+    threads: Option<usize>,
+    shown: &str,
+) -> Result<ort::session::builder::SessionBuilder, String> {
+    let env = &loaded()?.env;
+    let provider = provider.resolved();
+    let eps = provider_dispatch(provider)?;
+    let mut b = if provider == Provider::Webgpu {
+        let devs = super::webgpu::devices(env)?;
+        Session::builder(env)
+            .and_then(|b| {
+                b.with_devices(devs, Some(&super::webgpu::options()))
+                    .map_err(|e| e.into())
+            })
+            .map_err(|e| format!("{shown}: {e}"))?
+    } else {
+        Session::builder(env)
+            .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
+            .map_err(|e| format!("{shown}: {e}"))?
+    };
+    if let Some(n) = threads {
+        b = b
+            .with_intra_threads(n)
+            .map_err(|e| format!("{shown}: {e}"))?;
+    }
+    Ok(b)
 }
 
 /// A tensor's element type and rank as a model declares them.
@@ -284,29 +377,34 @@ impl OnnxModel {
         if !path.is_file() {
             return Err(format!("{shown}: model file missing"));
         }
-        let env = &loaded()?.env;
-        let eps = provider_dispatch(provider)?;
-        let mut b = if provider == Provider::Webgpu {
-            let devs = super::webgpu::devices(env)?;
-            Session::builder(env)
-                .and_then(|b| {
-                    b.with_devices(devs, Some(&super::webgpu::options()))
-                        .map_err(|e| e.into())
-                })
-                .map_err(|e| format!("{shown}: {e}"))?
-        } else {
-            Session::builder(env)
-                .and_then(|b| b.with_execution_providers(eps).map_err(|e| e.into()))
-                .map_err(|e| format!("{shown}: {e}"))?
-        };
-        if let Some(n) = threads {
-            b = b
-                .with_intra_threads(n)
-                .map_err(|e| format!("{shown}: {e}"))?;
-        }
-        let session = b
+        let session = builder(provider, threads, &shown)?
             .commit_from_file(path)
             .map_err(|e| format!("{shown}: ONNX Runtime cannot load the model: {e}"))?;
+        Self::checked(path, session, inputs, outputs)
+    }
+
+    /// Loads an in-memory model (named `name` in errors) on `provider`, checked as [`Self::load`].
+    pub fn load_bytes(
+        name: &str,
+        bytes: &[u8],
+        provider: Provider,
+        threads: Option<usize>,
+        inputs: &[PortSpec],
+        outputs: &[PortSpec],
+    ) -> Result<OnnxModel, String> {
+        let session = builder(provider, threads, name)?
+            .commit_from_memory(bytes)
+            .map_err(|e| format!("{name}: ONNX Runtime cannot load the model: {e}"))?;
+        Self::checked(Path::new(name), session, inputs, outputs)
+    }
+
+    fn checked(
+        path: &Path,
+        session: Session,
+        inputs: &[PortSpec],
+        outputs: &[PortSpec],
+    ) -> Result<OnnxModel, String> {
+        let shown = path.display().to_string();
         let collect = |list: &[ort::value::Outlet], what: &str| -> Result<Vec<Port>, String> {
             list.iter()
                 .map(|o| {
@@ -494,4 +592,36 @@ fn check_ports(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn auto_takes_a_gpu_provider_only_on_a_real_gpu() {
+        let f = |real_gpu, cuda, webgpu| {
+            choose_auto(GpuFacts {
+                real_gpu,
+                cuda,
+                webgpu,
+            })
+            .0
+        };
+        // No real GPU: the CPU, whatever is installed (lavapipe is no faster).
+        for (c, w) in [(false, false), (true, false), (false, true), (true, true)] {
+            assert_eq!(f(false, c, w), Provider::Cpu);
+        }
+        assert_eq!(f(true, true, true), Provider::Cuda);
+        assert_eq!(f(true, true, false), Provider::Cuda);
+        assert_eq!(f(true, false, true), Provider::Webgpu);
+        let (p, why) = choose_auto(GpuFacts {
+            real_gpu: true,
+            cuda: false,
+            webgpu: false,
+        });
+        assert_eq!(p, Provider::Cpu);
+        assert!(why.contains("setup.sh"), "{why}");
+        assert_eq!(Provider::Webgpu.resolved(), Provider::Webgpu);
+    }
 }

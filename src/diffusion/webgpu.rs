@@ -20,7 +20,7 @@ pub fn library(ort_library: &Path) -> Option<PathBuf> {
 }
 
 /// Whether Linux shows a GPU to ONNX Runtime's device discovery (a DRM card).
-fn drm_card() -> bool {
+pub fn drm_card() -> bool {
     std::fs::read_dir("/sys/class/drm").is_ok_and(|d| {
         d.flatten().any(|e| {
             let n = e.file_name();

@@ -99,8 +99,9 @@ pub fn run_guided(
         totals.split[1] += r.prior_seconds;
         totals.split[2] += r.seconds - r.apply_seconds - r.prior_seconds;
         let it = t.iteration();
-        let due =
-            stage.checkpoint_every > 0 && it % stage.checkpoint_every == 0 && it < stage.iterations;
+        let due = stage.checkpoint_every > 0
+            && it.is_multiple_of(stage.checkpoint_every)
+            && it < stage.iterations;
         observe(t, &r, guide, rng, due)?;
     }
     Ok(totals)
@@ -264,7 +265,7 @@ pub fn run_fit(
     while t.iteration() < steps {
         let r = t.step()?;
         let it = t.iteration();
-        let due = checkpoint_every > 0 && it % checkpoint_every == 0 && it < steps;
+        let due = checkpoint_every > 0 && it.is_multiple_of(checkpoint_every) && it < steps;
         observe(t, &r, due)?;
         last = Some(r);
     }
