@@ -103,6 +103,15 @@ fn word_list(name: &str) -> &'static [&'static str] {
     lists.get(name).map(Vec::as_slice).unwrap_or(&[])
 }
 
+/// A word the reader knows as something other than an object: a part of the room, an area,
+/// an arrangement, people, a room size word or a common English word of requests.
+pub fn is_known_word(w: &str) -> bool {
+    let sg = singular(w);
+    ["not_objects", "room_tiny", "room_small", "room_large", "english"]
+        .iter()
+        .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
+}
+
 pub fn is_function_word(w: &str) -> bool {
     function().contains(&w)
 }
@@ -309,6 +318,11 @@ fn words_in(t: &str, from: usize, to: usize) -> Vec<(usize, &str)> {
         i += w.len() + 1;
     }
     out
+}
+
+/// The number a word says ("6", "six", "dozen"), if any.
+pub fn number(w: &str) -> Option<u32> {
+    number_of(w)
 }
 
 fn number_of(w: &str) -> Option<u32> {
