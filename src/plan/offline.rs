@@ -394,6 +394,19 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     }
                 }
                 sizes.insert(cat.clone(), size);
+            } else if m.known {
+                // "a huge viewscreen", "a tiny desk": the size words of kb/words.txt scale it.
+                let f: f64 = m
+                    .adjectives
+                    .iter()
+                    .filter_map(|a| lang::object_scale(a))
+                    .product();
+                if f != 1.0 {
+                    for v in size.iter_mut() {
+                        *v = (*v * f * 100.0).round() / 100.0;
+                    }
+                    sizes.insert(cat.clone(), size);
+                }
             }
         }
         if let Some(x) = m.each_of {
