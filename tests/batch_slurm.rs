@@ -180,7 +180,9 @@ fn same_tree(a: &Path, b: &Path) {
             let p = e.unwrap().path();
             if p.is_dir() {
                 files(&p, base, out);
-            } else if ![".lock", ".commit.lock"].contains(&p.file_name().unwrap().to_str().unwrap_or("")) {
+            } else if ![".lock", ".commit.lock"]
+                .contains(&p.file_name().unwrap().to_str().unwrap_or(""))
+            {
                 out.insert(
                     p.strip_prefix(base).unwrap().into(),
                     std::fs::read(&p).unwrap(),

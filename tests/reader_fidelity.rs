@@ -166,7 +166,10 @@ fn issue_21_huge_and_tiny_scale_the_object() {
     };
     let plain = size("a games room with a tv and a sofa", "tv");
     let huge = size("a games room with a huge tv and a sofa", "tv");
-    assert!(huge[0] > plain[0] * 1.3 && huge[2] > plain[2] * 1.3, "{huge:?} {plain:?}");
+    assert!(
+        huge[0] > plain[0] * 1.3 && huge[2] > plain[2] * 1.3,
+        "{huge:?} {plain:?}"
+    );
     let plain = size("a study with a desk and a bookshelf", "desk");
     let tiny = size("a study with a tiny desk and a bookshelf", "desk");
     assert!(tiny[0] < plain[0] * 0.8, "{tiny:?} {plain:?}");

@@ -297,8 +297,7 @@ pub fn run(a: Args) -> Result<()> {
                     object_iterations,
                     &cfg,
                 )?;
-                let note =
-                    reopt::local_environment(c.as_ref(), &state, &mut e, &[fp], &cfg)?;
+                let note = reopt::local_environment(c.as_ref(), &state, &mut e, &[fp], &cfg)?;
                 e.notes.push(note);
                 let op = e.op.clone();
                 let applied = apply_edit(&state, e, None)?;

@@ -582,9 +582,7 @@ pub fn resolve(name: &str, objects: &[(String, String)]) -> Result<String, Strin
         );
         let forms: Vec<String> = words
             .iter()
-            .flat_map(|w| {
-                std::iter::once(w.clone()).chain(crate::plan::lang::plurals(w))
-            })
+            .flat_map(|w| std::iter::once(w.clone()).chain(crate::plan::lang::plurals(w)))
             .collect();
         let len = forms
             .iter()

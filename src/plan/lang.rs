@@ -107,9 +107,15 @@ fn word_list(name: &str) -> &'static [&'static str] {
 /// an arrangement, people, a room size word or a common English word of requests.
 pub fn is_known_word(w: &str) -> bool {
     let sg = singular(w);
-    ["not_objects", "room_tiny", "room_small", "room_large", "english"]
-        .iter()
-        .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
+    [
+        "not_objects",
+        "room_tiny",
+        "room_small",
+        "room_large",
+        "english",
+    ]
+    .iter()
+    .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
 }
 
 /// The factor a size word scales an object by ("huge" 1.6, "tiny" 0.55: `kb/words.txt`,
@@ -371,17 +377,19 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             // starts another scene's name ("conference room") is that other scene.
             let before = t[..m.start()].trim_end();
             let word = before.rsplit(' ').next().unwrap_or("");
-            let modified = (!m.as_str().contains(' ') && !word.is_empty() && !is_function_word(word))
-                .then(|| {
-                    scene_of
-                        .iter()
-                        .filter(|(name, _)| {
-                            name.strip_prefix(word).is_some_and(|rest| rest.starts_with(' '))
-                        })
-                        .map(|(_, &i)| i)
-                        .next()
-                })
-                .flatten();
+            let modified =
+                (!m.as_str().contains(' ') && !word.is_empty() && !is_function_word(word))
+                    .then(|| {
+                        scene_of
+                            .iter()
+                            .filter(|(name, _)| {
+                                name.strip_prefix(word)
+                                    .is_some_and(|rest| rest.starts_with(' '))
+                            })
+                            .map(|(_, &i)| i)
+                            .next()
+                    })
+                    .flatten();
             let (i, start) = match modified {
                 Some(i) => (i, before.len() - word.len()),
                 None => (scene_of[m.as_str()], m.start()),

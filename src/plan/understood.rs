@@ -109,7 +109,13 @@ pub fn seats_phrase(r: &Reading, table: usize) -> String {
     let tail: String = match rest.find(" for ") {
         Some(k) if k < 24 => rest[..k + 5]
             .chars()
-            .chain(rest[k + 5..].split([' ', ',', '.', ';']).next().unwrap_or("").chars())
+            .chain(
+                rest[k + 5..]
+                    .split([' ', ',', '.', ';'])
+                    .next()
+                    .unwrap_or("")
+                    .chars(),
+            )
             .collect(),
         _ => String::new(),
     };
