@@ -354,7 +354,33 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut sizes: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
-    let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    let mut cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    // "a kids' table with four little chairs": bare seats said with a table are that table's
+    // seats, not the scene's usual seat kind (the office chairs of its desks).
+    let scene_seats: BTreeMap<String, u32> = scene
+        .map(|s| s.objects.iter().cloned().collect())
+        .unwrap_or_default();
+    for i in 1..r.mentions.len() {
+        let (m, prev) = (&r.mentions[i], &r.mentions[i - 1]);
+        let between = &r.text[prev.end..m.start];
+        if cats[i] == m.category
+            || !between.trim_start().starts_with("with ")
+            || between.contains([',', ';', '.'])
+        {
+            continue;
+        }
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        let same_head: BTreeMap<String, u32> = scene_seats
+            .iter()
+            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
+            .map(|(c, n)| (c.clone(), *n))
+            .collect();
+        if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
+            if seat.rsplit(' ').next() == Some(head.as_str()) {
+                cats[i] = seat;
+            }
+        }
+    }
     // "two chairs at each table": (category, per instance, category of the distributor).
     let mut distributed: Vec<(String, u32, String)> = vec![];
     let mut others: BTreeSet<String> = BTreeSet::new();
@@ -564,7 +590,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 _ => per.min(4),
             };
             counts.insert(seat.clone(), counts[&table] * each);
-            if let Some(i) = first_mention(&table) {
+            if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred
                     .entry(seat.clone())
                     .or_insert_with(|| super::understood::phrase(&r, i));
