@@ -520,43 +520,6 @@ fn step(
     Ok(None)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn scene() -> Vec<(String, String)> {
-        [
-            ("sofa1", "sofa"),
-            ("tv1", "tv"),
-            ("chair1", "chair"),
-            ("chair2", "chair"),
-            ("coffee_table1", "coffee table"),
-        ]
-        .iter()
-        .map(|(a, b)| (a.to_string(), b.to_string()))
-        .collect()
-    }
-
-    #[test]
-    fn distances_and_units() {
-        let c = parse("move the sofa back half a metre", &scene(), None).unwrap();
-        assert_eq!(c.subject.as_deref(), Some("sofa1"));
-        assert_eq!(
-            c.steps,
-            vec![(
-                Step::Shift {
-                    forward: -0.5,
-                    left: 0.0
-                },
-                None
-            )]
-        );
-        let c = parse("move it 30 cm to the left", &scene(), Some("chair2")).unwrap();
-        assert_eq!(c.subject.as_deref(), Some("chair2"));
-        assert!(matches!(c.steps[0].0, Step::Shift { left, .. } if (left - 0.3).abs() < 1e-12));
-    }
-}
-
 /// The instance a name means: an id ("sofa1"), or a category or one of its names with or
 /// without an article and adjectives ("sofa", "the chalkboard menu", "the big armchair").
 /// Several instances of that name: an error that lists their ids; none: one that lists the
@@ -640,5 +603,42 @@ pub fn count_of(description: &str) -> (u32, String) {
     match n {
         Some(n) if n >= 1 && words.len() > skip => (n, words[skip..].join(" ")),
         _ => (1, description.trim().to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene() -> Vec<(String, String)> {
+        [
+            ("sofa1", "sofa"),
+            ("tv1", "tv"),
+            ("chair1", "chair"),
+            ("chair2", "chair"),
+            ("coffee_table1", "coffee table"),
+        ]
+        .iter()
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect()
+    }
+
+    #[test]
+    fn distances_and_units() {
+        let c = parse("move the sofa back half a metre", &scene(), None).unwrap();
+        assert_eq!(c.subject.as_deref(), Some("sofa1"));
+        assert_eq!(
+            c.steps,
+            vec![(
+                Step::Shift {
+                    forward: -0.5,
+                    left: 0.0
+                },
+                None
+            )]
+        );
+        let c = parse("move it 30 cm to the left", &scene(), Some("chair2")).unwrap();
+        assert_eq!(c.subject.as_deref(), Some("chair2"));
+        assert!(matches!(c.steps[0].0, Step::Shift { left, .. } if (left - 0.3).abs() < 1e-12));
     }
 }
