@@ -86,9 +86,9 @@ fn own_prompts_are_read_the_way_people_mean_them() {
     }
     let share = held as f64 / total as f64;
     eprintln!("own set: {held}/{total} rules held\n{}", failed.join("\n"));
-    // The level reached when this test was written (98/109); it may only go up.
+    // The level reached (108/120 after the second round); it may only go up.
     assert!(
-        share >= 0.89,
+        share >= 0.895,
         "{held}/{total} rules held:\n{}",
         failed.join("\n")
     );
