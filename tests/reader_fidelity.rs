@@ -86,9 +86,9 @@ fn own_prompts_are_read_the_way_people_mean_them() {
     }
     let share = held as f64 / total as f64;
     eprintln!("own set: {held}/{total} rules held\n{}", failed.join("\n"));
-    // The level reached when this test was written (98/109); it may only go up.
+    // The level reached (108/120 after the second round); it may only go up.
     assert!(
-        share >= 0.89,
+        share >= 0.895,
         "{held}/{total} rules held:\n{}",
         failed.join("\n")
     );
@@ -153,4 +153,24 @@ fn issue_21_room_sizes() {
     };
     assert!(area("a small bedroom") < 16.0);
     assert!(area("a bedroom 3 x 3") <= 9.0 + 1e-9);
+}
+
+#[test]
+fn issue_21_huge_and_tiny_scale_the_object() {
+    let size = |p: &str, c: &str| {
+        plan(p)
+            .objects
+            .get(c)
+            .unwrap_or_else(|| panic!("{p}: no {c}"))
+            .size
+    };
+    let plain = size("a games room with a tv and a sofa", "tv");
+    let huge = size("a games room with a huge tv and a sofa", "tv");
+    assert!(
+        huge[0] > plain[0] * 1.3 && huge[2] > plain[2] * 1.3,
+        "{huge:?} {plain:?}"
+    );
+    let plain = size("a study with a desk and a bookshelf", "desk");
+    let tiny = size("a study with a tiny desk and a bookshelf", "desk");
+    assert!(tiny[0] < plain[0] * 0.8, "{tiny:?} {plain:?}");
 }

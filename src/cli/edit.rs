@@ -162,7 +162,7 @@ pub fn run(a: Args) -> Result<()> {
         println!("undid the last edit ({op}) of {}", dir.display());
         return Ok(());
     }
-    let state = SceneState::open(dir)?;
+    let mut state = SceneState::open(dir)?;
     let cfg = ReoptConfig {
         iterations: a.iterations,
         resolution: a.resolution,
@@ -199,11 +199,31 @@ pub fn run(a: Args) -> Result<()> {
                 face,
                 scale,
             };
+            let flags = MoveFlags {
+                face: match flags.face {
+                    Some(f) => Some(resolve_id(&state, &f)?),
+                    None => None,
+                },
+                ..flags
+            };
             let any_flag = flags.to.is_some()
                 || flags.by.is_some()
                 || flags.rotate.is_some()
                 || flags.face.is_some()
                 || flags.scale.is_some();
+            // A name for the instance ("sofa", "the reading lamp") is read as its id.
+            let target: Vec<String> = match target.as_slice() {
+                [name] if any_flag && state.object(name).is_err() => {
+                    vec![resolve_id(&state, name)?]
+                }
+                [a, b] if state.object(a).is_err() && state.object(b).is_err() => {
+                    match resolve_id(&state, a) {
+                        Ok(id) => vec![id, b.clone()],
+                        Err(_) => vec![a.clone(), b.clone()],
+                    }
+                }
+                _ => target,
+            };
             let (id, pose, args) = match target.as_slice() {
                 [id] if state.object(id).is_ok() => {
                     if !any_flag {
@@ -240,6 +260,7 @@ pub fn run(a: Args) -> Result<()> {
             (e, fp)
         }
         Op::Remove { id } => {
+            let id = resolve_id(&state, &id)?;
             let (e, fp) = ops::remove_object(&state, &id)?;
             (e, vec![fp])
         }
@@ -255,12 +276,41 @@ pub fn run(a: Args) -> Result<()> {
                 })?),
                 None => None,
             };
+            let near = match near {
+                Some(n) => Some(resolve_id(&state, &n)?),
+                None => None,
+            };
+            // "two cafe chairs": that many, one edit each (undo takes back one).
+            let (n, what) = parse::count_of(&description);
+            if n > MAX_ADD {
+                bail!("add \"{description}\": at most {MAX_ADD} objects at once");
+            }
             let needs_gpu = state.scene.prior.kind != "shape";
             let c = if needs_gpu { Some(device()?) } else { None };
+            for k in 1..n {
+                let (mut e, fp) = reopt::add_object(
+                    c.as_ref(),
+                    &state,
+                    &what,
+                    near.as_deref(),
+                    anchor,
+                    object_iterations,
+                    &cfg,
+                )?;
+                let note = reopt::local_environment(c.as_ref(), &state, &mut e, &[fp], &cfg)?;
+                e.notes.push(note);
+                let op = e.op.clone();
+                let applied = apply_edit(&state, e, None)?;
+                for n in &applied.notes {
+                    eprintln!("{n}");
+                }
+                println!("{op}: done ({k} of {n})");
+                state = SceneState::open(dir)?;
+            }
             let (e, fp) = reopt::add_object(
                 c.as_ref(),
                 &state,
-                &description,
+                &what,
                 near.as_deref(),
                 anchor,
                 object_iterations,
@@ -273,6 +323,11 @@ pub fn run(a: Args) -> Result<()> {
             description,
             edit_reference,
         } => {
+            let part = match part.as_str() {
+                "environment" | "walls" | "sky" | "floor" | "ground" => part,
+                _ if state.object(&part).is_ok() => part,
+                _ => resolve_id(&state, &part)?,
+            };
             let needs_gpu = state.scene.prior.kind != "shape";
             let c = if needs_gpu { Some(device()?) } else { None };
             let e = dreamscene::edit::restyle::restyle(
@@ -291,6 +346,7 @@ pub fn run(a: Args) -> Result<()> {
             seconds,
             fps,
         } => {
+            let id = resolve_id(&state, &id)?;
             let e = animate::animate(&state, &id, &motion, seconds, fps)?;
             (e, vec![])
         }
@@ -374,6 +430,24 @@ fn history_line(e: &serde_json::Value) -> String {
 }
 
 /// The instance and pose a sentence asks for (`default` is "it").
+/// Most objects one `add` creates.
+const MAX_ADD: u32 = 20;
+
+/// The id an instance id or name means ("sofa1", "sofa", "the chalkboard menu"); an ambiguous
+/// or unknown name is one line that lists the ids to choose from.
+fn resolve_id(state: &SceneState, name: &str) -> Result<String> {
+    if state.object(name).is_ok() {
+        return Ok(name.to_string());
+    }
+    let objects: Vec<(String, String)> = state
+        .scene
+        .objects
+        .iter()
+        .map(|o| (o.id.clone(), o.category.clone()))
+        .collect();
+    parse::resolve(name, &objects).map_err(anyhow::Error::msg)
+}
+
 fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Result<(String, Pose)> {
     let objects: Vec<(String, String)> = state
         .scene

@@ -3,6 +3,7 @@ use super::write_png;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::SceneSpec;
+use dreamscene::plan::understood::{Because, Understood};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -71,12 +72,13 @@ fn plan(
     let text = plan_text(prompt, dialogue, interactive)?;
     let (spec, l) = plan_to_dir(&text, llm.as_ref(), seed, out)?;
     println!(
-        "{} scene: {}",
+        "{} scene: {}{}",
         match spec.scene_type {
             dreamscene::plan::spec::SceneType::Indoor => "indoor",
             dreamscene::plan::spec::SceneType::Outdoor => "outdoor",
         },
-        l.summary(&spec)
+        l.summary(&spec),
+        unsatisfied_note(&l)
     );
     println!(
         "wrote {0}/spec.json, {0}/layout.json, {0}/layout.png",
@@ -168,13 +170,13 @@ pub fn plan_to_dir(
     seed: u64,
     out: &Path,
 ) -> Result<(SceneSpec, dreamscene::plan::spec::Layout)> {
-    let spec = match llm {
+    let (spec, understood) = match llm {
         None => {
             let p = dreamscene::plan::offline::plan_prompt(text)?;
             for n in &p.notes {
                 eprintln!("note: {n}");
             }
-            p.spec
+            (p.spec, p.understood)
         }
         Some(cfg) => {
             eprintln!("asking {} ({})", cfg.url, cfg.model);
@@ -182,12 +184,35 @@ pub fn plan_to_dir(
             for w in &report.warnings {
                 eprintln!("warning: {w}");
             }
-            spec
+            let understood = Understood {
+                objects: spec
+                    .objects
+                    .iter()
+                    .map(|(c, o)| Because {
+                        category: c.clone(),
+                        count: o.number,
+                        why: "from the language model's answer".into(),
+                    })
+                    .collect(),
+                unused: vec![],
+            };
+            (spec, understood)
         }
     };
+    println!("understood:");
+    for line in understood.lines() {
+        println!("  {line}");
+    }
     let l = layout(&spec, LayoutOptions::seeded(seed))?;
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
-    let spec_json = serde_json::to_string_pretty(&spec)?;
+    // spec.json records what was understood and what the layout could not satisfy (added keys).
+    let mut json = serde_json::to_value(&spec)?;
+    if let Some(map) = json.as_object_mut() {
+        map.insert("understood".into(), serde_json::to_value(&understood)?);
+        let unsatisfied: Vec<String> = l.unsatisfied.iter().map(|r| r.to_string()).collect();
+        map.insert("unsatisfied".into(), serde_json::to_value(unsatisfied)?);
+    }
+    let spec_json = serde_json::to_string_pretty(&json)?;
     dreamscene::util::write_atomic(&out.join("spec.json"), spec_json.as_bytes())
         .with_context(|| format!("writing {}/spec.json", out.display()))?;
     l.write(&out.join("layout.json"))

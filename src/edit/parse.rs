@@ -520,6 +520,92 @@ fn step(
     Ok(None)
 }
 
+/// The instance a name means: an id ("sofa1"), or a category or one of its names with or
+/// without an article and adjectives ("sofa", "the chalkboard menu", "the big armchair").
+/// Several instances of that name: an error that lists their ids; none: one that lists the
+/// scene's ids.
+pub fn resolve(name: &str, objects: &[(String, String)]) -> Result<String, String> {
+    let t = crate::plan::lang::normalise(name);
+    let t = t.trim_matches(|c: char| c == '"' || c == '\'' || c == '.');
+    if let Some((id, _)) = objects.iter().find(|o| o.0.eq_ignore_ascii_case(t)) {
+        return Ok(id.clone());
+    }
+    let kb = KnowledgeBase::builtin();
+    let mut best = 0usize;
+    let mut found: Vec<&str> = vec![];
+    for (id, cat) in objects {
+        let mut words = vec![cat.to_lowercase()];
+        if let Some(k) = kb.object(cat) {
+            words.extend(k.synonyms.iter().map(|s| s.to_lowercase()));
+        }
+        words.extend(
+            kb.names()
+                .filter(|(_, k)| k.category == *cat)
+                .map(|(n, _)| n.to_string()),
+        );
+        let forms: Vec<String> = words
+            .iter()
+            .flat_map(|w| std::iter::once(w.clone()).chain(crate::plan::lang::plurals(w)))
+            .collect();
+        let len = forms
+            .iter()
+            .filter(|f| t == f.as_str() || t.ends_with(&format!(" {f}")))
+            .map(|f| f.len())
+            .max()
+            .unwrap_or(0);
+        if len > best {
+            best = len;
+            found.clear();
+        }
+        if len > 0 && len == best {
+            found.push(id);
+        }
+    }
+    if found.is_empty() {
+        // "the lamp" for a floor lamp: the head noun of a category's name.
+        let head = t.rsplit(' ').next().unwrap_or(t);
+        let head = crate::plan::lang::singular(head);
+        found = objects
+            .iter()
+            .filter(|(_, cat)| cat.to_lowercase().rsplit(' ').next() == Some(head.as_str()))
+            .map(|(id, _)| id.as_str())
+            .collect();
+    }
+    match found.as_slice() {
+        [one] => Ok(one.to_string()),
+        [] => {
+            let ids: Vec<&str> = objects.iter().map(|o| o.0.as_str()).take(24).collect();
+            Err(format!(
+                "no object called \"{name}\" in the scene; its ids: {}",
+                ids.join(", ")
+            ))
+        }
+        many => Err(format!(
+            "\"{name}\" could be {}: give one of these ids",
+            many.join(", ")
+        )),
+    }
+}
+
+/// The count a description of new objects starts with and the rest: "two cafe chairs" is
+/// (2, "cafe chairs"), "a pair of lamps" (2, "lamps"), "a green armchair" (1, itself).
+pub fn count_of(description: &str) -> (u32, String) {
+    let t = crate::plan::lang::normalise(description);
+    let words: Vec<&str> = t.split(' ').collect();
+    let number = |w: &str| crate::plan::lang::number(w).filter(|_| !["a", "an", "no"].contains(&w));
+    let (n, skip) = match words.as_slice() {
+        [a, b, "of", ..] if ["a", "an"].contains(a) && number(b).is_some() => (number(b), 3),
+        [w, "of", ..] if number(w).is_some() => (number(w), 2),
+        [a, b, ..] if ["a", "an"].contains(a) && number(b).is_some() => (number(b), 2),
+        [w, ..] if number(w).is_some() => (number(w), 1),
+        _ => (None, 0),
+    };
+    match n {
+        Some(n) if n >= 1 && words.len() > skip => (n, words[skip..].join(" ")),
+        _ => (1, description.trim().to_string()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -103,6 +103,30 @@ fn word_list(name: &str) -> &'static [&'static str] {
     lists.get(name).map(Vec::as_slice).unwrap_or(&[])
 }
 
+/// A word the reader knows as something other than an object: a part of the room, an area,
+/// an arrangement, people, a room size word or a common English word of requests.
+pub fn is_known_word(w: &str) -> bool {
+    let sg = singular(w);
+    [
+        "not_objects",
+        "room_tiny",
+        "room_small",
+        "room_large",
+        "english",
+    ]
+    .iter()
+    .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
+}
+
+/// The factor a size word scales an object by ("huge" 1.6, "tiny" 0.55: `kb/words.txt`,
+/// object_scale), if it is one.
+pub fn object_scale(w: &str) -> Option<f64> {
+    word_list("object_scale").iter().find_map(|e| {
+        let (word, f) = e.split_once('=')?;
+        (word == w).then(|| f.parse().ok()).flatten()
+    })
+}
+
 pub fn is_function_word(w: &str) -> bool {
     function().contains(&w)
 }
@@ -311,6 +335,11 @@ fn words_in(t: &str, from: usize, to: usize) -> Vec<(usize, &str)> {
     out
 }
 
+/// The number a word says ("6", "six", "dozen"), if any.
+pub fn number(w: &str) -> Option<u32> {
+    number_of(w)
+}
+
 fn number_of(w: &str) -> Option<u32> {
     if let Ok(n) = w.parse::<u32>() {
         return Some(n);
@@ -344,8 +373,29 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             .iter()
             .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
         if !inside_object {
-            r.scene = Some((scene_of[m.as_str()], m.start(), m.end()));
-            masked.push((m.start(), m.end()));
+            // "a conference hall", "a lecture hall": a one-word scene name after a word that
+            // starts another scene's name ("conference room") is that other scene.
+            let before = t[..m.start()].trim_end();
+            let word = before.rsplit(' ').next().unwrap_or("");
+            let modified =
+                (!m.as_str().contains(' ') && !word.is_empty() && !is_function_word(word))
+                    .then(|| {
+                        scene_of
+                            .iter()
+                            .filter(|(name, _)| {
+                                name.strip_prefix(word)
+                                    .is_some_and(|rest| rest.starts_with(' '))
+                            })
+                            .map(|(_, &i)| i)
+                            .next()
+                    })
+                    .flatten();
+            let (i, start) = match modified {
+                Some(i) => (i, before.len() - word.len()),
+                None => (scene_of[m.as_str()], m.start()),
+            };
+            r.scene = Some((i, start, m.end()));
+            masked.push((start, m.end()));
             break;
         }
     }

@@ -12,4 +12,5 @@ pub mod llm;
 pub mod offline;
 pub mod roles;
 pub mod spec;
+pub mod understood;
 pub mod units;

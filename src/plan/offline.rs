@@ -105,6 +105,8 @@ pub struct Plan {
     pub named: BTreeSet<String>,
     /// One line each: clamped counts, unknown objects, trimmed default furniture.
     pub notes: Vec<String>,
+    /// Each object's count and reason, and the words not used.
+    pub understood: super::understood::Understood,
 }
 
 /// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
@@ -354,11 +356,40 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut sizes: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
-    let cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    let mut cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    // "a kids' table with four little chairs": bare seats said with a table are that table's
+    // seats, not the scene's usual seat kind (the office chairs of its desks).
+    let scene_seats: BTreeMap<String, u32> = scene
+        .map(|s| s.objects.iter().cloned().collect())
+        .unwrap_or_default();
+    for i in 1..r.mentions.len() {
+        let (m, prev) = (&r.mentions[i], &r.mentions[i - 1]);
+        let between = &r.text[prev.end..m.start];
+        if cats[i] == m.category
+            || !between.trim_start().starts_with("with ")
+            || between.contains([',', ';', '.'])
+        {
+            continue;
+        }
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        let same_head: BTreeMap<String, u32> = scene_seats
+            .iter()
+            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
+            .map(|(c, n)| (c.clone(), *n))
+            .collect();
+        if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
+            if seat.rsplit(' ').next() == Some(head.as_str()) {
+                cats[i] = seat;
+            }
+        }
+    }
     // "two chairs at each table": (category, per instance, category of the distributor).
     let mut distributed: Vec<(String, u32, String)> = vec![];
     let mut others: BTreeSet<String> = BTreeSet::new();
-    for (m, cat) in r.mentions.iter().zip(&cats) {
+    // Counts that a phrase implies rather than names: category -> the phrase.
+    let mut inferred: BTreeMap<String, String> = BTreeMap::new();
+    let first_mention = |c: &str| cats.iter().position(|x| x == c);
+    for (mi, (m, cat)) in r.mentions.iter().zip(&cats).enumerate() {
         if m.negated {
             if m.adjectives.iter().any(|a| a == "other") {
                 // "no other beds": no default of that kind or role, the named ones stay
@@ -391,9 +422,25 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     }
                 }
                 sizes.insert(cat.clone(), size);
+            } else if m.known {
+                // "a huge viewscreen", "a tiny desk": the size words of kb/words.txt scale it.
+                let f: f64 = m
+                    .adjectives
+                    .iter()
+                    .filter_map(|a| lang::object_scale(a))
+                    .product();
+                if f != 1.0 {
+                    for v in size.iter_mut() {
+                        *v = (*v * f * 100.0).round() / 100.0;
+                    }
+                    sizes.insert(cat.clone(), size);
+                }
             }
         }
         if let Some(x) = m.each_of {
+            inferred
+                .entry(cat.clone())
+                .or_insert_with(|| super::understood::span_phrase(&r, mi, x));
             distributed.push((cat.clone(), m.count.unwrap_or(1) * m.parts, cats[x].clone()));
             continue;
         }
@@ -440,6 +487,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             continue;
         };
         seated = true;
+        inferred
+            .entry(seat.clone())
+            .or_insert_with(|| super::understood::seats_phrase(&r, ti));
         let n = per * tables.max(1);
         let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
             explicit[&seat].max(n)
@@ -524,11 +574,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 )
             });
         if let Some(p) = people.filter(|_| main_seat == Some(seat)) {
+            let said = super::understood::people_phrase(&r.text, p);
             if !seat_named {
                 counts.insert(seat.clone(), p);
+                inferred.entry(seat.clone()).or_insert_with(|| said.clone());
             }
             if !table_named {
                 counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+                inferred.entry(table.clone()).or_insert(said);
             }
             continue;
         }
@@ -540,11 +593,21 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 _ => per.min(4),
             };
             counts.insert(seat.clone(), counts[&table] * each);
+            if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
+                inferred
+                    .entry(seat.clone())
+                    .or_insert_with(|| super::understood::phrase(&r, i));
+            }
         } else if seat_named && !table_named && per < 12 {
             let need = counts[seat].div_ceil(per.max(1));
             let t = counts.get(&table).copied().unwrap_or(1);
             if need > t {
                 counts.insert(table.clone(), need);
+                if let Some(i) = first_mention(seat) {
+                    inferred
+                        .entry(table.clone())
+                        .or_insert_with(|| super::understood::phrase(&r, i));
+                }
             }
         }
     }
@@ -797,5 +860,28 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     let fitted = fit(&mut spec, &named, stated.is_some() || r.scale < 1.0)?;
     notes.extend(fitted);
-    Ok(Plan { spec, named, notes })
+    let understood = super::understood::Understood {
+        objects: spec
+            .objects
+            .iter()
+            .map(|(c, o)| super::understood::Because {
+                category: c.clone(),
+                count: o.number,
+                why: super::understood::why(
+                    c,
+                    &inferred,
+                    &named,
+                    scene.map(|s| s.name.as_str()),
+                    defaults.contains_key(c),
+                ),
+            })
+            .collect(),
+        unused: super::understood::unused_words(&r, &styles),
+    };
+    Ok(Plan {
+        spec,
+        named,
+        notes,
+        understood,
+    })
 }

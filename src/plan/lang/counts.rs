@@ -44,6 +44,41 @@ fn part(s: &str) -> Option<u32> {
         .map(|&(_, n)| n)
 }
 
+/// A countable part of the room that "each" can be about (`kb/words.txt`: features).
+fn is_feature(w: &str) -> bool {
+    let sg = super::singular(w);
+    super::word_list("features").contains(&sg.as_str())
+}
+
+/// The last "N (adjectives) features" of `before` ("three big windows"): its end and N; only of
+/// that feature when `of` is given.
+fn feature_count(before: &str, of: Option<&str>) -> Option<(usize, u32)> {
+    let mut words: Vec<(usize, &str)> = vec![];
+    let mut pos = 0;
+    for w in before.split(' ') {
+        let core = w.trim_matches(|c: char| !c.is_alphanumeric() && c != '\'' && c != '-');
+        words.push((pos + w.len(), core));
+        pos += w.len() + 1;
+    }
+    let mut last = None;
+    for (i, &(_, w)) in words.iter().enumerate() {
+        let Some(n) = number_of(w).filter(|&n| n >= 2) else {
+            continue;
+        };
+        for &(end, noun) in words.iter().skip(i + 1).take(3) {
+            let same = of.is_none_or(|o| super::singular(o) == super::singular(noun));
+            if is_feature(noun) && same {
+                last = Some((end, n));
+                break;
+            }
+            if !super::is_adjective(noun) {
+                break;
+            }
+        }
+    }
+    last
+}
+
 /// Reads the distributive counts, seats and rows of `r` (after its mentions).
 pub(super) fn read_counts(r: &mut Reading) {
     let t = r.text.clone();
@@ -112,6 +147,26 @@ pub(super) fn read_counts(r: &mut Reading) {
                 m.parts = 1;
             }
             continue;
+        }
+        // "three windows and a plant beneath each one": a counted part of the room (no object)
+        // named nearer than any object is what "each" is about.
+        let next_word = tail[after_each..]
+            .split_whitespace()
+            .next()
+            .unwrap_or("")
+            .trim_matches(|c: char| !c.is_alphabetic());
+        if what.is_some_and(|w| w == "one" || w == "of them") || is_feature(next_word) {
+            let near = distributor(r, m.start, &cat).map(|x| r.mentions[x].end);
+            let named_feature = if is_feature(next_word) {
+                feature_count(&t[..m.start], Some(next_word))
+            } else {
+                feature_count(&t[..m.start], None)
+            };
+            if let Some((_, f)) = named_feature.filter(|&(e, _)| near.is_none_or(|n| e > n)) {
+                let m = &mut r.mentions[k];
+                m.count = Some(m.count.unwrap_or(1) * f);
+                continue;
+            }
         }
         let over = match (word, what) {
             ("per" | "each" | "every", None) if next <= m.end + tail.len() && k + 1 < n => {
