@@ -88,7 +88,7 @@ fn two_workers_on_one_manifest_do_each_scene_once() {
     };
     assert_eq!((seed("bedroom"), seed("kitchen")), (3, 0));
     let renders = std::fs::read_dir(out.join("den/renders")).unwrap().count();
-    assert_eq!(renders, 3, "two views and cameras.json");
+    assert_eq!(renders, 4, "two views, cameras.json and overview.png");
     // Each worker says how many it did; together exactly the manifest.
     let done_now = |o: &Output| -> usize {
         let s = String::from_utf8_lossy(&o.stdout);
