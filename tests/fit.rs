@@ -181,7 +181,10 @@ fn resumed_fit_matches_an_uninterrupted_one() {
         "mean parameter difference from the uninterrupted fit: resumed {d_resumed:e}, Adam \
          restarted {d_restarted:e}, the same fit run again {d_twice:e}"
     );
-    let noise = d_twice.max(1e-7);
+    // The floor: when lavapipe happens to run both fits bit-identically (seen: 1.3e-8), the
+    // resumed fit still differs by ~2e-5 because a resume restarts the densification statistics
+    // (see `Trainer::restore`); that is far below Adam restarted (~5e-3), which the test must tell.
+    let noise = d_twice.max(1e-5);
     assert!(
         d_resumed < 6.0 * noise,
         "resumed fit drifted by {d_resumed:e}"
