@@ -14,7 +14,7 @@ use dreamscene::plan::check::{penetration, relation_holds, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::{Layout, RelationKind, SceneSpec};
 use dreamscene::scene::compose::merge;
-use dreamscene::scene::dir::{compose_scene, read_scene};
+use dreamscene::scene::dir::{compose_scene, light_draft, read_scene};
 use dreamscene::splat::cloud::SH_C0;
 use dreamscene::splat::loss::psnr;
 use dreamscene::splat::ply::{read_ply, write_ply};
@@ -306,6 +306,21 @@ fn move_renders_the_object_under_its_new_transform_refuses_collisions_and_undoes
     let obj = read_ply(&d.join("objects/chair.ply")).unwrap();
     let mine = place_here(&obj, yaw, s, chair.position);
     let reference = splice(&old, range_of(&d, "chair1"), &mine);
+    // A draft's environment is re-lit for the layout it is composed with (the chair's contact
+    // shadow goes with it): the reference's environment is the unlit environment.ply lit for the
+    // scene after the move, in place of the one lit for the scene before.
+    let reference = {
+        let s = read_scene(&d).unwrap();
+        let clouds: BTreeMap<String, Gaussians> = s
+            .objects
+            .iter()
+            .map(|o| (o.ply.clone(), read_ply(&d.join(&o.ply)).unwrap()))
+            .collect();
+        let mut env = read_ply(&d.join("environment.ply")).unwrap();
+        light_draft(&s, &|rel| clouds.get(rel), &mut env);
+        let n = reference.len();
+        splice(&reference, n - env.len()..n, &env)
+    };
     assert_eq!(after.len(), reference.len());
     let mut checked = 0;
     for k in 0..3 {
@@ -434,7 +449,13 @@ fn reference(name: &str) -> (PathBuf, Layout) {
         }
     });
     write_ply(&env, &g).unwrap();
-    let s = read_scene(&d).unwrap();
+    // The checkered room stands for a learnt scene, not a draft: no light is baked into it.
+    let mut s = read_scene(&d).unwrap();
+    s.prior = dreamscene::scene::dir::Prior {
+        kind: "sd".into(),
+        models: Some(d.display().to_string()),
+    };
+    dreamscene::scene::dir::write_scene(&d, &s).unwrap();
     write_ply(&d.join("scene.ply"), &compose_scene(&d, &s).unwrap()).unwrap();
     (d, l)
 }

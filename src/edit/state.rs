@@ -235,7 +235,9 @@ impl SceneState {
             .collect();
         if let Some(env) = &self.scene.environment {
             if !self.scene.stage_pending("environment") {
-                parts.push(self.load(&env.ply, overlay)?);
+                let mut e = self.load(&env.ply, overlay)?;
+                crate::scene::dir::light_draft(&self.scene, &|rel| loaded.get(rel), &mut e);
+                parts.push(e);
             }
         }
         Ok(merge(&parts))

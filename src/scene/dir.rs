@@ -389,7 +389,9 @@ pub fn compose_parts(dir: &Path, scene: &SceneFile) -> Result<Vec<Gaussians>, Sc
         .collect();
     if let Some(env) = &scene.environment {
         if !scene.stage_pending("environment") {
-            parts.push(load(dir, &env.ply)?);
+            let mut e = load(dir, &env.ply)?;
+            light_draft(scene, &|rel| loaded.get(rel), &mut e);
+            parts.push(e);
         }
     }
     Ok(parts)
@@ -439,11 +441,9 @@ pub fn light_draft<'a>(
         })
         .collect();
     let openings = crate::scene::env::openings_of(scene.extra.get("openings"));
-    // Contact shadows depend on where the objects stand, and an edit must leave everything it
-    // does not name as it was (tests/edit.rs): until edits re-light on purpose, only the
-    // object-independent light (creases, ceiling falloff, skirting, openings) is baked here.
-    let _ = boxes;
-    crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &[], &openings);
+    // Contact shadows follow the current boxes: every composition (and so every edit) re-lights
+    // the unlit `environment.ply` for the layout it composes.
+    crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &boxes, &openings);
 }
 
 fn load(dir: &Path, rel: &str) -> Result<Gaussians, SceneError> {
