@@ -150,7 +150,11 @@ impl Animated {
             .map(|o| place(&self.clouds[&o.ply], &o.placement()))
             .collect();
         if let Some(env) = &self.environment {
-            parts.push(env.clone());
+            // A draft's light follows the layout at `t` (contact shadows move with the objects),
+            // exactly as composing the static scene does.
+            let mut e = env.clone();
+            crate::scene::dir::light_draft(&at, &|rel| self.clouds.get(rel), &mut e);
+            parts.push(e);
         }
         merge(&parts)
     }
