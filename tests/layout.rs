@@ -339,12 +339,20 @@ fn functional_relations_follow_their_definitions() {
     assert!(!holds(&log(0.9, 180.0), Circle, &fire), "touching the fire");
     assert!(!holds(&log(2.6, 180.0), Circle, &fire), "1.9 m away");
     assert!(!holds(&log(1.7, 0.0), Circle, &fire), "facing away");
-    // ROW: in front of the board, turned as it is.
+    // ROW: in front of the board, facing it (turned opposite to it, within 30°).
     let board = obj("board1", [3.0, 0.1, 1.2], [0.0, -3.0, 0.0], 0.0);
     let d = |x: f64, y: f64, yaw: f64| obj("desk2", [0.7, 0.5, 0.75], [x, y, 0.0], yaw);
-    assert!(holds(&d(2.5, 1.0, 0.0), Row, &board));
-    assert!(!holds(&d(2.5, 1.0, 180.0), Row, &board), "turned round");
-    assert!(!holds(&d(0.0, -3.6, 0.0), Row, &board), "behind the board");
+    assert!(holds(&d(2.5, 1.0, 180.0), Row, &board));
+    assert!(holds(&d(2.5, 1.0, 160.0), Row, &board), "20° off");
+    assert!(
+        !holds(&d(2.5, 1.0, 0.0), Row, &board),
+        "turned as the board, away from it"
+    );
+    assert!(!holds(&d(2.5, 1.0, 130.0), Row, &board), "50° off");
+    assert!(
+        !holds(&d(0.0, -3.6, 180.0), Row, &board),
+        "behind the board"
+    );
     // Names as the file writes them.
     assert_eq!(Around.to_string(), "AROUND");
     assert_eq!(Opposite.to_string(), "OPPOSITE");
