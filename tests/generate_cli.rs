@@ -174,11 +174,13 @@ fn check_draft(out: &Path, prompt: &str) {
     let all = read_ply(&out.join("scene.ply")).expect("scene.ply");
     assert_eq!(all.len(), total + env.len());
 
-    // Renders show something.
+    // Renders show something; overview.png is their contact sheet.
+    assert!(out.join("renders/overview.png").is_file(), "overview.png");
     let mut n = 0;
     for e in std::fs::read_dir(out.join("renders")).unwrap() {
         let p = e.unwrap().path();
-        if p.extension().is_some_and(|x| x == "png") {
+        // Every view (the contact sheet is wider).
+        if p.extension().is_some_and(|x| x == "png") && !p.ends_with("overview.png") {
             let img = image::open(&p).unwrap().to_rgb8();
             assert_eq!(img.width(), 64);
             let first = img.get_pixel(0, 0);
@@ -289,6 +291,8 @@ fn generate_refuses_a_missing_model_directory_clearly() {
             "--models",
             "/nonexistent/models",
             "--draft",
+            // The refused run above left its plan behind (spec.json, layout.json, layout.png).
+            "--force",
         ],
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -335,5 +339,5 @@ fn generate_with_the_tiny_sd_model_runs_every_stage() {
     assert!(scene.stages.iter().all(|s| s.done));
     let g = read_ply(&out.join("scene.ply")).unwrap();
     assert!(g.len() > 1000 && g.means.iter().flatten().all(|v| v.is_finite()));
-    assert!(out.join("renders/explore_0000.png").is_file());
+    assert!(out.join("renders/view_0000.png").is_file());
 }

@@ -85,7 +85,7 @@ fn object_bad_input_gets_one_line_errors() {
         ),
         (
             vec!["object", "a chair", "--out", o, "--prior", "magic"],
-            "oracle:FILE",
+            "oracle:REF",
         ),
         (
             vec!["object", "a chair", "--out", o, "--prior", "sd"],
