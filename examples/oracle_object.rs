@@ -64,7 +64,7 @@ fn main() -> anyhow::Result<()> {
         resolution: res,
         sh_degree: 0,
         recon_views: 12,
-        recon_passes: std::env::var("RP").map_or(8, |v| v.parse().unwrap()),
+        recon_passes: std::env::var("RP").map_or(Ok(8), |v| v.parse())?,
         checkpoint_every: 0,
         ..ObjectConfig::default()
     };

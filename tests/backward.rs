@@ -1,5 +1,9 @@
 //! GPU backward pass (native and compare-and-swap atomics) against the f64 CPU reference
 //! gradients on random scenes, and on a tile holding 100,000 splats.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::Camera;
 use dreamscene::gpu::{Buffer, Context};
@@ -24,7 +28,11 @@ fn camera(w: u32, h: u32) -> Camera {
 /// array's largest reference magnitude, over the Gaussians not marked `skip`. NaN counts as
 /// infinitely wrong.
 fn rel_err(gpu: &[f32], cpu: &[f64], k: usize, skip: &[bool]) -> f64 {
-    assert_eq!(gpu.len(), cpu.len());
+    assert_eq!(
+        gpu.len(),
+        cpu.len(),
+        "the GPU and CPU gradients differ in length"
+    );
     let scale = cpu.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mut worst = 0.0f64;
     for (j, (a, b)) in gpu.iter().zip(cpu).enumerate() {

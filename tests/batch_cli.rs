@@ -2,6 +2,10 @@
 //! worker after its current scene and a rerun does only what is left; `batch --status`; a bad
 //! manifest line refused in one line; `generate --stage scene` names missing objects; the
 //! Kubernetes job file validates against the Kubernetes schemas offline.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::batch::index::{self, Status};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};

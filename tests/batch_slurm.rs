@@ -4,6 +4,10 @@
 //! every scene byte for byte as a serial `generate`; a task cancelled mid-run and requeued
 //! completes only its missing scenes; object shards plus the dependent scene step give the same
 //! scene as one `generate`. Skipped, saying why, where Slurm is not installed.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::batch::index::{self, Status};
 use dreamscene::batch::shard::shard_of;
 use std::collections::BTreeMap;

@@ -3,6 +3,10 @@
 //! tokenise → text encoder → UNet with CFG → MTS → decoded target chain, and the analytic prior,
 //! whose exact noise prediction lets the guidance be checked to converge to a known target.
 //! These tests need the ONNX Runtime library (scripts/setup.sh installs it); without it they fail.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::diffusion::guidance::{
     code_schedule, ism_gradient, mts_gradient, paper_schedule, pseudo_gt, sds_gradient, Cond,
     MtsRule, MtsSettings, NoisePredictor, OBJECT_MTS,

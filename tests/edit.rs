@@ -4,8 +4,12 @@
 //! its Gaussians out; with the oracle prior the floor where a removed object stood is
 //! re-optimised to the reference, and restyling moves an object to a second reference with the
 //! rest of the scene unchanged bit for bit.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
-#[allow(dead_code)]
+#[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
 use dreamscene::camera::object::{orbit_camera, ObjectFrame};
 use dreamscene::camera::{write_cameras, Camera};
@@ -136,7 +140,7 @@ fn instance(dir: &Path, id: &str) -> dreamscene::scene::dir::SceneObject {
 /// The test's own placement (uniform positive scale, SH degree 0): means by Rz·s·p + t,
 /// rotations by the yaw quaternion, log-scales shifted by ln s.
 fn place_here(g: &Gaussians, yaw: f64, s: f64, t: [f64; 3]) -> Gaussians {
-    assert_eq!(g.sh_degree, 0);
+    assert_eq!(g.sh_degree, 0, "the fixture is SH degree 0");
     let (sn, cs) = yaw.to_radians().sin_cos();
     let (hs, hc) = (0.5 * yaw.to_radians()).sin_cos();
     let mut out = g.clone();

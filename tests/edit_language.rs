@@ -3,6 +3,10 @@
 //! keyframes of written motions at chosen times, the timeline that `compose_at` plays, and the
 //! shape prior's restyle (recolouring).
 //! Host-only (no device).
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::edit::animate::{animate, final_pose, keyframes};
 use dreamscene::edit::parse::{parse, Step, DEFAULT_DISTANCE, SMALL_DISTANCE};
 use dreamscene::edit::SceneState;

@@ -8,6 +8,10 @@
 //! The fixture is a draft of "a small bedroom" (or of `DREAMSCENE_ENGINE_PROMPT`, which
 //! `scripts/engine_export_prompts.sh` sets to run these checks over many prompts) with, indoors,
 //! a door and a window added to scene.json as ARCHITECTURE.md's `openings` say.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::splat::ply::read_ply_labelled;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -15,7 +19,7 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 mod common;
-#[allow(dead_code)]
+#[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
 use export_support::{export_ok, node_dir, require_readers};
 

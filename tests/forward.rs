@@ -1,4 +1,8 @@
 //! GPU forward pass against the f64 CPU reference on random scenes and edge cases.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::Camera;
 use dreamscene::splat::raster::{BlendWidth, Rasterizer, RenderOutput};
@@ -29,7 +33,11 @@ fn compare(gpu: &RenderOutput, cpu: &RefImage, g: &Gaussians, cam: &Camera) -> (
         "{skipped} of {} pixels near a cutoff",
         skip.len()
     );
-    assert_eq!(gpu.color.len(), cpu.color.len());
+    assert_eq!(
+        gpu.color.len(),
+        cpu.color.len(),
+        "the GPU and CPU images differ in size"
+    );
     // A NaN difference (e.g. an output the kernel never wrote) counts as infinitely wrong;
     // f64::max alone would skip it.
     let worst = |m: f64, d: f64| if d.is_nan() { f64::INFINITY } else { m.max(d) };

@@ -1,6 +1,10 @@
 //! Object generation against the oracle prior: a random multi-coloured reference object is
 //! recovered from a ball, checked on views never used in training; filtering's share and cost;
 //! the other guidance rules through the same loop.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::object::{orbit_camera, ObjectFrame};
 use dreamscene::camera::Camera;

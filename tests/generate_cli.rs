@@ -2,6 +2,10 @@
 //! (objects inside their layout boxes, the environment around the room, scene.ply the sum of
 //! its parts, scene.json by the contract, renders that show something), the optimising prior
 //! refused without models, and --resume.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::plan::spec::{Layout, SceneType};
 use dreamscene::scene::compose::transform;
 use dreamscene::scene::dir::read_scene;
@@ -50,8 +54,8 @@ fn generate(prompt: &str, out: &Path, extra: &[&str]) -> Output {
 fn check_draft(out: &Path, prompt: &str) {
     // scene.json: typed, and the contract's keys.
     let scene = read_scene(out).expect("scene.json reads");
-    assert_eq!(scene.prompt, prompt);
-    assert_eq!(scene.prior.kind, "shape");
+    assert_eq!(scene.prompt, prompt, "scene.json keeps the prompt");
+    assert_eq!(scene.prior.kind, "shape", "the scene names the shape prior");
     let j = json(&out.join("scene.json"));
     for k in [
         "version",
@@ -67,9 +71,12 @@ fn check_draft(out: &Path, prompt: &str) {
     ] {
         assert!(j.get(k).is_some(), "scene.json lacks {k}: {j}");
     }
-    assert_eq!(j["version"], 1);
-    assert!(j["timeline"].is_null());
-    assert!(j["prior"]["models"].is_null());
+    assert_eq!(j["version"], 1, "scene.json version");
+    assert!(j["timeline"].is_null(), "a still scene has no timeline");
+    assert!(
+        j["prior"]["models"].is_null(),
+        "the shape prior names no models"
+    );
     for o in j["objects"].as_array().unwrap() {
         for k in ["id", "category", "ply", "position", "yaw", "scale"] {
             assert!(o.get(k).is_some(), "object lacks {k}: {o}");
@@ -85,7 +92,8 @@ fn check_draft(out: &Path, prompt: &str) {
         vec![
             ("objects".to_string(), true),
             ("environment".to_string(), true)
-        ]
+        ],
+        "both stages are done"
     );
     for f in [
         "spec.json",
@@ -95,12 +103,16 @@ fn check_draft(out: &Path, prompt: &str) {
     ] {
         assert!(out.join(f).is_file(), "{f} missing");
     }
-    assert!(out.join("checkpoints").is_dir());
+    assert!(out.join("checkpoints").is_dir(), "checkpoints/ is kept");
 
     // Every instance's Gaussians inside its layout box (shape prior centres within 1 cm).
     let layout: Layout =
         serde_json::from_str(&std::fs::read_to_string(out.join("layout.json")).unwrap()).unwrap();
-    assert_eq!(layout.objects.len(), scene.objects.len());
+    assert_eq!(
+        layout.objects.len(),
+        scene.objects.len(),
+        "every scene object has a layout box"
+    );
     let boxes: HashMap<&str, _> = layout.objects.iter().map(|o| (o.id.as_str(), o)).collect();
     let mut total = 0usize;
     let mut plys = HashMap::new();
@@ -172,7 +184,11 @@ fn check_draft(out: &Path, prompt: &str) {
 
     // scene.ply: every instance plus the environment.
     let all = read_ply(&out.join("scene.ply")).expect("scene.ply");
-    assert_eq!(all.len(), total + env.len());
+    assert_eq!(
+        all.len(),
+        total + env.len(),
+        "scene.ply holds every instance and the environment"
+    );
 
     // Renders show something; overview.png is their contact sheet.
     assert!(out.join("renders/overview.png").is_file(), "overview.png");
@@ -182,7 +198,7 @@ fn check_draft(out: &Path, prompt: &str) {
         // Every view (the contact sheet is wider).
         if p.extension().is_some_and(|x| x == "png") && !p.ends_with("overview.png") {
             let img = image::open(&p).unwrap().to_rgb8();
-            assert_eq!(img.width(), 64);
+            assert_eq!(img.width(), 64, "renders are 64 px wide");
             let first = img.get_pixel(0, 0);
             assert!(
                 img.pixels().any(|q| q != first),
@@ -198,7 +214,7 @@ fn check_draft(out: &Path, prompt: &str) {
             n += 1;
         }
     }
-    assert_eq!(n, 2);
+    assert_eq!(n, 2, "two views");
 }
 
 #[test]

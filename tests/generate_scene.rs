@@ -2,6 +2,10 @@
 //! checkered room) is regenerated from its own layout through the object pipeline and the three
 //! environment stages, starting from draft colours; views from inside the room that training
 //! never used must reach 22 dB. Killed mid-stage, `--resume` finishes the run.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::scene::{explore_path, SceneBox};
 use dreamscene::generate::scene::write_draft_scene;

@@ -1,6 +1,10 @@
 //! Input files as common tools write them, and malformed ones: PLY encodings and property types,
 //! non-finite values, hostile headers, cameras.json names and rotations, files of the wrong kind.
 //! No device needed.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 #[path = "inputs/props.rs"]
 mod props;

@@ -1,5 +1,9 @@
 //! The LLM planner against a local HTTP server on loopback that replays recorded answers, good
 //! and malformed. No network.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::plan::llm::{parse_loose_json, plan_llm, LlmConfig};
 use dreamscene::plan::spec::{Anchor, RelationKind};
 use std::sync::{Arc, Mutex};

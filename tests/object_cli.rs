@@ -1,5 +1,9 @@
 //! `dreamscene object` through the binary: the shape-prior draft, bad input, the oracle prior
 //! killed mid-run and resumed, and the tiny Stable Diffusion model end to end.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::splat::loss::psnr;
 use dreamscene::splat::ply::read_ply;

@@ -2,6 +2,10 @@
 //! disk leaves no temporary file and names the path; `render` creates img_name sub-directories,
 //! refuses bad input before writing and says what it wrote; `fit` checks it can write before it
 //! starts, prints progress off a terminal and a summary; `doctor` gives a verdict per component.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::splat::ply::write_ply;

@@ -1,5 +1,9 @@
 //! The offline planner on free text: scene types and synonyms, named objects with counts and
 //! adjectives, room sizes, placement phrases, style words; and layouts of the planned specs.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::plan::check::{anchor_holds, relation_holds, validity_problems};
 use dreamscene::plan::gcp::{layout, LayoutOptions, INDOOR_OCCUPANCY};
 use dreamscene::plan::offline::{parse_room_size, plan_offline};

@@ -1,4 +1,8 @@
 //! The filtering score on the GPU (native and compare-and-swap atomics) against the CPU reference.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::camera::Camera;
 use dreamscene::gpu::Buffer;

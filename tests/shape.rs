@@ -1,6 +1,10 @@
 //! Procedural shape priors: every knowledge-base category builds inside its box, rests on the
 //! floor, faces +y, covers its silhouette without holes, takes colours from words, and is
 //! deterministic per seed. Host-only.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{
     archetype_names, archetype_of, build, colour_words, parts, parts::convex_hull,

@@ -1,4 +1,8 @@
 //! GPU scan and radix sort against CPU references, on random inputs and edge sizes.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use dreamscene::gpu::{Buffer, Stream};
 use dreamscene::splat::scan::{Scan, ScanScratch};

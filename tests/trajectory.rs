@@ -3,6 +3,10 @@
 //! against the objects' own points, placed by an independent transform), the orbit looks at
 //! the room centre, a single PLY's orbit frames the cloud, a cameras.json is resized with its
 //! focal lengths, and an outdoor loop is a circle.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::export::trajectory::{cameras, open_input, Size, Subject, Trajectory};
 use dreamscene::splat::ply::write_ply;

@@ -3,6 +3,10 @@
 //! that differ along the path, the decoded first frame against the engine's own PNG of the same
 //! camera, the depth video beside, the GIF, and one-line errors on bad input. The frame loop's
 //! time-indexed source (the hook for 4D timelines) is driven directly.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 
 use dreamscene::camera::Camera;
@@ -155,7 +159,7 @@ fn decode(path: &Path, w: u32, h: u32) -> Vec<Vec<u8>> {
         .expect("ffmpeg runs");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let frame = (w * h * 3) as usize;
-    assert_eq!(o.stdout.len() % frame, 0);
+    assert_eq!(o.stdout.len() % frame, 0, "stdout holds whole frames");
     o.stdout.chunks(frame).map(|c| c.to_vec()).collect()
 }
 

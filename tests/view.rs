@@ -5,6 +5,10 @@
 //! busy port and a viewer without its npm packages are one-line errors, and SIGINT (Ctrl-C)
 //! stops the server with exit status 0. The screenshot script fails if the page asks for any URL
 //! outside the server under test.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 mod common;
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -40,7 +44,7 @@ fn serve(ply: &Path, port: &str) -> (Child, String) {
 fn interrupt(child: &mut Child) -> std::process::ExitStatus {
     // SAFETY: kill(2) on the pid of a child this test started and has not reaped.
     let r = unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
-    assert_eq!(r, 0);
+    assert_eq!(r, 0, "kill(SIGINT) succeeded");
     child.wait().unwrap()
 }
 

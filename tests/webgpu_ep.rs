@@ -45,7 +45,7 @@ fn webgpu_matches_cpu_on_every_tiny_export() {
 }
 
 fn max_rel(a: &[f32], b: &[f32]) -> f64 {
-    assert_eq!(a.len(), b.len());
+    assert_eq!(a.len(), b.len(), "the outputs differ in length");
     let scale = b.iter().fold(1e-6f64, |m, v| m.max(v.abs() as f64));
     a.iter()
         .zip(b)

@@ -94,7 +94,10 @@ fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// A camera at spherical coordinates around the frame's centre, square `res`, horizontal field of
 /// view `fov`; `jitter` adds the authors' pose noise (centre ±0.025, target σ 0.05, up σ 0.01,
 /// all at the object's scale).
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the authors' orbit parameters, one argument each"
+)]
 pub fn orbit_camera(
     frame: &ObjectFrame,
     radius: f64,

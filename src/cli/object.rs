@@ -312,7 +312,10 @@ pub fn write_turntable(
 }
 
 /// The object settings from the CLI's numbers.
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "one argument per CLI number, in the order of the flags"
+)]
 pub fn config(
     iterations: u32,
     resolution: u32,

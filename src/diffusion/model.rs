@@ -556,10 +556,11 @@ impl Conditioning {
             prompts.push(e);
         }
         let mut e = sd.encode_text(&prompts)?;
-        let edit = (e.len() == 4).then(|| e.pop().unwrap());
-        let null = e.pop().unwrap();
-        let negative = e.pop().unwrap();
-        let positive = e.pop().unwrap();
+        let short = || "the text encoder returned fewer embeddings than prompts".to_string();
+        let edit = if e.len() == 4 { e.pop() } else { None };
+        let null = e.pop().ok_or_else(short)?;
+        let negative = e.pop().ok_or_else(short)?;
+        let positive = e.pop().ok_or_else(short)?;
         Ok(Conditioning {
             positive,
             negative,

@@ -12,7 +12,7 @@ use regex::Regex;
 use serde_json::Value;
 use std::collections::HashMap;
 use std::path::Path;
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// A loaded CLIP tokenizer.
 pub struct ClipTokenizer {
@@ -36,12 +36,12 @@ fn byte_chars() -> Vec<char> {
         .collect();
     let mut map = vec!['\0'; 256];
     for &b in &printable {
-        map[b as usize] = char::from_u32(b).unwrap();
+        map[b as usize] = char::from_u32(b).expect("Latin-1 code points are chars");
     }
     let mut n = 0;
     for b in 0..256u32 {
         if !printable.contains(&b) {
-            map[b as usize] = char::from_u32(256 + n).unwrap();
+            map[b as usize] = char::from_u32(256 + n).expect("code points below 512 are chars");
             n += 1;
         }
     }
@@ -67,7 +67,8 @@ fn html_unescape(s: &str) -> String {
     }
     static ENTITY: OnceLock<Regex> = OnceLock::new();
     let re = ENTITY.get_or_init(|| {
-        Regex::new(r"&(#[0-9]+|#[xX][0-9a-fA-F]+|amp|lt|gt|quot|apos|nbsp);").unwrap()
+        Regex::new(r"&(#[0-9]+|#[xX][0-9a-fA-F]+|amp|lt|gt|quot|apos|nbsp);")
+            .expect("the entity pattern is a valid regex")
     });
     re.replace_all(s, |c: &regex::Captures| {
         let e = &c[1];
@@ -162,7 +163,7 @@ impl ClipTokenizer {
         let pattern = Regex::new(
             r"(?i)<\|startoftext\|>|<\|endoftext\|>|'s|'t|'re|'ve|'m|'ll|'d|\p{L}+|\p{N}|[^\s\p{L}\p{N}]+",
         )
-        .unwrap();
+        .expect("the pre-tokeniser pattern is a valid regex");
         Ok(ClipTokenizer {
             vocab: raw,
             ranks,
@@ -179,7 +180,12 @@ impl ClipTokenizer {
 
     /// The BPE tokens of one pre-tokenised word (already in the byte alphabet).
     fn bpe(&self, word: &str) -> Vec<i64> {
-        if let Some(ids) = self.cache.lock().unwrap().get(word) {
+        if let Some(ids) = self
+            .cache
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .get(word)
+        {
             return ids.clone();
         }
         let chars: Vec<char> = word.chars().collect();
@@ -216,7 +222,7 @@ impl ClipTokenizer {
             .collect();
         self.cache
             .lock()
-            .unwrap()
+            .unwrap_or_else(PoisonError::into_inner)
             .insert(word.to_string(), ids.clone());
         ids
     }

@@ -494,7 +494,10 @@ pub fn formation_iteration(
 }
 
 /// The formation range with the run's length as its period (T_end reaches its floor at the end).
-#[allow(non_snake_case)]
+#[allow(
+    non_snake_case,
+    reason = "named like the authors' OBJECT_MTS constant it replaces"
+)]
 fn OBJECT_MTS_FOR(cfg: &ObjectConfig) -> MtsRange {
     MtsRange {
         period: cfg.iterations.max(1),

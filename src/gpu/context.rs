@@ -275,7 +275,10 @@ impl Context {
                 })
                 .map_err(|e| GpuError::NoDevice(format!("gpu-allocator: {e}")))?;
                 let mut info = info;
-                debug_assert_eq!(info.float_atomics, float_atomics);
+                debug_assert_eq!(
+                    info.float_atomics, float_atomics,
+                    "the device info and the enabled features disagree on float atomics"
+                );
                 info.validation = validation;
                 if let Some(n) = min_subgroup {
                     info.min_subgroup_size = info.min_subgroup_size.min(n.max(1));

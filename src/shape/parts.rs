@@ -258,7 +258,10 @@ impl Primitive {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the revolved surface is named by its parameters; a struct would only rename them"
+)]
 fn sample_revolved(
     origin: V3,
     rot: &M3,

@@ -20,7 +20,10 @@ struct AdamPush {
     bc1: f32,
     bc2: f32,
 }
-const _: () = assert!(std::mem::size_of::<AdamPush>() == kernels::ADAM.push_size as usize);
+const _: () = assert!(
+    std::mem::size_of::<AdamPush>() == kernels::ADAM.push_size as usize,
+    "the Rust push constants differ in size from adam.comp's"
+);
 
 /// Adam hyper-parameters shared by all arrays (3DGS uses these).
 #[derive(Debug, Clone, Copy)]
@@ -204,7 +207,10 @@ impl Adam {
 }
 
 /// One Adam step in f64 on the host: the reference the kernel is tested against.
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the kernel's push constants, one argument each, as in the kernel"
+)]
 pub fn adam_step_reference(
     param: &mut [f64],
     grad: &[f64],

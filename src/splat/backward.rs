@@ -30,10 +30,13 @@ struct ProjectBackwardPush {
     sh_degree: u32,
     pad: [u32; 2],
 }
-const _: () =
-    assert!(std::mem::size_of::<BlendBackwardPush>() == kernels::BLEND_BACKWARD.push_size as usize);
 const _: () = assert!(
-    std::mem::size_of::<ProjectBackwardPush>() == kernels::PROJECT_BACKWARD.push_size as usize
+    std::mem::size_of::<BlendBackwardPush>() == kernels::BLEND_BACKWARD.push_size as usize,
+    "the Rust push constants differ in size from blend_backward.comp's"
+);
+const _: () = assert!(
+    std::mem::size_of::<ProjectBackwardPush>() == kernels::PROJECT_BACKWARD.push_size as usize,
+    "the Rust push constants differ in size from project_backward.comp's"
 );
 
 /// Gradient buffers for a cloud, laid out as [`GpuGaussians`], plus the screen-space gradients
@@ -151,7 +154,10 @@ impl Backward {
     /// Records the backward of `frame` (rendered from `g` and `cam`) for the per-pixel colour
     /// gradient `dl_dcolor` (`[f32; 4]` per pixel, rgb used), adding to `grads`. `state` is
     /// per-pixel scratch (16 bytes a pixel).
-    #[allow(clippy::too_many_arguments)]
+    #[allow(
+        clippy::too_many_arguments,
+        reason = "the kernel's buffers and sizes, one argument each"
+    )]
     pub fn record(
         &self,
         s: &mut Stream,

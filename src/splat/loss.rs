@@ -121,8 +121,8 @@ pub fn l1_dssim(
     h: usize,
     lambda: f64,
 ) -> (f64, Vec<[f32; 4]>) {
-    assert_eq!(render.len(), w * h);
-    assert_eq!(target.len(), w * h);
+    assert_eq!(render.len(), w * h, "the render is not w x h");
+    assert_eq!(target.len(), w * h, "the target is not w x h");
     let n3 = (3 * w * h) as f64;
     let (cr, ct) = (channels(render), channels(target));
     let mut l1 = 0.0;

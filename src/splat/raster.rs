@@ -71,11 +71,26 @@ struct BlendPush {
     seg_begin: u32,
     first: u32,
 }
-const _: () = assert!(std::mem::size_of::<ProjectPush>() == kernels::PROJECT.push_size as usize);
-const _: () = assert!(std::mem::size_of::<EmitPush>() == kernels::EMIT.push_size as usize);
-const _: () = assert!(std::mem::size_of::<BlendPush>() == kernels::BLEND.push_size as usize);
-const _: () = assert!(8 == kernels::TILE_RANGES.push_size as usize);
-const _: () = assert!(4 == kernels::GATHER_COUNTS.push_size as usize);
+const _: () = assert!(
+    std::mem::size_of::<ProjectPush>() == kernels::PROJECT.push_size as usize,
+    "the Rust push constants differ in size from project.comp's"
+);
+const _: () = assert!(
+    std::mem::size_of::<EmitPush>() == kernels::EMIT.push_size as usize,
+    "the Rust push constants differ in size from emit.comp's"
+);
+const _: () = assert!(
+    std::mem::size_of::<BlendPush>() == kernels::BLEND.push_size as usize,
+    "the Rust push constants differ in size from blend.comp's"
+);
+const _: () = assert!(
+    8 == kernels::TILE_RANGES.push_size as usize,
+    "the Rust push constants differ in size from tile_ranges.comp's"
+);
+const _: () = assert!(
+    4 == kernels::GATHER_COUNTS.push_size as usize,
+    "the Rust push constants differ in size from gather_counts.comp's"
+);
 
 /// Gaussian parameters on the device.
 pub struct GpuGaussians {

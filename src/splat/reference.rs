@@ -6,7 +6,10 @@
 //! alpha = min(0.99, o * exp(power)), skipped below 1/255, stop before T < 1e-4.
 
 // `!(x > 0.0)` is deliberate throughout: it is also true for NaN, which must cull.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
+#![allow(
+    clippy::neg_cmp_op_on_partial_ord,
+    reason = "`!(x > 0.0)` is also true for NaN, which must cull"
+)]
 use super::cloud::{Gaussians, SH_C0};
 use crate::camera::Camera;
 use crate::gpu::kernels as k;

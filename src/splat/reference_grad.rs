@@ -7,7 +7,10 @@
 //! ([`Grad2d`]: centre, conic, opacity, colour), summed over pixels; the projection backward
 //! carries it to means, log-scales, quaternions, opacity logits and SH coefficients.
 // Index loops mirror the maths (and the GLSL) more plainly than iterator chains here.
-#![allow(clippy::needless_range_loop)]
+#![allow(
+    clippy::needless_range_loop,
+    reason = "index loops mirror the maths and the GLSL"
+)]
 use super::cloud::Gaussians;
 use super::reference::{self as r, Cutoffs, Projected};
 use crate::camera::Camera;

@@ -25,7 +25,10 @@ struct ScorePush {
     first: u32,
     mode: u32,
 }
-const _: () = assert!(std::mem::size_of::<ScorePush>() == kernels::SCORE.push_size as usize);
+const _: () = assert!(
+    std::mem::size_of::<ScorePush>() == kernels::SCORE.push_size as usize,
+    "the Rust push constants differ in size from score.comp's"
+);
 
 /// The score kernel (native float atomics, or the compare-and-swap variant).
 pub struct Scorer {

@@ -411,7 +411,10 @@ impl Trainer {
     /// Clones small Gaussians and splits large ones whose mean NDC centre gradient exceeds the
     /// threshold; prunes transparent ones (and, after the first opacity reset, those too large
     /// on screen or in the world). Adam moments follow their Gaussians; new ones start at zero.
-    #[allow(clippy::needless_range_loop)]
+    #[allow(
+        clippy::needless_range_loop,
+        reason = "one index walks several parallel arrays"
+    )]
     pub fn densify_and_prune(&mut self, prune_big: bool) -> Result<()> {
         let c = self.config.clone();
         let g = self.gaussians.download()?;
@@ -683,7 +686,13 @@ impl Trainer {
                 }
             ));
         }
-        let word = |i: usize| u32::from_le_bytes(data[8 + 4 * i..12 + 4 * i].try_into().unwrap());
+        let word = |i: usize| {
+            u32::from_le_bytes(
+                data[8 + 4 * i..12 + 4 * i]
+                    .try_into()
+                    .expect("a 4-byte slice"),
+            )
+        };
         let (iteration, step, n, sh) = (word(0), word(1), word(2), word(3));
         if n != self.gaussians.n || sh != self.gaussians.sh_degree {
             return Err(format!(
@@ -692,7 +701,7 @@ impl Trainer {
                 self.gaussians.n, self.gaussians.sh_degree
             ));
         }
-        let stored = u64::from_le_bytes(data[24..32].try_into().unwrap());
+        let stored = u64::from_le_bytes(data[24..32].try_into().expect("an 8-byte slice"));
         let g = self.gaussians().map_err(|e| format!("{shown}: {e}"))?;
         if stored != fingerprint(&g) {
             return Err(format!(
@@ -708,8 +717,8 @@ impl Trainer {
             at += len;
             Ok(b)
         };
-        let word_pos = u128::from_le_bytes(take(16)?.try_into().unwrap());
-        let n_order = u32::from_le_bytes(take(4)?.try_into().unwrap()) as usize;
+        let word_pos = u128::from_le_bytes(take(16)?.try_into().expect("take gives 16 bytes"));
+        let n_order = u32::from_le_bytes(take(4)?.try_into().expect("take gives 4 bytes")) as usize;
         if n_order > self.views.len() {
             return Err(format!(
                 "{shown}: {n_order} pending views, the fit has {}",
@@ -725,13 +734,13 @@ impl Trainer {
         }
         let mut arrays: Vec<Vec<f32>> = vec![];
         for _ in 0..10 {
-            let len = u64::from_le_bytes(take(8)?.try_into().unwrap()) as usize;
+            let len = u64::from_le_bytes(take(8)?.try_into().expect("take gives 8 bytes")) as usize;
             if len > (data.len() / 4) {
                 return Err(format!("{shown}: truncated"));
             }
             arrays.push(bytemuck::pod_collect_to_vec(take(len * 4)?));
         }
-        let total = u32::from_le_bytes(take(4)?.try_into().unwrap());
+        let total = u32::from_le_bytes(take(4)?.try_into().expect("take gives 4 bytes"));
         if total != self.config.iterations {
             return Err(format!(
                 "{shown}: the interrupted fit was for {total} iterations, this one asks for {}; \

@@ -1,5 +1,9 @@
 //! Helpers shared by the GPU tests.
-#![allow(dead_code)]
+#![allow(dead_code, reason = "each test crate uses some of the shared helpers")]
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::gpu::Context;
 use rand::{Rng, SeedableRng};
 

@@ -1,6 +1,10 @@
 //! The export tests' harness: the binary, the independent readers (failing, never skipping,
 //! when one is missing), a test cloud in every format's range, and the maths the checks need,
 //! written from the formats' definitions rather than taken from the code under test.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::splat::Gaussians;
 use rand::Rng;
 use serde_json::Value;

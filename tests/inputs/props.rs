@@ -109,10 +109,16 @@ fn check_ply(bytes: &[u8]) {
             let values = values
                 .chain(g.rotations.iter().flatten())
                 .chain(&g.opacities);
-            assert!(values.chain(&g.sh).all(|v| v.is_finite()));
-            assert!(g.rotations.iter().all(|q| q.iter().any(|v| *v != 0.0)));
+            assert!(
+                values.chain(&g.sh).all(|v| v.is_finite()),
+                "an accepted cloud has finite values"
+            );
+            assert!(
+                g.rotations.iter().all(|q| q.iter().any(|v| *v != 0.0)),
+                "an accepted cloud has no zero quaternion"
+            );
             if invalid == Invalid::Refuse {
-                assert_eq!(r.dropped, 0);
+                assert_eq!(r.dropped, 0, "refusing mode drops nothing");
             }
         }
     }
