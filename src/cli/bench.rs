@@ -19,8 +19,9 @@ pub struct Args {
     /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
     #[arg(long, env = "DREAMSCENE_MODELS")]
     pub models: Option<PathBuf>,
-    /// ONNX Runtime execution provider for --unet.
-    #[arg(long, value_enum, default_value_t = Provider::Cpu)]
+    /// ONNX Runtime execution provider for --unet and --generate --prior sd (auto: a GPU
+    /// provider on a real GPU, else the CPU).
+    #[arg(long, value_enum, default_value_t = Provider::Auto)]
     pub provider: Provider,
     /// Latent size for --unet, as HxW (default: what the model declares, else 64x64).
     #[arg(long, value_parser = super::parse_hw)]

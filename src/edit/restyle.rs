@@ -153,7 +153,7 @@ pub fn restyle(
                         }
                         ScenePrior::Sd(m) => {
                             let before = format!("A DSLR photo of a {}", o.category);
-                            Box::new(open_sd(&m, &before, Some(description))?)
+                            Box::new(open_sd(&m, &before, Some(description), cfg)?)
                         }
                         ScenePrior::Shape => unreachable!("matched above"),
                     };
