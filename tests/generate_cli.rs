@@ -363,7 +363,10 @@ fn generate_with_the_tiny_sd_model_runs_every_stage() {
             "cuda",
         ]);
         let err = String::from_utf8_lossy(&o.stderr);
-        assert!(!o.status.success() && err.contains("no CUDA provider"), "{err}");
+        assert!(
+            !o.status.success() && err.contains("no CUDA provider"),
+            "{err}"
+        );
         assert_eq!(std::fs::read(out.join("scene.json")).unwrap(), before);
         let other = tmp("sdcuda");
         let o = run(&[
@@ -377,7 +380,10 @@ fn generate_with_the_tiny_sd_model_runs_every_stage() {
             "cuda",
         ]);
         let err = String::from_utf8_lossy(&o.stderr);
-        assert!(!o.status.success() && err.contains("no CUDA provider"), "{err}");
+        assert!(
+            !o.status.success() && err.contains("no CUDA provider"),
+            "{err}"
+        );
         assert_eq!(err.trim().lines().count(), 1, "{err}");
         let _ = std::fs::remove_dir_all(&other);
     }

@@ -82,6 +82,8 @@ pub struct StableDiffusion {
     probed: Vec<((usize, usize), usize)>,
     /// The most items one UNet run takes (the probe's split), none when unlimited.
     max_batch: Option<usize>,
+    /// A cap on the items of one UNet run set by the caller ([`Self::set_unet_max_batch`]).
+    cap: Option<usize>,
     times: ModelTimes,
 }
 
@@ -291,6 +293,7 @@ impl StableDiffusion {
             opts: *opts,
             probed: vec![],
             max_batch: None,
+            cap: None,
             times: ModelTimes::default(),
         })
     }
@@ -309,7 +312,7 @@ impl StableDiffusion {
     /// prompts runs the views of an iteration one by one, as before they were batched (for
     /// benchmarks and tests; the results are the same).
     pub fn set_unet_max_batch(&mut self, most: Option<usize>) {
-        self.max_batch = most.map(|m| m.max(1));
+        self.cap = most.map(|m| m.max(1));
     }
 
     /// The time spent in each model since the last call, and resets it.
@@ -355,7 +358,9 @@ impl StableDiffusion {
                     provider: Provider::Cpu,
                     ..self.opts
                 };
+                let (cap, times) = (self.cap, self.times);
                 *self = StableDiffusion::open(&self.dir, &cpu)?;
+                (self.cap, self.times) = (cap, times);
             }
         }
         self.probed.push((hw, batch));
@@ -450,7 +455,13 @@ impl StableDiffusion {
             ));
         }
         self.probe_provider(hw, b)?;
-        if let Some(m) = self.max_batch.filter(|m| *m < b) {
+        if let Some(m) = self
+            .max_batch
+            .into_iter()
+            .chain(self.cap)
+            .min()
+            .filter(|m| *m < b)
+        {
             let mut out = Vec::with_capacity(b);
             for (s, c) in samples.chunks(m).zip(conds.chunks(m)) {
                 out.extend(self.unet_batch(s, hw, t, c)?);

@@ -16,7 +16,9 @@ use super::guidance::{
     pseudo_gts, sds_gradients, EachView, MtsRange, MtsRule, MtsSettings, NoisePredictor,
     ViewsPredictor,
 };
-use super::model::{chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetViews};
+use super::model::{
+    chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetViews,
+};
 use super::schedule::Schedule;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -54,6 +56,10 @@ pub enum Rule {
         xs_steps: u32,
     },
 }
+
+/// One view's latent target: the guided latent, the timesteps sampled and the RMS of the
+/// latent gradient (0 for pseudo-ground truth).
+pub type LatentTarget = (Vec<f32>, Vec<u32>, f64);
 
 /// One iteration's image target.
 #[derive(Debug, Clone)]
@@ -112,7 +118,7 @@ impl Guide {
         sched: &Schedule,
         z: &[f32],
         step: u32,
-    ) -> Result<(Vec<f32>, Vec<u32>, f64), String> {
+    ) -> Result<LatentTarget, String> {
         self.latent_targets(&mut EachView(p), sched, &[z], step)?
             .pop()
             .ok_or_else(|| "no view".to_string())
@@ -129,7 +135,7 @@ impl Guide {
         sched: &Schedule,
         zs: &[&[f32]],
         step: u32,
-    ) -> Result<Vec<(Vec<f32>, Vec<u32>, f64)>, String> {
+    ) -> Result<Vec<LatentTarget>, String> {
         if zs.is_empty() {
             return Ok(vec![]);
         }

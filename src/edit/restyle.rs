@@ -74,7 +74,9 @@ impl Prior for EditOracle {
         // second reference, so the edit stops exactly there.
         let mut targets = Vec::with_capacity(views.len());
         for v in views {
-            targets.push(to_latent(&self.inner.reference_view(v.camera, v.background)?));
+            targets.push(to_latent(
+                &self.inner.reference_view(v.camera, v.background)?,
+            ));
         }
         let current: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
         let mut p = PerView(

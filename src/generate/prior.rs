@@ -197,7 +197,11 @@ impl Prior for OraclePrior {
         let mut refs = Vec::with_capacity(views.len());
         let mut edits = Vec::with_capacity(views.len());
         for v in views {
-            refs.push(to_latent(&self.render(&self.reference, v.camera, v.background)?));
+            refs.push(to_latent(&self.render(
+                &self.reference,
+                v.camera,
+                v.background,
+            )?));
             if let Some(e) = &self.edit {
                 edits.push(to_latent(&self.render(e, v.camera, v.background)?));
             }

@@ -168,6 +168,9 @@ pub fn guided_iteration(
     Ok(report)
 }
 
+/// An image target, row-major like its render.
+type Target = Vec<[f32; 3]>;
+
 /// Renders `views` with `t` (their GPU times added to `kernels`) and asks `prior` for all their
 /// targets at `step` in one call (its wall time added to `prior_seconds`): the setup that the
 /// guided iteration and the pseudo-ground-truth pass share.
@@ -179,7 +182,7 @@ fn render_and_ask(
     step: u32,
     kernels: &mut Timings,
     prior_seconds: &mut f64,
-) -> Result<(Vec<BatchView>, Vec<Vec<[f32; 3]>>), GenError> {
+) -> Result<(Vec<BatchView>, Vec<Target>), GenError> {
     let mut batch = Vec::with_capacity(views.len());
     for v in views {
         let bv = t.render_view(&v.camera, v.background)?;
@@ -248,8 +251,15 @@ pub fn pseudo_ground_truth(
     let mut out = Vec::with_capacity(views.len());
     let (mut kernels, mut seconds) = (Timings::default(), 0.0);
     for chunk in views.chunks(batch.max(1)) {
-        let (rendered, targets) =
-            render_and_ask(&mut maker, prior, guide, chunk, 0, &mut kernels, &mut seconds)?;
+        let (rendered, targets) = render_and_ask(
+            &mut maker,
+            prior,
+            guide,
+            chunk,
+            0,
+            &mut kernels,
+            &mut seconds,
+        )?;
         for (v, pixels) in chunk.iter().zip(targets) {
             out.push(View {
                 camera: v.camera.clone(),
