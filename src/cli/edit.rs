@@ -37,6 +37,10 @@ pub struct Args {
     /// When another command is writing the scene, exit at once naming it instead of waiting.
     #[arg(long, global = true)]
     no_wait: bool,
+    /// ONNX Runtime provider of an sd prior's models (auto: a GPU provider on a real GPU, else
+    /// the CPU).
+    #[arg(long, global = true, value_enum, default_value = "auto")]
+    provider: dreamscene::diffusion::runtime::Provider,
 }
 
 #[derive(clap::Subcommand)]
@@ -167,6 +171,7 @@ pub fn run(a: Args) -> Result<()> {
         iterations: a.iterations,
         resolution: a.resolution,
         seed: state.scene.seed,
+        provider: a.provider,
     };
     if !a.resolution.is_multiple_of(8) || a.resolution < 16 {
         bail!(
