@@ -15,6 +15,7 @@
 mod appliances;
 mod archetypes;
 mod cases;
+mod frames;
 pub mod functions;
 mod furniture;
 pub mod materials;
