@@ -416,8 +416,11 @@ pub fn light_draft<'a>(
     crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &boxes, &openings);
 }
 
+/// An axis-aligned box as its corners `(lo, hi)`.
+pub type Bounds = ([f64; 3], [f64; 3]);
+
 /// The bounds `(lo, hi)` of an object-frame cloud; `None` when it is empty.
-pub fn object_bounds(g: &Gaussians) -> Option<([f64; 3], [f64; 3])> {
+pub fn object_bounds(g: &Gaussians) -> Option<Bounds> {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for m in &g.means {
         for k in 0..3 {
@@ -432,7 +435,7 @@ pub fn object_bounds(g: &Gaussians) -> Option<([f64; 3], [f64; 3])> {
 /// placed, in the scene's object order (the boxes a draft's light casts shadows from).
 pub fn draft_boxes(
     scene: &SceneFile,
-    bounds: &dyn Fn(&str) -> Option<([f64; 3], [f64; 3])>,
+    bounds: &dyn Fn(&str) -> Option<Bounds>,
 ) -> Vec<crate::scene::env::LitBox> {
     scene
         .objects

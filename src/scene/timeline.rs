@@ -101,7 +101,7 @@ pub struct Animated {
     /// Each distinct object PLY, by its path in `scene.json`.
     clouds: std::collections::HashMap<String, Gaussians>,
     /// The object-frame bounds of each cloud.
-    bounds: std::collections::HashMap<String, ([f64; 3], [f64; 3])>,
+    bounds: std::collections::HashMap<String, super::dir::Bounds>,
     /// The environment, when present and finished.
     environment: Option<Gaussians>,
     /// A draft's light (room part and the shadows last cast), built on the first frame.

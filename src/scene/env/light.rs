@@ -143,8 +143,11 @@ pub struct DraftLight {
     floor: Vec<u32>,
     walls: Vec<u32>,
     /// Per object: the box and the darkening factor of each point its shadow reaches.
-    shadows: Vec<(Option<LitBox>, Vec<(u32, f64)>)>,
+    shadows: Vec<Shadow>,
 }
+
+/// The box an object's shadow was cast from and the darkening factor of each point it reaches.
+type Shadow = (Option<LitBox>, Vec<(u32, f64)>);
 
 impl DraftLight {
     /// The room's light of `env` (unlit, world frame) for a room of `room` size with `openings`.

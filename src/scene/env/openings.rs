@@ -89,14 +89,16 @@ pub fn surfels(o: &Opening, room: [f64; 3]) -> Gaussians {
         ..Default::default()
     };
     let [hx, hy] = [0.5 * room[0], 0.5 * room[1]];
-    // Where the wall plane lies and its inward normal.
-    let (plane, normal): (Box<dyn Fn(f64, f64) -> [f64; 3]>, [f64; 3]) = match o.wall.as_str() {
-        "east" => (Box::new(move |u, z| [hx - INSET, u, z]), [-1.0, 0.0, 0.0]),
-        "west" => (Box::new(move |u, z| [-hx + INSET, u, z]), [1.0, 0.0, 0.0]),
-        "north" => (Box::new(move |u, z| [u, hy - INSET, z]), [0.0, -1.0, 0.0]),
-        "south" => (Box::new(move |u, z| [u, -hy + INSET, z]), [0.0, 1.0, 0.0]),
+    // Where the wall plane lies (x fixed on the east and west walls, y on the others) and its
+    // inward normal.
+    let (x_fixed, at, normal) = match o.wall.as_str() {
+        "east" => (true, hx - INSET, [-1.0, 0.0, 0.0]),
+        "west" => (true, -hx + INSET, [1.0, 0.0, 0.0]),
+        "north" => (false, hy - INSET, [0.0, -1.0, 0.0]),
+        "south" => (false, -hy + INSET, [0.0, 1.0, 0.0]),
         _ => return g,
     };
+    let plane = |u: f64, z: f64| if x_fixed { [at, u, z] } else { [u, at, z] };
     let oc = along(o);
     let (u0, u1) = (oc - 0.5 * o.width - FRAME_W, oc + 0.5 * o.width + FRAME_W);
     let z0 = (o.position[2] - FRAME_W).max(0.0);
