@@ -409,21 +409,39 @@ pub fn light_draft<'a>(
     if scene.prior.kind != "shape" {
         return;
     }
-    let boxes: Vec<crate::scene::env::LitBox> = scene
+    let boxes = draft_boxes(scene, &|rel| cloud(rel).and_then(object_bounds));
+    let openings = crate::scene::env::openings_of(scene.extra.get("openings"));
+    // Contact shadows follow the current boxes: every composition (and so every edit) re-lights
+    // the unlit `environment.ply` for the layout it composes.
+    crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &boxes, &openings);
+}
+
+/// An axis-aligned box as its corners `(lo, hi)`.
+pub type Bounds = ([f64; 3], [f64; 3]);
+
+/// The bounds `(lo, hi)` of an object-frame cloud; `None` when it is empty.
+pub fn object_bounds(g: &Gaussians) -> Option<Bounds> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for m in &g.means {
+        for k in 0..3 {
+            lo[k] = lo[k].min(m[k] as f64);
+            hi[k] = hi[k].max(m[k] as f64);
+        }
+    }
+    lo[0].is_finite().then_some((lo, hi))
+}
+
+/// The world box of every instance whose object cloud has `bounds` (by its PLY path), scaled and
+/// placed, in the scene's object order (the boxes a draft's light casts shadows from).
+pub fn draft_boxes(
+    scene: &SceneFile,
+    bounds: &dyn Fn(&str) -> Option<Bounds>,
+) -> Vec<crate::scene::env::LitBox> {
+    scene
         .objects
         .iter()
         .filter_map(|o| {
-            let g = cloud(&o.ply)?;
-            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            for m in &g.means {
-                for k in 0..3 {
-                    lo[k] = lo[k].min(m[k] as f64);
-                    hi[k] = hi[k].max(m[k] as f64);
-                }
-            }
-            if !lo[0].is_finite() {
-                return None;
-            }
+            let (lo, hi) = bounds(&o.ply)?;
             let c = [
                 0.5 * (lo[0] + hi[0]) * o.scale[0],
                 0.5 * (lo[1] + hi[1]) * o.scale[1],
@@ -439,11 +457,7 @@ pub fn light_draft<'a>(
                 yaw: o.yaw,
             })
         })
-        .collect();
-    let openings = crate::scene::env::openings_of(scene.extra.get("openings"));
-    // Contact shadows follow the current boxes: every composition (and so every edit) re-lights
-    // the unlit `environment.ply` for the layout it composes.
-    crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &boxes, &openings);
+        .collect()
 }
 
 fn load(dir: &Path, rel: &str) -> Result<Gaussians, SceneError> {

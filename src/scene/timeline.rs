@@ -4,7 +4,8 @@
 //! held (`step`) or eased (`smooth`, a smoothstep between keys); before the first key and after
 //! the last the nearest key holds. Host-only.
 use super::compose::{merge, place, Placement};
-use super::dir::{read_scene, SceneError, SceneFile, Timeline, Track};
+use super::dir::{draft_boxes, object_bounds, read_scene, SceneError, SceneFile, Timeline, Track};
+use super::env::DraftLight;
 use crate::splat::ply::read_ply;
 use crate::splat::Gaussians;
 use std::path::Path;
@@ -92,14 +93,32 @@ pub fn compose_at(dir: &Path, t: f64) -> Result<Gaussians, SceneError> {
 }
 
 /// A scene directory loaded once for playing its timeline: [`Animated::at`] only places and
-/// merges.
-#[derive(Debug, Clone)]
+/// merges. A draft's light is kept between frames: only the contact shadows of objects whose
+/// box changed are re-computed.
+#[derive(Debug)]
 pub struct Animated {
     pub scene: SceneFile,
     /// Each distinct object PLY, by its path in `scene.json`.
     clouds: std::collections::HashMap<String, Gaussians>,
+    /// The object-frame bounds of each cloud.
+    bounds: std::collections::HashMap<String, super::dir::Bounds>,
     /// The environment, when present and finished.
     environment: Option<Gaussians>,
+    /// A draft's light (room part and the shadows last cast), built on the first frame.
+    light: std::sync::Mutex<Option<DraftLight>>,
+}
+
+impl Clone for Animated {
+    fn clone(&self) -> Animated {
+        let light = self.light.lock().map(|l| l.clone()).unwrap_or_default();
+        Animated {
+            scene: self.scene.clone(),
+            clouds: self.clouds.clone(),
+            bounds: self.bounds.clone(),
+            environment: self.environment.clone(),
+            light: std::sync::Mutex::new(light),
+        }
+    }
 }
 
 impl Animated {
@@ -116,10 +135,16 @@ impl Animated {
             Some(env) if !scene.stage_pending("environment") => Some(load(dir, &env.ply)?),
             _ => None,
         };
+        let bounds = clouds
+            .iter()
+            .filter_map(|(k, g)| Some((k.clone(), object_bounds(g)?)))
+            .collect();
         Ok(Animated {
             scene,
             clouds,
+            bounds,
             environment,
+            light: std::sync::Mutex::new(None),
         })
     }
 
@@ -150,13 +175,32 @@ impl Animated {
             .map(|o| place(&self.clouds[&o.ply], &o.placement()))
             .collect();
         if let Some(env) = &self.environment {
-            // A draft's light follows the layout at `t` (contact shadows move with the objects),
-            // exactly as composing the static scene does.
-            let mut e = env.clone();
-            crate::scene::dir::light_draft(&at, &|rel| self.clouds.get(rel), &mut e);
-            parts.push(e);
+            parts.push(self.environment_at(&at, env));
         }
         merge(&parts)
+    }
+
+    /// The environment for the layout `at`: a draft's light follows it (contact shadows move
+    /// with the objects) as composing the static scene does, from the kept [`DraftLight`].
+    fn environment_at(&self, at: &SceneFile, env: &Gaussians) -> Gaussians {
+        if at.prior.kind != "shape" {
+            return env.clone();
+        }
+        let boxes = draft_boxes(at, &|rel| self.bounds.get(rel).copied());
+        // A poisoned lock only means another frame panicked: its cache is rebuilt.
+        let mut guard = match self.light.lock() {
+            Ok(g) => g,
+            Err(p) => {
+                let mut g = p.into_inner();
+                *g = None;
+                g
+            }
+        };
+        let light = guard.get_or_insert_with(|| {
+            let openings = crate::scene::env::openings_of(at.extra.get("openings"));
+            DraftLight::new(env.clone(), at.scene_type, at.room.size, &openings)
+        });
+        light.lit(&boxes)
     }
 }
 

@@ -3,6 +3,7 @@
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
 use super::cases as c;
+use super::frames as fr;
 use super::furniture as f;
 use super::materials::{Rgb, Role};
 use super::more as m;
@@ -266,6 +267,12 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("post", st::post, [Frame], [Frame => [0.25, 0.25, 0.27], Metal => [0.22, 0.22, 0.24], Body => [0.40, 0.40, 0.42]]),
     arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
     arch!("treadmill", t::treadmill, [Body], [Body => [0.15, 0.15, 0.16], Interior => [0.05, 0.05, 0.05], Metal => [0.60, 0.61, 0.63], Screen => [0.10, 0.25, 0.35]]),
+    arch!("swing", fr::swing, [Frame], [Frame => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Seat => [0.80, 0.20, 0.15], Metal => [0.55, 0.55, 0.57]]),
+    arch!("slide", fr::slide, [Body], [Body => [0.95, 0.75, 0.10], Frame => [0.20, 0.45, 0.75], Top => [0.45, 0.33, 0.22]]),
+    arch!("climbing_frame", fr::climbing_frame, [Frame], [Frame => [0.85, 0.25, 0.15], Metal => [0.20, 0.45, 0.75]]),
+    arch!("ladder", fr::ladder, [Frame], [Frame => [0.62, 0.45, 0.28], Seat => [0.58, 0.42, 0.26], Top => [0.58, 0.42, 0.26]]),
+    arch!("laptop", fr::laptop, [Body], [Body => [0.70, 0.71, 0.73], BlackKeys => [0.12, 0.12, 0.13], Interior => [0.06, 0.08, 0.12]]),
+    arch!("vase", fr::vase, [Body], [Body => [0.85, 0.82, 0.76]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

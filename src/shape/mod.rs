@@ -15,6 +15,7 @@
 mod appliances;
 mod archetypes;
 mod cases;
+mod frames;
 pub mod functions;
 mod furniture;
 pub mod materials;
@@ -209,8 +210,12 @@ fn sample(
     seed: u64,
 ) -> Gaussians {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let [hw, hd, h] = [size[0] / 2.0, size[1] / 2.0, size[2]];
-    let inside = |p: [f64; 3]| p[0].abs() <= hw && p[1].abs() <= hd && (0.0..=h).contains(&p[2]);
+    // Faces laid on the size box itself (a cabinet's back, an appliance's sides) come out of
+    // the part arithmetic an ulp or so outside it: a small tolerance keeps them, while parts
+    // meant to be clipped (a hull below its gunwale) still lose what lies beyond it.
+    let tol = 1e-6 * (1.0 + size.iter().fold(0.0f64, |a, v| a.max(*v)));
+    let [hw, hd, h] = [size[0] / 2.0 + tol, size[1] / 2.0 + tol, size[2] + tol];
+    let inside = |p: [f64; 3]| p[0].abs() <= hw && p[1].abs() <= hd && (-tol..=h).contains(&p[2]);
     let light = norm3([0.35, 0.55, 0.75]);
     let log_t = (THICKNESS * spacing).ln() as f32;
     let logit = (OPACITY / (1.0 - OPACITY)).ln() as f32;
@@ -280,5 +285,41 @@ mod kb_tests {
             );
         }
         assert_eq!(archetype_by_keyword("desk chair"), "chair", "by words");
+    }
+
+    /// A part laid on the size box (a cabinet's back panel, an appliance's back) keeps every
+    /// sample: were one face dropped, the object would be hollow seen from that side.
+    #[test]
+    fn parts_on_the_size_box_keep_all_their_faces() {
+        let kb = KnowledgeBase::builtin();
+        let mut lost = vec![];
+        for o in &kb.objects {
+            let arch = archetypes::get(archetype_of(&o.category));
+            let palette = materials::Palette::new("", arch.main, arch.defaults);
+            let [hw, hd, h] = [o.size[0] / 2.0, o.size[1] / 2.0, o.size[2]];
+            let spacing = 0.03;
+            for part in arch.parts(o.size) {
+                let mut raw = vec![];
+                part.prim.sample(
+                    spacing,
+                    &mut rand_chacha::ChaCha8Rng::seed_from_u64(3),
+                    &mut raw,
+                );
+                // Parts meant to be clipped reach beyond the box by more than rounding.
+                let within = raw.iter().all(|s| {
+                    s.pos[0].abs() <= hw + 1e-9
+                        && s.pos[1].abs() <= hd + 1e-9
+                        && (-1e-9..=h + 1e-9).contains(&s.pos[2])
+                });
+                if !within || raw.is_empty() {
+                    continue;
+                }
+                let kept = sample(std::slice::from_ref(&part), &palette, o.size, spacing, 3);
+                if kept.len() != raw.len() {
+                    lost.push(format!("{}: {} of {}", o.category, kept.len(), raw.len()));
+                }
+            }
+        }
+        assert!(lost.is_empty(), "samples dropped on the box: {lost:?}");
     }
 }

@@ -30,18 +30,15 @@ pub struct Opening {
     pub height: f64,
 }
 
-/// Colours of the drawn openings and the skirting (linear RGB).
-const DOOR_LEAF: [f32; 3] = [0.62, 0.46, 0.30];
-const FRAME: [f32; 3] = [0.93, 0.92, 0.89];
-const PANE: [f32; 3] = [0.86, 0.93, 1.0];
+/// Colour of the skirting (linear RGB).
 const SKIRTING: [f32; 3] = [0.95, 0.94, 0.91];
 /// Skirting board height (metres).
 const SKIRTING_H: f64 = 0.08;
-/// Frame width around openings (metres).
-const FRAME_W: f64 = 0.06;
-
 /// Objects thinner than this lie on the floor (rugs, mats) and cast no contact shadow.
 const FLAT: f64 = 0.05;
+/// A contact shadow darkening a point by less than this is left out (a quarter of an 8-bit
+/// level), so each object's shadow is a short list of the points near it.
+const SHADOW_CUTOFF: f64 = 1e-3;
 
 impl LitBox {
     /// Distance from `(x, y)` to the box's footprint (0 inside).
@@ -61,10 +58,25 @@ impl LitBox {
         let oz = (z0 - p[2]).max(p[2] - (z0 + self.size[2])).max(0.0);
         d.hypot(oz)
     }
+
+    /// How much the box darkens a floor point at footprint distance `d` (0: not at all).
+    fn floor_shadow(&self, d: f64) -> f64 {
+        let gap = self.position[2].max(0.0);
+        let reach = 0.12 + 0.2 * self.size[2].min(1.5);
+        0.5 * (-gap / 0.5).exp() * (-d / reach).exp()
+    }
+
+    /// How much the box darkens a wall point at distance `d` from it.
+    fn wall_shadow(d: f64) -> f64 {
+        0.3 * (-d / 0.25).exp()
+    }
 }
 
 /// Which surface an environment Gaussian lies on.
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum Surface {
+    /// Left as it is (outdoors: the sky).
+    Unlit,
     Floor,
     Ceiling,
     /// A wall, with the name of its side and the horizontal coordinate along it.
@@ -89,6 +101,10 @@ fn surface(p: [f64; 3], room: [f64; 3]) -> Surface {
         (hy + p[1]).abs(),
     ];
     let k = (0..4).min_by(|a, b| d[*a].total_cmp(&d[*b])).unwrap_or(0);
+    wall_named(k, p)
+}
+
+fn wall_named(k: usize, p: [f64; 3]) -> Surface {
     match k {
         0 => Surface::Wall("east", p[1]),
         1 => Surface::Wall("west", p[1]),
@@ -97,8 +113,9 @@ fn surface(p: [f64; 3], room: [f64; 3]) -> Surface {
     }
 }
 
-/// Bakes light into the environment cloud `env` of a draft (see the module doc). Outdoors only
-/// the ground gets contact shadows.
+/// Bakes light into the environment cloud `env` of a draft (see the module doc); the openings'
+/// own surfels are appended. Outdoors only the ground gets contact shadows. A frame loop keeps
+/// a [`DraftLight`] instead, which re-computes only the shadows of objects that moved.
 pub fn bake_light(
     env: &mut Gaussians,
     scene_type: SceneType,
@@ -106,121 +123,225 @@ pub fn bake_light(
     boxes: &[LitBox],
     openings: &[Opening],
 ) {
-    let k3 = env.coeffs() * 3;
-    let [hx, hy] = [0.5 * room[0], 0.5 * room[1]];
-    let solid: Vec<&LitBox> = boxes.iter().filter(|b| b.size[2] > FLAT).collect();
-    let indoor = scene_type == SceneType::Indoor;
-    for i in 0..env.len() {
-        let p = env.means[i].map(|v| v as f64);
-        let mut paint: Option<[f32; 3]> = None;
-        let mut k = 1.0f64;
-        let s = if indoor {
-            surface(p, room)
-        } else if p[2].abs() < 0.03 {
-            Surface::Floor
-        } else {
-            continue;
-        };
-        match s {
-            Surface::Floor => {
+    let mut light = DraftLight::new(std::mem::take(env), scene_type, room, openings);
+    *env = light.lit(boxes);
+}
+
+/// A draft environment's light split in two: what the room gives (creases, the ceiling light's
+/// falloff, the skirting and the openings), computed once, and each object's contact shadow,
+/// kept with the box that cast it and re-computed only when that box changes, so a timeline
+/// that moves a few objects re-lights only around them.
+#[derive(Debug, Clone)]
+pub struct DraftLight {
+    /// The unlit environment with the openings' surfels appended.
+    env: Gaussians,
+    surface: Vec<Surface>,
+    /// The room's light factor, the least factor (inside openings) and the painted colour.
+    room_k: Vec<f64>,
+    least_k: Vec<f64>,
+    paint: Vec<Option<[f32; 3]>>,
+    floor: Vec<u32>,
+    walls: Vec<u32>,
+    /// Per object: the box and the darkening factor of each point its shadow reaches.
+    shadows: Vec<Shadow>,
+}
+
+/// The box an object's shadow was cast from and the darkening factor of each point it reaches.
+type Shadow = (Option<LitBox>, Vec<(u32, f64)>);
+
+impl DraftLight {
+    /// The room's light of `env` (unlit, world frame) for a room of `room` size with `openings`.
+    pub fn new(
+        mut env: Gaussians,
+        scene_type: SceneType,
+        room: [f64; 3],
+        openings: &[Opening],
+    ) -> DraftLight {
+        let indoor = scene_type == SceneType::Indoor;
+        let mut surface: Vec<Surface> = env
+            .means
+            .iter()
+            .map(|m| {
+                let p = m.map(|v| v as f64);
                 if indoor {
-                    let dw = (hx - p[0].abs()).min(hy - p[1].abs()).max(0.0);
-                    k *= 1.0 - 0.22 * (-dw / 0.25).exp();
-                    // The ceiling light falls off towards the walls.
-                    let r2 = (p[0] / hx).powi(2).max((p[1] / hy).powi(2));
-                    k *= 1.0 - 0.1 * r2;
-                }
-                for b in &solid {
-                    let d = b.footprint_distance(p[0], p[1]);
-                    let gap = b.position[2].max(0.0);
-                    let reach = 0.12 + 0.2 * b.size[2].min(1.5);
-                    let strength = 0.5 * (-gap / 0.5).exp();
-                    k *= 1.0 - strength * (-d / reach).exp();
-                }
-            }
-            Surface::Ceiling => {
-                let dw = (hx - p[0].abs()).min(hy - p[1].abs()).max(0.0);
-                k *= 1.0 - 0.15 * (-dw / 0.3).exp();
-            }
-            Surface::Wall(side, u) => {
-                let z = p[2];
-                k *= 1.0 - 0.25 * (-z / 0.2).exp();
-                k *= 1.0 - 0.12 * (-(room[2] - z) / 0.25).exp();
-                let along = if matches!(side, "east" | "west") {
-                    hy
+                    surface(p, room)
+                } else if p[2].abs() < 0.03 {
+                    Surface::Floor
                 } else {
-                    hx
+                    Surface::Unlit
+                }
+            })
+            .collect();
+        if indoor {
+            for o in openings {
+                let k = ["east", "west", "north", "south"]
+                    .iter()
+                    .position(|w| *w == o.wall);
+                let (Some(k), Ok(mut extra)) = (k, openings_surfels(o, room)) else {
+                    continue;
                 };
-                k *= 1.0 - 0.2 * (-(along - u.abs()).max(0.0) / 0.25).exp();
-                for b in &solid {
-                    k *= 1.0 - 0.3 * (-b.distance(p) / 0.25).exp();
+                surface.extend(
+                    extra
+                        .means
+                        .iter()
+                        .map(|m| wall_named(k, m.map(|v| v as f64))),
+                );
+                append(&mut env, &mut extra);
+            }
+        }
+        let n = env.len();
+        let (mut room_k, mut least_k, mut paint) = (vec![1.0; n], vec![0.0; n], vec![None; n]);
+        let [hx, hy] = [0.5 * room[0], 0.5 * room[1]];
+        let (mut floor, mut walls) = (vec![], vec![]);
+        for i in 0..n {
+            let p = env.means[i].map(|v| v as f64);
+            let k = &mut room_k[i];
+            match surface[i] {
+                Surface::Unlit => {}
+                Surface::Floor => {
+                    floor.push(i as u32);
+                    if indoor {
+                        let dw = (hx - p[0].abs()).min(hy - p[1].abs()).max(0.0);
+                        *k *= 1.0 - 0.22 * (-dw / 0.25).exp();
+                        // The ceiling light falls off towards the walls.
+                        let r2 = (p[0] / hx).powi(2).max((p[1] / hy).powi(2));
+                        *k *= 1.0 - 0.1 * r2;
+                    }
                 }
-                if z < SKIRTING_H {
-                    paint = Some(SKIRTING);
+                Surface::Ceiling => {
+                    let dw = (hx - p[0].abs()).min(hy - p[1].abs()).max(0.0);
+                    *k *= 1.0 - 0.15 * (-dw / 0.3).exp();
                 }
-                for o in openings.iter().filter(|o| o.wall == side) {
-                    let oc = if matches!(side, "east" | "west") {
-                        o.position[1]
+                Surface::Wall(side, u) => {
+                    walls.push(i as u32);
+                    let z = p[2];
+                    *k *= 1.0 - 0.25 * (-z / 0.2).exp();
+                    *k *= 1.0 - 0.12 * (-(room[2] - z) / 0.25).exp();
+                    let along = if matches!(side, "east" | "west") {
+                        hy
                     } else {
-                        o.position[0]
+                        hx
                     };
-                    let (du, z0, z1) = ((u - oc).abs(), o.position[2], o.position[2] + o.height);
-                    let hw = 0.5 * o.width;
-                    if du > hw + FRAME_W || z < z0 - FRAME_W.min(z0) || z > z1 + FRAME_W {
-                        continue;
+                    *k *= 1.0 - 0.2 * (-(along - u.abs()).max(0.0) / 0.25).exp();
+                    if z < SKIRTING_H {
+                        paint[i] = Some(SKIRTING);
                     }
-                    let inside = du <= hw && z >= z0 && z <= z1;
-                    paint = Some(if !inside {
-                        FRAME
-                    } else if o.kind == "door" {
-                        // A leaf with two recessed panels and a handle.
-                        let panel = du < hw - 0.1
-                            && ((z > z0 + 0.15 && z < z0 + 0.45 * o.height)
-                                || (z > z0 + 0.55 * o.height && z < z1 - 0.15));
-                        let handle = (u - oc - 0.35 * o.width * side_sign(side)).abs() < 0.03
-                            && (z - z0 - 1.0).abs() < 0.03;
-                        if handle {
-                            [0.75, 0.72, 0.62]
-                        } else if panel {
-                            DOOR_LEAF.map(|c| c * 0.88)
-                        } else {
-                            DOOR_LEAF
+                    for o in openings.iter().filter(|o| o.wall == side) {
+                        if let Some((rgb, inside)) = super::openings::paint(o, side, u, z) {
+                            paint[i] = Some(rgb);
+                            if inside {
+                                least_k[i] = 0.97;
+                            }
                         }
-                    } else {
-                        // Panes split by a cross of glazing bars.
-                        let bar = (u - oc).abs() < 0.025 || (z - 0.5 * (z0 + z1)).abs() < 0.025;
-                        if bar {
-                            FRAME
-                        } else {
-                            PANE
-                        }
-                    });
-                    if !inside && o.kind == "window" && z < z0 && z > z0 - FRAME_W {
-                        // The sill: brighter and a little wider.
-                        paint = Some([0.97, 0.96, 0.94]);
-                    }
-                    if inside {
-                        k = k.max(0.97);
                     }
                 }
             }
         }
-        for ch in 0..3 {
-            let j = i * k3 + ch;
-            let c = match paint {
-                Some(rgb) => rgb[ch] as f64 * (0.97 + 0.03 * ((i * 7919 % 101) as f64 / 100.0)),
-                None => 0.5 + SH_C0 * env.sh[j] as f64,
-            };
-            env.sh[j] = (((c * k).clamp(0.0, 1.0) - 0.5) / SH_C0) as f32;
+        DraftLight {
+            env,
+            surface,
+            room_k,
+            least_k,
+            paint,
+            floor,
+            walls,
+            shadows: vec![],
         }
+    }
+
+    /// How many objects' shadows were (re-)computed by the last [`DraftLight::lit`].
+    pub fn shadows_len(&self) -> usize {
+        self.shadows.len()
+    }
+
+    /// The lit environment for the objects' current `boxes` (one per object, in a fixed order):
+    /// the shadow of a box equal to the one last given at its index is re-used.
+    pub fn lit(&mut self, boxes: &[LitBox]) -> Gaussians {
+        self.shadows.resize_with(boxes.len(), || (None, vec![]));
+        for (b, (cached, factors)) in boxes.iter().zip(self.shadows.iter_mut()) {
+            if cached.as_ref() != Some(b) {
+                *factors = shadow(b, &self.env, &self.surface, &self.floor, &self.walls);
+                *cached = Some(*b);
+            }
+        }
+        let mut k = self.room_k.clone();
+        for (_, factors) in &self.shadows {
+            for &(i, f) in factors {
+                k[i as usize] *= f;
+            }
+        }
+        let mut out = self.env.clone();
+        let k3 = out.coeffs() * 3;
+        for (i, k) in k.iter().enumerate() {
+            if self.surface[i] == Surface::Unlit {
+                continue;
+            }
+            let k = k.max(self.least_k[i]);
+            for ch in 0..3 {
+                let j = i * k3 + ch;
+                let c = match self.paint[i] {
+                    Some(rgb) => rgb[ch] as f64 * (0.97 + 0.03 * ((i * 7919 % 101) as f64 / 100.0)),
+                    None => 0.5 + SH_C0 * self.env.sh[j] as f64,
+                };
+                out.sh[j] = (((c * k).clamp(0.0, 1.0) - 0.5) / SH_C0) as f32;
+            }
+        }
+        out
     }
 }
 
-/// +1 or −1: which way "right" runs along a wall seen from inside the room (the handle side).
-fn side_sign(side: &str) -> f64 {
-    match side {
-        "north" | "west" => -1.0,
-        _ => 1.0,
+/// The contact shadow of box `b`: the darkening factor of each floor and wall point it reaches
+/// by more than [`SHADOW_CUTOFF`]. Flat boxes (rugs) cast none.
+fn shadow(
+    b: &LitBox,
+    env: &Gaussians,
+    surface: &[Surface],
+    floor: &[u32],
+    walls: &[u32],
+) -> Vec<(u32, f64)> {
+    let mut out = vec![];
+    if b.size[2] <= FLAT {
+        return out;
+    }
+    for &i in floor {
+        let p = env.means[i as usize];
+        let s = b.floor_shadow(b.footprint_distance(p[0] as f64, p[1] as f64));
+        if s >= SHADOW_CUTOFF {
+            out.push((i, 1.0 - s));
+        }
+    }
+    for &i in walls {
+        if !matches!(surface[i as usize], Surface::Wall(..)) {
+            continue;
+        }
+        let s = LitBox::wall_shadow(b.distance(env.means[i as usize].map(|v| v as f64)));
+        if s >= SHADOW_CUTOFF {
+            out.push((i, 1.0 - s));
+        }
+    }
+    out
+}
+
+/// The surfels of opening `o` (see `openings.rs`); an error for an unknown wall.
+fn openings_surfels(o: &Opening, room: [f64; 3]) -> Result<Gaussians, ()> {
+    let g = super::openings::surfels(o, room);
+    if g.is_empty() {
+        Err(())
+    } else {
+        Ok(g)
+    }
+}
+
+/// Appends `extra` (SH degree 0) to `env` (the environment's degree; higher bands zero).
+fn append(env: &mut Gaussians, extra: &mut Gaussians) {
+    let k = env.coeffs();
+    env.means.append(&mut extra.means);
+    env.scales.append(&mut extra.scales);
+    env.rotations.append(&mut extra.rotations);
+    env.opacities.append(&mut extra.opacities);
+    for rgb in extra.sh.chunks(3) {
+        env.sh.extend_from_slice(rgb);
+        env.sh.extend(std::iter::repeat_n(0.0, 3 * (k - 1)));
     }
 }
 
@@ -294,73 +415,5 @@ pub fn restyle_surface(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn floor_and_wall() -> Gaussians {
-        let mut g = Gaussians {
-            sh_degree: 0,
-            ..Default::default()
-        };
-        let grey = ((0.8 - 0.5) / SH_C0) as f32;
-        for p in [
-            [0.0, 0.0, 0.0],
-            [1.8, 0.0, 0.0],
-            [0.0, 2.005, 1.0],
-            [1.3, 2.005, 1.2],
-            [0.0, 2.005, 0.03],
-            [1.5, 2.005, 0.1],
-        ] {
-            g.means.push(p);
-            g.scales.push([-4.0; 3]);
-            g.rotations.push([1.0, 0.0, 0.0, 0.0]);
-            g.opacities.push(3.0);
-            g.sh.extend([grey; 3]);
-        }
-        g
-    }
-
-    fn grey(g: &Gaussians, i: usize) -> f64 {
-        0.5 + SH_C0 * g.sh[3 * i] as f64
-    }
-
-    #[test]
-    fn contact_shadow_falls_under_the_object_and_openings_are_drawn() {
-        let mut g = floor_and_wall();
-        let sofa = LitBox {
-            position: [0.0, 0.0, 0.0],
-            size: [2.0, 0.9, 0.8],
-            yaw: 0.0,
-        };
-        let window = Opening {
-            kind: "window".into(),
-            wall: "north".into(),
-            position: [1.0, 2.0, 0.9],
-            width: 1.2,
-            height: 1.2,
-        };
-        bake_light(
-            &mut g,
-            SceneType::Indoor,
-            [5.0, 4.0, 2.8],
-            &[sofa],
-            std::slice::from_ref(&window),
-        );
-        // Under the sofa darker than the open floor; the open floor still near its colour.
-        assert!(grey(&g, 0) < 0.6 * 0.8, "{}", grey(&g, 0));
-        assert!(grey(&g, 1) > 0.85 * 0.8, "{}", grey(&g, 1));
-        // The window pane is brighter than the plain wall beside it; the wall foot is skirting.
-        assert!(
-            grey(&g, 3) > grey(&g, 2),
-            "{} vs {}",
-            grey(&g, 3),
-            grey(&g, 2)
-        );
-        assert!(
-            grey(&g, 4) > grey(&g, 5),
-            "{} vs {}",
-            grey(&g, 4),
-            grey(&g, 5)
-        );
-    }
-}
+#[path = "light_tests.rs"]
+mod tests;

@@ -12,9 +12,10 @@
 //! wall and 300k for the floor (2.3M, random uniform points, opacity 0.1); a draft needs far fewer.
 mod colours;
 mod light;
+mod openings;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
-pub use light::{bake_light, openings_of, restyle_surface, LitBox, Opening};
+pub use light::{bake_light, openings_of, restyle_surface, DraftLight, LitBox, Opening};
 
 use crate::plan::spec::SceneType;
 use crate::splat::cloud::SH_C0;
