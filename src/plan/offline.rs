@@ -170,16 +170,23 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
     let Some(s) = scene else {
         return m.category.clone();
     };
-    if !m.known || s.objects.iter().any(|(c, _)| *c == m.category) {
+    if m.owner.is_some() || s.objects.iter().any(|(c, _)| *c == m.category) {
         return m.category.clone();
     }
     let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
-    // Only furniture that scenes specialise ("desks" in a classroom); a lamp stays a lamp.
-    const SPECIALISED: &[&str] = &[
-        "desk", "chair", "table", "stool", "bench", "shelf", "bed", "sofa", "couch", "counter",
-        "seat", "cabinet", "sink",
-    ];
-    if !SPECIALISED.contains(&head.as_str()) {
+    let same_head = |c: &&(String, u32)| c.0.rsplit(' ').next() == Some(head.as_str());
+    if !m.known {
+        // "three sonar consoles" on a bridge: its consoles, described by the text's words
+        return s
+            .objects
+            .iter()
+            .filter(same_head)
+            .max_by_key(|(_, n)| *n)
+            .map(|(c, _)| c.clone())
+            .unwrap_or_else(|| m.category.clone());
+    }
+    // Only what scenes specialise (`kb/words.txt`: specialised); a lamp stays a lamp.
+    if !lang::is_specialised(&head) {
         return m.category.clone();
     }
     let head_cat = kb.object(&head).map(|o| o.category.clone());
@@ -217,10 +224,15 @@ fn small_room(
         .collect();
     let margin = super::capacity::USE_MARGIN;
     // The share of the floor the named furniture may take: more in a room called tiny.
-    let occupancy = if scale < 0.45 { 0.55 } else { 0.5 };
+    let occupancy = if scale < 0.45 { 0.6 } else { 0.5 };
+    // Only what stands on the floor takes floor (a mirror on the wall, a lamp on a table no).
+    let on_floor = |c: &str| {
+        use super::gcp::classes::{effective_class, Class};
+        matches!(effective_class(spec, c), Class::Floor | Class::AgainstWall)
+    };
     let need: f64 = named_inst
         .iter()
-        .filter(|i| i.size[2] >= 0.05)
+        .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category))
         .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
         .sum::<f64>()
         / occupancy;
@@ -372,10 +384,12 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             continue;
         }
         let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        // the scene's seats of that noun first, then any kind of it ("kids chair")
         let same_head: BTreeMap<String, u32> = scene_seats
             .iter()
-            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
             .map(|(c, n)| (c.clone(), *n))
+            .chain(kb.objects.iter().map(|o| (o.category.clone(), 0)))
+            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
             .collect();
         if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
             if seat.rsplit(' ').next() == Some(head.as_str()) {
@@ -508,6 +522,28 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     // Named objects fill the roles of the defaults they replace.
     notes.extend(super::roles::apply(&mut counts, &named, r.exclusive));
+    // "the invigilator's desk": a particular one takes the place of the scene's single
+    // default of its kind (the teacher's desk).
+    for (m, cat) in r.mentions.iter().zip(&cats) {
+        let Some(head) = m.owner.as_ref().and(cat.rsplit(' ').next()) else {
+            continue;
+        };
+        if m.negated {
+            continue;
+        }
+        let gone: Vec<String> = defaults
+            .iter()
+            .filter(|(c, n)| **n == 1 && !named.contains(*c) && c.rsplit(' ').next() == Some(head))
+            .map(|(c, _)| c.clone())
+            .collect();
+        for c in gone {
+            if counts.remove(&c).is_some() {
+                notes.push(format!(
+                    "default {c} left out: the named {cat} takes its place"
+                ));
+            }
+        }
+    }
     for c in &others {
         if !named.contains(c) {
             counts.remove(c);
