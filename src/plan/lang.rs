@@ -821,15 +821,25 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
             .take_while(|(_, x)| !matches!(*x, "," | "-" | "–"))
             .take(4)
             .collect();
-        let object = rest.iter().any(|(p, _)| {
-            mentions.iter().any(|m| m.start == *p)
-                && scene_start != Some(*p)
-                && !mentions
-                    .iter()
-                    .any(|m| m.start == *p && m.category.ends_with("room"))
-        });
-        let scene_next = rest.iter().any(|(p, _)| scene_start == Some(*p));
-        if object && !scene_next {
+        // The first noun after it decides: an object's ("a small table"), or the room's (the
+        // scene's name, a place word: "a box room", "a tiny bedroom").
+        let object = rest
+            .iter()
+            .find_map(|&&(p, x)| {
+                if scene_start == Some(p) || word_list("place_heads").contains(&x) {
+                    Some(false)
+                } else if mentions.iter().any(|m| m.start == p) {
+                    Some(
+                        !mentions
+                            .iter()
+                            .any(|m| m.start == p && m.category.ends_with("room")),
+                    )
+                } else {
+                    None
+                }
+            })
+            .unwrap_or(false);
+        if object {
             continue;
         }
         let _ = pos;

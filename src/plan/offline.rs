@@ -107,6 +107,10 @@ pub struct Plan {
     pub notes: Vec<String>,
     /// Each object's count and reason, and the words not used.
     pub understood: super::understood::Understood,
+    /// Categories the text excludes ("no TV", "a futon instead of a bed").
+    pub negated: BTreeSet<String>,
+    /// "nothing else", "just ...": only what the text names.
+    pub exclusive: bool,
 }
 
 /// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
@@ -230,9 +234,14 @@ fn small_room(
         use super::gcp::classes::{effective_class, Class};
         matches!(effective_class(spec, c), Class::Floor | Class::AgainstWall)
     };
+    // A chair at a desk uses the desk's own room in front of it.
+    let tucked = |c: &str| {
+        use super::groups::{group_of, seats_per};
+        matches!(group_of(spec, c), Some((super::spec::RelationKind::At, t)) if seats_per(spec, c, &t) == Some(1))
+    };
     let need: f64 = named_inst
         .iter()
-        .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category))
+        .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
         .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
         .sum::<f64>()
         / occupancy;
@@ -587,9 +596,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     };
     let cats_now: Vec<String> = counts.keys().cloned().collect();
     for seat in &cats_now {
-        let Some((_, table)) = super::groups::group_of(&probe, seat) else {
+        // A rug under a table or a coffee table before a sofa is no companion to count by.
+        use super::spec::RelationKind::{Front, Opposite, Under};
+        let Some((kind, table)) = super::groups::group_of(&probe, seat) else {
             continue;
         };
+        if matches!(kind, Under | Front | Opposite) {
+            continue;
+        }
         let Some(per) = super::groups::seats_per(&probe, seat, &table) else {
             continue;
         };
@@ -919,5 +933,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         named,
         notes,
         understood,
+        negated,
+        exclusive: r.exclusive,
     })
 }

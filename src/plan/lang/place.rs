@@ -51,7 +51,13 @@ pub(super) fn place_phrase(
     let Some((stop, len)) = cut(0) else {
         return spans;
     };
-    if !has_object(stop + len, t.len()) || has_object(0, stop) {
+    // The contents: a known object, or another noun phrase with its determiner ("a small
+    // waterfall"); "a harp with gold strings" is a harp.
+    let rest = &t[stop + len..];
+    let more = rest
+        .split(|c: char| !c.is_alphanumeric() && c != '\'')
+        .any(|w| super::number_of(w).is_some_and(|n| n > 0) || w == "some");
+    if !(has_object(stop + len, t.len()) || more) || has_object(0, stop) {
         return spans;
     }
     let mut words: Vec<(usize, &str)> = vec![];
@@ -68,7 +74,8 @@ pub(super) fn place_phrase(
         .take_while(|(_, w)| is_verb(w) || is_function_word(w) || ["i", "me", "i'd"].contains(w))
         .count();
     let np = &words[lead..];
-    if (1..=4).contains(&np.len()) && np.iter().all(|(_, w)| is_adjective(w)) {
+    let noun = |w: &str| is_adjective(w) || super::word_list("place_heads").contains(&w);
+    if (1..=4).contains(&np.len()) && np.iter().all(|(_, w)| noun(w)) {
         let (s, _) = np[0];
         let (e, last) = np[np.len() - 1];
         spans.push((s, e + last.len()));
