@@ -389,7 +389,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             // school library").
             let before = t[..m.start()].trim_end();
             let word = before.rsplit(' ').next().unwrap_or("");
-            let generic = word_list("place_heads").contains(&m.as_str());
+            // So does an owner's place: "a wizard's laboratory" is the wizard's study, not a
+            // school lab; "a child's bedroom" the child's room.
+            let generic = word_list("place_heads").contains(&m.as_str()) || word.ends_with("'s");
             let modified = (generic && !word.is_empty() && !is_function_word(word))
                 .then(|| {
                     scene_of

@@ -595,6 +595,22 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         relations: vec![],
     };
     let cats_now: Vec<String> = counts.keys().cloned().collect();
+    let default_probe = SceneSpec {
+        objects: defaults
+            .iter()
+            .map(|(c, n)| {
+                let size = kb.object(c).map(|o| o.size).unwrap_or([0.7, 0.6, 0.9]);
+                let o = ObjectSpec {
+                    number: *n,
+                    size,
+                    description: String::new(),
+                    rows: 0,
+                };
+                (c.clone(), o)
+            })
+            .collect(),
+        ..probe.clone()
+    };
     for seat in &cats_now {
         // A rug under a table or a coffee table before a sofa is no companion to count by.
         use super::spec::RelationKind::{Front, Opposite, Under};
@@ -603,6 +619,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         };
         if matches!(kind, Under | Front | Opposite) {
             continue;
+        }
+        // A default seat whose own table is gone (the teacher's chair, once "the invigilator's
+        // desk" took the teacher desk's place) is no seat of the others.
+        if defaults.contains_key(seat) && !explicit.contains_key(seat) {
+            let was = super::groups::group_of(&default_probe, seat).map(|g| g.1);
+            if was.is_some_and(|w| w != table) {
+                continue;
+            }
         }
         let Some(per) = super::groups::seats_per(&probe, seat, &table) else {
             continue;

@@ -194,13 +194,14 @@ pub(super) fn read_counts(r: &mut Reading) {
         }
     }
     // "X, each with Y and Z", "X, each sheltering a pair of Y", "X, each in front of a Y"
-    // (placed by each: only an indefinite Y, "each facing the window" names one window).
+    // (only "with" and its kin own a definite Y, "each with its own lamp"; "each facing the
+    // window" names one window).
     let each_clause = re(
-        r"\beach (?:with|having|holding|has|gets|topped with|[a-z]+ing|(in front of|under|beneath|beside|next to|by|behind|against|below|above|on top of|on))\b",
+        r"\beach (?:(with|having|holding|has|gets|topped with)|[a-z]+ing|in front of|under|beneath|beside|next to|by|behind|against|below|above|on top of|on)\b",
     );
     for c in each_clause.captures_iter(&t) {
         let Some(c0) = c.get(0) else { continue };
-        let placed = c.get(1).is_some();
+        let placed = c.get(1).is_none();
         let c = c0;
         let Some(x) = distributor(r, c.start(), "") else {
             continue;
