@@ -406,6 +406,19 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
+    // "three consoles, each with a seat in front of it": a seat said of each of them is
+    // their usual seat (the console's office chair), whatever its kind.
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        let (Some(x), "seat") = (m.each_of, head.as_str()) else {
+            continue;
+        };
+        let seats: BTreeMap<String, u32> = scene_seats.clone();
+        if let Some(seat) = seat_for(&cats[x], &seats) {
+            cats[i] = seat;
+        }
+    }
     // "two chairs at each table": (category, per instance, category of the distributor).
     let mut distributed: Vec<(String, u32, String)> = vec![];
     let mut others: BTreeSet<String> = BTreeSet::new();
