@@ -222,6 +222,9 @@ fn issue_21_what_replaces_or_owns_an_object() {
             s.objects.keys()
         );
     }
+    // ... and passes its negation on to nothing after it
+    let s = plan("a teen room: a daybed instead of a bed, a gaming desk and a lamp");
+    assert_eq!(n(&s, "gaming desk", &[]), 1, "{:?}", s.objects.keys());
     // two names in a row are one object, named by the last
     let s = plan("a crypt with a stone coffin");
     assert_eq!(n(&s, "rock", &[]), 0, "{:?}", s.objects.keys());

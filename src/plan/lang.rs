@@ -510,6 +510,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     });
 
     let mut prev_end = 0usize;
+    let mut prev_replaced = false;
     for (idx, (start, end, cat, plural)) in raw.iter().cloned().enumerate() {
         // Walk back from the noun: adjectives, then a count or determiner, then negation.
         let before = words_in(&t, prev_end, start);
@@ -669,8 +670,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             None => {}
         }
         if !negated && idx > 0 {
-            // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated one
-            let prev_neg = r.mentions.last().is_some_and(|p| p.negated);
+            // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated
+            // one; what was replaced ("instead of a bed, a desk") passes nothing on.
+            let prev_neg = r.mentions.last().is_some_and(|p| p.negated) && !prev_replaced;
             let only_connectors = stop
                 .iter()
                 .all(|w| ["or", "nor", ",", "a", "an", "any", "the"].contains(w));
@@ -681,6 +683,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         if negated {
             count = Some(0);
         }
+        prev_replaced = replaced;
         let head_text = t[start..end].to_string();
         let (category, known) = if cat.is_empty() {
             // The head noun names the unknown object; the words before it describe it.

@@ -440,7 +440,16 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             continue;
         }
         if !m.known && !unknown.contains_key(cat) {
-            let (size, how) = unknown_size(kb, cat);
+            // "the instructor's mat" in a yoga studio: sized as the scene's own mats
+            let own = scene.and_then(|s| {
+                let head = cat.rsplit(' ').next()?;
+                let (c, _) = s
+                    .objects
+                    .iter()
+                    .find(|(c, _)| c.rsplit(' ').next() == Some(head))?;
+                Some((kb.object(c)?.size, format!("sized as a {c}")))
+            });
+            let (size, how) = own.unwrap_or_else(|| unknown_size(kb, cat));
             notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
             unknown.insert(cat.clone(), size);
         }
