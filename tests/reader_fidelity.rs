@@ -197,6 +197,15 @@ fn issue_21_scene_types_never_replace_named_content() {
         2,
         "the named consoles are its consoles"
     );
+    // a scene's name said as one of the contents is that object ("... and a bar")
+    for p in [
+        "a cellar with a wine rack and a bar",
+        "a poker room with three card tables, a dozen chairs and a bar",
+    ] {
+        let s = plan(p);
+        assert_eq!(n(&s, "pool table", &[]), 0, "{p}: {:?}", s.objects.keys());
+        assert_eq!(n(&s, "bar", &[]), 1, "{p}: {:?}", s.objects.keys());
+    }
     // ... but a thing with parts is still the thing
     let s = plan("a harp with gold strings");
     assert_eq!(n(&s, "harp", &[]), 1, "{:?}", s.objects.keys());

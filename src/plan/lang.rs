@@ -378,11 +378,21 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         .find_iter(&t)
         .map(|m| (m.start(), m.end()))
         .collect();
+    // "a poker room with three card tables and a bar": past the opening noun phrase, a name
+    // that is also an object's, said as one item ("a bar"), is that object, not the scene.
+    let contents = [" with ", ": "]
+        .iter()
+        .filter_map(|d| t.find(d))
+        .min()
+        .filter(|&i| i > 0);
     for m in scene_re.find_iter(&t) {
         let inside_object = objects
             .iter()
             .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
-        if !inside_object {
+        let item = contents.is_some_and(|c| m.start() > c)
+            && kb.object(m.as_str()).is_some()
+            && ["a", "an", "one"].contains(&t[..m.start()].split_whitespace().last().unwrap_or(""));
+        if !inside_object && !item {
             // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
             // place_heads) after a word that starts another scene's name ("conference room")
             // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
