@@ -258,6 +258,12 @@ fn issue_21_counts_per_and_each_placed() {
     let s = plan("a tea room with six little tables and two chairs per table");
     assert_eq!(n(&s, "table", &["side", "coffee"]), 6, "{:?}", s.objects);
     assert_eq!(n(&s, "chair", &["arm"]), 12);
+    // tables said with their seats are tables to sit at, even where the scene's are side tables
+    let s = plan("a lounge with four small tables and three chairs at each table");
+    assert_eq!(n(&s, "dining table", &[]), 4, "{:?}", s.objects);
+    assert_eq!(n(&s, "chair", &["arm"]), 12, "{:?}", s.objects);
+    let s = plan("a living room with three little tables");
+    assert_eq!(n(&s, "side table", &[]), 3, "{:?}", s.objects);
     let s = plan("a dressing room with two stools, each in front of a mirror");
     assert_eq!(n(&s, "mirror", &[]), 2, "{:?}", s.objects);
     // "each facing the window" names one window, no object per stool

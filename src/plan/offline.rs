@@ -406,6 +406,20 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
+    // "three little tables with two chairs per table": tables said with their seats are
+    // tables to sit at, not the scene's side tables.
+    for i in 0..r.mentions.len().saturating_sub(1) {
+        let (m, next) = (&r.mentions[i], &r.mentions[i + 1]);
+        let with = r.text[m.end..next.start].trim_start().starts_with("with ");
+        if cats[i] == m.category || !(with || next.each_of == Some(i)) {
+            continue;
+        }
+        let seat: BTreeMap<String, u32> = [(next.category.clone(), 0)].into();
+        let sits = |t: &str| seat_for(t, &seat).as_deref() == Some(next.category.as_str());
+        if !sits(&cats[i]) && sits(&m.category) {
+            cats[i] = m.category.clone();
+        }
+    }
     // "three consoles, each with a seat in front of it": a seat said of each of them is
     // their usual seat (the console's office chair), whatever its kind.
     for i in 0..r.mentions.len() {
