@@ -408,8 +408,8 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     // "three little tables with two chairs per table": tables said with their seats are
     // tables to sit at, not the scene's side tables.
-    for i in 0..r.mentions.len().saturating_sub(1) {
-        let (m, next) = (&r.mentions[i], &r.mentions[i + 1]);
+    for (i, pair) in r.mentions.windows(2).enumerate() {
+        let (m, next) = (&pair[0], &pair[1]);
         let with = r.text[m.end..next.start].trim_start().starts_with("with ");
         if cats[i] == m.category || !(with || next.each_of == Some(i)) {
             continue;
