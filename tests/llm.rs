@@ -234,3 +234,39 @@ fn llm_plans_get_functional_groups_and_capacity() {
         .unwrap();
     assert!(dreamscene::plan::check::validity_problems(&l, &spec).is_empty());
 }
+
+/// An LLM answer goes through the same reading as the offline plan: the counts the text sets,
+/// nothing it excludes, and a named object in place of the default of its role.
+#[test]
+fn llm_answers_keep_the_texts_counts_negations_and_roles() {
+    let answers = vec![
+        "{\"bed\": {\"number\": 1, \"size\": [1.6, 2.1, 1.0], \"description\": \"A DSLR photo of a bed\"}, \"single bed\": {\"number\": 1, \"size\": [1.0, 2.0, 0.9], \"description\": \"A DSLR photo of a single bed\"}, \"nightstand\": {\"number\": 1, \"size\": [0.5, 0.4, 0.55], \"description\": \"A DSLR photo of a nightstand\"}, \"tv\": {\"number\": 1, \"size\": [1.3, 0.08, 0.75], \"description\": \"A DSLR photo of a tv\"}}".to_string(),
+        "{\"bed1\": SIDE, \"single bed1\": SIDE}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+        "{}".to_string(),
+    ];
+    let (url, _) = server(answers);
+    let (spec, report) = plan_llm(
+        &config(url),
+        "a guest room with a single bed, two nightstands and no tv",
+    );
+    assert!(!report.offline_fallback, "{:?}", report.warnings);
+    let n = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
+    assert_eq!(n("tv"), 0, "excluded: {:?}", report.warnings);
+    assert_eq!(
+        n("nightstand"),
+        2,
+        "the text's count: {:?}",
+        report.warnings
+    );
+    assert_eq!(n("single bed"), 1);
+    assert_eq!(n("bed"), 0, "the single bed is the sleeping place");
+    assert!(spec.anchors.contains_key("nightstand2") && !spec.anchors.contains_key("tv1"));
+    assert!(spec
+        .relations
+        .iter()
+        .all(|r| r.subject != "bed1" && r.object != "bed1"));
+    spec.validate().unwrap();
+}

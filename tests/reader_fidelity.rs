@@ -86,9 +86,10 @@ fn own_prompts_are_read_the_way_people_mean_them() {
     }
     let share = held as f64 / total as f64;
     eprintln!("own set: {held}/{total} rules held\n{}", failed.join("\n"));
-    // The level reached (108/120 after the second round); it may only go up.
+    // The level reached (108/120 after the second round, 173/178 after the third with 24
+    // more prompts); it may only go up.
     assert!(
-        share >= 0.895,
+        share >= 0.97,
         "{held}/{total} rules held:\n{}",
         failed.join("\n")
     );
@@ -173,4 +174,101 @@ fn issue_21_huge_and_tiny_scale_the_object() {
     let plain = size("a study with a desk and a bookshelf", "desk");
     let tiny = size("a study with a tiny desk and a bookshelf", "desk");
     assert!(tiny[0] < plain[0] * 0.8, "{tiny:?} {plain:?}");
+}
+
+#[test]
+fn issue_21_scene_types_never_replace_named_content() {
+    // a known template never stands in for the owner's place
+    let s = plan("a wizard's laboratory: a cauldron, a stuffed owl and a telescope");
+    for absent in ["fume hood", "microscope", "whiteboard"] {
+        assert_eq!(n(&s, absent, &[]), 0, "{:?}", s.objects.keys());
+    }
+    assert_eq!(n(&s, "telescope", &[]), 1);
+    // an unknown place is the place, not an object in it
+    let s = plan("a mermaid grotto with a giant clam shell and some coral");
+    assert_eq!(n(&s, "grotto", &[]), 0, "{:?}", s.objects.keys());
+    let s = plan("an elven treehouse with a hammock and two stools");
+    assert_eq!(n(&s, "treehouse", &[]), 0, "{:?}", s.objects.keys());
+    assert_eq!(n(&s, "stool", &[]), 2);
+    let s = plan("the control room of a submarine: a periscope and two consoles");
+    assert_eq!(n(&s, "submarine", &[]), 0, "{:?}", s.objects.keys());
+    assert_eq!(
+        n(&s, "console", &[]),
+        2,
+        "the named consoles are its consoles"
+    );
+    // a scene's name said as one of the contents is that object ("... and a bar")
+    for p in [
+        "a cellar with a wine rack and a bar",
+        "a poker room with three card tables, a dozen chairs and a bar",
+    ] {
+        let s = plan(p);
+        assert_eq!(n(&s, "pool table", &[]), 0, "{p}: {:?}", s.objects.keys());
+        assert_eq!(n(&s, "bar", &[]), 1, "{p}: {:?}", s.objects.keys());
+    }
+    // ... but a thing with parts is still the thing
+    let s = plan("a harp with gold strings");
+    assert_eq!(n(&s, "harp", &[]), 1, "{:?}", s.objects.keys());
+    // a size word of the room is not the place's kind ("tiny apartment")
+    let s = plan("a tiny bedroom with a single bed");
+    assert_eq!(n(&s, "stove", &[]), 0, "{:?}", s.objects.keys());
+    let s = plan("the school library with two reading tables");
+    assert_eq!(n(&s, "blackboard", &[]), 0, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn issue_21_what_replaces_or_owns_an_object() {
+    // "instead of a X", "rather than the X"
+    for p in [
+        "a guest room with a futon instead of a bed",
+        "a loft with a mattress rather than the bed",
+    ] {
+        let s = plan(p);
+        assert_eq!(
+            n(&s, "bed", &["sofa", "day"]),
+            0,
+            "{p}: {:?}",
+            s.objects.keys()
+        );
+    }
+    // ... and passes its negation on to nothing after it
+    let s = plan("a teen room: a daybed instead of a bed, a gaming desk and a lamp");
+    assert_eq!(n(&s, "gaming desk", &[]), 1, "{:?}", s.objects.keys());
+    // two names in a row are one object, named by the last
+    let s = plan("a crypt with a stone coffin");
+    assert_eq!(n(&s, "rock", &[]), 0, "{:?}", s.objects.keys());
+    assert_eq!(n(&s, "sarcophagus", &[]), 1);
+    // an owner's object is a particular one of its kind
+    let s = plan("a lab with four benches and a professor's desk");
+    assert_eq!(n(&s, "professor", &[]), 1, "{:?}", s.objects.keys());
+    let s = plan("a classroom with twelve desks and the headmaster's desk");
+    assert_eq!(n(&s, "desk", &["headmaster"]), 12, "{:?}", s.objects);
+    assert_eq!(
+        n(&s, "headmaster", &[]),
+        1,
+        "it takes the teacher desk's place"
+    );
+    // and fills its kind's role
+    let s = plan("a kids room with the child's bed and a toy chest");
+    assert_eq!(n(&s, "bed", &[]), 1, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn issue_21_counts_per_and_each_placed() {
+    let s = plan("a tea room with six little tables and two chairs per table");
+    assert_eq!(n(&s, "table", &["side", "coffee"]), 6, "{:?}", s.objects);
+    assert_eq!(n(&s, "chair", &["arm"]), 12);
+    // tables said with their seats are tables to sit at, even where the scene's are side tables
+    let s = plan("a lounge with four small tables and three chairs at each table");
+    assert_eq!(n(&s, "dining table", &[]), 4, "{:?}", s.objects);
+    assert_eq!(n(&s, "chair", &["arm"]), 12, "{:?}", s.objects);
+    let s = plan("a living room with three little tables");
+    assert_eq!(n(&s, "side table", &[]), 3, "{:?}", s.objects);
+    let s = plan("a dressing room with two stools, each in front of a mirror");
+    assert_eq!(n(&s, "mirror", &[]), 2, "{:?}", s.objects);
+    // "each facing the window" names one window, no object per stool
+    let s = plan("a bar with four stools, each facing the tv");
+    assert_eq!(n(&s, "tv", &["stand"]), 1, "{:?}", s.objects);
+    let s = plan("a farmhouse kitchen with a big table and a bench on each long side");
+    assert_eq!(n(&s, "bench", &[]), 2, "{:?}", s.objects);
 }

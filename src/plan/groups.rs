@@ -27,6 +27,7 @@ const DINING_SEATS: &[&str] = &[
     "upholstered chair",
     "restaurant chair",
     "stacking chair",
+    "kids chair",
 ];
 const TABLES: &[&str] = &[
     "dining table",
@@ -44,6 +45,7 @@ const TABLES: &[&str] = &[
     "picnic table",
     "craft table",
     "meeting table",
+    "kids table",
 ];
 
 const RULES: &[Rule] = &[

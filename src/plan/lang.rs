@@ -9,8 +9,10 @@ use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, find_lengths, Dims};
 
 mod counts;
+mod place;
 mod placements;
 use counts::read_counts;
+use place::place_phrase;
 use placements::read_placements;
 use regex::Regex;
 use std::collections::BTreeMap;
@@ -127,6 +129,12 @@ pub fn object_scale(w: &str) -> Option<f64> {
     })
 }
 
+/// A head noun that a scene's defaults specialise (`kb/words.txt`: specialised): "desks" in a
+/// classroom are its school desks.
+pub fn is_specialised(head: &str) -> bool {
+    word_list("specialised").contains(&head)
+}
+
 pub fn is_function_word(w: &str) -> bool {
     function().contains(&w)
 }
@@ -175,6 +183,8 @@ pub struct Mention {
     pub parts: u32,
     /// "in four rows of six": the number of rows (0 when not in rows).
     pub rows: u32,
+    /// "the invigilator's desk": the owner a particular object is named after.
+    pub owner: Option<String>,
 }
 
 /// What a request says.
@@ -368,28 +378,42 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         .find_iter(&t)
         .map(|m| (m.start(), m.end()))
         .collect();
+    // "a poker room with three card tables and a bar": past the opening noun phrase, a name
+    // that is also an object's, said as one item ("a bar"), is that object, not the scene.
+    let contents = [" with ", ": "]
+        .iter()
+        .filter_map(|d| t.find(d))
+        .min()
+        .filter(|&i| i > 0);
     for m in scene_re.find_iter(&t) {
         let inside_object = objects
             .iter()
             .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
-        if !inside_object {
-            // "a conference hall", "a lecture hall": a one-word scene name after a word that
-            // starts another scene's name ("conference room") is that other scene.
+        let item = contents.is_some_and(|c| m.start() > c)
+            && kb.object(m.as_str()).is_some()
+            && ["a", "an", "one"].contains(&t[..m.start()].split_whitespace().last().unwrap_or(""));
+        if !inside_object && !item {
+            // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
+            // place_heads) after a word that starts another scene's name ("conference room")
+            // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
+            // school library").
             let before = t[..m.start()].trim_end();
             let word = before.rsplit(' ').next().unwrap_or("");
-            let modified =
-                (!m.as_str().contains(' ') && !word.is_empty() && !is_function_word(word))
-                    .then(|| {
-                        scene_of
-                            .iter()
-                            .filter(|(name, _)| {
-                                name.strip_prefix(word)
-                                    .is_some_and(|rest| rest.starts_with(' '))
-                            })
-                            .map(|(_, &i)| i)
-                            .next()
-                    })
-                    .flatten();
+            // So does an owner's place: "a wizard's laboratory" is the wizard's study, not a
+            // school lab; "a child's bedroom" the child's room.
+            let generic = word_list("place_heads").contains(&m.as_str()) || word.ends_with("'s");
+            let modified = (generic && !word.is_empty() && !is_function_word(word))
+                .then(|| {
+                    scene_of
+                        .iter()
+                        .filter(|(name, _)| {
+                            name.strip_prefix(word)
+                                .is_some_and(|rest| rest.starts_with(' '))
+                        })
+                        .map(|(_, &i)| i)
+                        .next()
+                })
+                .flatten();
             let (i, start) = match modified {
                 Some(i) => (i, before.len() - word.len()),
                 None => (scene_of[m.as_str()], m.start()),
@@ -400,13 +424,26 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         }
     }
 
-    // Objects; two names of one category in a row are one object ("a sectional sofa").
+    // Room words of two words ("a box room") are the room's size, not objects.
+    for l in ["room_tiny", "room_small", "room_large"] {
+        for w in word_list(l).iter().filter(|w| w.contains('-')) {
+            let phrase = w.replace('-', " ");
+            for (i, _) in t.match_indices(&phrase) {
+                masked.push((i, i + phrase.len()));
+            }
+        }
+    }
+    // The place the text is about when it is no scene the knowledge base knows ("a mermaid
+    // grotto with ...") and what follows the scene's name ("the control room of a submarine").
+    masked.extend(place_phrase(&t, r.scene.map(|(_, s, e)| (s, e)), &objects));
+
+    // Objects; two names in a row are one object named by the last ("a sectional sofa", "a
+    // stone coffin", "a desk chair"), or by the first when both fill one role ("a two-seater
+    // sofa").
     let (obj_re, table) = object_matcher(kb);
     let mut raw: Vec<(usize, usize, String, bool)> = vec![];
     for m in obj_re.find_iter(&t) {
-        if r.scene
-            .is_some_and(|(_, s, e)| m.start() < e && s < m.end())
-        {
+        if masked.iter().any(|&(s, e)| m.start() < e && s < m.end()) {
             continue;
         }
         // "a computer lab", "a piano bar": a noun right before the scene's name names the kind
@@ -418,7 +455,12 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         }
         let (cat, plural) = table[m.as_str()].clone();
         if let Some(last) = raw.last_mut() {
-            if last.2 == cat && t[last.1..m.start()].trim().is_empty() {
+            if t[last.1..m.start()].trim().is_empty() && (last.2 == cat || !last.3) {
+                let one_role = super::roles::role_of(&last.2)
+                    .is_some_and(|role| super::roles::role_of(&cat) == Some(role));
+                if !one_role {
+                    last.2 = cat;
+                }
                 last.1 = m.end();
                 last.3 = plural;
                 continue;
@@ -449,8 +491,8 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             j += 1;
         }
         // A run cut short by a known object or the scene's name is their description.
-        let known_next =
-            j < all.len() && (raw.iter().any(|o| o.0 == all[j].0) || inside(all[j].0, &masked));
+        let known_next = j < all.len()
+            && (raw.iter().any(|o| all[j].0 >= o.0 && all[j].0 < o.1) || inside(all[j].0, &masked));
         if j > k + 1 && !known_next {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
@@ -469,8 +511,16 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         k = j.max(k + 1);
     }
     raw.sort_by_key(|o| o.0);
+    // Spans never overlap: a name inside a hyphenated word ("three-seat sofa") is read once.
+    let mut end_so_far = 0;
+    raw.retain(|o| {
+        let keep = o.0 >= end_so_far;
+        end_so_far = end_so_far.max(o.1);
+        keep
+    });
 
     let mut prev_end = 0usize;
+    let mut prev_replaced = false;
     for (idx, (start, end, cat, plural)) in raw.iter().cloned().enumerate() {
         // Walk back from the noun: adjectives, then a count or determiner, then negation.
         let before = words_in(&t, prev_end, start);
@@ -545,7 +595,18 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         } else {
             None
         };
+        // "a sofa bed instead of a bed", "a futon rather than the bed": the bed is not wanted.
+        let back = |i: usize| stop.len().checked_sub(i).and_then(|k| stop.get(k)).copied();
+        let instead = |at: usize| {
+            back(at + 1) == Some("instead") && back(at) == Some("of")
+                || back(at + 1) == Some("rather") && back(at) == Some("than")
+        };
+        let replaced =
+            instead(1) || instead(2) && matches!(back(1), Some("a" | "an" | "the" | "any"));
         match last {
+            _ if replaced => {
+                negated = true;
+            }
             Some(w)
                 if [
                     "the", "its", "their", "this", "that", "these", "those", "my", "our", "your",
@@ -557,10 +618,6 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
                 if prev2.is_some_and(|p| NEGATORS.contains(&p)) {
                     negated = true;
                 }
-            }
-            Some("of") if prev2 == Some("instead") => {
-                // "a sofa bed instead of a bed"
-                negated = true;
             }
             Some("of") => {
                 // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
@@ -623,8 +680,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             None => {}
         }
         if !negated && idx > 0 {
-            // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated one
-            let prev_neg = r.mentions.last().is_some_and(|p| p.negated);
+            // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated
+            // one; what was replaced ("instead of a bed, a desk") passes nothing on.
+            let prev_neg = r.mentions.last().is_some_and(|p| p.negated) && !prev_replaced;
             let only_connectors = stop
                 .iter()
                 .all(|w| ["or", "nor", ",", "a", "an", "any", "the"].contains(w));
@@ -635,6 +693,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         if negated {
             count = Some(0);
         }
+        prev_replaced = replaced;
         let head_text = t[start..end].to_string();
         let (category, known) = if cat.is_empty() {
             // The head noun names the unknown object; the words before it describe it.
@@ -644,6 +703,26 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             (head, false)
         } else {
             (cat, true)
+        };
+        // "the invigilator's desk", "a captain's chair": a particular one of its kind, named
+        // after its owner unless the knowledge base has that name.
+        let owner = adjectives
+            .last()
+            .filter(|_| known)
+            .and_then(|a| a.strip_suffix("'s").or_else(|| a.strip_suffix('\'')))
+            .filter(|o| o.len() > 1)
+            .map(str::to_string);
+        let (category, known) = match &owner {
+            Some(o) => {
+                adjectives.pop();
+                let head = singular(head_text.rsplit(' ').next().unwrap_or(""));
+                let name = format!("{o} {head}");
+                match kb.object(&name) {
+                    Some(k) => (k.category.clone(), true),
+                    None => (name, false),
+                }
+            }
+            None => (category, known),
         };
         r.mentions.push(Mention {
             start,
@@ -661,6 +740,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             each_of: None,
             parts: 1,
             rows: 0,
+            owner,
         });
         prev_end = end;
     }
@@ -753,18 +833,28 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
         // The noun this word describes: the next mention or scene name before punctuation.
         let rest: Vec<&(usize, &str)> = words[k + 1..]
             .iter()
-            .take_while(|(_, x)| *x != ",")
+            .take_while(|(_, x)| !matches!(*x, "," | "-" | "–"))
             .take(4)
             .collect();
-        let object = rest.iter().any(|(p, _)| {
-            mentions.iter().any(|m| m.start == *p)
-                && scene_start != Some(*p)
-                && !mentions
-                    .iter()
-                    .any(|m| m.start == *p && m.category.ends_with("room"))
-        });
-        let scene_next = rest.iter().any(|(p, _)| scene_start == Some(*p));
-        if object && !scene_next {
+        // The first noun after it decides: an object's ("a small table"), or the room's (the
+        // scene's name, a place word: "a box room", "a tiny bedroom").
+        let object = rest
+            .iter()
+            .find_map(|&&(p, x)| {
+                if scene_start == Some(p) || word_list("place_heads").contains(&x) {
+                    Some(false)
+                } else if mentions.iter().any(|m| m.start == p) {
+                    Some(
+                        !mentions
+                            .iter()
+                            .any(|m| m.start == p && m.category.ends_with("room")),
+                    )
+                } else {
+                    None
+                }
+            })
+            .unwrap_or(false);
+        if object {
             continue;
         }
         let _ = pos;

@@ -429,10 +429,14 @@ pub fn plan_llm_strict(
         }
     }
     report.warnings.extend(warnings);
-    // The same functional groups and capacity as the offline planner: objects the text names
-    // (as the offline reading finds them) are never dropped, defaults are trimmed to the room.
+    // The same reading, functional groups and capacity as the offline planner: counts the
+    // text sets, no excluded thing, roles filled once; objects the text names (as the offline
+    // reading finds them) are never dropped; defaults are trimmed to the room.
     let named: BTreeSet<String> = match plan_prompt(constraint) {
         Ok(p) => {
+            report
+                .warnings
+                .extend(super::conform::conform(&mut spec, &p));
             for c in &p.named {
                 if !spec.objects.contains_key(c) {
                     if let Some(o) = p.spec.objects.get(c) {

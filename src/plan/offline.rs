@@ -107,6 +107,10 @@ pub struct Plan {
     pub notes: Vec<String>,
     /// Each object's count and reason, and the words not used.
     pub understood: super::understood::Understood,
+    /// Categories the text excludes ("no TV", "a futon instead of a bed").
+    pub negated: BTreeSet<String>,
+    /// "nothing else", "just ...": only what the text names.
+    pub exclusive: bool,
 }
 
 /// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
@@ -170,16 +174,23 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
     let Some(s) = scene else {
         return m.category.clone();
     };
-    if !m.known || s.objects.iter().any(|(c, _)| *c == m.category) {
+    if m.owner.is_some() || s.objects.iter().any(|(c, _)| *c == m.category) {
         return m.category.clone();
     }
     let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
-    // Only furniture that scenes specialise ("desks" in a classroom); a lamp stays a lamp.
-    const SPECIALISED: &[&str] = &[
-        "desk", "chair", "table", "stool", "bench", "shelf", "bed", "sofa", "couch", "counter",
-        "seat", "cabinet", "sink",
-    ];
-    if !SPECIALISED.contains(&head.as_str()) {
+    let same_head = |c: &&(String, u32)| c.0.rsplit(' ').next() == Some(head.as_str());
+    if !m.known {
+        // "three sonar consoles" on a bridge: its consoles, described by the text's words
+        return s
+            .objects
+            .iter()
+            .filter(same_head)
+            .max_by_key(|(_, n)| *n)
+            .map(|(c, _)| c.clone())
+            .unwrap_or_else(|| m.category.clone());
+    }
+    // Only what scenes specialise (`kb/words.txt`: specialised); a lamp stays a lamp.
+    if !lang::is_specialised(&head) {
         return m.category.clone();
     }
     let head_cat = kb.object(&head).map(|o| o.category.clone());
@@ -217,10 +228,20 @@ fn small_room(
         .collect();
     let margin = super::capacity::USE_MARGIN;
     // The share of the floor the named furniture may take: more in a room called tiny.
-    let occupancy = if scale < 0.45 { 0.55 } else { 0.5 };
+    let occupancy = if scale < 0.45 { 0.6 } else { 0.5 };
+    // Only what stands on the floor takes floor (a mirror on the wall, a lamp on a table no).
+    let on_floor = |c: &str| {
+        use super::gcp::classes::{effective_class, Class};
+        matches!(effective_class(spec, c), Class::Floor | Class::AgainstWall)
+    };
+    // A chair at a desk uses the desk's own room in front of it.
+    let tucked = |c: &str| {
+        use super::groups::{group_of, seats_per};
+        matches!(group_of(spec, c), Some((super::spec::RelationKind::At, t)) if seats_per(spec, c, &t) == Some(1))
+    };
     let need: f64 = named_inst
         .iter()
-        .filter(|i| i.size[2] >= 0.05)
+        .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
         .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
         .sum::<f64>()
         / occupancy;
@@ -372,15 +393,44 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             continue;
         }
         let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        // the scene's seats of that noun first, then any kind of it ("kids chair")
         let same_head: BTreeMap<String, u32> = scene_seats
             .iter()
-            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
             .map(|(c, n)| (c.clone(), *n))
+            .chain(kb.objects.iter().map(|o| (o.category.clone(), 0)))
+            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
             .collect();
         if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
             if seat.rsplit(' ').next() == Some(head.as_str()) {
                 cats[i] = seat;
             }
+        }
+    }
+    // "three little tables with two chairs per table": tables said with their seats are
+    // tables to sit at, not the scene's side tables.
+    for (i, pair) in r.mentions.windows(2).enumerate() {
+        let (m, next) = (&pair[0], &pair[1]);
+        let with = r.text[m.end..next.start].trim_start().starts_with("with ");
+        if cats[i] == m.category || !(with || next.each_of == Some(i)) {
+            continue;
+        }
+        let seat: BTreeMap<String, u32> = [(next.category.clone(), 0)].into();
+        let sits = |t: &str| seat_for(t, &seat).as_deref() == Some(next.category.as_str());
+        if !sits(&cats[i]) && sits(&m.category) {
+            cats[i] = m.category.clone();
+        }
+    }
+    // "three consoles, each with a seat in front of it": a seat said of each of them is
+    // their usual seat (the console's office chair), whatever its kind.
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        let (Some(x), "seat") = (m.each_of, head.as_str()) else {
+            continue;
+        };
+        let seats: BTreeMap<String, u32> = scene_seats.clone();
+        if let Some(seat) = seat_for(&cats[x], &seats) {
+            cats[i] = seat;
         }
     }
     // "two chairs at each table": (category, per instance, category of the distributor).
@@ -404,7 +454,16 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             continue;
         }
         if !m.known && !unknown.contains_key(cat) {
-            let (size, how) = unknown_size(kb, cat);
+            // "the instructor's mat" in a yoga studio: sized as the scene's own mats
+            let own = scene.and_then(|s| {
+                let head = cat.rsplit(' ').next()?;
+                let (c, _) = s
+                    .objects
+                    .iter()
+                    .find(|(c, _)| c.rsplit(' ').next() == Some(head))?;
+                Some((kb.object(c)?.size, format!("sized as a {c}")))
+            });
+            let (size, how) = own.unwrap_or_else(|| unknown_size(kb, cat));
             notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
             unknown.insert(cat.clone(), size);
         }
@@ -508,6 +567,28 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     // Named objects fill the roles of the defaults they replace.
     notes.extend(super::roles::apply(&mut counts, &named, r.exclusive));
+    // "the invigilator's desk": a particular one takes the place of the scene's single
+    // default of its kind (the teacher's desk).
+    for (m, cat) in r.mentions.iter().zip(&cats) {
+        let Some(head) = m.owner.as_ref().and(cat.rsplit(' ').next()) else {
+            continue;
+        };
+        if m.negated {
+            continue;
+        }
+        let gone: Vec<String> = defaults
+            .iter()
+            .filter(|(c, n)| **n == 1 && !named.contains(*c) && c.rsplit(' ').next() == Some(head))
+            .map(|(c, _)| c.clone())
+            .collect();
+        for c in gone {
+            if counts.remove(&c).is_some() {
+                notes.push(format!(
+                    "default {c} left out: the named {cat} takes its place"
+                ));
+            }
+        }
+    }
     for c in &others {
         if !named.contains(c) {
             counts.remove(c);
@@ -550,10 +631,39 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         relations: vec![],
     };
     let cats_now: Vec<String> = counts.keys().cloned().collect();
+    let default_probe = SceneSpec {
+        objects: defaults
+            .iter()
+            .map(|(c, n)| {
+                let size = kb.object(c).map(|o| o.size).unwrap_or([0.7, 0.6, 0.9]);
+                let o = ObjectSpec {
+                    number: *n,
+                    size,
+                    description: String::new(),
+                    rows: 0,
+                };
+                (c.clone(), o)
+            })
+            .collect(),
+        ..probe.clone()
+    };
     for seat in &cats_now {
-        let Some((_, table)) = super::groups::group_of(&probe, seat) else {
+        // A rug under a table or a coffee table before a sofa is no companion to count by.
+        use super::spec::RelationKind::{Front, Opposite, Under};
+        let Some((kind, table)) = super::groups::group_of(&probe, seat) else {
             continue;
         };
+        if matches!(kind, Under | Front | Opposite) {
+            continue;
+        }
+        // A default seat whose own table is gone (the teacher's chair, once "the invigilator's
+        // desk" took the teacher desk's place) is no seat of the others.
+        if defaults.contains_key(seat) && !explicit.contains_key(seat) {
+            let was = super::groups::group_of(&default_probe, seat).map(|g| g.1);
+            if was.is_some_and(|w| w != table) {
+                continue;
+            }
+        }
         let Some(per) = super::groups::seats_per(&probe, seat, &table) else {
             continue;
         };
@@ -883,5 +993,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         named,
         notes,
         understood,
+        negated,
+        exclusive: r.exclusive,
     })
 }

@@ -40,13 +40,24 @@ fn roles() -> &'static Roles {
     })
 }
 
-/// The role `category` fills, if any.
+/// The role `category` fills, if any; a category the knowledge base lacks ("captain chair",
+/// "child bed") fills the role of its head noun's category.
 pub fn role_of(category: &str) -> Option<&'static str> {
-    roles()
-        .roles
-        .iter()
-        .find(|(_, cats)| cats.iter().any(|c| c == category))
-        .map(|(r, _)| r.as_str())
+    let listed = |c: &str| {
+        roles()
+            .roles
+            .iter()
+            .find(|(_, cats)| cats.iter().any(|x| x == c))
+            .map(|(r, _)| r.as_str())
+    };
+    listed(category).or_else(|| {
+        let kb = super::kb::KnowledgeBase::builtin();
+        if kb.object(category).is_some() {
+            return None;
+        }
+        let head = category.rsplit(' ').next()?;
+        listed(&kb.object(head)?.category)
+    })
 }
 
 /// Removes from `counts` the defaults (categories not in `named`) that a named object's role
@@ -73,7 +84,11 @@ pub fn apply(
         return notes;
     }
     for (role, cats) in &roles().roles {
-        let Some(by) = cats.iter().find(|c| named.contains(*c)) else {
+        let by = cats
+            .iter()
+            .find(|c| named.contains(*c))
+            .or_else(|| named.iter().find(|c| role_of(c) == Some(role.as_str())));
+        let Some(by) = by else {
             continue;
         };
         for c in cats {
@@ -124,6 +139,15 @@ mod tests {
         assert_eq!(c.get("nightstand"), Some(&2));
         let c = plan(&[("blackboard", 1)], &["whiteboard"]);
         assert!(!c.contains_key("blackboard"), "{c:?}");
+    }
+
+    #[test]
+    fn an_unknown_object_fills_the_role_of_its_head_noun() {
+        let c = plan(&[("bed", 1), ("nightstand", 2)], &["child bed"]);
+        assert!(!c.contains_key("bed"), "{c:?}");
+        // a known category is never read through its head ("coffee table" is no meal table)
+        let c = plan(&[("dining table", 1)], &["coffee table"]);
+        assert!(c.contains_key("dining table"), "{c:?}");
     }
 
     #[test]

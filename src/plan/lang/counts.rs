@@ -82,8 +82,8 @@ fn feature_count(before: &str, of: Option<&str>) -> Option<(usize, u32)> {
 /// Reads the distributive counts, seats and rows of `r` (after its mentions).
 pub(super) fn read_counts(r: &mut Reading) {
     let t = r.text.clone();
-    // "each X" / "every X": a reference to X.
-    let each_before = re(r"\b(?:each|every)\s+(?:[a-z'-]+\s+){0,2}$");
+    // "each X" / "every X" / "per X": a reference to X.
+    let each_before = re(r"\b(?:each|every|per)\s+(?:[a-z'-]+\s+){0,2}$");
     for k in 0..r.mentions.len() {
         let m = &r.mentions[k];
         let from = m.start.saturating_sub(30);
@@ -102,7 +102,7 @@ pub(super) fn read_counts(r: &mut Reading) {
     let n = r.mentions.len();
     // "Y each", "Y apiece", "Y per X", "Y at each X", "Y beneath each one", "Y on each side".
     let tail_re = re(
-        r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece)\b(?: (one|of them|side|sides|end|ends|corner|corners|wall))?)",
+        r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece)\b(?: (one|of them|(?:([a-z'-]+) )?(?:side|sides|end|ends|corner|corners|wall)))?)",
     );
     for k in 0..n {
         let m = &r.mentions[k];
@@ -125,7 +125,14 @@ pub(super) fn read_counts(r: &mut Reading) {
             continue;
         }
         let word = c.get(1).map(|g| g.as_str()).unwrap_or("");
-        let what = c.get(2).map(|g| g.as_str());
+        // "each long side": an adjective may describe the part, nothing else may stand there
+        if c.get(3).is_some_and(|a| !super::is_adjective(a.as_str())) {
+            continue;
+        }
+        let what = c.get(2).map(|g| match c.get(3) {
+            Some(_) => g.as_str().rsplit(' ').next().unwrap_or(g.as_str()),
+            None => g.as_str(),
+        });
         let after_each = c.get(0).map(|g| g.end()).unwrap_or(0);
         let cat = m.category.clone();
         if let Some(p) = what.and_then(part) {
@@ -186,9 +193,16 @@ pub(super) fn read_counts(r: &mut Reading) {
             r.mentions[k].each_of = Some(x);
         }
     }
-    // "X, each with Y and Z", "X, each sheltering a pair of Y".
-    let each_clause = re(r"\beach (?:with|having|holding|has|gets|topped with|[a-z]+ing)\b");
-    for c in each_clause.find_iter(&t) {
+    // "X, each with Y and Z", "X, each sheltering a pair of Y", "X, each in front of a Y"
+    // (only "with" and its kin own a definite Y, "each with its own lamp"; "each facing the
+    // window" names one window).
+    let each_clause = re(
+        r"\beach (?:(with|having|holding|has|gets|topped with)|[a-z]+ing|in front of|under|beneath|beside|next to|by|behind|against|below|above|on top of|on)\b",
+    );
+    for c in each_clause.captures_iter(&t) {
+        let Some(c0) = c.get(0) else { continue };
+        let placed = c.get(1).is_none();
+        let c = c0;
         let Some(x) = distributor(r, c.start(), "") else {
             continue;
         };
@@ -202,6 +216,7 @@ pub(super) fn read_counts(r: &mut Reading) {
                 && !m.negated
                 && !m.reference
                 && m.each_of.is_none()
+                && !(placed && m.definite)
             {
                 m.each_of = Some(x);
             }
