@@ -56,6 +56,9 @@ pub fn run_with(a: GenerateArgs) -> Result<()> {
     let start = Instant::now();
     let models = models_dir(a.models.as_deref());
     let draft = draft_mode(&a, models.as_deref())?;
+    if !draft {
+        check_full(&a, models.as_deref())?;
+    }
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let created = !out.exists();
@@ -237,6 +240,30 @@ pub(super) fn draft_mode(a: &GenerateArgs, models: Option<&Path>) -> Result<bool
     })
 }
 
+/// What full generation needs, checked before anything is planned or written: the model
+/// directory (prior sd) and the numbers the priors take.
+fn check_full(a: &GenerateArgs, models: Option<&Path>) -> Result<()> {
+    if !matches!(a.prior, PriorChoice::Oracle(_)) {
+        let dir = models
+            .context("--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS)")?;
+        dreamscene::diffusion::model::StableDiffusion::check_dir(dir)
+            .map_err(anyhow::Error::msg)?;
+    }
+    if !(a.env_density.is_finite() && a.env_density > 0.0) {
+        bail!(
+            "--env-density {}: expected a positive number of Gaussians per m²",
+            a.env_density
+        );
+    }
+    if !a.resolution.is_multiple_of(8) {
+        bail!(
+            "--resolution {}: the priors need a multiple of 8",
+            a.resolution
+        );
+    }
+    Ok(())
+}
+
 /// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling,
 /// the three environment stages, then scene.json, scene.ply and the renders.
 fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> Result<()> {
@@ -270,18 +297,6 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             )))
         }
     };
-    if !(a.env_density.is_finite() && a.env_density > 0.0) {
-        bail!(
-            "--env-density {}: expected a positive number of Gaussians per m²",
-            a.env_density
-        );
-    }
-    if !a.resolution.is_multiple_of(8) {
-        bail!(
-            "--resolution {}: the priors need a multiple of 8",
-            a.resolution
-        );
-    }
     let cfg = SceneConfig {
         iterations: a.iterations,
         object: ObjectConfig {
