@@ -10,7 +10,7 @@ use std::process::{Command, Stdio};
 use std::time::Instant;
 
 /// Trials: a run killed, its `--resume` killed, a `--resume` let finish.
-const KILLS: usize = 3;
+const KILLS: usize = 2;
 const PROMPT: &str = "a small bedroom with a bed and a desk";
 
 fn tmp(name: &str) -> PathBuf {
