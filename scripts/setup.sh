@@ -2,7 +2,17 @@
 # Installs what dreamscene needs on Debian/Ubuntu: the Vulkan loader, Mesa's lavapipe CPU device,
 # the Khronos validation layer (used by the tests), glslang (compiles the kernels at build time)
 # and the ONNX Runtime library (runs the diffusion models; taken from the PyPI wheel).
+#
+# `bash scripts/setup.sh --cuda` (NVIDIA users): ONNX Runtime's CUDA build instead of the CPU one,
+# with the CUDA and cuDNN runtime libraries it needs, all from PyPI wheels (see below).
 set -euo pipefail
+CUDA=0
+for arg in "$@"; do
+  case "$arg" in
+    --cuda) CUDA=1 ;;
+    *) echo "setup.sh: unknown option $arg (expected --cuda)" >&2; exit 2 ;;
+  esac
+done
 apt_install() {
   local SUDO=""
   [ "$(id -u)" -eq 0 ] || SUDO="sudo"
@@ -50,6 +60,57 @@ PY
   rm -rf "$tmp"
 fi
 test -f "$ORT_DIR/libonnxruntime.so.$ORT_VERSION" || { echo "ONNX Runtime library missing in $ORT_DIR" >&2; exit 1; }
+
+# --cuda: the CUDA build of the same ONNX Runtime (PyPI `onnxruntime-gpu`) replaces the CPU library
+# (it runs the CPU provider too; its CUDA provider is a separate library loaded on demand), with
+# the CUDA runtime, cuBLAS, cuFFT, cuRAND and cuDNN libraries of the `nvidia-*` wheels pip resolves
+# for it (the `cuda` and `cudnn` extras; cuDNN is also a plain dependency). Everything lands flat
+# in $ORT_DIR, and every library gets the run path $ORIGIN (patchelf), so the CUDA provider and
+# cuDNN's own sub-libraries are found there without LD_LIBRARY_PATH. The NVIDIA driver
+# (libcuda.so.1) comes from the system. Nothing here can be checked without an NVIDIA GPU:
+# `dreamscene doctor --provider cuda` says whether the provider loads.
+if [ "$CUDA" = 1 ] && [ ! -f "$ORT_DIR/libonnxruntime_providers_cuda.so" ]; then
+  echo "installing ONNX Runtime $ORT_VERSION with CUDA (onnxruntime-gpu) into $ORT_DIR"
+  command -v patchelf >/dev/null || apt_install patchelf
+  command -v objdump >/dev/null || apt_install binutils
+  tmp="$(mktemp -d)"
+  python3 -m pip download --quiet --only-binary=:all: \
+    "onnxruntime-gpu[cuda,cudnn]==$ORT_VERSION" -d "$tmp"
+  python3 - "$tmp" "$ORT_DIR" <<'PY'
+import glob, os, re, sys, zipfile
+tmp, out = sys.argv[1:]
+lib = re.compile(r"\.so(\.\d+)*$")
+for wheel in glob.glob(os.path.join(tmp, "*.whl")):
+    base = os.path.basename(wheel)
+    with zipfile.ZipFile(wheel) as z:
+        for name in z.namelist():
+            f = os.path.basename(name)
+            ours = base.startswith("onnxruntime_gpu-") and name.startswith("onnxruntime/capi/") \
+                and f.startswith("libonnxruntime")
+            # nvidia-* wheels keep their libraries in nvidia/<component>/lib/
+            theirs = base.startswith("nvidia_") and "/lib/" in name and lib.search(f)
+            if ours or theirs:
+                with open(os.path.join(out, f), "wb") as o:
+                    o.write(z.read(name))
+PY
+  rm -rf "$tmp"
+  for f in "$ORT_DIR"/*.so*; do
+    [ -L "$f" ] || patchelf --set-rpath '$ORIGIN' "$f"
+  done
+  # Every CUDA library the provider links against must now be here (libcuda is the driver's).
+  missing_cuda=()
+  for need in $(objdump -p "$ORT_DIR/libonnxruntime_providers_cuda.so" | awk '/NEEDED/{print $2}'); do
+    case "$need" in
+      libcuda.so*|libc.so*|libm.so*|libdl.so*|librt.so*|libpthread.so*|libstdc++.so*|libgcc_s.so*|ld-linux*) ;;
+      *) [ -e "$ORT_DIR/$need" ] || missing_cuda+=("$need") ;;
+    esac
+  done
+  if ((${#missing_cuda[@]})); then
+    echo "the CUDA provider needs ${missing_cuda[*]}, which no wheel pip resolved provided; install" \
+      "them (CUDA toolkit / cuDNN) and put them in $ORT_DIR" >&2
+    exit 1
+  fi
+fi
 
 # ONNX Runtime's WebGPU execution provider (a plugin library on Dawn, Vulkan on Linux; `--provider
 # webgpu`), from the PyPI wheel `onnxruntime-ep-webgpu`, beside libonnxruntime.

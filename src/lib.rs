@@ -3,6 +3,7 @@
 
 pub mod batch;
 pub mod bench;
+pub mod bench_sd;
 pub mod camera;
 pub mod diffusion;
 pub mod edit;

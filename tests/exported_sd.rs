@@ -101,8 +101,9 @@ fn exporter_output_loads_and_matches_pytorch_in_fp32_and_fp16() {
     }
 }
 
-/// The batched prior (one autoencoder encode and decode for all views of an iteration) gives
-/// each view the target the per-view prior gives it: same noise, same timesteps, same image.
+/// The batched prior (one autoencoder encode and decode and one UNet run per guidance step for
+/// all views of an iteration) gives each view the target that running the views one by one
+/// gives it: same noise, same timesteps, the same image up to float rounding.
 #[test]
 fn batched_image_targets_equal_the_per_view_targets() {
     use dreamscene::diffusion::guidance::{MtsSettings, OBJECT_MTS};
@@ -124,21 +125,31 @@ fn batched_image_targets_equal_the_per_view_targets() {
     let refs: Vec<&[f32]> = renders.iter().map(Vec::as_slice).collect();
     for rule in [Rule::Mts { m: 4 }, Rule::PseudoGt] {
         let guide = || Guide::new(rule, OBJECT_MTS, MtsSettings::default(), Codec::Vae, 7);
+        // One view's prompts a run: the views one by one.
+        sd.set_unet_max_batch(Some(3));
+        sd.take_times();
         let mut one = guide();
-        let per: Vec<_> = refs
-            .iter()
-            .zip(conds)
-            .map(|(r, c)| one.image_target(&mut sd, c, r, 32, 32, 10).unwrap())
-            .collect();
+        let per = one
+            .image_targets(&mut sd, &conds, &refs, 32, 32, 10)
+            .unwrap();
+        let split = sd.take_times();
+        sd.set_unet_max_batch(None);
         let mut all = guide();
         let batched = all
             .image_targets(&mut sd, &conds, &refs, 32, 32, 10)
             .unwrap();
+        let joint = sd.take_times();
         assert_eq!(batched.len(), 3);
         assert_eq!(one.rng_position(), all.rng_position(), "{rule:?}");
+        // One run per chain point (t_start and each sampled timestep) for all three views.
+        let points = batched[0].timesteps.len() + 1;
+        let points = if rule == Rule::PseudoGt { 2 } else { points };
+        assert_eq!(joint.unet_runs, points, "{rule:?}");
+        assert_eq!(split.unet_runs, 3 * points, "{rule:?}");
+        assert_eq!(joint.unet_items, split.unet_items, "{rule:?}");
         for (i, (a, b)) in per.iter().zip(&batched).enumerate() {
             assert_eq!(a.timesteps, b.timesteps, "{rule:?} view {i}");
-            // The autoencoder over a batch of 3 against 3 batches of 1: float rounding only.
+            // The UNet over a batch of 9 against 3 batches of 3: float rounding only.
             let e = rel_err(&b.image, &a.image, "batched target");
             assert!(e < 1e-5, "{rule:?} view {i}: relative error {e}");
         }

@@ -309,7 +309,10 @@ fn help_entries(help: &str) -> Vec<(String, String)> {
     let lines: Vec<&str> = help.lines().collect();
     let is_entry = |l: &str| {
         let t = l.trim_start();
-        l.starts_with("  ") && (t.starts_with('-') || t.starts_with('<'))
+        // `--flag`, `-h, --help` or `<ARG>`; not a value list's `- cpu:`.
+        let flag =
+            t.starts_with('-') && t[1..].starts_with(|c: char| c == '-' || c.is_alphanumeric());
+        l.starts_with("  ") && (flag || t.starts_with('<'))
     };
     let mut out = vec![];
     let mut in_list = false;

@@ -166,6 +166,7 @@ fn scene_args(a: &Args, e: &Entry, out: &Path) -> Result<GenerateArgs> {
         dialogue: None,
         llm: None,
         models: e.models.clone().or_else(|| a.models.clone()),
+        provider: dreamscene::diffusion::runtime::Provider::Auto,
         prior,
         draft: e.draft.unwrap_or(a.draft),
         iterations: e.iterations.unwrap_or(a.iterations).max(1),

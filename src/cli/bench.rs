@@ -16,11 +16,17 @@ pub struct Args {
     /// and 512² with 20k and 100k Gaussians, split into kernel, prior and host time.
     #[arg(long, conflicts_with = "unet")]
     pub generate: bool,
+    /// The prior of --generate: oracle (a random reference cloud), or sd (the models of
+    /// --models: the iteration split into text encoder, UNet, autoencoder, guidance maths,
+    /// kernels and host, batched and per view).
+    #[arg(long, default_value = "oracle", value_parser = ["oracle", "sd"], requires = "generate")]
+    pub prior: String,
     /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
     #[arg(long, env = "DREAMSCENE_MODELS")]
     pub models: Option<PathBuf>,
-    /// ONNX Runtime execution provider for --unet.
-    #[arg(long, value_enum, default_value_t = Provider::Cpu)]
+    /// ONNX Runtime execution provider for --unet and --generate --prior sd (auto: a GPU
+    /// provider on a real GPU, else the CPU).
+    #[arg(long, value_enum, default_value_t = Provider::Auto)]
     pub provider: Provider,
     /// Latent size for --unet, as HxW (default: what the model declares, else 64x64).
     #[arg(long, value_parser = super::parse_hw)]
@@ -42,6 +48,8 @@ pub struct Args {
 pub fn run(a: Args) -> Result<()> {
     if a.unet {
         bench_unet(a.json, a.models, a.provider, a.latent, a.runs)
+    } else if a.generate && a.prior == "sd" {
+        bench_generate_sd(a.json, a.models, a.provider, a.runs)
     } else if a.generate {
         bench_generate(a.json, a.runs)
     } else {
@@ -84,6 +92,46 @@ fn bench_unet(
         println!("vae decode:          {:>12}", show(Some(f.vae_decode_ms)));
         println!("tiny ae encode:      {:>12}", show(f.taesd_encode_ms));
         println!("tiny ae decode:      {:>12}", show(f.taesd_decode_ms));
+    }
+    Ok(())
+}
+
+/// Render sizes of the sd iteration split: 256² (latents 32², the tiny exports' size) and 512²
+/// (the paper's object resolution, latents 64²); 4 views, 20k Gaussians.
+const SD_SIZES: [u32; 2] = [256, 512];
+
+fn bench_generate_sd(
+    json: bool,
+    models: Option<PathBuf>,
+    provider: Provider,
+    runs: usize,
+) -> Result<()> {
+    let Some(dir) = models else {
+        bail!("bench --generate --prior sd needs --models DIR (or DREAMSCENE_MODELS)");
+    };
+    let ctx = open_device()?;
+    let mut figures = vec![];
+    for size in SD_SIZES {
+        for per_view in [false, true] {
+            let f = dreamscene::bench_sd::bench_generate_sd(
+                &ctx, &dir, provider, 20_000, 4, size, runs, per_view,
+            )?;
+            if !json {
+                println!(
+                    "sd {} {}² {:<8} {:>8.1} ms/it: text {:>6.1}  unet {:>8.1} ({:.0} runs, {:.0} items)  vae {:>7.1}  kernels {:>6.1}  guidance {:>6.1}  host {:>6.1} ms ({:.1}% host)",
+                    f.precision, f.size, f.mode, f.wall_ms, f.text_encoder_ms, f.unet_ms,
+                    f.unet_runs, f.unet_items, f.vae_ms, f.kernels_ms, f.prior_host_ms,
+                    f.host_ms, 100.0 * f.host_share
+                );
+            }
+            figures.push(f);
+        }
+    }
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({ "device": ctx.info().name, "models": dir, "sd_iteration": figures })
+        );
     }
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! `dreamscene edit DIR <operation>`: change a generated scene in place, atomically, with the
 //! edit recorded in `scene.json`'s history and `undo` to take it back.
 use anyhow::{bail, Context as _, Result};
+use dreamscene::diffusion::runtime::Provider;
 use dreamscene::edit::ops::{self, MoveFlags, Pose};
 use dreamscene::edit::parse;
 use dreamscene::edit::reopt::{self, ReoptConfig};
@@ -36,6 +37,10 @@ struct Reopt {
     #[arg(long, default_value_t = Reopt::DEFAULT.resolution,
           value_parser = clap::value_parser!(u32).range(16..=2048))]
     resolution: u32,
+    /// ONNX Runtime provider of an sd prior's models (auto: a GPU provider on a real GPU, else
+    /// the CPU).
+    #[arg(long, value_enum, default_value_t = Reopt::DEFAULT.provider)]
+    provider: Provider,
 }
 
 impl Reopt {
@@ -43,6 +48,7 @@ impl Reopt {
     const DEFAULT: Reopt = Reopt {
         iterations: 150,
         resolution: 128,
+        provider: Provider::Auto,
     };
 }
 
@@ -220,6 +226,7 @@ pub fn run(a: Args) -> Result<()> {
         iterations: reopt.iterations,
         resolution: reopt.resolution,
         seed: state.scene.seed,
+        provider: reopt.provider,
     };
     let mut ctx = None;
     let mut device = || -> Result<dreamscene::gpu::Context> {

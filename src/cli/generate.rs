@@ -5,6 +5,7 @@ use super::object::{models_dir, PriorChoice, NO_MODELS};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::scene::{render_views, SceneBox};
 use dreamscene::camera::{write_cameras, Camera};
+use dreamscene::diffusion::runtime::Provider;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
 use dreamscene::plan::spec::{Layout, SceneSpec};
@@ -22,6 +23,8 @@ pub struct GenerateArgs {
     pub dialogue: Option<PathBuf>,
     pub llm: Option<LlmConfig>,
     pub models: Option<PathBuf>,
+    /// ONNX Runtime provider of the sd prior's models.
+    pub provider: Provider,
     pub prior: PriorChoice,
     pub draft: bool,
     pub iterations: u32,
@@ -288,11 +291,8 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         PriorChoice::Oracle(dir) => Box::new(OracleScenePriors::new(&ctx, dir)),
         _ => {
             let dir = models.expect("checked by the caller");
-            let sd = dreamscene::diffusion::model::StableDiffusion::open(dir, &Default::default())
-                .map_err(anyhow::Error::msg)?;
-            Box::new(SdScenePriors(dreamscene::generate::prior::SdPrior::new(
-                sd, text, None,
-            )))
+            let sd = dreamscene::generate::prior_spec::open_sd(dir, a.provider, text, None)?;
+            Box::new(SdScenePriors(sd))
         }
     };
     let cfg = SceneConfig {
@@ -498,6 +498,9 @@ pub struct Args {
     /// Stable Diffusion ONNX export (Optimum layout); default $DREAMSCENE_MODELS.
     #[arg(long)]
     pub models: Option<PathBuf>,
+    /// ONNX Runtime provider for the models (auto: a GPU provider on a real GPU, else the CPU).
+    #[arg(long, value_enum, default_value = "auto")]
+    pub provider: Provider,
     /// auto (sd when models are found, else shape), sd, shape, or oracle:DIR (a reference
     /// scene directory).
     #[arg(long, default_value = "auto", value_parser = parse_scene_prior)]
@@ -561,6 +564,7 @@ pub fn run(a: Args) -> Result<()> {
         dialogue: a.dialogue,
         llm: a.llm.config(),
         models: a.models,
+        provider: a.provider,
         prior: a.prior,
         draft: a.draft,
         iterations: a.iterations,

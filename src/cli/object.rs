@@ -3,14 +3,13 @@
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::object::{turntable, ObjectFrame};
 use dreamscene::diffusion::guidance::MtsRule;
-use dreamscene::diffusion::model::{ModelOptions, StableDiffusion};
 use dreamscene::diffusion::runtime::Provider;
 use dreamscene::diffusion::target::{Rule, ISM_DEFAULT};
 use dreamscene::generate::filter::FilterConfig;
 use dreamscene::generate::object::{
     generate_object, parse_score_rule, Checkpoints, Counts, ObjectConfig,
 };
-use dreamscene::generate::prior::{OraclePrior, Prior, SdPrior};
+use dreamscene::generate::prior::{OraclePrior, Prior};
 use dreamscene::generate::progress::Progress;
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{self, ShapeOptions};
@@ -190,14 +189,6 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
                 }
                 _ => {
                     let dir = models.clone().expect("checked above");
-                    let sd = StableDiffusion::open(
-                        &dir,
-                        &ModelOptions {
-                            provider: a.provider,
-                            threads: None,
-                        },
-                    )
-                    .map_err(anyhow::Error::msg)?;
                     if !a.config.resolution.is_multiple_of(8) {
                         bail!(
                             "--resolution {}: Stable Diffusion needs a multiple of 8",
@@ -209,7 +200,9 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
                     } else {
                         format!("A DSLR photo of {}", a.prompt)
                     };
-                    Box::new(SdPrior::new(sd, &text, None))
+                    Box::new(dreamscene::generate::prior_spec::open_sd(
+                        &dir, a.provider, &text, None,
+                    )?)
                 }
             };
             let name = match &prior {

@@ -14,7 +14,7 @@
 //!
 //! fp32 and fp16 exports both load (inputs and outputs are converted at the boundary). Names, ranks
 //! and element types are checked on load; a mismatch is an error naming the file.
-use super::guidance::{Cond, NoisePredictor};
+use super::guidance::{Cond, NoisePredictor, ViewsPredictor};
 use super::runtime::{Data, OnnxModel, Output, PortSpec, Provider};
 use super::schedule::{Schedule, SchedulerConfig};
 use super::tokenizer::ClipTokenizer;
@@ -55,6 +55,18 @@ pub struct Embedding {
     pub hidden: usize,
 }
 
+/// Wall time spent running each model (seconds) and the UNet's runs and items, since the last
+/// [`StableDiffusion::take_times`]: the split of a prior's time that `bench --generate` reports.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct ModelTimes {
+    pub text_encoder: f64,
+    pub unet: f64,
+    /// Encoder and decoder of the autoencoder (the VAE or the tiny one).
+    pub autoencoder: f64,
+    pub unet_runs: usize,
+    pub unet_items: usize,
+}
+
 /// A loaded pipeline.
 pub struct StableDiffusion {
     pub dir: PathBuf,
@@ -70,6 +82,9 @@ pub struct StableDiffusion {
     probed: Vec<((usize, usize), usize)>,
     /// The most items one UNet run takes (the probe's split), none when unlimited.
     max_batch: Option<usize>,
+    /// A cap on the items of one UNet run set by the caller ([`Self::set_unet_max_batch`]).
+    cap: Option<usize>,
+    times: ModelTimes,
 }
 
 fn read_json(path: &Path) -> Result<serde_json::Value, String> {
@@ -286,6 +301,8 @@ impl StableDiffusion {
             opts: *opts,
             probed: vec![],
             max_batch: None,
+            cap: None,
+            times: ModelTimes::default(),
         })
     }
 
@@ -297,6 +314,18 @@ impl StableDiffusion {
     /// The most items one UNet run takes after the probe split the batch.
     pub fn unet_max_batch(&self) -> Option<usize> {
         self.max_batch
+    }
+
+    /// Caps the items of one UNet run (`None`: no cap beyond the probe's). A cap of one view's
+    /// prompts runs the views of an iteration one by one, as before they were batched (for
+    /// benchmarks and tests; the results are the same).
+    pub fn set_unet_max_batch(&mut self, most: Option<usize>) {
+        self.cap = most.map(|m| m.max(1));
+    }
+
+    /// The time spent in each model since the last call, and resets it.
+    pub fn take_times(&mut self) -> ModelTimes {
+        std::mem::take(&mut self.times)
     }
 
     /// Probes a GPU provider at a UNet run of `batch` items at latent size `hw` (once per size)
@@ -337,7 +366,9 @@ impl StableDiffusion {
                     provider: Provider::Cpu,
                     ..self.opts
                 };
+                let (cap, times) = (self.cap, self.times);
                 *self = StableDiffusion::open(&self.dir, &cpu)?;
+                (self.cap, self.times) = (cap, times);
             }
         }
         self.probed.push((hw, batch));
@@ -383,8 +414,12 @@ impl StableDiffusion {
             return Err("token id rows differ in length".into());
         }
         let flat: Vec<i64> = ids.concat();
-        self.text_encoder
-            .run(&[(vec![ids.len() as i64, seq as i64], Data::I64(&flat))])
+        let t0 = std::time::Instant::now();
+        let out = self
+            .text_encoder
+            .run(&[(vec![ids.len() as i64, seq as i64], Data::I64(&flat))]);
+        self.times.text_encoder += t0.elapsed().as_secs_f64();
+        out
     }
 
     /// Tokenises and encodes prompts (one batch).
@@ -428,7 +463,13 @@ impl StableDiffusion {
             ));
         }
         self.probe_provider(hw, b)?;
-        if let Some(m) = self.max_batch.filter(|m| *m < b) {
+        if let Some(m) = self
+            .max_batch
+            .into_iter()
+            .chain(self.cap)
+            .min()
+            .filter(|m| *m < b)
+        {
             let mut out = Vec::with_capacity(b);
             for (s, c) in samples.chunks(m).zip(conds.chunks(m)) {
                 out.extend(self.unet_batch(s, hw, t, c)?);
@@ -444,6 +485,7 @@ impl StableDiffusion {
             [1] => (vec![1], vec![t as f32]),
             _ => (vec![b as i64], vec![t as f32; b]),
         };
+        let t0 = std::time::Instant::now();
         let out = self.unet.run(&[
             (
                 vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
@@ -451,7 +493,11 @@ impl StableDiffusion {
             ),
             (t_shape, Data::F32(&t_vals)),
             (vec![b as i64, seq as i64, hidden as i64], Data::F32(&ehs)),
-        ])?;
+        ]);
+        self.times.unet += t0.elapsed().as_secs_f64();
+        self.times.unet_runs += 1;
+        self.times.unet_items += b;
+        let out = out?;
         let (shape, data) = out.into_iter().next().ok_or("UNet gave no output")?;
         if shape.iter().product::<i64>() as usize != b * n {
             return Err(format!(
@@ -484,13 +530,14 @@ impl StableDiffusion {
         let ae = self.codec(which);
         let inv = (1.0 / ae.scaling) as f32;
         let scaled: Vec<f32> = z.iter().map(|v| v * inv).collect();
-        let (shape, data) = ae
-            .decoder
-            .run(&[(
-                vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
-                Data::F32(&scaled),
-            )])?
-            .remove(0);
+        let t0 = std::time::Instant::now();
+        let out = ae.decoder.run(&[(
+            vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
+            Data::F32(&scaled),
+        )]);
+        self.times.autoencoder += t0.elapsed().as_secs_f64();
+        let ae = self.codec(which);
+        let (shape, data) = out?.remove(0);
         if shape.len() != 4 || shape[0] != b as i64 || shape[1] != 3 {
             return Err(format!(
                 "{}: decoded shape {shape:?}, expected [{b}, 3, H, W]",
@@ -518,12 +565,13 @@ impl StableDiffusion {
                 "{dir}: no encoder for this autoencoder (vae_encoder/ or taesd_encoder/ missing)"
             )
         })?;
-        let (shape, data) = enc
-            .run(&[(
-                vec![b as i64, 3, hw.0 as i64, hw.1 as i64],
-                Data::F32(image),
-            )])?
-            .remove(0);
+        let t0 = std::time::Instant::now();
+        let out = enc.run(&[(
+            vec![b as i64, 3, hw.0 as i64, hw.1 as i64],
+            Data::F32(image),
+        )]);
+        let took = t0.elapsed().as_secs_f64();
+        let (shape, data) = out?.remove(0);
         let ch = shape.get(1).copied().unwrap_or(0) as usize;
         if shape.len() != 4 || (ch != c && ch != 2 * c) {
             return Err(format!(
@@ -538,6 +586,7 @@ impl StableDiffusion {
         for item in data.chunks(ch * h * w) {
             z.extend(item[..c * h * w].iter().map(|v| v * scaling));
         }
+        self.times.autoencoder += took;
         Ok((z, (h, w)))
     }
 }
@@ -608,6 +657,48 @@ impl NoisePredictor for UnetPredictor<'_> {
         let samples: Vec<&[f32]> = vec![x; conds.len()];
         self.runs += 1;
         self.sd.unet_batch(&samples, self.hw, t, &embs)
+    }
+}
+
+/// The UNet as a [`ViewsPredictor`]: view `v` under `conds[v]`'s prompts, every call one run
+/// over views × conditions (view-major), split only where the provider probe or
+/// [`StableDiffusion::set_unet_max_batch`] caps a run.
+pub struct UnetViews<'a> {
+    pub sd: &'a mut StableDiffusion,
+    pub conds: &'a [&'a Conditioning],
+    pub hw: (usize, usize),
+    /// Calls made (for benchmarks and tests).
+    pub runs: usize,
+}
+
+impl ViewsPredictor for UnetViews<'_> {
+    fn predict_views(
+        &mut self,
+        xs: &[&[f32]],
+        t: u32,
+        conds: &[Cond],
+    ) -> Result<Vec<Vec<Vec<f32>>>, String> {
+        if xs.len() != self.conds.len() {
+            return Err(format!(
+                "{} latents for {} views' prompts",
+                xs.len(),
+                self.conds.len()
+            ));
+        }
+        let mut samples: Vec<&[f32]> = Vec::with_capacity(xs.len() * conds.len());
+        let mut embs = Vec::with_capacity(samples.capacity());
+        for (x, cond) in xs.iter().zip(self.conds) {
+            for c in conds {
+                samples.push(x);
+                embs.push(cond.get(*c)?);
+            }
+        }
+        self.runs += 1;
+        let mut out = self.sd.unet_batch(&samples, self.hw, t, &embs)?.into_iter();
+        Ok(xs
+            .iter()
+            .map(|_| out.by_ref().take(conds.len()).collect())
+            .collect())
     }
 }
 

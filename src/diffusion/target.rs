@@ -11,13 +11,13 @@
 //! vanish exactly where g does, so the fixed points of the guidance are kept. The target is
 //! recomputed every iteration, as the authors' pseudo-ground-truth views are; a small autoencoder
 //! (TAESD, `Codec::Fast`) keeps the per-iteration encode/decode cheap.
-use super::guidance::NoisePredictor;
 use super::guidance::{
-    code_schedule, dreamtime_t, edit_gradient, ism_gradient, mts_gradient, paper_schedule,
-    pseudo_gt, sds_gradient, MtsRange, MtsRule, MtsSettings,
+    code_schedule, dreamtime_t, edit_gradients, ism_gradients, mts_gradients, paper_schedule,
+    pseudo_gts, sds_gradients, EachView, MtsRange, MtsRule, MtsSettings, NoisePredictor,
+    ViewsPredictor,
 };
 use super::model::{
-    chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetPredictor,
+    chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetViews,
 };
 use super::schedule::Schedule;
 use rand::{Rng, SeedableRng};
@@ -56,6 +56,10 @@ pub enum Rule {
         xs_steps: u32,
     },
 }
+
+/// One view's latent target: the guided latent, the timesteps sampled and the RMS of the
+/// latent gradient (0 for pseudo-ground truth).
+pub type LatentTarget = (Vec<f32>, Vec<u32>, f64);
 
 /// One iteration's image target.
 #[derive(Debug, Clone)]
@@ -107,18 +111,44 @@ impl Guide {
     }
 
     /// The latent target for latent `z` at training step `step` under any noise predictor, with
-    /// the timesteps sampled and the gradient's RMS.
+    /// the timesteps sampled and the gradient's RMS ([`Guide::latent_targets`] of one view).
     pub fn latent_target(
         &mut self,
         p: &mut dyn NoisePredictor,
         sched: &Schedule,
         z: &[f32],
         step: u32,
-    ) -> Result<(Vec<f32>, Vec<u32>, f64), String> {
-        let eps: Vec<f32> = (&mut self.rng)
-            .sample_iter(StandardNormal)
-            .take(z.len())
+    ) -> Result<LatentTarget, String> {
+        self.latent_targets(&mut EachView(p), sched, &[z], step)?
+            .pop()
+            .ok_or_else(|| "no view".to_string())
+    }
+
+    /// The latent targets of all views of an iteration (latents `zs`) at training step `step`,
+    /// each with the timesteps sampled and its gradient's RMS. Every view draws its own noise
+    /// (in view order), then the views share one timestep schedule, as the authors' code does
+    /// for its batch of views; so each point of the guidance chain is one prediction over all
+    /// views. One view draws exactly what [`Guide::latent_target`] draws.
+    pub fn latent_targets(
+        &mut self,
+        p: &mut dyn ViewsPredictor,
+        sched: &Schedule,
+        zs: &[&[f32]],
+        step: u32,
+    ) -> Result<Vec<LatentTarget>, String> {
+        if zs.is_empty() {
+            return Ok(vec![]);
+        }
+        let eps: Vec<Vec<f32>> = zs
+            .iter()
+            .map(|z| {
+                (&mut self.rng)
+                    .sample_iter(StandardNormal)
+                    .take(z.len())
+                    .collect()
+            })
             .collect();
+        let eps: Vec<&[f32]> = eps.iter().map(Vec::as_slice).collect();
         let ts: Vec<u32> = match self.rule {
             Rule::Mts { m } if self.settings.rule == MtsRule::Paper => {
                 paper_schedule(&self.range, step, m, &mut self.rng)
@@ -138,12 +168,14 @@ impl Guide {
         let s = &self.settings;
         let g = match self.rule {
             Rule::PseudoGt => {
-                let x0 = pseudo_gt(p, sched, z, &eps, &ts, s)?;
-                return Ok((x0, ts, 0.0));
+                let x0 = pseudo_gts(p, sched, zs, &eps, &ts, s)?;
+                return Ok(x0.into_iter().map(|x| (x, ts.clone(), 0.0)).collect());
             }
-            Rule::Mts { .. } => mts_gradient(p, sched, z, &eps, &ts, s)?,
-            Rule::Edit => edit_gradient(p, sched, z, &eps, &ts, s)?,
-            Rule::Sds { .. } | Rule::DreamTime { .. } => sds_gradient(p, sched, z, &eps, ts[0], s)?,
+            Rule::Mts { .. } => mts_gradients(p, sched, zs, &eps, &ts, s)?,
+            Rule::Edit => edit_gradients(p, sched, zs, &eps, &ts, s)?,
+            Rule::Sds { .. } | Rule::DreamTime { .. } => {
+                sds_gradients(p, sched, zs, &eps, ts[0], s)?
+            }
             Rule::Ism {
                 delta,
                 xs_delta,
@@ -152,16 +184,24 @@ impl Guide {
             } => {
                 let t = ts[0];
                 let s_t = t.saturating_sub(delta).max(s.t_start);
-                ism_gradient(p, sched, z, &eps, s_t, t, xs_delta.max(1), xs_steps, s)?
+                ism_gradients(p, sched, zs, &eps, s_t, t, xs_delta.max(1), xs_steps, s)?
             }
         };
-        let rms =
-            (g.iter().map(|v| (*v as f64).powi(2)).sum::<f64>() / g.len().max(1) as f64).sqrt();
-        let target = z.iter().zip(&g).map(|(a, b)| a - b).collect();
-        Ok((target, ts, rms))
+        Ok(zs
+            .iter()
+            .zip(g)
+            .map(|(z, g)| {
+                let rms = (g.iter().map(|v| (*v as f64).powi(2)).sum::<f64>()
+                    / g.len().max(1) as f64)
+                    .sqrt();
+                let target = z.iter().zip(&g).map(|(a, b)| a - b).collect();
+                (target, ts.clone(), rms)
+            })
+            .collect())
     }
 
-    /// The image target for a render (`h × w × 3`, [0, 1]): encode, guide, decode.
+    /// The image target for a render (`h × w × 3`, [0, 1]): encode, guide, decode
+    /// ([`Guide::image_targets`] of one view).
     pub fn image_target(
         &mut self,
         sd: &mut StableDiffusion,
@@ -171,38 +211,17 @@ impl Guide {
         height: usize,
         step: u32,
     ) -> Result<ImageTarget, String> {
-        if render.len() != width * height * 3 {
-            return Err(format!(
-                "render has {} values, expected {width}×{height}×3",
-                render.len()
-            ));
-        }
-        let x = hwc01_to_chw11(render, width, height);
-        let (z, hw) = sd.encode(&x, 1, (height, width), self.codec)?;
-        let sched = sd.schedule.clone();
-        let mut p = UnetPredictor {
-            sd,
-            cond,
-            hw,
-            runs: 0,
-        };
-        let (zt, timesteps, latent_rms) = self.latent_target(&mut p, &sched, &z, step)?;
-        let (img, (h, w)) = sd.decode(&zt, 1, hw, self.codec)?;
-        Ok(ImageTarget {
-            image: chw11_to_hwc01(&img, w, h),
-            width: w,
-            height: h,
-            timesteps,
-            latent_rms,
-        })
+        self.image_targets(sd, &[cond], &[render], width, height, step)?
+            .pop()
+            .ok_or_else(|| "no view".to_string())
     }
 }
 
 impl Guide {
     /// The image targets of all views of an iteration (each `h × w × 3` in [0, 1], view `i`
-    /// under `conds[i]`): one autoencoder encode of the whole batch, the guidance of each view
-    /// in order (the same noise and timesteps as [`Guide::image_target`] view by view), one
-    /// decode of the whole batch.
+    /// under `conds[i]`): one autoencoder encode of the whole batch, the guidance of all views
+    /// together ([`Guide::latent_targets`]: one UNet run over views × prompts per chain point),
+    /// one decode of the whole batch.
     pub fn image_targets(
         &mut self,
         sd: &mut StableDiffusion,
@@ -232,16 +251,16 @@ impl Guide {
         let (z, hw) = sd.encode(&x, n, (height, width), self.codec)?;
         let per = z.len() / n;
         let sched = sd.schedule.clone();
+        let zs: Vec<&[f32]> = z.chunks_exact(per).collect();
+        let mut p = UnetViews {
+            sd,
+            conds,
+            hw,
+            runs: 0,
+        };
         let mut guided = Vec::with_capacity(z.len());
         let mut meta = Vec::with_capacity(n);
-        for (zi, cond) in z.chunks_exact(per).zip(conds) {
-            let mut p = UnetPredictor {
-                sd,
-                cond,
-                hw,
-                runs: 0,
-            };
-            let (zt, timesteps, latent_rms) = self.latent_target(&mut p, &sched, zi, step)?;
+        for (zt, timesteps, latent_rms) in self.latent_targets(&mut p, &sched, &zs, step)? {
             guided.extend(zt);
             meta.push((timesteps, latent_rms));
         }

@@ -16,6 +16,7 @@ use crate::camera::scene::{valid_viewpoint, SceneBox};
 use crate::camera::Camera;
 use crate::diffusion::guidance::{MtsRange, MtsSettings, SCENE_FLOOR, SCENE_RECON};
 use crate::diffusion::model::Codec;
+use crate::diffusion::runtime::Provider;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::{generate_object, subset, GenError, ObjectConfig};
 use crate::generate::prior::{OraclePrior, Prior, SdPrior};
@@ -46,6 +47,8 @@ pub struct ReoptConfig {
     /// Square render size of their views (a multiple of 8).
     pub resolution: u32,
     pub seed: u64,
+    /// ONNX Runtime provider of an sd prior's models (`--provider`).
+    pub provider: Provider,
 }
 
 impl Default for ReoptConfig {
@@ -54,6 +57,7 @@ impl Default for ReoptConfig {
             iterations: 150,
             resolution: 128,
             seed: 0,
+            provider: Provider::Auto,
         }
     }
 }
@@ -95,16 +99,14 @@ pub(super) fn open_sd(
     models: &std::path::Path,
     prompt: &str,
     edit: Option<&str>,
+    cfg: &ReoptConfig,
 ) -> Result<SdPrior> {
-    let sd = crate::diffusion::model::StableDiffusion::open(models, &Default::default()).map_err(
-        |msg| {
-            GenError::Prior(crate::diffusion::Error::Model {
-                path: models.to_path_buf(),
-                msg,
-            })
-        },
-    )?;
-    Ok(SdPrior::new(sd, prompt, edit))
+    Ok(crate::generate::prior_spec::open_sd(
+        models,
+        cfg.provider,
+        prompt,
+        edit,
+    )?)
 }
 
 /// The oracle's world for the edited scene: the reference's object PLYs (by category; the
@@ -246,7 +248,7 @@ pub fn local_environment(
             let world = oracle_world(state, dir, edit)?;
             Box::new(OraclePrior::new(ctx, &world, None)?)
         }
-        ScenePrior::Sd(m) => Box::new(open_sd(m, &text, None)?),
+        ScenePrior::Sd(m) => Box::new(open_sd(m, &text, None, cfg)?),
         ScenePrior::Shape => unreachable!("returned above"),
     };
     let iters = cfg.iterations;
@@ -434,7 +436,7 @@ pub fn add_object(
     let (g, how) = match scene_prior(state)? {
         ScenePrior::Shape => (init, "shape prior".to_string()),
         ScenePrior::Sd(m) => {
-            let mut p = open_sd(&m, &planned.description, None)?;
+            let mut p = open_sd(&m, &planned.description, None, cfg)?;
             let mut pr = Progress::new(0, true);
             let (g, _) = generate_object(need(ctx)?, &init, &frame, &mut p, &ocfg, None, &mut pr)?;
             (g, format!("sd prior, {object_iterations} iterations"))

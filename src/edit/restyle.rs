@@ -8,7 +8,7 @@ use super::reopt::{need, open_sd, scene_prior, ReoptConfig, ScenePrior, BATCH, F
 use super::state::SceneState;
 use super::{EditError, Result};
 use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
-use crate::diffusion::guidance::{MtsRange, MtsSettings};
+use crate::diffusion::guidance::{MtsRange, MtsSettings, PerView};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::GenError;
@@ -64,25 +64,39 @@ impl Prior for EditOracle {
     fn kind(&self) -> &'static str {
         "oracle"
     }
-    fn target(
+    fn targets(
         &mut self,
         guide: &mut Guide,
-        view: &PriorView,
+        views: &[PriorView],
         step: u32,
-    ) -> std::result::Result<Vec<[f32; 3]>, GenError> {
+    ) -> std::result::Result<Vec<Vec<[f32; 3]>>, GenError> {
         // The oracle's editing rule: ε(y) points at the current render and ε(y_edit) at the
         // second reference, so the edit stops exactly there.
-        let target = to_latent(&self.inner.reference_view(view.camera, view.background)?);
-        let current = to_latent(view.render);
-        let mut p = OraclePredictor {
-            sched: &self.sched,
-            reference: &current,
-            edit: Some(&target),
-        };
-        let (zt, _, _) = guide
-            .latent_target(&mut p, &self.sched, &current, step)
-            .map_err(crate::diffusion::Error::Run)?;
-        Ok(from_latent(&zt, false))
+        let mut targets = Vec::with_capacity(views.len());
+        for v in views {
+            targets.push(to_latent(
+                &self.inner.reference_view(v.camera, v.background)?,
+            ));
+        }
+        let current: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
+        let mut p = PerView(
+            current
+                .iter()
+                .zip(&targets)
+                .map(|(c, t)| OraclePredictor {
+                    sched: &self.sched,
+                    reference: c,
+                    edit: Some(t),
+                })
+                .collect(),
+        );
+        let zs: Vec<&[f32]> = current.iter().map(Vec::as_slice).collect();
+        Ok(guide
+            .latent_targets(&mut p, &self.sched, &zs, step)
+            .map_err(crate::diffusion::Error::Run)?
+            .into_iter()
+            .map(|(zt, _, _)| from_latent(&zt, false))
+            .collect())
     }
 }
 
@@ -141,7 +155,7 @@ pub fn restyle(
                         }
                         ScenePrior::Sd(m) => {
                             let before = format!("A DSLR photo of a {}", o.category);
-                            Box::new(open_sd(&m, &before, Some(description))?)
+                            Box::new(open_sd(&m, &before, Some(description), cfg)?)
                         }
                         ScenePrior::Shape => unreachable!("matched above"),
                     };

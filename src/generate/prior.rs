@@ -16,7 +16,7 @@
 //! The `shape` prior has no targets (the object is its shape prior), so it is not a [`Prior`].
 use super::object::GenError;
 use crate::camera::Camera;
-use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor};
+use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor, PerView};
 use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
 use crate::diffusion::target::Guide;
@@ -46,23 +46,26 @@ pub struct PriorView<'a> {
 pub trait Prior {
     /// What the prior is, for logs and `object.json` (`sd`, `oracle`).
     fn kind(&self) -> &'static str;
-    /// The image target for `view` at training step `step` under `guide`, row-major like the
-    /// render. Pseudo-ground truth is clamped to [0, 1].
-    fn target(
-        &mut self,
-        guide: &mut Guide,
-        view: &PriorView,
-        step: u32,
-    ) -> Result<Vec<[f32; 3]>, GenError>;
-    /// The targets of all views of an iteration, in order: what [`Prior::target`] gives view by
-    /// view, in one call so that a prior can batch its model calls.
+    /// The targets of all views of an iteration at training step `step` under `guide`, in
+    /// order, each row-major like its render (pseudo-ground truth clamped to [0, 1]). The views
+    /// share the iteration's timesteps ([`Guide::latent_targets`]), so a prior runs its model
+    /// once per guidance step for all of them.
     fn targets(
         &mut self,
         guide: &mut Guide,
         views: &[PriorView],
         step: u32,
-    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
-        views.iter().map(|v| self.target(guide, v, step)).collect()
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError>;
+    /// The target of one view ([`Prior::targets`] of one).
+    fn target(
+        &mut self,
+        guide: &mut Guide,
+        view: &PriorView,
+        step: u32,
+    ) -> Result<Vec<[f32; 3]>, GenError> {
+        self.targets(guide, std::slice::from_ref(view), step)?
+            .pop()
+            .ok_or_else(|| Error::Run("the prior returned no target".into()).into())
     }
 }
 
@@ -185,27 +188,43 @@ impl Prior for OraclePrior {
         "oracle"
     }
 
-    fn target(
+    fn targets(
         &mut self,
         guide: &mut Guide,
-        view: &PriorView,
+        views: &[PriorView],
         step: u32,
-    ) -> Result<Vec<[f32; 3]>, GenError> {
-        let reference = to_latent(&self.render(&self.reference, view.camera, view.background)?);
-        let edit = match &self.edit {
-            Some(e) => Some(to_latent(&self.render(e, view.camera, view.background)?)),
-            None => None,
-        };
-        let z = to_latent(view.render);
-        let mut p = OraclePredictor {
-            sched: &self.sched,
-            reference: &reference,
-            edit: edit.as_deref(),
-        };
-        let (zt, _, _) = guide
-            .latent_target(&mut p, &self.sched, &z, step)
-            .map_err(Error::Run)?;
-        Ok(from_latent(&zt, is_pseudo_gt(guide)))
+    ) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
+        let mut refs = Vec::with_capacity(views.len());
+        let mut edits = Vec::with_capacity(views.len());
+        for v in views {
+            refs.push(to_latent(&self.render(
+                &self.reference,
+                v.camera,
+                v.background,
+            )?));
+            if let Some(e) = &self.edit {
+                edits.push(to_latent(&self.render(e, v.camera, v.background)?));
+            }
+        }
+        let zs: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
+        let zs: Vec<&[f32]> = zs.iter().map(Vec::as_slice).collect();
+        let mut p = PerView(
+            refs.iter()
+                .enumerate()
+                .map(|(i, r)| OraclePredictor {
+                    sched: &self.sched,
+                    reference: r,
+                    edit: edits.get(i).map(Vec::as_slice),
+                })
+                .collect(),
+        );
+        let clamp = is_pseudo_gt(guide);
+        Ok(guide
+            .latent_targets(&mut p, &self.sched, &zs, step)
+            .map_err(Error::Run)?
+            .into_iter()
+            .map(|(zt, _, _)| from_latent(&zt, clamp))
+            .collect())
     }
 }
 
@@ -262,19 +281,8 @@ impl Prior for SdPrior {
         "sd"
     }
 
-    fn target(
-        &mut self,
-        guide: &mut Guide,
-        view: &PriorView,
-        step: u32,
-    ) -> Result<Vec<[f32; 3]>, GenError> {
-        Ok(self
-            .targets(guide, std::slice::from_ref(view), step)?
-            .remove(0))
-    }
-
     /// One encode and one decode of the autoencoder for all views (the views of an iteration
-    /// share their size); the guidance per view in order, as view by view.
+    /// share their size), and one UNet run over views × prompts per guidance step.
     fn targets(
         &mut self,
         guide: &mut Guide,

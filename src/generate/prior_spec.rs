@@ -2,6 +2,9 @@
 //! resolves against the model directory, and scene.json's `prior` records the resolved choice so
 //! that `edit` reuses exactly what `generate` used.
 use super::object::GenError;
+use super::prior::SdPrior;
+use crate::diffusion::model::{ModelOptions, StableDiffusion};
+use crate::diffusion::runtime::Provider;
 use crate::diffusion::Error;
 use crate::scene::dir;
 use std::path::{Path, PathBuf};
@@ -90,6 +93,28 @@ impl PriorSpec {
             k => Err(bad(&format!("unknown prior kind `{k}` in scene.json"))),
         }
     }
+}
+
+/// The Stable Diffusion prior on the models in `models`, run by `provider` (`--provider`; `auto`
+/// resolves for this machine): every command that makes an sd prior (`object`, `generate`,
+/// `edit`, `bench`) opens it here, so the provider reaches the model sessions.
+pub fn open_sd(
+    models: &Path,
+    provider: Provider,
+    prompt: &str,
+    edit: Option<&str>,
+) -> Result<SdPrior, GenError> {
+    let opts = ModelOptions {
+        provider,
+        threads: None,
+    };
+    let sd = StableDiffusion::open(models, &opts).map_err(|msg| {
+        GenError::Prior(Error::Model {
+            path: models.to_path_buf(),
+            msg,
+        })
+    })?;
+    Ok(SdPrior::new(sd, prompt, edit))
 }
 
 impl std::str::FromStr for PriorSpec {

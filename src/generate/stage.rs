@@ -12,6 +12,7 @@ use crate::camera::Camera;
 use crate::diffusion::target::Guide;
 use crate::diffusion::Error;
 use crate::gpu::{Context, Timings};
+use crate::splat::guided::BatchView;
 use crate::splat::train::{FitConfig, StepReport, Trainer, View};
 use crate::splat::Gaussians;
 use rand_chacha::ChaCha8Rng;
@@ -143,13 +144,49 @@ pub fn guided_iteration(
     let t0 = Instant::now();
     let step = t.iteration();
     let mut report = IterationReport::default();
+    let (batch, targets) = render_and_ask(
+        t,
+        prior,
+        guide,
+        views,
+        step,
+        &mut report.kernels,
+        &mut report.prior_seconds,
+    )?;
+    let mut grads = Vec::with_capacity(views.len());
+    for (bv, target) in batch.iter().zip(&targets) {
+        let (l, g) = image_loss(&bv.color, target, guide.settings.lambda);
+        report.loss += l / views.len() as f64;
+        grads.push(g);
+    }
+    let ta = Instant::now();
+    let timings = t.apply(&batch, &grads, trainable)?;
+    report.apply_seconds = ta.elapsed().as_secs_f64();
+    report.kernels.entries.extend(timings.entries);
+    t.recycle(batch);
+    report.seconds = t0.elapsed().as_secs_f64();
+    Ok(report)
+}
+
+/// An image target, row-major like its render.
+type Target = Vec<[f32; 3]>;
+
+/// Renders `views` with `t` (their GPU times added to `kernels`) and asks `prior` for all their
+/// targets at `step` in one call (its wall time added to `prior_seconds`): the setup that the
+/// guided iteration and the pseudo-ground-truth pass share.
+fn render_and_ask(
+    t: &mut Trainer,
+    prior: &mut dyn Prior,
+    guide: &mut Guide,
+    views: &[GuidedView],
+    step: u32,
+    kernels: &mut Timings,
+    prior_seconds: &mut f64,
+) -> Result<(Vec<BatchView>, Vec<Target>), GenError> {
     let mut batch = Vec::with_capacity(views.len());
     for v in views {
         let bv = t.render_view(&v.camera, v.background)?;
-        report
-            .kernels
-            .entries
-            .extend_from_slice(&bv.frame.timings.entries);
+        kernels.entries.extend_from_slice(&bv.frame.timings.entries);
         batch.push(bv);
     }
     let asked: Vec<PriorView> = views
@@ -165,7 +202,7 @@ pub fn guided_iteration(
         .collect();
     let tp = Instant::now();
     let targets = prior.targets(guide, &asked, step)?;
-    report.prior_seconds = tp.elapsed().as_secs_f64();
+    *prior_seconds += tp.elapsed().as_secs_f64();
     drop(asked);
     if targets.len() != views.len() {
         return Err(GenError::Prior(Error::Run(format!(
@@ -174,19 +211,7 @@ pub fn guided_iteration(
             views.len()
         ))));
     }
-    let mut grads = Vec::with_capacity(views.len());
-    for (bv, target) in batch.iter().zip(&targets) {
-        let (l, g) = image_loss(&bv.color, target, guide.settings.lambda);
-        report.loss += l / views.len() as f64;
-        grads.push(g);
-    }
-    let ta = Instant::now();
-    let timings = t.apply(&batch, &grads, trainable)?;
-    report.apply_seconds = ta.elapsed().as_secs_f64();
-    report.kernels.entries.extend(timings.entries);
-    t.recycle(batch);
-    report.seconds = t0.elapsed().as_secs_f64();
-    Ok(report)
+    Ok((batch, targets))
 }
 
 /// The loss `mean ½ (x − x̃)² / λ` over pixels and channels and its gradient: the guidance's
@@ -224,24 +249,17 @@ pub fn pseudo_ground_truth(
     // A trainer only to render with (its learning rates are never used).
     let mut maker = Trainer::guided(ctx, cloud, FitConfig::default(), 1.0)?;
     let mut out = Vec::with_capacity(views.len());
+    let (mut kernels, mut seconds) = (Timings::default(), 0.0);
     for chunk in views.chunks(batch.max(1)) {
-        let mut rendered = Vec::with_capacity(chunk.len());
-        for v in chunk {
-            rendered.push(maker.render_view(&v.camera, v.background)?);
-        }
-        let asked: Vec<PriorView> = chunk
-            .iter()
-            .zip(&rendered)
-            .map(|(v, bv)| PriorView {
-                camera: &v.camera,
-                render: &bv.color,
-                background: v.background,
-                azimuth: v.azimuth,
-                elevation: v.elevation,
-            })
-            .collect();
-        let targets = prior.targets(guide, &asked, 0)?;
-        drop(asked);
+        let (rendered, targets) = render_and_ask(
+            &mut maker,
+            prior,
+            guide,
+            chunk,
+            0,
+            &mut kernels,
+            &mut seconds,
+        )?;
         for (v, pixels) in chunk.iter().zip(targets) {
             out.push(View {
                 camera: v.camera.clone(),

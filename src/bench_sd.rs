@@ -1,0 +1,128 @@
+//! `dreamscene bench --generate --prior sd`: one formation iteration of object generation with
+//! the Stable Diffusion prior, split into the text encoder, the UNet, the autoencoder, the
+//! guidance maths on the host, the kernels and the rest, with the views of an iteration in one
+//! UNet run per guidance step (batched) and one view at a time (per view), measured in one run.
+use crate::camera::object::{ObjectFrame, OrbitRanges};
+use crate::diffusion::runtime::Provider;
+use crate::generate::object::{
+    formation_guide, formation_iteration, formation_trainer, GenError, ObjectConfig,
+};
+use crate::generate::prior_spec::open_sd;
+use crate::gpu::Context;
+use crate::splat::Gaussians;
+use rand::SeedableRng;
+use serde::Serialize;
+use std::path::Path;
+
+/// Where one sd iteration's time goes (means over the timed iterations, ms).
+#[derive(Debug, Clone, Serialize)]
+pub struct SdIterationFigures {
+    /// `batched` (one UNet run over views × prompts per guidance step) or `per view`.
+    pub mode: String,
+    pub provider: String,
+    pub precision: String,
+    pub views: usize,
+    pub size: u32,
+    pub gaussians: u32,
+    pub wall_ms: f64,
+    pub text_encoder_ms: f64,
+    pub unet_ms: f64,
+    /// The autoencoder's encode and decode.
+    pub vae_ms: f64,
+    /// GPU time from timestamps: renders, backward passes and Adam.
+    pub kernels_ms: f64,
+    /// The prior's own host work: guidance maths, layout conversions, batching.
+    pub prior_host_ms: f64,
+    /// wall − prior − kernels: readbacks, submissions, the loss, bookkeeping.
+    pub host_ms: f64,
+    /// (prior host + host) / wall: the share outside ONNX Runtime and the kernels.
+    pub host_share: f64,
+    pub unet_runs: f64,
+    pub unet_items: f64,
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+/// Times `runs` formation iterations (after two warm-ups) with the sd prior of `models` on
+/// `provider`: `views` views of `size`² a step, a random cloud of `n` Gaussians. With
+/// `per_view`, every UNet run holds one view's prompts (the iteration before batching).
+#[allow(clippy::too_many_arguments, reason = "what one measurement varies")]
+pub fn bench_generate_sd(
+    ctx: &Context,
+    models: &Path,
+    provider: Provider,
+    n: usize,
+    views: usize,
+    size: u32,
+    runs: usize,
+    per_view: bool,
+) -> Result<SdIterationFigures, GenError> {
+    let frame = ObjectFrame {
+        size: [1.0, 0.8, 0.9],
+    };
+    let cfg = ObjectConfig {
+        batch: views,
+        resolution: size,
+        sh_degree: 0,
+        checkpoint_every: 0,
+        ..ObjectConfig::default()
+    };
+    let mut prior = open_sd(models, provider, "A DSLR photo of a wooden chair", None)?;
+    // MTS asks three prompts at every guidance step: one view's worth a run.
+    prior.sd.set_unet_max_batch(per_view.then_some(3));
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(12);
+    let c = frame.centre();
+    let lo = std::array::from_fn(|a| (c[a] - 0.35 * frame.size[a]) as f32);
+    let hi = std::array::from_fn(|a| (c[a] + 0.35 * frame.size[a]) as f32);
+    let cloud = Gaussians::random(&mut rng, n, lo, hi, 0.01, 0);
+    let mut t = formation_trainer(ctx, &cloud, &frame, &cfg)?;
+    t.set_timed(true);
+    let mut guide = formation_guide(&cfg);
+    let ranges = OrbitRanges::default();
+    let mut rows: Vec<[f64; 9]> = vec![];
+    for i in 0..runs.max(1) + 2 {
+        let r = formation_iteration(
+            &mut t, &mut prior, &mut guide, &mut rng, &frame, &ranges, &cfg,
+        )?;
+        let m = prior.sd.take_times();
+        if i < 2 {
+            continue;
+        }
+        let models_ms = (m.text_encoder + m.unet + m.autoencoder) * 1e3;
+        let prior_ms = r.prior_seconds * 1e3;
+        let kernels = r.kernels.total_ms();
+        let wall = r.seconds * 1e3;
+        rows.push([
+            wall,
+            m.text_encoder * 1e3,
+            m.unet * 1e3,
+            m.autoencoder * 1e3,
+            kernels,
+            prior_ms - models_ms,
+            wall - prior_ms - kernels,
+            m.unet_runs as f64,
+            m.unet_items as f64,
+        ]);
+    }
+    let col = |k: usize| mean(&rows.iter().map(|r| r[k]).collect::<Vec<_>>());
+    Ok(SdIterationFigures {
+        mode: if per_view { "per view" } else { "batched" }.into(),
+        provider: format!("{:?}", prior.sd.provider()).to_lowercase(),
+        precision: prior.sd.precision().into(),
+        views,
+        size,
+        gaussians: n as u32,
+        wall_ms: col(0),
+        text_encoder_ms: col(1),
+        unet_ms: col(2),
+        vae_ms: col(3),
+        kernels_ms: col(4),
+        prior_host_ms: col(5),
+        host_ms: col(6),
+        host_share: (col(5) + col(6)) / col(0).max(1e-9),
+        unet_runs: col(7),
+        unet_items: col(8),
+    })
+}
