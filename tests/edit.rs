@@ -713,12 +713,12 @@ fn an_animated_scene_plays_in_export_render_and_video() {
     ok(&edit(
         &dir,
         &[
-            "--no-render",
             "animate",
             "chair1",
             "move left 0.6 m",
             "--seconds",
             "1",
+            "--no-render",
         ],
     ));
     // The track ends 0.6 m from where it starts (to the chair's left, in the floor plane).
