@@ -225,9 +225,68 @@ pub fn contact_sheet(images: &[(u32, u32, &[[f32; 3]])], cols: u32, tile: u32) -
     sheet
 }
 
+/// The 2D convex hull of `points` (Andrew's monotone chain): counter-clockwise, without
+/// collinear or repeated points; points that are not finite are left out.
+pub fn convex_hull(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let mut p: Vec<[f64; 2]> = points
+        .iter()
+        .copied()
+        .filter(|q| q[0].is_finite() && q[1].is_finite())
+        .collect();
+    p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    let mut hull: Vec<[f64; 2]> = Vec::with_capacity(2 * p.len());
+    // The lower chain left to right, then the upper one right to left.
+    for chain in [p.clone(), p.into_iter().rev().collect()] {
+        let start = hull.len();
+        for q in chain {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(q);
+        }
+        hull.pop();
+    }
+    hull
+}
+
 #[cfg(test)]
 mod tests {
-    use super::env_choice;
+    use super::{convex_hull, env_choice};
+
+    #[test]
+    fn convex_hull_keeps_corners_counter_clockwise_only() {
+        let pts = [
+            [2.0, 0.0],
+            [0.0, 0.0],
+            [1.0, 0.0], // on an edge
+            [2.0, 1.0],
+            [0.0, 1.0],
+            [0.0, 1.0], // twice
+            [1.0, 0.5], // inside
+            [f64::NAN, 5.0],
+            [f64::INFINITY, 0.0],
+        ];
+        let h = convex_hull(&pts);
+        assert_eq!(
+            h,
+            vec![[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]],
+            "the four corners from the lowest-left, counter-clockwise"
+        );
+        assert_eq!(
+            convex_hull(&pts[..2]).len(),
+            2,
+            "two points are their own hull"
+        );
+    }
 
     #[test]
     fn env_choice_reads_known_values_and_ignores_others() {

@@ -425,6 +425,20 @@ fn add_places_a_free_object_next_to_another_and_remove_takes_it_out() {
     let o = edit(&d, &["add", "a flux capacitor", "--no-render"]);
     assert!(!o.status.success());
     assert_eq!(String::from_utf8_lossy(&o.stderr).lines().count(), 1);
+    // A count is that many edits, one instance each; undo takes back the last.
+    let o = edit(&d, &["add", "two floor lamps", "--no-render"]);
+    ok(&o);
+    let s = read_scene(&d).unwrap();
+    let lamps = |s: &dreamscene::scene::dir::SceneFile| {
+        s.objects
+            .iter()
+            .filter(|o| o.category == "floor lamp")
+            .count()
+    };
+    assert_eq!(lamps(&s), 2, "two lamps added");
+    assert_eq!(s.history.len(), 4, "one edit a lamp");
+    ok(&edit(&d, &["undo"]));
+    assert_eq!(lamps(&read_scene(&d).unwrap()), 1, "undo takes back one");
 }
 
 /// Recolours a cloud: `f(position, colour) -> colour`.
@@ -699,12 +713,12 @@ fn an_animated_scene_plays_in_export_render_and_video() {
     ok(&edit(
         &dir,
         &[
-            "--no-render",
             "animate",
             "chair1",
             "move left 0.6 m",
             "--seconds",
             "1",
+            "--no-render",
         ],
     ));
     // The track ends 0.6 m from where it starts (to the chair's left, in the floor plane).

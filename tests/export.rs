@@ -537,23 +537,7 @@ fn a_generated_draft_scene_directory_exports_its_merged_cloud() {
     require_readers();
     let dir = tempdir("draft");
     let scene = dir.join("bedroom");
-    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-        .args([
-            "generate",
-            "a small bedroom",
-            "--draft",
-            "--renders",
-            "0",
-            "--out",
-        ])
-        .arg(&scene)
-        .output()
-        .unwrap();
-    assert!(
-        o.status.success(),
-        "generate: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    draft_scene("a small bedroom", &scene);
     let merged = read_ply(&scene.join("scene.ply")).unwrap();
     assert!(merged.len() > 10_000, "{} Gaussians", merged.len());
     let out = dir.join("bedroom.spz");

@@ -21,7 +21,7 @@ use std::sync::OnceLock;
 mod common;
 #[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
-use export_support::{export_ok, node_dir, require_readers};
+use export_support::{draft_scene, export_ok, node_dir, require_readers};
 
 /// Agent radius the export uses by default.
 const RADIUS: f64 = 0.25;
@@ -42,19 +42,11 @@ fn fixture() -> &'static Fixture {
         let dir = std::env::temp_dir().join(format!("dreamscene-engine-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         let scene = dir.join("bedroom");
-        let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-            .args([
-                "generate",
-                "a small bedroom",
-                "--draft",
-                "--renders",
-                "0",
-                "--out",
-            ])
-            .arg(&scene)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let prompt = std::env::var("DREAMSCENE_ENGINE_PROMPT")
+            .ok()
+            .filter(|p| !p.trim().is_empty())
+            .unwrap_or_else(|| "a small bedroom".to_string());
+        draft_scene(&prompt, &scene);
         let layout: Value = read_json(&scene.join("layout.json"));
         let mut scene_json: Value = read_json(&scene.join("scene.json"));
         let [w, d, _] = room(&scene_json);

@@ -296,7 +296,10 @@ fn generate_refuses_a_missing_model_directory_clearly() {
     assert!(!o.status.success());
     assert!(err.contains("/nonexistent/models"), "{err}");
     assert_eq!(err.trim().lines().count(), 1, "{err}");
-    assert!(!out.join("scene.json").exists());
+    assert!(
+        !out.exists(),
+        "refused before planning: nothing written, not even the directory"
+    );
     // ...while --draft makes the draft anyway.
     let o = generate(
         "a cozy living room",
@@ -307,8 +310,6 @@ fn generate_refuses_a_missing_model_directory_clearly() {
             "--models",
             "/nonexistent/models",
             "--draft",
-            // The refused run above left its plan behind (spec.json, layout.json, layout.png).
-            "--force",
         ],
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));

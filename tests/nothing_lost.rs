@@ -2,7 +2,8 @@
 //! --resume and --force), --force replaces it whole, a failed run leaves no directory, --resume
 //! renders the views cameras.json lists that are missing, a second writer with --no-wait names
 //! the holder, empty environment variables mean unset, values out of bounds in scene.json are
-//! refused in one line naming the instance, and messages say each path once.
+//! refused in one line naming the instance, messages say each path once, and each edit
+//! operation's help shows only the flags that apply to it, every argument described.
 use dreamscene::scene::dir::read_scene;
 use dreamscene::scene::lock::{SceneLock, Wait};
 use std::path::{Path, PathBuf};
@@ -131,7 +132,7 @@ fn a_second_writer_waits_or_with_no_wait_names_the_holder() {
     let held = SceneLock::acquire(&out, Wait::NoWait, "a test holding the scene").expect("lock");
     let d = out.to_string_lossy().to_string();
     let o = run(
-        &["edit", &d, "--no-wait", "move", "bed1", "--by", "0.1,0"],
+        &["edit", &d, "move", "bed1", "--by", "0.1,0", "--no-wait"],
         &[],
     );
     let err = stderr(&o);
@@ -152,13 +153,13 @@ fn a_second_writer_waits_or_with_no_wait_names_the_holder() {
         &[
             "edit",
             &d,
-            "--no-wait",
             "move",
             "bed1",
             "--by",
             "0.1,0",
             "--force",
             "--no-render",
+            "--no-wait",
         ],
         &[],
     );
@@ -301,4 +302,83 @@ fn video_and_render_check_their_output_before_rendering() {
         "nothing overwritten"
     );
     let _ = std::fs::remove_dir_all(&root);
+}
+
+/// The arguments and options `help` lists, each with its description (empty when it has none).
+fn help_entries(help: &str) -> Vec<(String, String)> {
+    let lines: Vec<&str> = help.lines().collect();
+    let is_entry = |l: &str| {
+        let t = l.trim_start();
+        // `--flag`, `-h, --help` or `<ARG>`; not a value list's `- cpu:`.
+        let flag =
+            t.starts_with('-') && t[1..].starts_with(|c: char| c == '-' || c.is_alphanumeric());
+        l.starts_with("  ") && (flag || t.starts_with('<'))
+    };
+    let mut out = vec![];
+    let mut in_list = false;
+    for (i, l) in lines.iter().enumerate() {
+        if l.trim().is_empty() {
+            continue;
+        }
+        if !l.starts_with(' ') {
+            in_list = l.starts_with("Arguments:") || l.starts_with("Options:");
+            continue;
+        }
+        if !in_list || !is_entry(l) {
+            continue;
+        }
+        let t = l.trim_start();
+        let (name, desc) = t.split_once("  ").unwrap_or((t, ""));
+        let desc = match desc.trim() {
+            "" => lines
+                .get(i + 1)
+                .filter(|n| !is_entry(n))
+                .map_or("", |n| n.trim()),
+            d => d,
+        };
+        out.push((name.trim().to_string(), desc.to_string()));
+    }
+    out
+}
+
+#[test]
+fn each_edit_operation_lists_only_its_flags_each_described() {
+    let help = |op: &str| {
+        let o = run(&["edit", "DIR", op, "--help"], &[]);
+        assert!(o.status.success(), "edit {op} --help: {}", stderr(&o));
+        String::from_utf8_lossy(&o.stdout).to_string()
+    };
+    let flags = |op: &str| -> Vec<String> {
+        help_entries(&help(op))
+            .into_iter()
+            .map(|(n, _)| n)
+            .filter(|n| n.starts_with("--") && n != "--help")
+            .map(|n| n.split(' ').next().unwrap_or("").to_string())
+            .collect()
+    };
+    // Reading the history takes no lock and writes nothing; undo restores renders as they were.
+    assert_eq!(
+        flags("history"),
+        Vec::<String>::new(),
+        "history has no flags"
+    );
+    assert_eq!(flags("undo"), vec!["--no-wait"], "undo only waits or not");
+    assert!(
+        !flags("animate").contains(&"--iterations".to_string()),
+        "animate re-optimises nothing"
+    );
+    for op in ["move", "add", "remove", "restyle", "animate"] {
+        let text = help(op);
+        let entries = help_entries(&text);
+        assert!(
+            entries.iter().any(|(n, _)| n.starts_with('<')),
+            "edit {op} takes an argument: {text}"
+        );
+        for (name, desc) in &entries {
+            assert!(!desc.is_empty(), "edit {op}: {name} has no description");
+        }
+        for f in ["--no-render", "--no-wait"] {
+            assert!(flags(op).iter().any(|x| x == f), "edit {op} has {f}");
+        }
+    }
 }

@@ -1,9 +1,9 @@
 //! Nothing lost when many processes race on one scene: rounds of concurrent `edit move`s, a
-//! `generate --resume` and readers (`export`), some killed (SIGKILL) at random moments. After
-//! every round the history is consistent (one record per entry, no edit twice, scene.ply the
-//! composition of scene.json), every edit that said "done" is in it, every reader wrote a state
-//! that was committed (never a mix), and at the end undo walks back to the original scene byte
-//! for byte. Tiny draft scene (shape prior), no rendering: a few seconds on 2 cores.
+//! `generate --resume` and readers (`export`, `edit history`), some killed (SIGKILL) at random
+//! moments. After every round the history is consistent (one record per entry, no edit twice,
+//! scene.ply the composition of scene.json), every edit that said "done" is in it, every reader
+//! wrote a state that was committed (never a mix; a history read is the start of the history
+//! after the round), and at the end undo walks back to the original scene byte for byte. Tiny draft scene (shape prior), no rendering: a few seconds on 2 cores.
 use dreamscene::generate::scene::write_draft_scene;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::SceneSpec;
@@ -113,13 +113,14 @@ fn same_state(a: &Gaussians, b: &Gaussians) -> bool {
 
 /// The history's consistency: entry k has its record history/000k, no edit twice, scene.ply is
 /// the composition of scene.json, no transaction left behind. Returns what each entry asked.
-fn check_history(dir: &Path) -> Vec<String> {
+fn check_history(dir: &Path) -> (Vec<String>, String) {
     // A reader finishes a transaction a kill left half applied (one killed before its commit
     // point leaves only a stage, discarded by the next writer).
     let o = spawn(&["edit", &dir.to_string_lossy(), "history"])
         .wait_with_output()
         .expect("history");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let listed = String::from_utf8_lossy(&o.stdout).to_string();
     assert!(
         !dir.join(".edit/journal.json").exists(),
         "no committed transaction left half applied"
@@ -152,7 +153,7 @@ fn check_history(dir: &Path) -> Vec<String> {
     let composed = compose_scene(dir, &s).expect("compose");
     let ply = read_ply(&dir.join("scene.ply")).expect("scene.ply");
     assert!(same_state(&composed, &ply), "scene.ply matches scene.json");
-    bys
+    (bys, listed)
 }
 
 #[test]
@@ -166,7 +167,7 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(24);
     let mut done: Vec<String> = vec![];
     let mut reads: Vec<PathBuf> = vec![];
-    let (mut killed, mut waited) = (0, 0);
+    let (mut killed, mut waited, mut history_reads) = (0, 0, 0);
     for round in 0..ROUNDS {
         let mut kids: Vec<(String, Option<PathBuf>, Child)> = vec![];
         for e in 0..EDITS {
@@ -211,6 +212,9 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
             let args = ["export", &d, "--scene-frame", "--out", &o];
             kids.push(("read".into(), Some(out), spawn(&args)));
         }
+        // A history reader: what it lists must be a committed history, the start of the one
+        // after the round (edits only append while nothing is undone).
+        kids.push(("history".into(), None, spawn(&["edit", &d, "history"])));
         // Kill about a third of them, each at its own moment, wherever it is by then.
         for (_, _, c) in kids.iter_mut() {
             std::thread::sleep(Duration::from_millis(rng.gen_range(0..25)));
@@ -218,6 +222,7 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
                 killed += 1;
             }
         }
+        let mut listings = vec![];
         for (what, out, c) in kids {
             let o = c.wait_with_output().expect("wait");
             waited += 1;
@@ -225,6 +230,7 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
             if o.status.success() {
                 match (what.as_str(), out) {
                     ("read", Some(p)) => reads.push(p),
+                    ("history", _) => listings.push(String::from_utf8_lossy(&o.stdout).to_string()),
                     ("resume", _) => {}
                     (by, _) => done.push(by.to_string()),
                 }
@@ -232,7 +238,16 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
                 assert!(o.status.code().is_none(), "{what} failed unkilled: {err}");
             }
         }
-        let bys = check_history(&dir);
+        let (bys, listed) = check_history(&dir);
+        for l in &listings {
+            let l = l.trim_end();
+            let is_start = l == "no edits" || listed.lines().take(l.lines().count()).eq(l.lines());
+            assert!(
+                is_start,
+                "a history read during the round is no committed history:\n{l}\nafter:\n{listed}"
+            );
+            history_reads += 1;
+        }
         for by in &done {
             assert!(
                 bys.contains(by),
@@ -244,8 +259,8 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
     let n = s.history.len();
     eprintln!(
         "race: {ROUNDS} rounds x {} processes, {waited} run, {killed} killed, {} edits said done, \
-         {n} in the history, {} reads",
-        EDITS + 1 + READERS,
+         {n} in the history, {} reads, {history_reads} history reads",
+        EDITS + 1 + READERS + 1,
         done.len(),
         reads.len()
     );
@@ -263,6 +278,7 @@ fn racing_writers_readers_and_kills_lose_no_committed_edit_and_undo_walks_back()
             p.display()
         );
     }
+    assert!(history_reads > 0, "some history reads finished");
     for k in (0..n).rev() {
         let o = spawn(&["edit", &d, "undo"])
             .wait_with_output()

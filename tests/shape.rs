@@ -56,7 +56,15 @@ fn coverage(category: &str, size: [f64; 3], g: &Gaussians, axis: usize) -> f64 {
     let hulls: Vec<Vec<[f64; 2]>> = ps
         .iter()
         .filter(|p| p.prim.solid())
-        .map(|p| convex_hull(p.prim.hull_points().iter().map(|q| [q[a], q[b]]).collect()))
+        .map(|p| {
+            convex_hull(
+                &p.prim
+                    .hull_points()
+                    .iter()
+                    .map(|q| [q[a], q[b]])
+                    .collect::<Vec<_>>(),
+            )
+        })
         .collect();
     let (mut inside, mut hit) = (0usize, 0usize);
     for i in 0..na {

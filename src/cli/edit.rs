@@ -1,6 +1,7 @@
 //! `dreamscene edit DIR <operation>`: change a generated scene in place, atomically, with the
 //! edit recorded in `scene.json`'s history and `undo` to take it back.
 use anyhow::{bail, Context as _, Result};
+use dreamscene::diffusion::runtime::Provider;
 use dreamscene::edit::ops::{self, MoveFlags, Pose};
 use dreamscene::edit::parse;
 use dreamscene::edit::reopt::{self, ReoptConfig};
@@ -23,24 +24,43 @@ pub struct Args {
     dir: PathBuf,
     #[command(subcommand)]
     op: Op,
-    /// Leave renders/ as it is (no Vulkan device needed for moves, adds and removals of a draft).
-    #[arg(long, global = true)]
-    no_render: bool,
+}
+
+/// How an edit that re-optimises part of the scene runs (prior oracle or sd).
+#[derive(clap::Args, Clone, Copy)]
+struct Reopt {
     /// Iterations of the local re-optimisation and of restyling (prior oracle or sd).
-    #[arg(long, global = true, default_value_t = 150,
+    #[arg(long, default_value_t = Reopt::DEFAULT.iterations,
           value_parser = clap::value_parser!(u32).range(1..=100_000))]
     iterations: u32,
     /// Render size of the local re-optimisation and restyling views (a multiple of 8).
-    #[arg(long, global = true, default_value_t = 128,
+    #[arg(long, default_value_t = Reopt::DEFAULT.resolution,
           value_parser = clap::value_parser!(u32).range(16..=2048))]
     resolution: u32,
-    /// When another command is writing the scene, exit at once naming it instead of waiting.
-    #[arg(long, global = true)]
-    no_wait: bool,
     /// ONNX Runtime provider of an sd prior's models (auto: a GPU provider on a real GPU, else
     /// the CPU).
-    #[arg(long, global = true, value_enum, default_value = "auto")]
-    provider: dreamscene::diffusion::runtime::Provider,
+    #[arg(long, value_enum, default_value_t = Reopt::DEFAULT.provider)]
+    provider: Provider,
+}
+
+impl Reopt {
+    /// The flags' defaults.
+    const DEFAULT: Reopt = Reopt {
+        iterations: 150,
+        resolution: 128,
+        provider: Provider::Auto,
+    };
+}
+
+/// How an edit is put in place.
+#[derive(clap::Args, Clone, Copy)]
+struct Write {
+    /// Leave renders/ as it is (no Vulkan device needed for moves, adds and removals of a draft).
+    #[arg(long)]
+    no_render: bool,
+    /// When another command is writing the scene, exit at once naming it instead of waiting.
+    #[arg(long)]
+    no_wait: bool,
 }
 
 #[derive(clap::Subcommand)]
@@ -78,6 +98,10 @@ enum Op {
         /// Leave related objects where they are.
         #[arg(long)]
         no_follow: bool,
+        #[command(flatten)]
+        reopt: Reopt,
+        #[command(flatten)]
+        write: Write,
     },
     /// Add an object: `add "a green armchair" --near sofa1 --anchor SIDE`. Planned from the
     /// knowledge base, placed by the layout around the objects already there, generated with
@@ -95,11 +119,19 @@ enum Op {
         #[arg(long, default_value_t = 300,
               value_parser = clap::value_parser!(u32).range(1..=100_000))]
         object_iterations: u32,
+        #[command(flatten)]
+        reopt: Reopt,
+        #[command(flatten)]
+        write: Write,
     },
     /// Remove an instance (its object PLY stays while another instance uses it).
     Remove {
         /// The instance to remove, e.g. chair2 (`edit DIR history` and scene.json list them).
         id: String,
+        #[command(flatten)]
+        reopt: Reopt,
+        #[command(flatten)]
+        write: Write,
     },
     /// Restyle an instance, the environment or the floor: `restyle sofa1 "a red leather sofa"`.
     ///
@@ -115,6 +147,10 @@ enum Op {
         /// world frame for the environment or floor).
         #[arg(long)]
         edit_reference: Option<PathBuf>,
+        #[command(flatten)]
+        reopt: Reopt,
+        #[command(flatten)]
+        write: Write,
     },
     /// Animate an instance: `animate car1 "drive forward 3 m then turn left"` writes keyframes
     /// (position, yaw, scale) to scene.json's timeline.
@@ -129,9 +165,15 @@ enum Op {
         /// Frames per second of the timeline.
         #[arg(long, default_value_t = 30.0)]
         fps: f64,
+        #[command(flatten)]
+        write: Write,
     },
     /// Undo the last edit (scene.json, scene.ply and every other file it changed, byte for byte).
-    Undo,
+    Undo {
+        /// When another command is writing the scene, exit at once naming it instead of waiting.
+        #[arg(long)]
+        no_wait: bool,
+    },
     /// List the edits in the history.
     History,
 }
@@ -150,35 +192,42 @@ fn parse_xy(s: &str) -> Result<[f64; 2], String> {
 
 pub fn run(a: Args) -> Result<()> {
     let dir = &a.dir;
-    if let Op::History = a.op {
-        return history(dir);
+    // What applies to this operation (history only reads; undo restores renders as they were).
+    let (no_wait, reopt, no_render) = match &a.op {
+        Op::History => return history(dir),
+        Op::Undo { no_wait } => (*no_wait, Reopt::DEFAULT, true),
+        Op::Move { reopt, write, .. }
+        | Op::Add { reopt, write, .. }
+        | Op::Remove { reopt, write, .. }
+        | Op::Restyle { reopt, write, .. } => (write.no_wait, *reopt, write.no_render),
+        Op::Animate { write, .. } => (write.no_wait, Reopt::DEFAULT, write.no_render),
+    };
+    if !reopt.resolution.is_multiple_of(8) {
+        bail!(
+            "--resolution {}: expected a multiple of 8, at least 16",
+            reopt.resolution
+        );
     }
     // The scene is checked before anything is created in it.
     dreamscene::scene::dir::read_scene(dir)?;
-    let wait = if a.no_wait { Wait::NoWait } else { Wait::Block };
+    let wait = if no_wait { Wait::NoWait } else { Wait::Block };
     let command = std::env::args().collect::<Vec<_>>().join(" ");
     let _lock = SceneLock::acquire(dir, wait, &command)?;
     if let Some(what) = txn::recover(dir)? {
         eprintln!("{}: {what}", dir.display());
     }
-    if let Op::Undo = a.op {
+    if let Op::Undo { .. } = a.op {
         let op = dreamscene::edit::undo(dir)?;
         println!("undid the last edit ({op}) of {}", dir.display());
         return Ok(());
     }
     let mut state = SceneState::open(dir)?;
     let cfg = ReoptConfig {
-        iterations: a.iterations,
-        resolution: a.resolution,
+        iterations: reopt.iterations,
+        resolution: reopt.resolution,
         seed: state.scene.seed,
-        provider: a.provider,
+        provider: reopt.provider,
     };
-    if !a.resolution.is_multiple_of(8) || a.resolution < 16 {
-        bail!(
-            "--resolution {}: expected a multiple of 8, at least 16",
-            a.resolution
-        );
-    }
     let mut ctx = None;
     let mut device = || -> Result<dreamscene::gpu::Context> {
         if ctx.is_none() {
@@ -196,6 +245,7 @@ pub fn run(a: Args) -> Result<()> {
             scale,
             force,
             no_follow,
+            ..
         } => {
             let flags = MoveFlags {
                 to,
@@ -264,7 +314,7 @@ pub fn run(a: Args) -> Result<()> {
             let (e, fp) = ops::move_object(&state, &id, pose, force, !no_follow, args)?;
             (e, fp)
         }
-        Op::Remove { id } => {
+        Op::Remove { id, .. } => {
             let id = resolve_id(&state, &id)?;
             let (e, fp) = ops::remove_object(&state, &id)?;
             (e, vec![fp])
@@ -274,6 +324,7 @@ pub fn run(a: Args) -> Result<()> {
             near,
             anchor,
             object_iterations,
+            ..
         } => {
             let anchor = match anchor {
                 Some(s) => Some(parse_anchor(&s.to_uppercase()).with_context(|| {
@@ -292,7 +343,8 @@ pub fn run(a: Args) -> Result<()> {
             }
             let needs_gpu = state.scene.prior.kind != "shape";
             let c = if needs_gpu { Some(device()?) } else { None };
-            for k in 1..n {
+            let mut k = 1;
+            loop {
                 let (mut e, fp) = reopt::add_object(
                     c.as_ref(),
                     &state,
@@ -302,6 +354,10 @@ pub fn run(a: Args) -> Result<()> {
                     object_iterations,
                     &cfg,
                 )?;
+                if k >= n {
+                    // The last one goes through the common path below (re-optimised, rendered).
+                    break (e, vec![fp]);
+                }
                 let note = reopt::local_environment(c.as_ref(), &state, &mut e, &[fp], &cfg)?;
                 e.notes.push(note);
                 let op = e.op.clone();
@@ -311,22 +367,14 @@ pub fn run(a: Args) -> Result<()> {
                 }
                 println!("{op}: done ({k} of {n})");
                 state = SceneState::open(dir)?;
+                k += 1;
             }
-            let (e, fp) = reopt::add_object(
-                c.as_ref(),
-                &state,
-                &what,
-                near.as_deref(),
-                anchor,
-                object_iterations,
-                &cfg,
-            )?;
-            (e, vec![fp])
         }
         Op::Restyle {
             part,
             description,
             edit_reference,
+            ..
         } => {
             let part = match part.as_str() {
                 "environment" | "walls" | "sky" | "floor" | "ground" => part,
@@ -350,12 +398,13 @@ pub fn run(a: Args) -> Result<()> {
             motion,
             seconds,
             fps,
+            ..
         } => {
             let id = resolve_id(&state, &id)?;
             let e = animate::animate(&state, &id, &motion, seconds, fps)?;
             (e, vec![])
         }
-        Op::Undo | Op::History => bail!("handled above"),
+        Op::Undo { .. } | Op::History => bail!("handled above"),
     };
     if !footprints.is_empty() {
         let c = if state.scene.prior.kind != "shape" {
@@ -366,7 +415,7 @@ pub fn run(a: Args) -> Result<()> {
         let note = reopt::local_environment(c.as_ref(), &state, &mut edit, &footprints, &cfg)?;
         edit.notes.push(note);
     }
-    let ctx = if a.no_render { None } else { Some(device()?) };
+    let ctx = if no_render { None } else { Some(device()?) };
     let op = edit.op.clone();
     let applied = apply_edit(&state, edit, ctx.as_ref())?;
     for n in &applied.notes {
@@ -434,7 +483,6 @@ fn history_line(e: &serde_json::Value) -> String {
     }
 }
 
-/// The instance and pose a sentence asks for (`default` is "it").
 /// Most objects one `add` creates.
 const MAX_ADD: u32 = 20;
 
@@ -453,6 +501,7 @@ fn resolve_id(state: &SceneState, name: &str) -> Result<String> {
     parse::resolve(name, &objects).map_err(anyhow::Error::msg)
 }
 
+/// The instance and pose a sentence asks for (`default` is "it").
 fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Result<(String, Pose)> {
     let objects: Vec<(String, String)> = state
         .scene

@@ -4,7 +4,7 @@
 use super::object::{models_dir, PriorChoice, NO_MODELS};
 use anyhow::{bail, Context as _, Result};
 use dreamscene::camera::scene::{render_views, SceneBox};
-use dreamscene::camera::write_cameras;
+use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::diffusion::runtime::Provider;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
@@ -59,6 +59,9 @@ pub fn run_with(a: GenerateArgs) -> Result<()> {
     let start = Instant::now();
     let models = models_dir(a.models.as_deref());
     let draft = draft_mode(&a, models.as_deref())?;
+    if !draft {
+        check_full(&a, models.as_deref())?;
+    }
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let created = !out.exists();
@@ -149,18 +152,16 @@ fn locked(
         if check_resume(&scene, text, a.seed)? {
             let missing = dreamscene::scene::dir::missing_files(out, &scene);
             if missing.is_empty() {
-                let redone = complete_renders(out, a)?;
-                if redone == 0 {
-                    println!(
+                match complete_renders(out, a)? {
+                    None => println!(
                         "{} is complete ({} objects); nothing to do",
                         out.display(),
                         scene.objects.len()
-                    );
-                } else {
-                    println!(
-                        "{}: rendered the {redone} missing views; the scene is complete",
+                    ),
+                    Some(redone) => println!(
+                        "{}: rendered {redone}; the scene is complete",
                         out.display()
-                    );
+                    ),
                 }
                 return Ok(());
             }
@@ -240,6 +241,30 @@ pub(super) fn draft_mode(a: &GenerateArgs, models: Option<&Path>) -> Result<bool
     })
 }
 
+/// What full generation needs, checked before anything is planned or written: the model
+/// directory (prior sd) and the numbers the priors take.
+fn check_full(a: &GenerateArgs, models: Option<&Path>) -> Result<()> {
+    if !matches!(a.prior, PriorChoice::Oracle(_)) {
+        let dir = models
+            .context("--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS)")?;
+        dreamscene::diffusion::model::StableDiffusion::check_dir(dir)
+            .map_err(anyhow::Error::msg)?;
+    }
+    if !(a.env_density.is_finite() && a.env_density > 0.0) {
+        bail!(
+            "--env-density {}: expected a positive number of Gaussians per m²",
+            a.env_density
+        );
+    }
+    if !a.resolution.is_multiple_of(8) {
+        bail!(
+            "--resolution {}: the priors need a multiple of 8",
+            a.resolution
+        );
+    }
+    Ok(())
+}
+
 /// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling,
 /// the three environment stages, then scene.json, scene.ply and the renders.
 fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> Result<()> {
@@ -270,18 +295,6 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
             Box::new(SdScenePriors(sd))
         }
     };
-    if !(a.env_density.is_finite() && a.env_density > 0.0) {
-        bail!(
-            "--env-density {}: expected a positive number of Gaussians per m²",
-            a.env_density
-        );
-    }
-    if !a.resolution.is_multiple_of(8) {
-        bail!(
-            "--resolution {}: the priors need a multiple of 8",
-            a.resolution
-        );
-    }
     let cfg = SceneConfig {
         iterations: a.iterations,
         object: ObjectConfig {
@@ -379,41 +392,44 @@ pub(super) fn plan_or_reuse(
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
 }
 
-/// Renders the views `renders/cameras.json` lists that are not there (all of them, chosen by
-/// what they show, when cameras.json itself is missing and views were asked for) from
-/// `scene.ply`. Returns how many were rendered.
-fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<usize> {
+/// Renders the views `renders/cameras.json` lists that are not there, and the contact sheet
+/// when it is missing (all of them, chosen by what they show, when cameras.json itself is
+/// missing and views were asked for) from `scene.ply`. Says what it rendered, if anything.
+fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<Option<String>> {
     let dir = out.join("renders");
     let cams_path = dir.join("cameras.json");
-    let cams = if cams_path.is_file() {
-        dreamscene::camera::read_cameras(&cams_path)?
-    } else if a.renders > 0 {
+    if !cams_path.is_file() {
+        if a.renders == 0 {
+            return Ok(None);
+        }
         let layout = Layout::read(&out.join("layout.json"))?;
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
         render_chosen(&g, &layout, a.renders, a.resolution, &dir)?;
-        return Ok(a.renders);
-    } else {
-        return Ok(0);
-    };
-    let missing: Vec<_> = cams
-        .iter()
-        .filter(|c| !dir.join(format!("{}.png", c.img_name)).is_file())
-        .collect();
-    if missing.is_empty() {
-        return Ok(0);
+        return Ok(Some(format!("the {} views", a.renders)));
     }
+    let cams = dreamscene::camera::read_cameras(&cams_path)?;
+    let view = |c: &Camera| dir.join(format!("{}.png", c.img_name));
+    let missing = cams.iter().filter(|c| !view(c).is_file()).count();
+    let sheet_missing = !dir.join(SHEET).is_file();
+    if missing == 0 && !sheet_missing {
+        return Ok(None);
+    }
+    // Every view is rendered again (deterministic) so the sheet is the one a whole run makes;
+    // the views already there are kept as they are.
     let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-    let ctx = super::open_device()?;
-    let r = Rasterizer::new(&ctx)?;
-    let gg = GpuGaussians::upload(&ctx, &g)?;
-    for cam in &missing {
-        let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
-        let path = dir.join(format!("{}.png", cam.img_name));
-        super::create_parent(&path)?;
-        super::save_png(&img, &path)?;
+    render_views_to(&g, &cams, &dir, |c| !view(c).is_file())?;
+    let mut said = vec![];
+    if missing > 0 {
+        said.push(format!("the {missing} missing views"));
     }
-    Ok(missing.len())
+    if sheet_missing {
+        said.push(format!("renders/{SHEET}"));
+    }
+    Ok(Some(said.join(" and ")))
 }
+
+/// The contact sheet of the views in `renders/`.
+const SHEET: &str = "overview.png";
 
 /// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
 /// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
@@ -428,13 +444,26 @@ pub(super) fn render_chosen(
     let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
+    render_views_to(g, &cams, dir, |_| true)
+}
+
+/// Renders `cams` of `g`, writes the views `write` picks into `dir` and the contact sheet of all
+/// of them (written last: a run killed before it is not complete).
+fn render_views_to(
+    g: &Gaussians,
+    cams: &[Camera],
+    dir: &Path,
+    write: impl Fn(&Camera) -> bool,
+) -> Result<()> {
     let ctx = super::open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let gg = GpuGaussians::upload(&ctx, g)?;
     let mut shots = vec![];
-    for cam in &cams {
+    for cam in cams {
         let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
-        super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        if write(cam) {
+            super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
+        }
         shots.push(img);
     }
     let tiles: Vec<_> = shots
@@ -442,7 +471,7 @@ pub(super) fn render_chosen(
         .map(|i| (i.width, i.height, i.color.as_slice()))
         .collect();
     let sheet = dreamscene::util::contact_sheet(&tiles, 4, 256);
-    super::write_png(&sheet, &dir.join("overview.png"))
+    super::write_png(&sheet, &dir.join(SHEET))
 }
 
 fn positive_density(s: &str) -> Result<f64, String> {

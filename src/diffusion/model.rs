@@ -157,12 +157,9 @@ fn load_autoencoder(
 }
 
 impl StableDiffusion {
-    /// Opens and checks a model directory.
-    pub fn open(dir: &Path, opts: &ModelOptions) -> Result<StableDiffusion, String> {
-        let opts = &ModelOptions {
-            provider: opts.provider.resolved(),
-            ..*opts
-        };
+    /// Checks, without loading anything, that `dir` looks like a Stable Diffusion ONNX export
+    /// (its index and the three models it needs), so a command refuses before any work.
+    pub fn check_dir(dir: &Path) -> Result<(), String> {
         let shown = dir.display();
         if !dir.is_dir() {
             return Err(format!("{shown}: model directory not found"));
@@ -181,6 +178,17 @@ impl StableDiffusion {
                 return Err(format!("{}: missing", p.display()));
             }
         }
+        Ok(())
+    }
+
+    /// Opens and checks a model directory.
+    pub fn open(dir: &Path, opts: &ModelOptions) -> Result<StableDiffusion, String> {
+        let opts = &ModelOptions {
+            provider: opts.provider.resolved(),
+            ..*opts
+        };
+        Self::check_dir(dir)?;
+        let shown = dir.display();
         let tokenizer = ClipTokenizer::load(&dir.join("tokenizer"))?;
         let sched_path = dir.join("scheduler/scheduler_config.json");
         let schedule = Schedule::new(SchedulerConfig::read(&sched_path)?)

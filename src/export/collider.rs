@@ -55,7 +55,7 @@ impl Mesh {
 /// The convex prism over the 2-D convex hull of `points` (x, y), from `z0` to `z1`; `None`
 /// when the points span no area.
 pub fn hull_prism(points: &[[f64; 2]], z0: f64, z1: f64) -> Option<Mesh> {
-    let hull = convex_hull(points);
+    let hull = crate::util::convex_hull(points);
     if hull.len() < 3 {
         return None;
     }
@@ -74,40 +74,6 @@ pub fn hull_prism(points: &[[f64; 2]], z0: f64, z1: f64) -> Option<Mesh> {
         m.triangles.push([k, n + j, n + k]);
     }
     Some(m)
-}
-
-/// Andrew's monotone chain: the hull counter-clockwise, no collinear points.
-fn convex_hull(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
-    let mut p: Vec<[f64; 2]> = points
-        .iter()
-        .copied()
-        .filter(|q| q[0].is_finite() && q[1].is_finite())
-        .collect();
-    p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    p.dedup();
-    if p.len() < 3 {
-        return p;
-    }
-    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
-    let mut h: Vec<[f64; 2]> = Vec::with_capacity(2 * p.len());
-    for pass in 0..2 {
-        let start = h.len();
-        let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in iter {
-            while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], q) <= 0.0 {
-                h.pop();
-            }
-            h.push(q);
-        }
-        h.pop();
-    }
-    h
 }
 
 /// A door or window in a wall.

@@ -7,6 +7,8 @@
 use super::materials::Role;
 use rand::Rng;
 
+pub use crate::util::convex_hull;
+
 /// A point or vector in the object frame (metres).
 pub type V3 = [f64; 3];
 /// A rotation: its columns are the part's local axes in the object frame.
@@ -340,37 +342,6 @@ pub fn ellipsoid_profile(r: f64, rz: f64) -> Vec<[f64; 2]> {
         .collect()
 }
 
-/// The 2D convex hull (counter-clockwise) of points.
-pub fn convex_hull(mut pts: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
-    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    pts.dedup();
-    if pts.len() < 3 {
-        return pts;
-    }
-    let cr = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
-    let mut hull: Vec<[f64; 2]> = vec![];
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 {
-            Box::new(pts.iter())
-        } else {
-            Box::new(pts.iter().rev())
-        };
-        for &p in iter {
-            while hull.len() >= start + 2
-                && cr(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
-            {
-                hull.pop();
-            }
-            hull.push(p);
-        }
-        hull.pop();
-    }
-    hull
-}
-
 /// Whether `p` lies inside the counter-clockwise convex polygon `hull`.
 pub fn hull_contains(hull: &[[f64; 2]], p: [f64; 2]) -> bool {
     if hull.len() < 3 {
@@ -499,13 +470,7 @@ mod tests {
 
     #[test]
     fn hull_contains_its_interior_only() {
-        let h = convex_hull(vec![
-            [0.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 1.0],
-            [0.0, 1.0],
-            [0.5, 0.5],
-        ]);
+        let h = convex_hull(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.5, 0.5]]);
         assert_eq!(h.len(), 4);
         assert!(hull_contains(&h, [0.2, 0.7]));
         assert!(!hull_contains(&h, [1.2, 0.7]));

@@ -67,6 +67,20 @@ pub fn require_readers() {
     }
 }
 
+/// A draft scene of `prompt` (shape prior, no renders) generated into `scene`.
+pub fn draft_scene(prompt: &str, scene: &Path) {
+    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .args(["generate", prompt, "--draft", "--renders", "0", "--out"])
+        .arg(scene)
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "generate \"{prompt}\": {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
 pub fn export(input: &Path, format: &str, out: &Path, extra: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_dreamscene"))
         .arg("export")

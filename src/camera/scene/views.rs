@@ -95,7 +95,7 @@ pub fn frame_share(cam: &Camera, o: &ObjectBox) -> f64 {
             ]
         })
         .collect();
-    let hull = convex_hull(proj);
+    let hull = crate::util::convex_hull(&proj);
     let clipped = clip_to_rect(&hull, w, h);
     polygon_area(&clipped) / (w * h)
 }
@@ -146,36 +146,6 @@ pub fn framing_score(scene: &SceneBox, cams: &[Camera]) -> f64 {
         .filter(|c| view_stats(scene, c).framed_well())
         .count();
     good as f64 / cams.len() as f64
-}
-
-fn convex_hull(mut p: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
-    p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    p.dedup();
-    if p.len() < 3 {
-        return p;
-    }
-    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
-    let mut hull: Vec<[f64; 2]> = vec![];
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in iter {
-            while hull.len() >= start + 2
-                && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
-            {
-                hull.pop();
-            }
-            hull.push(q);
-        }
-        hull.pop();
-    }
-    hull
 }
 
 /// Sutherland–Hodgman clipping of a convex polygon to `[0, w] x [0, h]`.
