@@ -290,20 +290,21 @@ impl Problem {
             }
             if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
                 // under the partner, or the support below a placed subject
+                // turned as the partner, or across it (a bridge over its pond)
                 let z = if subject { 0.0 } else { (pj.z - s[2]).max(0.0) };
-                out.push(Pose {
-                    c: pj.c,
-                    yaw: pj.yaw,
-                    z,
-                });
+                for yaw in [pj.yaw, pj.yaw + 90.0] {
+                    out.push(Pose { c: pj.c, yaw, z });
+                }
                 continue;
             }
             if !subject && rel == RelationKind::Under {
-                out.push(Pose {
-                    c: pj.c,
-                    yaw: pj.yaw,
-                    z: 0.0,
-                });
+                for yaw in [pj.yaw, pj.yaw + 90.0] {
+                    out.push(Pose {
+                        c: pj.c,
+                        yaw,
+                        z: 0.0,
+                    });
+                }
                 continue;
             }
             // Around the partner in its frame: front, behind, left, right at several gaps.
@@ -611,7 +612,7 @@ fn layout_in_pinned(
             (Some(o), _) => o.to_vec(),
             (None, SceneType::Indoor) => openings::generate(
                 room.size,
-                !openings::says_no_windows(&spec.scene_text),
+                openings::asked_windows(&spec.scene_text),
                 &mut rng,
             ),
             (None, SceneType::Outdoor) => vec![],
@@ -650,11 +651,20 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
 /// wall-anchored, then larger), OVER subjects after their support.
 fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     let n = prob.inst.len();
+    // How much an instance holds others in place: a group subject (a nightstand at its bed)
+    // and a support's load (a lamp on that nightstand) do not count, so a group's object is
+    // placed before its subjects and they take their slots round it.
     let key = |i: usize| {
         let a = &prob.inst[i];
         let wall = matches!(a.anchor, Anchor::Side | Anchor::Corner) as u32;
         let area = a.size[0] * a.size[1];
-        (prob.rels[i].len(), wall, (area * 1000.0) as u64)
+        let holds = prob.rels[i]
+            .iter()
+            .filter(|&&(rel, _, subject)| {
+                !(subject && is_group(rel)) && !(!subject && rel == RelationKind::Over)
+            })
+            .count();
+        (holds, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];
     let mut out = vec![];

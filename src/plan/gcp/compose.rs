@@ -4,7 +4,9 @@
 //! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
 //! back, not in front of its face; a thing alone on its support centred on it (at its back
 //! when the support stands against a wall); a thing by a
-//! window or door as close to it as it can stand.
+//! window or door as close to it as it can stand; a thing in FRONT of or BEHIND another
+//! centred on its axis; a thing over another that it is longer than (UNDER) spanning it,
+//! past both ends, and centred over what stands under it.
 use super::{Pose, Problem};
 use crate::plan::check::{opening_distance, overlap_depth, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
@@ -30,6 +32,19 @@ fn face_zone(b: &Box2) -> Box2 {
     ];
     let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
     Box2::new(c, yaw, [2.0 * b.half[0], FACE_CLEARANCE], 0.0, 2.0)
+}
+
+/// How far `over`'s long axis reaches past `under` at each end (m), 0 when it does not
+/// reach past them, at most 1.
+fn span(over: &Box2, under: &Box2) -> f64 {
+    let (ax, half) = if over.half[0] >= over.half[1] {
+        (over.ex, over.half[0])
+    } else {
+        (over.ey, over.half[1])
+    };
+    let dot = |a: [f64; 2], b: [f64; 2]| (a[0] * b[0] + a[1] * b[1]).abs();
+    let extent = dot(ax, under.ex) * under.half[0] + dot(ax, under.ey) * under.half[1];
+    (half - extent).clamp(0.0, 1.0)
 }
 
 impl Problem {
@@ -104,6 +119,27 @@ impl Problem {
                     let t = [bj.c[0] - bj.ey[0] * back, bj.c[1] - bj.ey[1] * back];
                     let d = ((p.c[0] - t[0]).powi(2) + (p.c[1] - t[1]).powi(2)).sqrt();
                     score -= 8.0 * d;
+                }
+                RelationKind::Front | RelationKind::Behind => {
+                    // in front of or behind a thing is centred on its axis (a coffee table
+                    // before the middle of its sofa)
+                    let lateral = if subject {
+                        bj.local(p.c)[0]
+                    } else {
+                        b.local(bj.c)[0]
+                    };
+                    score -= 3.0 * lateral.abs().min(2.0);
+                }
+                RelationKind::Under => {
+                    // a thing over another that it is longer than spans it with its length,
+                    // reaching past both ends (a bridge across its pond); 0 when it is not
+                    let (over, under) = if subject { (&bj, b) } else { (b, &bj) };
+                    score += 4.0 * span(over, under);
+                    if !subject {
+                        // a roof centred over what stands under it (a gazebo over its table)
+                        let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
+                        score -= 3.0 * d.min(3.0);
+                    }
                 }
                 RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
                     score -= 3.0;
