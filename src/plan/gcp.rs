@@ -822,7 +822,20 @@ fn fallback_pose(
             z: 0.0,
         },
     );
-    for _ in 0..2000 {
+    // a thing hung on a wall stays on a wall, at its height
+    let z = prob.hung[i].unwrap_or(0.0);
+    let on_wall: Vec<Pose> = if prob.wall_hung[i] {
+        prob.all_candidates(i, placed)
+            .into_iter()
+            .filter(|p| {
+                let wd = wall_distances(&prob.boxed(i, p), prob.room);
+                wd.iter().all(|&v| v >= -1e-9) && wd.iter().any(|&v| v <= WALL_MARGIN + 0.03)
+            })
+            .collect()
+    } else {
+        vec![]
+    };
+    let random = (0..2000).map(|_| {
         let yaw = [0.0, 90.0][rng.gen_range(0..2)];
         let (ex, ey) = if yaw == 0.0 {
             (s[0], s[1])
@@ -831,11 +844,14 @@ fn fallback_pose(
         };
         let x = rng.gen_range(-0.5 * (w - ex).max(0.0)..=0.5 * (w - ex).max(0.0));
         let y = rng.gen_range(-0.5 * (d - ey).max(0.0)..=0.5 * (d - ey).max(0.0));
-        let p = Pose {
-            c: [x, y],
-            yaw,
-            z: 0.0,
-        };
+        Pose { c: [x, y], yaw, z }
+    });
+    let poses: Vec<Pose> = if on_wall.is_empty() {
+        random.collect()
+    } else {
+        on_wall
+    };
+    for p in poses {
         let b = prob.boxed(i, &p);
         let cost: f64 = placed
             .iter()
@@ -843,7 +859,12 @@ fn fallback_pose(
             .filter_map(|(j, q)| q.map(|q| (j, q)))
             .filter(|(j, _)| !prob.is_stacked(i, *j))
             .map(|(j, q)| penetration(&b, &prob.boxed(j, &q)).max(0.0))
-            .sum();
+            .sum::<f64>()
+            + prob
+                .zones
+                .iter()
+                .map(|z| penetration(&b, z).max(0.0))
+                .sum::<f64>();
         if cost < best.0 {
             best = (cost, p);
         }
