@@ -59,6 +59,9 @@ const OUTDOOR_OCCUPANCY: f64 = 0.2;
 const WALL_MARGIN: f64 = 0.02;
 /// Preferred free space around unrelated objects (a walkway).
 const WALKWAY: f64 = 0.6;
+/// Weight of a thing turning toward what it relates to, against the search's seeded jitter
+/// (at most 3).
+const FACING_WEIGHT: f64 = 1.5;
 
 /// A room that fits the instances: floor area = footprints / occupancy (aspect 5:4), never
 /// narrower than the largest object plus a walkway, height above the tallest object.
@@ -412,7 +415,9 @@ impl Problem {
                 } else if (subject || rel == RelationKind::Opposite) && !is_group(rel) {
                     // chairs, tables, lamps turn toward what they relate to; OPPOSITE pairs
                     // face each other
-                    pose_bonus += super::check::facing_error(&b, &bj).to_radians().cos();
+                    // (as much as the search's jitter, so a seat does not end turned away)
+                    pose_bonus +=
+                        FACING_WEIGHT * super::check::facing_error(&b, &bj).to_radians().cos();
                 }
             }
         }
@@ -651,9 +656,21 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
 /// wall-anchored, then larger), OVER subjects after their support.
 fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     let n = prob.inst.len();
-    // How much an instance holds others in place: a group subject (a nightstand at its bed)
-    // and a support's load (a lamp on that nightstand) do not count, so a group's object is
-    // placed before its subjects and they take their slots round it.
+    // How much an instance holds others in place: being placed by a partner (a nightstand at
+    // its bed, a coffee table in front of its sofa) and a support's load (a lamp on that
+    // nightstand) do not count, so a partner is placed before what is placed by it; on ties,
+    // what no partner places goes first.
+    let placed_by = |rel: RelationKind| {
+        is_group(rel)
+            || matches!(
+                rel,
+                RelationKind::Front
+                    | RelationKind::Behind
+                    | RelationKind::Left
+                    | RelationKind::Right
+                    | RelationKind::Next
+            )
+    };
     let key = |i: usize| {
         let a = &prob.inst[i];
         let wall = matches!(a.anchor, Anchor::Side | Anchor::Corner) as u32;
@@ -661,10 +678,13 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
         let holds = prob.rels[i]
             .iter()
             .filter(|&&(rel, _, subject)| {
-                !(subject && is_group(rel)) && !(!subject && rel == RelationKind::Over)
+                !(subject && placed_by(rel)) && !(!subject && rel == RelationKind::Over)
             })
             .count();
-        (holds, wall, (area * 1000.0) as u64)
+        let free = !prob.rels[i]
+            .iter()
+            .any(|&(rel, _, subject)| subject && placed_by(rel));
+        (holds, free, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];
     let mut out = vec![];

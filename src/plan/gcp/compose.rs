@@ -5,23 +5,38 @@
 //! back, not in front of its face; a thing alone on its support centred on it (at its back
 //! when the support stands against a wall); a thing by a
 //! window or door as close to it as it can stand; a thing in FRONT of or BEHIND another
-//! centred on its axis; a thing over another that it is longer than (UNDER) spanning it,
+//! centred on its axis, within [`FRONT_REACH`] of it and square to it; a thing over another that it is longer than (UNDER) spanning it,
 //! past both ends, and centred over what stands under it.
 use super::{Pose, Problem};
-use crate::plan::check::{opening_distance, overlap_depth, Box2};
+use crate::plan::check::{gap, opening_distance, overlap_depth, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
 
 /// Height above which a thing blocks a sightline (m).
 pub const SIGHTLINE_HEIGHT: f64 = 0.6;
 /// Depth kept free in front of a thing against a wall (m).
 pub const FACE_CLEARANCE: f64 = 0.6;
+/// The gap a thing in FRONT of or BEHIND another keeps at most without cost (m): a coffee
+/// table within reach of the sofa's seat (furnishers' 40-50 cm).
+pub const FRONT_REACH: f64 = 0.45;
 
-/// Whether the segment from `a` to `c` (ends excluded) passes through `b`'s footprint.
+/// Half the width of a sightline (m): the view from the middle of a sofa to a screen is a
+/// band, not a line.
+const SIGHTLINE_HALF_WIDTH: f64 = 0.35;
+
+/// Whether the band from `a` to `c` (ends excluded), [`SIGHTLINE_HALF_WIDTH`] either side of
+/// the segment, passes through `b`'s footprint.
 fn crosses(b: &Box2, a: [f64; 2], c: [f64; 2]) -> bool {
-    (1..24).any(|k| {
-        let t = k as f64 / 24.0;
-        b.contains([a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])])
-    })
+    let d = [c[0] - a[0], c[1] - a[1]];
+    let len = d[0].hypot(d[1]).max(1e-9);
+    let n = [-d[1] / len, d[0] / len];
+    [-SIGHTLINE_HALF_WIDTH, 0.0, SIGHTLINE_HALF_WIDTH]
+        .iter()
+        .any(|&o| {
+            (1..24).any(|k| {
+                let t = k as f64 / 24.0;
+                b.contains([a[0] + t * d[0] + o * n[0], a[1] + t * d[1] + o * n[1]])
+            })
+        })
 }
 
 /// The free space in front of `b`'s face.
@@ -79,7 +94,7 @@ impl Problem {
                 }
                 if let (Some(pa), Some(pc)) = (placed[a], placed[c]) {
                     if crosses(b, pa.c, pc.c) {
-                        score -= 6.0;
+                        score -= 12.0;
                     }
                 }
             }
@@ -104,7 +119,7 @@ impl Problem {
                             continue;
                         }
                         if crosses(bk, p.c, bj.c) {
-                            score -= 6.0;
+                            score -= 12.0;
                         }
                     }
                 }
@@ -129,6 +144,11 @@ impl Problem {
                         b.local(bj.c)[0]
                     };
                     score -= 3.0 * lateral.abs().min(2.0);
+                    // and within reach of it (a coffee table about 0.45 m from its sofa)
+                    score -= 4.0 * (gap(b, &bj) - FRONT_REACH).clamp(0.0, 2.5);
+                    // and square to it (a coffee table parallel to its sofa)
+                    let turn = (p.yaw - placed[j].map_or(p.yaw, |q| q.yaw)).to_radians();
+                    score -= 3.0 * (1.0 - turn.cos().abs());
                 }
                 RelationKind::Under => {
                     // a thing over another that it is longer than spans it with its length,
