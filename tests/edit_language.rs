@@ -535,7 +535,11 @@ fn keyframes_at_chosen_times_follow_the_sentence() {
     ];
     let want = (-to[0]).atan2(to[1]).to_degrees();
     let off = ((end.yaw - want + 540.0) % 360.0 - 180.0).abs();
-    assert!(off < 1.0, "chair turned {:.0}°, the table is at {want:.0}°", end.yaw);
+    assert!(
+        off < 1.0,
+        "chair turned {:.0}°, the table is at {want:.0}°",
+        end.yaw
+    );
     let moved = dreamscene::edit::ops::with_pose(&st, "chair1", end).unwrap();
     let sofa = moved.box_of(moved.object("sofa1").unwrap());
     let g = dreamscene::plan::check::gap(&moved.box_of(moved.object("chair1").unwrap()), &sofa);

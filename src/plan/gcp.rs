@@ -117,6 +117,9 @@ struct Problem {
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     sightlines: Vec<(usize, usize)>,
     step: f64,
+    /// Place the largest footprints first whatever holds what (the retry of a spec whose
+    /// constraint order left no room).
+    largest_first: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -469,8 +472,20 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
             room.size[0], room.size[1], room.size[2], need.size[0], need.size[1], need.size[2]
         )));
     }
-    let l = layout_in(spec, room, opts);
-    let problems = super::check::validity_problems(&l, spec);
+    let mut l = layout_in(spec, room, opts);
+    let mut problems = super::check::validity_problems(&l, spec);
+    if !problems.is_empty() {
+        // one greedy order can paint itself into a corner: the largest first before refusing
+        let more = LayoutOptions {
+            restarts: 4 * opts.restarts.max(1),
+            ..opts
+        };
+        let l2 = layout_in_pinned(spec, room, more, &BTreeMap::new(), None, true);
+        let p2 = super::check::validity_problems(&l2, spec);
+        if p2.len() < problems.len() {
+            (l, problems) = (l2, p2);
+        }
+    }
     if !problems.is_empty() {
         let mut ids: Vec<String> = vec![];
         for o in &l.objects {
@@ -514,12 +529,12 @@ pub fn layout_pinned(
     let room = spec
         .room
         .unwrap_or_else(|| choose_room(&spec.instances(), spec.scene_type));
-    Ok(layout_in_pinned(spec, room, opts, pins, openings))
+    Ok(layout_in_pinned(spec, room, opts, pins, openings, false))
 }
 
 /// The GCP search in `room`, without the fit checks.
 pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
-    layout_in_pinned(spec, room, opts, &BTreeMap::new(), None)
+    layout_in_pinned(spec, room, opts, &BTreeMap::new(), None, false)
 }
 
 /// [`layout_in`] with pinned instances placed first, as they are. The placement classes
@@ -530,6 +545,7 @@ fn layout_in_pinned(
     opts: LayoutOptions,
     pins: &BTreeMap<String, Pin>,
     openings: Option<&[Opening]>,
+    largest_first: bool,
 ) -> Layout {
     let mut work = spec.clone();
     let mounts = classes::apply(&mut work);
@@ -596,6 +612,7 @@ fn layout_in_pinned(
         rels,
         stacked,
         step,
+        largest_first,
     };
     let pinned: Vec<Option<Pose>> = prob
         .inst
@@ -684,6 +701,9 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
         let free = !prob.rels[i]
             .iter()
             .any(|&(rel, _, subject)| subject && placed_by(rel));
+        if prob.largest_first {
+            return (0, false, 0, (area * 1000.0) as u64);
+        }
         (holds, free, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];

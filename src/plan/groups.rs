@@ -341,7 +341,8 @@ fn shelter_group(spec: &mut SceneSpec) {
         .filter(|r| r.relation == RelationKind::Under)
     {
         for seat in spec.relations.iter().filter(|r| {
-            r.object == roof.subject && matches!(r.relation, RelationKind::Around | RelationKind::At)
+            r.object == roof.subject
+                && matches!(r.relation, RelationKind::Around | RelationKind::At)
         }) {
             let has = |rs: &[Relation]| {
                 rs.iter()

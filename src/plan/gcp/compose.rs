@@ -5,7 +5,8 @@
 //! back, not in front of its face; a thing alone on its support centred on it (at its back
 //! when the support stands against a wall); a thing by a
 //! window or door as close to it as it can stand; a thing in FRONT of or BEHIND another
-//! centred on its axis, within [`FRONT_REACH`] of it and square to it; a thing over another that it is longer than (UNDER) spanning it,
+//! centred on its axis, between [`FRONT_LEGROOM`] and [`FRONT_REACH`] from it and square to
+//! it; a thing over another that it is longer than (UNDER) spanning it,
 //! past both ends, and centred over what stands under it.
 use super::{Pose, Problem};
 use crate::plan::check::{gap, opening_distance, overlap_depth, Box2};
@@ -18,6 +19,8 @@ pub const FACE_CLEARANCE: f64 = 0.6;
 /// The gap a thing in FRONT of or BEHIND another keeps at most without cost (m): a coffee
 /// table within reach of the sofa's seat (furnishers' 40-50 cm).
 pub const FRONT_REACH: f64 = 0.45;
+/// The gap below which a thing in FRONT of another leaves no room for legs (m).
+pub const FRONT_LEGROOM: f64 = 0.3;
 
 /// Half the width of a sightline (m): the view from the middle of a sofa to a screen is a
 /// band, not a line.
@@ -145,7 +148,10 @@ impl Problem {
                     };
                     score -= 3.0 * lateral.abs().min(2.0);
                     // and within reach of it (a coffee table about 0.45 m from its sofa)
-                    score -= 4.0 * (gap(b, &bj) - FRONT_REACH).clamp(0.0, 2.5);
+                    let g = gap(b, &bj);
+                    score -= 4.0 * (g - FRONT_REACH).clamp(0.0, 2.5);
+                    // with room for legs between them
+                    score -= 8.0 * (FRONT_LEGROOM - g).max(0.0);
                     // and square to it (a coffee table parallel to its sofa)
                     let turn = (p.yaw - placed[j].map_or(p.yaw, |q| q.yaw)).to_radians();
                     score -= 3.0 * (1.0 - turn.cos().abs());

@@ -297,7 +297,10 @@ mod tests {
                 let wins: Vec<&Opening> =
                     o.iter().filter(|o| o.kind == OpeningKind::Window).collect();
                 assert_eq!(wins.len(), n as usize);
-                let door = o.iter().find(|o| o.kind == OpeningKind::Door).expect("door");
+                let door = o
+                    .iter()
+                    .find(|o| o.kind == OpeningKind::Door)
+                    .expect("door");
                 assert!(wins.iter().all(|w| w.wall != door.wall));
                 // no two windows of a wall overlap
                 for a in &wins {
