@@ -695,7 +695,11 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
         let holds = prob.rels[i]
             .iter()
             .filter(|&&(rel, _, subject)| {
-                !(subject && placed_by(rel)) && !(!subject && rel == RelationKind::Over)
+                if subject {
+                    !placed_by(rel)
+                } else {
+                    rel != RelationKind::Over
+                }
             })
             .count();
         let free = !prob.rels[i]
