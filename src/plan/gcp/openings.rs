@@ -285,23 +285,42 @@ mod tests {
 
     #[test]
     fn counted_windows_are_read_and_made() {
-        assert_eq!(asked_windows("a sunroom with three big windows"), Some(3));
-        assert_eq!(asked_windows("a studio with 2 tall windows"), Some(2));
-        assert_eq!(asked_windows("a windowless cellar"), Some(0));
-        assert_eq!(asked_windows("a bedroom with a bed by the window"), None);
-        assert_eq!(asked_windows("six chairs by the windows"), None);
+        assert_eq!(
+            asked_windows("a sunroom with three big windows"),
+            Some(3),
+            "three big"
+        );
+        assert_eq!(
+            asked_windows("a studio with 2 tall windows"),
+            Some(2),
+            "digits"
+        );
+        assert_eq!(asked_windows("a windowless cellar"), Some(0), "none");
+        assert_eq!(
+            asked_windows("a bedroom with a bed by the window"),
+            None,
+            "not counted"
+        );
+        assert_eq!(
+            asked_windows("six chairs by the windows"),
+            None,
+            "chairs counted"
+        );
         for seed in 0..8 {
             let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
             for n in [1, 3, 5] {
                 let o = generate([4.3, 3.5, 2.8], Some(n), &mut rng);
                 let wins: Vec<&Opening> =
                     o.iter().filter(|o| o.kind == OpeningKind::Window).collect();
-                assert_eq!(wins.len(), n as usize);
+                assert_eq!(wins.len(), n as usize, "windows made");
                 let door = o
                     .iter()
                     .find(|o| o.kind == OpeningKind::Door)
                     .expect("door");
-                assert!(wins.iter().all(|w| w.wall != door.wall));
+                assert!(
+                    wins.iter().all(|w| w.wall != door.wall),
+                    "a window on the door wall"
+                );
                 // no two windows of a wall overlap
                 for a in &wins {
                     for b in &wins {
