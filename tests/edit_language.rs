@@ -529,6 +529,25 @@ fn keyframes_at_chosen_times_follow_the_sentence() {
         &moved.box_of(moved.object("sofa1").unwrap()),
     );
     assert!((g - 0.2).abs() < 0.02, "gap {g}");
+    // Moved beside the sofa, the chair joins its group: turned to the coffee table in front
+    // of the sofa, not left facing where it faced.
+    let cmd = parse("move the chair next to the sofa", &objs, None).unwrap();
+    let end = final_pose(&st, "chair1", &cmd).unwrap();
+    let to = [
+        table.position[0] - end.position[0],
+        table.position[1] - end.position[1],
+    ];
+    let want = (-to[0]).atan2(to[1]).to_degrees();
+    let off = ((end.yaw - want + 540.0) % 360.0 - 180.0).abs();
+    assert!(
+        off < 1.0,
+        "chair turned {:.0}°, the table is at {want:.0}°",
+        end.yaw
+    );
+    let moved = dreamscene::edit::ops::with_pose(&st, "chair1", end).unwrap();
+    let sofa = moved.box_of(moved.object("sofa1").unwrap());
+    let g = dreamscene::plan::check::gap(&moved.box_of(moved.object("chair1").unwrap()), &sofa);
+    assert!(g <= 0.5, "gap {g} to the sofa");
 }
 
 #[test]

@@ -52,11 +52,24 @@ fn box_at(state: &SceneState, id: &str, p: &Pose) -> Result<Box2> {
     ))
 }
 
-/// The pose of `id` beside `target` in `relation`, its yaw kept: on the side the relation names
-/// (NEXT: the free side nearest where it is), `BESIDE_GAP` from the target's footprint.
+/// The pose of `id` beside `target` in `relation`: on the side the relation names (NEXT: the
+/// free side nearest where it is), `BESIDE_GAP` from the target's footprint. Side by side (NEXT,
+/// LEFT, RIGHT) it joins the target's group: it faces what stands in FRONT of the target (an
+/// armchair beside the sofa turns to the coffee table), else it is turned as the target is;
+/// in FRONT or BEHIND its yaw is kept.
 fn beside(state: &SceneState, id: &str, p: &Pose, target: &str, rel: RelationKind) -> Result<Pose> {
     let t = state.object(target)?;
     let tb = state.box_of(t);
+    // side by side, it joins the target's group: turned as the target is
+    let side_by_side = matches!(
+        rel,
+        RelationKind::Next | RelationKind::Left | RelationKind::Right
+    );
+    let turned = Pose {
+        yaw: if side_by_side { t.yaw } else { p.yaw },
+        ..*p
+    };
+    let p = &turned;
     let me = box_at(state, id, p)?;
     let sides: Vec<[f64; 2]> = match rel {
         RelationKind::Front => vec![tb.ey],
@@ -69,6 +82,12 @@ fn beside(state: &SceneState, id: &str, p: &Pose, target: &str, rel: RelationKin
         b.half[0] * (b.ex[0] * d[0] + b.ex[1] * d[1]).abs()
             + b.half[1] * (b.ey[0] * d[0] + b.ey[1] * d[1]).abs()
     };
+    let focus = state
+        .relations
+        .iter()
+        .find(|r| r.object == t.id && r.subject != id && r.relation == RelationKind::Front)
+        .and_then(|r| state.object(&r.subject).ok())
+        .map(|f| [f.position[0], f.position[1]]);
     let mut best: Option<(f64, Pose)> = None;
     for d in sides {
         let r = reach(&tb, d) + BESIDE_GAP + reach(&me, d);
@@ -76,6 +95,18 @@ fn beside(state: &SceneState, id: &str, p: &Pose, target: &str, rel: RelationKin
         let cand = Pose {
             position: [c[0], c[1], p.position[2]],
             ..*p
+        };
+        // ... and toward what stands in front of the target, if anything does (an armchair
+        // beside the sofa turns to the coffee table before it)
+        let cand = match focus.filter(|_| side_by_side) {
+            Some(f) => {
+                let d = [f[0] - c[0], f[1] - c[1]];
+                Pose {
+                    yaw: wrap_yaw(yaw_facing(d)),
+                    ..cand
+                }
+            }
+            None => cand,
         };
         let moved = super::ops::with_pose(state, id, cand)?;
         let free = moved.collisions(id, state).is_empty();

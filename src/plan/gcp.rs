@@ -59,6 +59,9 @@ const OUTDOOR_OCCUPANCY: f64 = 0.2;
 const WALL_MARGIN: f64 = 0.02;
 /// Preferred free space around unrelated objects (a walkway).
 const WALKWAY: f64 = 0.6;
+/// Weight of a thing turning toward what it relates to, against the search's seeded jitter
+/// (at most 3).
+const FACING_WEIGHT: f64 = 1.5;
 
 /// A room that fits the instances: floor area = footprints / occupancy (aspect 5:4), never
 /// narrower than the largest object plus a walkway, height above the tallest object.
@@ -114,6 +117,9 @@ struct Problem {
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     sightlines: Vec<(usize, usize)>,
     step: f64,
+    /// Place the largest footprints first whatever holds what (the retry of a spec whose
+    /// constraint order left no room).
+    largest_first: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -290,20 +296,21 @@ impl Problem {
             }
             if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
                 // under the partner, or the support below a placed subject
+                // turned as the partner, or across it (a bridge over its pond)
                 let z = if subject { 0.0 } else { (pj.z - s[2]).max(0.0) };
-                out.push(Pose {
-                    c: pj.c,
-                    yaw: pj.yaw,
-                    z,
-                });
+                for yaw in [pj.yaw, pj.yaw + 90.0] {
+                    out.push(Pose { c: pj.c, yaw, z });
+                }
                 continue;
             }
             if !subject && rel == RelationKind::Under {
-                out.push(Pose {
-                    c: pj.c,
-                    yaw: pj.yaw,
-                    z: 0.0,
-                });
+                for yaw in [pj.yaw, pj.yaw + 90.0] {
+                    out.push(Pose {
+                        c: pj.c,
+                        yaw,
+                        z: 0.0,
+                    });
+                }
                 continue;
             }
             // Around the partner in its frame: front, behind, left, right at several gaps.
@@ -411,7 +418,9 @@ impl Problem {
                 } else if (subject || rel == RelationKind::Opposite) && !is_group(rel) {
                     // chairs, tables, lamps turn toward what they relate to; OPPOSITE pairs
                     // face each other
-                    pose_bonus += super::check::facing_error(&b, &bj).to_radians().cos();
+                    // (as much as the search's jitter, so a seat does not end turned away)
+                    pose_bonus +=
+                        FACING_WEIGHT * super::check::facing_error(&b, &bj).to_radians().cos();
                 }
             }
         }
@@ -463,8 +472,20 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
             room.size[0], room.size[1], room.size[2], need.size[0], need.size[1], need.size[2]
         )));
     }
-    let l = layout_in(spec, room, opts);
-    let problems = super::check::validity_problems(&l, spec);
+    let mut l = layout_in(spec, room, opts);
+    let mut problems = super::check::validity_problems(&l, spec);
+    if !problems.is_empty() {
+        // one greedy order can paint itself into a corner: the largest first before refusing
+        let more = LayoutOptions {
+            restarts: 4 * opts.restarts.max(1),
+            ..opts
+        };
+        let l2 = layout_in_pinned(spec, room, more, &BTreeMap::new(), None, true);
+        let p2 = super::check::validity_problems(&l2, spec);
+        if p2.len() < problems.len() {
+            (l, problems) = (l2, p2);
+        }
+    }
     if !problems.is_empty() {
         let mut ids: Vec<String> = vec![];
         for o in &l.objects {
@@ -508,12 +529,12 @@ pub fn layout_pinned(
     let room = spec
         .room
         .unwrap_or_else(|| choose_room(&spec.instances(), spec.scene_type));
-    Ok(layout_in_pinned(spec, room, opts, pins, openings))
+    Ok(layout_in_pinned(spec, room, opts, pins, openings, false))
 }
 
 /// The GCP search in `room`, without the fit checks.
 pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> Layout {
-    layout_in_pinned(spec, room, opts, &BTreeMap::new(), None)
+    layout_in_pinned(spec, room, opts, &BTreeMap::new(), None, false)
 }
 
 /// [`layout_in`] with pinned instances placed first, as they are. The placement classes
@@ -524,6 +545,7 @@ fn layout_in_pinned(
     opts: LayoutOptions,
     pins: &BTreeMap<String, Pin>,
     openings: Option<&[Opening]>,
+    largest_first: bool,
 ) -> Layout {
     let mut work = spec.clone();
     let mounts = classes::apply(&mut work);
@@ -590,6 +612,7 @@ fn layout_in_pinned(
         rels,
         stacked,
         step,
+        largest_first,
     };
     let pinned: Vec<Option<Pose>> = prob
         .inst
@@ -611,7 +634,7 @@ fn layout_in_pinned(
             (Some(o), _) => o.to_vec(),
             (None, SceneType::Indoor) => openings::generate(
                 room.size,
-                !openings::says_no_windows(&spec.scene_text),
+                openings::asked_windows(&spec.scene_text),
                 &mut rng,
             ),
             (None, SceneType::Outdoor) => vec![],
@@ -650,11 +673,42 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
 /// wall-anchored, then larger), OVER subjects after their support.
 fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     let n = prob.inst.len();
+    // How much an instance holds others in place: being placed by a partner (a nightstand at
+    // its bed, a coffee table in front of its sofa) and a support's load (a lamp on that
+    // nightstand) do not count, so a partner is placed before what is placed by it; on ties,
+    // what no partner places goes first.
+    let placed_by = |rel: RelationKind| {
+        is_group(rel)
+            || matches!(
+                rel,
+                RelationKind::Front
+                    | RelationKind::Behind
+                    | RelationKind::Left
+                    | RelationKind::Right
+                    | RelationKind::Next
+            )
+    };
     let key = |i: usize| {
         let a = &prob.inst[i];
         let wall = matches!(a.anchor, Anchor::Side | Anchor::Corner) as u32;
         let area = a.size[0] * a.size[1];
-        (prob.rels[i].len(), wall, (area * 1000.0) as u64)
+        let holds = prob.rels[i]
+            .iter()
+            .filter(|&&(rel, _, subject)| {
+                if subject {
+                    !placed_by(rel)
+                } else {
+                    rel != RelationKind::Over
+                }
+            })
+            .count();
+        let free = !prob.rels[i]
+            .iter()
+            .any(|&(rel, _, subject)| subject && placed_by(rel));
+        if prob.largest_first {
+            return (0, false, 0, (area * 1000.0) as u64);
+        }
+        (holds, free, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];
     let mut out = vec![];
@@ -812,7 +866,20 @@ fn fallback_pose(
             z: 0.0,
         },
     );
-    for _ in 0..2000 {
+    // a thing hung on a wall stays on a wall, at its height
+    let z = prob.hung[i].unwrap_or(0.0);
+    let on_wall: Vec<Pose> = if prob.wall_hung[i] {
+        prob.all_candidates(i, placed)
+            .into_iter()
+            .filter(|p| {
+                let wd = wall_distances(&prob.boxed(i, p), prob.room);
+                wd.iter().all(|&v| v >= -1e-9) && wd.iter().any(|&v| v <= WALL_MARGIN + 0.03)
+            })
+            .collect()
+    } else {
+        vec![]
+    };
+    let random = (0..2000).map(|_| {
         let yaw = [0.0, 90.0][rng.gen_range(0..2)];
         let (ex, ey) = if yaw == 0.0 {
             (s[0], s[1])
@@ -821,11 +888,14 @@ fn fallback_pose(
         };
         let x = rng.gen_range(-0.5 * (w - ex).max(0.0)..=0.5 * (w - ex).max(0.0));
         let y = rng.gen_range(-0.5 * (d - ey).max(0.0)..=0.5 * (d - ey).max(0.0));
-        let p = Pose {
-            c: [x, y],
-            yaw,
-            z: 0.0,
-        };
+        Pose { c: [x, y], yaw, z }
+    });
+    let poses: Vec<Pose> = if on_wall.is_empty() {
+        random.collect()
+    } else {
+        on_wall
+    };
+    for p in poses {
         let b = prob.boxed(i, &p);
         let cost: f64 = placed
             .iter()
@@ -833,7 +903,12 @@ fn fallback_pose(
             .filter_map(|(j, q)| q.map(|q| (j, q)))
             .filter(|(j, _)| !prob.is_stacked(i, *j))
             .map(|(j, q)| penetration(&b, &prob.boxed(j, &q)).max(0.0))
-            .sum();
+            .sum::<f64>()
+            + prob
+                .zones
+                .iter()
+                .map(|z| penetration(&b, z).max(0.0))
+                .sum::<f64>();
         if cost < best.0 {
             best = (cost, p);
         }

@@ -190,6 +190,13 @@ const RULES: &[Rule] = &[
         per_object: Some(2),
     },
     Rule {
+        // a bridge crosses its pond: the water lies under it
+        subjects: &["pond", "koi pond"],
+        relation: RelationKind::Under,
+        objects: &["wooden bridge"],
+        per_object: Some(1),
+    },
+    Rule {
         subjects: &["rug"],
         relation: RelationKind::Under,
         objects: &["coffee table", "dining table", "round table", "bed", "desk"],
@@ -323,4 +330,34 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         !(replaced(&r.subject, &r.object) || replaced(&r.object, &r.subject) || pulls(&r.subject))
     });
     spec.relations.extend(added);
+    shelter_group(spec);
+}
+
+/// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)
+/// are under it too: they sit inside its footprint, below its roof.
+fn shelter_group(spec: &mut SceneSpec) {
+    let mut extra: Vec<Relation> = vec![];
+    for roof in spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Under)
+    {
+        for seat in spec.relations.iter().filter(|r| {
+            r.object == roof.subject
+                && matches!(r.relation, RelationKind::Around | RelationKind::At)
+        }) {
+            let has = |rs: &[Relation]| {
+                rs.iter()
+                    .any(|r| r.subject == seat.subject && r.object == roof.object)
+            };
+            if !has(&spec.relations) && !has(&extra) {
+                extra.push(Relation {
+                    subject: seat.subject.clone(),
+                    relation: RelationKind::Under,
+                    object: roof.object.clone(),
+                });
+            }
+        }
+    }
+    spec.relations.extend(extra);
 }

@@ -154,7 +154,8 @@ pub struct Mounts {
 /// Puts the placement classes into `spec`'s own terms: against_wall and on_wall things without
 /// an anchor of the user's take SIDE (indoor); an on_surface thing with no OVER/UNDER relation
 /// of its own goes OVER a support instance (the first support category present, spread over
-/// its instances by their top area). Returns the wall heights and ceiling things.
+/// its instances by their top area); things a support's width cannot take side by side go to
+/// another instance of it. Returns the wall heights and ceiling things.
 pub fn apply(spec: &mut SceneSpec) -> Mounts {
     let mut mounts = Mounts::default();
     let indoor = spec.scene_type == SceneType::Indoor;
@@ -264,7 +265,48 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
+    spread_overflow(spec);
     mounts
+}
+
+/// Things OVER a support stand side by side along its width; those its width cannot take go
+/// to the least loaded instance of the same support category that can ("a lamp on each
+/// nightstand" said of one nightstand, four monitors said of one of two desks). When no
+/// instance has room they stay where they were put.
+fn spread_overflow(spec: &mut SceneSpec) {
+    let width = |id: &str| spec.objects.get(base(id)).map_or(0.0, |o| o.size[0]);
+    let mut used: BTreeMap<String, f64> = BTreeMap::new();
+    let mut moves: Vec<(usize, String)> = vec![];
+    for (k, r) in spec.relations.iter().enumerate() {
+        if r.relation != RelationKind::Over {
+            continue;
+        }
+        let w = width(&r.subject);
+        let fits = |sup: &str, used: &BTreeMap<String, f64>| {
+            used.get(sup).copied().unwrap_or(0.0) + w <= width(sup) + 0.01
+        };
+        if fits(&r.object, &used) {
+            *used.entry(r.object.clone()).or_default() += w;
+            continue;
+        }
+        let n = spec.objects.get(base(&r.object)).map_or(0, |o| o.number);
+        let other = (1..=n)
+            .map(|m| format!("{}{m}", base(&r.object)))
+            .filter(|o| *o != r.object && fits(o, &used))
+            .min_by(|a, b| {
+                let ua = used.get(a).copied().unwrap_or(0.0);
+                let ub = used.get(b).copied().unwrap_or(0.0);
+                ua.total_cmp(&ub)
+            });
+        let to = other.unwrap_or_else(|| r.object.clone());
+        *used.entry(to.clone()).or_default() += w;
+        if to != r.object {
+            moves.push((k, to));
+        }
+    }
+    for (k, to) in moves {
+        spec.relations[k].object = to;
+    }
 }
 
 fn base(id: &str) -> &str {

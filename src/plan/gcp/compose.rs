@@ -4,22 +4,42 @@
 //! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
 //! back, not in front of its face; a thing alone on its support centred on it (at its back
 //! when the support stands against a wall); a thing by a
-//! window or door as close to it as it can stand.
+//! window or door as close to it as it can stand; a thing in FRONT of or BEHIND another
+//! centred on its axis, between [`FRONT_LEGROOM`] and [`FRONT_REACH`] from it and square to
+//! it; a thing over another that it is longer than (UNDER) spanning it,
+//! past both ends, and centred over what stands under it.
 use super::{Pose, Problem};
-use crate::plan::check::{opening_distance, overlap_depth, Box2};
+use crate::plan::check::{gap, opening_distance, overlap_depth, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
 
 /// Height above which a thing blocks a sightline (m).
 pub const SIGHTLINE_HEIGHT: f64 = 0.6;
 /// Depth kept free in front of a thing against a wall (m).
 pub const FACE_CLEARANCE: f64 = 0.6;
+/// The gap a thing in FRONT of or BEHIND another keeps at most without cost (m): a coffee
+/// table within reach of the sofa's seat (furnishers' 40-50 cm).
+pub const FRONT_REACH: f64 = 0.45;
+/// The gap below which a thing in FRONT of another leaves no room for legs (m).
+pub const FRONT_LEGROOM: f64 = 0.3;
 
-/// Whether the segment from `a` to `c` (ends excluded) passes through `b`'s footprint.
+/// Half the width of a sightline (m): the view from the middle of a sofa to a screen is a
+/// band, not a line.
+const SIGHTLINE_HALF_WIDTH: f64 = 0.35;
+
+/// Whether the band from `a` to `c` (ends excluded), [`SIGHTLINE_HALF_WIDTH`] either side of
+/// the segment, passes through `b`'s footprint.
 fn crosses(b: &Box2, a: [f64; 2], c: [f64; 2]) -> bool {
-    (1..24).any(|k| {
-        let t = k as f64 / 24.0;
-        b.contains([a[0] + t * (c[0] - a[0]), a[1] + t * (c[1] - a[1])])
-    })
+    let d = [c[0] - a[0], c[1] - a[1]];
+    let len = d[0].hypot(d[1]).max(1e-9);
+    let n = [-d[1] / len, d[0] / len];
+    [-SIGHTLINE_HALF_WIDTH, 0.0, SIGHTLINE_HALF_WIDTH]
+        .iter()
+        .any(|&o| {
+            (1..24).any(|k| {
+                let t = k as f64 / 24.0;
+                b.contains([a[0] + t * d[0] + o * n[0], a[1] + t * d[1] + o * n[1]])
+            })
+        })
 }
 
 /// The free space in front of `b`'s face.
@@ -30,6 +50,19 @@ fn face_zone(b: &Box2) -> Box2 {
     ];
     let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
     Box2::new(c, yaw, [2.0 * b.half[0], FACE_CLEARANCE], 0.0, 2.0)
+}
+
+/// How far `over`'s long axis reaches past `under` at each end (m), 0 when it does not
+/// reach past them, at most 1.
+fn span(over: &Box2, under: &Box2) -> f64 {
+    let (ax, half) = if over.half[0] >= over.half[1] {
+        (over.ex, over.half[0])
+    } else {
+        (over.ey, over.half[1])
+    };
+    let dot = |a: [f64; 2], b: [f64; 2]| (a[0] * b[0] + a[1] * b[1]).abs();
+    let extent = dot(ax, under.ex) * under.half[0] + dot(ax, under.ey) * under.half[1];
+    (half - extent).clamp(0.0, 1.0)
 }
 
 impl Problem {
@@ -64,7 +97,7 @@ impl Problem {
                 }
                 if let (Some(pa), Some(pc)) = (placed[a], placed[c]) {
                     if crosses(b, pa.c, pc.c) {
-                        score -= 6.0;
+                        score -= 12.0;
                     }
                 }
             }
@@ -89,7 +122,7 @@ impl Problem {
                             continue;
                         }
                         if crosses(bk, p.c, bj.c) {
-                            score -= 6.0;
+                            score -= 12.0;
                         }
                     }
                 }
@@ -104,6 +137,35 @@ impl Problem {
                     let t = [bj.c[0] - bj.ey[0] * back, bj.c[1] - bj.ey[1] * back];
                     let d = ((p.c[0] - t[0]).powi(2) + (p.c[1] - t[1]).powi(2)).sqrt();
                     score -= 8.0 * d;
+                }
+                RelationKind::Front | RelationKind::Behind => {
+                    // in front of or behind a thing is centred on its axis (a coffee table
+                    // before the middle of its sofa)
+                    let lateral = if subject {
+                        bj.local(p.c)[0]
+                    } else {
+                        b.local(bj.c)[0]
+                    };
+                    score -= 3.0 * lateral.abs().min(2.0);
+                    // and within reach of it (a coffee table about 0.45 m from its sofa)
+                    let g = gap(b, &bj);
+                    score -= 4.0 * (g - FRONT_REACH).clamp(0.0, 2.5);
+                    // with room for legs between them
+                    score -= 8.0 * (FRONT_LEGROOM - g).max(0.0);
+                    // and square to it (a coffee table parallel to its sofa)
+                    let turn = (p.yaw - placed[j].map_or(p.yaw, |q| q.yaw)).to_radians();
+                    score -= 3.0 * (1.0 - turn.cos().abs());
+                }
+                RelationKind::Under => {
+                    // a thing over another that it is longer than spans it with its length,
+                    // reaching past both ends (a bridge across its pond); 0 when it is not
+                    let (over, under) = if subject { (&bj, b) } else { (b, &bj) };
+                    score += 4.0 * span(over, under);
+                    if !subject {
+                        // a roof centred over what stands under it (a gazebo over its table)
+                        let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
+                        score -= 3.0 * d.min(3.0);
+                    }
                 }
                 RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
                     score -= 3.0;

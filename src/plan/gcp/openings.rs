@@ -1,7 +1,8 @@
 //! Doors and windows of an indoor room (ARCHITECTURE.md "Openings"): one door, 0.9 m wide,
 //! near a corner of a seeded wall; a window centred on the wall opposite it and, at random, on
 //! one side wall (two on a wall of 6 m or more), 0.9 m sill. A room whose sentence says it has
-//! no windows gets none.
+//! no windows gets none; one whose sentence counts its windows ("three big windows") gets that
+//! many, the wall opposite the door first.
 use crate::plan::spec::{Opening, OpeningKind, Wall};
 use rand::Rng;
 
@@ -21,6 +22,52 @@ pub fn says_no_windows(text: &str) -> bool {
     ]
     .iter()
     .any(|p| t.contains(p))
+}
+
+/// How many windows `text` asks for: 0 when it asks for none ("a windowless room"), n when
+/// it counts them ("three big windows", "4 windows": a number at most three words before
+/// "windows"), `None` when it does not say.
+pub fn asked_windows(text: &str) -> Option<u32> {
+    if says_no_windows(text) {
+        return Some(0);
+    }
+    const NUMBERS: [&str; 12] = [
+        "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven",
+        "twelve",
+    ];
+    let t = text.to_lowercase();
+    let words: Vec<&str> = t
+        .split(|c: char| !c.is_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let number = |w: &str| {
+        NUMBERS
+            .iter()
+            .position(|n| *n == w)
+            .map(|k| k as u32 + 1)
+            .or_else(|| w.parse::<u32>().ok().filter(|n| (1..=12).contains(n)))
+    };
+    words.iter().enumerate().find_map(|(k, w)| {
+        if *w != "windows" {
+            return None;
+        }
+        // the number and the adjectives between it and "windows" ("three big windows"), no
+        // other phrase ("six chairs by the windows")
+        const LINKS: [&str; 16] = [
+            "the", "a", "an", "by", "near", "under", "beneath", "below", "at", "in", "of", "and",
+            "with", "to", "beside", "facing",
+        ];
+        for back in 1..=3.min(k) {
+            let w = words[k - back];
+            if let Some(n) = number(w) {
+                return Some(n);
+            }
+            if LINKS.contains(&w) {
+                return None;
+            }
+        }
+        None
+    })
 }
 
 /// Length of `wall` in a room of size `room`.
@@ -51,8 +98,9 @@ fn opposite(w: Wall) -> Wall {
     }
 }
 
-/// Seeded openings of a room of size `room`.
-pub fn generate(room: [f64; 3], windows: bool, rng: &mut impl Rng) -> Vec<Opening> {
+/// Seeded openings of a room of size `room`, with `windows` windows when the sentence counts
+/// them (see [`asked_windows`]; `None`: as many as the walls take).
+pub fn generate(room: [f64; 3], windows: Option<u32>, rng: &mut impl Rng) -> Vec<Opening> {
     const WALLS: [Wall; 4] = [Wall::South, Wall::North, Wall::East, Wall::West];
     let mut out = vec![];
     let door_wall = WALLS[rng.gen_range(0..4)];
@@ -68,8 +116,13 @@ pub fn generate(room: [f64; 3], windows: bool, rng: &mut impl Rng) -> Vec<Openin
         width: w,
         height: h,
     });
-    if !windows {
-        return out;
+    match windows {
+        Some(0) => return out,
+        Some(n) => {
+            counted_windows(room, door_wall, n, rng, &mut out);
+            return out;
+        }
+        None => {}
     }
     let mut walls = vec![opposite(door_wall)];
     let sides: Vec<Wall> = WALLS
@@ -100,6 +153,53 @@ pub fn generate(room: [f64; 3], windows: bool, rng: &mut impl Rng) -> Vec<Openin
         }
     }
     out
+}
+
+/// `n` windows on the walls without the door, the one opposite it first, spread as evenly as
+/// the walls take them (each window at most 1.4 m wide, 0.3 m of wall at least between them).
+fn counted_windows(
+    room: [f64; 3],
+    door_wall: Wall,
+    n: u32,
+    rng: &mut impl Rng,
+    out: &mut Vec<Opening>,
+) {
+    let mut sides: Vec<Wall> = [Wall::South, Wall::North, Wall::East, Wall::West]
+        .into_iter()
+        .filter(|&x| x != door_wall && x != opposite(door_wall))
+        .collect();
+    if rng.gen_bool(0.5) {
+        sides.reverse();
+    }
+    let walls: Vec<Wall> = std::iter::once(opposite(door_wall))
+        .chain(sides)
+        .filter(|&w| length(w, room) >= 1.5)
+        .collect();
+    if walls.is_empty() {
+        return;
+    }
+    let mut per = vec![0u32; walls.len()];
+    for k in 0..n {
+        per[k as usize % walls.len()] += 1;
+    }
+    let height = (room[2] - SILL - 0.3).clamp(0.6, 1.3);
+    for (wall, m) in walls.into_iter().zip(per) {
+        if m == 0 {
+            continue;
+        }
+        let len = length(wall, room);
+        let width = ((len - 0.3 * (m as f64 + 1.0)) / m as f64).clamp(0.4, 1.4);
+        for k in 0..m {
+            let t = len * (k as f64 + 0.5) / m as f64 - 0.5 * len;
+            out.push(Opening {
+                kind: OpeningKind::Window,
+                wall,
+                position: on_wall(wall, room, t, SILL),
+                width,
+                height,
+            });
+        }
+    }
 }
 
 impl super::Problem {
@@ -175,5 +275,63 @@ impl super::Problem {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    #[test]
+    fn counted_windows_are_read_and_made() {
+        assert_eq!(
+            asked_windows("a sunroom with three big windows"),
+            Some(3),
+            "three big"
+        );
+        assert_eq!(
+            asked_windows("a studio with 2 tall windows"),
+            Some(2),
+            "digits"
+        );
+        assert_eq!(asked_windows("a windowless cellar"), Some(0), "none");
+        assert_eq!(
+            asked_windows("a bedroom with a bed by the window"),
+            None,
+            "not counted"
+        );
+        assert_eq!(
+            asked_windows("six chairs by the windows"),
+            None,
+            "chairs counted"
+        );
+        for seed in 0..8 {
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            for n in [1, 3, 5] {
+                let o = generate([4.3, 3.5, 2.8], Some(n), &mut rng);
+                let wins: Vec<&Opening> =
+                    o.iter().filter(|o| o.kind == OpeningKind::Window).collect();
+                assert_eq!(wins.len(), n as usize, "windows made");
+                let door = o
+                    .iter()
+                    .find(|o| o.kind == OpeningKind::Door)
+                    .expect("door");
+                assert!(
+                    wins.iter().all(|w| w.wall != door.wall),
+                    "a window on the door wall"
+                );
+                // no two windows of a wall overlap
+                for a in &wins {
+                    for b in &wins {
+                        if !std::ptr::eq(*a, *b) && a.wall == b.wall {
+                            let d = (a.position[0] - b.position[0]).abs()
+                                + (a.position[1] - b.position[1]).abs();
+                            assert!(d >= 0.5 * (a.width + b.width), "{a:?} {b:?}");
+                        }
+                    }
+                }
+            }
+        }
     }
 }

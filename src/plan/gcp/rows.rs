@@ -2,7 +2,9 @@
 //! treadmills"): one block of aligned rows, every instance turned the same way, toward the front
 //! of the room. What the rows face (their OPPOSITE or ROW partner, else the first category of
 //! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall,
-//! centred before them. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
+//! centred before them, with the fronts.txt things more telling than it that the scene holds
+//! (a stage below the screen); the front band is deep enough that the ends of the first row
+//! see them within [`SIGHT`] of straight ahead. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
 //! one fewer (every row is used), side by side; rows of four or more, or of long things (pews,
 //! benches), are split by a centre aisle. The block keeps a free band at the front for what the
 //! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
@@ -19,6 +21,10 @@ const FRONT_MIN: f64 = 1.0;
 const BEHIND: f64 = 0.9;
 /// The centre aisle of rows of four or more.
 const AISLE: f64 = 1.0;
+/// The widest angle (degrees) off straight ahead at which a seat at the end of the first
+/// row sees the nearest point of what stands at the front (the fidelity corpus judges
+/// "facing" within 40 degrees).
+const SIGHT: f64 = 38.0;
 
 /// The shape of one category's block: instances, rows, columns, pitch across and along.
 struct Block {
@@ -32,11 +38,12 @@ struct Block {
     /// Free depth in front of the first row: [`FRONT`], or what the rows face and its view,
     /// and deep enough that the ends of a wide row still see the front (0.55 x its width).
     front: f64,
-    /// The category the rows face: the object of their OPPOSITE or ROW relations, else the
-    /// first of kb/fronts.txt the scene holds.
-    target: Option<String>,
     /// The width of what the rows face (0 when nothing).
     target_width: f64,
+    /// What stands at the front, centred before the rows, the most telling first: the
+    /// target and the fronts.txt categories before it that the scene holds (a stage, then
+    /// the screen above it).
+    at_front: Vec<String>,
 }
 
 /// kb/fronts.txt: what rows face, most telling first.
@@ -114,12 +121,19 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
                 .find(|f| *f != cat && spec.objects.contains_key(*f))
                 .map(str::to_string)
         });
-    let front = target
-        .as_deref()
-        .and_then(|t| spec.objects.get(t))
+    // what else stands at the front with it: the fronts.txt categories the scene holds that
+    // are more telling than it (a stage below a screen), the most telling first
+    let mut at_front: Vec<String> = fronts()
+        .filter(|f| *f != cat && spec.objects.contains_key(*f))
+        .take_while(|f| Some(*f) != target.as_deref())
+        .map(str::to_string)
+        .collect();
+    at_front.extend(target.clone());
+    let front = at_front
+        .iter()
+        .filter_map(|t| spec.objects.get(t))
         .map(|t| t.size[0].min(t.size[1]) + 1.0)
-        .unwrap_or(0.0)
-        .max(FRONT);
+        .fold(FRONT, f64::max);
     let target_width = target
         .as_deref()
         .and_then(|t| spec.objects.get(t))
@@ -127,8 +141,8 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         .unwrap_or(0.0);
     let s = [o.size[0], o.size[1]];
     let mut b = Block {
+        at_front: vec![],
         target_width,
-        target,
         front,
         n,
         rows,
@@ -147,6 +161,14 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         },
     };
     b.front = b.front.max(0.55 * b.width());
+    // the ends of the first row see what stands at the front within SIGHT of straight ahead
+    for t in at_front.iter().filter_map(|t| spec.objects.get(t)) {
+        let lateral = (0.5 * b.width() - 0.5 * t.size[0]).max(0.0);
+        b.front = b
+            .front
+            .max(t.size[1] + (lateral / SIGHT.to_radians().tan()).max(1.0));
+    }
+    b.at_front = at_front;
     Some(b)
 }
 
@@ -185,9 +207,10 @@ impl Problem {
                 for (&i, p) in ids.iter().zip(poses) {
                     placed[i] = Some(p);
                 }
-                let t = b.target.as_ref().map(|t| format!("{t}1"));
-                if let Some(&t) = t.and_then(|t| self.index.get(&t)) {
-                    self.place_front(t, f, placed);
+                for t in &b.at_front {
+                    if let Some(&t) = self.index.get(&format!("{t}1")) {
+                        self.place_front(t, f, placed);
+                    }
                 }
             }
         }
@@ -226,7 +249,7 @@ impl Problem {
             self.inst[ids[0]].anchor,
             Anchor::Window | Anchor::FaceWindow
         );
-        let mut tries: Vec<([f64; 2], bool, f64)> = vec![];
+        let mut tries: Vec<([f64; 2], bool, bool, f64)> = vec![];
         for (f, wall) in [
             ([0.0, 1.0], Wall::North),
             ([0.0, -1.0], Wall::South),
@@ -241,11 +264,14 @@ impl Problem {
                     .openings
                     .iter()
                     .any(|o| o.kind == OpeningKind::Window && o.wall == wall);
-            tries.push((f, window, slack));
+            // the whole front band fits this way
+            let full = along >= nl && across >= na;
+            tries.push((f, window, full, slack));
         }
-        // a window first when asked, then the most room; ties keep the order (north first)
-        tries.sort_by(|a, b| b.1.cmp(&a.1).then(b.2.total_cmp(&a.2)));
-        for (f, window, slack) in tries {
+        // a window first when asked, then a way with the whole front, then the most room;
+        // ties keep the order (north first)
+        tries.sort_by(|a, b| b.1.cmp(&a.1).then(b.2.cmp(&a.2)).then(b.3.total_cmp(&a.3)));
+        for (f, window, _, slack) in tries {
             if slack < 0.0 {
                 continue;
             }
