@@ -68,10 +68,7 @@ pub fn read_input(dir: &Path) -> Result<SceneInput> {
     let bad = |e: crate::scene::dir::SceneError| ExportError::Unrepresentable(e.to_string());
     let scene = read_scene(dir).map_err(bad)?;
     let parts = compose_parts(dir, &scene).map_err(bad)?;
-    let n = scene.objects.len();
-    let counts: Vec<usize> = parts[..n].iter().map(Gaussians::len).collect();
-    let env: usize = parts[n..].iter().map(Gaussians::len).sum();
-    let labels = SceneLabels::new(&scene, &counts, env)?;
+    let labels = SceneLabels::of_parts(&scene, &parts)?;
     let layout: Value = std::fs::read_to_string(dir.join("layout.json"))
         .ok()
         .and_then(|t| serde_json::from_str(&t).ok())
