@@ -241,7 +241,28 @@ fn ok(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stdout).to_string() + &err
 }
 
+/// Largest absolute difference of any parameter of two clouds of the same size.
+fn max_diff(a: &Gaussians, b: &Gaussians) -> f32 {
+    assert_eq!(a.len(), b.len());
+    let flat = |g: &Gaussians| -> Vec<f32> {
+        let mut v: Vec<f32> = g.means.iter().flatten().copied().collect();
+        v.extend(g.scales.iter().flatten());
+        v.extend(g.rotations.iter().flatten());
+        v.extend(&g.opacities);
+        v.extend(&g.sh);
+        v
+    };
+    flat(a)
+        .iter()
+        .zip(flat(b))
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f32::max)
+}
+
+/// Slow (about 3 minutes on 2 cores: a whole oracle run and the same run split), so left out of
+/// the default suite: `cargo test --release --test generate_scene -- --ignored`.
 #[test]
+#[ignore = "slow: a whole oracle run twice; run with --ignored"]
 fn oracle_object_shards_then_the_scene_step_equal_one_run() {
     let refdir = tmp("ref3");
     reference(&refdir);
@@ -280,19 +301,37 @@ fn oracle_object_shards_then_the_scene_step_equal_one_run() {
         !s.contains("generating"),
         "the scene step generated an object again: {s}"
     );
-    for f in [
-        "objects/bed.ply",
-        "objects/nightstand.ply",
-        "environment.ply",
-        "scene.ply",
-        "scene.json",
-        "labels.json",
-    ] {
+    // The plan and labels are the same bytes; the clouds the same up to the GPU's float noise
+    // (summation order of the backward pass): two single runs of the same command differ by up
+    // to 0.01-0.025 in a log-scale or opacity logit and 5e-5 m in a position, measured here.
+    for f in ["scene.json", "labels.json", "layout.json", "spec.json"] {
         let (a, b) = (
             std::fs::read(one.join(f)).unwrap(),
             std::fs::read(split.join(f)).unwrap(),
         );
         assert!(a == b, "{f} differs from the single run's");
+    }
+    for (f, tol) in [
+        ("objects/bed.ply", 0.05),
+        ("objects/nightstand.ply", 0.05),
+        ("environment.ply", 0.1),
+        ("scene.ply", 0.1),
+    ] {
+        let (a, b) = (
+            read_ply(&one.join(f)).unwrap(),
+            read_ply(&split.join(f)).unwrap(),
+        );
+        let d = max_diff(&a, &b);
+        println!("{f}: {} Gaussians, largest difference {d:.2e}", a.len());
+        assert!(d <= tol, "{f}: differs by {d} from the single run's");
+        let m = a
+            .means
+            .iter()
+            .flatten()
+            .zip(b.means.iter().flatten())
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f32::max);
+        assert!(m <= 1e-3, "{f}: a centre moved {m} m");
     }
     for d in [refdir, one, split] {
         std::fs::remove_dir_all(d).ok();
