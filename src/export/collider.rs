@@ -59,6 +59,9 @@ impl Mesh {
 /// hulls. A collider needs no finer detail, and every hull is checked before it is used.
 const HULL_GRID: [f64; 3] = [0.01, 0.02, 0.04];
 
+/// Twice the area (m²) below which a triangle's plane is not checked: 1 mm².
+pub const SLIVER: f64 = 2e-6;
+
 /// The convex hull of `points` in 3-D (quickhull's triangle mesh, outward faces), its vertices
 /// on a grid of [`HULL_GRID`] (so within half a cell's diagonal of a point) and every point
 /// within that of its inside; `None` when the points span no volume (fewer than four, or all on
@@ -119,8 +122,8 @@ fn hull_on_grid(points: &[[f64; 3]], step: f64) -> Option<Mesh> {
 }
 
 impl Mesh {
-    /// Whether every point lies inside every triangle's plane, within `tol` metres (triangles
-    /// of no area, whose plane is undefined, are skipped).
+    /// Whether every point lies inside every triangle's plane, within `tol` metres (slivers under
+    /// 1 mm², whose plane f32 vertices leave undefined, are skipped).
     pub fn holds(&self, points: &[[f64; 3]], tol: f64) -> bool {
         self.triangles.iter().all(|t| {
             let [a, b, c] = t.map(|i| self.vertices[i as usize]);
@@ -132,7 +135,7 @@ impl Mesh {
                 u[0] * v[1] - u[1] * v[0],
             ];
             let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-            l < 1e-9
+            l < SLIVER
                 || points
                     .iter()
                     .all(|p| (0..3).map(|k| n[k] * (p[k] - a[k])).sum::<f64>() <= tol * l)
@@ -245,7 +248,8 @@ pub fn walls(room: [f64; 3], openings: &[Opening]) -> Vec<(&'static str, Mesh)> 
 mod tests {
     use super::*;
 
-    /// Every face's outward plane, `(normal, offset)` with `normal · p <= offset` inside.
+    /// Every face's outward plane, `(normal, offset)` with `normal · p <= offset` inside
+    /// (slivers left out).
     fn planes(m: &Mesh) -> Vec<([f64; 3], f64)> {
         m.triangles
             .iter()
@@ -260,8 +264,10 @@ mod tests {
                 ];
                 let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
                 let n = n.map(|x| x / l);
-                (n, n[0] * a[0] + n[1] * a[1] + n[2] * a[2])
+                (l, (n, n[0] * a[0] + n[1] * a[1] + n[2] * a[2]))
             })
+            .filter(|(l, _)| *l >= SLIVER)
+            .map(|(_, p)| p)
             .collect()
     }
 
@@ -327,10 +333,11 @@ mod tests {
                 assert!(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] <= d + 0.009);
             }
         }
+        // Vertices are grid points, each within half a cell's diagonal of an input point.
         for v in &m.vertices {
             let near = pts
                 .iter()
-                .any(|p| (0..3).all(|a| (p[a] - v[a]).abs() < 1e-5));
+                .any(|p| (0..3).map(|a| (p[a] - v[a]).powi(2)).sum::<f64>().sqrt() <= step * 0.87);
             assert!(near, "{v:?} is no input point");
         }
         // Tighter than the bounding box: the back leaves the upper front empty.
