@@ -57,7 +57,7 @@ impl Mesh {
 /// near-degenerate clouds (a plant's or a lamp shade's tens of thousands of Gaussians: points
 /// 0.5-1.2 m outside faces in this project's drafts); the same clouds on a 1 cm grid give valid
 /// hulls. A collider needs no finer detail, and every hull is checked before it is used.
-const HULL_GRID: [f64; 3] = [0.01, 0.02, 0.04];
+pub const HULL_GRID: [f64; 3] = [0.01, 0.02, 0.04];
 
 /// Twice the area (m²) below which a triangle's plane is not checked: 1 mm².
 pub const SLIVER: f64 = 2e-6;
