@@ -13,6 +13,7 @@ mod common;
 mod export_support;
 use dreamscene::camera::object::{orbit_camera, ObjectFrame};
 use dreamscene::camera::{write_cameras, Camera};
+use dreamscene::export::labels::write_labelled_scene;
 use dreamscene::generate::scene::write_draft_scene;
 use dreamscene::plan::check::{penetration, relation_holds, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -64,7 +65,7 @@ fn draft(name: &str) -> (PathBuf, Layout) {
         thin(&d.join(format!("objects/{cat}.ply")), 15);
     }
     let s = read_scene(&d).unwrap();
-    write_ply(&d.join("scene.ply"), &compose_scene(&d, &s).unwrap()).unwrap();
+    write_labelled_scene(&d, &s).unwrap();
     std::fs::create_dir_all(d.join("renders")).unwrap();
     let mut cam = Camera::look_at(
         [1.4, -1.2, 1.8],
@@ -441,6 +442,109 @@ fn add_places_a_free_object_next_to_another_and_remove_takes_it_out() {
     assert_eq!(lamps(&read_scene(&d).unwrap()), 1, "undo takes back one");
 }
 
+/// Exports instance `id` alone (`export --only`, scene frame, PLY) and reads it back.
+fn export_only(dir: &Path, id: &str) -> (Gaussians, dreamscene::splat::ply::Labels) {
+    let out = dir.with_extension("only.ply");
+    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .arg("export")
+        .arg(dir)
+        .args(["--format", "ply", "--scene-frame", "--only", id, "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    ok(&o);
+    let (g, l) = dreamscene::splat::ply::read_ply_labelled(&out).unwrap();
+    (g, l.expect("the export keeps the labels"))
+}
+
+/// After an edit, scene.ply's labels and labels.json describe scene.json as it now is: instance
+/// k is scene.json's k-th object with a block of its object PLY's size, and exporting one id
+/// gives exactly that object's PLY under its transform (placed by this test).
+fn labels_follow_scene_json(d: &Path) {
+    let s = read_scene(d).unwrap();
+    let (cloud, labels) = dreamscene::splat::ply::read_ply_labelled(&d.join("scene.ply")).unwrap();
+    let labels = labels.expect("scene.ply keeps instance_id and semantic_id");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("labels.json")).unwrap()).unwrap();
+    let listed = json["instances"].as_array().unwrap();
+    assert_eq!(listed.len(), s.objects.len() + 1, "labels.json: {json}");
+    let mut start = 0;
+    for (k, o) in s.objects.iter().enumerate() {
+        let n = read_ply(&d.join(&o.ply)).unwrap().len();
+        let entry = &listed[k + 1];
+        assert_eq!(entry["id"], o.id.as_str());
+        assert_eq!(entry["category"], o.category.as_str());
+        assert_eq!(entry["instance_id"], k + 1);
+        assert_eq!(
+            entry["gaussians"],
+            serde_json::json!([start, n]),
+            "{}",
+            o.id
+        );
+        assert!(labels.instance[start..start + n]
+            .iter()
+            .all(|&i| usize::from(i) == k + 1));
+        start += n;
+    }
+    assert!(labels.instance[start..].iter().all(|&i| i == 0));
+    assert_eq!(labels.instance.len(), cloud.len());
+    for o in &s.objects {
+        let (g, l) = export_only(d, &o.id);
+        assert!(o.scale.iter().all(|v| (v - o.scale[0]).abs() < 1e-12));
+        let mine = place_here(
+            &read_ply(&d.join(&o.ply)).unwrap(),
+            o.yaw,
+            o.scale[0],
+            o.position,
+        );
+        assert_eq!(g.len(), mine.len(), "{}", o.id);
+        for (a, b) in g.means.iter().zip(&mine.means) {
+            assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-5), "{}", o.id);
+        }
+        let k = s.objects.iter().position(|x| x.id == o.id).unwrap() + 1;
+        assert!(l.instance.iter().all(|&i| usize::from(i) == k));
+    }
+}
+
+#[test]
+fn labels_and_labels_json_follow_add_move_remove_and_undo() {
+    let (d, l) = draft("labels");
+    labels_follow_scene_json(&d);
+    let before = snapshot(&d);
+    ok(&edit(
+        &d,
+        &["add", "a tall floor lamp", "--near", "bed1", "--no-render"],
+    ));
+    labels_follow_scene_json(&d);
+    // Removing an instance before others renumbers those after it.
+    ok(&edit(&d, &["remove", "nightstand1", "--no-render"]));
+    labels_follow_scene_json(&d);
+    // The chair turned in place where it stands free of the others' boxes.
+    let chair = l.objects.iter().find(|o| o.id == "chair1").unwrap();
+    let turned = Box2::new(
+        chair.position[..2].try_into().unwrap(),
+        chair.yaw + 90.0,
+        [0.45, 0.45],
+        0.0,
+        0.85,
+    );
+    assert!(l
+        .objects
+        .iter()
+        .filter(|o| o.id != "chair1")
+        .all(|o| penetration(&turned, &Box2::of(o)) < 0.0));
+    ok(&edit(
+        &d,
+        &["move", "chair1", "--rotate", "90", "--no-render"],
+    ));
+    labels_follow_scene_json(&d);
+    for _ in 0..3 {
+        ok(&edit(&d, &["undo"]));
+    }
+    labels_follow_scene_json(&d);
+    assert!(snapshot(&d) == before, "undo brought back other files");
+}
+
 /// Recolours a cloud: `f(position, colour) -> colour`.
 fn recolour(g: &mut Gaussians, f: impl Fn([f32; 3], [f32; 3]) -> [f32; 3]) {
     let k3 = g.coeffs() * 3;
@@ -474,7 +578,7 @@ fn reference(name: &str) -> (PathBuf, Layout) {
         models: Some(d.display().to_string()),
     };
     dreamscene::scene::dir::write_scene(&d, &s).unwrap();
-    write_ply(&d.join("scene.ply"), &compose_scene(&d, &s).unwrap()).unwrap();
+    write_labelled_scene(&d, &s).unwrap();
     (d, l)
 }
 
@@ -533,7 +637,7 @@ fn oracle_remove_reoptimises_the_floor_where_the_object_stood() {
     });
     write_ply(&env_path, &env).unwrap();
     let s = read_scene(&d).unwrap();
-    write_ply(&d.join("scene.ply"), &compose_scene(&d, &s).unwrap()).unwrap();
+    write_labelled_scene(&d, &s).unwrap();
 
     // The answer: the reference room with the bed and the chair only.
     let truth = {

@@ -1,7 +1,8 @@
 //! `dreamscene view` in a real browser: Debian's headless chromium, driven by playwright-core
 //! (viewer/tests/screenshot.mjs), opens the page on a red cluster at +x and a blue one at −x,
 //! waits for the page's rendered-frame signal and takes a screenshot, whose left and right
-//! halves must be red and blue (the start view looks from +y, so +x is on the left). Also: a
+//! halves must be red and blue (the start view looks from +y, so +x is on the left); the same
+//! PLY with per-Gaussian labels (`instance_id`, `semantic_id`) gives the same picture. Also: a
 //! busy port and a viewer without its npm packages are one-line errors, and SIGINT (Ctrl-C)
 //! stops the server with exit status 0. The screenshot script fails if the page asks for any URL
 //! outside the server under test.
@@ -48,19 +49,15 @@ fn interrupt(child: &mut Child) -> std::process::ExitStatus {
     child.wait().unwrap()
 }
 
-#[test]
-fn browser_shows_red_on_the_left_and_blue_on_the_right() {
-    let d = tmp("browser");
-    let ply = d.join("clusters.ply");
-    common::two_clusters(&ply, 3000, 0.15, 5);
-    let (mut child, url) = serve(&ply, "0");
-    let shot = d.join("shot.png");
+/// Serves `ply` with `view` and takes the page's screenshot (320x240) in headless chromium.
+fn screenshot(ply: &Path, shot: &Path) -> image::RgbImage {
+    let (mut child, url) = serve(ply, "0");
     let viewer = Path::new(env!("CARGO_MANIFEST_DIR")).join("viewer");
     let o = Command::new("node")
         .current_dir(&viewer)
         .arg("tests/screenshot.mjs")
         .arg(&url)
-        .arg(&shot)
+        .arg(shot)
         .arg("320x240")
         .output()
         .expect("node runs (scripts/setup.sh installs it)");
@@ -72,8 +69,17 @@ fn browser_shows_red_on_the_left_and_blue_on_the_right() {
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(status.success(), "view exited with {status:?} on SIGINT");
-    let img = image::open(&shot).unwrap().to_rgb8();
+    let img = image::open(shot).unwrap().to_rgb8();
     assert_eq!(img.dimensions(), (320, 240));
+    img
+}
+
+#[test]
+fn browser_shows_red_on_the_left_and_blue_on_the_right_labelled_or_not() {
+    let d = tmp("browser");
+    let ply = d.join("clusters.ply");
+    common::two_clusters(&ply, 3000, 0.15, 5);
+    let img = screenshot(&ply, &d.join("shot.png"));
     // Count strongly red and strongly blue pixels in the left and right halves (rows 40-200,
     // clear of the page's text overlays).
     let (mut red, mut blue) = ([0usize; 2], [0usize; 2]);
@@ -94,6 +100,34 @@ fn browser_shows_red_on_the_left_and_blue_on_the_right() {
     assert!(
         red[1] < red[0] / 10 && blue[0] < blue[1] / 10,
         "red {red:?} blue {blue:?}"
+    );
+
+    // The same Gaussians with per-Gaussian labels (instance_id, semantic_id after the INRIA
+    // properties, as scene.ply has them) look the same in the viewer.
+    let g = dreamscene::splat::ply::read_ply(&ply).unwrap();
+    let n = g.len();
+    let labels = dreamscene::splat::ply::Labels {
+        instance: (0..n).map(|i| if i < n / 2 { 1 } else { 2 }).collect(),
+        semantic: (0..n).map(|i| if i < n / 2 { 1 } else { 2 }).collect(),
+    };
+    let labelled = d.join("labelled.ply");
+    dreamscene::splat::ply::write_ply_labelled(&labelled, &g, Some(&labels)).unwrap();
+    assert!(dreamscene::splat::ply::read_ply_labelled(&labelled)
+        .unwrap()
+        .1
+        .is_some());
+    let other = screenshot(&labelled, &d.join("labelled.png"));
+    let diff: f64 = img
+        .as_raw()
+        .iter()
+        .zip(other.as_raw())
+        .map(|(a, b)| (f64::from(*a) - f64::from(*b)).abs())
+        .sum::<f64>()
+        / img.as_raw().len() as f64;
+    eprintln!("labelled vs plain: mean difference {diff:.3}/255");
+    assert!(
+        diff < 2.0,
+        "the labelled PLY looks different: {diff:.3}/255"
     );
     std::fs::remove_dir_all(&d).ok();
 }

@@ -65,9 +65,21 @@ pub struct Args {
     /// Gaussians.
     #[arg(long, value_enum, default_value = "box")]
     pub colliders: CollidersArg,
+    /// glb of a scene: the splats as one primitive of every Gaussian, or one per instance (a
+    /// child `splats_<id>` of its node, in its frame, so moving the node moves them) and
+    /// `splats_environment`.
+    #[arg(long, value_enum, default_value = "one")]
+    pub splats: SplatsArg,
     /// glb of a scene: the navmesh agent's radius in metres (footprints grow by it).
     #[arg(long, default_value_t = 0.25)]
     pub agent_radius: f64,
+}
+
+/// `--splats`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SplatsArg {
+    One,
+    PerObject,
 }
 
 /// `--colliders`.
@@ -206,6 +218,7 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
         },
         only: a.only.clone(),
         without: a.without.clone(),
+        per_object_splats: a.splats == SplatsArg::PerObject,
         ..Default::default()
     };
     match format {
@@ -243,6 +256,9 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
             Ok(Some(()))
         }
         _ if selecting => bail!("--only/--without apply to --format glb and ply"),
+        _ if a.splats == SplatsArg::PerObject => {
+            bail!("--splats per-object applies to --format glb")
+        }
         _ => Ok(None),
     }
 }

@@ -180,7 +180,8 @@ fn locked(
         keep = true;
     }
     if !draft {
-        return full(a, text, models, start);
+        let setup = full_setup(a, text, models, a.resume)?;
+        return full(a, text, models, start, a.resume, setup);
     }
     let (spec, layout) = plan_or_reuse(text, a, keep)?;
     eprintln!(
@@ -265,12 +266,26 @@ fn check_full(a: &GenerateArgs, models: Option<&Path>) -> Result<()> {
     Ok(())
 }
 
-/// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling,
-/// the three environment stages, then scene.json, scene.ply and the renders.
-fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> Result<()> {
+/// What a generation with the `sd` or `oracle:DIR` prior runs with.
+pub(super) struct Full {
+    pub ctx: dreamscene::gpu::Context,
+    pub spec: SceneSpec,
+    pub layout: Layout,
+    pub priors: Box<dyn dreamscene::generate::scene_stages::ScenePriors>,
+    pub cfg: dreamscene::generate::scene_stages::SceneConfig,
+}
+
+/// The device, plan (reused from --out with `resume`, and always for the oracle, whose plan is
+/// its reference's), priors and settings of a generation with the `sd` or `oracle:DIR` prior.
+pub(super) fn full_setup(
+    a: &GenerateArgs,
+    text: &str,
+    models: Option<&Path>,
+    resume: bool,
+) -> Result<Full> {
     use dreamscene::generate::object::ObjectConfig;
     use dreamscene::generate::scene_stages::{
-        generate_scene, OracleScenePriors, SceneConfig, ScenePriors, SdScenePriors,
+        OracleScenePriors, SceneConfig, ScenePriors, SdScenePriors,
     };
     let out = &a.out;
     let ctx = super::open_device()?;
@@ -278,16 +293,16 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
     if let PriorChoice::Oracle(dir) = &a.prior {
         for f in ["spec.json", "layout.json"] {
             let (from, to) = (dir.join(f), out.join(f));
-            if !(a.resume && to.is_file()) {
+            if !(resume && to.is_file()) {
                 std::fs::copy(&from, &to).with_context(|| {
                     format!("the oracle's reference scene: copying {}", from.display())
                 })?;
             }
         }
     }
-    let resume_plan = a.resume || matches!(a.prior, PriorChoice::Oracle(_));
+    let resume_plan = resume || matches!(a.prior, PriorChoice::Oracle(_));
     let (spec, layout) = plan_or_reuse(text, a, resume_plan)?;
-    let mut priors: Box<dyn ScenePriors> = match &a.prior {
+    let priors: Box<dyn ScenePriors> = match &a.prior {
         PriorChoice::Oracle(dir) => Box::new(OracleScenePriors::new(&ctx, dir)),
         _ => {
             let dir = models.expect("checked by the caller");
@@ -323,7 +338,35 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         layout.room.size[2],
         priors.kind()
     );
-    let report = generate_scene(
+    Ok(Full {
+        ctx,
+        spec,
+        layout,
+        priors,
+        cfg,
+    })
+}
+
+/// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling
+/// (with `resume`, those already finished, by an earlier run or by `--stage objects` shards,
+/// are kept), the three environment stages, then scene.json, scene.ply and the renders.
+pub(super) fn full(
+    a: &GenerateArgs,
+    text: &str,
+    models: Option<&Path>,
+    start: Instant,
+    resume: bool,
+    setup: Full,
+) -> Result<()> {
+    let out = &a.out;
+    let Full {
+        ctx,
+        spec,
+        layout,
+        mut priors,
+        cfg,
+    } = setup;
+    let report = dreamscene::generate::scene_stages::generate_scene(
         &ctx,
         out,
         text,
@@ -331,7 +374,7 @@ fn full(a: &GenerateArgs, text: &str, models: Option<&Path>, start: Instant) -> 
         &layout,
         priors.as_mut(),
         &cfg,
-        a.resume,
+        resume,
         &mut |l| eprintln!("{l}"),
     )?;
     let mut scene = dreamscene::generate::scene::scene_file(

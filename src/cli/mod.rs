@@ -12,6 +12,7 @@ pub mod object;
 pub mod plan;
 pub mod render;
 pub mod stage;
+pub mod stage_prior;
 pub mod video;
 pub mod view;
 

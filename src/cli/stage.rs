@@ -1,9 +1,10 @@
-//! `generate --stage objects|scene`: one draft scene spread over several workers. Every objects
+//! `generate --stage objects|scene`: one scene spread over several workers. Every objects
 //! worker plans the same prompt and seed (or reuses the plan already in --out) and builds its
 //! shard of the categories; the scene stage (an `afterok` dependency on all of them) checks that
 //! every object is there, naming any that is missing, then writes the environment, scene.ply,
-//! scene.json and the renders exactly as a single `generate` does. Also the timed stages that
-//! `batch` runs for each draft scene.
+//! scene.json and the renders exactly as a single `generate` does. Drafts here; the sd and
+//! oracle priors in [`super::stage_prior`]. Also the timed stages that `batch` runs for each
+//! draft scene.
 use super::generate::{draft_mode, plan_or_reuse, render_chosen, GenerateArgs};
 use super::object::models_dir;
 use anyhow::{bail, Context as _, Result};
@@ -27,18 +28,11 @@ pub enum Stage {
 /// `generate --stage`.
 pub fn run(a: &GenerateArgs, stage: Stage, shard: Option<Shard>) -> Result<()> {
     let models = models_dir(a.models.as_deref());
-    if !draft_mode(a, models.as_deref())? {
-        bail!(
-            "--stage: this build splits draft scenes (--draft or --prior shape) over workers; \
-             run one `generate` per scene for the {} prior",
-            match &a.prior {
-                super::object::PriorChoice::Oracle(_) => "oracle",
-                _ => "sd",
-            }
-        );
-    }
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    if !draft_mode(a, models.as_deref())? {
+        return super::stage_prior::run(a, &text, models.as_deref(), stage, shard);
+    }
     match stage {
         Stage::Objects => {
             let env = |k: &str| std::env::var(k).ok();

@@ -1,15 +1,18 @@
-//! Turning a prepared edit into one transaction (new PLYs, `scene.ply` re-composed, preview
-//! views re-rendered, `layout.json` kept in step, the history entry with its undo record), and
-//! undoing the last one byte for byte.
+//! Turning a prepared edit into one transaction (new PLYs, `scene.ply` re-composed with its
+//! per-Gaussian labels and `labels.json` beside it, preview views re-rendered, `layout.json`
+//! kept in step, the history entry with its undo record), and undoing the last one byte for
+//! byte.
 use super::state::SceneState;
 use super::txn::{Backup, Txn, HISTORY};
 use super::{EditError, Result};
 use crate::camera::scene::{render_views, SceneBox};
 use crate::camera::{read_cameras, write_cameras};
+use crate::export::labels::SceneLabels;
 use crate::gpu::Context;
 use crate::plan::spec::Layout;
+use crate::scene::compose::merge;
 use crate::scene::dir::SceneFile;
-use crate::splat::ply::write_ply;
+use crate::splat::ply::{write_ply, write_ply_labelled};
 use crate::splat::raster::{GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
 use serde_json::{json, Value};
@@ -82,7 +85,15 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
         .map_err(|m| EditError::Bad(format!("refused: {m} (nothing changed)")))?;
     let mut next = state.clone();
     next.scene = edit.scene.clone();
-    let composed = next.compose(&edit.files)?;
+    // scene.ply keeps its per-Gaussian labels and labels.json follows the new instances, so
+    // an export by label after the edit cuts exactly the instances scene.json now has.
+    let parts = next.compose_parts(&edit.files)?;
+    let labels = SceneLabels::of_parts(&next.scene, &parts)
+        .map_err(|e| EditError::Bad(format!("refused: {e} (nothing changed)")))?;
+    let labels_text = labels
+        .to_json_text()
+        .map_err(|e| EditError::Io(e.to_string()))?;
+    let composed = merge(&parts);
     let mut t = Txn::begin(dir)?;
     let result = (|| {
         for (rel, g) in &edit.files {
@@ -106,7 +117,8 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
             }
         }
         let p = t.stage_path("scene.ply")?;
-        write_ply(&p, &composed).map_err(io(&p))?;
+        write_ply_labelled(&p, &composed, Some(&labels.per_gaussian())).map_err(io(&p))?;
+        t.write("labels.json", labels_text.as_bytes())?;
         let renders = match ctx {
             Some(ctx) => render_previews(ctx, &mut t, &composed, edit.layout.as_ref())?,
             None => 0,

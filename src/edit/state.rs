@@ -221,6 +221,16 @@ impl SceneState {
     /// The merged world-frame cloud of the scene with `overlay`'s clouds (by relative path) in
     /// place of the files: what `scene.ply` becomes once the overlay is written.
     pub fn compose(&self, overlay: &BTreeMap<String, Gaussians>) -> Result<Gaussians, EditError> {
+        Ok(merge(&self.compose_parts(overlay)?))
+    }
+
+    /// The parts [`SceneState::compose`] merges, in its order: one placed cloud per instance of
+    /// `scene.json`, then the environment (when its stage is done); the per-Gaussian labels of
+    /// `scene.ply` follow from their sizes.
+    pub fn compose_parts(
+        &self,
+        overlay: &BTreeMap<String, Gaussians>,
+    ) -> Result<Vec<Gaussians>, EditError> {
         let mut loaded: BTreeMap<&str, Gaussians> = BTreeMap::new();
         for o in &self.scene.objects {
             if !loaded.contains_key(o.ply.as_str()) {
@@ -240,7 +250,7 @@ impl SceneState {
                 parts.push(e);
             }
         }
-        Ok(merge(&parts))
+        Ok(parts)
     }
 
     /// The cloud at `rel`: from `overlay` when it holds it, else read from the directory.

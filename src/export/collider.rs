@@ -1,5 +1,5 @@
-//! Collider geometry, world frame (z up): boxes, a convex prism around an object's opaque
-//! Gaussians, and the room's walls with their door and window openings cut out
+//! Collider geometry, world frame (z up): boxes, the 3-D convex hull of an object's opaque
+//! Gaussians (the `quickhull` crate), and the room's walls with their door and window openings cut out
 //! (ARCHITECTURE.md, "Openings").
 use serde_json::Value;
 
@@ -52,28 +52,108 @@ impl Mesh {
     }
 }
 
-/// The convex prism over the 2-D convex hull of `points` (x, y), from `z0` to `z1`; `None`
-/// when the points span no area.
-pub fn hull_prism(points: &[[f64; 2]], z0: f64, z1: f64) -> Option<Mesh> {
-    let hull = crate::util::convex_hull(points);
-    if hull.len() < 3 {
+/// Grid steps (metres) the points of a hull are snapped to, finest first. quickhull 0.1 (as
+/// parry3d 0.31, whose algorithm it follows) can return a mesh that is not convex for dense,
+/// near-degenerate clouds (a plant's or a lamp shade's tens of thousands of Gaussians: points
+/// 0.5-1.2 m outside faces in this project's drafts); the same clouds on a 1 cm grid give valid
+/// hulls. A collider needs no finer detail, and every hull is checked before it is used.
+pub const HULL_GRID: [f64; 3] = [0.01, 0.02, 0.04];
+
+/// Twice the area (m²) below which a triangle's plane is not checked: 1 mm².
+pub const SLIVER: f64 = 2e-6;
+
+/// The convex hull of `points` in 3-D (quickhull's triangle mesh, outward faces), its vertices
+/// on a grid of [`HULL_GRID`] (so within half a cell's diagonal of a point) and every point
+/// within that of its inside; `None` when the points span no volume (fewer than four, or all on
+/// one plane), a coordinate is not finite, or no grid gives a valid hull. Returns the hull and
+/// the grid step it was made on.
+pub fn convex_hull(points: &[[f64; 3]]) -> Option<(Mesh, f64)> {
+    if points.len() < 4 || points.iter().flatten().any(|v| !v.is_finite()) {
         return None;
     }
-    let n = hull.len() as u32;
-    let mut m = Mesh::default();
-    for z in [z0, z1] {
-        m.vertices.extend(hull.iter().map(|p| [p[0], p[1], z]));
+    HULL_GRID
+        .iter()
+        .find_map(|&step| Some((hull_on_grid(points, step)?, step)))
+}
+
+/// [`convex_hull`] on one grid step, checked: outward faces, positive volume, every point of
+/// the grid inside every face's plane (1 mm tolerance).
+fn hull_on_grid(points: &[[f64; 3]], step: f64) -> Option<Mesh> {
+    let mut cells: Vec<[i64; 3]> = points
+        .iter()
+        .map(|p| p.map(|v| (v / step).round() as i64))
+        .collect();
+    cells.sort_unstable();
+    cells.dedup();
+    if cells.len() < 4 {
+        return None;
     }
-    for k in 1..n - 1 {
-        m.triangles.push([0, k + 1, k]); // bottom, facing down
-        m.triangles.push([n, n + k, n + k + 1]); // top, facing up
+    // quickhull works in f32: cells relative to their mean keep the precision where the shape
+    // is (a room's coordinates are metres, an object's extent a few of them).
+    let n = cells.len() as f64;
+    let c = [0, 1, 2].map(|a| (cells.iter().map(|q| q[a] as f64).sum::<f64>() / n).round());
+    let local: Vec<[f64; 3]> = cells
+        .iter()
+        .map(|q| [0, 1, 2].map(|a| (q[a] as f64 - c[a]) * step))
+        .collect();
+    let pts: Vec<glam::Vec3A> = local
+        .iter()
+        .map(|p| glam::Vec3A::new(p[0] as f32, p[1] as f32, p[2] as f32))
+        .collect();
+    let hull = quickhull::ConvexTriangleMesh::try_from_points(&pts, None).ok()?;
+    let (vertices, triangles) = hull.into_parts();
+    if triangles.len() < 4 {
+        return None;
     }
-    for k in 0..n {
-        let j = (k + 1) % n;
-        m.triangles.push([k, j, n + j]);
-        m.triangles.push([k, n + j, n + k]);
+    let mut m = Mesh {
+        vertices: vertices
+            .iter()
+            .map(|v| [f64::from(v.x), f64::from(v.y), f64::from(v.z)])
+            .collect(),
+        triangles,
+    };
+    if !(m.volume() > 0.0 && m.holds(&local, 1e-3)) {
+        return None;
+    }
+    for v in &mut m.vertices {
+        *v = [0, 1, 2].map(|a| v[a] + c[a] * step);
     }
     Some(m)
+}
+
+impl Mesh {
+    /// Whether every point lies inside every triangle's plane, within `tol` metres (slivers under
+    /// 1 mm², whose plane f32 vertices leave undefined, are skipped).
+    pub fn holds(&self, points: &[[f64; 3]], tol: f64) -> bool {
+        self.triangles.iter().all(|t| {
+            let [a, b, c] = t.map(|i| self.vertices[i as usize]);
+            let u = [0, 1, 2].map(|k| b[k] - a[k]);
+            let v = [0, 1, 2].map(|k| c[k] - a[k]);
+            let n = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            l < SLIVER
+                || points
+                    .iter()
+                    .all(|p| (0..3).map(|k| n[k] * (p[k] - a[k])).sum::<f64>() <= tol * l)
+        })
+    }
+
+    /// The signed volume enclosed by the triangles (positive when they face outward).
+    pub fn volume(&self) -> f64 {
+        self.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| self.vertices[i as usize]);
+                (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                    + a[2] * (b[0] * c[1] - b[1] * c[0]))
+                    / 6.0
+            })
+            .sum()
+    }
 }
 
 /// A door or window in a wall.
@@ -168,19 +248,131 @@ pub fn walls(room: [f64; 3], openings: &[Opening]) -> Vec<(&'static str, Mesh)> 
 mod tests {
     use super::*;
 
+    /// Every face's outward plane, `(normal, offset)` with `normal · p <= offset` inside
+    /// (slivers left out).
+    fn planes(m: &Mesh) -> Vec<([f64; 3], f64)> {
+        m.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| m.vertices[i as usize]);
+                let u = [0, 1, 2].map(|k| b[k] - a[k]);
+                let v = [0, 1, 2].map(|k| c[k] - a[k]);
+                let n = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                let n = n.map(|x| x / l);
+                (l, (n, n[0] * a[0] + n[1] * a[1] + n[2] * a[2]))
+            })
+            .filter(|(l, _)| *l >= SLIVER)
+            .map(|(_, p)| p)
+            .collect()
+    }
+
     #[test]
-    fn hull_of_a_square_with_inner_points_is_its_corners() {
-        let pts = [
-            [0.0, 0.0],
-            [1.0, 0.0],
-            [1.0, 1.0],
-            [0.0, 1.0],
-            [0.5, 0.5],
-            [0.2, 0.7],
-        ];
-        let m = hull_prism(&pts, 0.0, 2.0).expect("area");
+    fn hull_of_a_box_with_inner_points_is_its_corners() {
+        let mut pts = vec![];
+        for k in 0..8 {
+            pts.push([
+                if k & 1 == 0 { -0.7 } else { 0.7 },
+                if k & 2 == 0 { 1.2 } else { 2.0 },
+                if k & 4 == 0 { 0.0 } else { 0.75 },
+            ]);
+        }
+        pts.extend([[0.0, 1.5, 0.3], [0.5, 1.9, 0.7], [-0.69, 1.21, 0.01]]);
+        let (m, step) = convex_hull(&pts).expect("volume");
+        assert_eq!(step, 0.01);
         assert_eq!(m.vertices.len(), 8);
-        assert_eq!(m.bounds(), ([0.0, 0.0, 0.0], [1.0, 1.0, 2.0]));
+        assert_eq!(m.triangles.len(), 12);
+        assert!(
+            (m.volume() - 1.4 * 0.8 * 0.75).abs() < 1e-5,
+            "{}",
+            m.volume()
+        );
+        let (lo, hi) = m.bounds();
+        for a in 0..3 {
+            assert!((lo[a] - [-0.7, 1.2, 0.0][a]).abs() < 1e-6);
+            assert!((hi[a] - [0.7, 2.0, 0.75][a]).abs() < 1e-6);
+        }
+        // Flat or too few points: no hull.
+        assert!(convex_hull(&pts[..3]).is_none());
+        let flat: Vec<[f64; 3]> = pts.iter().map(|p| [p[0], p[1], 0.0]).collect();
+        assert!(convex_hull(&flat).is_none());
+    }
+
+    #[test]
+    fn hull_of_random_points_holds_them_all_and_is_made_of_them() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        // A chair-like cloud: a seat slab and a thin back, off the origin as in a room.
+        let pts: Vec<[f64; 3]> = (0..3000)
+            .map(|i| {
+                let (x, y, z) = if i % 3 == 0 {
+                    (
+                        rng.gen_range(-0.22..0.22),
+                        rng.gen_range(0.18..0.22),
+                        rng.gen_range(0.45..0.9),
+                    )
+                } else {
+                    (
+                        rng.gen_range(-0.22..0.22),
+                        rng.gen_range(-0.22..0.22),
+                        rng.gen_range(0.4..0.45),
+                    )
+                };
+                [x + 1.3, y - 0.8, z]
+            })
+            .collect();
+        let (m, step) = convex_hull(&pts).expect("volume");
+        assert_eq!(step, 0.01);
+        let ps = planes(&m);
+        for p in &pts {
+            for (n, d) in &ps {
+                assert!(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] <= d + 0.009);
+            }
+        }
+        // Vertices are grid points, each within half a cell's diagonal of an input point.
+        for v in &m.vertices {
+            let near = pts
+                .iter()
+                .any(|p| (0..3).map(|a| (p[a] - v[a]).powi(2)).sum::<f64>().sqrt() <= step * 0.87);
+            assert!(near, "{v:?} is no input point");
+        }
+        // Tighter than the bounding box: the back leaves the upper front empty.
+        let (lo, hi) = m.bounds();
+        let bbox = (0..3).map(|a| hi[a] - lo[a]).product::<f64>();
+        assert!(
+            m.volume() > 0.0 && m.volume() < 0.8 * bbox,
+            "{} vs {bbox}",
+            m.volume()
+        );
+    }
+
+    #[test]
+    fn hull_of_a_lamp_is_convex_despite_its_rings_of_points() {
+        // A pole and a shade: thousands of points on coplanar circles, the degenerate case.
+        let mut pts = vec![];
+        for i in 0..4000 {
+            let a = i as f64 * 0.618_033_988_75 * std::f64::consts::TAU;
+            let (r, z) = match i % 4 {
+                0 => (0.2, 1.2),
+                1 => (0.12, 1.5),
+                2 => (0.015, 1.2 * (i as f64 / 4000.0)),
+                _ => (0.14, 0.02),
+            };
+            pts.push([r * a.cos() - 0.9, r * a.sin() + 1.1, z]);
+        }
+        let (m, step) = convex_hull(&pts).expect("volume");
+        let half_diagonal = step * 3f64.sqrt() / 2.0;
+        assert!(m.holds(&pts, half_diagonal + 1e-6));
+        assert!(m.volume() > 0.0);
+        let (lo, hi) = m.bounds();
+        assert!(
+            (lo[2] - 0.0).abs() <= step && (hi[2] - 1.5).abs() <= step,
+            "{lo:?} {hi:?}"
+        );
     }
 
     #[test]

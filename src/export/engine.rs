@@ -2,11 +2,14 @@
 //! node `dreamscene` (extras: units, room, the id → category table) holding
 //!
 //! - `splats`: every Gaussian as one `KHR_gaussian_splatting` primitive (world frame), with
-//!   `_FEATURE_ID_0` = instance id and `EXT_mesh_features`;
+//!   `_FEATURE_ID_0` = instance id and `EXT_mesh_features`; or with
+//!   [`EngineOptions::per_object_splats`] one primitive per instance (`splats_<id>`, a child of
+//!   its node in the node's frame) and `splats_environment`;
 //! - one node per instance, named by its id with spaces as `_`, posed by `scene.json`, extras
-//!   `{id, category, instance_id, semantic, semantic_id, size_m, gaussians: [start, count]}`,
-//!   with a `collider_<id>` child: a box of its layout size (or of its Gaussians' bounds), or
-//!   with [`Colliders::Hull`] the convex prism around its opaque Gaussians;
+//!   `{id, category, instance_id, semantic, semantic_id, size_m, style_prompt, gaussians:
+//!   [start, count]}`, with a `collider_<id>` child: a box of its layout size (or of its
+//!   Gaussians' bounds), or with [`Colliders::Hull`] the 3-D convex hull of its opaque
+//!   Gaussians;
 //! - `collider_floor` and `collider_wall_<side>` (openings cut out); outdoors only the ground;
 //! - `navmesh` ([`super::navmesh`]) and `spawn_<n>` nodes on it.
 //!
@@ -29,7 +32,7 @@ pub enum Colliders {
     /// The oriented box of its layout size.
     #[default]
     Box,
-    /// The convex prism around its opaque Gaussians.
+    /// The 3-D convex hull of its opaque Gaussians.
     Hull,
 }
 
@@ -44,6 +47,9 @@ pub struct EngineOptions {
     pub only: Vec<String>,
     /// Instances, categories or `walls` to leave out.
     pub without: Vec<String>,
+    /// One splat primitive per instance (a child of its node, in its frame) and one for the
+    /// environment, instead of one for the whole scene.
+    pub per_object_splats: bool,
 }
 
 /// A scene read for export: the scene file, its parts and labels, layout sizes and openings.
@@ -54,6 +60,8 @@ pub struct SceneInput {
     /// World-frame size of each instance (scene order).
     pub sizes: Vec<[f64; 3]>,
     pub openings: Vec<collider::Opening>,
+    /// Each instance's style prompt ([`super::instances::style_prompts`]).
+    pub styles: Vec<Option<String>>,
 }
 
 /// Reads a scene directory: composes it and finds each instance's size (layout.json, scaled by
@@ -68,10 +76,7 @@ pub fn read_input(dir: &Path) -> Result<SceneInput> {
     let bad = |e: crate::scene::dir::SceneError| ExportError::Unrepresentable(e.to_string());
     let scene = read_scene(dir).map_err(bad)?;
     let parts = compose_parts(dir, &scene).map_err(bad)?;
-    let n = scene.objects.len();
-    let counts: Vec<usize> = parts[..n].iter().map(Gaussians::len).collect();
-    let env: usize = parts[n..].iter().map(Gaussians::len).sum();
-    let labels = SceneLabels::new(&scene, &counts, env)?;
+    let labels = SceneLabels::of_parts(&scene, &parts)?;
     let layout: Value = std::fs::read_to_string(dir.join("layout.json"))
         .ok()
         .and_then(|t| serde_json::from_str(&t).ok())
@@ -102,12 +107,14 @@ pub fn read_input(dir: &Path) -> Result<SceneInput> {
             }
         })
         .collect();
+    let styles = super::instances::style_prompts(dir, &scene);
     Ok(SceneInput {
         scene,
         labels,
         cloud: merge(&parts),
         sizes,
         openings,
+        styles,
     })
 }
 
@@ -220,21 +227,33 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
             "labels": labels.to_json()["semantic"].clone(),
         }
     }));
-    let mesh = b.add_splats("splats", &to_gltf_frame(&cloud))?;
-    b.add_feature_ids(mesh, &ids, "instance");
-    let splats = b.push_node(json!({ "name": "splats", "mesh": mesh }));
-    b.add_child(root, splats);
+    if opts.per_object_splats {
+        if keep[0] && labels.environment.1 > 0 {
+            let (start, count) = labels.environment;
+            let env = select_range(&input.cloud, start, count);
+            let mesh = b.add_splats("splats_environment", &to_gltf_frame(&env))?;
+            b.add_feature_ids(mesh, &vec![0; env.len()], "instance");
+            let n = b.push_node(json!({ "name": "splats_environment", "mesh": mesh }));
+            b.add_child(root, n);
+        }
+    } else {
+        let mesh = b.add_splats("splats", &to_gltf_frame(&cloud))?;
+        b.add_feature_ids(mesh, &ids, "instance");
+        let splats = b.push_node(json!({ "name": "splats", "mesh": mesh }));
+        b.add_child(root, splats);
+    }
 
     let mut phys = Physics {
         omi: vec![],
         khr: vec![],
     };
     let mut obstacles = vec![];
-    for ((o, inst), size) in scene
+    for (((o, inst), size), style) in scene
         .objects
         .iter()
         .zip(&labels.instances)
         .zip(&input.sizes)
+        .zip(&input.styles)
     {
         let p = o.placement();
         obstacles.push(Obstacle {
@@ -255,28 +274,28 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
             "extras": {
                 "id": o.id, "category": o.category, "instance_id": inst.instance_id,
                 "semantic": o.category, "semantic_id": inst.semantic_id, "size_m": size,
-                "yaw_deg": o.yaw, "gaussians": [inst.start, inst.count],
+                "yaw_deg": o.yaw, "style_prompt": style, "gaussians": [inst.start, inst.count],
             }
         }));
         b.add_child(root, node);
+        let own = select_range(&input.cloud, inst.start, inst.count);
+        if opts.per_object_splats && !own.is_empty() {
+            let local = super::instances::node_local(&own, p.yaw, p.position);
+            let sname = format!("splats_{name}");
+            let mesh = b.add_splats(&sname, &to_gltf_frame(&local))?;
+            b.add_feature_ids(mesh, &vec![inst.instance_id; own.len()], "instance");
+            let n = b.push_node(json!({ "name": sname, "mesh": mesh }));
+            b.add_child(node, n);
+        }
         let hull = (opts.colliders == Colliders::Hull)
-            .then(|| {
-                let g = select_range(&input.cloud, inst.start, inst.count);
-                let pts = local_points(&g, &p);
-                let (z0, z1) = pts
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| {
-                        (a.min(q[2]), b.max(q[2]))
-                    });
-                let xy: Vec<[f64; 2]> = pts.iter().map(|q| [q[0], q[1]]).collect();
-                collider::hull_prism(&xy, z0, z1)
-            })
+            .then(|| collider::convex_hull(&local_points(&own, &p)))
             .flatten();
         let cname = format!("collider_{name}");
         let extras = json!({ "collider_of": o.id });
         let col = match hull {
-            Some(m) => {
+            Some((m, step)) => {
                 let mesh = add_mesh(&mut b, &cname, &m, [0.0; 3]);
+                let extras = json!({ "collider_of": o.id, "shape": "hull", "hull_grid_m": step });
                 let n = b.push_node(json!({ "name": cname, "mesh": mesh, "extras": extras }));
                 phys.attach(
                     &mut b,

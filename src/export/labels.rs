@@ -114,6 +114,15 @@ impl SceneLabels {
         })
     }
 
+    /// The labels of the parts a composition merges: one placed cloud per instance of
+    /// `scene.objects`, then the environment's parts (none while its stage is pending).
+    pub fn of_parts(scene: &SceneFile, parts: &[crate::splat::Gaussians]) -> Result<SceneLabels> {
+        let n = scene.objects.len().min(parts.len());
+        let counts: Vec<usize> = parts[..n].iter().map(|g| g.len()).collect();
+        let env = parts[n..].iter().map(|g| g.len()).sum();
+        SceneLabels::new(scene, &counts, env)
+    }
+
     /// Gaussians in all.
     pub fn len(&self) -> usize {
         self.environment.0 + self.environment.1
@@ -170,6 +179,12 @@ impl SceneLabels {
         json!({"version": 1, "instances": instances, "semantic": semantic})
     }
 
+    /// The text of `labels.json` (what [`write_labelled_scene`] and every edit write).
+    pub fn to_json_text(&self) -> Result<String> {
+        serde_json::to_string_pretty(&self.to_json())
+            .map_err(|e| ExportError::Unrepresentable(e.to_string()))
+    }
+
     /// Which instance ids (0 = environment) a selection keeps: `only` (empty = all) minus
     /// `without`. A name matching nothing is an error naming what the scene has.
     pub fn select(&self, only: &[String], without: &[String]) -> Result<Vec<bool>> {
@@ -220,10 +235,7 @@ pub fn write_labelled_scene(
 ) -> Result<crate::splat::Gaussians> {
     let parts = crate::scene::dir::compose_parts(dir, scene)
         .map_err(|e| ExportError::Unrepresentable(e.to_string()))?;
-    let n = scene.objects.len();
-    let counts: Vec<usize> = parts[..n].iter().map(|g| g.len()).collect();
-    let env = parts[n..].iter().map(|g| g.len()).sum();
-    let labels = SceneLabels::new(scene, &counts, env)?;
+    let labels = SceneLabels::of_parts(scene, &parts)?;
     let cloud = crate::scene::compose::merge(&parts);
     let write_err = |path: std::path::PathBuf| {
         move |source| ExportError::Write {
@@ -235,8 +247,7 @@ pub fn write_labelled_scene(
     crate::splat::ply::write_ply_labelled(&ply, &cloud, Some(&labels.per_gaussian()))
         .map_err(write_err(ply))?;
     let json = dir.join("labels.json");
-    let text = serde_json::to_string_pretty(&labels.to_json())
-        .map_err(|e| ExportError::Unrepresentable(e.to_string()))?;
+    let text = labels.to_json_text()?;
     crate::util::write_atomic(&json, text.as_bytes()).map_err(write_err(json))?;
     Ok(cloud)
 }

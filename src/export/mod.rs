@@ -20,6 +20,7 @@ pub mod collider;
 pub mod encode;
 pub mod engine;
 pub mod glb;
+pub mod instances;
 pub mod labels;
 pub mod navmesh;
 pub mod ply;

@@ -9,5 +9,6 @@ pub mod prior;
 pub mod prior_spec;
 pub mod progress;
 pub mod scene;
+pub mod scene_objects;
 pub mod scene_stages;
 pub mod stage;

@@ -11,12 +11,11 @@
 //! initial environment is already dense). Each object, each stage and every
 //! `checkpoint_every` iterations is checkpointed in `checkpoints/`, and `resume` continues.
 use super::checkpoint::{remove_old, restore_trainer, write_trainer};
-use super::object::{generate_object, Checkpoints, GenError, ObjectConfig};
+use super::object::{GenError, ObjectConfig};
 use super::prior::{OraclePrior, Prior, SdPrior};
 use super::progress::Progress;
 use super::scene::{category_sizes, object_ply};
 use super::stage::{pseudo_ground_truth, run_fit, run_guided, GuidedStage, GuidedView};
-use crate::camera::object::ObjectFrame;
 use crate::camera::scene::{stage_cameras, SceneBox, Stage};
 use crate::camera::Camera;
 use crate::diffusion::guidance::{
@@ -29,7 +28,6 @@ use crate::gpu::Context;
 use crate::plan::spec::{Layout, SceneSpec, SceneType};
 use crate::scene::compose::{merge, pad_sh, place, Placement};
 use crate::scene::env::{draft_colours, init_environment, EnvOptions};
-use crate::shape::{self, ShapeOptions};
 use crate::splat::ply::{read_ply, write_ply};
 use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
@@ -309,66 +307,33 @@ pub fn generate_scene(
             }
         }
     }
-    // ---- objects ----
+    // ---- objects (with resume, those any shard of this run finished are kept) ----
     let sizes = category_sizes(spec, layout);
-    let mut objects: BTreeMap<String, Gaussians> = BTreeMap::new();
-    for (cat, size) in &sizes {
-        let path = out.join(object_ply(cat));
-        if run.objects_done.contains(cat) {
-            objects.insert(
-                cat.clone(),
-                read_ply(&path).map_err(|e| GenError::Checkpoint(e.to_string()))?,
-            );
-            log(&format!("object {cat}: done before, kept"));
-            continue;
+    if resume {
+        for cat in super::scene_objects::done_by_shards(&ck, &fp) {
+            if !run.objects_done.contains(&cat) {
+                run.objects_done.push(cat);
+            }
         }
-        let description = spec.objects.get(cat).map_or_else(
-            || format!("A DSLR photo of a {cat}"),
-            |o| o.description.clone(),
-        );
-        let init = shape::build(
-            cat,
-            *size,
-            &description,
-            &ShapeOptions {
-                gaussians: cfg.object_gaussians,
-                seed: cfg.seed,
-            },
-        )
-        .map_err(|e| GenError::Prior(Error::Input(e.to_string())))?;
-        let prior = priors.for_object(cat, &description)?;
-        let odir = ck.join("objects").join(cat.replace(' ', "_"));
-        let c = Checkpoints {
-            dir: &odir,
-            resume: resume && odir.join("run.json").is_file(),
-            fingerprint: cfg.object.fingerprint(&description, prior.kind()),
-        };
-        log(&format!(
-            "object {cat}: generating ({} iterations)",
-            cfg.object.iterations
-        ));
-        let mut progress = Progress::new(0, true);
-        let (g, rep) = generate_object(
-            ctx,
-            &init,
-            &ObjectFrame { size: *size },
-            prior,
-            &cfg.object,
-            Some(&c),
-            &mut progress,
-        )?;
-        write_ply(&path, &g).map_err(io(&path))?;
-        log(&format!(
-            "object {cat}: {} Gaussians ({} before filtering, {} after), {:.1} s",
-            g.len(),
-            rep.counts.before_filter,
-            rep.counts.after_filter,
-            rep.seconds
-        ));
-        objects.insert(cat.clone(), g);
-        run.objects_done.push(cat.clone());
-        run.save(&ck, &fp)?;
     }
+    let mut done = std::mem::take(&mut run.objects_done);
+    let objects = super::scene_objects::generate_objects(
+        ctx,
+        out,
+        spec,
+        layout,
+        priors,
+        cfg,
+        resume,
+        None,
+        &mut done,
+        &mut |d| {
+            run.objects_done = d.to_vec();
+            run.save(&ck, &fp)
+        },
+        log,
+    )?;
+    run.objects_done = done;
     let t_objects = t0.elapsed().as_secs_f64();
     // ---- the scene cloud: [objects | environment | floor] ----
     let sb = SceneBox::from_layout(layout);
