@@ -472,25 +472,40 @@ fn labels_follow_scene_json(d: &Path) {
     for (k, o) in s.objects.iter().enumerate() {
         let n = read_ply(&d.join(&o.ply)).unwrap().len();
         let entry = &listed[k + 1];
-        assert_eq!(entry["id"], o.id.as_str());
-        assert_eq!(entry["category"], o.category.as_str());
-        assert_eq!(entry["instance_id"], k + 1);
+        assert_eq!(
+            entry["id"],
+            o.id.as_str(),
+            "labels.json lists the objects in order"
+        );
+        assert_eq!(entry["category"], o.category.as_str(), "{}: category", o.id);
+        assert_eq!(entry["instance_id"], k + 1, "{}: instance id", o.id);
         assert_eq!(
             entry["gaussians"],
             serde_json::json!([start, n]),
             "{}",
             o.id
         );
-        assert!(labels.instance[start..start + n]
-            .iter()
-            .all(|&i| usize::from(i) == k + 1));
+        assert!(
+            labels.instance[start..start + n]
+                .iter()
+                .all(|&i| usize::from(i) == k + 1),
+            "{}: its block of scene.ply carries its instance id",
+            o.id
+        );
         start += n;
     }
-    assert!(labels.instance[start..].iter().all(|&i| i == 0));
-    assert_eq!(labels.instance.len(), cloud.len());
+    assert!(
+        labels.instance[start..].iter().all(|&i| i == 0),
+        "the environment is instance 0"
+    );
+    assert_eq!(labels.instance.len(), cloud.len(), "one label per Gaussian");
     for o in &s.objects {
         let (g, l) = export_only(d, &o.id);
-        assert!(o.scale.iter().all(|v| (v - o.scale[0]).abs() < 1e-12));
+        assert!(
+            o.scale.iter().all(|v| (v - o.scale[0]).abs() < 1e-12),
+            "{}: uniform scale",
+            o.id
+        );
         let mine = place_here(
             &read_ply(&d.join(&o.ply)).unwrap(),
             o.yaw,
@@ -502,7 +517,11 @@ fn labels_follow_scene_json(d: &Path) {
             assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-5), "{}", o.id);
         }
         let k = s.objects.iter().position(|x| x.id == o.id).unwrap() + 1;
-        assert!(l.instance.iter().all(|&i| usize::from(i) == k));
+        assert!(
+            l.instance.iter().all(|&i| usize::from(i) == k),
+            "{}: export --only keeps its labels",
+            o.id
+        );
     }
 }
 

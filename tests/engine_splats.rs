@@ -6,13 +6,17 @@
 //! and judged against the scene's own `scene.ply` and `labels.json`; the Khronos validator,
 //! `@gltf-transform/extensions` and, where Debian's `blender` is installed, Blender's importer
 //! read the same file.
+#![allow(
+    clippy::unwrap_used,
+    reason = "helpers outside #[test] functions: a panic there fails the test at its line"
+)]
 use dreamscene::splat::ply::read_ply_labelled;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod common;
-#[allow(dead_code)]
+#[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
 use export_support::{export_ok, node_dir, require_readers};
 
@@ -386,6 +390,10 @@ fn blender_reads_hulls_and_style_prompts(path: &Path, glb: &Glb) {
                 "{cname}: {bb}"
             );
         }
-        assert_eq!(objs[&cname]["vertices"].as_u64(), Some(local.len() as u64));
+        assert_eq!(
+            objs[&cname]["vertices"].as_u64(),
+            Some(local.len() as u64),
+            "{cname}: Blender keeps every hull vertex"
+        );
     }
 }

@@ -247,7 +247,7 @@ fn ok(o: &std::process::Output) -> String {
 
 /// Largest absolute difference of any parameter of two clouds of the same size.
 fn max_diff(a: &Gaussians, b: &Gaussians) -> f32 {
-    assert_eq!(a.len(), b.len());
+    assert_eq!(a.len(), b.len(), "the clouds compared differ in size");
     let flat = |g: &Gaussians| -> Vec<f32> {
         let mut v: Vec<f32> = g.means.iter().flatten().copied().collect();
         v.extend(g.scales.iter().flatten());

@@ -70,7 +70,11 @@ fn screenshot(ply: &Path, shot: &Path) -> image::RgbImage {
     );
     assert!(status.success(), "view exited with {status:?} on SIGINT");
     let img = image::open(shot).unwrap().to_rgb8();
-    assert_eq!(img.dimensions(), (320, 240));
+    assert_eq!(
+        img.dimensions(),
+        (320, 240),
+        "the screenshot has the size asked for"
+    );
     img
 }
 

@@ -65,7 +65,10 @@ fn io(path: &Path) -> impl Fn(std::io::Error) -> GenError + '_ {
 /// Generates the objects of `shard` (all when `None`) into `out/objects/`. Categories in
 /// `done` are read back instead; each one finished is added to `done` and `save(done)` is called
 /// (the caller's state file). Returns every category's cloud handled here.
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "a stage's device, directory, plan, priors and settings, and its bookkeeping hooks"
+)]
 pub fn generate_objects(
     ctx: &Context,
     out: &Path,
@@ -144,7 +147,10 @@ pub fn generate_objects(
 /// kept after each one (and read back with `resume`, so a requeued shard redoes only what it
 /// had not finished; a state file of another run is set aside with a line in the log).
 /// Returns the categories this shard holds.
-#[allow(clippy::too_many_arguments)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "a stage's device, directory, plan, priors and settings, and its shard"
+)]
 pub fn generate_shard(
     ctx: &Context,
     out: &Path,
