@@ -4,7 +4,7 @@
 //! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall,
 //! centred before them, with the fronts.txt things more telling than it that the scene holds
 //! (a stage below the screen); the front band is deep enough that the ends of the first row
-//! see them within [`SIGHT`] of straight ahead. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
+//! see them within 38° of straight ahead. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
 //! one fewer (every row is used), side by side; rows of four or more, or of long things (pews,
 //! benches), are split by a centre aisle. The block keeps a free band at the front for what the
 //! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
