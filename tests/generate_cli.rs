@@ -182,12 +182,20 @@ fn check_draft(out: &Path, prompt: &str) {
         );
     }
 
-    // scene.ply: every instance plus the environment.
+    // scene.ply: every instance plus the environment, lit as a draft (the doors' and windows'
+    // own surfels appended to environment.ply's).
     let all = read_ply(&out.join("scene.ply")).expect("scene.ply");
+    let mut lit = env.clone();
+    let openings = dreamscene::scene::env::openings_of(scene.extra.get("openings"));
+    dreamscene::scene::env::bake_light(&mut lit, scene.scene_type, scene.room.size, &[], &openings);
+    assert!(
+        scene.scene_type != SceneType::Indoor || lit.len() > env.len(),
+        "an indoor draft's doors and windows are drawn by surfels of their own"
+    );
     assert_eq!(
         all.len(),
-        total + env.len(),
-        "scene.ply holds every instance and the environment"
+        total + lit.len(),
+        "scene.ply holds every instance and the lit environment"
     );
 
     // Renders show something; overview.png is their contact sheet.
