@@ -209,7 +209,13 @@ pub fn run(a: Args) -> Result<()> {
         );
     }
     // The scene is checked before anything is created in it.
-    dreamscene::scene::dir::read_scene(dir)?;
+    let scene = dreamscene::scene::dir::read_scene(dir)?;
+    // A provider asked for by name is checked before any work, even when this edit turns out
+    // to need no re-optimisation.
+    if scene.prior.kind == "sd" && reopt.provider != Provider::Auto {
+        dreamscene::diffusion::runtime::check_provider(reopt.provider)
+            .map_err(anyhow::Error::msg)?;
+    }
     let wait = if no_wait { Wait::NoWait } else { Wait::Block };
     let command = std::env::args().collect::<Vec<_>>().join(" ");
     let _lock = SceneLock::acquire(dir, wait, &command)?;

@@ -250,6 +250,10 @@ fn check_full(a: &GenerateArgs, models: Option<&Path>) -> Result<()> {
             .context("--prior sd needs a model directory (--models DIR or DREAMSCENE_MODELS)")?;
         dreamscene::diffusion::model::StableDiffusion::check_dir(dir)
             .map_err(anyhow::Error::msg)?;
+        if a.provider != Provider::Auto {
+            dreamscene::diffusion::runtime::check_provider(a.provider)
+                .map_err(anyhow::Error::msg)?;
+        }
     }
     if !(a.env_density.is_finite() && a.env_density > 0.0) {
         bail!(

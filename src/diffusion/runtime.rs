@@ -254,12 +254,14 @@ fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, Stri
             Ok(vec![])
         }
         Provider::Cuda => {
+            // The project's library is loaded first: asking ort before would make it load its own.
+            let library = &loaded()?.library;
             if !ort::ep::CUDA::is_available().unwrap_or(false) {
                 return Err(format!(
                     "--provider cuda: the ONNX Runtime library at {} has no CUDA provider (it has: \
                      {}); install the library of the `onnxruntime-gpu` wheel and point \
                      DREAMSCENE_ORT_LIB at it",
-                    loaded()?.library.display(),
+                    library.display(),
                     available_providers()?.join(", ")
                 ));
             }
