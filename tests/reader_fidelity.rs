@@ -272,3 +272,30 @@ fn issue_21_counts_per_and_each_placed() {
     let s = plan("a farmhouse kitchen with a big table and a bench on each long side");
     assert_eq!(n(&s, "bench", &[]), 2, "{:?}", s.objects);
 }
+
+#[test]
+fn a_verb_between_a_relative_pronoun_and_a_number_is_no_object() {
+    for (prompt, word, chairs) in [
+        ("a kitchen with a table that seats six", "seat", Some(6)),
+        (
+            "a dining room with a long table which seats eight",
+            "seat",
+            Some(8),
+        ),
+        ("a campsite with a tent that sleeps four", "sleep", None),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(n(&s, word, &[]), 0, "{prompt}: {:?}", s.objects.keys());
+        if let Some(c) = chairs {
+            assert_eq!(
+                n(&s, "chair", &["arm", "bar"]),
+                c,
+                "{prompt}: {:?}",
+                s.objects.keys()
+            );
+        }
+    }
+    // A relative pronoun before a plural noun with no number keeps the noun an object.
+    let s = plan("a cinema with a screen and rows of theater seats that face it");
+    assert!(n(&s, "seat", &[]) > 0, "{:?}", s.objects.keys());
+}

@@ -585,6 +585,18 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
         let mut negated = false;
         let stop: Vec<&str> = before[..b].iter().map(|x| x.1).collect();
         let last = stop.last().copied();
+        // "a table that seats six", "a tent which sleeps four": between a relative pronoun and
+        // a number a noun's form is the verb of the thing before it, not an object.
+        if last.is_some_and(|w| w == "that" || w == "which")
+            && t[end..]
+                .split_whitespace()
+                .next()
+                .map(|w| w.trim_matches(|c: char| !c.is_alphanumeric()))
+                .and_then(number_of)
+                .is_some()
+        {
+            continue;
+        }
         let prev2 = if stop.len() >= 2 {
             Some(stop[stop.len() - 2])
         } else {
