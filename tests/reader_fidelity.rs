@@ -299,3 +299,13 @@ fn a_verb_between_a_relative_pronoun_and_a_number_is_no_object() {
     let s = plan("a cinema with a screen and rows of theater seats that face it");
     assert!(n(&s, "seat", &[]) > 0, "{:?}", s.objects.keys());
 }
+
+#[test]
+fn a_size_word_does_not_name_another_kind_than_the_scene_uses() {
+    // "long" describes the lab's own benches; it names no banquet bench.
+    let s = plan("a science lab with four long benches in two rows, two stools at each bench");
+    assert_eq!(n(&s, "banquet", &[]), 0, "{:?}", s.objects.keys());
+    assert_eq!(n(&s, "science bench", &[]), 4, "{:?}", s.objects.keys());
+    let s = plan("a classroom with a large desk for the teacher and twenty desks");
+    assert_eq!(n(&s, "executive", &[]), 0, "{:?}", s.objects.keys());
+}
