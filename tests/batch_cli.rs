@@ -255,3 +255,36 @@ fn the_kubernetes_job_validates_against_the_schemas() {
     assert!(!check(&bad).status.success());
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// `batch --provider` reaches every scene's sd prior: CUDA asked of a library without it fails
+/// the scene with the provider's own message in index.json (skipped where CUDA exists).
+#[test]
+fn the_provider_reaches_every_scene() {
+    let has_cuda = dreamscene::diffusion::runtime::available_providers()
+        .unwrap()
+        .iter()
+        .any(|p| p == "CUDAExecutionProvider");
+    if has_cuda {
+        return;
+    }
+    let d = tmp("provider");
+    let m = d.join("m.txt");
+    std::fs::write(&m, "a tiny bedroom with a bed\n").unwrap();
+    let out = d.join("out");
+    let o = cmd()
+        .arg("batch")
+        .arg(&m)
+        .arg("--out")
+        .arg(&out)
+        .args(["--prior", "sd", "--models", "tests/data/tiny-sd"])
+        .args(["--provider", "cuda", "--renders", "0", "--resolution", "64"])
+        .output()
+        .unwrap();
+    assert!(!o.status.success(), "{}", text(&o));
+    let idx = std::fs::read_to_string(out.join("index.json")).unwrap();
+    assert!(
+        idx.contains("\"failed\"") && idx.contains("no CUDA provider"),
+        "{idx}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

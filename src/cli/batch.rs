@@ -37,6 +37,10 @@ pub struct Args {
     pub prior: PriorChoice,
     #[arg(long)]
     pub models: Option<PathBuf>,
+    /// ONNX Runtime provider of the sd prior's models (auto: a GPU provider on a real GPU, else
+    /// the CPU).
+    #[arg(long, value_enum, default_value_t = dreamscene::diffusion::runtime::Provider::Auto)]
+    pub provider: dreamscene::diffusion::runtime::Provider,
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
     pub resolution: u32,
     #[arg(long, default_value_t = 8)]
@@ -166,7 +170,7 @@ fn scene_args(a: &Args, e: &Entry, out: &Path) -> Result<GenerateArgs> {
         dialogue: None,
         llm: None,
         models: e.models.clone().or_else(|| a.models.clone()),
-        provider: dreamscene::diffusion::runtime::Provider::Auto,
+        provider: a.provider,
         prior,
         draft: e.draft.unwrap_or(a.draft),
         iterations: e.iterations.unwrap_or(a.iterations).max(1),
