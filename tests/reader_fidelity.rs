@@ -309,3 +309,20 @@ fn a_size_word_does_not_name_another_kind_than_the_scene_uses() {
     let s = plan("a classroom with a large desk for the teacher and twenty desks");
     assert_eq!(n(&s, "executive", &[]), 0, "{:?}", s.objects.keys());
 }
+
+#[test]
+fn a_participle_after_the_determiner_describes_the_object() {
+    for (prompt, word) in [
+        ("a hunting lodge with a fireplace and a stuffed elk", "elk"),
+        (
+            "a gallery with two carved gargoyles and a bench",
+            "gargoyle",
+        ),
+    ] {
+        let s = plan(prompt);
+        assert!(n(&s, word, &[]) >= 1, "{prompt}: {:?}", s.objects.keys());
+    }
+    // A participle after its noun still names nothing.
+    let s = plan("a study with a big oak worktable covered in scrolls");
+    assert_eq!(n(&s, "covered", &[]), 0, "{:?}", s.objects.keys());
+}

@@ -481,8 +481,16 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
             k += 1;
             continue;
         }
-        // Words after the determiner up to a function word, verb or punctuation.
+        // Words after the determiner up to a function word, verb or punctuation; a participle
+        // right after the determiner describes what follows ("a stuffed owl", "two carved masks").
         let mut j = k + 1;
+        if j + 1 < all.len()
+            && is_verb(all[j].1)
+            && all[j].1.ends_with("ed")
+            && is_adjective(all[j + 1].1)
+        {
+            j += 1;
+        }
         while j < all.len()
             && is_adjective(all[j].1)
             && !inside(all[j].0, &masked)
