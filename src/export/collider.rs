@@ -126,20 +126,19 @@ impl Mesh {
     /// 1 mm², whose plane f32 vertices leave undefined, are skipped).
     pub fn holds(&self, points: &[[f64; 3]], tol: f64) -> bool {
         self.triangles.iter().all(|t| {
-            let [a, b, c] = t.map(|i| self.vertices[i as usize]);
-            let u = [0, 1, 2].map(|k| b[k] - a[k]);
-            let v = [0, 1, 2].map(|k| c[k] - a[k]);
-            let n = [
-                u[1] * v[2] - u[2] * v[1],
-                u[2] * v[0] - u[0] * v[2],
-                u[0] * v[1] - u[1] * v[0],
-            ];
-            let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            let (a, n) = self.face(t);
+            let l = n.length();
             l < SLIVER
                 || points
                     .iter()
-                    .all(|p| (0..3).map(|k| n[k] * (p[k] - a[k])).sum::<f64>() <= tol * l)
+                    .all(|p| n.dot(glam::DVec3::from(*p) - a) <= tol * l)
         })
+    }
+
+    /// Triangle `t`'s first vertex and its normal `(b − a) × (c − a)` (length twice its area).
+    fn face(&self, t: &[u32; 3]) -> (glam::DVec3, glam::DVec3) {
+        let [a, b, c] = t.map(|i| glam::DVec3::from(self.vertices[i as usize]));
+        (a, (b - a).cross(c - a))
     }
 
     /// The signed volume enclosed by the triangles (positive when they face outward).
@@ -254,17 +253,10 @@ mod tests {
         m.triangles
             .iter()
             .map(|t| {
-                let [a, b, c] = t.map(|i| m.vertices[i as usize]);
-                let u = [0, 1, 2].map(|k| b[k] - a[k]);
-                let v = [0, 1, 2].map(|k| c[k] - a[k]);
-                let n = [
-                    u[1] * v[2] - u[2] * v[1],
-                    u[2] * v[0] - u[0] * v[2],
-                    u[0] * v[1] - u[1] * v[0],
-                ];
-                let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-                let n = n.map(|x| x / l);
-                (l, (n, n[0] * a[0] + n[1] * a[1] + n[2] * a[2]))
+                let (a, n) = m.face(t);
+                let l = n.length();
+                let n = n / l;
+                (l, (n.to_array(), n.dot(a)))
             })
             .filter(|(l, _)| *l >= SLIVER)
             .map(|(_, p)| p)
