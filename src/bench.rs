@@ -427,21 +427,10 @@ pub fn bench_generate(
     size: u32,
     runs: usize,
 ) -> std::result::Result<GenerateFigures, crate::generate::object::GenError> {
-    use crate::camera::object::{ObjectFrame, OrbitRanges};
-    use crate::generate::object::{
-        formation_guide, formation_iteration, formation_trainer, ObjectConfig,
-    };
+    use crate::camera::object::OrbitRanges;
+    use crate::generate::object::{formation_guide, formation_iteration, formation_trainer};
     use crate::generate::prior::OraclePrior;
-    let frame = ObjectFrame {
-        size: [1.0, 0.8, 0.9],
-    };
-    let cfg = ObjectConfig {
-        batch: views,
-        resolution: size,
-        sh_degree: 0,
-        checkpoint_every: 0,
-        ..ObjectConfig::default()
-    };
+    let (frame, cfg) = bench_object(views, size);
     let reference = object_cloud(&frame, n, 11);
     let mut prior = OraclePrior::new(ctx, &reference, None)?;
     let mut t = formation_trainer(ctx, &object_cloud(&frame, n, 12), &frame, &cfg)?;
@@ -524,4 +513,26 @@ pub fn bench_scene_stage(
         }
     }
     Ok(GenerateFigures::from_runs(ctx, (n, views, size), &reports))
+}
+
+/// The object the generation benches optimise: a chair-sized frame, `views` views a step at
+/// `size`², SH degree 0, no checkpoints.
+pub(crate) fn bench_object(
+    views: usize,
+    size: u32,
+) -> (
+    crate::camera::object::ObjectFrame,
+    crate::generate::object::ObjectConfig,
+) {
+    let frame = crate::camera::object::ObjectFrame {
+        size: [1.0, 0.8, 0.9],
+    };
+    let cfg = crate::generate::object::ObjectConfig {
+        batch: views,
+        resolution: size,
+        sh_degree: 0,
+        checkpoint_every: 0,
+        ..Default::default()
+    };
+    (frame, cfg)
 }

@@ -2,11 +2,9 @@
 //! the Stable Diffusion prior, split into the text encoder, the UNet, the autoencoder, the
 //! guidance maths on the host, the kernels and the rest, with the views of an iteration in one
 //! UNet run per guidance step (batched) and one view at a time (per view), measured in one run.
-use crate::camera::object::{ObjectFrame, OrbitRanges};
+use crate::camera::object::OrbitRanges;
 use crate::diffusion::runtime::Provider;
-use crate::generate::object::{
-    formation_guide, formation_iteration, formation_trainer, GenError, ObjectConfig,
-};
+use crate::generate::object::{formation_guide, formation_iteration, formation_trainer, GenError};
 use crate::generate::prior_spec::open_sd;
 use crate::gpu::Context;
 use crate::splat::Gaussians;
@@ -59,16 +57,7 @@ pub fn bench_generate_sd(
     runs: usize,
     per_view: bool,
 ) -> Result<SdIterationFigures, GenError> {
-    let frame = ObjectFrame {
-        size: [1.0, 0.8, 0.9],
-    };
-    let cfg = ObjectConfig {
-        batch: views,
-        resolution: size,
-        sh_degree: 0,
-        checkpoint_every: 0,
-        ..ObjectConfig::default()
-    };
+    let (frame, cfg) = crate::bench::bench_object(views, size);
     let mut prior = open_sd(models, provider, "A DSLR photo of a wooden chair", None)?;
     // MTS asks three prompts at every guidance step: one view's worth a run.
     prior.sd.set_unet_max_batch(per_view.then_some(3));
