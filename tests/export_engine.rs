@@ -132,6 +132,49 @@ fn floor_obstacles(layout: &Value) -> Vec<&Value> {
         .collect()
 }
 
+/// Seats and beds standing on the floor: the furniture a person must be able to walk up to. The
+/// function class is the knowledge base's (`seat`, `bed`), so no category is named here.
+fn reachable_furniture(layout: &Value) -> Vec<&Value> {
+    layout["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|o| f3(&o["position"])[2] < 0.01)
+        .filter(|o| {
+            let cat = o["category"].as_str().unwrap_or_default();
+            matches!(
+                dreamscene::shape::functions::function_of(cat),
+                Some("seat" | "bed")
+            )
+        })
+        .collect()
+}
+
+/// Candidate spots beside an object, in the scene frame: on each of its four sides, at five
+/// places along the side and three distances out (the agent's radius plus 0.1 to 0.4 m).
+fn spots_beside(o: &Value) -> Vec<[f64; 2]> {
+    let (s, p, yaw) = (
+        f3(&o["size"]),
+        f3(&o["position"]),
+        o["yaw"].as_f64().unwrap(),
+    );
+    let (sn, cs) = yaw.to_radians().sin_cos();
+    let mut spots = vec![];
+    // Front (+v), back, right (+u), left: the side's normal and the extents across and along it.
+    for (u, v) in [(0.0, 1.0), (0.0, -1.0), (1.0, 0.0), (-1.0, 0.0)] {
+        let (across, along) = if u == 0.0 { (s[1], s[0]) } else { (s[0], s[1]) };
+        for gap in [0.1, 0.25, 0.4] {
+            let out = across / 2.0 + RADIUS + gap;
+            for k in [0.0, -0.2, 0.2, -0.4, 0.4] {
+                let t = k * along;
+                let (lx, ly) = (u * out + v * t, v * out + u * t);
+                spots.push([p[0] + cs * lx - sn * ly, p[1] + sn * lx + cs * ly]);
+            }
+        }
+    }
+    spots
+}
+
 fn node_reader(args: &[&str]) -> Value {
     let o = Command::new("node")
         .current_dir(node_dir())
@@ -393,31 +436,15 @@ fn openings_are_cut_from_the_walls_and_paths_on_the_navmesh_avoid_furniture() {
                 .iter()
                 .all(|o| !in_footprint(o, x, y, RADIUS + 0.05))
     };
+    // Every seat and bed standing on the floor (its function class from the knowledge base) must
+    // have a free spot beside it, where a person stands to sit or lie down, and be reachable.
     let mut targets = vec![];
-    for o in &obstacles {
-        let (s, p, yaw) = (
-            f3(&o["size"]),
-            f3(&o["position"]),
-            o["yaw"].as_f64().unwrap(),
-        );
-        let (sn, cs) = yaw.to_radians().sin_cos();
-        // Front, back, right, left: the side's middle pushed out by radius + 0.15 m.
-        let spots = [
-            (0.0, 1.0, s[1]),
-            (0.0, -1.0, s[1]),
-            (1.0, 0.0, s[0]),
-            (-1.0, 0.0, s[0]),
-        ]
-        .map(|(u, v, ext): (f64, f64, f64)| {
-            let out = ext / 2.0 + RADIUS + 0.15;
-            let (lx, ly) = (u * out, v * out);
-            [p[0] + cs * lx - sn * ly, p[1] + sn * lx + cs * ly]
-        });
-        if let Some(t) = spots.into_iter().find(|t| free(t[0], t[1])) {
-            targets.push((o["id"].as_str().unwrap().to_string(), t));
-        }
+    for o in reachable_furniture(&f.layout) {
+        let id = o["id"].as_str().unwrap().to_string();
+        let spot = spots_beside(o).into_iter().find(|t| free(t[0], t[1]));
+        let t = spot.unwrap_or_else(|| panic!("no free spot beside {id}: {o}"));
+        targets.push((id, t));
     }
-    assert!(targets.len() * 2 >= obstacles.len(), "{targets:?}");
     let queries: Vec<Value> = targets
         .iter()
         .map(|(_, t)| json!({"from": spawn, "to": [t[0], 0.0, -t[1]]}))
