@@ -234,8 +234,33 @@ impl NavMesh {
         d
     }
 
-    /// Up to `n` spawn points (world frame, on the floor) with what each is near: the walkable
-    /// cell nearest each door's inside point first, then the most open cells (largest clearance,
+    /// The cells of the largest 4-connected walkable region (the first found on ties).
+    pub fn largest_region(&self) -> Vec<bool> {
+        let mut seen = vec![false; self.walkable.len()];
+        let mut best = vec![false; self.walkable.len()];
+        let mut best_len = 0;
+        for k in 0..self.walkable.len() {
+            if !self.walkable[k] || seen[k] {
+                continue;
+            }
+            let hops = self.hops_from(k);
+            let region: Vec<usize> = (0..hops.len()).filter(|&c| hops[c].is_some()).collect();
+            for &c in &region {
+                seen[c] = true;
+            }
+            if region.len() > best_len {
+                best_len = region.len();
+                best = vec![false; self.walkable.len()];
+                for &c in &region {
+                    best[c] = true;
+                }
+            }
+        }
+        best
+    }
+
+    /// Up to `n` spawn points (world frame, on the floor) with what each is near, all on the
+    /// largest walkable region: the cell of that region nearest each door's inside point first, then the most open cells (largest clearance,
     /// nearest the room's centre on ties) reachable from the first, at least a metre apart.
     pub fn spawn_points(&self, doors: &[[f64; 2]], n: usize) -> Vec<([f64; 3], &'static str)> {
         let cells: Vec<usize> = (0..self.walkable.len())
@@ -246,6 +271,10 @@ impl NavMesh {
         }
         let dist2 = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2);
         let clear = self.clearance();
+        // Spawns stand on the largest walkable region: a pocket cut off by furniture beside the
+        // door (behind a counter, between a bed and a wall) reaches nothing.
+        let main = self.largest_region();
+        let cells: Vec<usize> = cells.into_iter().filter(|&k| main[k]).collect();
         let mut picked: Vec<(usize, &'static str)> = vec![];
         for d in doors {
             let best = cells
@@ -352,5 +381,46 @@ mod tests {
         for (p, _) in spawns {
             assert!(!bed.contains([p[0], p[1]], agent.radius));
         }
+    }
+
+    #[test]
+    fn spawns_skip_a_pocket_beside_the_door() {
+        let agent = Agent::default();
+        // A counter along the south wall, a stove east of it and an island north of both leave a
+        // pocket; the door's inside point lies in the pocket, the open room beyond the island.
+        let counter = Obstacle {
+            centre: [0.0, -1.6],
+            half: [1.0, 0.35],
+            yaw: 0.0,
+            z: [0.0, 0.9],
+        };
+        let stove = Obstacle {
+            centre: [2.2, -1.5],
+            half: [0.25, 0.5],
+            yaw: 0.0,
+            z: [0.0, 0.9],
+        };
+        let island = Obstacle {
+            centre: [1.5, -0.6],
+            half: [0.85, 0.2],
+            yaw: 0.0,
+            z: [0.0, 0.9],
+        };
+        let m = NavMesh::build([5.0, 4.0], &[counter, stove, island], agent, 0.1);
+        let door = [1.45, -1.5];
+        let pocket = m.cell_of(door).expect("in room");
+        let k = pocket.1 * m.nx + pocket.0;
+        assert!(m.walkable[k], "the pocket is walkable");
+        let main = m.largest_region();
+        assert!(!main[k], "the pocket is not the main region");
+        let spawns = m.spawn_points(&[door], 2);
+        assert_eq!(spawns.len(), 2, "two spawns");
+        for (p, _) in &spawns {
+            let c = m.cell_of([p[0], p[1]]).expect("in room");
+            assert!(main[c.1 * m.nx + c.0], "spawn {p:?} on the main region");
+        }
+        // The door spawn is still the main region's nearest cell to the door.
+        let d0 = ((spawns[0].0[0] - door[0]).powi(2) + (spawns[0].0[1] - door[1]).powi(2)).sqrt();
+        assert!(d0 < 1.5, "door spawn {:?} is {d0} m from the door", spawns[0]);
     }
 }

@@ -93,7 +93,10 @@ async function recast() {
   const positions = read(prim.attributes.POSITION, Float32Array, 3);
   const indices = read(prim.indices, Uint32Array, 1);
   await init();
-  const cs = 0.05, ch = 0.05;
+  // Recast re-voxelises the mesh: its cells must be finer than the mesh's own (a corridor one or
+  // two mesh cells wide is lost at a voxel of half a cell), so take a quarter of the cell the
+  // navmesh's extras give.
+  const cs = node.extras.cell / 4, ch = 0.05;
   const { success, navMesh } = generateSoloNavMesh(positions, indices, {
     cs, ch, walkableRadius: 0, walkableHeight: Math.ceil(1.8 / ch), walkableClimb: Math.floor(0.3 / ch),
     walkableSlopeAngle: 45, maxEdgeLen: 12 / cs, maxSimplificationError: 1.3, minRegionArea: 8,
