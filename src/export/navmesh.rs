@@ -421,6 +421,10 @@ mod tests {
         }
         // The door spawn is still the main region's nearest cell to the door.
         let d0 = ((spawns[0].0[0] - door[0]).powi(2) + (spawns[0].0[1] - door[1]).powi(2)).sqrt();
-        assert!(d0 < 1.5, "door spawn {:?} is {d0} m from the door", spawns[0]);
+        assert!(
+            d0 < 1.5,
+            "door spawn {:?} is {d0} m from the door",
+            spawns[0]
+        );
     }
 }
