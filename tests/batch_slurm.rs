@@ -536,7 +536,7 @@ fn prior_object_shards_then_the_scene_step(cl: &Cluster, work: &Path) {
         total += own.len();
     }
     let env = &labels["instances"][0];
-    assert_eq!(env["id"], "environment");
+    assert_eq!(env["id"], "environment", "instance 0 is the environment");
     assert!(env["gaussians"][1].as_u64().unwrap() > 0, "an environment");
     total += env["gaussians"][1].as_u64().unwrap() as usize;
     assert_eq!(
