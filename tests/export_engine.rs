@@ -40,7 +40,9 @@ struct Fixture {
 fn fixture() -> &'static Fixture {
     static F: OnceLock<Fixture> = OnceLock::new();
     F.get_or_init(|| {
-        let dir = std::env::temp_dir().join(format!("dreamscene-engine-{}", std::process::id()));
+        // One fixture directory a worktree, replaced by each run: a scene is 0.2-0.7 GB, and a
+        // directory per process was never removed (the tests share it, none can tell it is last).
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("export-engine");
         let _ = std::fs::remove_dir_all(&dir);
         let scene = dir.join("bedroom");
         let prompt = std::env::var("DREAMSCENE_ENGINE_PROMPT")
@@ -263,13 +265,13 @@ fn three_reads_instances_extras_physics_and_every_splat() {
         );
         close_box(got, layout_box(o), id);
     }
-    for n in [
-        "collider_floor",
-        "collider_wall_north",
-        "collider_wall_south",
-        "navmesh",
-        "spawn_0",
-    ] {
+    // Walls only indoors (an outdoor scene has its ground and no walls).
+    let walls: &[&str] = if indoor(&f.scene_json) {
+        &["collider_wall_north", "collider_wall_south"]
+    } else {
+        &[]
+    };
+    for n in ["collider_floor", "navmesh", "spawn_0"].iter().chain(walls) {
         assert_eq!(nodes[n]["parent"], "dreamscene", "{n}");
     }
     let cats = &nodes["dreamscene"]["extras"]["categories"];
