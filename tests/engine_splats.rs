@@ -22,7 +22,8 @@ use export_support::{export_ok, node_dir, require_readers};
 
 /// A draft of a prompt of this test's own, exported with both options.
 fn fixture() -> (PathBuf, PathBuf) {
-    let dir = std::env::temp_dir().join(format!("dreamscene-engine-splats-{}", std::process::id()));
+    // One directory a worktree, replaced by each run (a directory per process was never removed).
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("engine-splats");
     let _ = std::fs::remove_dir_all(&dir);
     let scene = dir.join("study");
     let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
