@@ -241,7 +241,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cylinder", m::cylinder, [Body], []),
     arch!("sphere", m::sphere, [Body], [Body => [0.55, 0.53, 0.50]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
-    arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10]]),
+    arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
     arch!("boat", m::boat, [Body], [Body => [0.50, 0.33, 0.20], Frame => [0.62, 0.47, 0.30]]),
     arch!("bicycle", m::bicycle, [Frame], [Frame => [0.15, 0.35, 0.55]]),
     arch!("figure", m::figure, [Body], [Body => [0.85, 0.83, 0.80]]),
