@@ -213,6 +213,48 @@ fn colours_follow_surface_words() {
     assert!(o("a park at sunset").sky[0] > o("a park").sky[0]);
 }
 
+/// A door's leaf follows the scene: its kind, its style words, and what it says of its doors;
+/// a colour word of another noun leaves the door alone.
+#[test]
+fn door_leaves_follow_the_scene_not_always_wood() {
+    let d = |t: &str| draft_colours(SceneType::Indoor, t).door;
+    let lum = |c: [f32; 3]| c.iter().sum::<f32>() / 3.0;
+    let wood = d("a living room");
+    assert!(
+        wood[0] > wood[2] + 0.15,
+        "a living room's door is wood: {wood:?}"
+    );
+    assert!(
+        lum(d("a hospital room")) > 0.85,
+        "painted white: {:?}",
+        d("a hospital room")
+    );
+    let metal = d("a spaceship bridge with a captain's chair");
+    assert!((metal[0] - metal[2]).abs() < 0.05, "bare metal: {metal:?}");
+    assert!(
+        lum(d("a rustic kitchen")) < 0.3,
+        "rustic: {:?}",
+        d("a rustic kitchen")
+    );
+    assert!(
+        lum(d("a modern study")) > 0.85,
+        "modern: {:?}",
+        d("a modern study")
+    );
+    let red = d("a bedroom with a red door");
+    assert!(red[0] > 2.0 * red[1], "a red door: {red:?}");
+    assert_eq!(
+        d("a bedroom with a red sofa"),
+        d("a bedroom"),
+        "the sofa's red"
+    );
+    let dark = d("a kitchen with dark oak doors");
+    assert!(
+        lum(dark) < 0.7 * lum(d("a kitchen with oak doors")),
+        "{dark:?}"
+    );
+}
+
 #[test]
 fn floors_are_patterned_and_deterministic_per_seed() {
     let opts = |seed| EnvOptions {

@@ -410,7 +410,11 @@ pub fn light_draft<'a>(
         return;
     }
     let boxes = draft_boxes(scene, &|rel| cloud(rel).and_then(object_bounds));
-    let openings = crate::scene::env::openings_of(scene.extra.get("openings"));
+    let openings = crate::scene::env::styled_openings(
+        scene.extra.get("openings"),
+        scene.scene_type,
+        &scene.prompt,
+    );
     // Contact shadows follow the current boxes: every composition (and so every edit) re-lights
     // the unlit `environment.ply` for the layout it composes.
     crate::scene::env::bake_light(env, scene.scene_type, scene.room.size, &boxes, &openings);

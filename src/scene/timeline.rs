@@ -197,7 +197,11 @@ impl Animated {
             }
         };
         let light = guard.get_or_insert_with(|| {
-            let openings = crate::scene::env::openings_of(at.extra.get("openings"));
+            let openings = crate::scene::env::styled_openings(
+                at.extra.get("openings"),
+                at.scene_type,
+                &at.prompt,
+            );
             DraftLight::new(env.clone(), at.scene_type, at.room.size, &openings)
         });
         light.lit(&boxes)

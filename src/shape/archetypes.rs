@@ -3,6 +3,7 @@
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
 use super::cases as c;
+use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
 use super::materials::{Rgb, Role};
@@ -240,7 +241,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cylinder", m::cylinder, [Body], []),
     arch!("sphere", m::sphere, [Body], [Body => [0.55, 0.53, 0.50]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
-    arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10]]),
+    arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
     arch!("boat", m::boat, [Body], [Body => [0.50, 0.33, 0.20], Frame => [0.62, 0.47, 0.30]]),
     arch!("bicycle", m::bicycle, [Frame], [Frame => [0.15, 0.35, 0.55]]),
     arch!("figure", m::figure, [Body], [Body => [0.85, 0.83, 0.80]]),
@@ -273,6 +274,16 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("ladder", fr::ladder, [Frame], [Frame => [0.62, 0.45, 0.28], Seat => [0.58, 0.42, 0.26], Top => [0.58, 0.42, 0.26]]),
     arch!("laptop", fr::laptop, [Body], [Body => [0.70, 0.71, 0.73], BlackKeys => [0.12, 0.12, 0.13], Interior => [0.06, 0.08, 0.12]]),
     arch!("vase", fr::vase, [Body], [Body => [0.85, 0.82, 0.76]]),
+    arch!("pram", d::pram, [Body, Shade], [Body => [0.20, 0.24, 0.34], Shade => [0.20, 0.24, 0.34], Frame => [0.15, 0.15, 0.16], Metal => [0.60, 0.61, 0.63]]),
+    arch!("hedge", d::hedge, [Foliage], [Foliage => [0.16, 0.40, 0.15]]),
+    arch!("flower_bed", d::flower_bed, [Books], [Frame => [0.45, 0.32, 0.20], Foliage => [0.22, 0.46, 0.18]]),
+    arch!("log", d::log, [Trunk], [Trunk => [0.36, 0.26, 0.17], Top => [0.78, 0.62, 0.42]]),
+    arch!("hydrant", d::hydrant, [Body, Top], [Body => [0.80, 0.12, 0.10], Top => [0.80, 0.12, 0.10], Metal => [0.62, 0.62, 0.64]]),
+    arch!("padded_table", d::padded_table, [Upholstery], [Upholstery => [0.55, 0.70, 0.72], Frame => STEEL]),
+    arch!("lectern", d::lectern, [Body, Top, Frame], [Body => [0.48, 0.31, 0.18], Top => [0.42, 0.27, 0.15], Frame => [0.42, 0.27, 0.15]]),
+    arch!("globe", d::globe, [Body], [Body => [0.24, 0.44, 0.66], Foliage => [0.55, 0.62, 0.34], Frame => DARK_WOOD, Metal => [0.70, 0.58, 0.32]]),
+    arch!("barrow", d::barrow, [Body], [Body => [0.35, 0.45, 0.35], Frame => [0.52, 0.38, 0.24], Top => [0.55, 0.40, 0.25], Metal => [0.45, 0.45, 0.47]]),
+    arch!("house", d::house, [Body], [Body => [0.62, 0.46, 0.30], Top => [0.32, 0.28, 0.26], Door => [0.40, 0.27, 0.17], Glass => [0.55, 0.70, 0.80]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

@@ -15,6 +15,7 @@
 mod appliances;
 mod archetypes;
 mod cases;
+mod daily;
 mod frames;
 pub mod functions;
 mod furniture;

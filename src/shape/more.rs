@@ -222,9 +222,40 @@ pub fn cylinder(b: &mut Builder) {
     }
 }
 
+/// A ball: one ellipsoid filling the box when it is about as tall as wide (rocks, bowls); a
+/// round ball on a stand when a little taller (a crystal ball, a pod); stacked balls of
+/// shrinking size when much taller (a snowman). A ball is never stretched upwards.
 pub fn sphere(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    b.ellipsoid(Body, [0.0, 0.0, h / 2.0], [hw, hd, h / 2.0]);
+    let r = hw.min(hd);
+    if h <= 2.3 * r {
+        b.ellipsoid(Body, [0.0, 0.0, h / 2.0], [hw, hd, h / 2.0]);
+        return;
+    }
+    let rest = h - 2.0 * r;
+    if rest < r {
+        // A ball on a short round stand.
+        b.frustum(
+            Frame,
+            [0.0, 0.0, 0.0],
+            0.7 * r,
+            0.7 * r,
+            0.6,
+            rest + 0.1 * r,
+        );
+        b.ellipsoid(Body, [0.0, 0.0, h - r], [r, r, r]);
+        return;
+    }
+    // Balls of radius r, 0.75 r, 0.55 r overlapping by a tenth, scaled to the height.
+    let ks = [1.0, 0.75, 0.55];
+    let k = (h / (1.8 * ks.iter().sum::<f64>() * r)).min(1.0);
+    let mut z = 0.0;
+    for (i, f) in ks.iter().enumerate() {
+        let rr = f * k * r;
+        let c = if i == 0 { rr } else { z + 0.8 * rr };
+        b.ellipsoid(Body, [0.0, 0.0, c.min(h - rr)], [rr, rr, rr]);
+        z = c + rr;
+    }
 }
 
 pub fn cone(b: &mut Builder) {
@@ -251,26 +282,24 @@ pub fn vehicle(b: &mut Builder) {
     let r = (0.22 * h).min(0.2 * b.d);
     let tw = (0.12 * b.w).min(0.25);
     let zb = 0.6 * h;
+    // Windows stand proud of the cabin by more than a surfel's jitter, so no body shows through.
+    let g = (0.01 * b.d).clamp(0.012, 0.03);
     b.cuboid(Body, [-hw + 0.02, -hd, 0.45 * r], [hw - 0.02, hd, zb]);
     let (c0, c1) = (-0.55 * hd, 0.3 * hd);
     b.cuboid(Body, [-0.88 * hw, c0, zb], [0.88 * hw, c1, h]);
     b.cuboid(
         Glass,
         [-0.8 * hw, c1, zb + 0.05 * h],
-        [0.8 * hw, c1 + 0.006, h - 0.05 * h],
+        [0.8 * hw, c1 + g, h - 0.05 * h],
     );
     b.cuboid(
         Glass,
-        [-0.8 * hw, c0 - 0.006, zb + 0.05 * h],
+        [-0.8 * hw, c0 - g, zb + 0.05 * h],
         [0.8 * hw, c0, h - 0.05 * h],
     );
     for sx in [-1.0, 1.0] {
         let x = sx * 0.88 * hw;
-        let (xa, xb) = if sx < 0.0 {
-            (x - 0.006, x)
-        } else {
-            (x, x + 0.006)
-        };
+        let (xa, xb) = if sx < 0.0 { (x - g, x) } else { (x, x + g) };
         b.cuboid(
             Glass,
             [xa, c0 + 0.06, zb + 0.05 * h],

@@ -39,6 +39,9 @@ pub struct EnvColours {
     pub wall_pattern: Pattern,
     pub floor_pattern: Pattern,
     pub ground_pattern: Pattern,
+    /// The door leaf: the scene kind's, its style words' ("modern", "rustic"), or what the text
+    /// says of its doors ("a red door").
+    pub door: [f32; 3],
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -48,6 +51,7 @@ enum Target {
     Wall,
     Ceiling,
     Sky,
+    Door,
 }
 
 /// A material word: its colour, pattern, the surface it names when it stands alone, and whether
@@ -85,6 +89,19 @@ const OFF_WHITE: [f32; 3] = [0.90, 0.88, 0.83];
 const CEILING_WHITE: [f32; 3] = [0.93, 0.93, 0.91];
 const BLUE_SKY: [f32; 3] = [0.38, 0.58, 0.88];
 const GRASS: [f32; 3] = [0.30, 0.50, 0.20];
+/// Door leaves: painted, light and dark wood, bare metal.
+const PAINTED: [f32; 3] = [0.91, 0.90, 0.87];
+const DOOR_WOOD: [f32; 3] = [0.62, 0.46, 0.30];
+const DARK_WOOD: [f32; 3] = [0.34, 0.22, 0.13];
+const METAL: [f32; 3] = [0.62, 0.63, 0.65];
+
+/// Style words of a scene and the door leaf they suggest.
+#[rustfmt::skip]
+const STYLES: &[(&[&str], [f32; 3])] = &[
+    (&["modern", "minimalist", "scandinavian", "contemporary"], PAINTED),
+    (&["rustic", "medieval", "cottage", "cabin", "farmhouse", "victorian", "antique", "old"], DARK_WOOD),
+    (&["futuristic", "sci-fi", "scifi", "cyberpunk", "industrial", "high-tech"], METAL),
+];
 
 #[rustfmt::skip]
 const MATERIALS: &[Material] = &[
@@ -99,6 +116,7 @@ const MATERIALS: &[Material] = &[
     m(&["concrete", "cement", "industrial"], [0.60, 0.60, 0.58], Mottled, Floor, false),
     m(&["stone", "flagstone", "slate"], [0.55, 0.53, 0.50], Cobbles, Floor, false),
     m(&["linoleum", "vinyl"], [0.72, 0.72, 0.70], Speckled, Floor, true),
+    m(&["metal", "metallic", "steel", "aluminium", "aluminum"], METAL, Plain, Door, false),
     m(&["brick", "bricks", "exposed-brick"], [0.62, 0.30, 0.22], Bricks, Wall, false),
     m(&["wallpaper", "wallpapered", "plaster", "painted"], [0.86, 0.82, 0.74], Plain, Wall, false),
     m(&["grass", "grassy", "lawn", "meadow", "turf"], GRASS, Mottled, Floor, true),
@@ -143,44 +161,47 @@ const NOUNS: &[(&str, Target)] = &[
     ("ceiling", Ceiling),
     ("ceilings", Ceiling),
     ("sky", Sky),
+    ("door", Door),
+    ("doors", Door),
 ];
 
-/// A scene kind's draft look: (kind name, floor colour, floor pattern, wall colour, wall pattern).
-type KindLook = (&'static str, [f32; 3], Pattern, [f32; 3], Pattern);
+/// A scene kind's draft look: (kind name, floor colour, floor pattern, wall colour, wall pattern,
+/// door leaf colour).
+type KindLook = (&'static str, [f32; 3], Pattern, [f32; 3], Pattern, [f32; 3]);
 
 /// Draft looks per scene kind of the knowledge base. Kinds not listed take the indoor or
 /// outdoor default.
 #[rustfmt::skip]
 const KINDS: &[KindLook] = &[
-    ("living room", WOOD, Boards, OFF_WHITE, Plain),
-    ("bedroom", [0.66, 0.50, 0.32], Boards, [0.88, 0.84, 0.76], Plain),
-    ("kids room", [0.72, 0.66, 0.55], Speckled, [0.78, 0.85, 0.92], Plain),
-    ("nursery", [0.72, 0.66, 0.55], Speckled, [0.92, 0.86, 0.84], Plain),
-    ("kitchen", [0.80, 0.78, 0.74], Tiles, [0.93, 0.92, 0.88], Plain),
-    ("bathroom", [0.90, 0.90, 0.88], Tiles, [0.86, 0.90, 0.92], Tiles),
-    ("home office", [0.50, 0.50, 0.52], Speckled, [0.90, 0.90, 0.88], Plain),
-    ("library", [0.40, 0.26, 0.15], Boards, [0.86, 0.80, 0.68], Plain),
-    ("classroom", [0.72, 0.72, 0.70], Speckled, [0.90, 0.88, 0.78], Plain),
-    ("conference room", [0.42, 0.44, 0.48], Speckled, [0.90, 0.90, 0.90], Plain),
-    ("cafe", [0.45, 0.30, 0.18], Boards, [0.86, 0.80, 0.70], Plain),
-    ("restaurant", [0.45, 0.30, 0.18], Boards, [0.85, 0.78, 0.66], Plain),
-    ("bar", [0.36, 0.22, 0.13], Boards, [0.55, 0.32, 0.24], Bricks),
-    ("gym", [0.25, 0.25, 0.27], Speckled, [0.90, 0.90, 0.90], Plain),
-    ("garage", [0.60, 0.60, 0.58], Mottled, [0.80, 0.80, 0.78], Plain),
-    ("hospital room", [0.78, 0.82, 0.84], Speckled, [0.94, 0.95, 0.95], Plain),
-    ("church", [0.66, 0.62, 0.55], Tiles, [0.80, 0.76, 0.68], Bricks),
-    ("museum", [0.90, 0.89, 0.86], Marble, [0.94, 0.94, 0.93], Plain),
-    ("home theater", [0.35, 0.12, 0.12], Speckled, [0.22, 0.20, 0.22], Plain),
-    ("throne room", [0.55, 0.53, 0.50], Cobbles, [0.60, 0.57, 0.52], Bricks),
-    ("spaceship bridge", [0.45, 0.47, 0.50], Tiles, [0.70, 0.72, 0.75], Tiles),
-    ("server room", [0.70, 0.72, 0.74], Tiles, [0.88, 0.88, 0.88], Plain),
-    ("patio", [0.62, 0.58, 0.52], Tiles, OFF_WHITE, Plain),
-    ("beach", [0.86, 0.76, 0.55], Speckled, OFF_WHITE, Plain),
-    ("street", [0.25, 0.25, 0.26], Speckled, OFF_WHITE, Plain),
-    ("market", [0.50, 0.48, 0.45], Cobbles, OFF_WHITE, Plain),
-    ("winter village", [0.93, 0.95, 0.98], Mottled, OFF_WHITE, Plain),
-    ("campsite", [0.40, 0.38, 0.22], Mottled, OFF_WHITE, Plain),
-    ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain),
+    ("living room", WOOD, Boards, OFF_WHITE, Plain, DOOR_WOOD),
+    ("bedroom", [0.66, 0.50, 0.32], Boards, [0.88, 0.84, 0.76], Plain, PAINTED),
+    ("kids room", [0.72, 0.66, 0.55], Speckled, [0.78, 0.85, 0.92], Plain, PAINTED),
+    ("nursery", [0.72, 0.66, 0.55], Speckled, [0.92, 0.86, 0.84], Plain, PAINTED),
+    ("kitchen", [0.80, 0.78, 0.74], Tiles, [0.93, 0.92, 0.88], Plain, PAINTED),
+    ("bathroom", [0.90, 0.90, 0.88], Tiles, [0.86, 0.90, 0.92], Tiles, PAINTED),
+    ("home office", [0.50, 0.50, 0.52], Speckled, [0.90, 0.90, 0.88], Plain, DOOR_WOOD),
+    ("library", [0.40, 0.26, 0.15], Boards, [0.86, 0.80, 0.68], Plain, DARK_WOOD),
+    ("classroom", [0.72, 0.72, 0.70], Speckled, [0.90, 0.88, 0.78], Plain, DOOR_WOOD),
+    ("conference room", [0.42, 0.44, 0.48], Speckled, [0.90, 0.90, 0.90], Plain, PAINTED),
+    ("cafe", [0.45, 0.30, 0.18], Boards, [0.86, 0.80, 0.70], Plain, DARK_WOOD),
+    ("restaurant", [0.45, 0.30, 0.18], Boards, [0.85, 0.78, 0.66], Plain, DARK_WOOD),
+    ("bar", [0.36, 0.22, 0.13], Boards, [0.55, 0.32, 0.24], Bricks, DARK_WOOD),
+    ("gym", [0.25, 0.25, 0.27], Speckled, [0.90, 0.90, 0.90], Plain, METAL),
+    ("garage", [0.60, 0.60, 0.58], Mottled, [0.80, 0.80, 0.78], Plain, METAL),
+    ("hospital room", [0.78, 0.82, 0.84], Speckled, [0.94, 0.95, 0.95], Plain, PAINTED),
+    ("church", [0.66, 0.62, 0.55], Tiles, [0.80, 0.76, 0.68], Bricks, DARK_WOOD),
+    ("museum", [0.90, 0.89, 0.86], Marble, [0.94, 0.94, 0.93], Plain, PAINTED),
+    ("home theater", [0.35, 0.12, 0.12], Speckled, [0.22, 0.20, 0.22], Plain, DARK_WOOD),
+    ("throne room", [0.55, 0.53, 0.50], Cobbles, [0.60, 0.57, 0.52], Bricks, DARK_WOOD),
+    ("spaceship bridge", [0.45, 0.47, 0.50], Tiles, [0.70, 0.72, 0.75], Tiles, METAL),
+    ("server room", [0.70, 0.72, 0.74], Tiles, [0.88, 0.88, 0.88], Plain, METAL),
+    ("patio", [0.62, 0.58, 0.52], Tiles, OFF_WHITE, Plain, DOOR_WOOD),
+    ("beach", [0.86, 0.76, 0.55], Speckled, OFF_WHITE, Plain, DOOR_WOOD),
+    ("street", [0.25, 0.25, 0.26], Speckled, OFF_WHITE, Plain, DOOR_WOOD),
+    ("market", [0.50, 0.48, 0.45], Cobbles, OFF_WHITE, Plain, DOOR_WOOD),
+    ("winter village", [0.93, 0.95, 0.98], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
+    ("campsite", [0.40, 0.38, 0.22], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
+    ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
 ];
 
 /// The longest scene-kind name or synonym of the knowledge base in `text` (whole words).
@@ -220,16 +241,23 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         wall_pattern: Plain,
         floor_pattern: Boards,
         ground_pattern: Mottled,
+        door: DOOR_WOOD,
     };
     if let Some(kind) = scene_kind(scene_text) {
-        if let Some(&(_, fc, fp, wc, wp)) = KINDS.iter().find(|k| k.0 == kind) {
-            (c.floor, c.floor_pattern, c.wall, c.wall_pattern) = (fc, fp, wc, wp);
+        if let Some(&(_, fc, fp, wc, wp, dc)) = KINDS.iter().find(|k| k.0 == kind) {
+            (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
             if scene_type == SceneType::Outdoor {
                 (c.ground, c.ground_pattern) = (fc, fp);
             }
         }
     }
     let w = words(scene_text);
+    if let Some((_, dc)) = STYLES
+        .iter()
+        .find(|(ws, _)| w.iter().any(|x| ws.contains(&x.as_str())))
+    {
+        c.door = *dc;
+    }
     let material = |s: &str| MATERIALS.iter().find(|m| m.words.contains(&s));
     let colour = |s: &str| COLOURS.iter().find(|c| c.0 == s).map(|c| c.1);
     let tone = |s: &str| TONES.iter().find(|c| c.0 == s).map(|c| c.1);
@@ -282,6 +310,7 @@ fn apply(
         Wall => (&mut c.wall, Some(&mut c.wall_pattern)),
         Ceiling => (&mut c.ceiling, None),
         Sky => (&mut c.sky, None),
+        Door => (&mut c.door, None),
     };
     let base = col.or(mat.map(|m| m.colour)).unwrap_or(*slot);
     *slot = base.map(|v| (v * ton.unwrap_or(1.0)).clamp(0.0, 1.0));

@@ -28,6 +28,10 @@ pub struct Opening {
     pub position: [f64; 3],
     pub width: f64,
     pub height: f64,
+    /// A door's leaf colour from the scene's style ([`styled_openings`]); the drawn default
+    /// when absent.
+    #[serde(default)]
+    pub leaf: Option<[f32; 3]>,
 }
 
 /// Colour of the skirting (linear RGB).
@@ -350,6 +354,21 @@ fn append(env: &mut Gaussians, extra: &mut Gaussians) {
 pub fn openings_of(v: Option<&serde_json::Value>) -> Vec<Opening> {
     v.and_then(|v| serde_json::from_value(v.clone()).ok())
         .unwrap_or_default()
+}
+
+/// The openings of a scene's `extra` with each door's leaf coloured from the scene's text (its
+/// kind, style and door words, see [`super::draft_colours`]).
+pub fn styled_openings(
+    v: Option<&serde_json::Value>,
+    scene_type: SceneType,
+    prompt: &str,
+) -> Vec<Opening> {
+    let door = super::draft_colours(scene_type, prompt).door;
+    let mut out = openings_of(v);
+    for o in out.iter_mut().filter(|o| o.kind == "door") {
+        o.leaf = Some(door);
+    }
+    out
 }
 
 /// Re-materialises the floor (`floor`) or the walls and ceiling of a draft environment from a

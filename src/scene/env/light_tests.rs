@@ -43,6 +43,7 @@ fn contact_shadow_falls_under_the_object_and_openings_are_drawn() {
         position: [1.0, 2.0, 0.9],
         width: 1.2,
         height: 1.2,
+        leaf: None,
     };
     bake_light(
         &mut g,
@@ -127,6 +128,7 @@ fn kept_light_gives_the_same_environment_as_baking_again() {
         position: [1.0, 2.0, 0.9],
         width: 1.2,
         height: 1.2,
+        leaf: None,
     };
     let room = [5.0, 4.0, 2.8];
     let openings = std::slice::from_ref(&window);
@@ -184,6 +186,7 @@ fn an_opening_is_drawn_by_its_own_straight_edged_surfels() {
         position: [-0.5, 2.0, 0.0],
         width: 0.9,
         height: 2.1,
+        leaf: None,
     };
     let g = super::super::openings::surfels(&door, [5.0, 4.0, 2.8]);
     assert!(g.len() > 5000, "{} surfels", g.len());

@@ -15,7 +15,9 @@ mod light;
 mod openings;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
-pub use light::{bake_light, openings_of, restyle_surface, DraftLight, LitBox, Opening};
+pub use light::{
+    bake_light, openings_of, restyle_surface, styled_openings, DraftLight, LitBox, Opening,
+};
 
 use crate::plan::spec::SceneType;
 use crate::splat::cloud::SH_C0;

@@ -7,7 +7,7 @@ use super::light::Opening;
 use crate::splat::cloud::SH_C0;
 use crate::splat::Gaussians;
 
-/// Colours of the drawn openings (linear RGB).
+/// Colours of the drawn openings (linear RGB); a door's leaf is its scene's when known.
 const DOOR_LEAF: [f32; 3] = [0.62, 0.46, 0.30];
 const FRAME: [f32; 3] = [0.93, 0.92, 0.89];
 const PANE: [f32; 3] = [0.86, 0.93, 1.0];
@@ -56,6 +56,7 @@ pub fn paint(o: &Opening, side: &str, u: f64, z: f64) -> Option<([f32; 3], bool)
             FRAME
         }
     } else if o.kind == "door" {
+        let leaf = o.leaf.unwrap_or(DOOR_LEAF);
         // A leaf with two recessed panels and a handle.
         let panel = du < hw - 0.1
             && ((z > z0 + 0.15 && z < z0 + 0.45 * o.height)
@@ -65,9 +66,9 @@ pub fn paint(o: &Opening, side: &str, u: f64, z: f64) -> Option<([f32; 3], bool)
         if handle {
             HANDLE
         } else if panel {
-            DOOR_LEAF.map(|c| c * 0.88)
+            leaf.map(|c| c * 0.88)
         } else {
-            DOOR_LEAF
+            leaf
         }
     } else {
         // Panes split by a cross of glazing bars.
