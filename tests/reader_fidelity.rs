@@ -336,8 +336,11 @@ fn a_plain_noun_is_its_everyday_kind() {
     let s = plan("a gym hall with a banner and two benches");
     assert_eq!(n(&s, "tapestry", &[]), 0, "{:?}", s.objects.keys());
     let s = plan("a throne room with a throne on a dais");
-    assert_eq!(n(&s, "dai", &[]), 0, "{:?}", s.objects.keys());
-    assert_eq!(n(&s, "dais", &[]), 1, "{:?}", s.objects.keys());
+    assert!(
+        s.objects.contains_key("dais") && !s.objects.contains_key("dai"),
+        "{:?}",
+        s.objects.keys()
+    );
 }
 
 #[test]
@@ -367,7 +370,12 @@ fn a_relation_said_of_each_item_holds_per_item() {
             .map(|r| r.object.as_str())
             .collect();
         on.sort();
-        assert_eq!(on, ["nightstand1", "nightstand2"], "{prompt}: {:?}", s.relations);
+        assert_eq!(
+            on,
+            ["nightstand1", "nightstand2"],
+            "{prompt}: {:?}",
+            s.relations
+        );
     }
 }
 
@@ -381,10 +389,22 @@ fn what_a_thing_is_for_names_its_kind() {
 #[test]
 fn a_place_that_is_not_the_template_lends_only_generic_furniture() {
     for (prompt, not) in [
-        ("a haunted ballroom with a grand piano and a few chairs", "dj booth"),
-        ("a steampunk workshop with a workbench and a telescope", "car"),
-        ("a pirate ship's hold with barrels, crates and a hammock", "cannon"),
-        ("a space station galley with a table and four chairs", "console"),
+        (
+            "a haunted ballroom with a grand piano and a few chairs",
+            "dj booth",
+        ),
+        (
+            "a steampunk workshop with a workbench and a telescope",
+            "car",
+        ),
+        (
+            "a pirate ship's hold with barrels, crates and a hammock",
+            "cannon",
+        ),
+        (
+            "a space station galley with a table and four chairs",
+            "console",
+        ),
     ] {
         let s = plan(prompt);
         assert_eq!(n(&s, not, &[]), 0, "{prompt}: {:?}", s.objects.keys());

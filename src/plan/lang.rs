@@ -263,14 +263,21 @@ fn for_whom(kb: &KnowledgeBase, r: &mut Reading) {
         let Some(c) = after.captures(&r.text[r.mentions[k].end..]) else {
             continue;
         };
-        let whom = if c[1].starts_with("kid") { "kids" } else { "children's" };
+        let whom = if c[1].starts_with("kid") {
+            "kids"
+        } else {
+            "children's"
+        };
         let mut j = k;
         loop {
             let m = &r.mentions[j];
             let head = singular(m.text.rsplit(' ').next().unwrap_or(""));
             if let Some(o) = kb.object(&format!("{whom} {head}")) {
-                r.mentions[j].category = o.category.clone();
-                r.mentions[j].known = true;
+                // named by its kind now: no bare noun for the scene to specialise
+                let m = &mut r.mentions[j];
+                m.category = o.category.clone();
+                m.known = true;
+                m.text = format!("{whom} {}", m.text);
             }
             if j == 0 || r.text[r.mentions[j - 1].end..r.mentions[j].start].trim() != "and" {
                 break;
@@ -307,9 +314,17 @@ fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
         .filter(|w| !w.is_empty())?;
     // the noun ends the opening phrase: the contents follow ("a space station galley with")
     let ends = after[next.len()..].is_empty()
-        || [" with ", ":", ",", " -", " where ", " full of ", " filled with "]
-            .iter()
-            .any(|d| after[next.len()..].starts_with(d));
+        || [
+            " with ",
+            ":",
+            ",",
+            " -",
+            " where ",
+            " full of ",
+            " filled with ",
+        ]
+        .iter()
+        .any(|d| after[next.len()..].starts_with(d));
     if own.contains(&next) {
         // "a pirate ship's deck": the template's own place
         return None;
@@ -317,9 +332,8 @@ fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
     let head = rest.starts_with("'s ")
         || (ends
             && !(is_function_word(next)
-            || is_known_word(next)
-            || is_verb(next)
-            || is_adjective(next)
+                || is_known_word(next)
+                || is_verb(next)
                 || number_of(next).is_some()));
     head.then(|| next.to_string())
 }

@@ -195,11 +195,7 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
     }
     let head_cat = kb.object(&head).map(|o| o.category.clone());
     // Only a bare head noun ("desks", "a chair") is re-read; "an office chair" stays.
-    // ("chairs for kids" are kids chairs, no bare noun)
-    let bare = match &head_cat {
-        Some(h) => *h == m.category,
-        None => m.text.split(' ').count() == 1,
-    };
+    let bare = m.text.split(' ').count() == 1 || head_cat.as_deref() == Some(m.category.as_str());
     if !bare {
         return m.category.clone();
     }
@@ -427,7 +423,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             .collect();
         for c in lone {
             counts.remove(&c);
-            notes.push(format!("default `{c}` left out: what it goes with is left out"));
+            notes.push(format!(
+                "default `{c}` left out: what it goes with is left out"
+            ));
         }
     }
     let defaults = counts.clone();
@@ -438,18 +436,17 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
     let mut cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
-    // "ten round tables ... and a top table": an unknown kind of a noun whose scene kind the
-    // text already names is another object, not more of those (it is sized as them).
+    // "ten round tables ... and a top table": an unknown kind of a noun of which the text
+    // already names a kind is another object, not more of the scene's (it is sized as them).
     for i in 0..cats.len() {
         let m = &r.mentions[i];
         if m.known || m.reference || cats[i] == m.category {
             continue;
         }
-        let named_elsewhere = r
-            .mentions
-            .iter()
-            .zip(&cats)
-            .any(|(o, c)| *c == cats[i] && o.known && !o.reference && !o.negated);
+        let head = m.category.rsplit(' ').next();
+        let named_elsewhere = r.mentions.iter().zip(&cats).any(|(o, c)| {
+            (*c == cats[i] || c.rsplit(' ').next() == head) && o.known && !o.reference && !o.negated
+        });
         if named_elsewhere {
             cats[i] = m.category.clone();
         }
@@ -464,9 +461,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let grouped_elsewhere = super::groups::group_of_category(c).is_some_and(|objs| {
             scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
         });
-        if *c != m.category
-            && grouped_elsewhere
-            && super::groups::relation_between(c, tc).is_none()
+        if *c != m.category && grouped_elsewhere && super::groups::relation_between(c, tc).is_none()
         {
             cats[i] = m.category.clone();
         }
@@ -1003,10 +998,20 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let no = counts.get(oc).copied().unwrap_or(1).max(1);
         let om = &r.mentions[oi];
         let spread = om.reference || om.plural || om.count.is_some_and(|c| c > 1);
-        let n = if spread && no > 1 { n.max(ns.min(no)) } else { n };
+        let n = if spread && no > 1 {
+            n.max(ns.min(no))
+        } else {
+            n
+        };
         for k in 1..=n {
             let ko = if spread { (k - 1) % no + 1 } else { 1 };
-            push(&mut spec, format!("{sc}{k}"), rel, format!("{oc}{ko}"), true);
+            push(
+                &mut spec,
+                format!("{sc}{k}"),
+                rel,
+                format!("{oc}{ko}"),
+                true,
+            );
         }
     }
     if let Some(sc) = scene {

@@ -111,7 +111,8 @@ pub(super) fn read_counts(r: &mut Reading) {
             }
         }
     }
-    let each_of_the = re(r"\b(?:each|every|one|all) of (?:the|its|their|these|those)(?: [a-z0-9-]+)?$");
+    let each_of_the =
+        re(r"\b(?:each|every|one|all) of (?:the|its|their|these|those)(?: [a-z0-9-]+)?$");
     let n = r.mentions.len();
     // "Y each", "Y apiece", "Y per X", "Y at each X", "Y beneath each one", "Y on each side".
     let tail_re = re(
@@ -197,7 +198,11 @@ pub(super) fn read_counts(r: &mut Reading) {
                     Some(referent(r, k + 1))
                 } else if each_of_the.is_match(between) {
                     // "a lamp on each of the two nightstands": the nightstands, named here
-                    Some(if nm.reference { referent(r, k + 1) } else { k + 1 })
+                    Some(if nm.reference {
+                        referent(r, k + 1)
+                    } else {
+                        k + 1
+                    })
                 } else if word == "each" || word == "apiece" {
                     distributor(r, m.start, &cat)
                 } else {
