@@ -63,7 +63,7 @@ fn named_default_and_inferred_are_told_apart() {
     );
 
     let p = plan("a patio with three small tables, each with two stools");
-    let stools = why(&p, "bar stool");
+    let stools = why(&p, "stool");
     assert_eq!(stools.count, 6, "{stools:?}");
     assert!(
         stools.why.starts_with("inferred from") && stools.why.contains("two stools"),

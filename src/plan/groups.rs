@@ -28,6 +28,7 @@ const DINING_SEATS: &[&str] = &[
     "restaurant chair",
     "stacking chair",
     "kids chair",
+    "stool",
 ];
 const TABLES: &[&str] = &[
     "dining table",
@@ -98,7 +99,7 @@ const RULES: &[Rule] = &[
         per_object: None,
     },
     Rule {
-        subjects: &["bar stool"],
+        subjects: &["bar stool", "stool"],
         relation: RelationKind::At,
         objects: &[
             "bar counter",
@@ -248,6 +249,14 @@ pub fn relation_between(subject: &str, object: &str) -> Option<RelationKind> {
         .iter()
         .find(|r| r.subjects.contains(&subject) && r.objects.contains(&object))
         .map(|r| r.relation)
+}
+
+/// Whether `subject` forms a group with some category (a bar stool with a counter).
+pub fn group_of_category(subject: &str) -> Option<&'static [&'static str]> {
+    RULES
+        .iter()
+        .find(|r| r.subjects.contains(&subject))
+        .map(|r| r.objects)
 }
 
 /// How many subjects one `object` instance seats in its group with `subject` (the table's

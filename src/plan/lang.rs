@@ -214,6 +214,10 @@ pub struct Reading {
     pub scale: f64,
     /// Nothing in the text looks like English.
     pub not_english: bool,
+    /// The word that makes the scene's place not the template's own ("a haunted ballroom", "a
+    /// pirate ship's hold", "a space station galley"): the template lends only its generic
+    /// furniture.
+    pub not_literal: Option<String>,
 }
 
 fn re(p: &str) -> Regex {
@@ -250,8 +254,96 @@ pub fn plurals(name: &str) -> Vec<String> {
     v
 }
 
-/// The singular of a plural English noun (best effort, for unknown nouns).
+/// "chairs for kids", "a little table and chairs for children": what a thing is for names its
+/// kind when the knowledge base has that kind ("kids chair"), for the phrase's nouns joined by
+/// "and" too.
+fn for_whom(kb: &KnowledgeBase, r: &mut Reading) {
+    let after = re(r"^ for (?:the |little )?(kids|kid|children|child|toddlers)\b");
+    for k in 0..r.mentions.len() {
+        let Some(c) = after.captures(&r.text[r.mentions[k].end..]) else {
+            continue;
+        };
+        let whom = if c[1].starts_with("kid") {
+            "kids"
+        } else {
+            "children's"
+        };
+        let mut j = k;
+        loop {
+            let m = &r.mentions[j];
+            let head = singular(m.text.rsplit(' ').next().unwrap_or(""));
+            if let Some(o) = kb.object(&format!("{whom} {head}")) {
+                // named by its kind now: no bare noun for the scene to specialise
+                let m = &mut r.mentions[j];
+                m.category = o.category.clone();
+                m.known = true;
+                m.text = format!("{whom} {}", m.text);
+            }
+            if j == 0 || r.text[r.mentions[j - 1].end..r.mentions[j].start].trim() != "and" {
+                break;
+            }
+            j -= 1;
+        }
+    }
+}
+
+/// What makes the place named at `t[s..e]` (a scene's name) another place than the template:
+/// a fantastical word before it in the opening phrase (`kb/words.txt`: fantastical) that is
+/// not the template's own (`own`: the words of its names; a wizard study is a wizard's), or a
+/// noun after it that the name only qualifies ("a pirate ship's hold", "a space station
+/// galley").
+fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
+    let opening = t[..s]
+        .rfind([':', ',', ';', '.'])
+        .map(|i| i + 1)
+        .unwrap_or(0);
+    let fantastical = word_list("fantastical");
+    if let Some(w) = t[opening..e]
+        .split(|c: char| !c.is_alphanumeric() && c != '-')
+        .find(|w| fantastical.contains(w) && !own.contains(w))
+    {
+        return Some(w.to_string());
+    }
+    let rest = &t[e..];
+    let after = rest
+        .strip_prefix("'s ")
+        .or_else(|| rest.strip_prefix(' '))?;
+    let next = after
+        .split(|c: char| !c.is_alphanumeric())
+        .next()
+        .filter(|w| !w.is_empty())?;
+    // the noun ends the opening phrase: the contents follow ("a space station galley with")
+    let ends = after[next.len()..].is_empty()
+        || [
+            " with ",
+            ":",
+            ",",
+            " -",
+            " where ",
+            " full of ",
+            " filled with ",
+        ]
+        .iter()
+        .any(|d| after[next.len()..].starts_with(d));
+    if own.contains(&next) {
+        // "a pirate ship's deck": the template's own place
+        return None;
+    }
+    let head = rest.starts_with("'s ")
+        || (ends
+            && !(is_function_word(next)
+                || is_known_word(next)
+                || is_verb(next)
+                || number_of(next).is_some()));
+    head.then(|| next.to_string())
+}
+
+/// The singular of a plural English noun: WordNet's where it knows better than rules ("dais"
+/// stays, "mice" is "mouse"), else by rule (best effort, for unknown nouns).
 pub fn singular(w: &str) -> String {
+    if let Some(sg) = super::lexicon::known_singular(w) {
+        return sg.to_string();
+    }
     for (pl, sg) in [
         ("ies", "y"),
         ("ves", "f"),
@@ -436,6 +528,14 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     // The place the text is about when it is no scene the knowledge base knows ("a mermaid
     // grotto with ...") and what follows the scene's name ("the control room of a submarine").
     masked.extend(place_phrase(&t, r.scene.map(|(_, s, e)| (s, e)), &objects));
+    r.not_literal = r.scene.and_then(|(i, s, e)| {
+        let sc = &kb.scenes[i];
+        let own: Vec<&str> = std::iter::once(&sc.name)
+            .chain(&sc.synonyms)
+            .flat_map(|n| n.split(' '))
+            .collect();
+        not_literal(&t, s, e, &own)
+    });
 
     // Objects; two names in a row are one object named by the last ("a sectional sofa", "a
     // stone coffin", "a desk chair"), or by the first when both fill one role ("a two-seater
@@ -802,6 +902,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     r.scale = room_scale(&t, &r.mentions, r.scene.map(|(_, s, _)| s));
     r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
         .is_match(&t);
+    for_whom(kb, &mut r);
     read_counts(&mut r);
     read_placements(&mut r);
 

@@ -9,6 +9,7 @@ pub mod gcp;
 pub mod groups;
 pub mod kb;
 pub mod lang;
+pub mod lexicon;
 pub mod llm;
 pub mod offline;
 pub mod roles;

@@ -310,6 +310,18 @@ fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
         .map(str::to_string)
 }
 
+/// How many scene types a category is a default of: furniture of at least
+/// [`GENERIC_SCENES`] is generic (chairs, shelves, rugs), the rest belongs to its places.
+fn scenes_with(kb: &KnowledgeBase, category: &str) -> usize {
+    kb.scenes
+        .iter()
+        .filter(|s| s.objects.iter().any(|(c, _)| c == category))
+        .count()
+}
+
+/// See [`scenes_with`].
+const GENERIC_SCENES: usize = 3;
+
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,
 /// else from a size class named by its words.
 fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
@@ -319,12 +331,28 @@ fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
             return (o.size, format!("sized as a {}", o.category));
         }
     }
+    // WordNet: "a divan" is a kind of sofa, "an owl" a small thing
+    let head = words.last().copied().unwrap_or("");
+    let kind = super::lexicon::kind(head);
+    if let Some(super::lexicon::Kind::Category(c)) = kind {
+        if let Some(o) = kb.object(c) {
+            return (o.size, format!("sized as a {c}, its kind in WordNet"));
+        }
+    }
+    let wn_class = match kind {
+        Some(super::lexicon::Kind::Size(class)) => class,
+        _ => "",
+    };
     let has = |ws: &[&str]| words.iter().any(|w| ws.contains(w));
     let (size, class) = if has(&["small", "tiny", "little", "mini", "miniature"]) {
         ([0.35, 0.35, 0.4], "small")
     } else if has(&[
         "large", "big", "huge", "giant", "enormous", "massive", "tall",
     ]) {
+        ([1.5, 1.0, 1.6], "large")
+    } else if wn_class == "small" {
+        ([0.35, 0.35, 0.4], "small")
+    } else if wn_class == "large" {
         ([1.5, 1.0, 1.6], "large")
     } else {
         ([0.7, 0.6, 0.9], "medium")
@@ -367,7 +395,37 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut counts: BTreeMap<String, u32> = BTreeMap::new();
     if let Some(s) = scene {
         for (c, n) in &s.objects {
+            // "a haunted ballroom": another place than the template's lends only its generic
+            // furniture (what several scene types have), not its DJ booth
+            if let Some(w) = r.not_literal.as_deref() {
+                if scenes_with(kb, c) < GENERIC_SCENES {
+                    notes.push(format!(
+                        "default `{c}` of a {} left out: the \"{w}\" place is not the template's own",
+                        s.name
+                    ));
+                    continue;
+                }
+            }
             counts.insert(c.clone(), *n);
+        }
+    }
+    if r.not_literal.is_some() {
+        // the seats of a table left out go with it (the reading chairs of a haunted library)
+        let lone: Vec<String> = counts
+            .keys()
+            .filter(|c| {
+                super::groups::group_of_category(c).is_some_and(|objs| {
+                    scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+                        && !objs.iter().any(|o| counts.contains_key(*o))
+                })
+            })
+            .cloned()
+            .collect();
+        for c in lone {
+            counts.remove(&c);
+            notes.push(format!(
+                "default `{c}` left out: what it goes with is left out"
+            ));
         }
     }
     let defaults = counts.clone();
@@ -378,6 +436,36 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let mut unknown: BTreeMap<String, [f64; 3]> = BTreeMap::new();
     let mut explicit: BTreeMap<String, u32> = BTreeMap::new();
     let mut cats: Vec<String> = r.mentions.iter().map(|m| in_scene(kb, scene, m)).collect();
+    // "ten round tables ... and a top table": an unknown kind of a noun of which the text
+    // already names a kind is another object, not more of the scene's (it is sized as them).
+    for i in 0..cats.len() {
+        let m = &r.mentions[i];
+        if m.known || m.reference || cats[i] == m.category {
+            continue;
+        }
+        let head = m.category.rsplit(' ').next();
+        let named_elsewhere = r.mentions.iter().zip(&cats).any(|(o, c)| {
+            (*c == cats[i] || c.rsplit(' ').next() == head) && o.known && !o.reference && !o.negated
+        });
+        if named_elsewhere {
+            cats[i] = m.category.clone();
+        }
+    }
+    // "seven tables, four stools apiece" in a bar: stools said per table are not the scene's
+    // stools of another group it has (its bar stools at the counter); they keep their plain kind.
+    for (i, m) in r.mentions.iter().enumerate() {
+        let Some(t) = m.each_of else { continue };
+        let (Some(c), Some(tc)) = (cats.get(i), cats.get(t)) else {
+            continue;
+        };
+        let grouped_elsewhere = super::groups::group_of_category(c).is_some_and(|objs| {
+            scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+        });
+        if *c != m.category && grouped_elsewhere && super::groups::relation_between(c, tc).is_none()
+        {
+            cats[i] = m.category.clone();
+        }
+    }
     // "a kids' table with four little chairs": bare seats said with a table are that table's
     // seats, not the scene's usual seat kind (the office chairs of its desks).
     let scene_seats: BTreeMap<String, u32> = scene
@@ -775,9 +863,17 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
+    // "in one corner, facing the window": one anchor per object, and the facing is what a
+    // position word cannot give back, so it stays
+    let facing: BTreeSet<usize> = r
+        .anchors
+        .iter()
+        .filter(|(_, a)| *a == Anchor::FaceWindow)
+        .map(|&(mi, _)| mi)
+        .collect();
     for &(mi, a) in &r.anchors {
         let c = &cats[mi];
-        if counts.contains_key(c) {
+        if counts.contains_key(c) && (a == Anchor::FaceWindow || !facing.contains(&mi)) {
             anchors.insert(c.clone(), a);
         }
     }
@@ -897,8 +993,25 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                 continue;
             }
         }
+        // "a lamp on each nightstand", "chairs in front of the sofas": the subjects spread
+        // over the object's instances, one relation per item; "the nightstand" is one
+        let no = counts.get(oc).copied().unwrap_or(1).max(1);
+        let om = &r.mentions[oi];
+        let spread = om.reference || om.plural || om.count.is_some_and(|c| c > 1);
+        let n = if spread && no > 1 {
+            n.max(ns.min(no))
+        } else {
+            n
+        };
         for k in 1..=n {
-            push(&mut spec, format!("{sc}{k}"), rel, format!("{oc}1"), true);
+            let ko = if spread { (k - 1) % no + 1 } else { 1 };
+            push(
+                &mut spec,
+                format!("{sc}{k}"),
+                rel,
+                format!("{oc}{ko}"),
+                true,
+            );
         }
     }
     if let Some(sc) = scene {

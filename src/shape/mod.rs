@@ -83,7 +83,11 @@ pub fn archetype_of(category: &str) -> &'static str {
             .find(|n| **n == o.archetype)
             .copied()
             .unwrap_or_else(|| archetype_by_keyword(&o.category)),
-        None => DEFAULT_ARCHETYPE,
+        // an unknown object takes its WordNet kind's archetype ("a divan" is drawn as a sofa)
+        None => match name.rsplit(' ').next().and_then(crate::plan::lexicon::kind) {
+            Some(crate::plan::lexicon::Kind::Category(c)) if c != name => archetype_of(c),
+            _ => DEFAULT_ARCHETYPE,
+        },
     }
 }
 

@@ -91,14 +91,28 @@ pub(super) fn read_counts(r: &mut Reading) {
             .find(|&i| t.is_char_boundary(i))
             .unwrap_or(m.start);
         if each_before.is_match(&t[from..m.start]) && m.count.is_none() && !m.negated {
+            // the same category, or a kind of it named by the bare head noun ("two single
+            // beds ... each bed")
+            let bare = !m.text.contains(' ');
+            let head = super::singular(&m.text);
             let earlier = r.mentions[..k]
                 .iter()
-                .any(|o| o.category == m.category && !o.negated);
+                .filter(|o| !o.negated)
+                .find(|o| {
+                    o.category == m.category
+                        || (bare && o.category.rsplit(' ').next() == Some(head.as_str()))
+                })
+                .map(|o| o.category.clone());
             let m = &mut r.mentions[k];
-            m.reference = earlier;
+            m.reference = earlier.is_some();
             m.definite = true;
+            if let Some(c) = earlier {
+                m.category = c;
+            }
         }
     }
+    let each_of_the =
+        re(r"\b(?:each|every|one|all) of (?:the|its|their|these|those)(?: [a-z0-9-]+)?$");
     let n = r.mentions.len();
     // "Y each", "Y apiece", "Y per X", "Y at each X", "Y beneath each one", "Y on each side".
     let tail_re = re(
@@ -179,8 +193,16 @@ pub(super) fn read_counts(r: &mut Reading) {
             ("per" | "each" | "every", None) if next <= m.end + tail.len() && k + 1 < n => {
                 // "per table", "at each bench": the next mention, a reference
                 let nm = &r.mentions[k + 1];
-                if t[m.end..nm.start].trim_end().ends_with(word) && nm.reference {
+                let between = t[m.end..nm.start].trim_end();
+                if between.ends_with(word) && nm.reference {
                     Some(referent(r, k + 1))
+                } else if each_of_the.is_match(between) {
+                    // "a lamp on each of the two nightstands": the nightstands, named here
+                    Some(if nm.reference {
+                        referent(r, k + 1)
+                    } else {
+                        k + 1
+                    })
                 } else if word == "each" || word == "apiece" {
                     distributor(r, m.start, &cat)
                 } else {

@@ -106,6 +106,13 @@ pub(super) fn read_placements(r: &mut Reading) {
     ];
     for (p, a) in anchor_phrases {
         for m in re(p).find_iter(&t) {
+            // "along one side of it", "in the corner of the bar": a part of an object, no wall
+            if t[m.end()..].starts_with(" of ")
+                && !t[m.end()..].starts_with(" of the room")
+                && *a != Anchor::Center
+            {
+                continue;
+            }
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
                 used.push((m.start(), m.end()));

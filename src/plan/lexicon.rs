@@ -1,0 +1,70 @@
+//! What WordNet says of a noun the knowledge base lacks: its kind (the category its nearest
+//! hypernym names, or a size class), whether a noun ending in "s" is singular ("dais"), and
+//! irregular plurals. Data: `kb/wordnet.txt`, generated from WordNet 3.0 by
+//! `scripts/wordnet_kinds.py`.
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::OnceLock;
+
+/// What a noun is a kind of.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Kind<'a> {
+    /// A knowledge-base category ("chesterfield" -> "sofa").
+    Category(&'a str),
+    /// A size class: "small", "medium" or "large" ("owl" -> "small").
+    Size(&'a str),
+}
+
+struct Lexicon {
+    kinds: BTreeMap<&'static str, &'static str>,
+    keep: BTreeSet<&'static str>,
+    irregular: BTreeMap<&'static str, &'static str>,
+}
+
+fn lexicon() -> &'static Lexicon {
+    static L: OnceLock<Lexicon> = OnceLock::new();
+    L.get_or_init(|| {
+        let mut l = Lexicon {
+            kinds: BTreeMap::new(),
+            keep: BTreeSet::new(),
+            irregular: BTreeMap::new(),
+        };
+        for line in include_str!("kb/wordnet.txt").lines() {
+            let Some((tag, rest)) = line.split_once(' ') else {
+                continue;
+            };
+            let pair = rest.split_once(" | ").map(|(a, b)| (a.trim(), b.trim()));
+            match (tag, pair) {
+                ("kind", Some((w, k))) => {
+                    l.kinds.insert(w, k);
+                }
+                ("irregular", Some((p, s))) => {
+                    l.irregular.insert(p, s);
+                }
+                ("keep", None) => {
+                    l.keep.insert(rest.trim());
+                }
+                _ => {}
+            }
+        }
+        l
+    })
+}
+
+/// The kind of `noun` (singular, lower case), if WordNet gives one.
+pub fn kind(noun: &str) -> Option<Kind<'static>> {
+    let k = lexicon().kinds.get(noun)?;
+    Some(match k.strip_prefix("size ") {
+        Some(class) => Kind::Size(class),
+        None => Kind::Category(k),
+    })
+}
+
+/// The singular WordNet knows for `w`: itself for a singular noun ending in "s" ("dais"), the
+/// base of an irregular plural ("mice" -> "mouse"); `None` when rules decide.
+pub fn known_singular(w: &str) -> Option<&'static str> {
+    let l = lexicon();
+    l.keep
+        .get(w)
+        .copied()
+        .or_else(|| l.irregular.get(w).copied())
+}
