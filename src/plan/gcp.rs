@@ -716,7 +716,8 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
     q - l.unsatisfied.len() as f64
 }
 
-/// Placement order: breadth-first from the most connected instance of each component (ties:
+/// Placement order: a CENTER thing that nothing relates to first (a dance floor keeps the
+/// middle), then breadth-first from the most connected instance of each component (ties:
 /// wall-anchored, then larger), OVER subjects after their support.
 fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     let n = prob.inst.len();
@@ -753,9 +754,11 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
             .iter()
             .any(|&(rel, _, subject)| subject && placed_by(rel));
         if prob.largest_first {
-            return (0, false, 0, (area * 1000.0) as u64);
+            return (false, 0, false, 0, (area * 1000.0) as u64);
         }
-        (holds, free, wall, (area * 1000.0) as u64)
+        // a thing the middle is kept for and nothing else places (a dance floor) takes it first
+        let middle = a.anchor == Anchor::Center && prob.rels[i].is_empty();
+        (middle, holds, free, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];
     let mut out = vec![];
