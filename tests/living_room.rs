@@ -33,7 +33,12 @@ fn room(table: [f64; 2], extra: PlacedObject) -> Vec<PlacedObject> {
         obj("sofa1", [2.1, 0.95, 0.85], [0.0, 2.0, 0.0], 180.0),
         obj("tv stand1", [1.6, 0.45, 0.55], [0.0, -2.3, 0.0], 0.0),
         obj("tv1", [1.3, 0.08, 0.75], [0.0, -2.45, 0.55], 0.0),
-        obj("coffee table1", [1.1, 0.6, 0.45], [table[0], table[1], 0.0], 0.0),
+        obj(
+            "coffee table1",
+            [1.1, 0.6, 0.45],
+            [table[0], table[1], 0.0],
+            0.0,
+        ),
         extra,
     ]
 }

@@ -289,7 +289,8 @@ pub fn relation_holds_alone(sb: &Box2, rel: RelationKind, ob: &Box2, alone: bool
     if !alone || !matches!(rel, RelationKind::Front | RelationKind::Behind) {
         return true;
     }
-    gap(sb, ob) <= FRONT_REACH + 1e-9 && ob.local(sb.c)[0].abs() <= FRONT_CENTRING * ob.half[0] + 1e-9
+    gap(sb, ob) <= FRONT_REACH + 1e-9
+        && ob.local(sb.c)[0].abs() <= FRONT_CENTRING * ob.half[0] + 1e-9
 }
 
 /// The sight zone of an OPPOSITE pair (a TV stand and its sofa): the band from one centre to the

@@ -10,8 +10,8 @@ use super::check::{
     CORNER_DISTANCE, TOLERANCE,
 };
 use super::spec::{
-    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, RelationKind, Room,
-    SceneSpec, SceneType, SpecError,
+    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, RelationKind, Room, SceneSpec,
+    SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
 
@@ -350,7 +350,14 @@ impl Problem {
                         ];
                         let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
                         let face = yaw_facing(to);
-                        for yaw in [face, face + 180.0, face + 90.0, face - 90.0, pj.yaw, pj.yaw + 180.0] {
+                        for yaw in [
+                            face,
+                            face + 180.0,
+                            face + 90.0,
+                            face - 90.0,
+                            pj.yaw,
+                            pj.yaw + 180.0,
+                        ] {
                             out.push(Pose { c, yaw, z: z0 });
                         }
                     }
