@@ -1,7 +1,8 @@
 //! The meaning of relations, anchors and validity (ARCHITECTURE.md), as predicates on placed
 //! objects. The layout search filters candidates with them and the tests check layouts with them.
 use super::spec::{
-    Anchor, Layout, Opening, OpeningKind, PlacedObject, RelationKind, SceneSpec, SceneType,
+    Anchor, Layout, Opening, OpeningKind, PlacedObject, Relation, RelationKind, SceneSpec,
+    SceneType,
 };
 
 pub mod walk;
@@ -154,6 +155,16 @@ pub fn gap(a: &Box2, b: &Box2) -> f64 {
 pub const DIRECTIONAL_GAP: f64 = 3.0;
 /// Largest footprint gap of NEXT.
 pub const NEXT_GAP: f64 = 0.5;
+/// Largest footprint gap of FRONT / BEHIND when the subject is the only thing on that side of
+/// its object (a coffee table before its sofa, a rug at the foot of a bed): within reach.
+pub const FRONT_REACH: f64 = 0.6;
+/// How far off its object's axis the only thing in FRONT of / BEHIND it may stand, as a
+/// fraction of the object's half width.
+pub const FRONT_CENTRING: f64 = 0.5;
+/// Height above which a thing blocks a sightline (m).
+pub const SIGHTLINE_HEIGHT: f64 = 0.6;
+/// Height from which a thing hangs clear of a sightline (m): a seated eye is below it.
+pub const SIGHTLINE_CLEAR_ABOVE: f64 = 1.2;
 
 /// Angle in degrees between the facing of `s` and the direction from `s` to `o`.
 pub fn facing_error(s: &Box2, o: &Box2) -> f64 {
@@ -266,6 +277,85 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
         }
         RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) >= 180.0 - FACING_TOLERANCE,
     }
+}
+
+/// [`relation_holds_box`], and when `alone` (the subject is the only one in that relation to
+/// its object) a FRONT / BEHIND subject also stands within [`FRONT_REACH`] of the object and
+/// its centre within [`FRONT_CENTRING`] of the object's half width from its axis.
+pub fn relation_holds_alone(sb: &Box2, rel: RelationKind, ob: &Box2, alone: bool) -> bool {
+    if !relation_holds_box(sb, rel, ob) {
+        return false;
+    }
+    if !alone || !matches!(rel, RelationKind::Front | RelationKind::Behind) {
+        return true;
+    }
+    gap(sb, ob) <= FRONT_REACH + 1e-9
+        && ob.local(sb.c)[0].abs() <= FRONT_CENTRING * ob.half[0] + 1e-9
+}
+
+/// The sight zone of an OPPOSITE pair (a TV stand and its sofa): the band from one centre to the
+/// other, half as wide as the narrower of the two, floor to [`SIGHTLINE_CLEAR_ABOVE`].
+pub fn sight_zone(a: &Box2, b: &Box2) -> Box2 {
+    let d = [b.c[0] - a.c[0], b.c[1] - a.c[1]];
+    let len = d[0].hypot(d[1]);
+    let yaw = (-d[0]).atan2(d[1]).to_degrees();
+    let width = a.half[0].min(b.half[0]);
+    Box2::new(
+        [0.5 * (a.c[0] + b.c[0]), 0.5 * (a.c[1] + b.c[1])],
+        yaw,
+        [width, len],
+        0.0,
+        SIGHTLINE_CLEAR_ABOVE,
+    )
+}
+
+/// Whether `k` stands in a sight zone: taller than [`SIGHTLINE_HEIGHT`], hanging below
+/// [`SIGHTLINE_CLEAR_ABOVE`], its footprint in the zone by more than 2 cm.
+pub fn blocks_sight(k: &Box2, zone: &Box2) -> bool {
+    k.z1 > SIGHTLINE_HEIGHT && k.z0 < SIGHTLINE_CLEAR_ABOVE && overlap_depth(k, zone) > 0.02
+}
+
+/// The relations of `relations` that `objects` do not satisfy: each as [`relation_holds`] says
+/// (FRONT / BEHIND as [`relation_holds_alone`] when the subject is the only one in that relation
+/// to its object), and an OPPOSITE pair also with nothing but what stands on its ends blocking
+/// its [`sight_zone`]. Relations naming no object are left out.
+pub fn relations_unsatisfied(objects: &[PlacedObject], relations: &[Relation]) -> Vec<Relation> {
+    let find = |id: &str| objects.iter().find(|o| o.id == id);
+    let stacked = |a: &str, b: &str| {
+        relations.iter().any(|r| {
+            matches!(r.relation, RelationKind::Over | RelationKind::Under)
+                && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
+        })
+    };
+    relations
+        .iter()
+        .filter(|r| {
+            let (Some(s), Some(o)) = (find(&r.subject), find(&r.object)) else {
+                return false;
+            };
+            let alone = relations
+                .iter()
+                .filter(|q| q.object == r.object && q.relation == r.relation)
+                .count()
+                == 1;
+            let (sb, ob) = (Box2::of(s), Box2::of(o));
+            if !relation_holds_alone(&sb, r.relation, &ob, alone) {
+                return true;
+            }
+            if r.relation != RelationKind::Opposite {
+                return false;
+            }
+            let zone = sight_zone(&sb, &ob);
+            objects.iter().any(|k| {
+                k.id != s.id
+                    && k.id != o.id
+                    && !stacked(&k.id, &s.id)
+                    && !stacked(&k.id, &o.id)
+                    && blocks_sight(&Box2::of(k), &zone)
+            })
+        })
+        .cloned()
+        .collect()
 }
 
 /// Distances from a footprint to the room's walls: [-x, +x, -y, +y] (negative: outside).

@@ -6,12 +6,12 @@
 //! seeded restarts keep the best layout. No object is ever dropped: when nothing satisfies its
 //! constraints it takes the best pose it can get and is marked `fallback`.
 use super::check::{
-    anchor_holds_in, opening_zone, penetration, relation_holds_box, wall_distances, Box2,
+    anchor_holds_in, opening_zone, penetration, relation_holds_alone, wall_distances, Box2,
     CORNER_DISTANCE, TOLERANCE,
 };
 use super::spec::{
-    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, Relation, RelationKind, Room,
-    SceneSpec, SceneType, SpecError,
+    Anchor, Instance, Layout, Opening, PlacedBy, PlacedObject, RelationKind, Room, SceneSpec,
+    SceneType, SpecError,
 };
 use rand::{Rng, SeedableRng};
 
@@ -62,6 +62,8 @@ const WALKWAY: f64 = 0.6;
 /// Weight of a thing turning toward what it relates to, against the search's seeded jitter
 /// (at most 3).
 const FACING_WEIGHT: f64 = 1.5;
+/// Weight of a pose that leaves the thing to be placed in front of it (or behind) its anchor.
+const LOOKAHEAD_WEIGHT: f64 = 6.0;
 
 /// A room that fits the instances: floor area = footprints / occupancy (aspect 5:4), never
 /// narrower than the largest object plus a walkway, height above the tallest object.
@@ -138,6 +140,12 @@ impl Problem {
     fn boxed(&self, i: usize, p: &Pose) -> Box2 {
         let s = self.inst[i].size;
         Box2::new(p.c, p.yaw, [s[0], s[1]], p.z, p.z + s[2])
+    }
+
+    /// Whether exactly one instance is `rel` of instance `o` (a coffee table alone in front of
+    /// its sofa).
+    fn alone(&self, rel: RelationKind, o: usize) -> bool {
+        self.rels[o].iter().filter(|r| r.0 == rel && !r.2).count() == 1
     }
 
     fn is_stacked(&self, a: usize, b: usize) -> bool {
@@ -296,10 +304,21 @@ impl Problem {
             }
             if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
                 // under the partner, or the support below a placed subject
-                // turned as the partner, or across it (a bridge over its pond)
+                // turned as the partner, or across it (a bridge over its pond); a thing under
+                // it may also stand off its centre, as long as its own centre stays beneath
+                // (a rug kept out of a doorway)
                 let z = if subject { 0.0 } else { (pj.z - s[2]).max(0.0) };
-                for yaw in [pj.yaw, pj.yaw + 90.0] {
-                    out.push(Pose { c: pj.c, yaw, z });
+                let shifts: &[f64] = if subject { &[0.0, -0.9, 0.9] } else { &[0.0] };
+                for &fx in shifts {
+                    for &fy in shifts {
+                        let c = [
+                            pj.c[0] + fx * bj.half[0] * bj.ex[0] + fy * bj.half[1] * bj.ey[0],
+                            pj.c[1] + fx * bj.half[0] * bj.ex[1] + fy * bj.half[1] * bj.ey[1],
+                        ];
+                        for yaw in [pj.yaw, pj.yaw + 90.0] {
+                            out.push(Pose { c, yaw, z });
+                        }
+                    }
                 }
                 continue;
             }
@@ -331,7 +350,14 @@ impl Problem {
                         ];
                         let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
                         let face = yaw_facing(to);
-                        for yaw in [face, face + 180.0, face + 90.0, face - 90.0, pj.yaw] {
+                        for yaw in [
+                            face,
+                            face + 180.0,
+                            face + 90.0,
+                            face - 90.0,
+                            pj.yaw,
+                            pj.yaw + 180.0,
+                        ] {
                             out.push(Pose { c, yaw, z: z0 });
                         }
                     }
@@ -404,12 +430,20 @@ impl Problem {
             let bj = self.boxed(j, &pj);
             total += 1;
             let holds = if subject {
-                relation_holds_box(&b, rel, &bj)
+                relation_holds_alone(&b, rel, &bj, self.alone(rel, j))
             } else {
-                relation_holds_box(&bj, rel, &b)
+                relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
             ok += holds as usize;
-            near += super::check::gap(&b, &bj).min(3.0);
+            if rel == RelationKind::Opposite {
+                // the two ends face each other, in range or not (a wall TV on the wall the
+                // sofa faces, not behind it), rather than stand close
+                let (sb, ob) = if subject { (&b, &bj) } else { (&bj, &b) };
+                pose_bonus +=
+                    2.0 * FACING_WEIGHT * super::check::facing_error(sb, ob).to_radians().cos();
+            } else {
+                near += super::check::gap(&b, &bj).min(3.0);
+            }
             if free_yaw {
                 if matches!(rel, RelationKind::Over | RelationKind::Under) {
                     // stacked things line up with their partner
@@ -422,6 +456,26 @@ impl Problem {
                     pose_bonus +=
                         FACING_WEIGHT * super::check::facing_error(&b, &bj).to_radians().cos();
                 }
+            }
+        }
+        // A thing stands where what is placed in front of or behind it can keep its own
+        // anchor (a sofa where its coffee table can stand in the middle of the room).
+        for &(rel, j, subject) in &self.rels[i] {
+            let dir = match rel {
+                RelationKind::Front => 1.0,
+                RelationKind::Behind => -1.0,
+                _ => continue,
+            };
+            if subject || placed[j].is_some() || self.inst[j].anchor == Anchor::Others {
+                continue;
+            }
+            let sj = self.inst[j].size;
+            let off = dir * (b.half[1] + compose::FRONT_GAP + 0.5 * sj[1]);
+            let c = [b.c[0] + off * b.ey[0], b.c[1] + off * b.ey[1]];
+            let bj = Box2::new(c, p.yaw, [sj[0], sj[1]], 0.0, sj[2]);
+            let anchor = self.inst[j].anchor;
+            if anchor_holds_in(&bj, anchor, self.scene, self.room, &self.openings) {
+                pose_bonus += LOOKAHEAD_WEIGHT;
             }
         }
         let comp = self.composition(i, p, &b, placed, boxes);
@@ -669,7 +723,8 @@ fn quality(prob: &Problem, l: &Layout) -> f64 {
     q - l.unsatisfied.len() as f64
 }
 
-/// Placement order: breadth-first from the most connected instance of each component (ties:
+/// Placement order: a CENTER thing that nothing relates to first (a dance floor keeps the
+/// middle), then breadth-first from the most connected instance of each component (ties:
 /// wall-anchored, then larger), OVER subjects after their support.
 fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     let n = prob.inst.len();
@@ -706,9 +761,11 @@ fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
             .iter()
             .any(|&(rel, _, subject)| subject && placed_by(rel));
         if prob.largest_first {
-            return (0, false, 0, (area * 1000.0) as u64);
+            return (false, 0, false, 0, (area * 1000.0) as u64);
         }
-        (holds, free, wall, (area * 1000.0) as u64)
+        // a thing the middle is kept for and nothing else places (a dance floor) takes it first
+        let middle = a.anchor == Anchor::Center && prob.rels[i].is_empty();
+        (middle, holds, free, wall, (area * 1000.0) as u64)
     };
     let mut done = vec![false; n];
     let mut out = vec![];
@@ -838,7 +895,7 @@ fn attempt_layout(
             }
         })
         .collect();
-    let unsatisfied = unsatisfied(&objects, &spec.relations, &prob.index);
+    let unsatisfied = super::check::relations_unsatisfied(&objects, &spec.relations);
     Layout {
         scene_type: spec.scene_type,
         room,
@@ -914,21 +971,4 @@ fn fallback_pose(
         }
     }
     best.1
-}
-
-/// The relations of `relations` that `objects` do not satisfy.
-fn unsatisfied(
-    objects: &[PlacedObject],
-    relations: &[Relation],
-    index: &BTreeMap<String, usize>,
-) -> Vec<Relation> {
-    relations
-        .iter()
-        .filter(|r| {
-            let s = &objects[index[&r.subject]];
-            let o = &objects[index[&r.object]];
-            !super::check::relation_holds(s, r.relation, o)
-        })
-        .cloned()
-        .collect()
 }

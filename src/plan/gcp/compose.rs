@@ -1,46 +1,26 @@
 //! Composition as furnishers do it, as soft terms of the search's score: the two ends of an
 //! OPPOSITE pair (a TV and its sofa) on one axis with nothing taller than 0.6 m between them;
 //! the face of a thing against a wall (a wardrobe's doors, a bookcase's shelves, a fireplace)
-//! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its side or
-//! back, not in front of its face; a thing alone on its support centred on it (at its back
+//! kept free 0.6 m deep of things not related to it; a thing NEXT to another at its sides
+//! rather than off its back, and not in front of its face; a thing alone on its support centred on it (at its back
 //! when the support stands against a wall); a thing by a
 //! window or door as close to it as it can stand; a thing in FRONT of or BEHIND another
-//! centred on its axis, between [`FRONT_LEGROOM`] and [`FRONT_REACH`] from it and square to
+//! centred on its axis, between [`FRONT_LEGROOM`] and [`FRONT_GAP`] from it and square to
 //! it; a thing over another that it is longer than (UNDER) spanning it,
 //! past both ends, and centred over what stands under it.
 use super::{Pose, Problem};
-use crate::plan::check::{gap, opening_distance, overlap_depth, Box2};
+use crate::plan::check::{
+    blocks_sight, gap, opening_distance, overlap_depth, sight_zone, Box2, SIGHTLINE_HEIGHT,
+};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind};
 
-/// Height above which a thing blocks a sightline (m).
-pub const SIGHTLINE_HEIGHT: f64 = 0.6;
 /// Depth kept free in front of a thing against a wall (m).
 pub const FACE_CLEARANCE: f64 = 0.6;
 /// The gap a thing in FRONT of or BEHIND another keeps at most without cost (m): a coffee
 /// table within reach of the sofa's seat (furnishers' 40-50 cm).
-pub const FRONT_REACH: f64 = 0.45;
+pub const FRONT_GAP: f64 = 0.45;
 /// The gap below which a thing in FRONT of another leaves no room for legs (m).
 pub const FRONT_LEGROOM: f64 = 0.3;
-
-/// Half the width of a sightline (m): the view from the middle of a sofa to a screen is a
-/// band, not a line.
-const SIGHTLINE_HALF_WIDTH: f64 = 0.35;
-
-/// Whether the band from `a` to `c` (ends excluded), [`SIGHTLINE_HALF_WIDTH`] either side of
-/// the segment, passes through `b`'s footprint.
-fn crosses(b: &Box2, a: [f64; 2], c: [f64; 2]) -> bool {
-    let d = [c[0] - a[0], c[1] - a[1]];
-    let len = d[0].hypot(d[1]).max(1e-9);
-    let n = [-d[1] / len, d[0] / len];
-    [-SIGHTLINE_HALF_WIDTH, 0.0, SIGHTLINE_HALF_WIDTH]
-        .iter()
-        .any(|&o| {
-            (1..24).any(|k| {
-                let t = k as f64 / 24.0;
-                b.contains([a[0] + t * d[0] + o * n[0], a[1] + t * d[1] + o * n[1]])
-            })
-        })
-}
 
 /// The free space in front of `b`'s face.
 fn face_zone(b: &Box2) -> Box2 {
@@ -95,8 +75,8 @@ impl Problem {
                 if a == i || c == i || self.is_stacked(i, a) || self.is_stacked(i, c) {
                     continue;
                 }
-                if let (Some(pa), Some(pc)) = (placed[a], placed[c]) {
-                    if crosses(b, pa.c, pc.c) {
+                if let (Some(ba), Some(bc)) = (boxed(a), boxed(c)) {
+                    if blocks_sight(b, &sight_zone(&ba, &bc)) {
                         score -= 12.0;
                     }
                 }
@@ -113,6 +93,7 @@ impl Problem {
                         b.local(bj.c)[0]
                     };
                     score -= 5.0 * lateral.abs().min(2.0);
+                    let zone = sight_zone(b, &bj);
                     for (k, bk) in boxes.iter().enumerate() {
                         let Some((bk, _)) = bk else { continue };
                         if k == j || bk.z1 <= SIGHTLINE_HEIGHT {
@@ -121,7 +102,7 @@ impl Problem {
                         if self.is_stacked(k, i) || self.is_stacked(k, j) {
                             continue;
                         }
-                        if crosses(bk, p.c, bj.c) {
+                        if blocks_sight(bk, &zone) {
                             score -= 12.0;
                         }
                     }
@@ -149,12 +130,12 @@ impl Problem {
                     score -= 3.0 * lateral.abs().min(2.0);
                     // and within reach of it (a coffee table about 0.45 m from its sofa)
                     let g = gap(b, &bj);
-                    score -= 4.0 * (g - FRONT_REACH).clamp(0.0, 2.5);
+                    score -= 4.0 * (g - FRONT_GAP).clamp(0.0, 2.5);
                     // with room for legs between them
                     score -= 8.0 * (FRONT_LEGROOM - g).max(0.0);
                     // and square to it (a coffee table parallel to its sofa)
                     let turn = (p.yaw - placed[j].map_or(p.yaw, |q| q.yaw)).to_radians();
-                    score -= 3.0 * (1.0 - turn.cos().abs());
+                    score -= 4.0 * turn.sin().abs();
                 }
                 RelationKind::Under => {
                     // a thing over another that it is longer than spans it with its length,
@@ -167,8 +148,15 @@ impl Problem {
                         score -= 3.0 * d.min(3.0);
                     }
                 }
-                RelationKind::Next if subject && bj.local(p.c)[1] > bj.half[1] => {
-                    score -= 3.0;
+                RelationKind::Next if subject => {
+                    // at its ends: not before its face, nor off its back (an armchair at the
+                    // end of a coffee table, not between it and the TV)
+                    let ly = bj.local(p.c)[1];
+                    if ly > bj.half[1] {
+                        score -= 3.0;
+                    } else if ly < -bj.half[1] {
+                        score -= 2.0;
+                    }
                 }
                 _ => {}
             }
