@@ -181,11 +181,8 @@ fn locked(
     }
     let (spec, layout) = plan_or_reuse(text, a, keep)?;
     eprintln!(
-        "plan: {} objects in {:.1} x {:.1} x {:.1} m{}",
-        layout.objects.len(),
-        layout.room.size[0],
-        layout.room.size[1],
-        layout.room.size[2],
+        "{}{}",
+        plan_line(&layout),
         super::plan::unsatisfied_note(&layout)
     );
     let report = write_draft_scene(out, text, a.seed, &spec, &layout, keep, &mut |l| {
@@ -223,6 +220,15 @@ fn locked(
         d = out.display(),
     );
     Ok(())
+}
+
+/// The line that says what was planned: `plan: N objects in W x D x H m`.
+pub(super) fn plan_line(layout: &Layout) -> String {
+    let [w, d, h] = layout.room.size;
+    format!(
+        "plan: {} objects in {w:.1} x {d:.1} x {h:.1} m",
+        layout.objects.len()
+    )
 }
 
 /// Whether `a` makes a draft (shape priors, no optimisation), given the models found.

@@ -1,7 +1,7 @@
 //! Full generation with the `sd` or `oracle:DIR` prior (`generate` and `generate --stage`):
 //! the device, plan, priors and settings, then the object and environment stages and the scene
 //! files.
-use super::generate::{plan_or_reuse, GenerateArgs};
+use super::generate::{plan_line, plan_or_reuse, GenerateArgs};
 use super::object::PriorChoice;
 use super::scene_renders::render_chosen;
 use anyhow::{Context as _, Result};
@@ -73,14 +73,7 @@ pub(super) fn full_setup(
         },
         ..SceneConfig::default()
     };
-    eprintln!(
-        "plan: {} objects in {:.1} x {:.1} x {:.1} m; prior {}",
-        layout.objects.len(),
-        layout.room.size[0],
-        layout.room.size[1],
-        layout.room.size[2],
-        priors.kind()
-    );
+    eprintln!("{}; prior {}", plan_line(&layout), priors.kind());
     Ok(Full {
         ctx,
         spec,

@@ -6,8 +6,8 @@
 //! oracle priors in [`super::stage_prior`]. Also the timed stages that `batch` runs for each
 //! draft scene.
 use super::generate::{draft_mode, plan_or_reuse, GenerateArgs};
-use super::scene_renders::render_chosen;
 use super::object::models_dir;
+use super::scene_renders::render_chosen;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::batch::index::StageTime;
 use dreamscene::batch::shard::{self, Shard};
