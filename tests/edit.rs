@@ -20,7 +20,6 @@ use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::{Layout, RelationKind, SceneSpec};
 use dreamscene::scene::compose::merge;
 use dreamscene::scene::dir::{compose_scene, light_draft, read_scene};
-use dreamscene::splat::cloud::SH_C0;
 use dreamscene::splat::loss::psnr;
 use dreamscene::splat::ply::{read_ply, write_ply};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
@@ -564,24 +563,12 @@ fn labels_and_labels_json_follow_add_move_remove_and_undo() {
     assert!(snapshot(&d) == before, "undo brought back other files");
 }
 
-/// Recolours a cloud: `f(position, colour) -> colour`.
-fn recolour(g: &mut Gaussians, f: impl Fn([f32; 3], [f32; 3]) -> [f32; 3]) {
-    let k3 = g.coeffs() * 3;
-    for i in 0..g.len() {
-        let c: [f32; 3] = std::array::from_fn(|ch| 0.5 + SH_C0 as f32 * g.sh[i * k3 + ch]);
-        let n = f(g.means[i], c);
-        for (ch, v) in n.iter().enumerate() {
-            g.sh[i * k3 + ch] = (v - 0.5) / SH_C0 as f32;
-        }
-    }
-}
-
 /// The reference scene of the oracle tests: the draft with a checkered room.
 fn reference(name: &str) -> (PathBuf, Layout) {
     let (d, l) = draft(name);
     let env = d.join("environment.ply");
     let mut g = read_ply(&env).unwrap();
-    recolour(&mut g, |p, _| {
+    common::recolour(&mut g, |p, _| {
         let cell = (p[0] / 0.5).floor() + (p[1] / 0.5).floor() + (p[2] / 0.5).floor();
         if cell.rem_euclid(2.0) < 1.0 {
             [0.8, 0.3, 0.1]
@@ -647,7 +634,7 @@ fn oracle_remove_reoptimises_the_floor_where_the_object_stood() {
         half: [foot.half[0] + 0.05, foot.half[1] + 0.05],
         ..foot
     };
-    recolour(&mut env, |p, c| {
+    common::recolour(&mut env, |p, c| {
         if p[2] < 0.05 && grown.contains([p[0] as f64, p[1] as f64]) {
             [0.05, 0.05, 0.05]
         } else {
@@ -725,7 +712,7 @@ fn oracle_restyle_moves_the_object_to_the_second_reference_and_freezes_the_rest(
     let obj_path = d.join("objects/nightstand.ply");
     let first = read_ply(&obj_path).unwrap();
     let mut second = first.clone();
-    recolour(&mut second, |p, _| {
+    common::recolour(&mut second, |p, _| {
         if p[2] > 0.3 {
             [0.1, 0.3, 0.9]
         } else {

@@ -12,7 +12,6 @@ use dreamscene::generate::scene::write_draft_scene;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::{Layout, SceneSpec};
 use dreamscene::scene::dir::{compose_scene, read_scene};
-use dreamscene::splat::cloud::SH_C0;
 use dreamscene::splat::loss::psnr;
 use dreamscene::splat::ply::{read_ply, write_ply};
 use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
@@ -42,18 +41,6 @@ fn spec() -> SceneSpec {
     .unwrap()
 }
 
-/// Recolours a cloud: `f(position, colour) -> colour`.
-fn recolour(g: &mut Gaussians, f: impl Fn([f32; 3], [f32; 3]) -> [f32; 3]) {
-    let k3 = g.coeffs() * 3;
-    for i in 0..g.len() {
-        let c: [f32; 3] = std::array::from_fn(|ch| 0.5 + SH_C0 as f32 * g.sh[i * k3 + ch]);
-        let n = f(g.means[i], c);
-        for (ch, v) in n.iter().enumerate() {
-            g.sh[i * k3 + ch] = (v - 0.5) / SH_C0 as f32;
-        }
-    }
-}
-
 /// The reference: the draft of `spec()`, its room recoloured as a two-colour checkerboard and
 /// its objects with their colour channels rotated, so a run from the draft must learn both.
 fn reference(dir: &Path) -> Layout {
@@ -65,7 +52,7 @@ fn reference(dir: &Path) -> Layout {
     write_draft_scene(dir, PROMPT, 0, &spec, &l, false, &mut |_| {}).unwrap();
     let env = dir.join("environment.ply");
     let mut g = read_ply(&env).unwrap();
-    recolour(&mut g, |p, _| {
+    common::recolour(&mut g, |p, _| {
         let cell = (p[0] / 0.6).floor() + (p[1] / 0.6).floor() + (p[2] / 0.6).floor();
         if cell.rem_euclid(2.0) < 1.0 {
             [0.8, 0.25, 0.1]
@@ -77,45 +64,85 @@ fn reference(dir: &Path) -> Layout {
     for cat in ["bed", "nightstand"] {
         let p = dir.join(format!("objects/{cat}.ply"));
         let mut g = read_ply(&p).unwrap();
-        recolour(&mut g, |_, c| [c[2], c[0], c[1]]);
+        common::recolour(&mut g, |_, c| [c[2], c[0], c[1]]);
         write_ply(&p, &g).unwrap();
     }
     l
 }
 
-/// The oracle run; `quick` is the mechanics-only size (64², a few iterations) of the resume test.
-fn generate(refdir: &Path, out: &Path, quick: bool, extra: &[&str]) -> Command {
-    let (iterations, passes, res) = if quick {
-        ("40", "1", "64")
-    } else {
-        ("200", "8", "128")
+/// The reference directory, made once and shared (read-only) by every test of this file.
+fn shared_reference() -> &'static (PathBuf, Layout) {
+    static REF: std::sync::OnceLock<(PathBuf, Layout)> = std::sync::OnceLock::new();
+    REF.get_or_init(|| {
+        let dir = tmp("ref");
+        let l = reference(&dir);
+        (dir, l)
+    })
+}
+
+/// The reference with every eighth Gaussian of each cloud, for the mechanics-only runs (resume,
+/// shards): the oracle renders its reference for every view of every step, which costs more
+/// than the small runs themselves.
+fn sparse_reference() -> &'static Path {
+    static REF: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    REF.get_or_init(|| {
+        let (full, _) = shared_reference();
+        let dir = tmp("sparse");
+        std::fs::create_dir_all(dir.join("objects")).unwrap();
+        for f in ["spec.json", "layout.json", "scene.json"] {
+            std::fs::copy(full.join(f), dir.join(f)).unwrap();
+        }
+        for f in [
+            "environment.ply",
+            "objects/bed.ply",
+            "objects/nightstand.ply",
+        ] {
+            let g = read_ply(&full.join(f)).unwrap();
+            let keep: Vec<bool> = (0..g.len()).map(|i| i % 8 == 0).collect();
+            write_ply(
+                &dir.join(f),
+                &dreamscene::generate::object::subset(&g, &keep),
+            )
+            .unwrap();
+        }
+        dir
+    })
+}
+
+/// How big an oracle run is.
+#[derive(Clone, Copy)]
+enum Size {
+    /// What the held-out check needs.
+    Full,
+    /// Mechanics only (32², a few iterations, small clouds), with enough environment
+    /// iterations that the run is still going when stage 1 ends (the resume test).
+    Quick,
+    /// The smallest run that still runs every stage (mechanics only).
+    Tiny,
+}
+
+/// The oracle run of `PROMPT` against `refdir` into `out`.
+fn generate(refdir: &Path, out: &Path, size: Size, extra: &[&str]) -> Command {
+    // iterations, object iterations, object and scene reconstruction passes, resolution,
+    // Gaussians of each object, environment density.
+    let sizes: [&str; 7] = match size {
+        Size::Full => ["200", "20", "4", "8", "128", "4000", "400"],
+        Size::Quick => ["12", "4", "1", "1", "32", "400", "40"],
+        Size::Tiny => ["4", "2", "1", "1", "32", "400", "40"],
     };
+    let [iterations, object_iterations, object_passes, passes, res, gaussians, density] = sizes;
     let mut c = Command::new(env!("CARGO_BIN_EXE_dreamscene"));
-    c.env_remove("DREAMSCENE_MODELS").args([
-        "generate",
-        PROMPT,
-        "--out",
-        out.to_str().unwrap(),
-        "--prior",
-        &format!("oracle:{}", refdir.display()),
-        "--iterations",
-        iterations,
-        "--object-iterations",
-        "20",
-        "--object-recon-passes",
-        "4",
-        "--recon-passes",
-        passes,
-        "--resolution",
-        res,
-        "--renders",
-        "0",
-        "--object-gaussians",
-        "4000",
-        "--env-density",
-        "400",
-    ]);
-    c.args(extra);
+    c.env_remove("DREAMSCENE_MODELS")
+        .args(["generate", PROMPT, "--out"])
+        .arg(out)
+        .args(["--prior", &format!("oracle:{}", refdir.display())])
+        .args(["--iterations", iterations])
+        .args(["--object-iterations", object_iterations])
+        .args(["--object-recon-passes", object_passes])
+        .args(["--recon-passes", passes])
+        .args(["--resolution", res, "--renders", "0"])
+        .args(["--object-gaussians", gaussians, "--env-density", density])
+        .args(extra);
     c
 }
 
@@ -151,55 +178,38 @@ fn held_out(ctx: &dreamscene::gpu::Context, dir: &Path, refdir: &Path, l: &Layou
 #[test]
 fn oracle_scene_is_regenerated_from_its_own_layout() {
     let ctx = common::gpu();
-    let refdir = tmp("ref");
-    let l = reference(&refdir);
+    let (refdir, l) = shared_reference();
+    let refdir = refdir.as_path();
     // The starting point: the draft of the same prompt (draft colours, channel order).
     let draft = tmp("draft");
     std::fs::create_dir_all(&draft).unwrap();
-    write_draft_scene(&draft, PROMPT, 0, &spec(), &l, false, &mut |_| {}).unwrap();
-    let before = held_out(&ctx, &draft, &refdir, &l);
+    write_draft_scene(&draft, PROMPT, 0, &spec(), l, false, &mut |_| {}).unwrap();
+    let before = held_out(&ctx, &draft, refdir, l);
 
     let out = tmp("regen");
-    let o = generate(&refdir, &out, false, &[]).output().unwrap();
+    let o = generate(refdir, &out, Size::Full, &[]).output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     let scene = read_scene(&out).unwrap();
     assert_eq!(scene.prior.kind, "oracle");
     assert!(scene.stages.iter().all(|s| s.done));
-    let after = held_out(&ctx, &out, &refdir, &l);
+    let after = held_out(&ctx, &out, refdir, l);
     println!("oracle scene: held-out PSNR {before:.2} -> {after:.2} dB");
     assert!(after >= 22.0, "held-out {after:.2} dB (from {before:.2})");
 }
 
 #[test]
 fn scene_generation_killed_mid_stage_resumes() {
-    let refdir = tmp("ref2");
-    reference(&refdir);
+    let refdir = sparse_reference();
     let out = tmp("cut");
-    let mut child = generate(&refdir, &out, true, &["--seed", "1"])
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let run_json = out.join("checkpoints/scene_run.json");
-    let t0 = std::time::Instant::now();
-    loop {
-        if let Ok(text) = std::fs::read_to_string(&run_json) {
-            let j: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
-            if j["stages_done"].as_u64().unwrap_or(0) >= 1 {
-                break;
-            }
-        }
-        assert!(
-            child.try_wait().unwrap().is_none(),
-            "finished before the kill"
-        );
-        assert!(t0.elapsed().as_secs() < 900, "no stage finished");
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    child.kill().unwrap();
-    child.wait().unwrap();
+    common::kill_when(
+        &mut generate(refdir, &out, Size::Quick, &["--seed", "1"]),
+        &out.join("checkpoints/scene_run.json"),
+        |j| j["stages_done"].as_u64().unwrap_or(0) >= 1,
+        900,
+    );
     assert!(!out.join("scene.json").exists());
-    let o = generate(&refdir, &out, true, &["--seed", "1", "--resume"])
+    let o = generate(refdir, &out, Size::Quick, &["--seed", "1", "--resume"])
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
@@ -208,35 +218,15 @@ fn scene_generation_killed_mid_stage_resumes() {
     assert!(!err.contains("stage 1 done"), "stage 1 ran again: {err}");
     assert!(read_scene(&out).unwrap().stages.iter().all(|s| s.done));
     // Another seed is refused with the reason.
-    let o = generate(&refdir, &out, true, &["--seed", "2", "--resume"])
+    let o = generate(refdir, &out, Size::Quick, &["--seed", "2", "--resume"])
         .output()
         .unwrap();
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("seed"));
 }
 
-/// The oracle run at the smallest size that still runs every stage (mechanics only).
 fn tiny(refdir: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-        .env_remove("DREAMSCENE_MODELS")
-        .args(["generate", PROMPT, "--out"])
-        .arg(out)
-        .args(["--prior", &format!("oracle:{}", refdir.display())])
-        .args(["--iterations", "12", "--object-iterations", "6"])
-        .args(["--object-recon-passes", "1", "--recon-passes", "1"])
-        .args([
-            "--resolution",
-            "64",
-            "--renders",
-            "0",
-            "--object-gaussians",
-            "1500",
-        ])
-        .args(["--env-density", "150"])
-        .args(extra)
-        .output()
-        .unwrap();
-    o
+    generate(refdir, out, Size::Tiny, extra).output().unwrap()
 }
 
 fn ok(o: &std::process::Output) -> String {
@@ -263,20 +253,16 @@ fn max_diff(a: &Gaussians, b: &Gaussians) -> f32 {
         .fold(0.0, f32::max)
 }
 
-/// Slow (about 3 minutes on 2 cores: a whole oracle run and the same run split), so left out of
-/// the default suite: `cargo test --release --test generate_scene -- --ignored`.
 #[test]
-#[ignore = "slow: a whole oracle run twice; run with --ignored"]
 fn oracle_object_shards_then_the_scene_step_equal_one_run() {
-    let refdir = tmp("ref3");
-    reference(&refdir);
+    let refdir = sparse_reference();
     let one = tmp("one");
-    ok(&tiny(&refdir, &one, &[]));
+    ok(&tiny(refdir, &one, &[]));
     // Two object shards (each its own state file), the scene step in between refused while
     // shard 1 has not run, naming its object.
     let split = tmp("split");
     let s0 = ok(&tiny(
-        &refdir,
+        refdir,
         &split,
         &["--stage", "objects", "--shard", "0/2"],
     ));
@@ -284,7 +270,7 @@ fn oracle_object_shards_then_the_scene_step_equal_one_run() {
         split.join("checkpoints/objects_run_0of2.json").is_file(),
         "{s0}"
     );
-    let o = tiny(&refdir, &split, &["--stage", "scene"]);
+    let o = tiny(refdir, &split, &["--stage", "scene"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success());
     let last = err.trim().lines().last().unwrap_or("");
@@ -294,12 +280,12 @@ fn oracle_object_shards_then_the_scene_step_equal_one_run() {
     );
     assert_eq!(err.matches("error").count(), 1, "{err}");
     ok(&tiny(
-        &refdir,
+        refdir,
         &split,
         &["--stage", "objects", "--shard", "1/2"],
     ));
     assert!(split.join("checkpoints/objects_run_1of2.json").is_file());
-    let s = ok(&tiny(&refdir, &split, &["--stage", "scene"]));
+    let s = ok(&tiny(refdir, &split, &["--stage", "scene"]));
     assert!(s.contains("done before, kept"), "{s}");
     assert!(
         !s.contains("generating"),
@@ -337,7 +323,7 @@ fn oracle_object_shards_then_the_scene_step_equal_one_run() {
             .fold(0.0, f32::max);
         assert!(m <= 1e-3, "{f}: a centre moved {m} m");
     }
-    for d in [refdir, one, split] {
+    for d in [one, split] {
         std::fs::remove_dir_all(d).ok();
     }
 }

@@ -39,7 +39,8 @@ pub struct Summary {
     pub failed: usize,
     /// Found finished already.
     pub skipped: usize,
-    /// Held by another writer.
+    /// Held by another writer, or failed under another worker since this one began (left for
+    /// the next run, so a scene that fails is not tried again by every worker of the run).
     pub busy: usize,
     /// Left because a stop was requested.
     pub left: usize,
@@ -50,6 +51,13 @@ fn now() -> f64 {
     SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0.0, |d| d.as_secs_f64())
+}
+
+/// Whether scene `id` failed at or after `began` (under a worker running beside this one).
+fn failed_since(ix: &index::Index, id: &str, began: f64) -> bool {
+    ix.scenes
+        .iter()
+        .any(|r| r.id == id && r.status == Status::Failed && r.finished.is_some_and(|f| f >= began))
 }
 
 /// Runs the worker over `entries`. `run_scene(entry, scene_dir)` makes one scene (it is called
@@ -78,6 +86,8 @@ pub fn run(
         mine: mine.len(),
         ..Summary::default()
     };
+    // A scene that failed after this moment was tried by a worker running beside this one.
+    let began = now();
     let who = match opts.shard {
         Some(s) => format!("{}, shard {s}", opts.name),
         None => opts.name.clone(),
@@ -111,9 +121,19 @@ pub fn run(
                 }
                 Err(LockError::Io { path, msg }) => return Err(BatchError::Io { path, msg }),
             };
-        // Another worker may have finished it between the read above and the claim.
-        if index::read(&opts.out)?.status(&e.id) == Status::Done {
+        // Another worker may have finished it, or tried it and failed, between the read above
+        // and the claim.
+        let ix = index::read(&opts.out)?;
+        if ix.status(&e.id) == Status::Done {
             sum.skipped += 1;
+            continue;
+        }
+        if failed_since(&ix, &e.id, began) {
+            log(&format!(
+                "{}: failed under another worker of this run; left for the next run",
+                e.id
+            ));
+            sum.busy += 1;
             continue;
         }
         let started = now();
@@ -193,10 +213,13 @@ mod tests {
         let text: String = (0..24).map(|i| format!("room {i}\n")).collect();
         let entries = manifest::parse(&text, false).unwrap();
         let calls = std::sync::Mutex::new(Vec::<String>::new());
+        // Threads that have run a scene (so they began before the bad scene fails).
+        let started = std::sync::Mutex::new(std::collections::HashSet::new());
         let never = AtomicBool::new(false);
         std::thread::scope(|s| {
             for w in 0..3 {
-                let (out, entries, calls, never) = (&out, &entries, &calls, &never);
+                let (out, entries, calls, never, started) =
+                    (&out, &entries, &calls, &never, &started);
                 s.spawn(move || {
                     let opts = WorkerOptions {
                         out: out.clone(),
@@ -209,9 +232,21 @@ mod tests {
                         never,
                         &mut |e, dir| {
                             calls.lock().unwrap().push(e.id.clone());
-                            std::thread::sleep(std::time::Duration::from_millis(5));
+                            // Thread 0's first scene is slow, so it is behind when the bad
+                            // scene fails and reaches that scene afterwards.
+                            let first = started.lock().unwrap().insert(w);
+                            let ms = if w == 0 && first { 200 } else { 5 };
+                            std::thread::sleep(std::time::Duration::from_millis(ms));
                             std::fs::write(dir.join("scene.txt"), &e.prompt).unwrap();
                             if e.id == "0007" {
+                                // A thread that began after the failure would rightly retry
+                                // it (a later run); wait (a while at most) until all began.
+                                let t = std::time::Instant::now();
+                                while started.lock().unwrap().len() < 3
+                                    && t.elapsed().as_secs() < 10
+                                {
+                                    std::thread::sleep(std::time::Duration::from_millis(2));
+                                }
                                 return Err("bad prompt".into());
                             }
                             Ok(Outcome::default())
@@ -233,8 +268,9 @@ mod tests {
         let failed = ix.scenes.iter().find(|r| r.id == "0007").unwrap();
         assert_eq!(failed.error.as_deref(), Some("bad prompt"));
         let c = index::Counts::of(&ix, &|_| false);
-        // A scene skipped as busy by one thread was run by the thread that held it, so every
-        // scene ran exactly once.
+        // A scene skipped as busy by one thread was run by the thread that held it, and the
+        // scene that failed was not tried again by the threads behind it, so every scene ran
+        // exactly once.
         assert_eq!((c.done, c.failed, c.left, calls.len()), (23, 1, 0, 24));
 
         // A rerun does only the failed scene; a stop before it leaves it.

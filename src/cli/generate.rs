@@ -1,18 +1,17 @@
-//! `dreamscene generate`: a scene directory from a sentence. This build makes the draft (shape
-//! priors, initial environment, composition, renders chosen by what they show); the optimising
-//! scene stages are refused with a one-line reason.
+//! `dreamscene generate`: a scene directory from a sentence. Here: the arguments, the scene lock
+//! and what `--resume` and `--force` find in `--out`, and the draft (shape priors, initial
+//! environment, composition); full generation with the sd or oracle prior is in
+//! [`super::generate_full`], the renders in [`super::scene_renders`].
+use super::generate_full::{full, full_setup};
 use super::object::{models_dir, PriorChoice, NO_MODELS};
+use super::scene_renders::{complete_renders, render_chosen};
 use anyhow::{bail, Context as _, Result};
-use dreamscene::camera::scene::{render_views, SceneBox};
-use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::diffusion::runtime::Provider;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
 use dreamscene::plan::spec::{Layout, SceneSpec};
 use dreamscene::scene::dir::read_scene;
 use dreamscene::scene::lock::{CommitGuard, SceneLock, Wait};
-use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
-use dreamscene::splat::Gaussians;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -51,9 +50,6 @@ pub fn parse_scene_prior(s: &str) -> Result<PriorChoice, String> {
     super::object::parse_prior(s)
         .map_err(|_| format!("'{s}': expected auto, sd, shape or oracle:DIR (a scene directory)"))
 }
-
-/// The background of the renders: the environment encloses the views, so it barely shows.
-const BACKGROUND: [f32; 3] = [0.0; 3];
 
 pub fn run_with(a: GenerateArgs) -> Result<()> {
     let start = Instant::now();
@@ -185,11 +181,8 @@ fn locked(
     }
     let (spec, layout) = plan_or_reuse(text, a, keep)?;
     eprintln!(
-        "plan: {} objects in {:.1} x {:.1} x {:.1} m{}",
-        layout.objects.len(),
-        layout.room.size[0],
-        layout.room.size[1],
-        layout.room.size[2],
+        "{}{}",
+        plan_line(&layout),
         super::plan::unsatisfied_note(&layout)
     );
     let report = write_draft_scene(out, text, a.seed, &spec, &layout, keep, &mut |l| {
@@ -227,6 +220,15 @@ fn locked(
         d = out.display(),
     );
     Ok(())
+}
+
+/// The line that says what was planned: `plan: N objects in W x D x H m`.
+pub(super) fn plan_line(layout: &Layout) -> String {
+    let [w, d, h] = layout.room.size;
+    format!(
+        "plan: {} objects in {w:.1} x {d:.1} x {h:.1} m",
+        layout.objects.len()
+    )
 }
 
 /// Whether `a` makes a draft (shape priors, no optimisation), given the models found.
@@ -270,159 +272,6 @@ fn check_full(a: &GenerateArgs, models: Option<&Path>) -> Result<()> {
     Ok(())
 }
 
-/// What a generation with the `sd` or `oracle:DIR` prior runs with.
-pub(super) struct Full {
-    pub ctx: dreamscene::gpu::Context,
-    pub spec: SceneSpec,
-    pub layout: Layout,
-    pub priors: Box<dyn dreamscene::generate::scene_stages::ScenePriors>,
-    pub cfg: dreamscene::generate::scene_stages::SceneConfig,
-}
-
-/// The device, plan (reused from --out with `resume`, and always for the oracle, whose plan is
-/// its reference's), priors and settings of a generation with the `sd` or `oracle:DIR` prior.
-pub(super) fn full_setup(
-    a: &GenerateArgs,
-    text: &str,
-    models: Option<&Path>,
-    resume: bool,
-) -> Result<Full> {
-    use dreamscene::generate::object::ObjectConfig;
-    use dreamscene::generate::scene_stages::{
-        OracleScenePriors, SceneConfig, ScenePriors, SdScenePriors,
-    };
-    let out = &a.out;
-    let ctx = super::open_device()?;
-    // The oracle regenerates its reference scene from the reference's own plan and layout.
-    if let PriorChoice::Oracle(dir) = &a.prior {
-        for f in ["spec.json", "layout.json"] {
-            let (from, to) = (dir.join(f), out.join(f));
-            if !(resume && to.is_file()) {
-                std::fs::copy(&from, &to).with_context(|| {
-                    format!("the oracle's reference scene: copying {}", from.display())
-                })?;
-            }
-        }
-    }
-    let resume_plan = resume || matches!(a.prior, PriorChoice::Oracle(_));
-    let (spec, layout) = plan_or_reuse(text, a, resume_plan)?;
-    let priors: Box<dyn ScenePriors> = match &a.prior {
-        PriorChoice::Oracle(dir) => Box::new(OracleScenePriors::new(&ctx, dir)),
-        _ => {
-            let dir = models.expect("checked by the caller");
-            let sd = dreamscene::generate::prior_spec::open_sd(dir, a.provider, text, None)?;
-            Box::new(SdScenePriors(sd))
-        }
-    };
-    let cfg = SceneConfig {
-        iterations: a.iterations,
-        object: ObjectConfig {
-            iterations: a.object_iterations,
-            resolution: a.resolution,
-            sh_degree: 1,
-            seed: a.seed,
-            recon_passes: a.object_recon_passes,
-            ..ObjectConfig::default()
-        },
-        resolution: a.resolution,
-        recon_passes: a.recon_passes,
-        seed: a.seed,
-        object_gaussians: a.object_gaussians,
-        env: dreamscene::scene::env::EnvOptions {
-            density: a.env_density,
-            ..Default::default()
-        },
-        ..SceneConfig::default()
-    };
-    eprintln!(
-        "plan: {} objects in {:.1} x {:.1} x {:.1} m; prior {}",
-        layout.objects.len(),
-        layout.room.size[0],
-        layout.room.size[1],
-        layout.room.size[2],
-        priors.kind()
-    );
-    Ok(Full {
-        ctx,
-        spec,
-        layout,
-        priors,
-        cfg,
-    })
-}
-
-/// Full generation with the `sd` or `oracle:DIR` prior: objects by Formation Pattern Sampling
-/// (with `resume`, those already finished, by an earlier run or by `--stage objects` shards,
-/// are kept), the three environment stages, then scene.json, scene.ply and the renders.
-pub(super) fn full(
-    a: &GenerateArgs,
-    text: &str,
-    models: Option<&Path>,
-    start: Instant,
-    resume: bool,
-    setup: Full,
-) -> Result<()> {
-    let out = &a.out;
-    let Full {
-        ctx,
-        spec,
-        layout,
-        mut priors,
-        cfg,
-    } = setup;
-    let report = dreamscene::generate::scene_stages::generate_scene(
-        &ctx,
-        out,
-        text,
-        &spec,
-        &layout,
-        priors.as_mut(),
-        &cfg,
-        resume,
-        &mut |l| eprintln!("{l}"),
-    )?;
-    let mut scene = dreamscene::generate::scene::scene_file(
-        text,
-        a.seed,
-        &spec,
-        &layout,
-        match &a.prior {
-            PriorChoice::Oracle(_) => a.prior.record(None),
-            _ => PriorChoice::Sd.record(models),
-        },
-    );
-    for name in ["floor", "reconstruction"] {
-        scene.stages.push(dreamscene::scene::dir::Stage {
-            name: name.into(),
-            done: true,
-        });
-    }
-    // scene.ply carries instance_id and semantic_id; labels.json names them.
-    let composed = dreamscene::export::labels::write_labelled_scene(out, &scene)?;
-    dreamscene::scene::dir::write_scene(out, &scene)?;
-    if a.renders > 0 {
-        render_chosen(
-            &composed,
-            &layout,
-            a.renders,
-            a.resolution,
-            &out.join("renders"),
-        )?;
-    }
-    println!(
-        "scene: {} objects ({} categories), {} Gaussians ({} environment); objects {:.0} s, environment stages {:.0} s, {:.0} s in all; wrote {}",
-        layout.objects.len(),
-        report.objects.len(),
-        composed.len(),
-        report.environment,
-        report.seconds[0],
-        report.seconds[1],
-        start.elapsed().as_secs_f64(),
-        out.join("scene.json").display()
-    );
-    Ok(())
-}
-
 /// The spec and layout: re-read from `out` when resuming and both are there (an LLM plan is
 /// not asked again), else planned afresh.
 pub(super) fn plan_or_reuse(
@@ -437,88 +286,6 @@ pub(super) fn plan_or_reuse(
         return Ok((spec, layout));
     }
     super::plan::plan_to_dir(text, a.llm.as_ref(), a.seed, &a.out)
-}
-
-/// Renders the views `renders/cameras.json` lists that are not there, and the contact sheet
-/// when it is missing (all of them, chosen by what they show, when cameras.json itself is
-/// missing and views were asked for) from `scene.ply`. Says what it rendered, if anything.
-fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<Option<String>> {
-    let dir = out.join("renders");
-    let cams_path = dir.join("cameras.json");
-    if !cams_path.is_file() {
-        if a.renders == 0 {
-            return Ok(None);
-        }
-        let layout = Layout::read(&out.join("layout.json"))?;
-        let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_chosen(&g, &layout, a.renders, a.resolution, &dir)?;
-        return Ok(Some(format!("the {} views", a.renders)));
-    }
-    let cams = dreamscene::camera::read_cameras(&cams_path)?;
-    let view = |c: &Camera| dir.join(format!("{}.png", c.img_name));
-    let missing = cams.iter().filter(|c| !view(c).is_file()).count();
-    let sheet_missing = !dir.join(SHEET).is_file();
-    if missing == 0 && !sheet_missing {
-        return Ok(None);
-    }
-    // Every view is rendered again (deterministic) so the sheet is the one a whole run makes;
-    // the views already there are kept as they are.
-    let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-    render_views_to(&g, &cams, &dir, |c| !view(c).is_file())?;
-    let mut said = vec![];
-    if missing > 0 {
-        said.push(format!("the {missing} missing views"));
-    }
-    if sheet_missing {
-        said.push(format!("renders/{SHEET}"));
-    }
-    Ok(Some(said.join(" and ")))
-}
-
-/// The contact sheet of the views in `renders/`.
-const SHEET: &str = "overview.png";
-
-/// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
-/// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
-pub(super) fn render_chosen(
-    g: &Gaussians,
-    layout: &Layout,
-    count: usize,
-    res: u32,
-    dir: &Path,
-) -> Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
-    write_cameras(&dir.join("cameras.json"), &cams)
-        .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
-    render_views_to(g, &cams, dir, |_| true)
-}
-
-/// Renders `cams` of `g`, writes the views `write` picks into `dir` and the contact sheet of all
-/// of them (written last: a run killed before it is not complete).
-fn render_views_to(
-    g: &Gaussians,
-    cams: &[Camera],
-    dir: &Path,
-    write: impl Fn(&Camera) -> bool,
-) -> Result<()> {
-    let ctx = super::open_device()?;
-    let r = Rasterizer::new(&ctx)?;
-    let gg = GpuGaussians::upload(&ctx, g)?;
-    let mut shots = vec![];
-    for cam in cams {
-        let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
-        if write(cam) {
-            super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
-        }
-        shots.push(img);
-    }
-    let tiles: Vec<_> = shots
-        .iter()
-        .map(|i| (i.width, i.height, i.color.as_slice()))
-        .collect();
-    let sheet = dreamscene::util::contact_sheet(&tiles, 4, 256);
-    super::write_png(&sheet, &dir.join(SHEET))
 }
 
 fn positive_density(s: &str) -> Result<f64, String> {

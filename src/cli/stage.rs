@@ -5,8 +5,9 @@
 //! scene.json and the renders exactly as a single `generate` does. Drafts here; the sd and
 //! oracle priors in [`super::stage_prior`]. Also the timed stages that `batch` runs for each
 //! draft scene.
-use super::generate::{draft_mode, plan_or_reuse, render_chosen, GenerateArgs};
+use super::generate::{draft_mode, plan_or_reuse, GenerateArgs};
 use super::object::models_dir;
+use super::scene_renders::render_chosen;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::batch::index::StageTime;
 use dreamscene::batch::shard::{self, Shard};

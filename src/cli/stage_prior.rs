@@ -3,7 +3,8 @@
 //! its own state file in `checkpoints/`; the scene stage merges every shard's state, names any
 //! object still missing, and otherwise runs the environment stages, scene.ply, scene.json and
 //! the renders as a single `generate` would, keeping the shards' objects.
-use super::generate::{full, full_setup, GenerateArgs};
+use super::generate::GenerateArgs;
+use super::generate_full::{full, full_setup};
 use super::stage::Stage;
 use anyhow::{bail, Result};
 use dreamscene::batch::shard::{self, Shard};
@@ -80,7 +81,7 @@ pub fn run(
 
 /// The categories no shard of this run (nor an earlier scene step) finished, or whose PLY is
 /// gone.
-fn missing(out: &Path, f: &super::generate::Full, text: &str) -> Vec<String> {
+fn missing(out: &Path, f: &super::generate_full::Full, text: &str) -> Vec<String> {
     let ck = out.join("checkpoints");
     let fp = f.cfg.fingerprint(text, &f.priors.kind());
     let mut done = done_by_shards(&ck, &fp);

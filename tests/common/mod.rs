@@ -95,3 +95,48 @@ pub fn two_clusters(path: &std::path::Path, n: usize, sigma: f32, seed: u64) {
     }
     dreamscene::splat::ply::write_ply(path, &g).unwrap();
 }
+
+/// Recolours a cloud of degree-0 colour: `f(position, colour) -> colour`.
+pub fn recolour(g: &mut dreamscene::splat::Gaussians, f: impl Fn([f32; 3], [f32; 3]) -> [f32; 3]) {
+    use dreamscene::splat::cloud::SH_C0;
+    let k3 = g.coeffs() * 3;
+    for i in 0..g.len() {
+        let c: [f32; 3] = std::array::from_fn(|ch| 0.5 + SH_C0 as f32 * g.sh[i * k3 + ch]);
+        let n = f(g.means[i], c);
+        for (ch, v) in n.iter().enumerate() {
+            g.sh[i * k3 + ch] = (v - 0.5) / SH_C0 as f32;
+        }
+    }
+}
+
+/// Starts `cmd` (stderr dropped) and SIGKILLs it as soon as the JSON file `state` satisfies
+/// `reached`; fails if the run ends first or nothing is reached within `limit_s` seconds.
+pub fn kill_when(
+    cmd: &mut std::process::Command,
+    state: &std::path::Path,
+    reached: impl Fn(&serde_json::Value) -> bool,
+    limit_s: u64,
+) {
+    let mut child = cmd.stderr(std::process::Stdio::null()).spawn().unwrap();
+    let t0 = std::time::Instant::now();
+    loop {
+        if let Ok(text) = std::fs::read_to_string(state) {
+            let j: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
+            if reached(&j) {
+                break;
+            }
+        }
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "finished before the kill"
+        );
+        assert!(
+            t0.elapsed().as_secs() < limit_s,
+            "{} reached nothing in {limit_s} s",
+            state.display()
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+}
