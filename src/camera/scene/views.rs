@@ -19,6 +19,10 @@ const FLAT: f64 = 0.05;
 const MAX_PITCH_DEG: f64 = 14.0;
 /// Spacing of the candidate positions along the walls (metres).
 const STEP: f64 = 0.25;
+/// An object in the frame nearer than this (horizontal metres from the camera to its footprint)
+/// is foreground: a lampshade or chair back at that distance hides the room behind it, so a view
+/// loses score the nearer it stands.
+const FOREGROUND: f64 = 1.6;
 
 /// What one view shows of a scene's boxes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -408,7 +412,7 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 - 6.0 * near
                 - 5.0 * over
                 - 3.0 * (c.stats.largest - 0.2).max(0.0)
-                - 3.0 * (1.0 - c.near).max(0.0);
+                - 4.0 * (FOREGROUND - c.near).max(0.0);
             if best.is_none_or(|(_, s)| score > s) {
                 best = Some((i, score));
             }
