@@ -177,6 +177,40 @@ fn issue_21_huge_and_tiny_scale_the_object() {
 }
 
 #[test]
+fn small_and_big_scale_the_footprint_not_the_height() {
+    let size = |p: &str, c: &str| {
+        plan(p)
+            .objects
+            .get(c)
+            .unwrap_or_else(|| panic!("{p}: no {c}"))
+            .size
+    };
+    let plain = size("a bedroom with a bed and a rug", "rug");
+    let big = size("a bedroom with a bed and a big rug", "rug");
+    assert!(
+        big[0] > plain[0] * 1.15 && big[1] > plain[1] * 1.15,
+        "{big:?} {plain:?}"
+    );
+    let plain = size("a study with an armchair and a table", "dining table");
+    let small = size("a study with an armchair and a small table", "dining table");
+    assert!(
+        small[0] < plain[0] * 0.85 && small[1] < plain[1] * 0.85,
+        "{small:?} {plain:?}"
+    );
+    assert!(
+        (small[2] - plain[2]).abs() < 1e-9,
+        "a small table keeps its height: {small:?} {plain:?}"
+    );
+    // a category already described as small is not made smaller again
+    let cafe = size(
+        "a cafe with a small cafe table and two chairs",
+        "cafe table",
+    );
+    let kind = size("a cafe with a cafe table and two chairs", "cafe table");
+    assert_eq!(cafe, kind, "a small cafe table is the cafe table's size");
+}
+
+#[test]
 fn issue_21_scene_types_never_replace_named_content() {
     // a known template never stands in for the owner's place
     let s = plan("a wizard's laboratory: a cauldron, a stuffed owl and a telescope");

@@ -123,7 +123,17 @@ pub fn is_known_word(w: &str) -> bool {
 /// The factor a size word scales an object by ("huge" 1.6, "tiny" 0.55: `kb/words.txt`,
 /// object_scale), if it is one.
 pub fn object_scale(w: &str) -> Option<f64> {
-    word_list("object_scale").iter().find_map(|e| {
+    factor("object_scale", w)
+}
+
+/// The factor a plain size word scales an object's footprint by, its height kept ("a small
+/// table" is narrower, not lower: `kb/words.txt`, object_footprint), if it is one.
+pub fn object_footprint(w: &str) -> Option<f64> {
+    factor("object_footprint", w)
+}
+
+fn factor(list: &str, w: &str) -> Option<f64> {
+    word_list(list).iter().find_map(|e| {
         let (word, f) = e.split_once('=')?;
         (word == w).then(|| f.parse().ok()).flatten()
     })

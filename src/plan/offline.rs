@@ -576,9 +576,19 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                     .iter()
                     .filter_map(|a| lang::object_scale(a))
                     .product();
-                if f != 1.0 {
-                    for v in size.iter_mut() {
-                        *v = (*v * f * 100.0).round() / 100.0;
+                // a word the category's own description has ("small round cafe table") is
+                // already in its size
+                let described = kb.object(cat).map(|o| o.description.as_str()).unwrap_or("");
+                let g: f64 = m
+                    .adjectives
+                    .iter()
+                    .filter(|a| !described.split(' ').any(|w| w == a.as_str()))
+                    .filter_map(|a| lang::object_footprint(a))
+                    .product();
+                if f != 1.0 || g != 1.0 {
+                    for (k, v) in size.iter_mut().enumerate() {
+                        let s = if k < 2 { f * g } else { f };
+                        *v = (*v * s * 100.0).round() / 100.0;
                     }
                     sizes.insert(cat.clone(), size);
                 }
