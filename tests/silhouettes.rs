@@ -74,7 +74,7 @@ fn near(i: usize) -> impl Iterator<Item = usize> {
         (-1..=1).filter_map(move |dc| {
             let (r, c) = (r + dr, c + dc);
             ((0..N as i64).contains(&r) && (0..N as i64).contains(&c))
-                .then_some(r as usize * N + c as usize)
+                .then(|| r as usize * N + c as usize)
         })
     })
 }

@@ -236,7 +236,11 @@ impl Sampler<'_> {
         let (eye, target) = pose.unwrap_or_else(|| {
             let (want, target) = first.unwrap_or((q.anchor, [0.0, 0.0, self.scene.zmid()]));
             let eye = nearest_valid(self.scene, want).unwrap_or([0.0, 0.0, self.scene.zmid()]);
-            let target = if len(add(target, eye, -1.0)) > 0.3 {
+            // moved to the nearest valid spot, it keeps its direction unless that stares out of
+            // the room (or into an object) from point-blank range: then it looks at the centre
+            let to = add(target, eye, -1.0);
+            let ahead = add(eye, to, 0.5 / len(to).max(1e-9));
+            let target = if len(to) > 0.3 && valid_viewpoint(self.scene, ahead) {
                 target
             } else {
                 add(eye, [-eye[0], -eye[1] + 1e-3, 0.0], 1.0)
