@@ -1,22 +1,12 @@
 //! Relation and anchor semantics, and the GCP layout on a realistic spec and on random specs.
 //! Pure host code: no GPU.
+mod common;
+use common::obj;
 use dreamscene::plan::check::{anchor_holds, relation_holds, validity_problems};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::*;
 use rand::{Rng, SeedableRng};
 use std::collections::BTreeMap;
-
-fn obj(id: &str, size: [f64; 3], pos: [f64; 3], yaw: f64) -> PlacedObject {
-    PlacedObject {
-        id: id.into(),
-        category: id.trim_end_matches(char::is_numeric).into(),
-        size,
-        position: pos,
-        yaw,
-        anchor: Anchor::Others,
-        placed_by: PlacedBy::Constraint,
-    }
-}
 
 /// Each directional relation, in the object's own frame, for several object yaws: the subject
 /// placed on the named side holds, on the other sides it does not.

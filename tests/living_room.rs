@@ -1,22 +1,12 @@
 //! The README's own prompt laid out as a person furnishes a living room, and the relation checker
 //! strict enough to say when it is not: a coffee table within reach of the sofa's front, no seat
 //! between the coffee table and the TV, nothing tall in the sofa's view of the TV.
+mod common;
+use common::obj;
 use dreamscene::plan::check::{gap, relations_unsatisfied, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
 use dreamscene::plan::spec::*;
-
-fn obj(id: &str, size: [f64; 3], pos: [f64; 3], yaw: f64) -> PlacedObject {
-    PlacedObject {
-        id: id.into(),
-        category: id.trim_end_matches(char::is_numeric).into(),
-        size,
-        position: pos,
-        yaw,
-        anchor: Anchor::Others,
-        placed_by: PlacedBy::Constraint,
-    }
-}
 
 fn rel(s: &str, r: RelationKind, o: &str) -> Relation {
     Relation {

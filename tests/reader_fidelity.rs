@@ -101,6 +101,15 @@ fn plan(prompt: &str) -> SceneSpec {
         .spec
 }
 
+/// The size the plan of `prompt` gives category `c`.
+fn size(prompt: &str, c: &str) -> [f64; 3] {
+    plan(prompt)
+        .objects
+        .get(c)
+        .unwrap_or_else(|| panic!("{prompt}: no {c}"))
+        .size
+}
+
 fn n(spec: &SceneSpec, word: &str, exclude: &[&str]) -> u32 {
     let ex: Vec<String> = exclude.iter().map(|s| s.to_string()).collect();
     count(spec, &[word.to_string()], &ex)
@@ -158,13 +167,6 @@ fn issue_21_room_sizes() {
 
 #[test]
 fn issue_21_huge_and_tiny_scale_the_object() {
-    let size = |p: &str, c: &str| {
-        plan(p)
-            .objects
-            .get(c)
-            .unwrap_or_else(|| panic!("{p}: no {c}"))
-            .size
-    };
     let plain = size("a games room with a tv and a sofa", "tv");
     let huge = size("a games room with a huge tv and a sofa", "tv");
     assert!(
@@ -178,13 +180,6 @@ fn issue_21_huge_and_tiny_scale_the_object() {
 
 #[test]
 fn small_and_big_scale_the_footprint_not_the_height() {
-    let size = |p: &str, c: &str| {
-        plan(p)
-            .objects
-            .get(c)
-            .unwrap_or_else(|| panic!("{p}: no {c}"))
-            .size
-    };
     let plain = size("a bedroom with a bed and a rug", "rug");
     let big = size("a bedroom with a bed and a big rug", "rug");
     assert!(

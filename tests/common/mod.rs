@@ -1,4 +1,4 @@
-//! Helpers shared by the GPU tests.
+//! Helpers shared by the tests (GPU devices and fixtures, placed objects for layout checks).
 #![allow(dead_code, reason = "each test crate uses some of the shared helpers")]
 #![allow(
     clippy::unwrap_used,
@@ -139,4 +139,23 @@ pub fn kill_when(
     }
     child.kill().unwrap();
     child.wait().unwrap();
+}
+
+/// A placed object for hand-built layouts: its category is its id without the trailing number.
+pub fn obj(
+    id: &str,
+    size: [f64; 3],
+    pos: [f64; 3],
+    yaw: f64,
+) -> dreamscene::plan::spec::PlacedObject {
+    use dreamscene::plan::spec::{Anchor, PlacedBy, PlacedObject};
+    PlacedObject {
+        id: id.into(),
+        category: id.trim_end_matches(char::is_numeric).into(),
+        size,
+        position: pos,
+        yaw,
+        anchor: Anchor::Others,
+        placed_by: PlacedBy::Constraint,
+    }
 }
