@@ -160,6 +160,34 @@ impl Cluster {
         .collect()
     }
 
+    /// `scene.sbatch objects` as an array of `shards` tasks, then `scene.sbatch scene` after it
+    /// (afterok), waited for up to `limit`: the two job ids and the states of all their tasks.
+    fn scene_shards(
+        &self,
+        shards: usize,
+        flags: &[&str],
+        env: &[(&str, &str)],
+        limit: Duration,
+    ) -> (String, String, Vec<(String, String)>) {
+        let array = format!("--array=0-{}", shards - 1);
+        let objects = self.sbatch(
+            &[&array],
+            "scene.sbatch",
+            &[&["objects"][..], flags].concat(),
+            env,
+        );
+        let dep = format!("--dependency=afterok:{objects}");
+        let step = self.sbatch(
+            &[&dep],
+            "scene.sbatch",
+            &[&["scene"][..], flags].concat(),
+            env,
+        );
+        self.wait(&step, limit);
+        let all = [self.states(&objects), self.states(&step)].concat();
+        (objects, step, all)
+    }
+
     fn wait(&self, job: &str, limit: Duration) {
         let t = Instant::now();
         loop {
@@ -361,21 +389,7 @@ fn slurm_arrays_requeue_and_object_shards_match_serial_generate() {
     let t2 = Instant::now();
     let scene = work.join("sharded");
     let env = [("PROMPT", PROMPTS[4]), ("OUT", scene.to_str().unwrap())];
-    let objects = cl.sbatch(
-        &["--array=0-2"],
-        "scene.sbatch",
-        &[&["objects"][..], &FLAGS].concat(),
-        &env,
-    );
-    let dep = format!("--dependency=afterok:{objects}");
-    let step = cl.sbatch(
-        &[&dep],
-        "scene.sbatch",
-        &[&["scene"][..], &FLAGS].concat(),
-        &env,
-    );
-    cl.wait(&step, Duration::from_secs(120));
-    let all = [cl.states(&objects), cl.states(&step)].concat();
+    let (objects, _step, all) = cl.scene_shards(3, &FLAGS, &env, Duration::from_secs(120));
     assert!(all.iter().all(|(_, s)| s == "COMPLETED"), "{all:?}");
     same_tree(&scene, &serial.join(id(4)));
     // Each category was built by exactly one shard.
@@ -455,21 +469,7 @@ fn prior_object_shards_then_the_scene_step(cl: &Cluster, work: &Path) {
     let prior = format!("oracle:{}", refdir.display());
     let flags = [&["--prior", prior.as_str()][..], &ORACLE_FLAGS].concat();
     let env = [("PROMPT", prompt), ("OUT", scene.to_str().unwrap())];
-    let objects = cl.sbatch(
-        &["--array=0-1"],
-        "scene.sbatch",
-        &[&["objects"][..], &flags].concat(),
-        &env,
-    );
-    let dep = format!("--dependency=afterok:{objects}");
-    let step = cl.sbatch(
-        &[&dep],
-        "scene.sbatch",
-        &[&["scene"][..], &flags].concat(),
-        &env,
-    );
-    cl.wait(&step, Duration::from_secs(240));
-    let all = [cl.states(&objects), cl.states(&step)].concat();
+    let (objects, step, all) = cl.scene_shards(2, &flags, &env, Duration::from_secs(240));
     let logs = || {
         std::fs::read_dir(work)
             .unwrap()
