@@ -172,7 +172,7 @@ pub fn external_tool(name: &str, problem: Option<String>) -> bool {
             .any(|n| n.eq_ignore_ascii_case(name) || n.eq_ignore_ascii_case("all"))
     });
     if opted_out {
-        println!("SKIPPED the {name} check: DREAMSCENE_SKIP_EXTERNAL={name} opts out of it");
+        println!("SKIPPED the {name} check: DREAMSCENE_SKIP_EXTERNAL names {name}");
         return false;
     }
     if let Some(p) = problem {

@@ -57,7 +57,17 @@ pub fn blender_ready() -> bool {
     };
     let problem = if !runs("blender", &["--version"]) {
         Some("Blender is missing: apt-get install blender python3-numpy".to_string())
-    } else if !runs("python3", &["-c", "import numpy"]) {
+    } else if !runs(
+        "blender",
+        &[
+            "-b",
+            "--factory-startup",
+            "--python-exit-code",
+            "1",
+            "--python-expr",
+            "import numpy",
+        ],
+    ) {
         Some("numpy (Blender's glTF importer needs it) is missing: apt-get install python3-numpy".to_string())
     } else {
         None
