@@ -297,6 +297,49 @@ fn validator_finds_only_the_known_splat_attribute_errors() {
 }
 
 #[test]
+fn splats_are_optional_and_the_navmesh_obj_is_the_navmesh_node() {
+    let f = fixture();
+    let bytes = std::fs::read(&f.glb).unwrap();
+    let doc = glb_json(&bytes);
+    // Blender refuses a file whose splat extension is required.
+    let required = doc["extensionsRequired"].as_array().cloned().unwrap_or_default();
+    assert!(
+        !required.iter().any(|e| e == "KHR_gaussian_splatting"),
+        "extensionsRequired: {required:?}"
+    );
+    assert!(doc["extensionsUsed"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|e| e == "KHR_gaussian_splatting"));
+    // `<stem>.navmesh.obj` beside the glb holds the navmesh node's vertices (both y up).
+    let obj = std::fs::read_to_string(f.glb.with_extension("navmesh.obj")).unwrap();
+    let vs: Vec<[f64; 3]> = obj
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let v: Vec<f64> = l.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect();
+    let faces = obj.lines().filter(|l| l.starts_with("f ")).count();
+    let mesh = mesh_positions(&bytes, "navmesh");
+    assert_eq!(vs.len(), mesh.len(), "navmesh.obj vertices");
+    let node = doc["nodes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|n| n["name"] == "navmesh")
+        .unwrap();
+    let prim = &doc["meshes"][node["mesh"].as_u64().unwrap() as usize]["primitives"][0];
+    let indices = &doc["accessors"][prim["indices"].as_u64().unwrap() as usize]["count"];
+    assert_eq!(Some(faces as u64 * 3), indices.as_u64(), "navmesh.obj faces");
+    for (a, b) in vs.iter().zip(&mesh) {
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-3), "{a:?} vs {b:?}");
+    }
+}
+
+#[test]
 fn feature_ids_and_labelled_ply_agree_with_labels_json() {
     require_engine_readers();
     let f = fixture();
