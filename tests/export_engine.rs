@@ -302,7 +302,10 @@ fn splats_are_optional_and_the_navmesh_obj_is_the_navmesh_node() {
     let bytes = std::fs::read(&f.glb).unwrap();
     let doc = glb_json(&bytes);
     // Blender refuses a file whose splat extension is required.
-    let required = doc["extensionsRequired"].as_array().cloned().unwrap_or_default();
+    let required = doc["extensionsRequired"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
     assert!(
         !required.iter().any(|e| e == "KHR_gaussian_splatting"),
         "extensionsRequired: {required:?}"
@@ -333,7 +336,11 @@ fn splats_are_optional_and_the_navmesh_obj_is_the_navmesh_node() {
         .unwrap();
     let prim = &doc["meshes"][node["mesh"].as_u64().unwrap() as usize]["primitives"][0];
     let indices = &doc["accessors"][prim["indices"].as_u64().unwrap() as usize]["count"];
-    assert_eq!(Some(faces as u64 * 3), indices.as_u64(), "navmesh.obj faces");
+    assert_eq!(
+        Some(faces as u64 * 3),
+        indices.as_u64(),
+        "navmesh.obj faces"
+    );
     for (a, b) in vs.iter().zip(&mesh) {
         assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-3), "{a:?} vs {b:?}");
     }
@@ -429,7 +436,9 @@ fn same_value(got: &Value, want: &Value) -> bool {
             a.len() == b.len() && a.iter().zip(b).all(|(x, y)| same_value(x, y))
         }
         (Value::Object(a), Value::Object(b)) => {
-            a.len() == b.len() && b.iter().all(|(k, y)| a.get(k).is_some_and(|x| same_value(x, y)))
+            a.len() == b.len()
+                && b.iter()
+                    .all(|(k, y)| a.get(k).is_some_and(|x| same_value(x, y)))
         }
         _ => got == want,
     }

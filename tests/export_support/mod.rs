@@ -68,7 +68,10 @@ pub fn blender_ready() -> bool {
             "import numpy",
         ],
     ) {
-        Some("numpy (Blender's glTF importer needs it) is missing: apt-get install python3-numpy".to_string())
+        Some(
+            "numpy (Blender's glTF importer needs it) is missing: apt-get install python3-numpy"
+                .to_string(),
+        )
     } else {
         None
     };
