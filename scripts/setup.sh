@@ -186,7 +186,8 @@ fi
 test -x "$READERS_DIR/node_modules/.bin/splat-transform" || { echo "export test readers missing in $READERS_DIR/node_modules" >&2; exit 1; }
 
 # The batch tests: a real single-node Slurm (started inside the test) and the offline Kubernetes
-# schema check. Optional: where they cannot be installed the tests say so and skip.
+# schema check. A test whose tool is missing fails saying how to install it, unless
+# DREAMSCENE_SKIP_EXTERNAL names it (comma-separated: blender, slurm, kubernetes-validate; or all).
 slurm_pkgs=(slurmctld slurmd slurm-client munge)
 slurm_missing=()
 for p in "${slurm_pkgs[@]}"; do
@@ -194,17 +195,17 @@ for p in "${slurm_pkgs[@]}"; do
 done
 if ((${#slurm_missing[@]})); then
   echo "installing (for the batch tests): ${slurm_missing[*]}"
-  apt_install "${slurm_missing[@]}" || echo "could not install ${slurm_missing[*]}; the Slurm tests will skip" >&2
+  apt_install "${slurm_missing[@]}" || echo "could not install ${slurm_missing[*]}; tests/batch_slurm.rs will fail (DREAMSCENE_SKIP_EXTERNAL=slurm skips it)" >&2
 fi
 if ! command -v kubernetes-validate >/dev/null; then
   echo "installing kubernetes-validate (for the batch tests)"
   python3 -m pip install --quiet kubernetes-validate 2>/dev/null ||
     python3 -m pip install --quiet --break-system-packages kubernetes-validate ||
-    echo "could not install kubernetes-validate; the job file test will skip" >&2
+    echo "could not install kubernetes-validate; the job file test will fail (DREAMSCENE_SKIP_EXTERNAL=kubernetes-validate skips it)" >&2
 fi
 # Blender 3.4 (Debian) reads the engine-ready glb in tests/export_engine.rs; its glTF add-on needs
-# numpy. Optional: that test says it skipped when Blender cannot be installed.
+# numpy. Missing, the Blender checks fail unless DREAMSCENE_SKIP_EXTERNAL names blender.
 if ! command -v blender >/dev/null; then
   echo "installing blender and python3-numpy (the engine export's DCC reader)"
-  apt_install blender python3-numpy || echo "blender could not be installed; tests/export_engine.rs will skip its Blender check" >&2
+  apt_install blender python3-numpy || echo "blender could not be installed; the Blender checks of tests/export_engine.rs and tests/engine_splats.rs will fail (DREAMSCENE_SKIP_EXTERNAL=blender skips them)" >&2
 fi

@@ -6,6 +6,7 @@
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
+mod common;
 use dreamscene::batch::index::{self, Status};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -231,9 +232,12 @@ fn bad_manifests_and_missing_objects_are_one_line() {
 fn the_kubernetes_job_validates_against_the_schemas() {
     let have = Command::new("kubernetes-validate")
         .arg("--version")
-        .output();
-    if !have.is_ok_and(|o| o.status.success()) {
-        println!("SKIPPED: kubernetes-validate is not installed (scripts/setup.sh: pip install kubernetes-validate)");
+        .output()
+        .is_ok_and(|o| o.status.success());
+    let problem = (!have).then(|| {
+        "kubernetes-validate is missing: python3 -m pip install kubernetes-validate".to_string()
+    });
+    if !common::external_tool("kubernetes-validate", problem) {
         return;
     }
     let job = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/k8s/batch-job.yaml");

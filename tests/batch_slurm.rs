@@ -4,11 +4,12 @@
 //! every scene byte for byte as a serial `generate`; a task cancelled mid-run and requeued
 //! completes only its missing scenes; object shards plus the dependent scene step give the same
 //! scene as one `generate`; with a prior (the oracle), object shards and the scene step give a
-//! complete scene. Skipped, saying why, where Slurm is not installed.
+//! complete scene. Missing Slurm fails the test unless `DREAMSCENE_SKIP_EXTERNAL=slurm`.
 #![allow(
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
+mod common;
 use dreamscene::batch::index::{self, Status};
 use dreamscene::batch::shard::shard_of;
 use std::collections::BTreeMap;
@@ -63,7 +64,8 @@ fn have(cmd: &str) -> bool {
 }
 
 impl Cluster {
-    /// A cluster in a fresh directory, or `None` (with the reason printed) where it cannot run.
+    /// A cluster in a fresh directory, or `None` where `DREAMSCENE_SKIP_EXTERNAL` names
+    /// `slurm`. Missing Slurm (or not running as root, which its daemons need) fails the test.
     fn up(work: &Path) -> Option<Cluster> {
         let missing: Vec<&str> = [
             "slurmctld",
@@ -76,17 +78,21 @@ impl Cluster {
         .into_iter()
         .filter(|c| !have(c))
         .collect();
-        if !missing.is_empty() {
-            println!(
-                "SKIPPED: the Slurm test needs {} (scripts/setup.sh installs slurmctld slurmd \
-                 slurm-client munge)",
+        let as_root = Command::new("id")
+            .arg("-u")
+            .output()
+            .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+        let problem = if !missing.is_empty() {
+            Some(format!(
+                "the Slurm test needs {}: apt-get install slurmctld slurmd slurm-client munge",
                 missing.join(", ")
-            );
-            return None;
-        }
-        let uid = Command::new("id").arg("-u").output().ok()?;
-        if String::from_utf8_lossy(&uid.stdout).trim() != "0" {
-            println!("SKIPPED: the Slurm test runs its daemons as root");
+            ))
+        } else if !as_root {
+            Some("the Slurm test starts its daemons as root: run it as root".to_string())
+        } else {
+            None
+        };
+        if !common::external_tool("slurm", problem) {
             return None;
         }
         let dir = work.join("slurm");

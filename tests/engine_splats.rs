@@ -4,8 +4,8 @@
 //! grid of at most 4 cm) and each node's
 //! `style_prompt`. The glb is parsed here from the glTF definition (accessors, node transforms)
 //! and judged against the scene's own `scene.ply` and `labels.json`; the Khronos validator,
-//! `@gltf-transform/extensions` and, where Debian's `blender` is installed, Blender's importer
-//! read the same file.
+//! `@gltf-transform/extensions` and Debian's Blender importer read the same file (a missing
+//! Blender fails the test unless `DREAMSCENE_SKIP_EXTERNAL=blender`).
 #![allow(
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
@@ -324,12 +324,11 @@ fn per_object_splats_sit_under_their_nodes_and_hulls_hold_the_opaque_gaussians()
     blender_reads_hulls_and_style_prompts(&glb_path, &glb);
 }
 
-/// Blender's importer, where installed: every object node with its style prompt as a custom
+/// Blender's importer: every object node with its style prompt as a custom
 /// property, each hull collider imported whole (all its vertices) and placed where the glb
 /// says (its box as the one computed here).
 fn blender_reads_hulls_and_style_prompts(path: &Path, glb: &Glb) {
-    if Command::new("blender").arg("--version").output().is_err() {
-        eprintln!("skipped Blender: not installed (apt-get install blender python3-numpy)");
+    if !export_support::blender_ready() {
         return;
     }
     let o = Command::new("blender")

@@ -13,6 +13,7 @@ use std::path::Path;
 use std::process::Command;
 
 mod common;
+#[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
 
 #[test]

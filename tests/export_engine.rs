@@ -1,9 +1,10 @@
 //! The engine-ready export of a scene (`export DIR --format glb|ply`) read by outside clients:
 //! three.js GLTFLoader with its splat plugin, the Khronos glTF validator,
 //! `@gltf-transform/extensions` (EXT_mesh_features), recast-navigation (Detour paths on the
-//! navmesh), PlayCanvas splat-transform (labels kept and filtered) and, where Debian's
-//! `blender` is installed, Blender 3.4's glTF importer. Expected values come from the scene's
-//! own `layout.json` and `scene.json` with the frames written out here, not from the exporter.
+//! navmesh), PlayCanvas splat-transform (labels kept and filtered) and Debian's Blender 3.4
+//! glTF importer (a missing Blender fails the test unless `DREAMSCENE_SKIP_EXTERNAL=blender`).
+//! Expected values come from the scene's own `layout.json` and `scene.json` with the frames
+//! written out here, not from the exporter.
 //!
 //! The fixture is a draft of "a small bedroom" (or of `DREAMSCENE_ENGINE_PROMPT`, which
 //! `scripts/engine_export_prompts.sh` sets to run these checks over many prompts); an indoor
@@ -296,6 +297,56 @@ fn validator_finds_only_the_known_splat_attribute_errors() {
 }
 
 #[test]
+fn splats_are_optional_and_the_navmesh_obj_is_the_navmesh_node() {
+    let f = fixture();
+    let bytes = std::fs::read(&f.glb).unwrap();
+    let doc = glb_json(&bytes);
+    // Blender refuses a file whose splat extension is required.
+    let required = doc["extensionsRequired"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
+    assert!(
+        !required.iter().any(|e| e == "KHR_gaussian_splatting"),
+        "extensionsRequired: {required:?}"
+    );
+    assert!(doc["extensionsUsed"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|e| e == "KHR_gaussian_splatting"));
+    // `<stem>.navmesh.obj` beside the glb holds the navmesh node's vertices (both y up).
+    let obj = std::fs::read_to_string(f.glb.with_extension("navmesh.obj")).unwrap();
+    let vs: Vec<[f64; 3]> = obj
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let v: Vec<f64> = l.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect();
+    let faces = obj.lines().filter(|l| l.starts_with("f ")).count();
+    let mesh = mesh_positions(&bytes, "navmesh");
+    assert_eq!(vs.len(), mesh.len(), "navmesh.obj vertices");
+    let node = doc["nodes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|n| n["name"] == "navmesh")
+        .unwrap();
+    let prim = &doc["meshes"][node["mesh"].as_u64().unwrap() as usize]["primitives"][0];
+    let indices = &doc["accessors"][prim["indices"].as_u64().unwrap() as usize]["count"];
+    assert_eq!(
+        Some(faces as u64 * 3),
+        indices.as_u64(),
+        "navmesh.obj faces"
+    );
+    for (a, b) in vs.iter().zip(&mesh) {
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-3), "{a:?} vs {b:?}");
+    }
+}
+
+#[test]
 fn feature_ids_and_labelled_ply_agree_with_labels_json() {
     require_engine_readers();
     let f = fixture();
@@ -367,10 +418,36 @@ fn feature_ids_and_labelled_ply_agree_with_labels_json() {
     assert_eq!(read_ply_labelled(&only).unwrap().0.len() as u64, counts[&1]);
 }
 
+/// The glb's JSON chunk.
+fn glb_json(bytes: &[u8]) -> Value {
+    let len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+    serde_json::from_slice(&bytes[20..20 + len]).unwrap()
+}
+
+/// Whether a value Blender reports equals the glb's: numbers within float precision (Blender
+/// keeps custom properties as 32-bit floats in arrays), lists and tables element by element.
+fn same_value(got: &Value, want: &Value) -> bool {
+    match (got, want) {
+        (Value::Number(a), Value::Number(b)) => {
+            let (a, b) = (a.as_f64().unwrap(), b.as_f64().unwrap());
+            (a - b).abs() <= 1e-5 * b.abs().max(1.0)
+        }
+        (Value::Array(a), Value::Array(b)) => {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| same_value(x, y))
+        }
+        (Value::Object(a), Value::Object(b)) => {
+            a.len() == b.len()
+                && b.iter()
+                    .all(|(k, y)| a.get(k).is_some_and(|x| same_value(x, y)))
+        }
+        _ => got == want,
+    }
+}
+
 /// Reads the positions of node `n`'s mesh from the glb.
 fn mesh_positions(bytes: &[u8], n: &str) -> Vec<[f64; 3]> {
     let len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
-    let doc: Value = serde_json::from_slice(&bytes[20..20 + len]).unwrap();
+    let doc = glb_json(bytes);
     let bin = &bytes[20 + len + 8..];
     let node = doc["nodes"]
         .as_array()
@@ -502,8 +579,7 @@ fn openings_are_cut_from_the_walls_and_paths_on_the_navmesh_avoid_furniture() {
 
 #[test]
 fn blender_imports_objects_with_extras_and_collider_boxes() {
-    if Command::new("blender").arg("--version").output().is_err() {
-        eprintln!("skipped: Blender is not installed (apt-get install blender python3-numpy)");
+    if !export_support::blender_ready() {
         return;
     }
     let f = fixture();
@@ -526,6 +602,33 @@ fn blender_imports_objects_with_extras_and_collider_boxes() {
         .find_map(|l| l.strip_prefix("RESULT "))
         .expect(&log);
     let objs: Value = serde_json::from_str(line).unwrap();
+    // Every node's extras, as the glb's own JSON chunk holds them, are that object's custom
+    // properties in Blender: the root's tables and each instance's id, category, labels, size.
+    let doc = glb_json(&std::fs::read(&f.glb).unwrap());
+    let extras_of = |n: &str| {
+        doc["nodes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|x| x["name"] == n)
+            .unwrap_or_else(|| panic!("node {n} in the glb"))["extras"]
+            .clone()
+    };
+    for n in ["dreamscene".to_string()].into_iter().chain(
+        f.layout["objects"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|o| name(o["id"].as_str().unwrap())),
+    ) {
+        let extras = extras_of(&n);
+        let extras = extras.as_object().unwrap();
+        assert!(!extras.is_empty(), "{n} has extras");
+        for (k, v) in extras {
+            let got = &objs[&n]["props"][k];
+            assert!(same_value(got, v), "{n}.{k}: Blender {got}, glb {v}");
+        }
+    }
     for o in f.layout["objects"].as_array().unwrap() {
         let id = o["id"].as_str().unwrap();
         let n = &objs[name(id)];

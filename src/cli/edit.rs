@@ -498,23 +498,13 @@ fn resolve_id(state: &SceneState, name: &str) -> Result<String> {
     if state.object(name).is_ok() {
         return Ok(name.to_string());
     }
-    let objects: Vec<(String, String)> = state
-        .scene
-        .objects
-        .iter()
-        .map(|o| (o.id.clone(), o.category.clone()))
-        .collect();
+    let objects = state.id_categories();
     parse::resolve(name, &objects).map_err(anyhow::Error::msg)
 }
 
 /// The instance and pose a sentence asks for (`default` is "it").
 fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Result<(String, Pose)> {
-    let objects: Vec<(String, String)> = state
-        .scene
-        .objects
-        .iter()
-        .map(|o| (o.id.clone(), o.category.clone()))
-        .collect();
+    let objects = state.id_categories();
     let cmd = parse::parse(text, &objects, default).map_err(anyhow::Error::msg)?;
     let id = cmd
         .subject

@@ -5,6 +5,7 @@ use super::generate::{plan_line, plan_or_reuse, GenerateArgs};
 use super::object::PriorChoice;
 use super::scene_renders::render_chosen;
 use anyhow::{Context as _, Result};
+use dreamscene::generate::scene_stages::{generate_scene, SceneJob};
 use dreamscene::plan::spec::{Layout, SceneSpec};
 use std::path::Path;
 use std::time::Instant;
@@ -102,17 +103,16 @@ pub(super) fn full(
         mut priors,
         cfg,
     } = setup;
-    let report = dreamscene::generate::scene_stages::generate_scene(
-        &ctx,
+    let job = SceneJob {
+        ctx: &ctx,
         out,
-        text,
-        &spec,
-        &layout,
-        priors.as_mut(),
-        &cfg,
+        prompt: text,
+        spec: &spec,
+        layout: &layout,
+        cfg: &cfg,
         resume,
-        &mut |l| eprintln!("{l}"),
-    )?;
+    };
+    let report = generate_scene(&job, priors.as_mut(), &mut |l| eprintln!("{l}"))?;
     let mut scene = dreamscene::generate::scene::scene_file(
         text,
         a.seed,

@@ -11,7 +11,7 @@ use dreamscene::batch::shard::{self, Shard};
 use dreamscene::generate::object_shard::shard_categories;
 use dreamscene::generate::scene::object_ply;
 use dreamscene::generate::scene_objects::{done_by_shards, generate_shard};
-use dreamscene::generate::scene_stages::SceneRun;
+use dreamscene::generate::scene_stages::{SceneJob, SceneRun};
 use std::path::Path;
 use std::time::Instant;
 
@@ -31,18 +31,16 @@ pub fn run(
                 .map_err(anyhow::Error::msg)?
                 .unwrap_or(Shard { index: 0, count: 1 });
             let mut f = full_setup(a, text, models, true)?;
-            let made = generate_shard(
-                &f.ctx,
-                &a.out,
-                text,
-                &f.spec,
-                &f.layout,
-                f.priors.as_mut(),
-                &f.cfg,
-                true,
-                shard,
-                &mut |l| eprintln!("{l}"),
-            )?;
+            let job = SceneJob {
+                ctx: &f.ctx,
+                out: &a.out,
+                prompt: text,
+                spec: &f.spec,
+                layout: &f.layout,
+                cfg: &f.cfg,
+                resume: true,
+            };
+            let made = generate_shard(&job, f.priors.as_mut(), shard, &mut |l| eprintln!("{l}"))?;
             println!(
                 "objects shard {shard}: {} in {:.1} s",
                 if made.is_empty() {

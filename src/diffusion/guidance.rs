@@ -339,18 +339,22 @@ pub fn mts_gradient(
     ts: &[u32],
     s: &MtsSettings,
 ) -> Result<Vec<f32>, String> {
-    one(mts_gradients(
-        &mut EachView(pred),
-        sched,
-        &[z0],
-        &[eps],
-        ts,
-        s,
-    ))
+    one_view(pred, z0, eps, |p, z, e| {
+        mts_gradients(p, sched, z, e, ts, s)
+    })
 }
 
-fn one(r: Result<Vec<Vec<f32>>, String>) -> Result<Vec<f32>, String> {
-    r?.pop().ok_or_else(|| "no view".to_string())
+/// A batched rule run on one view: `rule` is given the predictor asked view by view, and the
+/// latent and its noise as batches of one.
+fn one_view(
+    pred: &mut dyn NoisePredictor,
+    z0: &[f32],
+    eps: &[f32],
+    rule: impl FnOnce(&mut dyn ViewsPredictor, &[&[f32]], &[&[f32]]) -> Result<Vec<Vec<f32>>, String>,
+) -> Result<Vec<f32>, String> {
+    rule(&mut EachView(pred), &[z0], &[eps])?
+        .pop()
+        .ok_or_else(|| "no view".to_string())
 }
 
 /// The pseudo-ground-truth latents of reconstructive generation: along the same chain, x̂₀ at
@@ -384,7 +388,7 @@ pub fn pseudo_gt(
     ts: &[u32],
     s: &MtsSettings,
 ) -> Result<Vec<f32>, String> {
-    one(pseudo_gts(&mut EachView(pred), sched, &[z0], &[eps], ts, s))
+    one_view(pred, z0, eps, |p, z, e| pseudo_gts(p, sched, z, e, ts, s))
 }
 
 /// The appearance-editing gradients: Σ λ w(tᵢ)(ε(y_edit) − ε(y)) / n along the inversion
@@ -414,14 +418,9 @@ pub fn edit_gradient(
     ts: &[u32],
     s: &MtsSettings,
 ) -> Result<Vec<f32>, String> {
-    one(edit_gradients(
-        &mut EachView(pred),
-        sched,
-        &[z0],
-        &[eps],
-        ts,
-        s,
-    ))
+    one_view(pred, z0, eps, |p, z, e| {
+        edit_gradients(p, sched, z, e, ts, s)
+    })
 }
 
 /// Score distillation sampling: λ w(t)(ε_cfg(x_t) − ε) with x_t = noised z0, per view.
@@ -461,14 +460,7 @@ pub fn sds_gradient(
     t: u32,
     s: &MtsSettings,
 ) -> Result<Vec<f32>, String> {
-    one(sds_gradients(
-        &mut EachView(pred),
-        sched,
-        &[z0],
-        &[eps],
-        t,
-        s,
-    ))
+    one_view(pred, z0, eps, |p, z, e| sds_gradients(p, sched, z, e, t, s))
 }
 
 /// DreamTime's time-prioritised schedule: t decreases monotonically from `t_max` to `t_min`
@@ -554,17 +546,9 @@ pub fn ism_gradient(
     xs_steps: u32,
     set: &MtsSettings,
 ) -> Result<Vec<f32>, String> {
-    one(ism_gradients(
-        &mut EachView(pred),
-        sched,
-        &[z0],
-        &[eps],
-        s_t,
-        t,
-        xs_delta,
-        xs_steps,
-        set,
-    ))
+    one_view(pred, z0, eps, |p, z, e| {
+        ism_gradients(p, sched, z, e, s_t, t, xs_delta, xs_steps, set)
+    })
 }
 
 /// View-dependent prompts as the authors' object code builds them.

@@ -338,12 +338,7 @@ pub fn animate(
     if !(fps.is_finite() && fps > 0.0 && fps <= 240.0) {
         return Err(EditError::Bad(format!("--fps {fps}: expected 1 to 240")));
     }
-    let objects: Vec<(String, String)> = state
-        .scene
-        .objects
-        .iter()
-        .map(|o| (o.id.clone(), o.category.clone()))
-        .collect();
+    let objects = state.id_categories();
     let cmd = parse(motion, &objects, Some(id)).map_err(EditError::Bad)?;
     let keys = keyframes(state, id, &cmd, seconds)?;
     let track = Track {

@@ -70,6 +70,15 @@ impl SceneState {
         })
     }
 
+    /// Every instance's id and category, in scene order (what names in a sentence resolve to).
+    pub fn id_categories(&self) -> Vec<(String, String)> {
+        self.scene
+            .objects
+            .iter()
+            .map(|o| (o.id.clone(), o.category.clone()))
+            .collect()
+    }
+
     /// The instance `id`, or an error listing the ids there are.
     pub fn object(&self, id: &str) -> Result<&SceneObject, EditError> {
         self.scene

@@ -76,6 +76,19 @@ pub struct NodeTransform {
     pub scale: Option<[f64; 3]>,
 }
 
+/// The smallest and largest value of each of the `comps` components (an accessor's min/max).
+fn bounds(data: &[f32], comps: usize) -> (Vec<f32>, Vec<f32>) {
+    let mut lo = vec![f32::INFINITY; comps];
+    let mut hi = vec![f32::NEG_INFINITY; comps];
+    for row in data.chunks_exact(comps) {
+        for (j, &v) in row.iter().enumerate() {
+            lo[j] = lo[j].min(v);
+            hi[j] = hi[j].max(v);
+        }
+    }
+    (lo, hi)
+}
+
 impl GlbBuilder {
     /// An empty asset.
     pub fn new() -> GlbBuilder {
@@ -104,14 +117,7 @@ impl GlbBuilder {
     fn animation_floats(&mut self, data: &[f32], comps: usize, ty: &str) -> usize {
         let bytes: Vec<u8> = data.iter().flat_map(|v| v.to_le_bytes()).collect();
         let view = self.plain_view(&bytes);
-        let mut lo = vec![f32::INFINITY; comps];
-        let mut hi = vec![f32::NEG_INFINITY; comps];
-        for row in data.chunks_exact(comps) {
-            for (j, &v) in row.iter().enumerate() {
-                lo[j] = lo[j].min(v);
-                hi[j] = hi[j].max(v);
-            }
-        }
+        let (lo, hi) = bounds(data, comps);
         self.accessors.push(json!({
             "bufferView": view, "componentType": FLOAT, "count": data.len() / comps,
             "type": ty, "min": lo, "max": hi
@@ -120,21 +126,14 @@ impl GlbBuilder {
     }
 
     /// A float accessor of `comps` components a Gaussian (`ty` SCALAR, VEC3 or VEC4).
-    fn floats(&mut self, data: &[f32], comps: usize, ty: &str, bounds: bool) -> usize {
+    fn floats(&mut self, data: &[f32], comps: usize, ty: &str, with_bounds: bool) -> usize {
         let bytes: Vec<u8> = data.iter().flat_map(|v| v.to_le_bytes()).collect();
         let view = self.view(&bytes);
         let mut acc = json!({
             "bufferView": view, "componentType": FLOAT, "count": data.len() / comps, "type": ty
         });
-        if bounds {
-            let mut lo = vec![f32::INFINITY; comps];
-            let mut hi = vec![f32::NEG_INFINITY; comps];
-            for row in data.chunks_exact(comps) {
-                for (j, &v) in row.iter().enumerate() {
-                    lo[j] = lo[j].min(v);
-                    hi[j] = hi[j].max(v);
-                }
-            }
+        if with_bounds {
+            let (lo, hi) = bounds(data, comps);
             acc["min"] = json!(lo);
             acc["max"] = json!(hi);
         }

@@ -9,12 +9,10 @@ use super::object::{generate_object, Checkpoints, GenError};
 use super::object_shard::shard_categories;
 use super::progress::Progress;
 use super::scene::object_ply;
-use super::scene_stages::{SceneConfig, ScenePriors};
+use super::scene_stages::{SceneJob, ScenePriors};
 use crate::batch::shard::Shard;
 use crate::camera::object::ObjectFrame;
 use crate::diffusion::Error;
-use crate::gpu::Context;
-use crate::plan::spec::{Layout, SceneSpec};
 use crate::shape::{self, ShapeOptions};
 use crate::splat::ply::{read_ply, write_ply};
 use crate::splat::Gaussians;
@@ -62,26 +60,26 @@ fn io(path: &Path) -> impl Fn(std::io::Error) -> GenError + '_ {
     }
 }
 
-/// Generates the objects of `shard` (all when `None`) into `out/objects/`. Categories in
-/// `done` are read back instead; each one finished is added to `done` and `save(done)` is called
-/// (the caller's state file). Returns every category's cloud handled here.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "a stage's device, directory, plan, priors and settings, and its bookkeeping hooks"
-)]
+/// Generates the objects of `shard` (all when `None`) into the job's `out/objects/`.
+/// Categories in `done` are read back instead; each one finished is added to `done` and
+/// `save(done)` is called (the caller's state file). Returns every category's cloud handled here.
 pub fn generate_objects(
-    ctx: &Context,
-    out: &Path,
-    spec: &SceneSpec,
-    layout: &Layout,
+    job: &SceneJob,
     priors: &mut dyn ScenePriors,
-    cfg: &SceneConfig,
-    resume: bool,
     shard: Option<Shard>,
     done: &mut Vec<String>,
     save: &mut dyn FnMut(&[String]) -> Result<(), GenError>,
     log: &mut dyn FnMut(&str),
 ) -> Result<BTreeMap<String, Gaussians>, GenError> {
+    let SceneJob {
+        ctx,
+        out,
+        spec,
+        layout,
+        cfg,
+        resume,
+        ..
+    } = *job;
     let ck = out.join("checkpoints");
     std::fs::create_dir_all(out.join("objects")).map_err(io(out))?;
     let mut objects = BTreeMap::new();
@@ -147,22 +145,19 @@ pub fn generate_objects(
 /// kept after each one (and read back with `resume`, so a requeued shard redoes only what it
 /// had not finished; a state file of another run is set aside with a line in the log).
 /// Returns the categories this shard holds.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "a stage's device, directory, plan, priors and settings, and its shard"
-)]
 pub fn generate_shard(
-    ctx: &Context,
-    out: &Path,
-    prompt: &str,
-    spec: &SceneSpec,
-    layout: &Layout,
+    job: &SceneJob,
     priors: &mut dyn ScenePriors,
-    cfg: &SceneConfig,
-    resume: bool,
     shard: Shard,
     log: &mut dyn FnMut(&str),
 ) -> Result<Vec<String>, GenError> {
+    let SceneJob {
+        out,
+        prompt,
+        cfg,
+        resume,
+        ..
+    } = *job;
     let ck = out.join("checkpoints");
     std::fs::create_dir_all(&ck).map_err(io(&ck))?;
     let fp = cfg.fingerprint(prompt, &priors.kind());
@@ -192,19 +187,7 @@ pub fn generate_shard(
         crate::util::write_atomic(&state, text.as_bytes()).map_err(io(&state))
     };
     save(&done)?;
-    let made = generate_objects(
-        ctx,
-        out,
-        spec,
-        layout,
-        priors,
-        cfg,
-        resume,
-        Some(shard),
-        &mut done,
-        &mut save,
-        log,
-    )?;
+    let made = generate_objects(job, priors, Some(shard), &mut done, &mut save, log)?;
     Ok(made.into_keys().collect())
 }
 

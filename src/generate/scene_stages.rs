@@ -37,6 +37,20 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+/// One scene run's inputs, shared by its steps (all objects and the environment, or one shard's
+/// objects): the device, the scene directory (holding spec.json and layout.json), the prompt,
+/// the plan, the settings, and whether to continue from `checkpoints/`.
+#[derive(Clone, Copy)]
+pub struct SceneJob<'a> {
+    pub ctx: &'a Context,
+    pub out: &'a Path,
+    pub prompt: &'a str,
+    pub spec: &'a SceneSpec,
+    pub layout: &'a Layout,
+    pub cfg: &'a SceneConfig,
+    pub resume: bool,
+}
+
 /// Settings of a scene generation. Defaults are the paper's and the authors' code's.
 #[derive(Debug, Clone)]
 pub struct SceneConfig {
@@ -270,24 +284,23 @@ pub fn stage_fit(iterations: u32, seed: u64) -> FitConfig {
     }
 }
 
-/// Generates objects and environment into `out` (which holds spec.json and layout.json), writes
-/// `objects/*.ply`, `environment.ply`, `scene.ply` and returns the counts. `scene.json` is the
-/// caller's (it knows the prompt's provenance).
-#[allow(
-    clippy::too_many_arguments,
-    reason = "the stages' inputs, one argument each"
-)]
+/// Generates objects and environment into the job's `out` (which holds spec.json and
+/// layout.json), writes `objects/*.ply`, `environment.ply`, `scene.ply` and returns the counts.
+/// `scene.json` is the caller's (it knows the prompt's provenance).
 pub fn generate_scene(
-    ctx: &Context,
-    out: &Path,
-    prompt: &str,
-    spec: &SceneSpec,
-    layout: &Layout,
+    job: &SceneJob,
     priors: &mut dyn ScenePriors,
-    cfg: &SceneConfig,
-    resume: bool,
     log: &mut dyn FnMut(&str),
 ) -> Result<SceneReport, GenError> {
+    let SceneJob {
+        ctx,
+        out,
+        prompt,
+        spec,
+        layout,
+        cfg,
+        resume,
+    } = *job;
     let t0 = std::time::Instant::now();
     let ck = out.join("checkpoints");
     std::fs::create_dir_all(&ck).map_err(io(&ck))?;
@@ -318,13 +331,8 @@ pub fn generate_scene(
     }
     let mut done = std::mem::take(&mut run.objects_done);
     let objects = super::scene_objects::generate_objects(
-        ctx,
-        out,
-        spec,
-        layout,
+        job,
         priors,
-        cfg,
-        resume,
         None,
         &mut done,
         &mut |d| {

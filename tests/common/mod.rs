@@ -159,3 +159,24 @@ pub fn obj(
         placed_by: PlacedBy::Constraint,
     }
 }
+
+/// Whether a test may use an outside tool that `scripts/setup.sh` installs (Blender, Slurm,
+/// kubernetes-validate): `problem` is `None` when it can run, or one line saying what is missing
+/// and how to install it. A missing tool fails the test with that line, since a check that
+/// passes without running is a defect. `DREAMSCENE_SKIP_EXTERNAL` (comma-separated names, or
+/// `all`) opts out explicitly; the test then prints that it skipped and returns false.
+pub fn external_tool(name: &str, problem: Option<String>) -> bool {
+    let opted_out = std::env::var("DREAMSCENE_SKIP_EXTERNAL").is_ok_and(|v| {
+        v.split(',')
+            .map(str::trim)
+            .any(|n| n.eq_ignore_ascii_case(name) || n.eq_ignore_ascii_case("all"))
+    });
+    if opted_out {
+        println!("SKIPPED the {name} check: DREAMSCENE_SKIP_EXTERNAL names {name}");
+        return false;
+    }
+    if let Some(p) = problem {
+        panic!("{p}; or set DREAMSCENE_SKIP_EXTERNAL={name} to skip this check");
+    }
+    true
+}

@@ -45,6 +45,39 @@ pub fn node_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node")
 }
 
+/// Whether Blender's glTF importer can be run: Blender itself and the numpy its add-on needs.
+/// Missing, the test fails saying how to install them, unless `DREAMSCENE_SKIP_EXTERNAL` names
+/// `blender` (see `common::external_tool`).
+pub fn blender_ready() -> bool {
+    let runs = |cmd: &str, args: &[&str]| {
+        Command::new(cmd)
+            .args(args)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    let problem = if !runs("blender", &["--version"]) {
+        Some("Blender is missing: apt-get install blender python3-numpy".to_string())
+    } else if !runs(
+        "blender",
+        &[
+            "-b",
+            "--factory-startup",
+            "--python-exit-code",
+            "1",
+            "--python-expr",
+            "import numpy",
+        ],
+    ) {
+        Some(
+            "numpy (Blender's glTF importer needs it) is missing: apt-get install python3-numpy"
+                .to_string(),
+        )
+    } else {
+        None
+    };
+    crate::common::external_tool("blender", problem)
+}
+
 /// Fails (never skips) when Node.js or a reader package is missing.
 pub fn require_readers() {
     let node = Command::new("node").arg("--version").output();
