@@ -185,7 +185,10 @@ pub const FLANK_GAP: f64 = 0.15;
 pub const FLANK_BACK: f64 = 0.25;
 /// Footprint gap range of CIRCLE (seats round a fire).
 pub const CIRCLE_GAP: (f64, f64) = (0.6, 1.5);
-/// Largest angle of "facing" in AROUND, AT, FLANK, CIRCLE and ROW.
+/// Footprint gap range of BEFORE: a seat's room between the subject and its object (a
+/// teacher's chair between the desk and the board), and no farther than the front of a room.
+pub const BEFORE_GAP: (f64, f64) = (0.7, 2.5);
+/// Largest angle of "facing" in AROUND, AT, AT_BACK, FLANK, CIRCLE, ROW and BEFORE.
 pub const FACING_TOLERANCE: f64 = 30.0;
 
 /// The point of `o`'s footprint nearest to `p`.
@@ -276,6 +279,20 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
                 && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
         }
         RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) >= 180.0 - FACING_TOLERANCE,
+        RelationKind::AtBack => {
+            l[1] < -hd
+                && band(0, hw)
+                && overlap_depth(sb, ob) <= TOLERANCE
+                && gap(sb, ob) <= SEAT_GAP
+                && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::Before => {
+            let g = gap(sb, ob);
+            l[1] > hd
+                && band(0, hw)
+                && (BEFORE_GAP.0 - 1e-9..=BEFORE_GAP.1 + 1e-9).contains(&g)
+                && yaw_difference(sb, ob) <= FACING_TOLERANCE
+        }
     }
 }
 

@@ -482,9 +482,11 @@ fn is_group(rel: RelationKind) -> bool {
         rel,
         RelationKind::Around
             | RelationKind::At
+            | RelationKind::AtBack
             | RelationKind::Flank
             | RelationKind::Circle
             | RelationKind::Row
+            | RelationKind::Before
     )
 }
 
