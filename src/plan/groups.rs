@@ -87,9 +87,15 @@ const RULES: &[Rule] = &[
     Rule {
         // desks turned the way their user looks (to the board, to the class): the seat at
         // the back
-        subjects: &["dining chair", "student chair", "office chair"],
+        subjects: &["dining chair", "student chair"],
         relation: RelationKind::AtBack,
-        objects: &["school desk", "teacher desk"],
+        objects: &["school desk"],
+        per_object: Some(1),
+    },
+    Rule {
+        subjects: &["office chair"],
+        relation: RelationKind::AtBack,
+        objects: &["teacher desk"],
         per_object: Some(1),
     },
     Rule {

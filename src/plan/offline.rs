@@ -1027,18 +1027,32 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
     }
     if let Some(sc) = scene {
+        // a scene's relation of a default that a named thing of its role replaced holds for
+        // that thing (the teacher's desk before the whiteboard that replaced the blackboard)
+        let filling = |c: &str| -> Option<String> {
+            if counts.contains_key(c) {
+                return Some(c.to_string());
+            }
+            let role = super::roles::role_of(c)?;
+            counts
+                .keys()
+                .find(|k| super::roles::role_of(k) == Some(role))
+                .cloned()
+        };
         for rel in &sc.relations {
-            let (Some(&ns), Some(&no)) = (counts.get(&rel.subject), counts.get(&rel.object)) else {
+            let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
+            else {
                 continue;
             };
+            let (ns, no) = (counts[&subject], counts[&object]);
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
                 let ko = if rel.every && no == ns { k } else { 1 };
                 push(
                     &mut spec,
-                    format!("{}{k}", rel.subject),
+                    format!("{subject}{k}"),
                     rel.relation,
-                    format!("{}{ko}", rel.object),
+                    format!("{object}{ko}"),
                     false,
                 );
             }
