@@ -435,7 +435,15 @@ impl Problem {
                 relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
             ok += holds as usize;
-            near += super::check::gap(&b, &bj).min(3.0);
+            if rel == RelationKind::Opposite {
+                // the two ends face each other, in range or not (a wall TV on the wall the
+                // sofa faces, not behind it), rather than stand close
+                let (sb, ob) = if subject { (&b, &bj) } else { (&bj, &b) };
+                pose_bonus +=
+                    2.0 * FACING_WEIGHT * super::check::facing_error(sb, ob).to_radians().cos();
+            } else {
+                near += super::check::gap(&b, &bj).min(3.0);
+            }
             if free_yaw {
                 if matches!(rel, RelationKind::Over | RelationKind::Under) {
                     // stacked things line up with their partner
