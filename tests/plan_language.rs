@@ -448,7 +448,10 @@ fn a_classroom_faces_its_board_and_every_seat_is_reached() {
             .or(of("whiteboard").first())
             .unwrap_or_else(|| panic!("{p}: no board"));
         let bb = Box2::of(board);
-        assert!(board.position[2] >= 0.4, "{p}: the board stands on the floor");
+        assert!(
+            board.position[2] >= 0.4,
+            "{p}: the board stands on the floor"
+        );
         let pupils = of("dining chair");
         assert!(pupils.len() >= 10, "{p}: {} pupils' chairs", pupils.len());
         for c in &pupils {

@@ -5,6 +5,7 @@ use super::spec::{
     SceneType,
 };
 
+pub mod fronts;
 pub mod walk;
 
 /// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.

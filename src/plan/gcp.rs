@@ -16,6 +16,7 @@ use super::spec::{
 use rand::{Rng, SeedableRng};
 
 pub mod classes;
+mod clear;
 mod compose;
 mod fit;
 pub mod openings;
@@ -116,6 +117,8 @@ struct Problem {
     faced: Vec<bool>,
     /// Per instance: hung on a wall (touching it).
     wall_hung: Vec<bool>,
+    /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
+    fronts: Vec<Option<f64>>,
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     sightlines: Vec<(usize, usize)>,
     step: f64,
@@ -478,7 +481,12 @@ impl Problem {
                 pose_bonus += LOOKAHEAD_WEIGHT;
             }
         }
-        let comp = self.composition(i, p, &b, placed, boxes);
+        // a front kept clear is one more constraint (a seat that can only be drawn up before
+        // the stove's front is a relaxed one)
+        let front = self.front_cost(i, &b, boxes);
+        total += 1;
+        ok += (front == 0.0) as usize;
+        let comp = self.composition(i, p, &b, placed, boxes) - front;
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
@@ -654,7 +662,17 @@ fn layout_in_pinned(
         .iter()
         .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
         .collect();
+    let fronts: Vec<Option<f64>> = inst
+        .iter()
+        .zip(&hung)
+        .map(|(i, h)| {
+            h.is_none()
+                .then(|| classes::Placements::builtin().front_clearance(&i.category))
+                .flatten()
+        })
+        .collect();
     let mut prob = Problem {
+        fronts,
         faced,
         wall_hung,
         sightlines,
@@ -700,7 +718,8 @@ fn layout_in_pinned(
         prob.place_rows(spec, &mut fixed);
         let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
         l.openings = prob.openings.clone();
-        let q = quality(&prob, &l);
+        let q =
+            quality(&prob, &l) - 3.0 * super::check::fronts::fronts_blocked(&l, spec).len() as f64;
         if best.as_ref().is_none_or(|b| q > b.0) {
             best = Some((q, l));
         }

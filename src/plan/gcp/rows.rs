@@ -178,7 +178,12 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         .iter()
         .filter(|r| r.relation == RelationKind::Before)
         .filter(|r| at_front.iter().any(|t| t == base(&r.object)))
-        .filter_map(|r| Some((spec.objects.get(base(&r.object))?, spec.objects.get(base(&r.subject))?)))
+        .filter_map(|r| {
+            Some((
+                spec.objects.get(base(&r.object))?,
+                spec.objects.get(base(&r.subject))?,
+            ))
+        })
         .map(|(t, s)| t.size[1] + crate::plan::check::BEFORE_GAP.0 + 0.1 + s.size[1] + PASSAGE)
         .fold(0.0, f64::max);
     let front = front.max(before);
