@@ -662,11 +662,12 @@ fn layout_in_pinned(
         .iter()
         .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
         .collect();
+    // (the retry of a room the first search could not pack gives its fronts up)
     let fronts: Vec<Option<f64>> = inst
         .iter()
         .zip(&hung)
         .map(|(i, h)| {
-            h.is_none()
+            (h.is_none() && !largest_first)
                 .then(|| classes::Placements::builtin().front_clearance(&i.category))
                 .flatten()
         })
