@@ -480,3 +480,104 @@ fn window_and_door_phrases_are_satisfied() {
         "{r:?} {door:?}"
     );
 }
+
+/// Nothing stands against the front of a stove, a fridge, a washing machine or a wardrobe
+/// (kb/placement.txt's front clearances): the checker sees a table against a stove's front and
+/// not one a metre off, nor a rug there; hand-built rooms and the own prompts keep every front
+/// clear over four seeds.
+#[test]
+fn appliance_fronts_are_kept_clear() {
+    use dreamscene::plan::check::fronts::fronts_blocked;
+    let o = |id: &str, size: [f64; 3], pos: [f64; 3], yaw: f64| PlacedObject {
+        id: id.into(),
+        category: id.trim_end_matches(char::is_numeric).into(),
+        size,
+        position: pos,
+        yaw,
+        anchor: Anchor::Others,
+        placed_by: PlacedBy::Constraint,
+    };
+    let stove = o("stove1", [0.6, 0.6, 0.9], [0.0, -1.19, 0.0], 0.0);
+    let room = |objects: Vec<PlacedObject>| Layout {
+        scene_type: SceneType::Indoor,
+        room: Room {
+            size: [3.2, 3.0, 2.8],
+        },
+        seed: 0,
+        objects,
+        unsatisfied: vec![],
+        openings: vec![],
+    };
+    let spec: SceneSpec =
+        serde_json::from_str(r#"{"scene_type":"indoor","scene_text":"a kitchen","objects":{}}"#)
+            .expect("spec");
+    let against = room(vec![
+        stove.clone(),
+        o("dining table1", [1.0, 0.8, 0.75], [0.1, -0.3, 0.0], 0.0),
+    ]);
+    assert_eq!(
+        fronts_blocked(&against, &spec),
+        vec![("dining table1".to_string(), "stove1".to_string())]
+    );
+    let apart = room(vec![
+        stove.clone(),
+        o("dining table1", [1.0, 0.8, 0.75], [0.1, 0.6, 0.0], 0.0),
+        o("rug1", [1.0, 0.7, 0.01], [0.0, -0.4, 0.0], 0.0),
+    ]);
+    assert!(
+        fronts_blocked(&apart, &spec).is_empty(),
+        "a metre off, a rug"
+    );
+    let spec = |room: &str, objects: &str, relations: &str| -> SceneSpec {
+        serde_json::from_str(&format!(
+            r#"{{"scene_type":"indoor","scene_text":"a room","room":{{"size":{room}}},"objects":{{{objects}}},"relations":[{relations}]}}"#
+        ))
+        .expect("spec")
+    };
+    let item = |c: &str, n: u32, s: [f64; 3]| {
+        format!(r#""{c}":{{"number":{n},"size":{s:?},"description":"a {c}"}}"#)
+    };
+    let kitchen = spec(
+        "[3.2, 3.0, 2.8]",
+        &[
+            item("stove", 1, [0.6, 0.6, 0.9]),
+            item("refrigerator", 1, [0.7, 0.7, 1.8]),
+            item("kitchen sink", 1, [0.8, 0.6, 0.9]),
+            item("dining table", 1, [0.9, 0.8, 0.75]),
+            item("dining chair", 2, [0.45, 0.5, 0.9]),
+        ]
+        .join(","),
+        r#"{"subject":"dining chair1","relation":"AROUND","object":"dining table1"},
+           {"subject":"dining chair2","relation":"AROUND","object":"dining table1"}"#,
+    );
+    let laundry = spec(
+        "[3.0, 2.6, 2.8]",
+        &[
+            item("washing machine", 1, [0.6, 0.6, 0.85]),
+            item("dryer", 1, [0.6, 0.6, 0.85]),
+            item("wardrobe", 1, [1.2, 0.6, 2.0]),
+            item("folding table", 1, [1.0, 0.6, 0.75]),
+        ]
+        .join(","),
+        "",
+    );
+    for (name, s) in [("kitchen", kitchen), ("laundry", laundry)] {
+        for seed in 0..4 {
+            let l = layout(&s, LayoutOptions::seeded(seed)).expect("laid out");
+            assert!(validity_problems(&l, &s).is_empty(), "{name} {seed}");
+            let b = fronts_blocked(&l, &s);
+            assert!(b.is_empty(), "{name} seed {seed}: {b:?}");
+        }
+    }
+    for p in [
+        "a small kitchen with a stove, a fridge, a sink and a little table with two chairs",
+        "a laundry room with a washing machine, a dryer, a wardrobe and a folding table",
+    ] {
+        for seed in 0..4 {
+            let plan = plan_prompt(p).expect("planned");
+            let l = layout(&plan.spec, LayoutOptions::seeded(seed)).expect("laid out");
+            let b = fronts_blocked(&l, &plan.spec);
+            assert!(b.is_empty(), "{p} seed {seed}: {b:?}");
+        }
+    }
+}

@@ -1,7 +1,7 @@
 //! The examples of what people write that the planner must read as a person would: noun
 //! phrases, relation phrases, negation, exact counts, units, scene refinements, unreadable
 //! prompts, rooms too small for what is named, and functional groups in the laid-out rooms.
-use dreamscene::plan::check::{relation_holds, validity_problems, Box2};
+use dreamscene::plan::check::{facing_error, relation_holds, validity_problems, walk, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::lang::{is_function_word, is_verb};
 use dreamscene::plan::offline::{plan_prompt, PlanError};
@@ -313,7 +313,7 @@ fn side_of(table: &PlacedObject, o: &PlacedObject) -> usize {
 
 #[test]
 fn functional_groups_are_laid_out_as_people_furnish() {
-    // Classroom: 12 school desks (no office desks), one chair each at its front, desks in rows
+    // Classroom: 12 school desks (no office desks), one chair each at its back, desks in rows
     // turned the same way, facing the board.
     let (s, l, by) = laid_out("a classroom with 12 desks", 0);
     assert_eq!(s.objects["school desk"].number, 12);
@@ -340,7 +340,7 @@ fn functional_groups_are_laid_out_as_people_furnish() {
     fn by_id(l: &Layout, id: &str) -> PlacedObject {
         l.objects.iter().find(|o| o.id == id).unwrap().clone()
     }
-    let (ok, n) = held(&s, RelationKind::At);
+    let (ok, n) = held(&s, RelationKind::AtBack);
     assert!(
         n == 13 && ok == n,
         "12 chairs at desks and the teacher's: {ok}/{n}"
@@ -425,5 +425,66 @@ fn functional_groups_are_laid_out_as_people_furnish() {
             "{}",
             r.subject
         );
+    }
+}
+
+/// A classroom as a person furnishes it: the board on a wall; the teacher's desk between the
+/// board and the rows, turned to the class, the teacher's chair behind it; every pupil's desk
+/// turned to the board with the pupil's chair at its back, so every pupil faces the board; and
+/// a way in from the door to every seat.
+#[test]
+fn a_classroom_faces_its_board_and_every_seat_is_reached() {
+    for (p, seed) in [
+        ("a classroom for 24 students", 0),
+        ("a schoolroom with ten desks and a whiteboard", 1),
+        ("an exam hall for 30 students", 2),
+    ] {
+        let (_, l, by) = laid_out(p, seed);
+        let of = |c: &str| -> Vec<&PlacedObject> {
+            l.objects.iter().filter(|o| o.category == c).collect()
+        };
+        let board = *of("blackboard")
+            .first()
+            .or(of("whiteboard").first())
+            .unwrap_or_else(|| panic!("{p}: no board"));
+        let bb = Box2::of(board);
+        assert!(
+            board.position[2] >= 0.4,
+            "{p}: the board stands on the floor"
+        );
+        let pupils = of("dining chair");
+        assert!(pupils.len() >= 10, "{p}: {} pupils' chairs", pupils.len());
+        for c in &pupils {
+            let e = facing_error(&Box2::of(c), &bb);
+            assert!(e <= 40.0, "{p}: {} turned {e:.0} deg from the board", c.id);
+        }
+        for d in of("school desk") {
+            let e = facing_error(&Box2::of(d), &bb);
+            assert!(e <= 40.0, "{p}: {} turned {e:.0} deg from the board", d.id);
+        }
+        // the teacher's desk: before the board, nearer it than any pupil's desk, turned as
+        // the board (to the class), its chair between it and the board
+        let t = by["teacher desk1"].clone();
+        let tb = Box2::of(&t);
+        let to_board = |o: &PlacedObject| bb.local([o.position[0], o.position[1]])[1];
+        let nearest_pupil = of("school desk")
+            .iter()
+            .map(|d| to_board(d))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            to_board(&t) > 0.0 && to_board(&t) < nearest_pupil,
+            "{p}: the teacher's desk is not between the board and the rows"
+        );
+        assert!(
+            dreamscene::plan::check::yaw_difference(&tb, &bb) <= 30.0,
+            "{p}: the teacher's desk is not turned to the class"
+        );
+        let chair = by["office chair1"].clone();
+        assert!(
+            to_board(&chair) < to_board(&t),
+            "{p}: the teacher's chair is not behind the desk"
+        );
+        let lost = walk::unreachable(&l);
+        assert!(lost.is_empty(), "{p}: no way to {lost:?}");
     }
 }

@@ -99,7 +99,10 @@ pub fn pose_from_flags(state: &SceneState, id: &str, flags: &MoveFlags) -> Resul
             r.subject == id
                 && matches!(
                     r.relation,
-                    RelationKind::At | RelationKind::Around | RelationKind::Circle
+                    RelationKind::At
+                        | RelationKind::AtBack
+                        | RelationKind::Around
+                        | RelationKind::Circle
                 )
         });
         if let Some(t) = partner.and_then(|r| state.object(&r.object).ok()) {

@@ -3,7 +3,9 @@
 //! relations of `spec.json`, oriented-box collisions against the walls and the other objects,
 //! and composition of a scene whose changed PLYs are still in memory. Host-only.
 use super::EditError;
-use crate::plan::check::{penetration, relation_holds_box, wall_distances, Box2, TOLERANCE};
+use crate::plan::check::{
+    penetration, relation_unsatisfied, relations_unsatisfied, wall_distances, Box2, TOLERANCE,
+};
 use crate::plan::spec::{Anchor, Layout, PlacedBy, PlacedObject, Relation, SceneType};
 use crate::scene::compose::{merge, place};
 use crate::scene::dir::{read_scene, SceneFile, SceneObject};
@@ -110,10 +112,9 @@ impl SceneState {
         )
     }
 
-    /// The layout of the current scene (positions, yaws and sizes of `scene.json`, anchors kept).
-    pub fn current_layout(&self) -> Layout {
-        let objects = self
-            .scene
+    /// The instances at their current transforms, as placed objects (anchors kept).
+    fn placed_objects(&self) -> Vec<PlacedObject> {
+        self.scene
             .objects
             .iter()
             .map(|o| {
@@ -131,13 +132,13 @@ impl SceneState {
                     placed_by: planned.map_or(PlacedBy::Constraint, |p| p.placed_by),
                 }
             })
-            .collect();
-        let unsatisfied = self
-            .relations
-            .iter()
-            .filter(|r| !self.relation_holds(r))
-            .cloned()
-            .collect();
+            .collect()
+    }
+
+    /// The layout of the current scene (positions, yaws and sizes of `scene.json`, anchors kept).
+    pub fn current_layout(&self) -> Layout {
+        let objects = self.placed_objects();
+        let unsatisfied = relations_unsatisfied(&objects, &self.relations);
         Layout {
             scene_type: self.scene.scene_type,
             room: crate::plan::spec::Room {
@@ -153,13 +154,11 @@ impl SceneState {
         }
     }
 
-    /// Whether relation `r` holds between the current instances.
+    /// Whether relation `r` holds between the current instances, as the layout judges it
+    /// ([`relation_unsatisfied`]: FRONT / BEHIND alone within reach, OPPOSITE's sightline
+    /// clear); true when it names an instance the scene does not have.
     pub fn relation_holds(&self, r: &Relation) -> bool {
-        let find = |id: &str| self.scene.objects.iter().find(|o| o.id == id);
-        match (find(&r.subject), find(&r.object)) {
-            (Some(s), Some(o)) => relation_holds_box(&self.box_of(s), r.relation, &self.box_of(o)),
-            _ => true,
-        }
+        !relation_unsatisfied(&self.placed_objects(), &self.relations, r)
     }
 
     /// Why instance `id` at its current transform collides, compared with `before` (its state
@@ -291,4 +290,103 @@ pub fn extent(g: &Gaussians) -> [f64; 3] {
         e[2] = e[2].max(m[2] as f64);
     }
     e
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scene directory of a sofa, its coffee table (FRONT, alone) and a TV stand OPPOSITE it,
+    /// with sizes from layout.json (no PLYs needed).
+    fn scene(dir: &Path, table_y: f64, blocker: bool) {
+        std::fs::create_dir_all(dir).expect("dir");
+        let mut objects = vec![
+            ("sofa1", "sofa", [2.0, 0.9, 0.8], [0.0, -1.5, 0.0], 0.0),
+            (
+                "coffee table1",
+                "coffee table",
+                [1.0, 0.5, 0.45],
+                [0.0, table_y, 0.0],
+                0.0,
+            ),
+            (
+                "tv stand1",
+                "tv stand",
+                [1.4, 0.4, 0.5],
+                [0.0, 1.6, 0.0],
+                180.0,
+            ),
+        ];
+        if blocker {
+            objects.push((
+                "bookshelf1",
+                "bookshelf",
+                [1.0, 0.35, 1.9],
+                [0.0, 1.0, 0.0],
+                0.0,
+            ));
+        }
+        let scene_objects: Vec<serde_json::Value> = objects
+            .iter()
+            .map(|(id, c, _, p, y)| {
+                serde_json::json!({"id": id, "category": c, "ply": format!("objects/{c}.ply"),
+                    "position": p, "yaw": y, "scale": [1.0, 1.0, 1.0]})
+            })
+            .collect();
+        let placed: Vec<serde_json::Value> = objects
+            .iter()
+            .map(|(id, c, s, p, y)| {
+                serde_json::json!({"id": id, "category": c, "size": s, "position": p, "yaw": y,
+                    "anchor": "OTHERS", "placed_by": "constraint"})
+            })
+            .collect();
+        let room = serde_json::json!({"size": [5.0, 4.4, 2.8]});
+        let write = |name: &str, v: serde_json::Value| {
+            std::fs::write(dir.join(name), v.to_string()).expect("write");
+        };
+        write(
+            "scene.json",
+            serde_json::json!({"version": 1, "prompt": "a living room", "seed": 0,
+                "scene_type": "indoor", "room": room, "prior": {"kind": "shape", "models": null},
+                "objects": scene_objects, "environment": null, "stages": [], "timeline": null}),
+        );
+        write(
+            "layout.json",
+            serde_json::json!({"scene_type": "indoor", "room": room, "seed": 0,
+                "objects": placed, "unsatisfied": []}),
+        );
+        write(
+            "spec.json",
+            serde_json::json!({"scene_type": "indoor", "scene_text": "a living room",
+                "objects": {}, "relations": [
+                {"subject": "coffee table1", "relation": "FRONT", "object": "sofa1"},
+                {"subject": "tv stand1", "relation": "OPPOSITE", "object": "sofa1"}]}),
+        );
+    }
+
+    #[test]
+    fn edits_judge_relations_as_the_layout_does() {
+        let dir = std::env::temp_dir().join(format!("dreamscene-state-{}", std::process::id()));
+        let holds = |table_y: f64, blocker: bool| {
+            let _ = std::fs::remove_dir_all(&dir);
+            scene(&dir, table_y, blocker);
+            let s = SceneState::open(&dir).expect("open");
+            let r = s.relations.clone();
+            assert_eq!(r.len(), 2, "relations read");
+            let got = (s.relation_holds(&r[0]), s.relation_holds(&r[1]));
+            assert_eq!(
+                s.current_layout().unsatisfied.len(),
+                [got.0, got.1].iter().filter(|h| !**h).count(),
+                "the layout's report agrees"
+            );
+            got
+        };
+        // within reach of the sofa, sightline clear
+        assert_eq!(holds(-0.75, false), (true, true));
+        // 1.4 m off the sofa: FRONT by the plain reading (gap <= 3 m), not within reach
+        assert_eq!(holds(0.45, false), (false, true));
+        // a bookcase between the sofa and the TV stand blocks the sightline
+        assert_eq!(holds(-0.75, true), (true, false));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

@@ -5,6 +5,7 @@ use super::spec::{
     SceneType,
 };
 
+pub mod fronts;
 pub mod walk;
 
 /// Footprint of an object: centre, yaw (radians), half extents (width, depth), and z range.
@@ -185,7 +186,10 @@ pub const FLANK_GAP: f64 = 0.15;
 pub const FLANK_BACK: f64 = 0.25;
 /// Footprint gap range of CIRCLE (seats round a fire).
 pub const CIRCLE_GAP: (f64, f64) = (0.6, 1.5);
-/// Largest angle of "facing" in AROUND, AT, FLANK, CIRCLE and ROW.
+/// Footprint gap range of BEFORE: a seat's room between the subject and its object (a
+/// teacher's chair between the desk and the board), and no farther than the front of a room.
+pub const BEFORE_GAP: (f64, f64) = (0.7, 2.5);
+/// Largest angle of "facing" in AROUND, AT, AT_BACK, FLANK, CIRCLE, ROW and BEFORE.
 pub const FACING_TOLERANCE: f64 = 30.0;
 
 /// The point of `o`'s footprint nearest to `p`.
@@ -276,6 +280,20 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
                 && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
         }
         RelationKind::Row => l[1] > hd && yaw_difference(sb, ob) >= 180.0 - FACING_TOLERANCE,
+        RelationKind::AtBack => {
+            l[1] < -hd
+                && band(0, hw)
+                && overlap_depth(sb, ob) <= TOLERANCE
+                && gap(sb, ob) <= SEAT_GAP
+                && facing_footprint_error(sb, ob) <= FACING_TOLERANCE
+        }
+        RelationKind::Before => {
+            let g = gap(sb, ob);
+            l[1] > hd
+                && band(0, hw)
+                && (BEFORE_GAP.0 - 1e-9..=BEFORE_GAP.1 + 1e-9).contains(&g)
+                && yaw_difference(sb, ob) <= FACING_TOLERANCE
+        }
     }
 }
 
@@ -315,11 +333,26 @@ pub fn blocks_sight(k: &Box2, zone: &Box2) -> bool {
     k.z1 > SIGHTLINE_HEIGHT && k.z0 < SIGHTLINE_CLEAR_ABOVE && overlap_depth(k, zone) > 0.02
 }
 
-/// The relations of `relations` that `objects` do not satisfy: each as [`relation_holds`] says
-/// (FRONT / BEHIND as [`relation_holds_alone`] when the subject is the only one in that relation
-/// to its object), and an OPPOSITE pair also with nothing but what stands on its ends blocking
-/// its [`sight_zone`]. Relations naming no object are left out.
+/// The relations of `relations` that `objects` do not satisfy, each as
+/// [`relation_unsatisfied`] judges it. Relations naming no object are left out.
 pub fn relations_unsatisfied(objects: &[PlacedObject], relations: &[Relation]) -> Vec<Relation> {
+    relations
+        .iter()
+        .filter(|r| relation_unsatisfied(objects, relations, r))
+        .cloned()
+        .collect()
+}
+
+/// Whether `objects` do not satisfy relation `r` of the set `relations`: as [`relation_holds`]
+/// says (FRONT / BEHIND as [`relation_holds_alone`] when the subject is the only one in that
+/// relation to its object in `relations`), and an OPPOSITE pair also with nothing but what
+/// stands on its ends blocking its [`sight_zone`]. False when `r` names no object of `objects`.
+/// The layout's report and the edits judge relations with it alike.
+pub fn relation_unsatisfied(
+    objects: &[PlacedObject],
+    relations: &[Relation],
+    r: &Relation,
+) -> bool {
     let find = |id: &str| objects.iter().find(|o| o.id == id);
     let stacked = |a: &str, b: &str| {
         relations.iter().any(|r| {
@@ -327,35 +360,29 @@ pub fn relations_unsatisfied(objects: &[PlacedObject], relations: &[Relation]) -
                 && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
         })
     };
-    relations
+    let (Some(s), Some(o)) = (find(&r.subject), find(&r.object)) else {
+        return false;
+    };
+    let alone = relations
         .iter()
-        .filter(|r| {
-            let (Some(s), Some(o)) = (find(&r.subject), find(&r.object)) else {
-                return false;
-            };
-            let alone = relations
-                .iter()
-                .filter(|q| q.object == r.object && q.relation == r.relation)
-                .count()
-                == 1;
-            let (sb, ob) = (Box2::of(s), Box2::of(o));
-            if !relation_holds_alone(&sb, r.relation, &ob, alone) {
-                return true;
-            }
-            if r.relation != RelationKind::Opposite {
-                return false;
-            }
-            let zone = sight_zone(&sb, &ob);
-            objects.iter().any(|k| {
-                k.id != s.id
-                    && k.id != o.id
-                    && !stacked(&k.id, &s.id)
-                    && !stacked(&k.id, &o.id)
-                    && blocks_sight(&Box2::of(k), &zone)
-            })
-        })
-        .cloned()
-        .collect()
+        .filter(|q| q.object == r.object && q.relation == r.relation)
+        .count()
+        == 1;
+    let (sb, ob) = (Box2::of(s), Box2::of(o));
+    if !relation_holds_alone(&sb, r.relation, &ob, alone) {
+        return true;
+    }
+    if r.relation != RelationKind::Opposite {
+        return false;
+    }
+    let zone = sight_zone(&sb, &ob);
+    objects.iter().any(|k| {
+        k.id != s.id
+            && k.id != o.id
+            && !stacked(&k.id, &s.id)
+            && !stacked(&k.id, &o.id)
+            && blocks_sight(&Box2::of(k), &zone)
+    })
 }
 
 /// Distances from a footprint to the room's walls: [-x, +x, -y, +y] (negative: outside).

@@ -16,6 +16,7 @@ use super::spec::{
 use rand::{Rng, SeedableRng};
 
 pub mod classes;
+mod clear;
 mod compose;
 mod fit;
 pub mod openings;
@@ -116,6 +117,8 @@ struct Problem {
     faced: Vec<bool>,
     /// Per instance: hung on a wall (touching it).
     wall_hung: Vec<bool>,
+    /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
+    fronts: Vec<Option<f64>>,
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     sightlines: Vec<(usize, usize)>,
     step: f64,
@@ -435,7 +438,15 @@ impl Problem {
                 relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
             ok += holds as usize;
-            near += super::check::gap(&b, &bj).min(3.0);
+            if rel == RelationKind::Opposite {
+                // the two ends face each other, in range or not (a wall TV on the wall the
+                // sofa faces, not behind it), rather than stand close
+                let (sb, ob) = if subject { (&b, &bj) } else { (&bj, &b) };
+                pose_bonus +=
+                    2.0 * FACING_WEIGHT * super::check::facing_error(sb, ob).to_radians().cos();
+            } else {
+                near += super::check::gap(&b, &bj).min(3.0);
+            }
             if free_yaw {
                 if matches!(rel, RelationKind::Over | RelationKind::Under) {
                     // stacked things line up with their partner
@@ -470,7 +481,12 @@ impl Problem {
                 pose_bonus += LOOKAHEAD_WEIGHT;
             }
         }
-        let comp = self.composition(i, p, &b, placed, boxes);
+        // a front kept clear is one more constraint (a seat that can only be drawn up before
+        // the stove's front is a relaxed one)
+        let front = self.front_cost(i, &b, boxes);
+        total += 1;
+        ok += (front == 0.0) as usize;
+        let comp = self.composition(i, p, &b, placed, boxes) - front;
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
@@ -482,9 +498,11 @@ fn is_group(rel: RelationKind) -> bool {
         rel,
         RelationKind::Around
             | RelationKind::At
+            | RelationKind::AtBack
             | RelationKind::Flank
             | RelationKind::Circle
             | RelationKind::Row
+            | RelationKind::Before
     )
 }
 
@@ -644,7 +662,18 @@ fn layout_in_pinned(
         .iter()
         .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
         .collect();
+    // (the retry of a room the first search could not pack gives its fronts up)
+    let fronts: Vec<Option<f64>> = inst
+        .iter()
+        .zip(&hung)
+        .map(|(i, h)| {
+            (h.is_none() && !largest_first)
+                .then(|| classes::Placements::builtin().front_clearance(&i.category))
+                .flatten()
+        })
+        .collect();
     let mut prob = Problem {
+        fronts,
         faced,
         wall_hung,
         sightlines,
@@ -690,7 +719,8 @@ fn layout_in_pinned(
         prob.place_rows(spec, &mut fixed);
         let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
         l.openings = prob.openings.clone();
-        let q = quality(&prob, &l);
+        let q =
+            quality(&prob, &l) - 3.0 * super::check::fronts::fronts_blocked(&l, spec).len() as f64;
         if best.as_ref().is_none_or(|b| q > b.0) {
             best = Some((q, l));
         }

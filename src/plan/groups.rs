@@ -3,7 +3,7 @@
 //! its size, a desk's chair at its front, bar stools in a row at a counter, nightstands flanking
 //! the head of a bed, seats round a fire, desks in rows facing a board, a lamp on a nightstand
 //! or desk, the TV across from the sofa with the coffee table between, a rug under the group.
-//! They become relations of the spec (AROUND, AT, FLANK, CIRCLE, ROW and the plain kinds) that
+//! They become relations of the spec (AROUND, AT, AT_BACK, FLANK, CIRCLE, ROW and the plain kinds) that
 //! the GCP layout satisfies (sun loungers in pairs beneath a parasol); offline and LLM plans both go through [`apply`].
 use super::spec::{Relation, RelationKind, SceneSpec};
 use std::collections::{BTreeMap, BTreeSet};
@@ -75,10 +75,8 @@ const RULES: &[Rule] = &[
             "desk",
             "computer desk",
             "standing desk",
-            "teacher desk",
             "reception desk",
             "drafting table",
-            "school desk",
             "gaming desk",
             "spaceship console",
             "mixing desk",
@@ -87,9 +85,17 @@ const RULES: &[Rule] = &[
         per_object: Some(1),
     },
     Rule {
+        // desks turned the way their user looks (to the board, to the class): the seat at
+        // the back
         subjects: &["dining chair", "student chair"],
-        relation: RelationKind::At,
+        relation: RelationKind::AtBack,
         objects: &["school desk"],
+        per_object: Some(1),
+    },
+    Rule {
+        subjects: &["office chair"],
+        relation: RelationKind::AtBack,
+        objects: &["teacher desk"],
         per_object: Some(1),
     },
     Rule {
@@ -353,7 +359,10 @@ fn shelter_group(spec: &mut SceneSpec) {
     {
         for seat in spec.relations.iter().filter(|r| {
             r.object == roof.subject
-                && matches!(r.relation, RelationKind::Around | RelationKind::At)
+                && matches!(
+                    r.relation,
+                    RelationKind::Around | RelationKind::At | RelationKind::AtBack
+                )
         }) {
             let has = |rs: &[Relation]| {
                 rs.iter()

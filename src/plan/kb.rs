@@ -83,6 +83,8 @@ pub fn parse_relation(s: &str) -> Option<RelationKind> {
         "FLANK" | "FLANKING" | "ON EITHER SIDE OF" => Some(Flank),
         "CIRCLE" | "CIRCLING" => Some(Circle),
         "ROW" | "IN A ROW" | "ROWS" => Some(Row),
+        "AT BACK" => Some(AtBack),
+        "BEFORE" => Some(Before),
         _ => None,
     }
 }
@@ -196,7 +198,8 @@ impl KnowledgeBase {
                 let pos = words
                     .iter()
                     .position(|w| {
-                        w.chars().all(|c| c.is_ascii_uppercase()) && parse_relation(w).is_some()
+                        w.chars().all(|c| c.is_ascii_uppercase() || c == '_')
+                            && parse_relation(w).is_some()
                     })
                     .ok_or_else(|| err(&format!("no relation in `{item}`")))?;
                 let mut subject = words[..pos].join(" ");

@@ -237,7 +237,7 @@ fn small_room(
     // A chair at a desk uses the desk's own room in front of it.
     let tucked = |c: &str| {
         use super::groups::{group_of, seats_per};
-        matches!(group_of(spec, c), Some((super::spec::RelationKind::At, t)) if seats_per(spec, c, &t) == Some(1))
+        matches!(group_of(spec, c), Some((super::spec::RelationKind::At | super::spec::RelationKind::AtBack, t)) if seats_per(spec, c, &t) == Some(1))
     };
     let need: f64 = named_inst
         .iter()
@@ -771,9 +771,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let main_seat = cats_now
             .iter()
             .filter(|c| {
-                use super::spec::RelationKind::{Around, At, Circle};
+                use super::spec::RelationKind::{Around, At, AtBack, Circle};
                 super::groups::group_of(&probe, c)
-                    .is_some_and(|(k, _)| matches!(k, Around | At | Circle))
+                    .is_some_and(|(k, _)| matches!(k, Around | At | AtBack | Circle))
             })
             .max_by_key(|c| {
                 (
@@ -984,6 +984,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
                         rel,
                         super::spec::RelationKind::Around
                             | super::spec::RelationKind::At
+                            | super::spec::RelationKind::AtBack
                             | super::spec::RelationKind::Next
                             | super::spec::RelationKind::Flank
                     ) =>
@@ -997,6 +998,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         if rel == super::spec::RelationKind::Around
             || rel == super::spec::RelationKind::Flank
             || rel == super::spec::RelationKind::At
+            || rel == super::spec::RelationKind::AtBack
         {
             // groups spread them over the object's instances
             if super::groups::group_of(&spec, sc).is_some_and(|(_, t)| t == *oc) {
@@ -1025,18 +1027,32 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
     }
     if let Some(sc) = scene {
+        // a scene's relation of a default that a named thing of its role replaced holds for
+        // that thing (the teacher's desk before the whiteboard that replaced the blackboard)
+        let filling = |c: &str| -> Option<String> {
+            if counts.contains_key(c) {
+                return Some(c.to_string());
+            }
+            let role = super::roles::role_of(c)?;
+            counts
+                .keys()
+                .find(|k| super::roles::role_of(k) == Some(role))
+                .cloned()
+        };
         for rel in &sc.relations {
-            let (Some(&ns), Some(&no)) = (counts.get(&rel.subject), counts.get(&rel.object)) else {
+            let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
+            else {
                 continue;
             };
+            let (ns, no) = (counts[&subject], counts[&object]);
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
                 let ko = if rel.every && no == ns { k } else { 1 };
                 push(
                     &mut spec,
-                    format!("{}{k}", rel.subject),
+                    format!("{subject}{k}"),
                     rel.relation,
-                    format!("{}{ko}", rel.object),
+                    format!("{object}{ko}"),
                     false,
                 );
             }

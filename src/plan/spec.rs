@@ -53,10 +53,23 @@ pub enum RelationKind {
     /// object's frame) and turned to face it: the subject's facing is within 30° of the
     /// opposite of the object's (desks, seats, pews in rows facing a board, screen or altar).
     Row,
+    /// A seat at the back of a desk, facing the way the desk faces (a pupil at a school desk
+    /// turned to the board, a teacher behind a desk turned to the class): the subject's centre
+    /// beyond the object's back face (local y < -depth/2), its footprint in the band that face
+    /// sweeps, the footprint gap at most [`crate::plan::check::SEAT_GAP`], no overlap beyond the
+    /// validity tolerance, and facing the object's footprint within 30°.
+    #[serde(rename = "AT_BACK")]
+    AtBack,
+    /// Before the object and turned the way it faces, with room for a seat between (a teacher's
+    /// desk before the board, facing the class; a lectern before the screen): the subject's
+    /// centre beyond the object's front face (local y > depth/2), its footprint in the band
+    /// that face sweeps, the footprint gap within [`crate::plan::check::BEFORE_GAP`], and its
+    /// facing within 30° of the object's.
+    Before,
 }
 
 impl RelationKind {
-    pub const ALL: [RelationKind; 13] = [
+    pub const ALL: [RelationKind; 15] = [
         RelationKind::Left,
         RelationKind::Right,
         RelationKind::Front,
@@ -70,6 +83,8 @@ impl RelationKind {
         RelationKind::Flank,
         RelationKind::Circle,
         RelationKind::Row,
+        RelationKind::AtBack,
+        RelationKind::Before,
     ];
 
     /// The name as spec.json writes it (`OPPOSITE`).
@@ -89,6 +104,8 @@ impl RelationKind {
             Flank => "FLANK",
             Circle => "CIRCLE",
             Row => "ROW",
+            AtBack => "AT_BACK",
+            Before => "BEFORE",
         }
     }
 }

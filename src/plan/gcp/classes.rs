@@ -25,6 +25,9 @@ pub struct Placement {
     pub class: Class,
     /// Categories that can hold it (on_surface), most fitting first.
     pub supports: Vec<String>,
+    /// Depth kept free before its front (m): a door or drawer that opens there, a person who
+    /// stands there to use it (a stove, a fridge, a wardrobe); `None` when the table gives none.
+    pub front: Option<f64>,
 }
 
 /// The placement table by category.
@@ -44,9 +47,20 @@ impl Placements {
             }
             let err = |m: &str| format!("placement.txt line {}: {m}", n + 1);
             let f: Vec<&str> = line.split('|').map(str::trim).collect();
-            if f.len() != 4 {
-                return Err(err("needs 4 fields: category | class | height | supports"));
+            if f.len() != 4 && f.len() != 5 {
+                return Err(err(
+                    "needs 4 or 5 fields: category | class | height | supports [| front clearance]",
+                ));
             }
+            let front = match f.get(4) {
+                None => None,
+                Some(v) => Some(
+                    v.parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite() && *v > 0.0 && *v <= 2.0)
+                        .ok_or_else(|| err(&format!("front clearance `{v}`")))?,
+                ),
+            };
             let height = match f[2] {
                 "-" => None,
                 h => Some(
@@ -73,7 +87,14 @@ impl Placements {
                 return Err(err("on_surface, and only it, names its supports"));
             }
             if by_category
-                .insert(f[0].to_string(), Placement { class, supports })
+                .insert(
+                    f[0].to_string(),
+                    Placement {
+                        class,
+                        supports,
+                        front,
+                    },
+                )
                 .is_some()
             {
                 return Err(err(&format!("`{}` listed twice", f[0])));
@@ -108,6 +129,11 @@ impl Placements {
             .any(|p| p.supports.iter().any(|s| s == category))
     }
 
+    /// The depth `category` keeps free before its front, if the table gives one.
+    pub fn front_clearance(&self, category: &str) -> Option<f64> {
+        self.get(category).and_then(|p| p.front)
+    }
+
     /// The class of `category` (floor when the table does not name it).
     pub fn class(&self, category: &str) -> Class {
         self.get(category).map_or(Class::Floor, |p| p.class)
@@ -126,6 +152,7 @@ pub fn effective_class(spec: &SceneSpec, category: &str) -> Class {
         Some(Placement {
             class: Class::OnSurface(h),
             supports,
+            ..
         }) => {
             if let (Some(h), true) = (h, on_wall) {
                 Class::OnWall(*h)

@@ -238,7 +238,10 @@ impl super::Problem {
                             (into + 90.0, s[0]),
                             (into - 90.0, s[0]),
                         ] {
-                            for gap in [0.02, 0.3] {
+                            // against the wall, a little off it, or just clear of the
+                            // window's zone (a plant taller than the sill beneath it)
+                            let clear = crate::plan::check::window_zone(o).half[1] * 2.0 + 0.02;
+                            for gap in [0.02, 0.3, clear] {
                                 out.push(super::Pose {
                                     c: at(along, gap + 0.5 * depth),
                                     yaw,

@@ -1,6 +1,6 @@
 //! Where the functional groups put a subject relative to its placed partner: a seat's slots
 //! round a table or along a counter, a nightstand's place beside the bed's head, a ring round a
-//! fire, rows before a board.
+//! fire, rows before a board, a pupil's seat at the back of a desk turned to the board.
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::Box2;
 use crate::plan::spec::RelationKind;
@@ -65,6 +65,33 @@ impl Problem {
                         out.push(Pose {
                             c: at(t, hd + g + 0.5 * s[1]),
                             yaw: pj.yaw + 180.0,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            RelationKind::AtBack => {
+                // Along the partner's back, turned as it is.
+                for g in [0.05, 0.12] {
+                    for t in slots(2.0 * hw, s[0]) {
+                        out.push(Pose {
+                            c: at(t, -hd - g - 0.5 * s[1]),
+                            yaw: pj.yaw,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            RelationKind::Before => {
+                // Before the partner, turned as it is, a seat's room and more from it; centred
+                // or toward one end.
+                let (g0, g1) = crate::plan::check::BEFORE_GAP;
+                let end = (hw - 0.5 * s[0]).max(0.0);
+                for g in [g0 + 0.05, g0 + 0.2, g0 + 0.4, 0.5 * (g0 + g1)] {
+                    for t in [0.0, -0.5 * end, 0.5 * end, -end, end] {
+                        out.push(Pose {
+                            c: at(t, hd + g + 0.5 * s[1]),
+                            yaw: pj.yaw,
                             z: 0.0,
                         });
                     }

@@ -19,6 +19,11 @@ const FRONT: f64 = 1.8;
 const FRONT_MIN: f64 = 1.0;
 /// Walkway behind the last row and beside the rows.
 const BEHIND: f64 = 0.9;
+/// Room between a row's seats and the row behind them: a person walks past a seated row
+/// (a 0.25 m radius walker on a navigation mesh of 10 cm cells keeps 0.4 m from each side).
+const PASSAGE: f64 = 0.8;
+/// The gap a seat keeps from its desk.
+const SEAT_ROOM: f64 = 0.05;
 /// The centre aisle of rows of four or more.
 const AISLE: f64 = 1.0;
 /// The widest angle (degrees) off straight ahead at which a seat at the end of the first
@@ -35,6 +40,8 @@ struct Block {
     gap_x: f64,
     gap_y: f64,
     aisle: f64,
+    /// Depth of the seats at the back of the last row (AT_BACK: a pupil's chair), 0 when none.
+    seat_back: f64,
     /// Free depth in front of the first row: [`FRONT`], or what the rows face and its view,
     /// and deep enough that the ends of a wide row still see the front (0.55 x its width).
     front: f64,
@@ -59,8 +66,9 @@ impl Block {
         self.cols as f64 * self.size[0] + (self.cols - 1) as f64 * self.gap_x + self.aisle
     }
 
+    /// Depth from the first row's front to the back of the last row's seats.
     fn depth(&self) -> f64 {
-        self.rows as f64 * self.size[1] + (self.rows - 1) as f64 * self.gap_y
+        self.rows as f64 * self.size[1] + (self.rows - 1) as f64 * self.gap_y + self.seat_back
     }
 
     /// Room [across, along] the block needs: walkways at both sides and behind, the front band.
@@ -99,15 +107,44 @@ impl Block {
 fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
     let o = spec.objects.get(cat)?;
     let n = o.number as usize;
-    if o.rows == 0 || n < 2 {
+    if n < 2 {
         return None;
     }
-    let rows = (o.rows as usize).min(n);
-    let cols = n.div_ceil(rows);
-    // a seat drawn up to each (a chair at a desk, stools at a bench) needs room between rows
-    let seated = spec.relations.iter().any(|r| {
-        matches!(r.relation, RelationKind::At | RelationKind::Around) && base(&r.object) == cat
+    // rows asked, else rows of about 1.5 times as many as there are rows when every instance
+    // is in ROW before the same front (a classroom's desks)
+    let in_row = (1..=n).all(|k| {
+        let id = format!("{cat}{k}");
+        spec.relations
+            .iter()
+            .any(|r| r.relation == RelationKind::Row && r.subject == id)
     });
+    let rows = match o.rows {
+        0 if in_row => n.div_ceil((1.5 * n as f64).sqrt().ceil() as usize),
+        0 => return None,
+        r => (r as usize).min(n),
+    };
+    let cols = n.div_ceil(rows);
+    // a seat drawn up to each (a chair at a desk, stools at a bench) needs room between rows:
+    // the seat's depth and a passage behind it
+    let seat_depth = spec
+        .relations
+        .iter()
+        .filter(|r| {
+            matches!(
+                r.relation,
+                RelationKind::At | RelationKind::Around | RelationKind::AtBack
+            ) && base(&r.object) == cat
+        })
+        .filter_map(|r| spec.objects.get(base(&r.subject)))
+        .map(|s| s.size[1])
+        .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))));
+    let seat_back = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::AtBack && base(&r.object) == cat)
+        .filter_map(|r| spec.objects.get(base(&r.subject)))
+        .map(|s| s.size[1] + SEAT_ROOM)
+        .fold(0.0, f64::max);
     // what the rows face (a stage, a screen) and a metre to see it from
     let target = spec
         .relations
@@ -134,6 +171,22 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         .filter_map(|t| spec.objects.get(t))
         .map(|t| t.size[0].min(t.size[1]) + 1.0)
         .fold(FRONT, f64::max);
+    // what stands BEFORE the front things (a teacher's desk before the board, its chair
+    // between) and a passage before the first row
+    let before = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Before)
+        .filter(|r| at_front.iter().any(|t| t == base(&r.object)))
+        .filter_map(|r| {
+            Some((
+                spec.objects.get(base(&r.object))?,
+                spec.objects.get(base(&r.subject))?,
+            ))
+        })
+        .map(|(t, s)| t.size[1] + crate::plan::check::BEFORE_GAP.0 + 0.1 + s.size[1] + PASSAGE)
+        .fold(0.0, f64::max);
+    let front = front.max(before);
     let target_width = target
         .as_deref()
         .and_then(|t| spec.objects.get(t))
@@ -147,10 +200,11 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         n,
         rows,
         cols,
+        seat_back,
         size: s,
         gap_x: (0.25 * s[0]).clamp(0.08, 0.5),
-        gap_y: if seated {
-            1.1
+        gap_y: if let Some(depth) = seat_depth {
+            (depth + SEAT_ROOM + PASSAGE).max(1.1)
         } else {
             (0.7 * s[1]).clamp(0.45, 1.0)
         },
