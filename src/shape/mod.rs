@@ -19,6 +19,7 @@ mod daily;
 mod frames;
 pub mod functions;
 mod furniture;
+mod heritage;
 pub mod materials;
 mod more;
 pub mod parts;
