@@ -295,6 +295,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("stall", he::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
     arch!("shelter", he::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
     arch!("armour", he::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
+    arch!("barrel", he::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

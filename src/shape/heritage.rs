@@ -1,9 +1,9 @@
 //! Layouts of things of a trade or an age that people name in fantastical and old places: a
 //! fire pit, a well, a windmill, an anchor, a cannon, a ship's wheel, a spinning wheel, a market
-//! stall, a bus shelter and a suit of armour. The front faces +y.
+//! stall, a bus shelter, a suit of armour and a cooper's barrel. The front faces +y.
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::{self, *};
-use super::parts::{frustum_profile, rot_x, rot_y, Primitive, V3};
+use super::parts::{frustum_profile, rot_x, rot_y, Primitive, IDENTITY, V3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// An oriented box centred at `centre` with half extents `half`, rotated by `rot`.
@@ -580,4 +580,31 @@ pub fn armour(b: &mut Builder) {
         [-0.08 * hr, -0.8 * ry, hz + 0.6 * hr],
         [0.08 * hr, 0.8 * ry, h],
     );
+}
+
+/// A barrel: staves bulging at the middle, iron hoops near the ends and the belly, and a lid.
+pub fn barrel(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = |z: f64| hw * (0.8 + 0.2 * (PI * z / h).sin());
+    let n = 12;
+    let mut profile = vec![[0.0, 0.0]];
+    profile.extend((0..=n).map(|i| {
+        let z = h * i as f64 / n as f64;
+        [r(z), z]
+    }));
+    profile.push([0.0, h]);
+    b.revolved(Body, 0, [0.0, 0.0, 0.0], IDENTITY, hd / hw, profile);
+    for z in [0.1 * h, 0.33 * h, 0.67 * h, 0.9 * h] {
+        let rz = 1.02 * r(z);
+        b.frustum(
+            Metal,
+            [0.0, 0.0, z - 0.015 * h],
+            rz,
+            rz * hd / hw,
+            1.0,
+            0.03 * h,
+        );
+    }
+    let lid = 0.76 * hw;
+    b.frustum(Top, [0.0, 0.0, h - 0.006], lid, lid * hd / hw, 1.0, 0.006);
 }

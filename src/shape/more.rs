@@ -216,10 +216,8 @@ pub fn mirror(b: &mut Builder) {
 pub fn cylinder(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     b.frustum(Body, [0.0, 0.0, 0.0], 0.96 * hw, 0.96 * hd, 1.0, h - 0.03);
-    b.frustum(Top, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
-    for z in [0.2 * h, 0.75 * h] {
-        b.frustum(Metal, [0.0, 0.0, z], 0.975 * hw, 0.975 * hd, 1.0, 0.025);
-    }
+    // A lip of the body's own colour (a lid, a candle's top, a lighthouse's gallery).
+    b.frustum(Body, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
 }
 
 /// A ball: one ellipsoid filling the box when it is about as tall as wide (rocks, bowls); a
