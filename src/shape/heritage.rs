@@ -11,19 +11,6 @@ fn slab(b: &mut Builder, role: Role, variant: u32, centre: V3, half: V3, rot: [[
     b.push(role, variant, Primitive::Cuboid { centre, half, rot });
 }
 
-/// A ring of `segs` rods of radius `r` around `centre` in the plane of the unit vectors `u`, `v`
-/// (a wheel's rim, an anchor's ring).
-fn ring(b: &mut Builder, role: Role, centre: V3, u: V3, v: V3, radius: f64, r: f64, segs: usize) {
-    let at = |t: f64| [0, 1, 2].map(|k| centre[k] + radius * (t.cos() * u[k] + t.sin() * v[k]));
-    for i in 0..segs {
-        let (t0, t1) = (
-            i as f64 / segs as f64 * TAU,
-            (i + 1) as f64 / segs as f64 * TAU,
-        );
-        b.rod(role, at(t0), at(t1), r);
-    }
-}
-
 /// A flat disc (a wheel, a lid) of radius `r` and thickness `t` centred at `centre`, its axis
 /// along `axis`.
 fn disc(b: &mut Builder, role: Role, centre: V3, axis: V3, r: f64, t: f64) {
@@ -39,22 +26,29 @@ fn disc(b: &mut Builder, role: Role, centre: V3, axis: V3, r: f64, t: f64) {
     );
 }
 
-/// A spoked wheel in the plane of `u`, `v` about `centre`: a rim, a hub along `u × v` and
-/// `spokes` spokes; with `handles` the spokes run on past the rim as turned handles (a ship's
-/// wheel).
-#[allow(clippy::too_many_arguments, reason = "a wheel's plane, size and parts")]
+/// A spoked wheel in the plane of the unit vectors `plane` about `centre`: a rim of rods, a hub
+/// along their cross product and `spokes` spokes; with `handles` the spokes run on past the rim
+/// as turned handles (a ship's wheel).
 fn wheel(
     b: &mut Builder,
     role: Role,
     centre: V3,
-    u: V3,
-    v: V3,
+    plane: [V3; 2],
     radius: f64,
     spokes: usize,
     handles: bool,
 ) {
+    let [u, v] = plane;
     let r = (0.06 * radius).max(0.008);
-    ring(b, role, centre, u, v, radius, r, 24);
+    let at = |s: f64, t: f64| [0, 1, 2].map(|k| centre[k] + s * (t.cos() * u[k] + t.sin() * v[k]));
+    let segs = 24;
+    for i in 0..segs {
+        let (t0, t1) = (
+            i as f64 / segs as f64 * TAU,
+            (i + 1) as f64 / segs as f64 * TAU,
+        );
+        b.rod(role, at(radius, t0), at(radius, t1), r);
+    }
     let axis = [
         u[1] * v[2] - u[2] * v[1],
         u[2] * v[0] - u[0] * v[2],
@@ -64,7 +58,7 @@ fn wheel(
     let reach = if handles { 1.3 * radius } else { radius };
     for k in 0..spokes {
         let t = k as f64 / spokes as f64 * TAU;
-        let p = |s: f64| [0, 1, 2].map(|q| centre[q] + s * (t.cos() * u[q] + t.sin() * v[q]));
+        let p = |s: f64| at(s, t);
         b.rod(role, centre, p(reach), 0.5 * r);
         if handles {
             b.rod(role, p(1.08 * radius), p(1.3 * radius), 0.9 * r);
@@ -279,8 +273,7 @@ pub fn cannon(b: &mut Builder) {
             b,
             Tyre,
             c,
-            [0.0, 1.0, 0.0],
-            [0.0, 0.0, 1.0],
+            [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
             0.92 * wheel_r,
             8,
             false,
@@ -337,8 +330,7 @@ pub fn helm(b: &mut Builder) {
         b,
         Frame,
         centre,
-        [1.0, 0.0, 0.0],
-        [0.0, 0.0, 1.0],
+        [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
         radius,
         8,
         true,
@@ -376,8 +368,7 @@ pub fn spinning_wheel(b: &mut Builder) {
         b,
         Frame,
         centre,
-        [1.0, 0.0, 0.0],
-        [0.0, 0.0, 1.0],
+        [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
         radius,
         10,
         false,
