@@ -7,6 +7,7 @@ use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
 use super::heritage as he;
+use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
@@ -292,10 +293,10 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cannon", he::cannon, [Metal], [Metal => [0.12, 0.12, 0.13], Trunk => [0.45, 0.30, 0.18], Tyre => [0.30, 0.20, 0.12], Interior => BLACK]),
     arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
     arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
-    arch!("stall", he::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
-    arch!("shelter", he::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
-    arch!("armour", he::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
-    arch!("barrel", he::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
+    arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
+    arch!("shelter", mk::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
+    arch!("armour", mk::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
+    arch!("barrel", mk::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

@@ -20,6 +20,7 @@ mod frames;
 pub mod functions;
 mod furniture;
 mod heritage;
+mod market;
 pub mod materials;
 mod more;
 pub mod parts;
