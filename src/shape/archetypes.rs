@@ -6,6 +6,8 @@ use super::cases as c;
 use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
+use super::heritage as he;
+use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
@@ -284,6 +286,17 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("globe", d::globe, [Body], [Body => [0.24, 0.44, 0.66], Foliage => [0.55, 0.62, 0.34], Frame => DARK_WOOD, Metal => [0.70, 0.58, 0.32]]),
     arch!("barrow", d::barrow, [Body], [Body => [0.35, 0.45, 0.35], Frame => [0.52, 0.38, 0.24], Top => [0.55, 0.40, 0.25], Metal => [0.45, 0.45, 0.47]]),
     arch!("house", d::house, [Body], [Body => [0.62, 0.46, 0.30], Top => [0.32, 0.28, 0.26], Door => [0.40, 0.27, 0.17], Glass => [0.55, 0.70, 0.80]]),
+    arch!("fire_pit", he::fire_pit, [Body], [Body => STONE, Interior => [0.10, 0.09, 0.08], Trunk => [0.36, 0.26, 0.17], Light => [1.0, 0.55, 0.15]]),
+    arch!("well", he::well, [Body], [Body => STONE, Top => [0.40, 0.27, 0.17], Frame => [0.45, 0.31, 0.19], Metal => [0.35, 0.33, 0.30], Interior => [0.08, 0.12, 0.14], Trunk => [0.40, 0.27, 0.17]]),
+    arch!("windmill", he::windmill, [Body], [Body => [0.86, 0.82, 0.72], Top => [0.35, 0.24, 0.16], Frame => [0.40, 0.28, 0.18], Canvas => [0.93, 0.91, 0.85], Door => [0.40, 0.27, 0.17], Glass => [0.30, 0.35, 0.40]]),
+    arch!("anchor", he::anchor, [Metal], [Metal => [0.20, 0.20, 0.22]]),
+    arch!("cannon", he::cannon, [Metal], [Metal => [0.12, 0.12, 0.13], Trunk => [0.45, 0.30, 0.18], Tyre => [0.30, 0.20, 0.12], Interior => BLACK]),
+    arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
+    arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
+    arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
+    arch!("shelter", mk::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
+    arch!("armour", mk::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
+    arch!("barrel", mk::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
 ];
 

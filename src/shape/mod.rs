@@ -19,6 +19,8 @@ mod daily;
 mod frames;
 pub mod functions;
 mod furniture;
+mod heritage;
+mod market;
 pub mod materials;
 mod more;
 pub mod parts;

@@ -216,10 +216,8 @@ pub fn mirror(b: &mut Builder) {
 pub fn cylinder(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     b.frustum(Body, [0.0, 0.0, 0.0], 0.96 * hw, 0.96 * hd, 1.0, h - 0.03);
-    b.frustum(Top, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
-    for z in [0.2 * h, 0.75 * h] {
-        b.frustum(Metal, [0.0, 0.0, z], 0.975 * hw, 0.975 * hd, 1.0, 0.025);
-    }
+    // A lip of the body's own colour (a lid, a candle's top, a lighthouse's gallery).
+    b.frustum(Body, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
 }
 
 /// A ball: one ellipsoid filling the box when it is about as tall as wide (rocks, bowls); a
@@ -325,8 +323,12 @@ pub fn vehicle(b: &mut Builder) {
     }
 }
 
+/// A hull with thwarts; a boat taller than it is wide (a sailboat) is a low hull with a mast
+/// and a triangular sail reaching back from it.
 pub fn boat(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let (hw, hd, full) = (b.w / 2.0, b.d / 2.0, b.h);
+    let sails = full > b.w;
+    let h = if sails { full.min(0.6 * b.w) } else { full };
     // Lower half of an ellipsoid centred at the gunwale; the upper half falls outside the box.
     b.ellipsoid(Body, [0.0, 0.0, h], [hw, hd, h]);
     for y in [-0.4 * hd, 0.0, 0.4 * hd] {
@@ -335,6 +337,25 @@ pub fn boat(b: &mut Builder) {
             [-0.85 * hw, y - 0.1, 0.6 * h],
             [0.85 * hw, y + 0.1, 0.6 * h + 0.03],
         );
+    }
+    if sails {
+        let mast_y = 0.2 * hd;
+        let r = (0.02 * full).min(0.2 * hw);
+        b.cylinder(Frame, [0.0, mast_y, 0.3 * h], r, full - 0.3 * h);
+        // The sail: strips from the boom up the mast, each shorter towards the head.
+        let (z0, z1) = (h + 0.1 * (full - h), full - 0.02 * full);
+        let foot = mast_y + 0.85 * hd;
+        let n = 16;
+        for i in 0..n {
+            let (t0, t1) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+            let reach = foot * (1.0 - t0);
+            b.cuboid(
+                Canvas,
+                [-0.01, mast_y - reach, z0 + (z1 - z0) * t0],
+                [0.01, mast_y - r, z0 + (z1 - z0) * t1],
+            );
+        }
+        b.rod(Frame, [0.0, mast_y, z0], [0.0, mast_y - foot, z0], 0.7 * r);
     }
 }
 

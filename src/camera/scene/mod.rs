@@ -18,12 +18,14 @@
 //! plane, so no camera sees through a wall or an object). An invalid pose is resampled with its
 //! offset scaled by 0.98 (1.02 when it fell inside the object it orbits), as the authors do, for
 //! at most [`MAX_TRIES`] tries; then the nearest valid point of a 0.2 m grid takes its place.
+mod choose;
 mod paths;
 mod views;
 
+pub use choose::{eye_height, render_views, view_fov};
 pub use paths::{explore_path, inference_circle, orbit};
 pub use views::{
-    eye_height, frame_share, framing_score, overview_camera, render_views, view_stats, ViewStats,
+    facing, frame_share, framing_score, in_frame, overview_camera, view_stats, ViewStats,
     MAX_OBJECT_SHARE,
 };
 

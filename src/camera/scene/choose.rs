@@ -1,0 +1,298 @@
+//! The render views: the pictures a user opens first (`renders/`), chosen by what they show.
+//!
+//! Candidates stand at eye height on loops along the room's walls (outdoors: the ground's edge,
+//! the loops further apart on a wide ground), every valid viewpoint 0.25 m apart, each looking at
+//! an object, a pair of neighbouring objects or the room centre at a gentle downward pitch,
+//! through a lens that widens in a small room ([`view_fov`]). Each candidate is measured from the
+//! layout boxes alone (occlusion ignored, see [`view_stats`]); the views are then picked
+//! greedily: first those that frame well ([`ViewStats::framed_well`]), each adding the most
+//! objects not yet shown (an object seen from its front counts more than one seen from behind),
+//! with a subject no other view has had (nor, less so, another of its kind), seen from its front
+//! rather than its back, with no object close in the foreground, and far (in place or direction)
+//! from the views already taken. Host-only.
+use super::views::FLAT;
+use super::views::{facing, frame_share, in_frame, view_stats, ViewStats, MAX_OBJECT_SHARE};
+use super::{camera, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
+use crate::camera::Camera;
+use crate::plan::spec::SceneType;
+
+/// Steepest downward pitch of a render view (degrees).
+const MAX_PITCH_DEG: f64 = 14.0;
+/// Spacing of the candidate positions along the walls (metres); wider on a large ground, so
+/// there are at most [`MAX_LOOP_POINTS`] a loop.
+const STEP: f64 = 0.25;
+const MAX_LOOP_POINTS: f64 = 160.0;
+/// An object in the frame nearer than this (horizontal metres from the camera to its footprint)
+/// is foreground: a lampshade or chair back at that distance hides the room behind it, so a view
+/// loses score the nearer it stands. In a small room it is at most [`FOREGROUND_PER_SIDE`] of
+/// the room's short side, since nothing there stands further.
+const FOREGROUND: f64 = 1.6;
+const FOREGROUND_PER_SIDE: f64 = 0.4;
+/// The widest lens of a render view (horizontal, radians; 77°, a real-estate photographer's wide
+/// angle), used in a room [`SMALL_ROOM`] metres or less across; from [`LARGE_ROOM`] on the lens
+/// is the scene cameras' [`SCENE_FOV_X`] (55°), and between the two it widens linearly.
+const WIDE_FOV_X: f64 = 1.35;
+const SMALL_ROOM: f64 = 3.0;
+const LARGE_ROOM: f64 = 5.0;
+
+/// Eye height of the render views: 1.5 m, lower in low rooms.
+pub fn eye_height(scene: &SceneBox) -> f64 {
+    let top = match scene.scene_type {
+        SceneType::Indoor => scene.room[2],
+        SceneType::Outdoor => scene.room[2].min(4.0),
+    };
+    1.5f64.min(0.55 * top).max(ROOM_MARGIN)
+}
+
+/// The horizontal field of view of the render views of `scene`: wider in a small room, where a
+/// camera cannot step back far enough to frame more than one piece through the usual lens.
+pub fn view_fov(scene: &SceneBox) -> f64 {
+    match scene.scene_type {
+        SceneType::Outdoor => SCENE_FOV_X,
+        SceneType::Indoor => {
+            let side = scene.room[0].min(scene.room[1]);
+            let t = ((LARGE_ROOM - side) / (LARGE_ROOM - SMALL_ROOM)).clamp(0.0, 1.0);
+            SCENE_FOV_X + t * (WIDE_FOV_X - SCENE_FOV_X)
+        }
+    }
+}
+
+/// The foreground distance of `scene` (see [`FOREGROUND`]).
+fn foreground(scene: &SceneBox) -> f64 {
+    match scene.scene_type {
+        SceneType::Outdoor => FOREGROUND,
+        SceneType::Indoor => FOREGROUND.min(FOREGROUND_PER_SIDE * scene.room[0].min(scene.room[1])),
+    }
+}
+
+/// Valid points along the loop `inset` inside the room's (ground's) edge.
+fn wall_loop(scene: &SceneBox, inset: f64, z: f64) -> Vec<[f64; 3]> {
+    let [hx, hy] = scene.half();
+    let (ax, ay) = ((hx - inset).max(0.05), (hy - inset).max(0.05));
+    let per = 4.0 * (ax + ay);
+    let n = ((per / STEP).min(MAX_LOOP_POINTS) as usize).max(8);
+    (0..n)
+        .map(|i| {
+            let mut s = per * i as f64 / n as f64;
+            let side = [2.0 * ax, 2.0 * ay, 2.0 * ax, 2.0 * ay];
+            let mut k = 0;
+            while k < 3 && s > side[k] {
+                s -= side[k];
+                k += 1;
+            }
+            match k {
+                0 => [-ax + s, -ay, z],
+                1 => [ax, -ay + s, z],
+                2 => [ax - s, ay, z],
+                _ => [-ax, ay - s, z],
+            }
+        })
+        .filter(|p| valid_viewpoint(scene, *p))
+        .collect()
+}
+
+/// One scored candidate.
+struct Candidate {
+    cam: Camera,
+    stats: ViewStats,
+    /// For each object: `None` when its centre is out of frame, else how much of its front the
+    /// view sees ([`facing`]).
+    shows: Vec<Option<f64>>,
+    dir: [f64; 2],
+    /// Horizontal distance to the nearest object covering part of the frame (metres).
+    near: f64,
+    /// The largest share of the frame an object that is not looked at covers from in front of
+    /// what is (a bush before the fountain, a lampshade before the sofa).
+    occluder: f64,
+    /// Horizontal distance from the camera to the spot it looks at (metres).
+    reach: f64,
+}
+
+/// Horizontal distance from `p` to an object's footprint (0 inside).
+pub(crate) fn footprint_distance(o: &ObjectBox, p: [f64; 3]) -> f64 {
+    let (s, c) = o.yaw.to_radians().sin_cos();
+    let (dx, dy) = (p[0] - o.position[0], p[1] - o.position[1]);
+    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
+    let ox = (lx.abs() - 0.5 * o.size[0]).max(0.0);
+    let oy = (ly.abs() - 0.5 * o.size[1]).max(0.0);
+    ox.hypot(oy)
+}
+
+/// An object's kind from its id: the id without its trailing count (`tree3` → `tree`).
+fn kind(o: &ObjectBox) -> &str {
+    o.id.trim_end_matches(|c: char| c.is_ascii_digit())
+}
+
+/// `count` render views of `scene` chosen by what they show (see the module doc), named
+/// `view_0000`…; every camera is a valid viewpoint. An empty scene gets views of the room from
+/// its edge towards the centre.
+pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> Vec<Camera> {
+    let eye = eye_height(scene);
+    let fov = view_fov(scene);
+    let mut positions = vec![];
+    let short = scene.room[0].min(scene.room[1]);
+    let (edge, apart) = match scene.scene_type {
+        SceneType::Indoor => (ROOM_MARGIN + 0.05, 0.6),
+        // On open ground the loops spread inwards with its size, so trees along the edge are
+        // not always in the foreground.
+        SceneType::Outdoor => (ROOM_MARGIN + 0.05 + 0.05 * short, (0.1 * short).max(0.6)),
+    };
+    for k in 0..3 {
+        positions.extend(wall_loop(scene, edge + apart * k as f64, eye));
+    }
+    if positions.is_empty() {
+        positions.extend(super::nearest_valid(scene, [0.0, 0.0, eye]));
+    }
+    // Each target: the spot looked at and the objects it is the centre of.
+    let mut targets: Vec<([f64; 3], Vec<usize>)> = vec![([0.0, 0.0, 0.0], vec![])];
+    let centre = |o: &ObjectBox| {
+        [
+            o.position[0],
+            o.position[1],
+            o.position[2] + 0.5 * o.size[2],
+        ]
+    };
+    for (i, a) in scene.objects.iter().enumerate() {
+        targets.push((centre(a), vec![i]));
+        for (j, b) in scene.objects.iter().enumerate().skip(i + 1) {
+            let (ca, cb) = (centre(a), centre(b));
+            if (ca[0] - cb[0]).hypot(ca[1] - cb[1]) < 3.0 {
+                targets.push(([0, 1, 2].map(|k| 0.5 * (ca[k] + cb[k])), vec![i, j]));
+            }
+        }
+    }
+    let max_pitch = MAX_PITCH_DEG.to_radians().tan();
+    let mut cands = vec![];
+    for p in &positions {
+        for (t, looked_at) in &targets {
+            let d = (t[0] - p[0]).hypot(t[1] - p[1]);
+            if d < 0.8 {
+                continue;
+            }
+            // Look at the target's spot, no steeper than MAX_PITCH_DEG, never upwards.
+            let tz = t[2].max(eye - max_pitch * d).min(eye);
+            let cam = camera(*p, [t[0], t[1], tz], [0.0, 0.0, 1.0], width, height, fov);
+            let stats = view_stats(scene, &cam);
+            let shows = scene
+                .objects
+                .iter()
+                .map(|o| in_frame(&cam, o).then(|| facing(o, *p)))
+                .collect();
+            let dir = [(t[0] - p[0]) / d, (t[1] - p[1]) / d];
+            // How close the nearest object in the frame stands: a foreground lampshade or chair
+            // back hides the room even under the share limit.
+            let (mut near, mut occluder) = (f64::INFINITY, 0.0f64);
+            for (k, o) in scene.objects.iter().enumerate() {
+                let share = frame_share(&cam, o);
+                if share <= 0.03 {
+                    continue;
+                }
+                let dist = footprint_distance(o, *p);
+                near = near.min(dist);
+                // What is looked at hides nothing, unless it is the near one of a pair.
+                let aimed = looked_at.contains(&k) && dist >= 0.5 * d;
+                if !aimed && o.size[2] > FLAT && dist < d - 0.3 {
+                    occluder = occluder.max(share);
+                }
+            }
+            cands.push(Candidate {
+                occluder,
+                reach: d,
+                near,
+                cam,
+                stats,
+                shows,
+                dir,
+            });
+        }
+    }
+    pick(scene, cands, count)
+}
+
+/// Greedy choice of `count` candidates (see the module doc).
+fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
+    let n = scene.objects.len();
+    // An object's weight grows with its size; the objects of one kind (five trees, eight
+    // chairs) share theirs, so a view of a tent is not outweighed by views of trees.
+    let weight: Vec<f64> = scene
+        .objects
+        .iter()
+        .map(|o| {
+            let same = scene.objects.iter().filter(|p| kind(p) == kind(o)).count();
+            (o.size[0] * o.size[1] * o.size[2]).cbrt().max(0.1) / (same as f64).sqrt()
+        })
+        .collect();
+    let fg = foreground(scene);
+    let diagonal = scene.room[0].hypot(scene.room[1]);
+    let mut seen = vec![0usize; n];
+    let mut taken: Vec<usize> = vec![];
+    for _ in 0..count.min(cands.len()) {
+        let mut best: Option<(usize, f64)> = None;
+        for (i, c) in cands.iter().enumerate() {
+            if taken.contains(&i) {
+                continue;
+            }
+            // Seen from its front an object counts whole; from a side 0.6, from behind 0.2.
+            let fresh: f64 = (0..n)
+                .filter_map(|k| c.shows[k].map(|f| (k, f)))
+                .map(|(k, f)| weight[k] * (0.6 + 0.4 * f) / (1.0 + 2.0 * seen[k] as f64))
+                .sum();
+            let near = taken
+                .iter()
+                .map(|&j| {
+                    let o = &cands[j];
+                    let dp = (c.cam.position[0] - o.cam.position[0])
+                        .hypot(c.cam.position[1] - o.cam.position[1]);
+                    let cos = c.dir[0] * o.dir[0] + c.dir[1] * o.dir[1];
+                    // Close in place and direction: a near copy of a view already taken.
+                    (1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)
+                })
+                .fold(0.0, f64::max);
+            // The same subject again, or another of its kind: the views should show the place,
+            // not one piece of it from every side.
+            let (same, alike) = c.stats.subject.map_or((0, 0), |s| {
+                let subjects = taken.iter().filter_map(|&j| cands[j].stats.subject);
+                subjects.fold((0, 0), |(a, b), t| {
+                    if t == s {
+                        (a + 1, b)
+                    } else if kind(&scene.objects[t]) == kind(&scene.objects[s]) {
+                        (a, b + 1)
+                    } else {
+                        (a, b)
+                    }
+                })
+            });
+            let good = if c.stats.framed_well() { 10.0 } else { 0.0 };
+            let over = (c.stats.largest - MAX_OBJECT_SHARE).max(0.0);
+            let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
+                - 6.0 * near
+                - 5.0 * over
+                - 3.0 * (c.stats.largest - 0.2).max(0.0)
+                - 6.0 * (fg - c.near).max(0.0)
+                - 3.0 * same as f64
+                - 1.0 * alike as f64
+                - 2.0 * (-c.stats.facing).max(0.0)
+                - 8.0 * (c.occluder - 0.05).max(0.0)
+                + 4.0 * (c.reach / diagonal).min(0.6);
+            if best.is_none_or(|(_, s)| score > s) {
+                best = Some((i, score));
+            }
+        }
+        let Some((i, _)) = best else { break };
+        for (s, shown) in seen.iter_mut().zip(&cands[i].shows) {
+            if shown.is_some() {
+                *s += 1;
+            }
+        }
+        taken.push(i);
+    }
+    let mut out: Vec<Camera> = taken.into_iter().map(|i| cands[i].cam.clone()).collect();
+    for (i, c) in out.iter_mut().enumerate() {
+        c.id = i as u32;
+        c.img_name = format!("view_{i:04}");
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,139 @@
+//! Tests of the render-view choice.
+use super::*;
+use crate::camera::scene::{framing_score, overview_camera};
+
+fn boxed(id: &str, x: f64, y: f64, size: [f64; 3]) -> ObjectBox {
+    ObjectBox {
+        id: id.into(),
+        position: [x, y, 0.0],
+        size,
+        yaw: 0.0,
+    }
+}
+
+#[test]
+fn views_of_a_furnished_room_frame_several_objects() {
+    let scene = SceneBox {
+        scene_type: SceneType::Indoor,
+        room: [5.0, 4.0, 2.8],
+        objects: vec![
+            boxed("sofa1", 0.0, -1.5, [2.1, 0.9, 0.85]),
+            boxed("coffee table1", 0.0, -0.3, [1.1, 0.6, 0.45]),
+            boxed("tv1", 0.0, 1.8, [1.3, 0.08, 0.75]),
+            boxed("armchair1", -1.8, 0.0, [0.85, 0.85, 0.9]),
+            boxed("floor lamp1", 2.1, -1.6, [0.4, 0.4, 1.6]),
+            boxed("bookshelf1", 2.2, 1.0, [0.35, 1.0, 1.9]),
+        ],
+    };
+    let cams = render_views(&scene, 8, 64, 64);
+    assert_eq!(cams.len(), 8);
+    assert!(cams.iter().all(|c| valid_viewpoint(&scene, c.position)));
+    let score = framing_score(&scene, &cams);
+    assert!(score >= 0.75, "{score}");
+    let over = overview_camera(&scene, 640, 480);
+    assert_eq!(view_stats(&scene, &over).in_view, scene.objects.len());
+    // Every object shows in some view.
+    for o in &scene.objects {
+        let one = SceneBox {
+            objects: vec![o.clone()],
+            ..scene.clone()
+        };
+        assert!(
+            cams.iter().any(|c| view_stats(&one, c).in_view == 1),
+            "{}",
+            o.id
+        );
+    }
+}
+
+/// How many of `cams` have an object in frame standing nearer than `d` metres (horizontal).
+fn foreground_views(scene: &SceneBox, cams: &[Camera], d: f64) -> usize {
+    cams.iter()
+        .filter(|c| {
+            scene
+                .objects
+                .iter()
+                .any(|o| frame_share(c, o) > 0.03 && footprint_distance(o, c.position) < d)
+        })
+        .count()
+}
+
+#[test]
+fn views_of_the_living_room_keep_clear_of_foreground_objects() {
+    // The README's prompt over several layouts: a lampshade or chair back a step or two from the
+    // camera hides the room, so few views stand that close to what they show.
+    let spec = crate::plan::offline::plan_prompt("a cozy living room")
+        .expect("plans")
+        .spec;
+    let mut close = 0;
+    for seed in 0..4 {
+        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(seed))
+            .expect("lays out");
+        let scene = SceneBox::from_layout(&l);
+        let cams = render_views(&scene, 8, 64, 48);
+        close += foreground_views(&scene, &cams, 1.4);
+    }
+    assert!(
+        close <= 4,
+        "{close} of 32 views stand within 1.4 m of an object in frame (before the foreground rule: 17)"
+    );
+}
+
+#[test]
+fn a_small_room_gets_a_wider_lens() {
+    let room = |w: f64, d: f64| SceneBox {
+        scene_type: SceneType::Indoor,
+        room: [w, d, 2.7],
+        objects: vec![],
+    };
+    assert_eq!(view_fov(&room(6.0, 5.0)), SCENE_FOV_X, "a large room");
+    assert_eq!(view_fov(&room(3.8, 3.0)), WIDE_FOV_X, "a small room");
+    let mid = view_fov(&room(5.0, 4.0));
+    assert!(mid > SCENE_FOV_X && mid < WIDE_FOV_X, "{mid}");
+    let open = SceneBox {
+        scene_type: SceneType::Outdoor,
+        ..room(3.0, 3.0)
+    };
+    assert_eq!(view_fov(&open), SCENE_FOV_X, "open ground");
+}
+
+#[test]
+fn views_vary_their_subject_and_see_it_from_the_front() {
+    // Prompts the choice was not tuned on, indoor and out, small rooms and wide grounds. Before
+    // subjects and facing counted, one object was the subject of up to 5 of 8 views (a washing
+    // machine in the laundry room) and 17 views saw their subject from behind over these scenes.
+    let prompts = [
+        "a farmyard",
+        "a small laundry room",
+        "a tiny home office",
+        "a kids bedroom",
+        "a music room",
+        "a beach",
+    ];
+    let mut backs = 0;
+    for prompt in prompts {
+        let spec = crate::plan::offline::plan_prompt(prompt)
+            .expect("plans")
+            .spec;
+        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(0))
+            .expect("lays out");
+        let scene = SceneBox::from_layout(&l);
+        let cams = render_views(&scene, 8, 64, 64);
+        let stats: Vec<ViewStats> = cams.iter().map(|c| view_stats(&scene, c)).collect();
+        let most = (0..scene.objects.len())
+            .map(|k| stats.iter().filter(|s| s.subject == Some(k)).count())
+            .max()
+            .unwrap_or(0);
+        assert!(
+            most <= 3,
+            "{prompt}: one object is the subject of {most} of 8 views"
+        );
+        backs += stats.iter().filter(|s| s.facing < -0.5).count();
+        let framed = framing_score(&scene, &cams);
+        assert!(
+            framed >= 0.875,
+            "{prompt}: {framed} of the views frame well"
+        );
+    }
+    assert!(backs <= 5, "{backs} views see their subject from behind");
+}
