@@ -29,6 +29,8 @@ const DINING_SEATS: &[&str] = &[
     "stacking chair",
     "kids chair",
     "stool",
+    "dining bench",
+    "banquet bench",
 ];
 const TABLES: &[&str] = &[
     "dining table",

@@ -105,6 +105,15 @@ fn word_list(name: &str) -> &'static [&'static str] {
     lists.get(name).map(Vec::as_slice).unwrap_or(&[])
 }
 
+/// The categories an object part word belongs to ("fire" -> fireplace, fire pit, ...:
+/// `kb/words.txt`, parts), if it is one.
+pub fn part_owners(w: &str) -> Option<Vec<String>> {
+    word_list("parts").iter().find_map(|e| {
+        let (word, owners) = e.split_once('=')?;
+        (word == w).then(|| owners.split(',').map(|c| c.replace('_', " ")).collect())
+    })
+}
+
 /// A word the reader knows as something other than an object: a part of the room, an area,
 /// an arrangement, people, a room size word or a common English word of requests.
 pub fn is_known_word(w: &str) -> bool {

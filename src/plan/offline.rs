@@ -204,6 +204,12 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .filter(|(c, _)| {
             c.rsplit(' ').next() == Some(head.as_str())
                 || kb.object(&head).is_some_and(|o| o.category == **c)
+                // "a chair" in a living room is its armchair (an "easy chair"); chairs said
+                // of each table are that table's (below)
+                || (m.each_of.is_none()
+                    && kb.names().any(|(n, o)| {
+                        o.category == **c && n.rsplit(' ').next() == Some(head.as_str())
+                    }))
         })
         .max_by_key(|(_, n)| *n)
         .map(|(c, _)| c.clone())
@@ -519,6 +525,43 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let seats: BTreeMap<String, u32> = scene_seats.clone();
         if let Some(seat) = seat_for(&cats[x], &seats) {
             cats[i] = seat;
+        }
+    }
+    // "a bench on each long side" of a table, "a bench down each side of every table": a seat
+    // said of each side of a table is the kind of it that table takes (a dining bench, not the
+    // hall's bench), and so is every other mention of it.
+    for i in 0..r.mentions.len() {
+        let (Some(x), true) = (r.mentions[i].each_of, r.mentions[i].parts > 1) else {
+            continue;
+        };
+        let (c, t) = (cats[i].clone(), cats[x].clone());
+        if super::groups::relation_between(&c, &t).is_some() {
+            continue;
+        }
+        let head = lang::singular(r.mentions[i].text.rsplit(' ').next().unwrap_or(""));
+        // of the kinds that table takes, the one nearest its length
+        let length = kb.object(&t).map_or(0.0, |o| o.size[0]);
+        let Some(seat) = kb
+            .objects
+            .iter()
+            .filter(|o| o.category.rsplit(' ').next() == Some(head.as_str()))
+            .filter(|o| {
+                let one: BTreeMap<String, u32> = [(o.category.clone(), 0)].into();
+                seat_for(&t, &one).as_deref() == Some(o.category.as_str())
+            })
+            .min_by(|a, b| {
+                (a.size[0] - length)
+                    .abs()
+                    .total_cmp(&(b.size[0] - length).abs())
+            })
+            .map(|o| o.category.clone())
+        else {
+            continue;
+        };
+        for (j, cj) in cats.iter_mut().enumerate() {
+            if *cj == c && !r.mentions[j].negated {
+                *cj = seat.clone();
+            }
         }
     }
     // "two chairs at each table": (category, per instance, category of the distributor).
