@@ -31,6 +31,7 @@ const DINING_SEATS: &[&str] = &[
     "stool",
     "dining bench",
     "banquet bench",
+    "beer bench",
 ];
 const TABLES: &[&str] = &[
     "dining table",
@@ -49,6 +50,7 @@ const TABLES: &[&str] = &[
     "craft table",
     "meeting table",
     "kids table",
+    "bench table",
 ];
 
 const RULES: &[Rule] = &[

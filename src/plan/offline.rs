@@ -1035,7 +1035,10 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
             _ => rel,
         };
-        let every = r.mentions[si].plural || r.mentions[si].count.unwrap_or(1) > 1;
+        // "a bench on each side of every table": every bench, spread over the tables
+        let every = r.mentions[si].plural
+            || r.mentions[si].count.unwrap_or(1) > 1
+            || r.mentions[si].each_of == Some(oi);
         let n = if every { ns } else { 1 };
         if rel == super::spec::RelationKind::Around
             || rel == super::spec::RelationKind::Flank
@@ -1074,7 +1077,12 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             };
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
-                let ko = if rel.every && no == ns { k } else { 1 };
+                // every one of them spread over the objects ("beer bench* NEXT bench table")
+                let ko = if rel.every {
+                    (k - 1) % no.max(1) + 1
+                } else {
+                    1
+                };
                 push(
                     &mut spec,
                     format!("{}{k}", rel.subject),
