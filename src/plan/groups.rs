@@ -103,6 +103,12 @@ const RULES: &[Rule] = &[
         per_object: None,
     },
     Rule {
+        subjects: &["banquet chair"],
+        relation: RelationKind::Around,
+        objects: &["round banquet table", "banquet table"],
+        per_object: None,
+    },
+    Rule {
         subjects: &["bar stool", "stool"],
         relation: RelationKind::At,
         objects: &[
@@ -261,6 +267,16 @@ pub fn group_of_category(subject: &str) -> Option<&'static [&'static str]> {
         .iter()
         .find(|r| r.subjects.contains(&subject))
         .map(|r| r.objects)
+}
+
+/// Every object category `subject` forms a group with, over all the rules (a dining chair goes
+/// with a school desk and with the dining tables).
+pub fn partners_of(subject: &str) -> Vec<&'static str> {
+    RULES
+        .iter()
+        .filter(|r| r.subjects.contains(&subject))
+        .flat_map(|r| r.objects.iter().copied())
+        .collect()
 }
 
 /// How many subjects one `object` instance seats in its group with `subject` (the table's

@@ -114,6 +114,24 @@ pub fn part_owners(w: &str) -> Option<Vec<String>> {
     })
 }
 
+/// The category a plant of `archetype` said with `word` is ("potted" palm -> potted plant:
+/// `kb/words.txt`, potted), if `word` puts such a plant in a pot.
+pub fn potted(word: &str, archetype: &str) -> Option<String> {
+    let list = word_list("potted");
+    if !list.contains(&archetype) {
+        return None;
+    }
+    list.iter().find_map(|e| {
+        let (w, c) = e.split_once('=')?;
+        (w == word).then(|| c.replace('_', " "))
+    })
+}
+
+/// Whether `w` names a place inside something ("a pirate ship's hold": `kb/words.txt`, indoors).
+pub fn is_indoor_place(w: &str) -> bool {
+    word_list("indoors").contains(&w)
+}
+
 /// A word the reader knows as something other than an object: a part of the room, an area,
 /// an arrangement, people, a room size word or a common English word of requests.
 pub fn is_known_word(w: &str) -> bool {

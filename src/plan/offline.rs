@@ -216,6 +216,9 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
+/// Height below which a thing is at floor level (metres): see [`small_room`].
+const LOW: f64 = 0.3;
+
 /// Floor of a room the text calls small or tiny: what the named objects need in use (their
 /// footprints with room to use them at half the floor, a little more when tiny; the longest
 /// with a walkway), or with nothing named the scene's furniture room scaled by `scale`; never
@@ -245,10 +248,13 @@ fn small_room(
         use super::groups::{group_of, seats_per};
         matches!(group_of(spec, c), Some((super::spec::RelationKind::At, t)) if seats_per(spec, c, &t) == Some(1))
     };
+    // A thing at floor level (a floor cushion, a mattress on the floor) is stepped onto: its
+    // footprint is all it takes.
+    let room_to_use = |h: f64| if h < LOW { 0.0 } else { margin };
     let need: f64 = named_inst
         .iter()
         .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
-        .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
+        .map(|i| (i.size[0] + room_to_use(i.size[2])) * (i.size[1] + room_to_use(i.size[2])))
         .sum::<f64>()
         / occupancy;
     let longest = spec
@@ -384,12 +390,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
     }
     let scene = r.scene.map(|(i, _, _)| &kb.scenes[i]);
-    let scene_type = scene.map(|s| s.scene_type).unwrap_or_else(|| {
+    // "a pirate ship's hold": a place inside what the template is the outside of
+    let inside = r.not_literal.as_deref().is_some_and(lang::is_indoor_place);
+    let scene_type = scene.map(|s| s.scene_type).filter(|_| !inside).unwrap_or_else(|| {
         let outdoor = regex::Regex::new(
             r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park|meadow|lawn)\b",
         )
         .expect("valid regex");
-        if outdoor.is_match(&r.text) {
+        if outdoor.is_match(&r.text) && !inside {
             SceneType::Outdoor
         } else {
             SceneType::Indoor
@@ -404,7 +412,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             // "a haunted ballroom": another place than the template's lends only its generic
             // furniture (what several scene types have), not its DJ booth
             if let Some(w) = r.not_literal.as_deref() {
-                if scenes_with(kb, c) < GENERIC_SCENES {
+                if scenes_with(kb, c) < GENERIC_SCENES && !s.own.contains(c) {
                     notes.push(format!(
                         "default `{c}` of a {} left out: the \"{w}\" place is not the template's own",
                         s.name
@@ -420,10 +428,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let lone: Vec<String> = counts
             .keys()
             .filter(|c| {
-                super::groups::group_of_category(c).is_some_and(|objs| {
-                    scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
-                        && !objs.iter().any(|o| counts.contains_key(*o))
-                })
+                let objs = super::groups::partners_of(c);
+                scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+                    && !objs.iter().any(|o| counts.contains_key(*o))
             })
             .cloned()
             .collect();
@@ -561,6 +568,21 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         for (j, cj) in cats.iter_mut().enumerate() {
             if *cj == c && !r.mentions[j].negated {
                 *cj = seat.clone();
+            }
+        }
+    }
+    // "a big potted palm": a plant that grows to full size outdoors, in a pot, is a potted plant
+    for (i, m) in r.mentions.iter().enumerate() {
+        let Some(o) = kb.object(&cats[i]) else {
+            continue;
+        };
+        if let Some(c) = m
+            .adjectives
+            .iter()
+            .find_map(|a| lang::potted(a, &o.archetype))
+        {
+            if kb.object(&c).is_some() {
+                cats[i] = c;
             }
         }
     }
