@@ -204,12 +204,6 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .filter(|(c, _)| {
             c.rsplit(' ').next() == Some(head.as_str())
                 || kb.object(&head).is_some_and(|o| o.category == **c)
-                // "a chair" in a living room is its armchair (an "easy chair"); chairs said
-                // of each table are that table's (below)
-                || (m.each_of.is_none()
-                    && kb.names().any(|(n, o)| {
-                        o.category == **c && n.rsplit(' ').next() == Some(head.as_str())
-                    }))
         })
         .max_by_key(|(_, n)| *n)
         .map(|(c, _)| c.clone())
