@@ -29,6 +29,9 @@ const DINING_SEATS: &[&str] = &[
     "stacking chair",
     "kids chair",
     "stool",
+    "dining bench",
+    "banquet bench",
+    "beer bench",
 ];
 const TABLES: &[&str] = &[
     "dining table",
@@ -47,6 +50,7 @@ const TABLES: &[&str] = &[
     "craft table",
     "meeting table",
     "kids table",
+    "bench table",
 ];
 
 const RULES: &[Rule] = &[
@@ -102,6 +106,12 @@ const RULES: &[Rule] = &[
         subjects: DINING_SEATS,
         relation: RelationKind::Around,
         objects: TABLES,
+        per_object: None,
+    },
+    Rule {
+        subjects: &["banquet chair"],
+        relation: RelationKind::Around,
+        objects: &["round banquet table", "banquet table"],
         per_object: None,
     },
     Rule {
@@ -263,6 +273,16 @@ pub fn group_of_category(subject: &str) -> Option<&'static [&'static str]> {
         .iter()
         .find(|r| r.subjects.contains(&subject))
         .map(|r| r.objects)
+}
+
+/// Every object category `subject` forms a group with, over all the rules (a dining chair goes
+/// with a school desk and with the dining tables).
+pub fn partners_of(subject: &str) -> Vec<&'static str> {
+    RULES
+        .iter()
+        .filter(|r| r.subjects.contains(&subject))
+        .flat_map(|r| r.objects.iter().copied())
+        .collect()
 }
 
 /// How many subjects one `object` instance seats in its group with `subject` (the table's

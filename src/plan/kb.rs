@@ -37,6 +37,9 @@ pub struct SceneKind {
     pub scene_type: SceneType,
     pub synonyms: Vec<String>,
     pub objects: Vec<(String, u32)>,
+    /// Defaults that belong to the place's kind (a ballroom's dance floor; `+` after the count in
+    /// `kb/scenes.txt`): a fantastical version of the place keeps them with its generic furniture.
+    pub own: Vec<String>,
     pub anchors: BTreeMap<String, Anchor>,
     pub relations: Vec<KbRelation>,
 }
@@ -174,15 +177,24 @@ impl KnowledgeBase {
                     .ok_or_else(|| err(&format!("unknown object `{name}`")))
             };
             let mut objs = vec![];
+            let mut own = vec![];
             for item in list(f[3]) {
                 let (name, n) = item
                     .rsplit_once(':')
                     .ok_or_else(|| err(&format!("`{item}` needs :count")))?;
+                let (n, is_own) = match n.trim().strip_suffix('+') {
+                    Some(n) => (n, true),
+                    None => (n.trim(), false),
+                };
                 let n: u32 = n
                     .trim()
                     .parse()
                     .map_err(|_| err(&format!("count in `{item}`")))?;
-                objs.push((resolve(name.trim())?, n));
+                let c = resolve(name.trim())?;
+                if is_own {
+                    own.push(c.clone());
+                }
+                objs.push((c, n));
             }
             let mut anchors = BTreeMap::new();
             for item in list(f[4]) {
@@ -225,6 +237,7 @@ impl KnowledgeBase {
                 scene_type,
                 synonyms: list(f[2]),
                 objects: objs,
+                own,
                 anchors,
                 relations,
             });

@@ -105,6 +105,33 @@ fn word_list(name: &str) -> &'static [&'static str] {
     lists.get(name).map(Vec::as_slice).unwrap_or(&[])
 }
 
+/// The categories an object part word belongs to ("fire" -> fireplace, fire pit, ...:
+/// `kb/words.txt`, parts), if it is one.
+pub fn part_owners(w: &str) -> Option<Vec<String>> {
+    word_list("parts").iter().find_map(|e| {
+        let (word, owners) = e.split_once('=')?;
+        (word == w).then(|| owners.split(',').map(|c| c.replace('_', " ")).collect())
+    })
+}
+
+/// The category a plant of `archetype` said with `word` is ("potted" palm -> potted plant:
+/// `kb/words.txt`, potted), if `word` puts such a plant in a pot.
+pub fn potted(word: &str, archetype: &str) -> Option<String> {
+    let list = word_list("potted");
+    if !list.contains(&archetype) {
+        return None;
+    }
+    list.iter().find_map(|e| {
+        let (w, c) = e.split_once('=')?;
+        (w == word).then(|| c.replace('_', " "))
+    })
+}
+
+/// Whether `w` names a place inside something ("a pirate ship's hold": `kb/words.txt`, indoors).
+pub fn is_indoor_place(w: &str) -> bool {
+    word_list("indoors").contains(&w)
+}
+
 /// A word the reader knows as something other than an object: a part of the room, an area,
 /// an arrangement, people, a room size word or a common English word of requests.
 pub fn is_known_word(w: &str) -> bool {

@@ -68,3 +68,56 @@ pub fn known_singular(w: &str) -> Option<&'static str> {
         .copied()
         .or_else(|| l.irregular.get(w).copied())
 }
+
+/// The knowledge-base category a name the knowledge base lacks is a kind of: its head noun's
+/// category ("captain chair" is a chair), else the category WordNet gives its head noun
+/// ("chesterfield" is a sofa). `None` for a known name, or when neither says.
+pub fn kind_category(name: &str) -> Option<&'static str> {
+    let kb = super::kb::KnowledgeBase::builtin();
+    if kb.object(name).is_some() {
+        return None;
+    }
+    let head = name.rsplit(' ').next()?;
+    if let Some(o) = kb.object(head) {
+        return Some(o.category.as_str());
+    }
+    match kind(head)? {
+        Kind::Category(c) => kb.object(c).map(|o| o.category.as_str()),
+        Kind::Size(_) => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_unknown_name_is_a_kind_of_its_head_or_of_what_wordnet_says() {
+        // none of these nouns is in kb/objects.txt
+        for (name, want) in [
+            ("grandmother chair", Some("chair")),
+            ("escritoire", Some("desk")),
+            ("divan", Some("sofa")),
+            ("fauteuil", Some("armchair")),
+            ("owl", None),
+            ("sofa", None),
+        ] {
+            let kb = crate::plan::kb::KnowledgeBase::builtin();
+            if want.is_some() {
+                assert!(
+                    kb.object(name).is_none(),
+                    "`{name}` is in the knowledge base"
+                );
+            }
+            let got = kind_category(name);
+            match want {
+                Some(w) => assert_eq!(
+                    got.map(|c| kb.object(c).map(|o| o.category.as_str())),
+                    Some(kb.object(w).map(|o| o.category.as_str())),
+                    "{name}"
+                ),
+                None => assert_eq!(got, None, "{name}"),
+            }
+        }
+    }
+}

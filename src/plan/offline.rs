@@ -210,6 +210,9 @@ fn in_scene(kb: &KnowledgeBase, scene: Option<&super::kb::SceneKind>, m: &lang::
         .unwrap_or_else(|| m.category.clone())
 }
 
+/// Height below which a thing is at floor level (metres): see [`small_room`].
+const LOW: f64 = 0.3;
+
 /// Floor of a room the text calls small or tiny: what the named objects need in use (their
 /// footprints with room to use them at half the floor, a little more when tiny; the longest
 /// with a walkway), or with nothing named the scene's furniture room scaled by `scale`; never
@@ -239,10 +242,13 @@ fn small_room(
         use super::groups::{group_of, seats_per};
         matches!(group_of(spec, c), Some((super::spec::RelationKind::At | super::spec::RelationKind::AtBack, t)) if seats_per(spec, c, &t) == Some(1))
     };
+    // A thing at floor level (a floor cushion, a mattress on the floor) is stepped onto: its
+    // footprint is all it takes.
+    let room_to_use = |h: f64| if h < LOW { 0.0 } else { margin };
     let need: f64 = named_inst
         .iter()
         .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
-        .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
+        .map(|i| (i.size[0] + room_to_use(i.size[2])) * (i.size[1] + room_to_use(i.size[2])))
         .sum::<f64>()
         / occupancy;
     let longest = spec
@@ -378,12 +384,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
     }
     let scene = r.scene.map(|(i, _, _)| &kb.scenes[i]);
-    let scene_type = scene.map(|s| s.scene_type).unwrap_or_else(|| {
+    // "a pirate ship's hold": a place inside what the template is the outside of
+    let inside = r.not_literal.as_deref().is_some_and(lang::is_indoor_place);
+    let scene_type = scene.map(|s| s.scene_type).filter(|_| !inside).unwrap_or_else(|| {
         let outdoor = regex::Regex::new(
             r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park|meadow|lawn)\b",
         )
         .expect("valid regex");
-        if outdoor.is_match(&r.text) {
+        if outdoor.is_match(&r.text) && !inside {
             SceneType::Outdoor
         } else {
             SceneType::Indoor
@@ -398,7 +406,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             // "a haunted ballroom": another place than the template's lends only its generic
             // furniture (what several scene types have), not its DJ booth
             if let Some(w) = r.not_literal.as_deref() {
-                if scenes_with(kb, c) < GENERIC_SCENES {
+                if scenes_with(kb, c) < GENERIC_SCENES && !s.own.contains(c) {
                     notes.push(format!(
                         "default `{c}` of a {} left out: the \"{w}\" place is not the template's own",
                         s.name
@@ -414,10 +422,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let lone: Vec<String> = counts
             .keys()
             .filter(|c| {
-                super::groups::group_of_category(c).is_some_and(|objs| {
-                    scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
-                        && !objs.iter().any(|o| counts.contains_key(*o))
-                })
+                let objs = super::groups::partners_of(c);
+                scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+                    && !objs.iter().any(|o| counts.contains_key(*o))
             })
             .cloned()
             .collect();
@@ -519,6 +526,58 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         let seats: BTreeMap<String, u32> = scene_seats.clone();
         if let Some(seat) = seat_for(&cats[x], &seats) {
             cats[i] = seat;
+        }
+    }
+    // "a bench on each long side" of a table, "a bench down each side of every table": a seat
+    // said of each side of a table is the kind of it that table takes (a dining bench, not the
+    // hall's bench), and so is every other mention of it.
+    for i in 0..r.mentions.len() {
+        let (Some(x), true) = (r.mentions[i].each_of, r.mentions[i].parts > 1) else {
+            continue;
+        };
+        let (c, t) = (cats[i].clone(), cats[x].clone());
+        if super::groups::relation_between(&c, &t).is_some() {
+            continue;
+        }
+        let head = lang::singular(r.mentions[i].text.rsplit(' ').next().unwrap_or(""));
+        // of the kinds that table takes, the one nearest its length
+        let length = kb.object(&t).map_or(0.0, |o| o.size[0]);
+        let Some(seat) = kb
+            .objects
+            .iter()
+            .filter(|o| o.category.rsplit(' ').next() == Some(head.as_str()))
+            .filter(|o| {
+                let one: BTreeMap<String, u32> = [(o.category.clone(), 0)].into();
+                seat_for(&t, &one).as_deref() == Some(o.category.as_str())
+            })
+            .min_by(|a, b| {
+                (a.size[0] - length)
+                    .abs()
+                    .total_cmp(&(b.size[0] - length).abs())
+            })
+            .map(|o| o.category.clone())
+        else {
+            continue;
+        };
+        for (j, cj) in cats.iter_mut().enumerate() {
+            if *cj == c && !r.mentions[j].negated {
+                *cj = seat.clone();
+            }
+        }
+    }
+    // "a big potted palm": a plant that grows to full size outdoors, in a pot, is a potted plant
+    for (i, m) in r.mentions.iter().enumerate() {
+        let Some(o) = kb.object(&cats[i]) else {
+            continue;
+        };
+        if let Some(c) = m
+            .adjectives
+            .iter()
+            .find_map(|a| lang::potted(a, &o.archetype))
+        {
+            if kb.object(&c).is_some() {
+                cats[i] = c;
+            }
         }
     }
     // "two chairs at each table": (category, per instance, category of the distributor).
@@ -993,7 +1052,10 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
             _ => rel,
         };
-        let every = r.mentions[si].plural || r.mentions[si].count.unwrap_or(1) > 1;
+        // "a bench on each side of every table": every bench, spread over the tables
+        let every = r.mentions[si].plural
+            || r.mentions[si].count.unwrap_or(1) > 1
+            || r.mentions[si].each_of == Some(oi);
         let n = if every { ns } else { 1 };
         if rel == super::spec::RelationKind::Around
             || rel == super::spec::RelationKind::Flank
@@ -1047,7 +1109,12 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             let (ns, no) = (counts[&subject], counts[&object]);
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
-                let ko = if rel.every && no == ns { k } else { 1 };
+                // every one of them spread over the objects ("beer bench* NEXT bench table")
+                let ko = if rel.every {
+                    (k - 1) % no.max(1) + 1
+                } else {
+                    1
+                };
                 push(
                     &mut spec,
                     format!("{subject}{k}"),

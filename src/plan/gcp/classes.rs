@@ -115,10 +115,17 @@ impl Placements {
     /// The placement of `category` (or of the knowledge-base category it is a synonym of),
     /// if the table has it.
     pub fn get(&self, category: &str) -> Option<&Placement> {
-        self.by_category.get(category).or_else(|| {
-            let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
-            self.by_category.get(&kb.category)
-        })
+        self.by_category
+            .get(category)
+            .or_else(|| {
+                let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
+                self.by_category.get(&kb.category)
+            })
+            // a noun the knowledge base lacks is placed as its kind ("an escritoire" as a desk)
+            .or_else(|| {
+                self.by_category
+                    .get(crate::plan::lexicon::kind_category(category)?)
+            })
     }
 
     /// Whether `category` holds things (a support of some on_surface category): a desk, a

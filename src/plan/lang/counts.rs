@@ -116,7 +116,7 @@ pub(super) fn read_counts(r: &mut Reading) {
     let n = r.mentions.len();
     // "Y each", "Y apiece", "Y per X", "Y at each X", "Y beneath each one", "Y on each side".
     let tail_re = re(
-        r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece)\b(?: (one|of them|(?:([a-z'-]+) )?(?:side|sides|end|ends|corner|corners|wall)))?)",
+        r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece|either|both)\b(?: (one|of them|(?:([a-z'-]+) )?(?:side|sides|end|ends|corner|corners|wall)))?)",
     );
     for k in 0..n {
         let m = &r.mentions[k];
@@ -147,6 +147,10 @@ pub(super) fn read_counts(r: &mut Reading) {
             Some(_) => g.as_str().rsplit(' ').next().unwrap_or(g.as_str()),
             None => g.as_str(),
         });
+        // "either" / "both" count only sides and ends ("a chair either side of it")
+        if matches!(word, "either" | "both") && what.and_then(part).is_none() {
+            continue;
+        }
         let after_each = c.get(0).map(|g| g.end()).unwrap_or(0);
         let cat = m.category.clone();
         if let Some(p) = what.and_then(part) {
@@ -157,6 +161,10 @@ pub(super) fn read_counts(r: &mut Reading) {
                 (k + 1..n)
                     .find(|&j| r.mentions[j].reference && r.mentions[j].start <= next + 40)
                     .map(|j| referent(r, j))
+            } else if k > 0 && !t[r.mentions[k - 1].end..m.start].contains(['.', ';']) {
+                // "a big table in the centre, a bench on each long side": the sides of the
+                // thing just named
+                Some(k - 1)
             } else {
                 None
             };

@@ -21,7 +21,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             .find(|(_, m)| m.end <= pos && m.start >= cs && !m.negated)
             .map(|(i, _)| i)
     };
-    let object_after = |ms: &[Mention], pos: usize| -> Option<usize> {
+    let named_after = |ms: &[Mention], pos: usize| -> Option<usize> {
         ms.iter()
             .enumerate()
             .find(|(_, m)| {
@@ -36,6 +36,9 @@ pub(super) fn read_placements(r: &mut Reading) {
                     })
             })
             .map(|(i, _)| i)
+    };
+    let object_after = |ms: &[Mention], pos: usize| -> Option<usize> {
+        referent(ms, &t, pos).or_else(|| named_after(ms, pos))
     };
     let mut used: Vec<(usize, usize)> = vec![];
     let phrases: &[(&str, Option<RelationKind>)] = &[
@@ -77,6 +80,11 @@ pub(super) fn read_placements(r: &mut Reading) {
             Some(RelationKind::Opposite),
         ),
         (r"\b(?:behind|in back of)\b", Some(RelationKind::Behind)),
+        // "a painting above the piano": over it (a thing hung on the wall keeps its wall)
+        (
+            r"\b(?:above|right above|just above)\b",
+            Some(RelationKind::Over),
+        ),
     ];
     let anchor_phrases: &[(&str, Anchor)] = &[
         (
@@ -146,4 +154,51 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
         }
     }
+}
+
+/// The object a pronoun or a part word right after `pos` refers to: "it" / "them" is the last
+/// object named before the phrase's subject ("a painting hanging above it"), a part word of
+/// `kb/words.txt` (parts) the last object named that has such a part ("facing the fire" faces
+/// the fireplace, "above the mantel" is above it).
+fn referent(ms: &[Mention], t: &str, pos: usize) -> Option<usize> {
+    let rest = t.get(pos..)?;
+    let mut words = rest
+        .split(|c: char| !c.is_alphanumeric() && c != '\'' && c != '-')
+        .filter(|w| !w.is_empty());
+    let mut w = words.next()?;
+    if ["it", "them"].contains(&w) {
+        // the subject is the last mention before `pos`; the antecedent the one before it and
+        // the things said with it ("a desk with a computer and a lamp on it": the desk)
+        let before: Vec<usize> = (0..ms.len())
+            .filter(|&i| ms[i].end <= pos && !ms[i].negated)
+            .collect();
+        let mut k = before.len().checked_sub(2)?;
+        while k > 0 {
+            let between = t.get(ms[before[k]].end..ms[before[k + 1]].start)?;
+            let joined = between
+                .split(|c: char| !c.is_alphanumeric())
+                .filter(|w| !w.is_empty())
+                .all(|w| {
+                    ["and", "or", "a", "an", "the", "some"].contains(&w)
+                        || super::number(w).is_some()
+                });
+            if !joined {
+                break;
+            }
+            k -= 1;
+        }
+        return before.get(k).copied();
+    }
+    while ["the", "a", "an", "its", "their"].contains(&w) {
+        w = words.next()?;
+    }
+    // a word that is itself (part of) a named object is no part word
+    let at = pos + rest.find(w)?;
+    if ms.iter().any(|m| m.start <= at && at < m.end) {
+        return None;
+    }
+    let owners = super::part_owners(w)?;
+    (0..ms.len()).rev().find(|&i| {
+        ms[i].end <= pos && !ms[i].negated && owners.iter().any(|o| *o == ms[i].category)
+    })
 }

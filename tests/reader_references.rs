@@ -1,0 +1,115 @@
+//! What a placement phrase refers to when it names no object: a pronoun ("above it": the thing
+//! named before its subject and what is said with it) or a part of an object ("facing the fire":
+//! the fireplace), and seats said of each side of a table. None of these prompts is in a corpus.
+use dreamscene::plan::offline::plan_prompt;
+use dreamscene::plan::spec::{RelationKind, SceneSpec};
+
+fn plan(prompt: &str) -> SceneSpec {
+    match plan_prompt(prompt) {
+        Ok(p) => p.spec,
+        Err(e) => panic!("{prompt}: {e}"),
+    }
+}
+
+/// The relation kinds `spec` has between an instance of `subject` and one of `object`
+/// (categories).
+fn between(spec: &SceneSpec, subject: &str, object: &str) -> Vec<RelationKind> {
+    let of = |id: &str, c: &str| id.trim_end_matches(|ch: char| ch.is_ascii_digit()) == c;
+    spec.relations
+        .iter()
+        .filter(|r| of(&r.subject, subject) && of(&r.object, object))
+        .map(|r| r.relation)
+        .collect()
+}
+
+fn number(spec: &SceneSpec, c: &str) -> u32 {
+    spec.objects.get(c).map_or(0, |o| o.number)
+}
+
+#[test]
+fn a_pronoun_names_the_thing_before_its_subject() {
+    let s = plan("a den with a piano against the wall and a mirror hanging above it");
+    let mirror = s
+        .objects
+        .keys()
+        .find(|c| c.contains("mirror"))
+        .cloned()
+        .unwrap_or_default();
+    assert_eq!(
+        between(&s, &mirror, "piano"),
+        vec![RelationKind::Over],
+        "{:?}",
+        s.relations
+    );
+    // "a laptop and a lamp on it": the lamp is said with the laptop; "it" is the desk
+    let s = plan("a study with a writing desk, a laptop and a table lamp on it");
+    assert_eq!(
+        between(&s, "table lamp", "desk"),
+        vec![RelationKind::Over],
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        between(&s, "table lamp", "laptop").is_empty(),
+        "{:?}",
+        s.relations
+    );
+}
+
+#[test]
+fn a_part_word_names_the_object_it_belongs_to() {
+    let s = plan("a parlour with a fireplace and a rocking chair facing the fire");
+    assert_eq!(
+        between(&s, "rocking chair", "fireplace"),
+        vec![RelationKind::Opposite],
+        "{:?}",
+        s.relations
+    );
+    // no fire is named: the part word makes no object
+    assert!(
+        s.objects
+            .keys()
+            .all(|c| !c.contains("fire") || c == "fireplace"),
+        "{:?}",
+        s.objects
+    );
+}
+
+#[test]
+fn either_side_of_one_thing_is_two() {
+    let s = plan("a hall with a fireplace and a bench either side of it");
+    let benches: u32 = s
+        .objects
+        .iter()
+        .filter(|(c, _)| c.contains("bench"))
+        .map(|(_, o)| o.number)
+        .sum();
+    assert_eq!(benches, 2, "{:?}", s.objects);
+}
+
+#[test]
+fn seats_on_each_side_of_a_table_are_that_tables_seats() {
+    let s = plan("a beer hall with three long tables and a bench on each side of every table");
+    let seat = s
+        .objects
+        .keys()
+        .find(|c| c.contains("bench"))
+        .cloned()
+        .unwrap_or_default();
+    assert_eq!(number(&s, &seat), 6, "{:?}", s.objects);
+    let table = s
+        .objects
+        .keys()
+        .find(|c| c.ends_with("table"))
+        .cloned()
+        .unwrap_or_default();
+    // every table has two of them, each tied to one table
+    for k in 1..=3 {
+        let at = s
+            .relations
+            .iter()
+            .filter(|r| r.object == format!("{table}{k}") && r.subject.starts_with(&seat))
+            .count();
+        assert_eq!(at, 2, "{table}{k}: {:?}", s.relations);
+    }
+}
