@@ -18,6 +18,7 @@ use rand::{Rng, SeedableRng};
 pub mod classes;
 mod compose;
 mod fit;
+mod gather;
 pub mod openings;
 mod poses;
 pub mod rows;
@@ -159,7 +160,8 @@ impl Problem {
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };
             if subject {
-                if let Some(poses) = self.group_poses(i, rel, &pj, &self.boxed(j, &pj)) {
+                if let Some(poses) = self.group_poses(i, rel, (j, &pj), &self.boxed(j, &pj), placed)
+                {
                     group.extend(poses);
                 }
             }
@@ -470,7 +472,8 @@ impl Problem {
                 pose_bonus += LOOKAHEAD_WEIGHT;
             }
         }
-        let comp = self.composition(i, p, &b, placed, boxes);
+        let comp =
+            self.composition(i, p, &b, placed, boxes) + self.gathering(i, p, &b, placed, boxes);
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }
