@@ -11,12 +11,14 @@ use std::f64::consts::TAU;
 /// Footprint area (m²) from which a ring member is big (a tent, not a seat): it stands in the
 /// outer ring.
 const BIG_MEMBER: f64 = 1.5;
-/// Depth of the standing spot beside a seat (m): a person's width.
-const SPOT: f64 = 0.5;
+/// Depth of the standing spot beside a seat (m): a person (0.6 m across) and a little room to turn.
+const SPOT: f64 = 0.75;
 /// Weight of a ring member standing closer to its neighbours than an even spread would.
 const SPREAD_WEIGHT: f64 = 6.0;
 /// Weight of a seat left with no standing spot.
-const ACCESS_WEIGHT: f64 = 5.0;
+const ACCESS_WEIGHT: f64 = 8.0;
+/// Depth beyond a table's side for a seat and the person who sits down (m).
+const TABLE_ROOM: f64 = 1.2;
 /// Things whose bottom is higher than this leave a standing spot free (m).
 const HEAD_HEIGHT: f64 = 1.9;
 
@@ -141,7 +143,88 @@ impl Problem {
                 }
             }
         }
+        // A table keeps room on two of its sides for its seats and the people who sit down;
+        // nothing placed later takes it away.
+        if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
+            let want = self.seats_of(i).min(2);
+            if want > 0 && self.free_sides(b, i, None, boxes) < want {
+                score -= ACCESS_WEIGHT;
+            }
+            let ab = b.aabb();
+            for (k, bk) in boxes.iter().enumerate() {
+                let Some((bk, ak)) = bk else { continue };
+                let near = (ak[0] - ab[2])
+                    .max(ab[0] - ak[2])
+                    .max(ak[1] - ab[3])
+                    .max(ab[1] - ak[3]);
+                let want = self.seats_of(k).min(2);
+                if near > TABLE_ROOM || k == i || want == 0 || self.linked(i, k) {
+                    continue;
+                }
+                let before = self.free_sides(bk, k, None, boxes);
+                if before >= want && self.free_sides(bk, k, Some(b), boxes) < want {
+                    score -= ACCESS_WEIGHT;
+                }
+            }
+        }
         score
+    }
+
+    /// Whether `i` and `j` are related in the spec.
+    fn linked(&self, i: usize, j: usize) -> bool {
+        self.rels[i].iter().any(|r| r.1 == j)
+    }
+
+    /// How many seats stand AROUND instance `t`.
+    fn seats_of(&self, t: usize) -> usize {
+        self.rels[t]
+            .iter()
+            .filter(|r| !r.2 && r.0 == RelationKind::Around)
+            .count()
+    }
+
+    /// How many sides of table box `b` (instance `t`) have [`TABLE_ROOM`] free beyond them:
+    /// inside the room, clear of what is placed (and of `extra`) but `t`'s own partners.
+    fn free_sides(
+        &self,
+        b: &Box2,
+        t: usize,
+        extra: Option<&Box2>,
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> usize {
+        let [w, d, _] = self.room;
+        let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
+        let [hx, hy] = b.half;
+        let at = |lx: f64, ly: f64| {
+            [
+                b.c[0] + lx * b.ex[0] + ly * b.ey[0],
+                b.c[1] + lx * b.ex[1] + ly * b.ey[1],
+            ]
+        };
+        let r = 0.5 * TABLE_ROOM;
+        let bands = [
+            Box2::new(at(0.0, hy + r), yaw, [2.0 * hx, TABLE_ROOM], 0.0, 1.8),
+            Box2::new(at(0.0, -hy - r), yaw, [2.0 * hx, TABLE_ROOM], 0.0, 1.8),
+            Box2::new(at(hx + r, 0.0), yaw, [TABLE_ROOM, 2.0 * hy], 0.0, 1.8),
+            Box2::new(at(-hx - r, 0.0), yaw, [TABLE_ROOM, 2.0 * hy], 0.0, 1.8),
+        ];
+        let clear =
+            |s: &Box2, o: &Box2| o.z0 >= HEAD_HEIGHT || o.z1 <= 0.05 || overlap_depth(s, o) <= 0.02;
+        bands
+            .iter()
+            .filter(|s| {
+                let [x0, y0, x1, y1] = s.aabb();
+                x0 >= -0.5 * w
+                    && x1 <= 0.5 * w
+                    && y0 >= -0.5 * d
+                    && y1 <= 0.5 * d
+                    && extra.is_none_or(|e| clear(s, e))
+                    && boxes.iter().enumerate().all(|(k, bk)| {
+                        let Some((bk, _)) = bk else { return true };
+                        k == t || self.linked(t, k) || clear(s, bk)
+                    })
+            })
+            .count()
     }
 
     /// The table, desk or counter instance `i` is a seat at (AROUND or AT), if any.
