@@ -41,6 +41,11 @@ impl Problem {
                     } else {
                         (2.0 * hd, hw)
                     };
+                    // a seat much wider than a side (a bench at a table's end) sits on the
+                    // long sides only
+                    if s[0] > 1.25 * len && s[0] > 0.8 {
+                        continue;
+                    }
                     for g in [0.05, 0.15] {
                         let off = half_across + g + 0.5 * s[1];
                         for t in slots(len, s[0]) {
