@@ -270,3 +270,46 @@ impl Problem {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::check::{facing_footprint_error, gap, Box2};
+    use crate::plan::gcp::{layout, LayoutOptions};
+    use crate::plan::spec::SceneSpec;
+
+    #[test]
+    fn tents_round_a_fire_stand_beyond_the_seats_and_face_it() {
+        let text = r#"{"scene_type":"outdoor","scene_text":"t","objects":{
+            "tent":{"number":3,"size":[2.5,2.5,1.5],"description":"d"},
+            "camp chair":{"number":4,"size":[0.6,0.6,0.9],"description":"d"},
+            "fire pit":{"number":1,"size":[1.0,1.0,0.4],"description":"d"}},
+            "relations":[
+            {"subject":"tent1","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"tent2","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"tent3","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair1","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair2","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair3","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair4","relation":"CIRCLE","object":"fire pit1"}]}"#;
+        let spec: SceneSpec = serde_json::from_str(text).expect("spec");
+        for seed in 0..3 {
+            let l = layout(&spec, LayoutOptions::seeded(seed)).expect("laid out");
+            assert!(l.unsatisfied.is_empty(), "seed {seed}: {:?}", l.unsatisfied);
+            let get = |id: &str| l.objects.iter().find(|o| o.id == id).expect("placed");
+            let fire = Box2::of(get("fire pit1"));
+            let tents = ["tent1", "tent2", "tent3"];
+            for a in tents {
+                let t = Box2::of(get(a));
+                assert!(
+                    facing_footprint_error(&t, &fire) <= 30.0,
+                    "seed {seed}: {a} turned away"
+                );
+                let seat = Box2::of(get("camp chair1"));
+                assert!(
+                    gap(&t, &fire) > gap(&seat, &fire),
+                    "seed {seed}: {a} inside the seats"
+                );
+            }
+        }
+    }
+}
