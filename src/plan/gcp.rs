@@ -19,6 +19,7 @@ pub mod classes;
 mod clear;
 mod compose;
 mod fit;
+mod gather;
 pub mod openings;
 mod poses;
 pub mod rows;
@@ -162,7 +163,8 @@ impl Problem {
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };
             if subject {
-                if let Some(poses) = self.group_poses(i, rel, &pj, &self.boxed(j, &pj)) {
+                if let Some(poses) = self.group_poses(i, rel, (j, &pj), &self.boxed(j, &pj), placed)
+                {
                     group.extend(poses);
                 }
             }
@@ -486,7 +488,8 @@ impl Problem {
         let front = self.front_cost(i, &b, boxes);
         total += 1;
         ok += (front == 0.0) as usize;
-        let comp = self.composition(i, p, &b, placed, boxes) - front;
+        let comp = self.composition(i, p, &b, placed, boxes) + self.gathering(i, p, &b, placed, boxes)
+            - front;
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
     }

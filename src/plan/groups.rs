@@ -7,219 +7,90 @@
 //! the GCP layout satisfies (sun loungers in pairs beneath a parasol); offline and LLM plans both go through [`apply`].
 use super::spec::{Relation, RelationKind, SceneSpec};
 use std::collections::{BTreeMap, BTreeSet};
+use std::sync::OnceLock;
 
-/// One rule: every instance of a subject category relates to an instance of the first object
-/// category present, spread over the object instances by their capacity.
+/// One rule of kb/groups.txt: every instance of a subject category relates to an instance of
+/// the first object category present (seats: of every present one), spread over the object
+/// instances by what one takes.
 struct Rule {
-    subjects: &'static [&'static str],
+    subjects: Vec<&'static str>,
     relation: RelationKind,
-    objects: &'static [&'static str],
+    objects: Vec<&'static str>,
     /// Subject instances one object instance takes (`None`: by the object's size, seats round
-    /// a table; `Some(k)`: k).
+    /// a table or along a counter; `Some(k)`: k).
     per_object: Option<u32>,
 }
 
-const DINING_SEATS: &[&str] = &[
-    "dining chair",
-    "cafe chair",
-    "patio chair",
-    "wooden chair",
-    "upholstered chair",
-    "restaurant chair",
-    "stacking chair",
-    "kids chair",
-    "stool",
-    "dining bench",
-    "banquet bench",
-    "beer bench",
-];
-const TABLES: &[&str] = &[
-    "dining table",
-    "round table",
-    "cafe table",
-    "patio table",
-    "kitchen table",
-    "reading table",
-    "conference table",
-    "card table",
-    "poker table",
-    "bistro set table",
-    "coffee shop table",
-    "chess table",
-    "picnic table",
-    "craft table",
-    "meeting table",
-    "kids table",
-    "bench table",
-];
+/// The rules of kb/groups.txt, in its order (a line that does not read is left out; the
+/// table's test reads every line).
+fn rules() -> &'static [Rule] {
+    static RULES: OnceLock<Vec<Rule>> = OnceLock::new();
+    RULES.get_or_init(|| {
+        include_str!("kb/groups.txt")
+            .lines()
+            .filter_map(parse_rule)
+            .collect()
+    })
+}
 
-const RULES: &[Rule] = &[
-    Rule {
-        subjects: &[
-            "campfire log",
-            "folding chair",
-            "camp chair",
-            "log bench",
-            "tree stump",
-        ],
-        relation: RelationKind::Circle,
-        objects: &["fire pit", "bonfire", "campfire"],
-        per_object: Some(12),
-    },
-    Rule {
-        subjects: &["office chair"],
-        relation: RelationKind::Around,
-        objects: &["conference table", "meeting table"],
-        per_object: None,
-    },
-    Rule {
-        subjects: &["office chair", "gaming chair", "drafting stool"],
-        relation: RelationKind::At,
-        objects: &[
-            "desk",
-            "computer desk",
-            "standing desk",
-            "reception desk",
-            "drafting table",
-            "gaming desk",
-            "spaceship console",
-            "mixing desk",
-            "sewing machine table",
-        ],
-        per_object: Some(1),
-    },
-    Rule {
-        // desks turned the way their user looks (to the board, to the class): the seat at
-        // the back
-        subjects: &["dining chair", "student chair"],
-        relation: RelationKind::AtBack,
-        objects: &["school desk"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["office chair"],
-        relation: RelationKind::AtBack,
-        objects: &["teacher desk"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: DINING_SEATS,
-        relation: RelationKind::Around,
-        objects: TABLES,
-        per_object: None,
-    },
-    Rule {
-        subjects: &["banquet chair"],
-        relation: RelationKind::Around,
-        objects: &["round banquet table", "banquet table"],
-        per_object: None,
-    },
-    Rule {
-        subjects: &["bar stool", "stool"],
-        relation: RelationKind::At,
-        objects: &[
-            "bar counter",
-            "kitchen island",
-            "counter",
-            "breakfast bar",
-            "sushi counter",
-        ],
-        per_object: None,
-    },
-    Rule {
-        subjects: &["vanity stool"],
-        relation: RelationKind::At,
-        objects: &["vanity table"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["piano bench"],
-        relation: RelationKind::At,
-        objects: &["piano"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["nightstand"],
-        relation: RelationKind::Flank,
-        objects: &[
-            "bed",
-            "single bed",
-            "hospital bed",
-            "bunk bed",
-            "canopy bed",
-            "daybed",
-        ],
-        per_object: Some(2),
-    },
-    Rule {
-        subjects: &["school desk"],
-        relation: RelationKind::Row,
-        objects: &["blackboard", "whiteboard", "smartboard"],
-        per_object: Some(40),
-    },
-    Rule {
-        subjects: &["table lamp"],
-        relation: RelationKind::Over,
-        objects: &[
-            "nightstand",
-            "desk",
-            "side table",
-            "dresser",
-            "console table",
-            "sideboard",
-        ],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["computer", "laptop"],
-        relation: RelationKind::Over,
-        objects: &["desk", "computer desk", "standing desk", "office desk"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["tv"],
-        relation: RelationKind::Over,
-        objects: &["tv stand"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["cash register", "coffee machine"],
-        relation: RelationKind::Over,
-        objects: &["counter", "bar counter", "kitchen counter"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["coffee table"],
-        relation: RelationKind::Front,
-        objects: &["sofa", "loveseat", "sectional sofa"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["tv stand"],
-        relation: RelationKind::Opposite,
-        objects: &["sofa", "loveseat", "sectional sofa"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["lounge chair", "pool lounger"],
-        relation: RelationKind::Under,
-        objects: &["beach umbrella"],
-        per_object: Some(2),
-    },
-    Rule {
-        // a bridge crosses its pond: the water lies under it
-        subjects: &["pond", "koi pond"],
-        relation: RelationKind::Under,
-        objects: &["wooden bridge"],
-        per_object: Some(1),
-    },
-    Rule {
-        subjects: &["rug"],
-        relation: RelationKind::Under,
-        objects: &["coffee table", "dining table", "round table", "bed", "desk"],
-        per_object: Some(1),
-    },
-];
+/// One line of kb/groups.txt (`None` for comments, blank lines and lines that do not read).
+fn parse_rule(line: &'static str) -> Option<Rule> {
+    let line = line.trim();
+    if line.is_empty() || line.starts_with('#') {
+        return None;
+    }
+    let f: Vec<&'static str> = line.split('|').map(str::trim).collect();
+    let [subjects, relation, objects, per] = f[..] else {
+        return None;
+    };
+    let names = |s: &'static str| -> Vec<&'static str> {
+        s.split(',')
+            .map(str::trim)
+            .filter(|x| !x.is_empty())
+            .collect()
+    };
+    Some(Rule {
+        subjects: names(subjects),
+        relation: super::kb::parse_relation(relation)?,
+        objects: names(objects),
+        per_object: match per {
+            "size" => None,
+            k => Some(k.parse().ok()?),
+        },
+    })
+}
+
+/// Whether `category` is what a name of kb/groups.txt says: the name itself, or for `any X`
+/// X or any category ending in " X" (a stone bridge is `any bridge`).
+fn names(name: &str, category: &str) -> bool {
+    match name.strip_prefix("any ") {
+        Some(head) => category == head || category.ends_with(&format!(" {head}")),
+        None => category == name,
+    }
+}
+
+impl Rule {
+    fn has_subject(&self, category: &str) -> bool {
+        self.subjects.iter().any(|n| names(n, category))
+    }
+
+    fn has_object(&self, category: &str) -> bool {
+        self.objects.iter().any(|n| names(n, category))
+    }
+
+    /// The object categories of this rule that `spec` holds, in the rule's order.
+    fn present(&self, spec: &SceneSpec) -> Vec<String> {
+        let mut out: Vec<String> = vec![];
+        for n in &self.objects {
+            for (c, o) in &spec.objects {
+                if o.number > 0 && names(n, c) && !out.contains(c) {
+                    out.push(c.clone());
+                }
+            }
+        }
+        out
+    }
+}
 
 /// Seats round a table `size` wide and deep: each side takes one per 0.55 m (a chair's width
 /// plus elbow room), at least one a side (Infinigen's and furnishers' rule of thumb).
@@ -247,40 +118,38 @@ fn capacity(rule: &Rule, size: [f64; 3]) -> u32 {
 
 /// The group relation and the object category of `subject` in `spec`, if a rule applies.
 pub fn group_of(spec: &SceneSpec, subject: &str) -> Option<(RelationKind, String)> {
-    RULES.iter().find_map(|r| {
-        if !r.subjects.contains(&subject) {
+    rules().iter().find_map(|r| {
+        if !r.has_subject(subject) {
             return None;
         }
-        r.objects
-            .iter()
-            .find(|o| spec.objects.contains_key(**o))
-            .map(|o| (r.relation, o.to_string()))
+        r.present(spec).into_iter().next().map(|o| (r.relation, o))
     })
 }
 
 /// The group relation a `subject` category takes to an `object` category (a cafe chair to a
 /// cafe table: AROUND; an office chair to a desk: AT), if they form a group.
 pub fn relation_between(subject: &str, object: &str) -> Option<RelationKind> {
-    RULES
+    rules()
         .iter()
-        .find(|r| r.subjects.contains(&subject) && r.objects.contains(&object))
+        .find(|r| r.has_subject(subject) && r.has_object(object))
         .map(|r| r.relation)
 }
 
-/// Whether `subject` forms a group with some category (a bar stool with a counter).
+/// Whether `subject` forms a group with some category (a bar stool with a counter): the object
+/// names of its first rule.
 pub fn group_of_category(subject: &str) -> Option<&'static [&'static str]> {
-    RULES
+    rules()
         .iter()
-        .find(|r| r.subjects.contains(&subject))
-        .map(|r| r.objects)
+        .find(|r| r.has_subject(subject))
+        .map(|r| r.objects.as_slice())
 }
 
 /// Every object category `subject` forms a group with, over all the rules (a dining chair goes
 /// with a school desk and with the dining tables).
 pub fn partners_of(subject: &str) -> Vec<&'static str> {
-    RULES
+    rules()
         .iter()
-        .filter(|r| r.subjects.contains(&subject))
+        .filter(|r| r.has_subject(subject))
         .flat_map(|r| r.objects.iter().copied())
         .collect()
 }
@@ -288,32 +157,56 @@ pub fn partners_of(subject: &str) -> Vec<&'static str> {
 /// How many subjects one `object` instance seats in its group with `subject` (the table's
 /// seats, a desk's one chair), if they form a group.
 pub fn seats_per(spec: &SceneSpec, subject: &str, object: &str) -> Option<u32> {
-    let rule = RULES
+    let rule = rules()
         .iter()
-        .find(|r| r.subjects.contains(&subject) && r.objects.contains(&object))?;
+        .find(|r| r.has_subject(subject) && r.has_object(object))?;
     let size = spec.objects.get(object)?.size;
     Some(capacity(rule, size))
 }
 
+/// Whether things "around" `category` stand in a ring round it, facing it (a fire): the objects
+/// of the CIRCLE rules.
+pub fn ring_centre(category: &str) -> bool {
+    rules()
+        .iter()
+        .any(|r| r.relation == RelationKind::Circle && r.has_object(category))
+}
+
 /// Adds the group relations of `spec`. Relations in `keep` (the user's own, by instance pair)
 /// stay; other relations between a grouped subject and its group's object category are
-/// replaced. Subjects beyond every object's capacity are left free.
+/// replaced. Subjects beyond every object's capacity are left free. Seats spread over every
+/// table category the scene holds (a top table and the round tables of a reception); a
+/// sentence's "around" a ring centre (tents around a campfire) becomes a ring.
 pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
     let count = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
     let mut added: Vec<Relation> = vec![];
-    let mut grouped: BTreeMap<String, String> = BTreeMap::new();
+    let mut grouped: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut used: BTreeMap<String, u32> = BTreeMap::new();
-    for rule in RULES {
-        for subj in rule.subjects {
-            let n = count(subj);
-            if n == 0 {
-                continue;
+    for rule in rules() {
+        let present = rule.present(spec);
+        // the object instances, the first category's first, with what each takes
+        let seats = rule.per_object.is_none();
+        let objects: Vec<(String, u32)> = present
+            .iter()
+            .take(if seats { present.len() } else { 1 })
+            .flat_map(|c| {
+                let cap = capacity(rule, spec.objects[c].size);
+                (1..=count(c)).map(move |m| (format!("{c}{m}"), cap))
+            })
+            .collect();
+        if objects.is_empty() {
+            continue;
+        }
+        // the subject categories in the rule's order
+        let mut subjects: Vec<(String, u32)> = vec![];
+        for n in &rule.subjects {
+            for (c, o) in &spec.objects {
+                if o.number > 0 && names(n, c) && !subjects.iter().any(|s| s.0 == *c) {
+                    subjects.push((c.clone(), o.number));
+                }
             }
-            let Some(obj) = rule.objects.iter().find(|o| count(o) > 0) else {
-                continue;
-            };
-            let cap = capacity(rule, spec.objects[*obj].size);
-            let n_obj = count(obj);
+        }
+        for (subj, n) in subjects {
             for k in 1..=n {
                 let sid = format!("{subj}{k}");
                 if grouped.contains_key(&sid) {
@@ -324,17 +217,17 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
                     continue;
                 }
                 // Spread over the objects: the object instance with the fewest so far.
-                let best = (1..=n_obj)
-                    .map(|m| format!("{obj}{m}"))
-                    .filter(|oid| used.get(oid).copied().unwrap_or(0) < cap)
-                    .min_by_key(|oid| used.get(oid).copied().unwrap_or(0));
-                let Some(oid) = best else { break };
+                let best = objects
+                    .iter()
+                    .filter(|(oid, cap)| used.get(oid).copied().unwrap_or(0) < *cap)
+                    .min_by_key(|(oid, _)| used.get(oid).copied().unwrap_or(0));
+                let Some((oid, _)) = best else { break };
                 *used.entry(oid.clone()).or_default() += 1;
-                grouped.insert(sid.clone(), obj.to_string());
+                grouped.insert(sid.clone(), present.clone());
                 added.push(Relation {
                     subject: sid,
                     relation: rule.relation,
-                    object: oid,
+                    object: oid.clone(),
                 });
             }
         }
@@ -355,7 +248,7 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         if new_pairs.contains(&pair(&r.subject, &r.object)) {
             return false;
         }
-        let replaced = |s: &str, o: &str| grouped.get(s).is_some_and(|c| *c == base(o));
+        let replaced = |s: &str, o: &str| grouped.get(s).is_some_and(|c| c.contains(&base(o)));
         // A grouped subject keeps no other relation that would pull it away from its group
         // (stacked pairs excepted: a lamp on the nightstand stays).
         let pulls = |s: &str| {
@@ -365,6 +258,11 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         !(replaced(&r.subject, &r.object) || replaced(&r.object, &r.subject) || pulls(&r.subject))
     });
     spec.relations.extend(added);
+    for r in spec.relations.iter_mut() {
+        if r.relation == RelationKind::Around && ring_centre(&base(&r.object)) {
+            r.relation = RelationKind::Circle;
+        }
+    }
     shelter_group(spec);
 }
 
@@ -398,4 +296,148 @@ fn shelter_group(spec: &mut SceneSpec) {
         }
     }
     spec.relations.extend(extra);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(objects: &[(&str, u32, [f64; 3])], relations: &[(&str, &str, &str)]) -> SceneSpec {
+        let objects: Vec<String> = objects
+            .iter()
+            .map(|(c, n, s)| format!(r#""{c}":{{"number":{n},"size":{s:?},"description":"d"}}"#))
+            .collect();
+        let relations: Vec<String> = relations
+            .iter()
+            .map(|(s, r, o)| format!(r#"{{"subject":"{s}","relation":"{r}","object":"{o}"}}"#))
+            .collect();
+        let text = format!(
+            r#"{{"scene_type":"outdoor","scene_text":"t","objects":{{{}}},"relations":[{}]}}"#,
+            objects.join(","),
+            relations.join(",")
+        );
+        serde_json::from_str(&text).expect("spec")
+    }
+
+    fn has(spec: &SceneSpec, s: &str, rel: RelationKind, o: &str) -> bool {
+        spec.relations
+            .iter()
+            .any(|r| r.subject == s && r.relation == rel && r.object == o)
+    }
+
+    #[test]
+    fn every_line_of_the_groups_table_reads() {
+        let lines = include_str!("kb/groups.txt")
+            .lines()
+            .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+            .count();
+        assert_eq!(
+            rules().len(),
+            lines,
+            "a line of kb/groups.txt does not read"
+        );
+        let kb = super::super::kb::KnowledgeBase::builtin();
+        for r in rules() {
+            let known = |ns: &[&str]| {
+                ns.iter()
+                    .any(|n| n.starts_with("any ") || kb.object(n).is_some())
+            };
+            assert!(
+                known(&r.subjects) && known(&r.objects),
+                "{:?} {:?}",
+                r.subjects,
+                r.objects
+            );
+        }
+    }
+
+    #[test]
+    fn any_kind_of_bridge_crosses_the_pond() {
+        for bridge in ["wooden bridge", "bridge", "stone bridge"] {
+            let mut s = spec(
+                &[("pond", 1, [3.0, 2.0, 0.3]), (bridge, 1, [1.2, 3.5, 1.0])],
+                &[],
+            );
+            apply(&mut s, &BTreeSet::new());
+            assert!(
+                has(&s, "pond1", RelationKind::Under, &format!("{bridge}1")),
+                "{bridge}: {:?}",
+                s.relations
+            );
+        }
+        let mut s = spec(
+            &[
+                ("pond", 1, [3.0, 2.0, 0.3]),
+                ("bridge table", 1, [1.0, 1.0, 1.0]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        assert!(
+            s.relations.is_empty(),
+            "a bridge table is no bridge: {:?}",
+            s.relations
+        );
+    }
+
+    #[test]
+    fn things_around_a_fire_form_a_ring_and_seats_spread_over_every_table() {
+        let mut s = spec(
+            &[
+                ("tent", 3, [2.5, 2.5, 1.5]),
+                ("fire pit", 1, [1.0, 1.0, 0.4]),
+            ],
+            &[
+                ("tent1", "AROUND", "fire pit1"),
+                ("tent2", "AROUND", "fire pit1"),
+            ],
+        );
+        let keep: BTreeSet<(String, String)> = s
+            .relations
+            .iter()
+            .map(|r| (r.subject.clone(), r.object.clone()))
+            .collect();
+        apply(&mut s, &keep);
+        assert!(
+            has(&s, "tent1", RelationKind::Circle, "fire pit1"),
+            "{:?}",
+            s.relations
+        );
+        // a table is no ring centre: chairs around it stay at its sides
+        let mut s = spec(
+            &[
+                ("dining chair", 10, [0.45, 0.5, 0.9]),
+                ("dining table", 1, [1.8, 0.9, 0.75]),
+                ("kitchen table", 1, [1.2, 0.8, 0.75]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        let at = |t: &str| {
+            s.relations
+                .iter()
+                .filter(|r| r.relation == RelationKind::Around && r.object == t)
+                .count()
+        };
+        assert_eq!(
+            (at("dining table1"), at("kitchen table1")),
+            (5, 5),
+            "{:?}",
+            s.relations
+        );
+        // benches down the sides of a table
+        let mut s = spec(
+            &[
+                ("bench", 2, [1.2, 0.4, 0.45]),
+                ("dining table", 1, [2.2, 1.0, 0.75]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        assert!(
+            has(&s, "bench2", RelationKind::Around, "dining table1"),
+            "{:?}",
+            s.relations
+        );
+    }
 }

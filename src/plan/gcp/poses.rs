@@ -12,8 +12,9 @@ impl Problem {
         &self,
         i: usize,
         rel: RelationKind,
-        pj: &Pose,
+        (j, pj): (usize, &Pose),
         bj: &Box2,
+        placed: &[Option<Pose>],
     ) -> Option<Vec<Pose>> {
         let s = self.inst[i].size;
         let [hw, hd] = bj.half;
@@ -40,6 +41,11 @@ impl Problem {
                     } else {
                         (2.0 * hd, hw)
                     };
+                    // a seat much wider than a side (a bench at a table's end) sits on the
+                    // long sides only
+                    if s[0] > 1.25 * len && s[0] > 0.8 {
+                        continue;
+                    }
                     for g in [0.05, 0.15] {
                         let off = half_across + g + 0.5 * s[1];
                         for t in slots(len, s[0]) {
@@ -110,9 +116,11 @@ impl Problem {
                 }
             }
             RelationKind::Circle => {
-                // A ring 0.8-1.1 m out, each seat facing the centre.
+                // A ring round the centre, each member facing it: seats close in, big things
+                // (tents) beyond them; spread evenly from the members already placed.
+                out.extend(self.ring_poses(i, j, pj, placed));
                 let ext = 0.5 * s[0].max(s[1]);
-                for g in [0.8, 1.1] {
+                for g in Self::ring_gaps(s) {
                     let r = hw.max(hd) + g + ext;
                     for k in 0..16 {
                         let a = k as f64 * std::f64::consts::TAU / 16.0;

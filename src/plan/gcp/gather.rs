@@ -1,0 +1,315 @@
+//! How the members of a functional group stand among themselves, as soft terms of the search's
+//! score: the members of a ring (tents or chairs round a fire) spread evenly round its centre,
+//! the big ones (tents) beyond the small ones (seats); and a seat pulled up to its table, desk or
+//! counter keeps a spot free beside or behind it where a person stands to sit down, which nothing
+//! placed later takes away (a chair wedged between a wall and a planter is no seat).
+use super::{yaw_facing, Pose, Problem};
+use crate::plan::check::{overlap_depth, Box2, CIRCLE_GAP};
+use crate::plan::spec::RelationKind;
+use std::f64::consts::TAU;
+
+/// Footprint area (m²) from which a ring member is big (a tent, not a seat): it stands in the
+/// outer ring.
+const BIG_MEMBER: f64 = 1.5;
+/// Depth of the standing spot beside a seat (m): a person (0.6 m across) and a little room to turn.
+const SPOT: f64 = 0.75;
+/// Weight of a ring member standing closer to its neighbours than an even spread would.
+const SPREAD_WEIGHT: f64 = 6.0;
+/// Weight of a seat left with no standing spot.
+const ACCESS_WEIGHT: f64 = 8.0;
+/// Depth beyond a table's side for a seat and the person who sits down (m).
+const TABLE_ROOM: f64 = 1.2;
+/// Things whose bottom is higher than this leave a standing spot free (m).
+const HEAD_HEIGHT: f64 = 1.9;
+
+impl Problem {
+    /// Gaps (m) of the ring round a centre for a member of footprint `s`: seats close in, big
+    /// things (tents) at the far edge of the ring's range, beyond the seats.
+    pub(super) fn ring_gaps(s: [f64; 3]) -> [f64; 2] {
+        if s[0] * s[1] >= BIG_MEMBER {
+            [CIRCLE_GAP.1 - 0.3, CIRCLE_GAP.1 - 0.1]
+        } else {
+            [CIRCLE_GAP.0 + 0.2, CIRCLE_GAP.0 + 0.5]
+        }
+    }
+
+    /// The other members of instance `i`'s ring round `j` (same category), placed or not.
+    fn ring_mates(&self, i: usize, j: usize) -> Vec<usize> {
+        self.rels[j]
+            .iter()
+            .filter(|&&(rel, k, subject)| {
+                rel == RelationKind::Circle
+                    && !subject
+                    && k != i
+                    && self.inst[k].category == self.inst[i].category
+            })
+            .map(|r| r.1)
+            .collect()
+    }
+
+    /// Ring poses for `i` round placed `j` evenly spread from the members already placed (a
+    /// third tent a third of a turn from the others), at the ring's gaps for its size.
+    pub(super) fn ring_poses(
+        &self,
+        i: usize,
+        j: usize,
+        pj: &Pose,
+        placed: &[Option<Pose>],
+    ) -> Vec<Pose> {
+        let s = self.inst[i].size;
+        let mates = self.ring_mates(i, j);
+        let n = mates.len() + 1;
+        let ext = 0.5 * s[0].max(s[1]);
+        let half = 0.5 * self.inst[j].size[0].max(self.inst[j].size[1]);
+        let mut out = vec![];
+        for q in mates.iter().filter_map(|&k| placed[k]) {
+            let a0 = (q.c[1] - pj.c[1]).atan2(q.c[0] - pj.c[0]);
+            for m in 1..n {
+                let a = a0 + m as f64 * TAU / n as f64;
+                for g in Self::ring_gaps(s) {
+                    let r = half + g + ext;
+                    let c = [pj.c[0] + r * a.cos(), pj.c[1] + r * a.sin()];
+                    let yaw = yaw_facing([pj.c[0] - c[0], pj.c[1] - c[1]]);
+                    out.push(Pose { c, yaw, z: 0.0 });
+                }
+            }
+        }
+        out
+    }
+
+    /// The centre of `i`'s ring (the object of its CIRCLE relation), if it has one.
+    fn centre_of(&self, i: usize) -> Option<usize> {
+        self.rels[i]
+            .iter()
+            .find(|r| r.0 == RelationKind::Circle && r.2)
+            .map(|r| r.1)
+    }
+
+    /// The group term of pose `p` (box `b`) for instance `i` (0 at best, negative).
+    pub(super) fn gathering(
+        &self,
+        i: usize,
+        p: &Pose,
+        b: &Box2,
+        placed: &[Option<Pose>],
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> f64 {
+        let mut score = 0.0;
+        // A ring's members spread evenly round its centre.
+        if let Some(j) = self.centre_of(i) {
+            if let Some(pj) = placed[j] {
+                let mates = self.ring_mates(i, j);
+                let ideal = TAU / (mates.len() + 1) as f64;
+                let angle = |c: [f64; 2]| (c[1] - pj.c[1]).atan2(c[0] - pj.c[0]);
+                let a = angle(p.c);
+                let sep = mates
+                    .iter()
+                    .filter_map(|&k| placed[k])
+                    .map(|q| {
+                        let d = (angle(q.c) - a).rem_euclid(TAU);
+                        d.min(TAU - d)
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                if sep.is_finite() && mates.len() < 12 {
+                    score -= SPREAD_WEIGHT * ((ideal - sep) / ideal).max(0.0);
+                }
+            }
+        }
+        // A seat keeps a standing spot; nothing takes the last one of a placed seat.
+        if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
+            if let Some(t) = self.seat_table(i) {
+                if !self.has_spot(b, t, None, boxes) {
+                    score -= ACCESS_WEIGHT;
+                }
+            }
+            let ab = b.aabb();
+            for (k, bk) in boxes.iter().enumerate() {
+                let Some((bk, ak)) = bk else { continue };
+                let near = (ak[0] - ab[2])
+                    .max(ab[0] - ak[2])
+                    .max(ak[1] - ab[3])
+                    .max(ab[1] - ak[3]);
+                if near > SPOT || k == i {
+                    continue;
+                }
+                let Some(t) = self.seat_table(k) else {
+                    continue;
+                };
+                if t == i {
+                    continue;
+                }
+                if self.has_spot(bk, t, None, boxes) && !self.has_spot(bk, t, Some(b), boxes) {
+                    score -= ACCESS_WEIGHT;
+                }
+            }
+        }
+        // A table keeps room on two of its sides for its seats and the people who sit down;
+        // nothing placed later takes it away.
+        if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
+            let want = self.seats_of(i).min(2);
+            if want > 0 && self.free_sides(b, i, None, boxes) < want {
+                score -= ACCESS_WEIGHT;
+            }
+            let ab = b.aabb();
+            for (k, bk) in boxes.iter().enumerate() {
+                let Some((bk, ak)) = bk else { continue };
+                let near = (ak[0] - ab[2])
+                    .max(ab[0] - ak[2])
+                    .max(ak[1] - ab[3])
+                    .max(ab[1] - ak[3]);
+                let want = self.seats_of(k).min(2);
+                if near > TABLE_ROOM || k == i || want == 0 || self.linked(i, k) {
+                    continue;
+                }
+                let before = self.free_sides(bk, k, None, boxes);
+                if before >= want && self.free_sides(bk, k, Some(b), boxes) < want {
+                    score -= ACCESS_WEIGHT;
+                }
+            }
+        }
+        score
+    }
+
+    /// Whether `i` and `j` are related in the spec.
+    fn linked(&self, i: usize, j: usize) -> bool {
+        self.rels[i].iter().any(|r| r.1 == j)
+    }
+
+    /// How many seats stand AROUND instance `t`.
+    fn seats_of(&self, t: usize) -> usize {
+        self.rels[t]
+            .iter()
+            .filter(|r| !r.2 && r.0 == RelationKind::Around)
+            .count()
+    }
+
+    /// How many sides of table box `b` (instance `t`) have [`TABLE_ROOM`] free beyond them:
+    /// inside the room, clear of what is placed (and of `extra`) but `t`'s own partners.
+    fn free_sides(
+        &self,
+        b: &Box2,
+        t: usize,
+        extra: Option<&Box2>,
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> usize {
+        let [w, d, _] = self.room;
+        let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
+        let [hx, hy] = b.half;
+        let at = |lx: f64, ly: f64| {
+            [
+                b.c[0] + lx * b.ex[0] + ly * b.ey[0],
+                b.c[1] + lx * b.ex[1] + ly * b.ey[1],
+            ]
+        };
+        let r = 0.5 * TABLE_ROOM;
+        let bands = [
+            Box2::new(at(0.0, hy + r), yaw, [2.0 * hx, TABLE_ROOM], 0.0, 1.8),
+            Box2::new(at(0.0, -hy - r), yaw, [2.0 * hx, TABLE_ROOM], 0.0, 1.8),
+            Box2::new(at(hx + r, 0.0), yaw, [TABLE_ROOM, 2.0 * hy], 0.0, 1.8),
+            Box2::new(at(-hx - r, 0.0), yaw, [TABLE_ROOM, 2.0 * hy], 0.0, 1.8),
+        ];
+        let clear =
+            |s: &Box2, o: &Box2| o.z0 >= HEAD_HEIGHT || o.z1 <= 0.05 || overlap_depth(s, o) <= 0.02;
+        bands
+            .iter()
+            .filter(|s| {
+                let [x0, y0, x1, y1] = s.aabb();
+                x0 >= -0.5 * w
+                    && x1 <= 0.5 * w
+                    && y0 >= -0.5 * d
+                    && y1 <= 0.5 * d
+                    && extra.is_none_or(|e| clear(s, e))
+                    && boxes.iter().enumerate().all(|(k, bk)| {
+                        let Some((bk, _)) = bk else { return true };
+                        k == t || self.linked(t, k) || clear(s, bk)
+                    })
+            })
+            .count()
+    }
+
+    /// The table, desk or counter instance `i` is a seat at (AROUND or AT), if any.
+    fn seat_table(&self, i: usize) -> Option<usize> {
+        self.rels[i]
+            .iter()
+            .find(|r| r.2 && matches!(r.0, RelationKind::Around | RelationKind::At))
+            .map(|r| r.1)
+    }
+
+    /// Whether seat box `b` at table `t` has a standing spot behind it or at either side:
+    /// inside the room and clear of every placed box below head height (and of `extra`).
+    fn has_spot(
+        &self,
+        b: &Box2,
+        t: usize,
+        extra: Option<&Box2>,
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> bool {
+        let [w, d, _] = self.room;
+        let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
+        let at = |lx: f64, ly: f64| {
+            [
+                b.c[0] + lx * b.ex[0] + ly * b.ey[0],
+                b.c[1] + lx * b.ex[1] + ly * b.ey[1],
+            ]
+        };
+        let [hx, hy] = b.half;
+        let spots = [
+            Box2::new(at(0.0, -hy - 0.5 * SPOT), yaw, [2.0 * hx, SPOT], 0.0, 1.8),
+            Box2::new(at(-hx - 0.5 * SPOT, 0.0), yaw, [SPOT, 2.0 * hy], 0.0, 1.8),
+            Box2::new(at(hx + 0.5 * SPOT, 0.0), yaw, [SPOT, 2.0 * hy], 0.0, 1.8),
+        ];
+        spots.iter().any(|s| {
+            let [x0, y0, x1, y1] = s.aabb();
+            let inside = x0 >= -0.5 * w && x1 <= 0.5 * w && y0 >= -0.5 * d && y1 <= 0.5 * d;
+            inside
+                && extra.is_none_or(|e| e.z0 >= HEAD_HEIGHT || overlap_depth(s, e) <= 0.02)
+                && boxes.iter().enumerate().all(|(k, bk)| {
+                    let Some((bk, _)) = bk else { return true };
+                    k == t || bk.z0 >= HEAD_HEIGHT || bk.z1 <= 0.05 || overlap_depth(s, bk) <= 0.02
+                })
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::check::{facing_footprint_error, gap, Box2};
+    use crate::plan::gcp::{layout, LayoutOptions};
+    use crate::plan::spec::SceneSpec;
+
+    #[test]
+    fn tents_round_a_fire_stand_beyond_the_seats_and_face_it() {
+        let text = r#"{"scene_type":"outdoor","scene_text":"t","objects":{
+            "tent":{"number":3,"size":[2.5,2.5,1.5],"description":"d"},
+            "camp chair":{"number":4,"size":[0.6,0.6,0.9],"description":"d"},
+            "fire pit":{"number":1,"size":[1.0,1.0,0.4],"description":"d"}},
+            "relations":[
+            {"subject":"tent1","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"tent2","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"tent3","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair1","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair2","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair3","relation":"CIRCLE","object":"fire pit1"},
+            {"subject":"camp chair4","relation":"CIRCLE","object":"fire pit1"}]}"#;
+        let spec: SceneSpec = serde_json::from_str(text).expect("spec");
+        for seed in 0..3 {
+            let l = layout(&spec, LayoutOptions::seeded(seed)).expect("laid out");
+            assert!(l.unsatisfied.is_empty(), "seed {seed}: {:?}", l.unsatisfied);
+            let get = |id: &str| l.objects.iter().find(|o| o.id == id).expect("placed");
+            let fire = Box2::of(get("fire pit1"));
+            let tents = ["tent1", "tent2", "tent3"];
+            for a in tents {
+                let t = Box2::of(get(a));
+                assert!(
+                    facing_footprint_error(&t, &fire) <= 30.0,
+                    "seed {seed}: {a} turned away"
+                );
+                let seat = Box2::of(get("camp chair1"));
+                assert!(
+                    gap(&t, &fire) > gap(&seat, &fire),
+                    "seed {seed}: {a} inside the seats"
+                );
+            }
+        }
+    }
+}
