@@ -6,7 +6,8 @@ use dreamscene::camera::Camera;
 use dreamscene::export::trajectory::{cameras, open_input_at, Input, Size, Subject, Trajectory};
 use dreamscene::generate::progress::Progress;
 use dreamscene::splat::ply::{read_ply_with, Invalid};
-use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
+use dreamscene::splat::raster::Rasterizer;
+use dreamscene::splat::view::ViewSource;
 use dreamscene::splat::Gaussians;
 use std::path::{Path, PathBuf};
 
@@ -105,11 +106,13 @@ pub fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let ctx = open_device()?;
     let r = Rasterizer::new(&ctx)?;
-    let gg = GpuGaussians::upload(&ctx, g)?;
+    let mut source = ViewSource::new(&ctx, g);
     let mut progress = Progress::new(cams.len() as u64, false);
     let mut written = Vec::with_capacity(cams.len());
     for (i, c) in cams.iter().enumerate() {
-        let img = r.forward(&ctx, &gg, c, background)?.read()?;
+        let img = r
+            .forward(&ctx, source.for_camera(&ctx, c)?, c, background)?
+            .read()?;
         let name = format!("{}.png", c.output_name());
         let path = out.join(&name);
         super::create_parent(&path)?;

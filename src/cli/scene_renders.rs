@@ -5,7 +5,8 @@ use anyhow::{Context as _, Result};
 use dreamscene::camera::scene::{render_views, SceneBox};
 use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::plan::spec::Layout;
-use dreamscene::splat::raster::{GpuGaussians, Rasterizer};
+use dreamscene::splat::raster::Rasterizer;
+use dreamscene::splat::view::ViewSource;
 use dreamscene::splat::Gaussians;
 use std::path::Path;
 
@@ -77,10 +78,12 @@ fn render_views_to(
 ) -> Result<()> {
     let ctx = super::open_device()?;
     let r = Rasterizer::new(&ctx)?;
-    let gg = GpuGaussians::upload(&ctx, g)?;
+    let mut source = ViewSource::new(&ctx, g);
     let mut shots = vec![];
     for cam in cams {
-        let img = r.forward(&ctx, &gg, cam, BACKGROUND)?.read()?;
+        let img = r
+            .forward(&ctx, source.for_camera(&ctx, cam)?, cam, BACKGROUND)?
+            .read()?;
         if write(cam) {
             super::save_png(&img, &dir.join(format!("{}.png", cam.img_name)))?;
         }

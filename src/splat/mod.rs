@@ -13,5 +13,6 @@ pub mod scan;
 pub mod score;
 pub mod sort;
 pub mod train;
+pub mod view;
 
 pub use cloud::Gaussians;
