@@ -488,7 +488,8 @@ impl Problem {
         let front = self.front_cost(i, &b, boxes);
         total += 1;
         ok += (front == 0.0) as usize;
-        let comp = self.composition(i, p, &b, placed, boxes) + self.gathering(i, p, &b, placed, boxes)
+        let comp = self.composition(i, p, &b, placed, boxes)
+            + self.gathering(i, p, &b, placed, boxes)
             - front;
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
