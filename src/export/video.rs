@@ -8,7 +8,7 @@ use super::encode::{self, EncodeError};
 use crate::camera::Camera;
 use crate::gpu::{Context, GpuError};
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer, RenderOutput};
-use crate::splat::Gaussians;
+use crate::splat::{view, Gaussians};
 use std::path::Path;
 
 /// Why a video cannot be made.
@@ -128,10 +128,26 @@ pub fn render_video(
     let raster = Rasterizer::new(ctx)?;
     let mut frame = Frame::new(ctx)?;
     let mut uploaded: Option<GpuGaussians> = None;
+    // a cloud too large for one render is kept on the host and drawn per frame from the part
+    // the frame's camera sees (`splat::view`)
+    let mut large: Option<(Gaussians, usize)> = None;
     for (i, cam) in cams.iter().enumerate() {
         let t = i as f64 / opts.fps;
         if let Some(g) = source.gaussians_at(t) {
-            uploaded = Some(GpuGaussians::upload(ctx, g)?);
+            uploaded = None;
+            let max = view::max_gaussians(ctx, g);
+            if g.len() > max {
+                large = Some((g.clone(), max));
+            } else {
+                large = None;
+                uploaded = Some(GpuGaussians::upload(ctx, g)?);
+            }
+        }
+        if let Some((g, max)) = &large {
+            // the last frame's part is freed before the next is made
+            drop(uploaded.take());
+            let part = view::select(g, &view::visible(g, cam, *max));
+            uploaded = Some(GpuGaussians::upload(ctx, &part)?);
         }
         let g = uploaded.as_ref().ok_or_else(|| {
             VideoError::Invalid("the frame source gave no Gaussians for the first frame".into())
