@@ -454,20 +454,9 @@ pub fn navmesh_path(out: &Path) -> std::path::PathBuf {
 
 /// The Gaussians of `g` that `keep` marks, in order.
 pub fn select(g: &Gaussians, keep: &[bool]) -> Gaussians {
-    let k = g.coeffs() * 3;
     let on = |i: &usize| keep.get(*i).copied().unwrap_or(false);
     let idx: Vec<usize> = (0..g.len()).filter(on).collect();
-    Gaussians {
-        means: idx.iter().map(|&i| g.means[i]).collect(),
-        scales: idx.iter().map(|&i| g.scales[i]).collect(),
-        rotations: idx.iter().map(|&i| g.rotations[i]).collect(),
-        opacities: idx.iter().map(|&i| g.opacities[i]).collect(),
-        sh: idx
-            .iter()
-            .flat_map(|&i| g.sh[i * k..(i + 1) * k].iter().copied())
-            .collect(),
-        sh_degree: g.sh_degree,
-    }
+    crate::splat::view::select(g, &idx)
 }
 
 /// Gaussians `start..start + count` of `g` (clamped to its length).
