@@ -125,10 +125,7 @@ impl Problem {
             let ab = b.aabb();
             for (k, bk) in boxes.iter().enumerate() {
                 let Some((bk, ak)) = bk else { continue };
-                let near = (ak[0] - ab[2])
-                    .max(ab[0] - ak[2])
-                    .max(ak[1] - ab[3])
-                    .max(ab[1] - ak[3]);
+                let near = aabb_gap(ak, &ab);
                 if near > SPOT || k == i {
                     continue;
                 }
@@ -153,10 +150,7 @@ impl Problem {
             let ab = b.aabb();
             for (k, bk) in boxes.iter().enumerate() {
                 let Some((bk, ak)) = bk else { continue };
-                let near = (ak[0] - ab[2])
-                    .max(ab[0] - ak[2])
-                    .max(ak[1] - ab[3])
-                    .max(ab[1] - ak[3]);
+                let near = aabb_gap(ak, &ab);
                 let want = self.seats_of(k).min(2);
                 if near > TABLE_ROOM || k == i || want == 0 || self.linked(i, k) {
                     continue;
@@ -269,6 +263,15 @@ impl Problem {
                 })
         })
     }
+}
+
+/// How far apart two axis-aligned boxes `[x0, y0, x1, y1]` are along the axis that separates
+/// them most (negative when they overlap).
+fn aabb_gap(a: &[f64; 4], b: &[f64; 4]) -> f64 {
+    (a[0] - b[2])
+        .max(b[0] - a[2])
+        .max(a[1] - b[3])
+        .max(b[1] - a[3])
 }
 
 #[cfg(test)]
