@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# The measurements of a lent GPU machine (no network there), as recorded in the README's
+# "Measured on a GPU": the kernel benchmarks, the GPU test files, the sd iteration split with the
+# WebGPU provider on the full-size SD 2.1-shaped export, the UNet latencies and one `sd` scene.
+#
+# Prepared here, carried in the repository's ignored .dev/ and .gl/ folders:
+#   .gl/*.deb        the Vulkan loader and validation layer (apt-get download libvulkan1
+#                    vulkan-validationlayers libegl1 ...; unpacked with dpkg -x there)
+#   .dev/ort.tar.xz  libonnxruntime.so.1.31.1, libonnxruntime_providers_shared.so and
+#                    libonnxruntime_providers_webgpu.so (what scripts/setup.sh installs)
+#   .dev/bin.tar.xz  target/release/dreamscene and release test binaries named t_NN_<file>
+#                    (cargo test --release --no-run; built in /work/main, so that path is linked)
+#   .dev/carry/      scripts/dev/make_full_export.sh's carry (graphs + weights.json)
+# Usage there: bash scripts/dev/device_measure.sh [setup,doctor,bench,sd,unet,tests,scene]
+set -u
+STEPS=${1:-setup,doctor,bench,sd,unet,tests,scene}
+R=$(pwd); O=${OUT:-/tmp/out}; mkdir -p $O
+log() { echo "== $(date -u +%T) $*"; }
+has() { [[ ",$STEPS," == *",$1,"* ]]; }
+export HOME=/tmp/dshome; mkdir -p $HOME/.local/share/dreamscene/onnxruntime
+export NVICD=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+log setup
+for f in .gl/*.deb; do dpkg -x $f / 2>/dev/null; done; ldconfig
+tar -xJf .dev/ort.tar.xz -C $HOME/.local/share/dreamscene/onnxruntime
+mkdir -p target/release && tar -xJf .dev/bin.tar.xz -C target/release
+# the test binaries were built in /work/main: give them that path
+mkdir -p /work && [ -e /work/main ] || ln -s "$R" /work/main
+ls $NVICD 2>/dev/null && export VK_DRIVER_FILES=$NVICD VK_ICD_FILENAMES=$NVICD
+export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+export VK_LAYER_PATH=/usr/share/vulkan/explicit_layer.d
+# the webgpu test's "Mesa 25" environment is the real GPU here
+mkdir -p $HOME/.local/share/dreamscene/mesa25 && echo "export VK_DRIVER_FILES=${VK_DRIVER_FILES:-}" > $HOME/.local/share/dreamscene/mesa25/env.sh
+nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader
+D=target/release/dreamscene
+( nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms 250 > $O/gpumem.txt 2>&1 & )
+peak() { # peak() LABEL CMD... : runs CMD, samples its host RSS, prints peak host and device memory
+  local label=$1; shift; local s0; s0=$(wc -l < $O/gpumem.txt)
+  "$@" & local pid=$! hw=0
+  while kill -0 $pid 2>/dev/null; do
+    # the dreamscene process itself (CMD may be a wrapper such as timeout)
+    h=$(ps -C dreamscene -o rss= 2>/dev/null | sort -n | tail -1); [ -n "$h" ] && [ "$h" -gt "$hw" ] && hw=$h; sleep 0.5; done
+  wait $pid; local rc=$?
+  local g; g=$(tail -n +$((s0+1)) $O/gpumem.txt | sort -n | tail -1)
+  log "$label rc=$rc peak host ${hw} KiB, peak device ${g} MiB (whole GPU)"
+}
+if has doctor; then log doctor; timeout 60 $D doctor --provider webgpu 2>&1 | tail -30; timeout 60 $D doctor 2>&1 | grep -i -E "provider|auto|device|vulkan" | head; fi
+if has bench; then log bench; timeout 60 $D bench --runs 3 2>&1 | tail -30; timeout 70 $D bench --generate --runs 2 2>&1 | tail -20; fi
+if has sd; then
+  log fill; M=/tmp/full; rm -rf $M; cp -r .dev/carry $M
+  timeout 240 python3 scripts/dev/weightless.py fill $M 2>&1 | tail -5; du -sh $M
+  log sd-generate; peak sdgen timeout ${SD_S:-240} $D bench --generate --prior sd --models $M --provider webgpu --runs 1 2>&1 | tail -20
+fi
+if has unet; then log sd-unet; peak unet timeout 100 $D bench --unet --models /tmp/full --provider webgpu --runs 2 2>&1 | tail -20
+fi
+if has tests; then
+  log tests; export DREAMSCENE_VALIDATION=1 DREAMSCENE_REQUIRE_VALIDATION=1
+  t0=$(date +%s); for t in target/release/t_*; do n=${t##*/t_}; s=$(date +%s)
+    [ $((s-t0)) -gt ${TESTS_S:-170} ] && { echo "$n: not run (time)"; continue; }
+    r=$(timeout 60 $t --test-threads 4 2>&1 | grep -E "^test result|panicked|FAILED|failed" | head -5)
+    echo "$n ($(( $(date +%s)-s )) s): $r"; done
+fi
+if has scene; then
+  log scene; M=/tmp/full; echo '{"id":"bath","prompt":"a small bathroom","seed":0}' > /tmp/m.jsonl
+  peak scene timeout ${SCENE_S:-200} $D batch /tmp/m.jsonl --out /tmp/b --prior sd --models $M --provider webgpu --object-iterations 3 --iterations 3 --recon-passes 1 --object-recon-passes 1 --resolution 256 --renders 2 2>&1 | tail -15
+  $D batch --status /tmp/b 2>&1 | tail -5; cp /tmp/b/index.json $O/ 2>/dev/null; python3 -c "import json;print(json.dumps(json.load(open('/tmp/b/index.json')),indent=1)[:3000])"
+fi
+log done
