@@ -12,6 +12,7 @@
 //! - Ablations: SDS, DreamTime's decreasing t, LucidDreamer's ISM.
 use super::schedule::{add_noise, cfg, ddim_step, predict_x0, weight, Schedule};
 use rand::Rng;
+use rayon::prelude::*;
 
 /// Which prompt embedding a prediction uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,7 +64,9 @@ impl ViewsPredictor for EachView<'_> {
 /// differ from view to view).
 pub struct PerView<P>(pub Vec<P>);
 
-impl<P: NoisePredictor> ViewsPredictor for PerView<P> {
+/// The views are independent, so they are asked in parallel (the oracle's host maths at image
+/// size is most of its iteration on a GPU).
+impl<P: NoisePredictor + Send> ViewsPredictor for PerView<P> {
     fn predict_views(
         &mut self,
         xs: &[&[f32]],
@@ -73,8 +76,8 @@ impl<P: NoisePredictor> ViewsPredictor for PerView<P> {
         if xs.len() != self.0.len() {
             return Err(format!("{} latents for {} views", xs.len(), self.0.len()));
         }
-        xs.iter()
-            .zip(&mut self.0)
+        xs.par_iter()
+            .zip(self.0.par_iter_mut())
             .map(|(x, p)| p.predict(x, t, conds))
             .collect()
     }
@@ -262,7 +265,7 @@ fn chain(
     let times: Vec<u32> = std::iter::once(t_start).chain(ts.iter().copied()).collect();
     let ab0 = sched.alpha_bar(t_start as i64);
     let mut x: Vec<Vec<f32>> = z0s
-        .iter()
+        .par_iter()
         .zip(eps)
         .map(|(z, e)| add_noise(z, e, ab0))
         .collect();
@@ -272,7 +275,7 @@ fn chain(
             let (from, to) = (sched.alpha_bar(prev.t as i64), sched.alpha_bar(t as i64));
             x = prev
                 .x
-                .iter()
+                .par_iter()
                 .zip(&prev.preds)
                 .map(|(xv, pv)| ddim_step(xv, &pv[null], from, to))
                 .collect();
@@ -292,9 +295,10 @@ fn chain(
 fn sum_over_chain(
     points: &[ChainPoint],
     sched: &Schedule,
-    term: impl Fn(&[Vec<f32>], f64) -> Vec<f32>,
+    term: impl Fn(&[Vec<f32>], f64) -> Vec<f32> + Sync,
 ) -> Vec<Vec<f32>> {
     (0..points[0].x.len())
+        .into_par_iter()
         .map(|v| {
             let mut g = vec![0.0f32; points[0].x[v].len()];
             for p in &points[1..] {
@@ -491,7 +495,7 @@ pub fn ism_gradients(
     let mut cur = set.t_start;
     let ab0 = sched.alpha_bar(cur as i64);
     let mut x: Vec<Vec<f32>> = z0s
-        .iter()
+        .par_iter()
         .zip(eps)
         .map(|(z, e)| add_noise(z, e, ab0))
         .collect();
