@@ -292,3 +292,69 @@ fn the_provider_reaches_every_scene() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// A full (sd prior) scene's record in index.json holds the time of each stage the generation
+/// ran, not one figure for the whole scene.
+#[test]
+fn a_full_scene_records_each_stage() {
+    let d = tmp("stages");
+    let m = d.join("m.txt");
+    std::fs::write(&m, "an empty room with one chair\n").unwrap();
+    let out = d.join("out");
+    let o = cmd()
+        .arg("batch")
+        .arg(&m)
+        .arg("--out")
+        .arg(&out)
+        .args([
+            "--prior",
+            "sd",
+            "--models",
+            "tests/data/tiny-sd",
+            "--provider",
+            "cpu",
+        ])
+        .args([
+            "--renders",
+            "0",
+            "--resolution",
+            "16",
+            "--object-gaussians",
+            "300",
+        ])
+        .args(["--object-iterations", "1", "--iterations", "1"])
+        .args([
+            "--recon-passes",
+            "1",
+            "--object-recon-passes",
+            "1",
+            "--env-density",
+            "10",
+        ])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o));
+    let idx: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("index.json")).unwrap()).unwrap();
+    let stages = &idx["scenes"][0]["stages"];
+    let names: Vec<&str> = stages
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        ["plan and priors", "objects", "environment", "outputs"],
+        "{idx}"
+    );
+    assert!(
+        stages
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|s| s["seconds"].as_f64().unwrap() >= 0.0),
+        "{idx}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

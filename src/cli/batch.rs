@@ -1,6 +1,6 @@
 //! `dreamscene batch MANIFEST --out DIR`: many scenes, one worker per call; Slurm, Kubernetes or a
 //! shell loop starts as many as it likes. `dreamscene batch --status DIR` counts them.
-use super::generate::{parse_scene_prior, run_with, GenerateArgs};
+use super::generate::{parse_scene_prior, run_timed, GenerateArgs};
 use super::object::PriorChoice;
 use anyhow::{bail, Context as _, Result};
 use dreamscene::batch::index::{self, Counts, SceneRecord, StageTime, Status};
@@ -137,17 +137,17 @@ fn run_scene(g: GenerateArgs) -> Result<Outcome> {
     }
     let t = Instant::now();
     let scene_ply = g.out.join("scene.ply");
-    run_with(g)?;
+    let mut stages = run_timed(g)?;
+    if stages.is_empty() {
+        stages.push(StageTime {
+            name: "generate".into(),
+            seconds: t.elapsed().as_secs_f64(),
+        });
+    }
     let gaussians = dreamscene::splat::ply::read_ply(&scene_ply)
         .ok()
         .map(|p| p.len());
-    Ok(Outcome {
-        stages: vec![StageTime {
-            name: "generate".into(),
-            seconds: t.elapsed().as_secs_f64(),
-        }],
-        gaussians,
-    })
+    Ok(Outcome { stages, gaussians })
 }
 
 /// The generate arguments of one manifest line over the batch's own.

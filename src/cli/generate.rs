@@ -6,6 +6,7 @@ use super::generate_full::{full, full_setup};
 use super::object::{models_dir, PriorChoice, NO_MODELS};
 use super::scene_renders::{complete_renders, render_chosen};
 use anyhow::{bail, Context as _, Result};
+use dreamscene::batch::index::StageTime;
 use dreamscene::diffusion::runtime::Provider;
 use dreamscene::generate::scene::{check_resume, write_draft_scene};
 use dreamscene::plan::llm::LlmConfig;
@@ -52,6 +53,13 @@ pub fn parse_scene_prior(s: &str) -> Result<PriorChoice, String> {
 }
 
 pub fn run_with(a: GenerateArgs) -> Result<()> {
+    run_timed(a).map(|_| ())
+}
+
+/// [`run_with`], returning the time of each stage a full generation ran (plan and priors,
+/// objects, environment, outputs; none for a draft or a scene already complete): what `batch`
+/// records in its index.
+pub fn run_timed(a: GenerateArgs) -> Result<Vec<StageTime>> {
     let start = Instant::now();
     let models = models_dir(a.models.as_deref());
     let draft = draft_mode(&a, models.as_deref())?;
@@ -103,7 +111,7 @@ fn locked(
     draft: bool,
     models: Option<&Path>,
     start: Instant,
-) -> Result<()> {
+) -> Result<Vec<StageTime>> {
     let out = &a.out;
     let wait = if a.no_wait { Wait::NoWait } else { Wait::Block };
     let command = std::env::args().collect::<Vec<_>>().join(" ");
@@ -159,7 +167,7 @@ fn locked(
                         out.display()
                     ),
                 }
-                return Ok(());
+                return Ok(vec![]);
             }
             if !scene.history.is_empty() {
                 bail!(
@@ -219,7 +227,7 @@ fn locked(
         },
         d = out.display(),
     );
-    Ok(())
+    Ok(vec![])
 }
 
 /// The line that says what was planned: `plan: N objects in W x D x H m`.

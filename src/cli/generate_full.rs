@@ -5,6 +5,7 @@ use super::generate::{plan_line, plan_or_reuse, GenerateArgs};
 use super::object::PriorChoice;
 use super::scene_renders::render_chosen;
 use anyhow::{Context as _, Result};
+use dreamscene::batch::index::StageTime;
 use dreamscene::generate::scene_stages::{generate_scene, SceneJob};
 use dreamscene::plan::spec::{Layout, SceneSpec};
 use std::path::Path;
@@ -94,7 +95,7 @@ pub(super) fn full(
     start: Instant,
     resume: bool,
     setup: Full,
-) -> Result<()> {
+) -> Result<Vec<StageTime>> {
     let out = &a.out;
     let Full {
         ctx,
@@ -112,7 +113,9 @@ pub(super) fn full(
         cfg: &cfg,
         resume,
     };
+    let set_up = start.elapsed().as_secs_f64();
     let report = generate_scene(&job, priors.as_mut(), &mut |l| eprintln!("{l}"))?;
+    let outputs = Instant::now();
     let mut scene = dreamscene::generate::scene::scene_file(
         text,
         a.seed,
@@ -152,5 +155,14 @@ pub(super) fn full(
         start.elapsed().as_secs_f64(),
         out.join("scene.json").display()
     );
-    Ok(())
+    let stage = |name: &str, seconds: f64| StageTime {
+        name: name.into(),
+        seconds,
+    };
+    Ok(vec![
+        stage("plan and priors", set_up),
+        stage("objects", report.seconds[0]),
+        stage("environment", report.seconds[1]),
+        stage("outputs", outputs.elapsed().as_secs_f64()),
+    ])
 }

@@ -72,7 +72,7 @@ pub fn run(
                     missing.join(", ")
                 );
             }
-            full(a, text, models, start, true, f)
+            full(a, text, models, start, true, f).map(|_| ())
         }
     }
 }
