@@ -41,6 +41,18 @@ fn batch(manifest: &Path, out: &Path) -> Command {
     c
 }
 
+/// A one-line manifest of `prompt` in a fresh directory: (directory, out), and
+/// `batch MANIFEST --out OUT` without the draft flags.
+fn one_scene(name: &str, prompt: &str) -> (PathBuf, PathBuf, Command) {
+    let d = tmp(name);
+    let m = d.join("m.txt");
+    std::fs::write(&m, format!("{prompt}\n")).unwrap();
+    let out = d.join("out");
+    let mut c = cmd();
+    c.arg("batch").arg(&m).arg("--out").arg(&out);
+    (d, out, c)
+}
+
 fn text(o: &Output) -> String {
     format!(
         "{}{}",
@@ -271,15 +283,8 @@ fn the_provider_reaches_every_scene() {
     if has_cuda {
         return;
     }
-    let d = tmp("provider");
-    let m = d.join("m.txt");
-    std::fs::write(&m, "a tiny bedroom with a bed\n").unwrap();
-    let out = d.join("out");
-    let o = cmd()
-        .arg("batch")
-        .arg(&m)
-        .arg("--out")
-        .arg(&out)
+    let (d, out, mut c) = one_scene("provider", "a tiny bedroom with a bed");
+    let o = c
         .args(["--prior", "sd", "--models", "tests/data/tiny-sd"])
         .args(["--provider", "cuda", "--renders", "0", "--resolution", "64"])
         .output()
@@ -297,15 +302,8 @@ fn the_provider_reaches_every_scene() {
 /// ran, not one figure for the whole scene.
 #[test]
 fn a_full_scene_records_each_stage() {
-    let d = tmp("stages");
-    let m = d.join("m.txt");
-    std::fs::write(&m, "an empty room with one chair\n").unwrap();
-    let out = d.join("out");
-    let o = cmd()
-        .arg("batch")
-        .arg(&m)
-        .arg("--out")
-        .arg(&out)
+    let (d, out, mut c) = one_scene("stages", "an empty room with one chair");
+    let o = c
         .args([
             "--prior",
             "sd",
