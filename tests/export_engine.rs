@@ -672,4 +672,38 @@ fn blender_imports_objects_with_extras_and_collider_boxes() {
             id,
         );
     }
+    // The floor's and the walls' colliders bound layout.json's room: the floor's top face is
+    // the room's footprint at z = 0, each wall's inner face stands on the room's side over its
+    // whole length and height (the thickness, outside the room, is the exporter's own).
+    let [w, d, h] = f3(&f.layout["room"]["size"]).map(|v| v / 2.0);
+    let near = |a: f64, b: f64| (a - b).abs() <= BOX_TOL;
+    let wbox = |n: &str| {
+        let b = &objs[n]["world_box"];
+        (f3(&b[0]), f3(&b[1]))
+    };
+    let (lo, hi) = wbox("collider_floor");
+    assert!(
+        near(lo[0], -w) && near(hi[0], w) && near(lo[1], -d) && near(hi[1], d) && near(hi[2], 0.0),
+        "collider_floor {lo:?}..{hi:?} vs the room {w} x {d} (half sizes)"
+    );
+    if indoor(&f.scene_json) {
+        for side in ["north", "south", "east", "west"] {
+            let n = format!("collider_wall_{side}");
+            let (lo, hi) = wbox(&n);
+            let (face, along) = match side {
+                "north" => (
+                    near(lo[1], d),
+                    lo[0] <= -w + BOX_TOL && hi[0] >= w - BOX_TOL,
+                ),
+                "south" => (
+                    near(hi[1], -d),
+                    lo[0] <= -w + BOX_TOL && hi[0] >= w - BOX_TOL,
+                ),
+                "east" => (near(lo[0], w), near(lo[1], -d) && near(hi[1], d)),
+                _ => (near(hi[0], -w), near(lo[1], -d) && near(hi[1], d)),
+            };
+            let up = near(lo[2], 0.0) && near(hi[2], 2.0 * h);
+            assert!(face && along && up, "{n} {lo:?}..{hi:?} vs the room");
+        }
+    }
 }
