@@ -14,6 +14,8 @@
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
+use dreamscene::export::engine::{obstacles, read_input};
+use dreamscene::export::navmesh::{Agent, Obstacle};
 use dreamscene::splat::ply::read_ply_labelled;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -115,27 +117,57 @@ fn layout_box(o: &Value) -> ([f64; 3], [f64; 3]) {
     )
 }
 
-/// Whether (x, y) lies inside a layout object's footprint grown by `m`.
-fn in_footprint(o: &Value, x: f64, y: f64, m: f64) -> bool {
-    let (s, p, yaw) = (
-        f3(&o["size"]),
-        f3(&o["position"]),
-        o["yaw"].as_f64().unwrap(),
-    );
-    let (sn, cs) = yaw.to_radians().sin_cos();
-    let (dx, dy) = (x - p[0], y - p[1]);
-    let u = cs * dx + sn * dy;
-    let v = -sn * dx + cs * dy;
-    u.abs() < s[0] / 2.0 + m && v.abs() < s[1] / 2.0 + m
-}
-
-/// Objects standing on the floor that an agent cannot step over (taller than 0.3 m).
-fn floor_obstacles(layout: &Value) -> Vec<&Value> {
-    layout["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|o| f3(&o["position"])[2] < 0.01 && f3(&o["size"])[2] > 0.3)
+/// What each object blocks for the export's agent, by the rule the navmesh itself is cut by
+/// (`engine::obstacles`: one helper), checked here against layout.json: an object no taller than
+/// the agent blocks with exactly its layout footprint, a taller one with a part of its footprint
+/// (what stands below the agent's head), and every object standing on the floor that the agent
+/// cannot step over blocks.
+fn floor_obstacles(f: &Fixture) -> Vec<(String, Obstacle)> {
+    let agent = Agent {
+        radius: RADIUS,
+        ..Agent::default()
+    };
+    let input = read_input(&f.scene).unwrap();
+    let ids = input.scene.objects.iter().map(|o| o.id.clone());
+    let blocks: Vec<(String, Option<Obstacle>)> = ids.zip(obstacles(&input, &agent)).collect();
+    for o in f.layout["objects"].as_array().unwrap() {
+        let id = o["id"].as_str().unwrap();
+        let (s, p, yaw) = (
+            f3(&o["size"]),
+            f3(&o["position"]),
+            o["yaw"].as_f64().unwrap(),
+        );
+        let block = blocks.iter().find(|b| b.0 == id).unwrap().1;
+        if p[2] < 0.01 && s[2] > agent.climb {
+            assert!(
+                block.is_some(),
+                "{id} stands on the floor and blocks nothing"
+            );
+        }
+        let Some(b) = block else { continue };
+        let whole = Obstacle {
+            centre: [p[0], p[1]],
+            half: [s[0] / 2.0, s[1] / 2.0],
+            yaw,
+            z: [p[2], p[2] + s[2]],
+        };
+        let (sn, cs) = b.yaw.to_radians().sin_cos();
+        let corners = [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)].map(|(u, v)| {
+            let (x, y) = (u * b.half[0], v * b.half[1]);
+            [b.centre[0] + cs * x - sn * y, b.centre[1] + sn * x + cs * y]
+        });
+        assert!(
+            corners.iter().all(|c| whole.contains(*c, 1e-6)),
+            "{id} blocks {b:?}, outside its layout footprint"
+        );
+        if whole.z[1] <= agent.height {
+            let same = (0..2).all(|a| (b.half[a] - whole.half[a]).abs() < 1e-6);
+            assert!(same, "{id} blocks {b:?}, not its whole footprint");
+        }
+    }
+    blocks
+        .into_iter()
+        .filter_map(|(id, b)| Some((id, b?)))
         .collect()
 }
 
@@ -518,11 +550,11 @@ fn openings_are_cut_from_the_walls_and_paths_on_the_navmesh_avoid_furniture() {
     // Spawn points and free spots beside every floor object, in glTF's frame.
     let doc_nodes = node_reader(&["three", f.glb.to_str().unwrap()])["nodes"].clone();
     let spawn = f3(&doc_nodes["spawn_0"]["world_position"]);
-    let obstacles = floor_obstacles(&f.layout);
+    let obstacles = floor_obstacles(f);
     for k in ["spawn_0", "spawn_1"] {
         let s = to_scene(f3(&doc_nodes[k]["world_position"]));
-        for o in &obstacles {
-            assert!(!in_footprint(o, s[0], s[1], 0.0), "{k} on {}", o["id"]);
+        for (id, o) in &obstacles {
+            assert!(!o.contains([s[0], s[1]], 0.0), "{k} on {id}");
         }
     }
     // A free spot keeps the agent's radius from every footprint plus a navmesh cell's diagonal:
@@ -532,7 +564,7 @@ fn openings_are_cut_from_the_walls_and_paths_on_the_navmesh_avoid_furniture() {
     let free = |x: f64, y: f64| {
         x.abs() < w / 2.0 - margin
             && y.abs() < d / 2.0 - margin
-            && obstacles.iter().all(|o| !in_footprint(o, x, y, margin))
+            && obstacles.iter().all(|(_, o)| !o.contains([x, y], margin))
     };
     // Every seat and bed standing on the floor (its function class from the knowledge base) must
     // have a free spot beside it, where a person stands to sit or lie down, and be reachable.
@@ -565,12 +597,8 @@ fn openings_are_cut_from_the_walls_and_paths_on_the_navmesh_avoid_furniture() {
             for k in 0..=50 {
                 let s = k as f64 / 50.0;
                 let (x, y) = (a[0] + (b[0] - a[0]) * s, a[1] + (b[1] - a[1]) * s);
-                for o in &obstacles {
-                    assert!(
-                        !in_footprint(o, x, y, 0.0),
-                        "path to {id} crosses {}",
-                        o["id"]
-                    );
+                for (other, o) in &obstacles {
+                    assert!(!o.contains([x, y], 0.0), "path to {id} crosses {other}");
                 }
             }
         }
@@ -643,5 +671,39 @@ fn blender_imports_objects_with_extras_and_collider_boxes() {
             layout_box(o),
             id,
         );
+    }
+    // The floor's and the walls' colliders bound layout.json's room: the floor's top face is
+    // the room's footprint at z = 0, each wall's inner face stands on the room's side over its
+    // whole length and height (the thickness, outside the room, is the exporter's own).
+    let [w, d, h] = f3(&f.layout["room"]["size"]).map(|v| v / 2.0);
+    let near = |a: f64, b: f64| (a - b).abs() <= BOX_TOL;
+    let wbox = |n: &str| {
+        let b = &objs[n]["world_box"];
+        (f3(&b[0]), f3(&b[1]))
+    };
+    let (lo, hi) = wbox("collider_floor");
+    assert!(
+        near(lo[0], -w) && near(hi[0], w) && near(lo[1], -d) && near(hi[1], d) && near(hi[2], 0.0),
+        "collider_floor {lo:?}..{hi:?} vs the room {w} x {d} (half sizes)"
+    );
+    if indoor(&f.scene_json) {
+        for side in ["north", "south", "east", "west"] {
+            let n = format!("collider_wall_{side}");
+            let (lo, hi) = wbox(&n);
+            let (face, along) = match side {
+                "north" => (
+                    near(lo[1], d),
+                    lo[0] <= -w + BOX_TOL && hi[0] >= w - BOX_TOL,
+                ),
+                "south" => (
+                    near(hi[1], -d),
+                    lo[0] <= -w + BOX_TOL && hi[0] >= w - BOX_TOL,
+                ),
+                "east" => (near(lo[0], w), near(lo[1], -d) && near(hi[1], d)),
+                _ => (near(hi[0], -w), near(lo[1], -d) && near(hi[1], d)),
+            };
+            let up = near(lo[2], 0.0) && near(hi[2], 2.0 * h);
+            assert!(face && along && up, "{n} {lo:?}..{hi:?} vs the room");
+        }
     }
 }

@@ -8,13 +8,11 @@ use super::reopt::{need, open_sd, scene_prior, ReoptConfig, ScenePrior, BATCH, F
 use super::state::SceneState;
 use super::{EditError, Result};
 use crate::camera::object::{random_views, ObjectFrame, OrbitRanges};
-use crate::diffusion::guidance::{MtsRange, MtsSettings, PerView};
+use crate::diffusion::guidance::{MtsRange, MtsSettings};
 use crate::diffusion::model::Codec;
 use crate::diffusion::target::{Guide, Rule};
 use crate::generate::object::GenError;
-use crate::generate::prior::{
-    from_latent, to_latent, OraclePredictor, OraclePrior, Prior, PriorView,
-};
+use crate::generate::prior::{oracle_targets, to_latent, OraclePrior, Prior, PriorView};
 use crate::generate::progress::Progress;
 use crate::generate::stage::{run_guided, GuidedStage, GuidedView};
 use crate::gpu::Context;
@@ -79,24 +77,7 @@ impl Prior for EditOracle {
             ));
         }
         let current: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
-        let mut p = PerView(
-            current
-                .iter()
-                .zip(&targets)
-                .map(|(c, t)| OraclePredictor {
-                    sched: &self.sched,
-                    reference: c,
-                    edit: Some(t),
-                })
-                .collect(),
-        );
-        let zs: Vec<&[f32]> = current.iter().map(Vec::as_slice).collect();
-        Ok(guide
-            .latent_targets(&mut p, &self.sched, &zs, step)
-            .map_err(crate::diffusion::Error::Run)?
-            .into_iter()
-            .map(|(zt, _, _)| from_latent(&zt, false))
-            .collect())
+        oracle_targets(guide, &self.sched, views, &current, &targets, step)
     }
 }
 

@@ -119,18 +119,52 @@ pub fn read_input(dir: &Path) -> Result<SceneInput> {
     })
 }
 
-/// Object-frame bounds (after yaw is undone, relative to the instance position) of a placed
-/// cloud's opaque Gaussians (sigmoid(opacity) >= 0.5; all when none is).
-fn local_points(g: &Gaussians, p: &crate::scene::compose::Placement) -> Vec<[f64; 3]> {
+/// Object-frame centres (after yaw is undone, relative to the instance position) of a placed
+/// cloud's opaque Gaussians (sigmoid(opacity) >= 0.5; all when none is), each with its largest
+/// scale.
+fn local_gaussians(g: &Gaussians, p: &crate::scene::compose::Placement) -> Vec<([f64; 3], f64)> {
     let (s, c) = p.yaw.to_radians().sin_cos();
     let opaque = g.opacities.iter().any(|&o| o >= 0.0);
     g.means
         .iter()
+        .zip(&g.scales)
         .zip(&g.opacities)
         .filter(|(_, &o)| !opaque || o >= 0.0)
-        .map(|(m, _)| {
+        .map(|((m, sc), _)| {
             let d = [0, 1, 2].map(|a| f64::from(m[a]) - p.position[a]);
-            [c * d[0] + s * d[1], -s * d[0] + c * d[1], d[2]]
+            let r = f64::from(sc[0].max(sc[1]).max(sc[2])).exp();
+            ([c * d[0] + s * d[1], -s * d[0] + c * d[1], d[2]], r)
+        })
+        .collect()
+}
+
+/// [`local_gaussians`]' centres.
+fn local_points(g: &Gaussians, p: &crate::scene::compose::Placement) -> Vec<[f64; 3]> {
+    local_gaussians(g, p).into_iter().map(|(m, _)| m).collect()
+}
+
+/// What each instance (scene order) blocks for `agent` walking on the floor: its layout box's
+/// footprint, or for one taller than the agent the part below its head
+/// ([`Obstacle::walked_into`], measured on its Gaussians); `None` when it blocks nothing. The
+/// navmesh is cut by exactly these, and the export tests check paths against them.
+pub fn obstacles(input: &SceneInput, agent: &Agent) -> Vec<Option<Obstacle>> {
+    let labels = &input.labels.instances;
+    input
+        .scene
+        .objects
+        .iter()
+        .zip(labels)
+        .zip(&input.sizes)
+        .map(|((o, inst), size)| {
+            let p = o.placement();
+            let whole = Obstacle {
+                centre: [p.position[0], p.position[1]],
+                half: [size[0] / 2.0, size[1] / 2.0],
+                yaw: p.yaw,
+                z: [p.position[2], p.position[2] + size[2]],
+            };
+            let own = select_range(&input.cloud, inst.start, inst.count);
+            whole.walked_into(agent, &local_gaussians(&own, &p))
         })
         .collect()
 }
@@ -248,7 +282,6 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         omi: vec![],
         khr: vec![],
     };
-    let mut obstacles = vec![];
     for (((o, inst), size), style) in scene
         .objects
         .iter()
@@ -257,12 +290,6 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         .zip(&input.styles)
     {
         let p = o.placement();
-        obstacles.push(Obstacle {
-            centre: [p.position[0], p.position[1]],
-            half: [size[0] / 2.0, size[1] / 2.0],
-            yaw: p.yaw,
-            z: [p.position[2], p.position[2] + size[2]],
-        });
         if !keep[usize::from(inst.instance_id)] {
             continue;
         }
@@ -371,7 +398,11 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
 
     // The navmesh and spawn points (every obstacle counts, kept or not: it is the scene's floor).
     let cell = if opts.cell > 0.0 { opts.cell } else { 0.05 };
-    let nav = NavMesh::build([room[0], room[1]], &obstacles, opts.agent, cell);
+    let blocks: Vec<Obstacle> = obstacles(input, &opts.agent)
+        .into_iter()
+        .flatten()
+        .collect();
+    let nav = NavMesh::build([room[0], room[1]], &blocks, opts.agent, cell);
     if !nav.triangles.is_empty() {
         let m = Mesh {
             vertices: nav.vertices.clone(),
@@ -462,6 +493,6 @@ pub fn select(g: &Gaussians, keep: &[bool]) -> Gaussians {
 /// Gaussians `start..start + count` of `g` (clamped to its length).
 fn select_range(g: &Gaussians, start: usize, count: usize) -> Gaussians {
     let end = (start + count).min(g.len());
-    let keep: Vec<bool> = (0..g.len()).map(|i| i >= start && i < end).collect();
-    select(g, &keep)
+    let idx: Vec<usize> = (start.min(end)..end).collect();
+    crate::splat::view::select(g, &idx)
 }

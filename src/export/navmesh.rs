@@ -47,6 +47,49 @@ impl Obstacle {
         self.z[0] < a.height && self.z[1] > a.climb
     }
 
+    /// The part of this object an agent walking on the floor runs into, or `None` when it blocks
+    /// nothing. An object no taller than the agent blocks with its whole footprint (when it
+    /// [`blocks`](Self::blocks) at all). One reaching above the agent's head blocks only with
+    /// what lies between the agent's step and its head: a patio umbrella's pole, not its canopy;
+    /// a tree's trunk and the low boughs of its crown. That part is measured on `parts`, the
+    /// object's surface samples in its own frame (x, y after the yaw is undone, relative to
+    /// [`centre`](Self::centre); z above the object's bottom), each with its radius: the
+    /// footprint of the samples whose centre lies in that band, grown by their radii and kept
+    /// within the object's own. With no samples the whole footprint blocks; with samples but none
+    /// in the band (all above the head or below the step), nothing does.
+    pub fn walked_into(&self, agent: &Agent, parts: &[([f64; 3], f64)]) -> Option<Obstacle> {
+        if !self.blocks(agent) {
+            return None;
+        }
+        if self.z[1] <= agent.height || parts.is_empty() {
+            return Some(*self);
+        }
+        let band = agent.climb..agent.height;
+        let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+        for (p, r) in parts {
+            if band.contains(&(self.z[0] + p[2])) {
+                for a in 0..2 {
+                    lo[a] = lo[a].min((p[a] - r).max(-self.half[a]));
+                    hi[a] = hi[a].max((p[a] + r).min(self.half[a]));
+                }
+            }
+        }
+        if lo[0] > hi[0] || lo[1] > hi[1] {
+            return None;
+        }
+        let mid = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
+        let (s, c) = self.yaw.to_radians().sin_cos();
+        Some(Obstacle {
+            centre: [
+                self.centre[0] + c * mid[0] - s * mid[1],
+                self.centre[1] + s * mid[0] + c * mid[1],
+            ],
+            half: [(hi[0] - lo[0]) / 2.0, (hi[1] - lo[1]) / 2.0],
+            yaw: self.yaw,
+            z: [self.z[0], agent.height.min(self.z[1])],
+        })
+    }
+
     /// Whether the point (x, y) lies inside the footprint grown by `margin`.
     pub fn contains(&self, p: [f64; 2], margin: f64) -> bool {
         let (s, c) = self.yaw.to_radians().sin_cos();
@@ -333,98 +376,4 @@ impl NavMesh {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn footprints_cut_the_floor_and_rugs_do_not() {
-        let agent = Agent::default();
-        let bed = Obstacle {
-            centre: [0.0, 0.0],
-            half: [0.8, 1.0],
-            yaw: 30.0,
-            z: [0.0, 1.0],
-        };
-        let rug = Obstacle {
-            centre: [1.5, 1.0],
-            half: [1.0, 0.7],
-            yaw: 0.0,
-            z: [0.0, 0.005],
-        };
-        let m = NavMesh::build([5.0, 4.0], &[bed, rug], agent, 0.1);
-        // No walkable cell centre (nor any of its corners) lies in the inflated bed.
-        for k in 0..m.walkable.len() {
-            if m.walkable[k] {
-                let c = m.centre(k);
-                for dx in [-0.05, 0.05] {
-                    for dy in [-0.05, 0.05] {
-                        assert!(!bed.contains([c[0] + dx, c[1] + dy], agent.radius - 1e-9));
-                    }
-                }
-            }
-        }
-        // The rug's middle stays walkable; the floor far from the bed too.
-        let on_rug = m.cell_of([1.55, 1.05]).expect("in room");
-        assert!(m.walkable[on_rug.1 * m.nx + on_rug.0]);
-        let area = m.area();
-        let cut = (1.6 + 0.5) * (2.0 + 0.5);
-        let free = (5.0 - 0.5) * (4.0 - 0.5);
-        assert!(area < free - cut * 0.9 && area > free - cut * 1.6, "{area}");
-        // Every triangle is a walkable cell's half and vertices are shared.
-        assert_eq!(
-            m.triangles.len(),
-            2 * m.walkable.iter().filter(|w| **w).count()
-        );
-        assert!(m.vertices.len() < 2 * m.triangles.len());
-        let spawns = m.spawn_points(&[], 2);
-        assert_eq!(spawns.len(), 2);
-        for (p, _) in spawns {
-            assert!(!bed.contains([p[0], p[1]], agent.radius));
-        }
-    }
-
-    #[test]
-    fn spawns_skip_a_pocket_beside_the_door() {
-        let agent = Agent::default();
-        // A counter along the south wall, a stove east of it and an island north of both leave a
-        // pocket; the door's inside point lies in the pocket, the open room beyond the island.
-        let counter = Obstacle {
-            centre: [0.0, -1.6],
-            half: [1.0, 0.35],
-            yaw: 0.0,
-            z: [0.0, 0.9],
-        };
-        let stove = Obstacle {
-            centre: [2.2, -1.5],
-            half: [0.25, 0.5],
-            yaw: 0.0,
-            z: [0.0, 0.9],
-        };
-        let island = Obstacle {
-            centre: [1.5, -0.6],
-            half: [0.85, 0.2],
-            yaw: 0.0,
-            z: [0.0, 0.9],
-        };
-        let m = NavMesh::build([5.0, 4.0], &[counter, stove, island], agent, 0.1);
-        let door = [1.45, -1.5];
-        let pocket = m.cell_of(door).expect("in room");
-        let k = pocket.1 * m.nx + pocket.0;
-        assert!(m.walkable[k], "the pocket is walkable");
-        let main = m.largest_region();
-        assert!(!main[k], "the pocket is not the main region");
-        let spawns = m.spawn_points(&[door], 2);
-        assert_eq!(spawns.len(), 2, "two spawns");
-        for (p, _) in &spawns {
-            let c = m.cell_of([p[0], p[1]]).expect("in room");
-            assert!(main[c.1 * m.nx + c.0], "spawn {p:?} on the main region");
-        }
-        // The door spawn is still the main region's nearest cell to the door.
-        let d0 = ((spawns[0].0[0] - door[0]).powi(2) + (spawns[0].0[1] - door[1]).powi(2)).sqrt();
-        assert!(
-            d0 < 1.5,
-            "door spawn {:?} is {d0} m from the door",
-            spawns[0]
-        );
-    }
-}
+mod tests;

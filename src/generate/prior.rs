@@ -206,26 +206,40 @@ impl Prior for OraclePrior {
                 edits.push(to_latent(&self.render(e, v.camera, v.background)?));
             }
         }
-        let zs: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
-        let zs: Vec<&[f32]> = zs.iter().map(Vec::as_slice).collect();
-        let mut p = PerView(
-            refs.iter()
-                .enumerate()
-                .map(|(i, r)| OraclePredictor {
-                    sched: &self.sched,
-                    reference: r,
-                    edit: edits.get(i).map(Vec::as_slice),
-                })
-                .collect(),
-        );
-        let clamp = is_pseudo_gt(guide);
-        Ok(guide
-            .latent_targets(&mut p, &self.sched, &zs, step)
-            .map_err(Error::Run)?
-            .into_iter()
-            .map(|(zt, _, _)| from_latent(&zt, clamp))
-            .collect())
+        oracle_targets(guide, &self.sched, views, &refs, &edits, step)
     }
+}
+
+/// The oracle's targets for `views`: the guide's rule run on each view's render with the exact
+/// noise toward `refs[i]` for the positive and negative prompts and toward `edits[i]` (when
+/// there is one) for the edit prompt; clamped to [0, 1] for pseudo-ground-truth.
+pub(crate) fn oracle_targets(
+    guide: &mut Guide,
+    sched: &Schedule,
+    views: &[PriorView],
+    refs: &[Vec<f32>],
+    edits: &[Vec<f32>],
+    step: u32,
+) -> Result<Vec<Vec<[f32; 3]>>, GenError> {
+    let zs: Vec<Vec<f32>> = views.iter().map(|v| to_latent(v.render)).collect();
+    let zs: Vec<&[f32]> = zs.iter().map(Vec::as_slice).collect();
+    let mut p = PerView(
+        refs.iter()
+            .enumerate()
+            .map(|(i, r)| OraclePredictor {
+                sched,
+                reference: r,
+                edit: edits.get(i).map(Vec::as_slice),
+            })
+            .collect(),
+    );
+    let clamp = is_pseudo_gt(guide);
+    Ok(guide
+        .latent_targets(&mut p, sched, &zs, step)
+        .map_err(Error::Run)?
+        .into_iter()
+        .map(|(zt, _, _)| from_latent(&zt, clamp))
+        .collect())
 }
 
 /// Stable Diffusion with the authors' view-dependent prompts (embeddings cached per direction).

@@ -19,6 +19,8 @@ pub enum GpuError {
     },
     #[error("buffer `{name}` needs {size} bytes, over the device's {limit}-byte storage-buffer limit; split the work")]
     BufferTooLarge { name: String, size: u64, limit: u64 },
+    #[error("{n} Gaussians to train at once, more than the {most} this device's {} MiB storage-buffer limit holds; stopped before training (a scene this large is refined or edited on a device with a larger limit)", .limit >> 20)]
+    TooManyToTrain { n: usize, most: usize, limit: u64 },
     #[error("device lost while running [{kernels}]")]
     DeviceLost { kernels: String },
     #[error("Vulkan validation reported {} message(s):\n{}", .0.len(), .0.join("\n"))]

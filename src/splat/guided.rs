@@ -36,6 +36,8 @@ impl Trainer {
         config: FitConfig,
         extent: f64,
     ) -> Result<Trainer> {
+        let limit = ctx.info().max_storage_buffer_range;
+        super::view::check_trainable(init.len(), init.sh_degree, limit)?;
         let gaussians = GpuGaussians::upload(ctx, init)?;
         let grads = GpuGrads::new(ctx, gaussians.n, gaussians.sh_degree)?;
         let state = AdamState::new(ctx, &gaussians)?;

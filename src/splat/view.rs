@@ -12,8 +12,25 @@ const PROJECTED_BYTES: u64 = 48;
 
 /// How many Gaussians one render can take on `ctx`'s device.
 pub fn max_gaussians(ctx: &Context, g: &Gaussians) -> usize {
-    let per = PROJECTED_BYTES.max(super::cloud::sh_coeffs(g.sh_degree) as u64 * 12);
-    (ctx.info().max_storage_buffer_range / per) as usize
+    most_in(ctx.info().max_storage_buffer_range, g.sh_degree)
+}
+
+/// How many Gaussians of SH degree `sh_degree` one storage binding of `limit` bytes takes: its
+/// largest per-Gaussian array is the projection record or the SH coefficients.
+fn most_in(limit: u64, sh_degree: u32) -> usize {
+    let per = PROJECTED_BYTES.max(super::cloud::sh_coeffs(sh_degree) as u64 * 12);
+    (limit / per) as usize
+}
+
+/// Refuses to train `n` Gaussians of SH degree `sh_degree` at once on a device whose storage
+/// bindings hold `limit` bytes, when one of their arrays would not fit: one clear error before
+/// anything is uploaded, rather than a buffer's name in the middle of a stage.
+pub fn check_trainable(n: usize, sh_degree: u32, limit: u64) -> Result<()> {
+    let most = most_in(limit, sh_degree);
+    if n > most {
+        return Err(crate::gpu::GpuError::TooManyToTrain { n, most, limit });
+    }
+    Ok(())
 }
 
 /// The indices of the Gaussians `cam` may see: centre in front of it (less three of its
@@ -130,6 +147,22 @@ mod tests {
             sh: (0..means.len() * 3).map(|i| i as f32).collect(),
             sh_degree: 0,
         }
+    }
+
+    #[test]
+    fn training_more_than_one_binding_holds_is_one_clear_error() {
+        let limit: u64 = 128 << 20;
+        // Degree 0: the 48-byte projection record bounds it.
+        let most = (limit / 48) as usize;
+        assert!(check_trainable(most, 0, limit).is_ok(), "{most} fit");
+        let e = check_trainable(most + 1, 0, limit)
+            .expect_err("one too many")
+            .to_string();
+        let says = [&(most + 1).to_string(), &most.to_string(), "128 MiB"];
+        assert!(says.iter().all(|w| e.contains(w)), "{e}");
+        // Degree 3: 16 coefficients of 3 colours, 192 bytes, bound it first.
+        assert!(check_trainable(most / 4, 3, limit).is_ok(), "degree 3 fits");
+        assert!(check_trainable(most / 4 + 1, 3, limit).is_err(), "degree 3");
     }
 
     #[test]

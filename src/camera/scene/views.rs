@@ -250,10 +250,11 @@ pub fn overview_camera(scene: &SceneBox, width: u32, height: u32) -> Camera {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    fn boxed(id: &str, x: f64, y: f64, size: [f64; 3]) -> ObjectBox {
+    /// An unturned box standing on the floor at (x, y) (also the view choice's tests' helper).
+    pub(in crate::camera::scene) fn boxed(id: &str, x: f64, y: f64, size: [f64; 3]) -> ObjectBox {
         ObjectBox {
             id: id.into(),
             position: [x, y, 0.0],

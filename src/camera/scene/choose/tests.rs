@@ -1,15 +1,7 @@
 //! Tests of the render-view choice.
 use super::*;
+use crate::camera::scene::views::tests::boxed;
 use crate::camera::scene::{framing_score, overview_camera};
-
-fn boxed(id: &str, x: f64, y: f64, size: [f64; 3]) -> ObjectBox {
-    ObjectBox {
-        id: id.into(),
-        position: [x, y, 0.0],
-        size,
-        yaw: 0.0,
-    }
-}
 
 #[test]
 fn views_of_a_furnished_room_frame_several_objects() {
