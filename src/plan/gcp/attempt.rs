@@ -82,14 +82,25 @@ pub(super) fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
             }
         }
     }
-    // OVER subjects after their supports.
+    // OVER subjects after their supports, and what a thing places after it when it waits for
+    // its support (banners behind a throne after the throne on its dais).
+    let mut rank = vec![0; n];
+    for (k, &i) in out.iter().enumerate() {
+        rank[i] = k;
+    }
+    // (where the two wait for each other, a thing on a support placed by another thing, only
+    // supports are waited for)
     let mut fixed: Vec<usize> = vec![];
     let mut waiting: Vec<usize> = out;
-    for _ in 0..n + 1 {
+    let mut placers = true;
+    for _ in 0..2 * n + 2 {
         let mut rest = vec![];
         for &i in &waiting {
             let ready = prob.rels[i].iter().all(|&(rel, j, subject)| {
-                !(subject && rel == RelationKind::Over) || fixed.contains(&j)
+                let waits = subject
+                    && (rel == RelationKind::Over
+                        || (placers && placed_by(rel) && rank[j] < rank[i]));
+                !waits || fixed.contains(&j)
             });
             if ready {
                 fixed.push(i);
@@ -97,7 +108,9 @@ pub(super) fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
                 rest.push(i);
             }
         }
-        if rest.is_empty() || rest.len() == waiting.len() {
+        if rest.len() == waiting.len() && placers && !rest.is_empty() {
+            placers = false;
+        } else if rest.is_empty() || rest.len() == waiting.len() {
             fixed.extend(rest);
             break;
         }

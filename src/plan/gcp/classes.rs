@@ -299,8 +299,44 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
+    give_up_middle(spec);
     spread_overflow(spec);
     mounts
+}
+
+/// A thing in FRONT of or BEHIND a thing anchored at a window or a door (a coffee table before
+/// a sofa that faces the window) stands where that partner puts it: its own CENTER anchor gives
+/// way, and so does that of a thing UNDER it (its rug).
+fn give_up_middle(spec: &mut SceneSpec) {
+    let edge = |a: Option<&Anchor>| {
+        matches!(
+            a,
+            Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door)
+        )
+    };
+    let mut moved: Vec<String> = vec![];
+    loop {
+        let next: Vec<String> = spec
+            .relations
+            .iter()
+            .filter(|r| spec.anchors.get(&r.subject) == Some(&Anchor::Center))
+            .filter(|r| match r.relation {
+                RelationKind::Front | RelationKind::Behind => {
+                    edge(spec.anchors.get(&r.object)) || moved.contains(&r.object)
+                }
+                RelationKind::Under => moved.contains(&r.object),
+                _ => false,
+            })
+            .map(|r| r.subject.clone())
+            .collect();
+        if next.is_empty() {
+            break;
+        }
+        for id in next {
+            spec.anchors.insert(id.clone(), Anchor::Others);
+            moved.push(id);
+        }
+    }
 }
 
 /// Things OVER a support stand side by side along its width; those its width cannot take go

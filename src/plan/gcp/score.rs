@@ -1,5 +1,5 @@
 //! The score of a candidate pose, and of a finished attempt.
-use super::{compose, Pose, Problem, WALKWAY, WALL_MARGIN};
+use super::{compose, yaw_facing, Pose, Problem, WALKWAY, WALL_MARGIN};
 use crate::plan::check::{
     anchor_holds_in, penetration, relation_holds_alone, wall_distances, Box2, TOLERANCE,
 };
@@ -105,25 +105,10 @@ impl Problem {
             }
         }
         // A thing stands where what is placed in front of or behind it can keep its own
-        // anchor (a sofa where its coffee table can stand in the middle of the room).
-        for &(rel, j, subject) in &self.rels[i] {
-            let dir = match rel {
-                RelationKind::Front => 1.0,
-                RelationKind::Behind => -1.0,
-                _ => continue,
-            };
-            if subject || placed[j].is_some() || self.inst[j].anchor == Anchor::Others {
-                continue;
-            }
-            let sj = self.inst[j].size;
-            let off = dir * (b.half[1] + compose::FRONT_GAP + 0.5 * sj[1]);
-            let c = [b.c[0] + off * b.ey[0], b.c[1] + off * b.ey[1]];
-            let bj = Box2::new(c, p.yaw, [sj[0], sj[1]], 0.0, sj[2]);
-            let anchor = self.inst[j].anchor;
-            if anchor_holds_in(&bj, anchor, self.scene, self.room, &self.openings) {
-                pose_bonus += LOOKAHEAD_WEIGHT;
-            }
-        }
+        // anchor (a sofa where its coffee table can stand in the middle of the room), and a
+        // thing in front of or behind another placed first stands where that other can keep
+        // its own (a coffee table where its sofa can face the window).
+        pose_bonus += LOOKAHEAD_WEIGHT * self.lookahead(i, p, &b, placed) as f64;
         // a front kept clear is one more constraint (a seat that can only be drawn up before
         // the stove's front is a relaxed one)
         let front = self.front_cost(i, &b, boxes);
@@ -134,6 +119,46 @@ impl Problem {
             - front;
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)
+    }
+}
+
+impl Problem {
+    /// How many partners of instance `i` in FRONT or BEHIND, not placed yet, can keep their
+    /// anchors at the distance the relation keeps from `i` at pose `p` (box `b`).
+    fn lookahead(&self, i: usize, p: &Pose, b: &Box2, placed: &[Option<Pose>]) -> usize {
+        let mut n = 0;
+        for &(rel, j, subject) in &self.rels[i] {
+            let dir = match rel {
+                RelationKind::Front => 1.0,
+                RelationKind::Behind => -1.0,
+                _ => continue,
+            };
+            if placed[j].is_some() || self.inst[j].anchor == Anchor::Others {
+                continue;
+            }
+            let sj = self.inst[j].size;
+            let anchor = self.inst[j].anchor;
+            let holds = |c: [f64; 2], yaw: f64| {
+                let bj = Box2::new(c, yaw, [sj[0], sj[1]], 0.0, sj[2]);
+                wall_distances(&bj, self.room).iter().all(|&v| v >= 0.0)
+                    && anchor_holds_in(&bj, anchor, self.scene, self.room, &self.openings)
+            };
+            if !subject {
+                // `j` stands before (behind) `i`'s face, turned as `i`
+                let off = dir * (b.half[1] + compose::FRONT_GAP + 0.5 * sj[1]);
+                n += holds([b.c[0] + off * b.ey[0], b.c[1] + off * b.ey[1]], p.yaw) as usize;
+                continue;
+            }
+            // `i` stands before (behind) `j`: `j` on either side of it along its depth, facing
+            // it (turned away from it)
+            let off = b.half[1] + compose::FRONT_GAP + 0.5 * sj[1];
+            n += [1.0, -1.0].into_iter().any(|side| {
+                let c = [b.c[0] + side * off * b.ey[0], b.c[1] + side * off * b.ey[1]];
+                let to = [dir * (b.c[0] - c[0]), dir * (b.c[1] - c[1])];
+                holds(c, yaw_facing(to))
+            }) as usize;
+        }
+        n
     }
 }
 
