@@ -55,7 +55,7 @@ impl Problem {
     }
 
     /// The height of the tallest thing that rests on instance `j` (0 when none does).
-    fn load_height(&self, j: usize) -> f64 {
+    pub(super) fn load_height(&self, j: usize) -> f64 {
         self.rels[j]
             .iter()
             .filter(|r| r.0 == RelationKind::Over && !r.2)

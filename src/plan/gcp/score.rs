@@ -26,7 +26,10 @@ impl Problem {
         if wd.iter().any(|&v| v < -1e-9) || b.z1 > self.room[2] + 1e-9 {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
-        if self.zones.iter().any(|z| penetration(&b, z) > 0.0) {
+        // (with what will stand on it: a stand whose TV would cover a window)
+        let mut loaded = b;
+        loaded.z1 += self.load_height(i);
+        if self.zones.iter().any(|z| penetration(&loaded, z) > 0.0) {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
         // A thing hung on a wall touches it, facing into the room.
