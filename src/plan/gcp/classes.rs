@@ -191,6 +191,7 @@ pub struct Mounts {
 /// its instances by their top area); things a support's width cannot take side by side go to
 /// another instance of it. Returns the wall heights and ceiling things.
 pub fn apply(spec: &mut SceneSpec) -> Mounts {
+    one_support(spec);
     let mut mounts = Mounts::default();
     let indoor = spec.scene_type == SceneType::Indoor;
     let mut load: BTreeMap<String, f64> = BTreeMap::new();
@@ -302,6 +303,34 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
     give_up_middle(spec);
     spread_overflow(spec);
     mounts
+}
+
+/// A thing OVER several supports rests on one: those its placement class names are kept when
+/// it names any of them ("a counter and a coffee machine on it" said after the tables).
+fn one_support(spec: &mut SceneSpec) {
+    let table = Placements::builtin();
+    let named = |r: &Relation| {
+        table
+            .get(base(&r.subject))
+            .is_some_and(|p| p.supports.iter().any(|s| s == base(&r.object)))
+    };
+    let mut drop: Vec<usize> = vec![];
+    for (k, r) in spec.relations.iter().enumerate() {
+        if r.relation != RelationKind::Over || named(r) {
+            continue;
+        }
+        let other_named = spec.relations.iter().any(|q| {
+            q.relation == RelationKind::Over && q.subject == r.subject && named(q)
+        });
+        if other_named {
+            drop.push(k);
+        }
+    }
+    let mut k = 0;
+    spec.relations.retain(|_| {
+        k += 1;
+        !drop.contains(&(k - 1))
+    });
 }
 
 /// A thing in FRONT of or BEHIND a thing anchored at a window or a door (a coffee table before
