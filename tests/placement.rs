@@ -622,6 +622,9 @@ fn partners_keep_room_for_what_they_place() {
         );
         let t = find(&l, "throne")[0];
         assert_eq!(t.placed_by, PlacedBy::Constraint, "seed {seed}: {t:?}");
-        assert!(t.position[2] > 0.3, "seed {seed}: the throne is off its dais");
+        assert!(
+            t.position[2] > 0.3,
+            "seed {seed}: the throne is off its dais"
+        );
     }
 }

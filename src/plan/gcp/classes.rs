@@ -319,9 +319,10 @@ fn one_support(spec: &mut SceneSpec) {
         if r.relation != RelationKind::Over || named(r) {
             continue;
         }
-        let other_named = spec.relations.iter().any(|q| {
-            q.relation == RelationKind::Over && q.subject == r.subject && named(q)
-        });
+        let other_named = spec
+            .relations
+            .iter()
+            .any(|q| q.relation == RelationKind::Over && q.subject == r.subject && named(q));
         if other_named {
             drop.push(k);
         }
@@ -337,12 +338,8 @@ fn one_support(spec: &mut SceneSpec) {
 /// a sofa that faces the window) stands where that partner puts it: its own CENTER anchor gives
 /// way, and so does that of a thing UNDER it (its rug).
 fn give_up_middle(spec: &mut SceneSpec) {
-    let edge = |a: Option<&Anchor>| {
-        matches!(
-            a,
-            Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door)
-        )
-    };
+    let edge =
+        |a: Option<&Anchor>| matches!(a, Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door));
     let mut moved: Vec<String> = vec![];
     loop {
         let next: Vec<String> = spec
@@ -470,5 +467,66 @@ mod tests {
         assert!(e.contains("line 1"), "{e}");
         let e = Placements::parse("# c\nclock | on_wall | high | -\n").unwrap_err();
         assert!(e.contains("line 2") && e.contains("high"), "{e}");
+    }
+
+    fn spec(objects: &[&str], anchors: &str, relations: &str) -> SceneSpec {
+        let objects: Vec<String> = objects
+            .iter()
+            .map(|c| format!(r#""{c}":{{"number":1,"size":[0.6,0.6,0.8],"description":"d"}}"#))
+            .collect();
+        let text = format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","objects":{{{}}},"anchors":{{{anchors}}},"relations":[{relations}]}}"#,
+            objects.join(",")
+        );
+        serde_json::from_str(&text).expect("spec")
+    }
+
+    #[test]
+    fn a_thing_on_two_supports_keeps_the_one_its_class_names() {
+        let mut s = spec(
+            &["coffee machine", "cafe table", "counter"],
+            "",
+            r#"{"subject":"coffee machine1","relation":"OVER","object":"cafe table1"},
+               {"subject":"coffee machine1","relation":"OVER","object":"counter1"}"#,
+        );
+        apply(&mut s);
+        let on: Vec<&str> = s
+            .relations
+            .iter()
+            .filter(|r| r.subject == "coffee machine1" && r.relation == RelationKind::Over)
+            .map(|r| r.object.as_str())
+            .collect();
+        assert_eq!(on, ["counter1"]);
+        // one support the class does not name is kept
+        let mut s = spec(
+            &["coffee machine", "cafe table"],
+            "",
+            r#"{"subject":"coffee machine1","relation":"OVER","object":"cafe table1"}"#,
+        );
+        apply(&mut s);
+        assert_eq!(s.relations.len(), 1, "{:?}", s.relations);
+    }
+
+    #[test]
+    fn the_middle_gives_way_before_a_thing_at_a_window() {
+        let rels = r#"{"subject":"coffee table1","relation":"FRONT","object":"sofa1"},
+               {"subject":"rug1","relation":"UNDER","object":"coffee table1"}"#;
+        let mut s = spec(
+            &["sofa", "coffee table", "rug"],
+            r#""sofa1":"FACE_WINDOW","coffee table1":"CENTER","rug1":"CENTER""#,
+            rels,
+        );
+        apply(&mut s);
+        assert_eq!(s.anchors["coffee table1"], Anchor::Others);
+        assert_eq!(s.anchors["rug1"], Anchor::Others);
+        // before a sofa against a wall, the coffee table keeps the middle
+        let mut s = spec(
+            &["sofa", "coffee table", "rug"],
+            r#""sofa1":"SIDE","coffee table1":"CENTER","rug1":"CENTER""#,
+            rels,
+        );
+        apply(&mut s);
+        assert_eq!(s.anchors["coffee table1"], Anchor::Center);
+        assert_eq!(s.anchors["rug1"], Anchor::Center);
     }
 }
