@@ -581,3 +581,50 @@ fn appliance_fronts_are_kept_clear() {
         }
     }
 }
+
+/// Things placed by a partner keep room for it and wait for it: a coffee table before a sofa
+/// that faces the window leaves the sofa its window, and the TV stays on its stand; a stand
+/// whose TV would block the sofa's view of the fireplace stands elsewhere; a throne on its dais
+/// is placed before the banners behind it. Each failed on some of these seeds before.
+#[test]
+fn partners_keep_room_for_what_they_place() {
+    let unsatisfied = |l: &Layout, subject: &str, rel: RelationKind, object: &str| {
+        l.unsatisfied
+            .iter()
+            .any(|r| r.subject == subject && r.relation == rel && r.object == object)
+    };
+    for seed in 0..4 {
+        let l = lay(
+            "a sitting room where the sofa faces the window, with a coffee table, two armchairs and a tv",
+            seed,
+        );
+        let s = find(&l, "sofa")[0];
+        assert_eq!(s.placed_by, PlacedBy::Constraint, "seed {seed}: {s:?}");
+        assert!(
+            !unsatisfied(&l, "coffee table1", RelationKind::Front, "sofa1"),
+            "seed {seed}: the coffee table is not before the sofa"
+        );
+        assert!(
+            !unsatisfied(&l, "tv1", RelationKind::Over, "tv stand1"),
+            "seed {seed}: the tv is off its stand"
+        );
+        let l = lay(
+            "a lounge with a fireplace on one wall, a chair on each side of it and a sofa facing the fire",
+            seed,
+        );
+        assert!(
+            !unsatisfied(&l, "sofa1", RelationKind::Opposite, "fireplace1"),
+            "seed {seed}: the sofa does not see the fireplace"
+        );
+        let l = lay(
+            "a throne room with a throne on a dais and two banners on the wall behind the throne",
+            seed,
+        );
+        let t = find(&l, "throne")[0];
+        assert_eq!(t.placed_by, PlacedBy::Constraint, "seed {seed}: {t:?}");
+        assert!(
+            t.position[2] > 0.3,
+            "seed {seed}: the throne is off its dais"
+        );
+    }
+}

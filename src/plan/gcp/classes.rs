@@ -191,6 +191,7 @@ pub struct Mounts {
 /// its instances by their top area); things a support's width cannot take side by side go to
 /// another instance of it. Returns the wall heights and ceiling things.
 pub fn apply(spec: &mut SceneSpec) -> Mounts {
+    one_support(spec);
     let mut mounts = Mounts::default();
     let indoor = spec.scene_type == SceneType::Indoor;
     let mut load: BTreeMap<String, f64> = BTreeMap::new();
@@ -299,8 +300,69 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
+    give_up_middle(spec);
     spread_overflow(spec);
     mounts
+}
+
+/// A thing OVER several supports rests on one: those its placement class names are kept when
+/// it names any of them ("a counter and a coffee machine on it" said after the tables).
+fn one_support(spec: &mut SceneSpec) {
+    let table = Placements::builtin();
+    let named = |r: &Relation| {
+        table
+            .get(base(&r.subject))
+            .is_some_and(|p| p.supports.iter().any(|s| s == base(&r.object)))
+    };
+    let mut drop: Vec<usize> = vec![];
+    for (k, r) in spec.relations.iter().enumerate() {
+        if r.relation != RelationKind::Over || named(r) {
+            continue;
+        }
+        let other_named = spec
+            .relations
+            .iter()
+            .any(|q| q.relation == RelationKind::Over && q.subject == r.subject && named(q));
+        if other_named {
+            drop.push(k);
+        }
+    }
+    let mut k = 0;
+    spec.relations.retain(|_| {
+        k += 1;
+        !drop.contains(&(k - 1))
+    });
+}
+
+/// A thing in FRONT of or BEHIND a thing anchored at a window or a door (a coffee table before
+/// a sofa that faces the window) stands where that partner puts it: its own CENTER anchor gives
+/// way, and so does that of a thing UNDER it (its rug).
+fn give_up_middle(spec: &mut SceneSpec) {
+    let edge =
+        |a: Option<&Anchor>| matches!(a, Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door));
+    let mut moved: Vec<String> = vec![];
+    loop {
+        let next: Vec<String> = spec
+            .relations
+            .iter()
+            .filter(|r| spec.anchors.get(&r.subject) == Some(&Anchor::Center))
+            .filter(|r| match r.relation {
+                RelationKind::Front | RelationKind::Behind => {
+                    edge(spec.anchors.get(&r.object)) || moved.contains(&r.object)
+                }
+                RelationKind::Under => moved.contains(&r.object),
+                _ => false,
+            })
+            .map(|r| r.subject.clone())
+            .collect();
+        if next.is_empty() {
+            break;
+        }
+        for id in next {
+            spec.anchors.insert(id.clone(), Anchor::Others);
+            moved.push(id);
+        }
+    }
 }
 
 /// Things OVER a support stand side by side along its width; those its width cannot take go
@@ -405,5 +467,66 @@ mod tests {
         assert!(e.contains("line 1"), "{e}");
         let e = Placements::parse("# c\nclock | on_wall | high | -\n").unwrap_err();
         assert!(e.contains("line 2") && e.contains("high"), "{e}");
+    }
+
+    fn spec(objects: &[&str], anchors: &str, relations: &str) -> SceneSpec {
+        let objects: Vec<String> = objects
+            .iter()
+            .map(|c| format!(r#""{c}":{{"number":1,"size":[0.6,0.6,0.8],"description":"d"}}"#))
+            .collect();
+        let text = format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","objects":{{{}}},"anchors":{{{anchors}}},"relations":[{relations}]}}"#,
+            objects.join(",")
+        );
+        serde_json::from_str(&text).expect("spec")
+    }
+
+    #[test]
+    fn a_thing_on_two_supports_keeps_the_one_its_class_names() {
+        let mut s = spec(
+            &["coffee machine", "cafe table", "counter"],
+            "",
+            r#"{"subject":"coffee machine1","relation":"OVER","object":"cafe table1"},
+               {"subject":"coffee machine1","relation":"OVER","object":"counter1"}"#,
+        );
+        apply(&mut s);
+        let on: Vec<&str> = s
+            .relations
+            .iter()
+            .filter(|r| r.subject == "coffee machine1" && r.relation == RelationKind::Over)
+            .map(|r| r.object.as_str())
+            .collect();
+        assert_eq!(on, ["counter1"]);
+        // one support the class does not name is kept
+        let mut s = spec(
+            &["coffee machine", "cafe table"],
+            "",
+            r#"{"subject":"coffee machine1","relation":"OVER","object":"cafe table1"}"#,
+        );
+        apply(&mut s);
+        assert_eq!(s.relations.len(), 1, "{:?}", s.relations);
+    }
+
+    #[test]
+    fn the_middle_gives_way_before_a_thing_at_a_window() {
+        let rels = r#"{"subject":"coffee table1","relation":"FRONT","object":"sofa1"},
+               {"subject":"rug1","relation":"UNDER","object":"coffee table1"}"#;
+        let mut s = spec(
+            &["sofa", "coffee table", "rug"],
+            r#""sofa1":"FACE_WINDOW","coffee table1":"CENTER","rug1":"CENTER""#,
+            rels,
+        );
+        apply(&mut s);
+        assert_eq!(s.anchors["coffee table1"], Anchor::Others);
+        assert_eq!(s.anchors["rug1"], Anchor::Others);
+        // before a sofa against a wall, the coffee table keeps the middle
+        let mut s = spec(
+            &["sofa", "coffee table", "rug"],
+            r#""sofa1":"SIDE","coffee table1":"CENTER","rug1":"CENTER""#,
+            rels,
+        );
+        apply(&mut s);
+        assert_eq!(s.anchors["coffee table1"], Anchor::Center);
+        assert_eq!(s.anchors["rug1"], Anchor::Center);
     }
 }

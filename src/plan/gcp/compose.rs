@@ -54,6 +54,15 @@ impl Problem {
             .count()
     }
 
+    /// The height of the tallest thing that rests on instance `j` (0 when none does).
+    pub(super) fn load_height(&self, j: usize) -> f64 {
+        self.rels[j]
+            .iter()
+            .filter(|r| r.0 == RelationKind::Over && !r.2)
+            .map(|r| self.inst[r.1].size[2])
+            .fold(0.0, f64::max)
+    }
+
     fn related(&self, i: usize, j: usize) -> bool {
         self.rels[i].iter().any(|r| r.1 == j)
     }
@@ -69,14 +78,17 @@ impl Problem {
     ) -> f64 {
         let mut score = 0.0;
         let boxed = |j: usize| boxes[j].as_ref().map(|x| x.0);
-        // Sightlines of the placed OPPOSITE pairs that this pose would cross.
-        if b.z1 > SIGHTLINE_HEIGHT {
+        // Sightlines of the placed OPPOSITE pairs that this pose would cross, with what will
+        // stand on it (a low stand under its TV).
+        let mut loaded = *b;
+        loaded.z1 += self.load_height(i);
+        if loaded.z1 > SIGHTLINE_HEIGHT {
             for &(a, c) in &self.sightlines {
                 if a == i || c == i || self.is_stacked(i, a) || self.is_stacked(i, c) {
                     continue;
                 }
                 if let (Some(ba), Some(bc)) = (boxed(a), boxed(c)) {
-                    if blocks_sight(b, &sight_zone(&ba, &bc)) {
+                    if blocks_sight(&loaded, &sight_zone(&ba, &bc)) {
                         score -= 12.0;
                     }
                 }

@@ -1,0 +1,279 @@
+//! The search's problem (instances, their relations, the room's openings and zones) and the
+//! candidate poses of an instance.
+use super::WALL_MARGIN;
+use crate::plan::check::{Box2, CORNER_DISTANCE};
+use crate::plan::spec::{Anchor, Instance, Opening, RelationKind, SceneType};
+use std::collections::{BTreeMap, BTreeSet};
+
+#[derive(Clone)]
+pub(super) struct Problem {
+    pub(super) scene: SceneType,
+    /// Per instance: the height its bottom hangs at (on a wall or from the ceiling).
+    pub(super) hung: Vec<Option<f64>>,
+    /// Doors and windows of this attempt, and the zones they keep clear.
+    pub(super) openings: Vec<Opening>,
+    pub(super) zones: Vec<Box2>,
+    pub(super) room: [f64; 3],
+    pub(super) inst: Vec<Instance>,
+    pub(super) index: BTreeMap<String, usize>,
+    /// Per instance: (relation, other instance, true when this instance is the subject).
+    pub(super) rels: Vec<Vec<(RelationKind, usize, bool)>>,
+    pub(super) stacked: BTreeSet<(usize, usize)>,
+    /// Per instance: against a wall with a face to keep free (a wardrobe, a bookcase).
+    pub(super) faced: Vec<bool>,
+    /// Per instance: hung on a wall (touching it).
+    pub(super) wall_hung: Vec<bool>,
+    /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
+    pub(super) fronts: Vec<Option<f64>>,
+    /// OPPOSITE pairs (subject, object): sightlines to keep clear.
+    pub(super) sightlines: Vec<(usize, usize)>,
+    pub(super) step: f64,
+    /// Place the largest footprints first whatever holds what (the retry of a spec whose
+    /// constraint order left no room).
+    pub(super) largest_first: bool,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Pose {
+    pub(super) c: [f64; 2],
+    pub(super) yaw: f64,
+    pub(super) z: f64,
+}
+
+pub(super) fn yaw_facing(d: [f64; 2]) -> f64 {
+    // facing (-sin yaw, cos yaw) = d / |d|
+    (-d[0]).atan2(d[1]).to_degrees()
+}
+
+impl Problem {
+    pub(super) fn boxed(&self, i: usize, p: &Pose) -> Box2 {
+        let s = self.inst[i].size;
+        Box2::new(p.c, p.yaw, [s[0], s[1]], p.z, p.z + s[2])
+    }
+
+    /// Whether exactly one instance is `rel` of instance `o` (a coffee table alone in front of
+    /// its sofa).
+    pub(super) fn alone(&self, rel: RelationKind, o: usize) -> bool {
+        self.rels[o].iter().filter(|r| r.0 == rel && !r.2).count() == 1
+    }
+
+    pub(super) fn is_stacked(&self, a: usize, b: usize) -> bool {
+        self.stacked.contains(&(a.min(b), a.max(b)))
+    }
+
+    /// Candidate poses for instance `i` given the placed ones: the poses its functional groups
+    /// suggest (tried first: a seat's slots at its table, a desk's place in its row), then all.
+    pub(super) fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> (Vec<Pose>, Vec<Pose>) {
+        let mut group = vec![];
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            if subject {
+                if let Some(poses) = self.group_poses(i, rel, (j, &pj), &self.boxed(j, &pj), placed)
+                {
+                    group.extend(poses);
+                }
+            }
+        }
+        (group, self.all_candidates(i, placed))
+    }
+
+    /// Every candidate pose for instance `i`: anchor regions and around placed partners.
+    pub(super) fn all_candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
+        let [w, d, _] = self.room;
+        let (hw, hd) = (0.5 * w, 0.5 * d);
+        let s = self.inst[i].size;
+        let z0 = self.hung[i].unwrap_or(0.0);
+        let mut out = vec![];
+        let grid = |lo: f64, hi: f64| -> Vec<f64> {
+            if hi < lo {
+                return vec![0.5 * (lo + hi)];
+            }
+            let n = ((hi - lo) / self.step).floor() as usize;
+            (0..=n)
+                .map(|k| lo + k as f64 * self.step)
+                .chain([hi])
+                .collect()
+        };
+        // Yaws suggested by placed partners.
+        let mut yaws: Vec<f64> = vec![0.0, 90.0, 180.0, -90.0];
+        for &(_, j, _) in &self.rels[i] {
+            if let Some(pj) = placed[j] {
+                yaws.push(pj.yaw);
+                yaws.push(pj.yaw + 180.0);
+            }
+        }
+        match self.inst[i].anchor {
+            Anchor::Side => {
+                // Back to each wall, facing into the room, anywhere along it.
+                for (wall, yaw) in [(0usize, -90.0), (1, 90.0), (2, 0.0), (3, 180.0)] {
+                    let depth_half = 0.5 * s[1];
+                    let off = WALL_MARGIN + depth_half;
+                    let along_half = 0.5 * s[0];
+                    match wall {
+                        0 | 1 => {
+                            let x = if wall == 0 { -hw + off } else { hw - off };
+                            for y in grid(-hd + along_half, hd - along_half) {
+                                out.push(Pose {
+                                    c: [x, y],
+                                    yaw,
+                                    z: z0,
+                                });
+                            }
+                        }
+                        _ => {
+                            let y = if wall == 2 { -hd + off } else { hd - off };
+                            for x in grid(-hw + along_half, hw - along_half) {
+                                out.push(Pose {
+                                    c: [x, y],
+                                    yaw,
+                                    z: z0,
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+            Anchor::Corner => {
+                // Facing diagonally out of each corner, its box against both walls.
+                for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    let yaw = yaw_facing([-sx, -sy]);
+                    let probe = Box2::new([0.0, 0.0], yaw, [s[0], s[1]], 0.0, s[2]);
+                    let [x0, y0, x1, y1] = probe.aabb();
+                    for inset in [WALL_MARGIN, 0.5 * CORNER_DISTANCE] {
+                        let cx = if sx < 0.0 {
+                            -hw + inset - x0
+                        } else {
+                            hw - inset - x1
+                        };
+                        let cy = if sy < 0.0 {
+                            -hd + inset - y0
+                        } else {
+                            hd - inset - y1
+                        };
+                        out.push(Pose {
+                            c: [cx, cy],
+                            yaw,
+                            z: 0.0,
+                        });
+                    }
+                }
+            }
+            anchor => {
+                let r = 0.25 * w.min(d);
+                for x in grid(-hw, hw) {
+                    for y in grid(-hd, hd) {
+                        if anchor == Anchor::Center && (x * x + y * y).sqrt() > r {
+                            continue;
+                        }
+                        for &yaw in &yaws[..4] {
+                            out.push(Pose {
+                                c: [x, y],
+                                yaw,
+                                z: z0,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        out.extend(self.opening_candidates(i));
+        // Poses derived from each placed partner.
+        for &(rel, j, subject) in &self.rels[i] {
+            let Some(pj) = placed[j] else { continue };
+            let bj = self.boxed(j, &pj);
+            let sj = self.inst[j].size;
+            if subject && rel == RelationKind::Over {
+                // spots over the support's top, centre first
+                let free = |k: usize| (0.5 * (sj[k] - s[k])).max(0.0);
+                let (fx, fy) = (free(0), free(1));
+                for (lx, ly) in [
+                    (0.0, 0.0),
+                    (-fx, 0.0),
+                    (fx, 0.0),
+                    (-0.5 * fx, 0.0),
+                    (0.5 * fx, 0.0),
+                    (0.0, -fy),
+                    (-fx, -fy),
+                    (fx, -fy),
+                    (-0.5 * fx, -fy),
+                    (0.5 * fx, -fy),
+                    (0.0, fy),
+                    (-fx, fy),
+                    (fx, fy),
+                ] {
+                    out.push(Pose {
+                        c: [
+                            pj.c[0] + lx * bj.ex[0] + ly * bj.ey[0],
+                            pj.c[1] + lx * bj.ex[1] + ly * bj.ey[1],
+                        ],
+                        yaw: pj.yaw,
+                        z: bj.z1,
+                    });
+                }
+                continue;
+            }
+            if (subject && rel == RelationKind::Under) || (!subject && rel == RelationKind::Over) {
+                // under the partner, or the support below a placed subject
+                // turned as the partner, or across it (a bridge over its pond); a thing under
+                // it may also stand off its centre, as long as its own centre stays beneath
+                // (a rug kept out of a doorway)
+                let z = if subject { 0.0 } else { (pj.z - s[2]).max(0.0) };
+                let shifts: &[f64] = if subject { &[0.0, -0.9, 0.9] } else { &[0.0] };
+                for &fx in shifts {
+                    for &fy in shifts {
+                        let c = [
+                            pj.c[0] + fx * bj.half[0] * bj.ex[0] + fy * bj.half[1] * bj.ey[0],
+                            pj.c[1] + fx * bj.half[0] * bj.ex[1] + fy * bj.half[1] * bj.ey[1],
+                        ];
+                        for yaw in [pj.yaw, pj.yaw + 90.0] {
+                            out.push(Pose { c, yaw, z });
+                        }
+                    }
+                }
+                continue;
+            }
+            if !subject && rel == RelationKind::Under {
+                for yaw in [pj.yaw, pj.yaw + 90.0] {
+                    out.push(Pose {
+                        c: pj.c,
+                        yaw,
+                        z: 0.0,
+                    });
+                }
+                continue;
+            }
+            // Around the partner in its frame: front, behind, left, right at several gaps.
+            let ext = 0.5 * s[0].max(s[1]);
+            for (dir, half) in [
+                (bj.ey, 0.5 * sj[1]),
+                ([-bj.ey[0], -bj.ey[1]], 0.5 * sj[1]),
+                (bj.ex, 0.5 * sj[0]),
+                ([-bj.ex[0], -bj.ex[1]], 0.5 * sj[0]),
+            ] {
+                let lateral = [-dir[1], dir[0]];
+                for g in [0.05, 0.25, 0.5, 0.9, 1.5, 2.2] {
+                    let base = half + g + ext;
+                    for t in [-0.3, 0.0, 0.3] {
+                        let c = [
+                            pj.c[0] + dir[0] * base + lateral[0] * t * ext,
+                            pj.c[1] + dir[1] * base + lateral[1] * t * ext,
+                        ];
+                        let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
+                        let face = yaw_facing(to);
+                        for yaw in [
+                            face,
+                            face + 180.0,
+                            face + 90.0,
+                            face - 90.0,
+                            pj.yaw,
+                            pj.yaw + 180.0,
+                        ] {
+                            out.push(Pose { c, yaw, z: z0 });
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+}
