@@ -3,8 +3,8 @@
 //! definiteness, negation and owner ("the invigilator's desk").
 use super::re;
 use super::{
-    alternation, is_adjective, is_verb, not_objects, number_of, plurals, singular, words_in,
-    Mention, Reading, NEGATORS,
+    alternation, is_adjective, is_verb, not_objects, number_of, plurals, quantities, singular,
+    word_list, words_in, Mention, Reading, NEGATORS,
 };
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::units::{find_lengths, Dims};
@@ -14,6 +14,21 @@ use std::sync::OnceLock;
 
 /// An object's span in the text: start, end, category (empty for an unknown object), plural.
 pub(super) type Span = (usize, usize, String, bool);
+
+/// Whether `w` negates the noun phrase after it: a negator ("no", "without", "neither") or a
+/// verb that takes a thing away (`kb/words.txt`: removers, "drop the tv").
+fn negates(w: &str) -> bool {
+    NEGATORS.contains(&w) || word_list("removers").contains(&w)
+}
+
+/// Whether the two words before a determiner take the thing away ("get rid of the rug", "leave
+/// out the tv": `kb/words.txt`, removers, joined by `_`).
+fn removes(w1: Option<&str>, w2: Option<&str>) -> bool {
+    let (Some(a), Some(b)) = (w1, w2) else {
+        return false;
+    };
+    word_list("removers").contains(&format!("{a}_{b}").as_str())
+}
 
 /// Whether `p` lies inside one of `spans`.
 fn inside(p: usize, spans: &[(usize, usize)]) -> bool {
@@ -60,9 +75,24 @@ pub(super) fn object_spans(
         }
         raw.push((m.start(), m.end(), cat, plural));
     }
+    let raw_known: Vec<(usize, usize)> = raw.iter().map(|o| (o.0, o.1)).collect();
     // Unknown objects: an indefinite noun phrase ("a harp", "two easels") whose head noun the
     // knowledge base lacks.
     let all = words_in(t, 0, t.len());
+    let known_at = |p: usize| raw_known.iter().any(|o| p >= o.0 && p < o.1);
+    // The end of the run of describing words from `j`, and whether a known object or the
+    // scene's name cuts it short (the run is then their description).
+    let run = |mut j: usize| {
+        while j < all.len()
+            && is_adjective(all[j].1)
+            && !inside(all[j].0, masked)
+            && !known_at(all[j].0)
+        {
+            j += 1;
+        }
+        let cut = j < all.len() && (known_at(all[j].0) || inside(all[j].0, masked));
+        (j, cut)
+    };
     let mut k = 0;
     while k < all.len() {
         let (pos, w) = all[k];
@@ -73,26 +103,29 @@ pub(super) fn object_spans(
             continue;
         }
         // Words after the determiner up to a function word, verb or punctuation; a participle
-        // right after the determiner describes what follows ("a stuffed owl", "two carved masks").
+        // right after the determiner describes what follows ("a stuffed owl", "two carved masks",
+        // "a hanging scroll", "a sleeping dragon").
         let mut j = k + 1;
         if j + 1 < all.len()
             && is_verb(all[j].1)
-            && all[j].1.ends_with("ed")
+            && (all[j].1.ends_with("ed") || all[j].1.ends_with("ing"))
             && is_adjective(all[j + 1].1)
         {
             j += 1;
         }
-        while j < all.len()
-            && is_adjective(all[j].1)
-            && !inside(all[j].0, masked)
-            && !raw.iter().any(|o| all[j].0 >= o.0 && all[j].0 < o.1)
+        let (mut j, mut known_next) = run(j);
+        let mut from = k + 1;
+        // "a hoard of gold", "a heap of gold coins": a quantity word names the heap of what
+        // follows "of" (`kb/words.txt`: quantities), one object of the words after it.
+        if j > k + 1
+            && !known_next
+            && quantities().contains(&all[j - 1].1)
+            && all.get(j).is_some_and(|x| x.1 == "of")
         {
-            j += 1;
+            from = j + 1;
+            (j, known_next) = run(from);
         }
-        // A run cut short by a known object or the scene's name is their description.
-        let known_next = j < all.len()
-            && (raw.iter().any(|o| all[j].0 >= o.0 && all[j].0 < o.1) || inside(all[j].0, masked));
-        if j > k + 1 && !known_next {
+        if j > from && !known_next {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
                 && !head.ends_with('\'')
@@ -101,7 +134,7 @@ pub(super) fn object_spans(
                 && crate::plan::offline::style_word(head).is_none()
                 && head.len() > 2;
             if ok {
-                let start = all[k + 1].0;
+                let start = all[from].0;
                 let end = all[j - 1].0 + head.len();
                 let plural = singular(head) != head;
                 raw.push((start, end, String::new(), plural));
@@ -238,7 +271,8 @@ pub(super) fn read_mentions(
                 .contains(&w) =>
             {
                 definite = true;
-                if prev2.is_some_and(|p| NEGATORS.contains(&p)) {
+                // "drop the tv", "get rid of the rug"
+                if prev2.is_some_and(negates) || removes(prev3, prev2) {
                     negated = true;
                 }
             }
@@ -258,14 +292,15 @@ pub(super) fn read_mentions(
                     count = prev3.and_then(number_of);
                 } else if prev2.is_some_and(|p| ["lots", "plenty", "lot"].contains(&p)) {
                     count = Some(6);
+                } else if prev2.is_some_and(|p| quantities().contains(&p)) {
+                    // "a heap of gold coins" is one heap, "two piles of logs" two
+                    count = prev3.and_then(number_of);
                 }
-                if prev3.is_some_and(|p| NEGATORS.contains(&p)) {
+                if prev3.is_some_and(negates) {
                     negated = true;
                 }
             }
-            Some("other" | "more" | "additional" | "extra")
-                if prev2.is_some_and(|p| NEGATORS.contains(&p)) =>
-            {
+            Some("other" | "more" | "additional" | "extra") if prev2.is_some_and(negates) => {
                 // "no other beds": none besides those named
                 negated = true;
                 adjectives.insert(0, "other".to_string());
@@ -281,22 +316,30 @@ pub(super) fn read_mentions(
                     if n == 0 {
                         negated = true;
                     }
-                    // "a dozen", "a couple"
+                    // "a dozen", "a couple"; "half a dozen"
                     if ["dozen", "couple", "pair"].contains(&w) {
                         count = Some(n);
+                        if matches!(prev2, Some("a" | "an")) && prev3 == Some("half") {
+                            count = Some(n / 2);
+                        }
                     }
-                    if (w == "a" || w == "an" || w == "any")
-                        && prev2.is_some_and(|p| NEGATORS.contains(&p))
+                    // "not a single chair", "not one"
+                    if ["single", "one"].contains(&w)
+                        && matches!(prev2, Some("a" | "an"))
+                        && prev3.is_some_and(negates)
                     {
                         negated = true;
                     }
-                    if prev2.is_some_and(|p| NEGATORS.contains(&p)) && w != "a" && w != "an" {
+                    if (w == "a" || w == "an" || w == "any") && prev2.is_some_and(negates) {
+                        negated = true;
+                    }
+                    if prev2.is_some_and(negates) && w != "a" && w != "an" {
                         // "without two chairs" is odd; treat as none
                         negated = true;
                     }
                 } else if w == "any" || w == "more" {
-                    negated = prev2.is_some_and(|p| NEGATORS.contains(&p) || p == "n't");
-                } else if NEGATORS.contains(&w) {
+                    negated = prev2.is_some_and(|p| negates(p) || p == "n't");
+                } else if negates(w) {
                     negated = true;
                 }
             }

@@ -24,9 +24,9 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
         }
     }
 
-    // "for 24 students", "for eight people"
+    // "for 24 students", "for eight people", "a dining room seating ten"
     let people = re(
-        r"\bfor (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)",
+        r"\b(?:for|seating|that seats|which seats|to seat) (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)",
     );
     for c in people.captures_iter(t) {
         let w = &c[1];

@@ -73,7 +73,25 @@ pub(super) const NEGATORS: &[&str] = &[
     "minus",
     "zero",
     "not",
+    "neither",
+    "nor",
 ];
+
+/// Words that name a heap of what follows "of" ("a hoard of gold": `kb/words.txt`, quantities).
+pub(super) fn quantities() -> &'static [&'static str] {
+    word_list("quantities")
+}
+
+/// How many people one of a category holds when its plural without a count means one thing
+/// ("bunk beds" are one bunk bed, two beds one above the other: `kb/words.txt`, plural_one);
+/// `None` for other categories.
+pub fn plural_means_one(category: &str) -> Option<u32> {
+    let key = category.replace(' ', "_");
+    word_list("plural_one").iter().find_map(|e| {
+        let (c, n) = e.split_once('=')?;
+        (c == key).then(|| n.parse().ok()).flatten()
+    })
+}
 
 /// English words that almost every request uses; a long text with none of them is not English.
 pub(super) fn english() -> &'static [&'static str] {

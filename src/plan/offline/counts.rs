@@ -3,6 +3,7 @@
 //! sets ("12 desks" get 12 chairs, "for 24 students" 24 seats, "20 chairs" the tables they
 //! need), clamped to what one category may hold.
 use super::Draft;
+use crate::plan::lang;
 use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType, MAX_NUMBER};
 use std::collections::BTreeMap;
 
@@ -91,6 +92,12 @@ pub(super) fn mention_counts(d: &mut Draft) {
             None if m.definite => {
                 counts.entry(cat.clone()).or_insert(1);
             }
+            None if m.plural && lang::plural_means_one(cat).is_some() => {
+                // "bunk beds": one bunk bed; "bunk beds for four kids": what sleeps four
+                let holds = lang::plural_means_one(cat).unwrap_or(1).max(1);
+                let n = r.people.map_or(1, |p| p.div_ceil(holds).max(1));
+                *explicit.entry(cat.clone()).or_default() += n;
+            }
             None if m.plural => {
                 if !explicit.contains_key(cat) {
                     let d = defaults.get(cat).copied().unwrap_or(0).max(2);
@@ -177,6 +184,7 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
         explicit,
         inferred,
         notes,
+        adjectives,
         ..
     } = d;
     let scene_type = *scene_type;
@@ -246,7 +254,13 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
             continue;
         };
         let seat_named = explicit.contains_key(seat);
-        let table_named = explicit.contains_key(&table);
+        // "along the counter": one particular table, however many seats it gets
+        let one_said = r
+            .mentions
+            .iter()
+            .zip(cats.iter())
+            .any(|(m, c)| *c == table && m.definite && !m.plural && !m.negated && !m.reference);
+        let table_named = explicit.contains_key(&table) || one_said;
         // "for 24 students" seats the scene's main seats (its most numerous seat category).
         let main_seat = cats_now
             .iter()
@@ -276,11 +290,31 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
         if table_named && !seat_named && per < 12 {
             // Seats a table the way the scene's defaults do, within its capacity.
             let (ds, dt) = (defaults.get(seat).copied(), defaults.get(&table).copied());
-            let each = match (ds, dt) {
+            let mut each = match (ds, dt) {
                 (Some(s), Some(t)) if t > 0 => s.div_ceil(t).min(per),
                 _ => per.min(4),
             };
-            counts.insert(seat.clone(), counts[&table] * each);
+            // "a little table and chairs": a table said to be small seats two
+            let small = adjectives.get(&table).is_some_and(|a| {
+                a.iter().any(|w| {
+                    lang::object_footprint(w).is_some_and(|f| f < 1.0)
+                        || lang::object_scale(w).is_some_and(|f| f < 1.0)
+                })
+            });
+            if small {
+                each = each.min(2);
+            }
+            // seats of another kind the text puts at that table take their places ("a desk
+            // and a gaming chair" has one chair)
+            let taken: u32 = explicit
+                .keys()
+                .filter(|c| {
+                    *c != seat
+                        && crate::plan::groups::group_of(&probe, c).is_some_and(|(_, t)| t == table)
+                })
+                .map(|c| counts.get(c).copied().unwrap_or(0))
+                .sum();
+            counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred
                     .entry(seat.clone())

@@ -122,7 +122,9 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         // over the object's instances, one relation per item; "the nightstand" is one
         let no = counts.get(oc).copied().unwrap_or(1).max(1);
         let om = &r.mentions[oi];
-        let spread = om.reference || om.plural || om.count.is_some_and(|c| c > 1);
+        // "three tables, each under a parasol": a parasol of its own for each table
+        let spread =
+            om.reference || om.plural || om.count.is_some_and(|c| c > 1) || om.each_of == Some(si);
         let n = if spread && no > 1 {
             n.max(ns.min(no))
         } else {
