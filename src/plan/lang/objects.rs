@@ -98,7 +98,13 @@ pub(super) fn object_spans(
         let (pos, w) = all[k];
         let det = number_of(w).is_some() && !["no", "zero", "both"].contains(&w)
             || ["another", "some"].contains(&w);
-        if !det || inside(pos, masked) || dims.iter().any(|d| pos >= d.start && pos < d.end) {
+        // "bunk beds for six campers": whom a thing is for, not more things
+        let for_whom = k > 0 && all[k - 1].1 == "for" && number_of(w).is_some_and(|n| n > 1);
+        if !det
+            || for_whom
+            || inside(pos, masked)
+            || dims.iter().any(|d| pos >= d.start && pos < d.end)
+        {
             k += 1;
             continue;
         }
@@ -125,7 +131,11 @@ pub(super) fn object_spans(
             from = j + 1;
             (j, known_next) = run(from);
         }
-        if j > from && !known_next {
+        // "a craft corner", "a reading nook": words before an area word describe the area
+        let area_next = all.get(j).is_some_and(|x| {
+            not_objects().contains(&x.1) || not_objects().contains(&singular(x.1).as_str())
+        });
+        if j > from && !known_next && !area_next {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
                 && !head.ends_with('\'')

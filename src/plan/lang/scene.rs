@@ -38,7 +38,18 @@ pub(super) fn read_scene(
         let item = contents.is_some_and(|c| m.start() > c)
             && kb.object(m.as_str()).is_some()
             && ["a", "an", "one"].contains(&t[..m.start()].split_whitespace().last().unwrap_or(""));
-        if !inside_object && !item {
+        // "an ice cream parlour", "a tattoo parlour": a place word that a noun before it makes
+        // another place (`kb/words.txt`: qualified_places) names no scene; "a cosy parlour",
+        // "grandma's parlour" is the sitting room.
+        let qualified = word_list("qualified_places").contains(&m.as_str()) && {
+            let w = t[..m.start()].split_whitespace().last().unwrap_or("");
+            !(w.is_empty()
+                || is_function_word(w)
+                || is_known_word(w)
+                || w.ends_with("'s")
+                || crate::plan::offline::style_word(w).is_some())
+        };
+        if !inside_object && !item && !qualified {
             // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
             // place_heads) after a word that starts another scene's name ("conference room")
             // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
