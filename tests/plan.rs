@@ -134,7 +134,7 @@ fn planned_prompts_lay_out_validly() {
         (
             "a beach with palm trees and two sun loungers",
             None,
-            &["palm tree", "lounge chair"],
+            &["palm tree", "sun lounger"],
         ),
         (
             "a campsite with a tent next to the fire pit",

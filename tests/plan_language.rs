@@ -154,7 +154,7 @@ fn scene_refinements() {
     assert!(s.objects.contains_key("raked sand bed") && s.objects.contains_key("stone lantern"));
     let s = plan("a small cafe terrace");
     assert!(s.objects.contains_key("cafe table"));
-    assert!(!s.objects.contains_key("lounge chair") && !s.objects.contains_key("barbecue grill"));
+    assert!(!s.objects.contains_key("sun lounger") && !s.objects.contains_key("barbecue grill"));
     let s = plan("a classroom for 16 students");
     assert_eq!(s.objects["school desk"].number, 16);
     assert_eq!(s.objects["dining chair"].number, 16);

@@ -298,11 +298,7 @@ const CASES: &[Case] = &[
     (
         "a small cafe terrace with four tables",
         None,
-        &[
-            ("cafe table", 4),
-            ("lounge chair", 0),
-            ("barbecue grill", 0),
-        ],
+        &[("cafe table", 4), ("sun lounger", 0), ("barbecue grill", 0)],
     ),
     (
         "a campsite with two tents and four logs around the fire",
@@ -312,7 +308,7 @@ const CASES: &[Case] = &[
     (
         "a beach with three sun loungers and two umbrellas",
         None,
-        &[("lounge chair", 3), ("beach umbrella", 2)],
+        &[("sun lounger", 3), ("beach umbrella", 2)],
     ),
     (
         "a playground with a slide, a swing set and a sandbox",

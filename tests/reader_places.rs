@@ -1,9 +1,11 @@
 //! Places and kinds the reader infers: a fantastical version of a place keeps what its kind owns
 //! and sheds the modern place's things, a place inside a template's outdoor place is indoors, a
 //! potted tree is a potted plant, a named role at a table is no more of the same tables, and a
-//! tiny room holds things at floor level without room to walk round them. Prompts of no corpus.
+//! tiny room holds things at floor level without room to walk round them; heaps, participles,
+//! area words, removal verbs and the seats a table already has are read the way people mean them.
+//! Prompts of no corpus.
 use dreamscene::plan::offline::plan_prompt;
-use dreamscene::plan::spec::{SceneSpec, SceneType};
+use dreamscene::plan::spec::{Anchor, RelationKind, SceneSpec, SceneType};
 
 fn plan(prompt: &str) -> SceneSpec {
     match plan_prompt(prompt) {
@@ -73,4 +75,92 @@ fn a_tiny_room_fits_floor_level_things_without_room_round_them() {
     let s = plan("a tiny loft room with a floor mattress, two floor cushions and a clothes rail");
     let area = s.room.map_or(f64::MAX, |r| r.size[0] * r.size[1]);
     assert!(area <= 10.0, "{area} m²");
+}
+
+#[test]
+fn a_heap_of_something_is_one_object_of_it() {
+    let s = plan("a smugglers' cave with a pile of silver, a lantern and two barrels");
+    assert_eq!(number(&s, "silver"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "pile"), 0, "{:?}", s.objects.keys());
+    let s = plan("a tea house with a low table and a hanging scroll on the wall");
+    assert_eq!(number(&s, "scroll"), 1, "{:?}", s.objects.keys());
+    let s = plan("a cave with a snoring troll and a campfire");
+    assert_eq!(number(&s, "troll"), 1, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn words_before_an_area_word_describe_the_area() {
+    let s = plan("a living room with a music corner with a piano and a stool");
+    assert_eq!(number(&s, "music"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "piano"), 1, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn removal_verbs_and_neither_nor_negate() {
+    let s = plan("A bedroom with a double bed. Then get rid of the dresser and drop the rug.");
+    assert_eq!(
+        number(&s, "dresser") + number(&s, "rug"),
+        0,
+        "{:?}",
+        s.objects.keys()
+    );
+    let s = plan("a den with a sofa and neither a tv nor a bookshelf");
+    assert_eq!(
+        number(&s, "tv") + number(&s, "bookshelf"),
+        0,
+        "{:?}",
+        s.objects.keys()
+    );
+    let s = plan("a pilates studio with ten mats and not a single mirror");
+    assert_eq!(number(&s, "mirror"), 0, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn counts_said_the_long_way() {
+    let s = plan("a tea room with half a dozen tables and three chairs at each table");
+    let tables: u32 = s
+        .objects
+        .iter()
+        .filter(|(c, _)| c.ends_with("table") && !c.contains("side"))
+        .map(|(_, o)| o.number)
+        .sum();
+    assert_eq!(tables, 6, "{:?}", s.objects);
+    let s = plan("a hostel dorm with bunk beds");
+    assert_eq!(number(&s, "bunk bed"), 1, "{:?}", s.objects.keys());
+    let s = plan("a cabin with bunk beds for six campers");
+    assert_eq!(number(&s, "bunk bed"), 3, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "camper"), 0, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn a_table_keeps_the_seats_the_text_gives_it() {
+    // a named gaming chair is the desk's seat; one bar counter however many stools go along it
+    let s = plan("a study with a writing desk and a gaming chair");
+    assert_eq!(number(&s, "chair"), 1, "{:?}", s.objects.keys());
+    let s = plan("a sake bar with ten stools along the counter");
+    assert_eq!(number(&s, "counter"), 1, "{:?}", s.objects.keys());
+    let s = plan("a porch with a small table and chairs");
+    assert_eq!(number(&s, "chair"), 2, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn a_thing_of_its_own_for_each_spreads_over_them() {
+    let s = plan("a beer garden with four tables, each under an umbrella");
+    let under: std::collections::BTreeSet<&str> = s
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Under && r.subject.contains("table"))
+        .map(|r| r.object.as_str())
+        .collect();
+    assert_eq!(under.len(), 4, "{:?}", s.relations);
+    let s = plan("a village hall with benches against the far wall and a piano");
+    let benches: Vec<_> = s
+        .anchors
+        .iter()
+        .filter(|(i, _)| i.starts_with("bench"))
+        .collect();
+    assert!(
+        !benches.is_empty() && benches.iter().all(|(_, a)| **a == Anchor::Side),
+        "{benches:?}"
+    );
 }

@@ -1,0 +1,172 @@
+//! The scene a request names: the earliest scene name that is no part of an object's name, the
+//! scene a generic place word stands for ("a lecture hall", "a wizard's laboratory"), and what
+//! makes the place not the template's own ("a haunted ballroom", "a pirate ship's hold").
+use super::objects::object_matcher;
+use super::place::place_phrase;
+use super::{
+    alternation, is_function_word, is_known_word, is_verb, number_of, plurals, word_list, Reading,
+};
+use crate::plan::kb::KnowledgeBase;
+use regex::Regex;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// Reads the scene of `t` into `r` (its index and span, and `not_literal`); masks its name, the
+/// room size words of two words ("a box room") and the phrase of the place the text is about.
+pub(super) fn read_scene(
+    kb: &KnowledgeBase,
+    t: &str,
+    r: &mut Reading,
+    masked: &mut Vec<(usize, usize)>,
+) {
+    // Scene: the earliest scene name (the longest at that position) that is not part of a
+    // longer object name ("office" in "an office chair").
+    let (scene_re, scene_of) = scene_matcher(kb);
+    let (obj_re0, _) = object_matcher(kb);
+    let objects: Vec<(usize, usize)> = obj_re0.find_iter(t).map(|m| (m.start(), m.end())).collect();
+    // "a poker room with three card tables and a bar": past the opening noun phrase, a name
+    // that is also an object's, said as one item ("a bar"), is that object, not the scene.
+    let contents = [" with ", ": "]
+        .iter()
+        .filter_map(|d| t.find(d))
+        .min()
+        .filter(|&i| i > 0);
+    for m in scene_re.find_iter(t) {
+        let inside_object = objects
+            .iter()
+            .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
+        let item = contents.is_some_and(|c| m.start() > c)
+            && kb.object(m.as_str()).is_some()
+            && ["a", "an", "one"].contains(&t[..m.start()].split_whitespace().last().unwrap_or(""));
+        // "an ice cream parlour", "a tattoo parlour": a place word that a noun before it makes
+        // another place (`kb/words.txt`: qualified_places) names no scene; "a cosy parlour",
+        // "grandma's parlour" is the sitting room.
+        let qualified = word_list("qualified_places").contains(&m.as_str()) && {
+            let w = t[..m.start()].split_whitespace().last().unwrap_or("");
+            !(w.is_empty()
+                || is_function_word(w)
+                || is_known_word(w)
+                || w.ends_with("'s")
+                || crate::plan::offline::style_word(w).is_some())
+        };
+        if !inside_object && !item && !qualified {
+            // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
+            // place_heads) after a word that starts another scene's name ("conference room")
+            // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
+            // school library").
+            let before = t[..m.start()].trim_end();
+            let word = before.rsplit(' ').next().unwrap_or("");
+            // So does an owner's place: "a wizard's laboratory" is the wizard's study, not a
+            // school lab; "a child's bedroom" the child's room.
+            let generic = word_list("place_heads").contains(&m.as_str()) || word.ends_with("'s");
+            let modified = (generic && !word.is_empty() && !is_function_word(word))
+                .then(|| {
+                    scene_of
+                        .iter()
+                        .filter(|(name, _)| {
+                            name.strip_prefix(word)
+                                .is_some_and(|rest| rest.starts_with(' '))
+                        })
+                        .map(|(_, &i)| i)
+                        .next()
+                })
+                .flatten();
+            let (i, start) = match modified {
+                Some(i) => (i, before.len() - word.len()),
+                None => (scene_of[m.as_str()], m.start()),
+            };
+            r.scene = Some((i, start, m.end()));
+            masked.push((start, m.end()));
+            break;
+        }
+    }
+
+    // Room words of two words ("a box room") are the room's size, not objects.
+    for l in ["room_tiny", "room_small", "room_large"] {
+        for w in word_list(l).iter().filter(|w| w.contains('-')) {
+            let phrase = w.replace('-', " ");
+            for (i, _) in t.match_indices(&phrase) {
+                masked.push((i, i + phrase.len()));
+            }
+        }
+    }
+    // The place the text is about when it is no scene the knowledge base knows ("a mermaid
+    // grotto with ...") and what follows the scene's name ("the control room of a submarine").
+    masked.extend(place_phrase(t, r.scene.map(|(_, s, e)| (s, e)), &objects));
+    r.not_literal = r.scene.and_then(|(i, s, e)| {
+        let sc = &kb.scenes[i];
+        let own: Vec<&str> = std::iter::once(&sc.name)
+            .chain(&sc.synonyms)
+            .flat_map(|n| n.split(' '))
+            .collect();
+        not_literal(t, s, e, &own)
+    });
+}
+
+/// What makes the place named at `t[s..e]` (a scene's name) another place than the template:
+/// a fantastical word before it in the opening phrase (`kb/words.txt`: fantastical) that is
+/// not the template's own (`own`: the words of its names; a wizard study is a wizard's), or a
+/// noun after it that the name only qualifies ("a pirate ship's hold", "a space station
+/// galley").
+fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
+    let opening = t[..s]
+        .rfind([':', ',', ';', '.'])
+        .map(|i| i + 1)
+        .unwrap_or(0);
+    let fantastical = word_list("fantastical");
+    if let Some(w) = t[opening..e]
+        .split(|c: char| !c.is_alphanumeric() && c != '-')
+        .find(|w| fantastical.contains(w) && !own.contains(w))
+    {
+        return Some(w.to_string());
+    }
+    let rest = &t[e..];
+    let after = rest
+        .strip_prefix("'s ")
+        .or_else(|| rest.strip_prefix(' '))?;
+    let next = after
+        .split(|c: char| !c.is_alphanumeric())
+        .next()
+        .filter(|w| !w.is_empty())?;
+    // the noun ends the opening phrase: the contents follow ("a space station galley with")
+    let ends = after[next.len()..].is_empty()
+        || [
+            " with ",
+            ":",
+            ",",
+            " -",
+            " where ",
+            " full of ",
+            " filled with ",
+        ]
+        .iter()
+        .any(|d| after[next.len()..].starts_with(d));
+    if own.contains(&next) {
+        // "a pirate ship's deck": the template's own place
+        return None;
+    }
+    let head = rest.starts_with("'s ")
+        || (ends
+            && !(is_function_word(next)
+                || is_known_word(next)
+                || is_verb(next)
+                || number_of(next).is_some()));
+    head.then(|| next.to_string())
+}
+
+/// Scene names and synonyms to the scene index.
+pub(super) fn scene_matcher(kb: &KnowledgeBase) -> &'static (Regex, BTreeMap<String, usize>) {
+    static M: OnceLock<(Regex, BTreeMap<String, usize>)> = OnceLock::new();
+    M.get_or_init(|| {
+        let mut table = BTreeMap::new();
+        for (i, s) in kb.scenes.iter().enumerate() {
+            for name in std::iter::once(&s.name).chain(&s.synonyms) {
+                table.entry(name.clone()).or_insert(i);
+                for p in plurals(name) {
+                    table.entry(p).or_insert(i);
+                }
+            }
+        }
+        (alternation(table.keys()), table)
+    })
+}

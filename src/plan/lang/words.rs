@@ -1,0 +1,361 @@
+//! The words of a request: the word lists of `kb/words.txt`, numbers, negators, plurals and
+//! singulars, the tokens of a text and whether it is English at all.
+use super::objects::object_matcher;
+use super::scene::scene_matcher;
+use super::KnowledgeBase;
+use regex::Regex;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// Words that never describe an object: articles, pronouns, prepositions, conjunctions,
+/// auxiliaries, quantifiers and the words of placement phrases.
+pub(super) fn function() -> &'static [&'static str] {
+    word_list("function")
+}
+
+/// Verbs people use in requests; never part of a description.
+pub(super) fn verbs() -> &'static [&'static str] {
+    word_list("verbs")
+}
+
+/// Nouns that name no object to place (parts of the room, people, the mood).
+pub(super) fn not_objects() -> &'static [&'static str] {
+    word_list("not_objects")
+}
+
+/// Number words.
+pub(super) const NUMBERS: &[(&str, u32)] = &[
+    ("zero", 0),
+    ("no", 0),
+    ("one", 1),
+    ("a", 1),
+    ("an", 1),
+    ("single", 1),
+    ("two", 2),
+    ("three", 3),
+    ("four", 4),
+    ("five", 5),
+    ("six", 6),
+    ("seven", 7),
+    ("eight", 8),
+    ("nine", 9),
+    ("ten", 10),
+    ("eleven", 11),
+    ("twelve", 12),
+    ("thirteen", 13),
+    ("fourteen", 14),
+    ("fifteen", 15),
+    ("sixteen", 16),
+    ("seventeen", 17),
+    ("eighteen", 18),
+    ("nineteen", 19),
+    ("twenty", 20),
+    ("thirty", 30),
+    ("forty", 40),
+    ("fifty", 50),
+    ("sixty", 60),
+    ("dozen", 12),
+    ("both", 2),
+    ("couple", 2),
+    ("pair", 2),
+    ("several", 3),
+    ("few", 3),
+    ("some", 2),
+    ("many", 6),
+];
+
+/// Words that switch negation on for the noun phrase after them.
+pub(super) const NEGATORS: &[&str] = &[
+    "no",
+    "without",
+    "except",
+    "excluding",
+    "minus",
+    "zero",
+    "not",
+    "neither",
+    "nor",
+];
+
+/// Words that name a heap of what follows "of" ("a hoard of gold": `kb/words.txt`, quantities).
+pub(super) fn quantities() -> &'static [&'static str] {
+    word_list("quantities")
+}
+
+/// How many people one of a category holds when its plural without a count means one thing
+/// ("bunk beds" are one bunk bed, two beds one above the other: `kb/words.txt`, plural_one);
+/// `None` for other categories.
+pub fn plural_means_one(category: &str) -> Option<u32> {
+    let key = category.replace(' ', "_");
+    word_list("plural_one").iter().find_map(|e| {
+        let (c, n) = e.split_once('=')?;
+        (c == key).then(|| n.parse().ok()).flatten()
+    })
+}
+
+/// English words that almost every request uses; a long text with none of them is not English.
+pub(super) fn english() -> &'static [&'static str] {
+    word_list("english")
+}
+
+/// A word list of `kb/words.txt`.
+pub(super) fn word_list(name: &str) -> &'static [&'static str] {
+    static LISTS: OnceLock<BTreeMap<&'static str, Vec<&'static str>>> = OnceLock::new();
+    let lists = LISTS.get_or_init(|| {
+        include_str!("../kb/words.txt")
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .filter_map(|l| l.split_once(':'))
+            .map(|(k, v)| (k.trim(), v.split_whitespace().collect()))
+            .collect()
+    });
+    lists.get(name).map(Vec::as_slice).unwrap_or(&[])
+}
+
+/// The categories an object part word belongs to ("fire" -> fireplace, fire pit, ...:
+/// `kb/words.txt`, parts), if it is one.
+pub fn part_owners(w: &str) -> Option<Vec<String>> {
+    word_list("parts").iter().find_map(|e| {
+        let (word, owners) = e.split_once('=')?;
+        (word == w).then(|| owners.split(',').map(|c| c.replace('_', " ")).collect())
+    })
+}
+
+/// The category a plant of `archetype` said with `word` is ("potted" palm -> potted plant:
+/// `kb/words.txt`, potted), if `word` puts such a plant in a pot.
+pub fn potted(word: &str, archetype: &str) -> Option<String> {
+    let list = word_list("potted");
+    if !list.contains(&archetype) {
+        return None;
+    }
+    list.iter().find_map(|e| {
+        let (w, c) = e.split_once('=')?;
+        (w == word).then(|| c.replace('_', " "))
+    })
+}
+
+/// Whether `w` names a place inside something ("a pirate ship's hold": `kb/words.txt`, indoors).
+pub fn is_indoor_place(w: &str) -> bool {
+    word_list("indoors").contains(&w)
+}
+
+/// A word the reader knows as something other than an object: a part of the room, an area,
+/// an arrangement, people, a room size word or a common English word of requests.
+pub fn is_known_word(w: &str) -> bool {
+    let sg = singular(w);
+    [
+        "not_objects",
+        "room_tiny",
+        "room_small",
+        "room_large",
+        "english",
+    ]
+    .iter()
+    .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
+}
+
+/// The factor a size word scales an object by ("huge" 1.6, "tiny" 0.55: `kb/words.txt`,
+/// object_scale), if it is one.
+pub fn object_scale(w: &str) -> Option<f64> {
+    factor("object_scale", w)
+}
+
+/// The factor a plain size word scales an object's footprint by, its height kept ("a small
+/// table" is narrower, not lower: `kb/words.txt`, object_footprint), if it is one.
+pub fn object_footprint(w: &str) -> Option<f64> {
+    factor("object_footprint", w)
+}
+
+pub(super) fn factor(list: &str, w: &str) -> Option<f64> {
+    word_list(list).iter().find_map(|e| {
+        let (word, f) = e.split_once('=')?;
+        (word == w).then(|| f.parse().ok()).flatten()
+    })
+}
+
+/// A head noun that a scene's defaults specialise (`kb/words.txt`: specialised): "desks" in a
+/// classroom are its school desks.
+pub fn is_specialised(head: &str) -> bool {
+    word_list("specialised").contains(&head)
+}
+
+pub fn is_function_word(w: &str) -> bool {
+    function().contains(&w)
+}
+
+pub fn is_verb(w: &str) -> bool {
+    verbs().contains(&w)
+}
+
+/// A word that can describe an object: letters (with hyphens or apostrophes inside), not a
+/// function word, verb, number or adverb.
+pub fn is_adjective(w: &str) -> bool {
+    !w.is_empty()
+        && w.chars().next().is_some_and(|c| c.is_alphabetic())
+        && w.chars()
+            .all(|c| c.is_alphabetic() || c == '-' || c == '\'')
+        && !is_function_word(w)
+        && !is_verb(w)
+        && !NUMBERS.iter().any(|(k, _)| *k == w)
+        && !(w.ends_with("ly") && w.len() > 4 && w != "holy" && w != "curly")
+}
+
+/// Lower case, typographic quotes and primes made plain, whitespace single.
+pub fn normalise(text: &str) -> String {
+    text.to_lowercase()
+        .replace(['’', '‘', '`'], "'")
+        .replace(['“', '”'], "\"")
+        .replace('×', " x ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+pub fn plurals(name: &str) -> Vec<String> {
+    let mut v = vec![format!("{name}s"), format!("{name}es")];
+    if let Some(stem) = name.strip_suffix('y') {
+        v.push(format!("{stem}ies"));
+    }
+    if let Some(stem) = name.strip_suffix("fe") {
+        v.push(format!("{stem}ves"));
+    } else if let Some(stem) = name.strip_suffix('f') {
+        v.push(format!("{stem}ves"));
+    }
+    if let Some(stem) = name.strip_suffix("man") {
+        v.push(format!("{stem}men"));
+    }
+    if let Some(stem) = name.strip_suffix("ch") {
+        v.push(format!("{stem}ches"));
+    }
+    v
+}
+
+/// The singular of a plural English noun: WordNet's where it knows better than rules ("dais"
+/// stays, "mice" is "mouse"), else by rule (best effort, for unknown nouns).
+pub fn singular(w: &str) -> String {
+    if let Some(sg) = crate::plan::lexicon::known_singular(w) {
+        return sg.to_string();
+    }
+    for (pl, sg) in [
+        ("ies", "y"),
+        ("ves", "f"),
+        ("ches", "ch"),
+        ("shes", "sh"),
+        ("sses", "ss"),
+        ("xes", "x"),
+        ("men", "man"),
+    ] {
+        if let Some(stem) = w.strip_suffix(pl) {
+            if stem.len() >= 2 {
+                return format!("{stem}{sg}");
+            }
+        }
+    }
+    if w.ends_with('s') && !w.ends_with("ss") && !w.ends_with("us") && w.len() > 3 {
+        return w[..w.len() - 1].to_string();
+    }
+    w.to_string()
+}
+
+/// `\b(?:a|b|...)\b` over `names`, longest first so that the longest name wins at a position.
+pub fn alternation<S: AsRef<str>>(names: impl Iterator<Item = S>) -> Regex {
+    let mut names: Vec<String> = names.map(|n| regex::escape(n.as_ref())).collect();
+    names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+    super::re(&format!(r"\b(?:{})\b", names.join("|")))
+}
+
+/// Words of `t[from..to]` with their byte offsets.
+pub(super) fn words_in(t: &str, from: usize, to: usize) -> Vec<(usize, &str)> {
+    let mut out = vec![];
+    let s = &t[from..to];
+    let mut i = 0;
+    for w in s.split(|c: char| c.is_whitespace()) {
+        if !w.is_empty() {
+            let pos = from + i;
+            // punctuation is its own token
+            let core = w.trim_matches(|c: char| ",.;:!?()[]{}".contains(c));
+            let lead = w.len()
+                - w.trim_start_matches(|c: char| ",.;:!?()[]{}".contains(c))
+                    .len();
+            if w.starts_with(|c: char| ",.;:!?()".contains(c)) {
+                out.push((pos, ","));
+            }
+            if !core.is_empty() {
+                out.push((pos + lead, core));
+            }
+            if w.ends_with(|c: char| ",.;:!?()".contains(c)) && !core.is_empty() {
+                out.push((pos + w.len() - 1, ","));
+            }
+        }
+        i += w.len() + 1;
+    }
+    out
+}
+
+/// The number a word says ("6", "six", "dozen"), if any.
+pub fn number(w: &str) -> Option<u32> {
+    number_of(w)
+}
+
+pub(super) fn number_of(w: &str) -> Option<u32> {
+    if let Ok(n) = w.parse::<u32>() {
+        return Some(n);
+    }
+    NUMBERS.iter().find(|(k, _)| *k == w).map(|&(_, n)| n)
+}
+
+/// Whether the request `text` (normalised: `t`) is in another language than English: see
+/// [`other_language`].
+pub(super) fn not_english(kb: &KnowledgeBase, text: &str, t: &str) -> bool {
+    let words: Vec<&str> = t
+        .split(|c: char| !c.is_alphanumeric() && c != '\'')
+        .filter(|w| !w.is_empty())
+        .collect();
+    // Words an English reader knows: function words, request verbs, object and scene names.
+    let (_, objects_by_name) = object_matcher(kb);
+    let (_, scenes_by_name) = scene_matcher(kb);
+    let known = words
+        .iter()
+        .filter(|w| {
+            english().contains(w)
+                || is_function_word(w)
+                || is_verb(w)
+                || number_of(w).is_some()
+                || objects_by_name.contains_key(**w)
+                || scenes_by_name.contains_key(**w)
+        })
+        .count();
+    words.len() >= 3 && other_language(text, known, words.len())
+}
+
+/// Whether `text` is written in another language than English: `whatlang`'s trigram detector
+/// among the languages people most often write requests in, trusted only when it is confident
+/// or few of the words are ones an English reader knows, and never when half of them are (a
+/// short English list of nouns can look like anything to a trigram model).
+pub(super) fn other_language(text: &str, english_words: usize, words: usize) -> bool {
+    use whatlang::{Detector, Lang};
+    static DETECTOR: OnceLock<Detector> = OnceLock::new();
+    let detector = DETECTOR.get_or_init(|| {
+        Detector::with_allowlist(vec![
+            Lang::Eng,
+            Lang::Spa,
+            Lang::Fra,
+            Lang::Deu,
+            Lang::Ita,
+            Lang::Por,
+            Lang::Nld,
+            Lang::Pol,
+            Lang::Swe,
+            Lang::Dan,
+            Lang::Tur,
+            Lang::Rus,
+            Lang::Cmn,
+            Lang::Jpn,
+        ])
+    });
+    let Some(info) = detector.detect(text) else {
+        return false;
+    };
+    let share = english_words as f64 / words.max(1) as f64;
+    info.lang() != Lang::Eng && (info.confidence() >= 0.3 || share < 0.34) && share < 0.5
+}

@@ -1,0 +1,357 @@
+//! The counts stage of the offline planner: what each mention counts (named, distributed over
+//! "each" of another object, "a table for six"), and the companions that follow what the text
+//! sets ("12 desks" get 12 chairs, "for 24 students" 24 seats, "20 chairs" the tables they
+//! need), clamped to what one category may hold.
+use super::Draft;
+use crate::plan::lang;
+use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType, MAX_NUMBER};
+use std::collections::BTreeMap;
+
+/// The seat category that goes round `table`: one the plan already has, else the first of the
+/// usual seats that the functional groups put at such a table.
+pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
+    const USUAL: &[&str] = &[
+        "dining chair",
+        "cafe chair",
+        "patio chair",
+        "office chair",
+        "bar stool",
+    ];
+    let probe = |seat: &str| {
+        let mut objects = BTreeMap::new();
+        for c in [table, seat] {
+            objects.insert(
+                c.to_string(),
+                ObjectSpec {
+                    number: 1,
+                    size: [1.0, 1.0, 1.0],
+                    description: String::new(),
+                    rows: 0,
+                },
+            );
+        }
+        let spec = SceneSpec {
+            scene_type: SceneType::Indoor,
+            scene_text: String::new(),
+            room: None,
+            objects,
+            anchors: BTreeMap::new(),
+            relations: vec![],
+        };
+        crate::plan::groups::group_of(&spec, seat).is_some_and(|(_, t)| t == table)
+    };
+    counts
+        .keys()
+        .map(String::as_str)
+        .chain(USUAL.iter().copied())
+        .find(|s| *s != table && probe(s))
+        .map(str::to_string)
+}
+
+/// The counts the mentions give: negated and "no other" categories, counts distributed over the
+/// instances of another object ("two chairs at each table"), a bare plural's default count.
+pub(super) fn mention_counts(d: &mut Draft) {
+    let Draft {
+        r,
+        cats,
+        counts,
+        defaults,
+        negated,
+        others,
+        explicit,
+        inferred,
+        ..
+    } = d;
+    // "two chairs at each table": (category, per instance, category of the distributor).
+    let mut distributed: Vec<(String, u32, String)> = vec![];
+    for (mi, (m, cat)) in r.mentions.iter().zip(cats.iter()).enumerate() {
+        if m.negated {
+            if m.adjectives.iter().any(|a| a == "other") {
+                // "no other beds": no default of that kind or role, the named ones stay
+                others.insert(cat.clone());
+            } else {
+                negated.insert(cat.clone());
+            }
+            continue;
+        }
+        if m.reference {
+            // "each umbrella": the umbrellas named before
+            continue;
+        }
+        if let Some(x) = m.each_of {
+            inferred
+                .entry(cat.clone())
+                .or_insert_with(|| crate::plan::understood::span_phrase(r, mi, x));
+            distributed.push((cat.clone(), m.count.unwrap_or(1) * m.parts, cats[x].clone()));
+            continue;
+        }
+        match m.count {
+            Some(n) => {
+                *explicit.entry(cat.clone()).or_default() += n;
+            }
+            None if m.definite => {
+                counts.entry(cat.clone()).or_insert(1);
+            }
+            None if m.plural && lang::plural_means_one(cat).is_some() => {
+                // "bunk beds": one bunk bed; "bunk beds for four kids": what sleeps four
+                let holds = lang::plural_means_one(cat).unwrap_or(1).max(1);
+                let n = r.people.map_or(1, |p| p.div_ceil(holds).max(1));
+                *explicit.entry(cat.clone()).or_default() += n;
+            }
+            None if m.plural => {
+                if !explicit.contains_key(cat) {
+                    let d = defaults.get(cat).copied().unwrap_or(0).max(2);
+                    counts.insert(cat.clone(), d);
+                }
+            }
+            None => {
+                *explicit.entry(cat.clone()).or_default() += 1;
+            }
+        }
+    }
+    for (c, n) in explicit.iter() {
+        counts.insert(c.clone(), *n);
+    }
+    // Distributive counts multiply by the instances of what they distribute over.
+    let mut spread: BTreeMap<String, u32> = BTreeMap::new();
+    for (c, per, x) in &distributed {
+        let over = counts.get(x).copied().unwrap_or(1).max(1);
+        *spread.entry(c.clone()).or_default() += per * over;
+    }
+    for (c, n) in spread {
+        let total = explicit.get(&c).copied().unwrap_or(0) + n;
+        explicit.insert(c.clone(), total);
+        counts.insert(c, total);
+    }
+}
+
+/// "A table for six": that many seats at each of those tables. The people the text seats
+/// ("for 24 students"), unless a table's seats were given.
+pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
+    let Draft {
+        r,
+        cats,
+        counts,
+        defaults,
+        named,
+        explicit,
+        inferred,
+        ..
+    } = d;
+    let mut seated = false;
+    for &(ti, per) in &r.seats_for {
+        let table = &cats[ti];
+        let Some(&tables) = counts.get(table) else {
+            continue;
+        };
+        let Some(seat) = seat_for(table, counts) else {
+            continue;
+        };
+        seated = true;
+        inferred
+            .entry(seat.clone())
+            .or_insert_with(|| crate::plan::understood::seats_phrase(r, ti));
+        let n = per * tables.max(1);
+        let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
+            explicit[&seat].max(n)
+        } else {
+            n
+        };
+        explicit.insert(seat.clone(), total);
+        named.insert(seat.clone());
+        counts.insert(seat, total);
+    }
+    if seated {
+        None
+    } else {
+        r.people
+    }
+}
+
+/// Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" (`people`)
+/// 24 seats, "20 chairs" the tables they need.
+pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
+    let Draft {
+        kb,
+        r,
+        cats,
+        scene_type,
+        counts,
+        defaults,
+        named,
+        sizes,
+        unknown,
+        explicit,
+        inferred,
+        notes,
+        adjectives,
+        ..
+    } = d;
+    let scene_type = *scene_type;
+    let first_mention = |c: &str| cats.iter().position(|x| x == c);
+    let probe = SceneSpec {
+        scene_type,
+        scene_text: String::new(),
+        room: None,
+        objects: counts
+            .iter()
+            .map(|(c, n)| {
+                let size = sizes
+                    .get(c)
+                    .copied()
+                    .or_else(|| kb.object(c).map(|o| o.size))
+                    .or_else(|| unknown.get(c).copied())
+                    .unwrap_or([0.7, 0.6, 0.9]);
+                (
+                    c.clone(),
+                    ObjectSpec {
+                        number: *n,
+                        size,
+                        description: String::new(),
+                        rows: 0,
+                    },
+                )
+            })
+            .collect(),
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
+    let cats_now: Vec<String> = counts.keys().cloned().collect();
+    let default_probe = SceneSpec {
+        objects: defaults
+            .iter()
+            .map(|(c, n)| {
+                let size = kb.object(c).map(|o| o.size).unwrap_or([0.7, 0.6, 0.9]);
+                let o = ObjectSpec {
+                    number: *n,
+                    size,
+                    description: String::new(),
+                    rows: 0,
+                };
+                (c.clone(), o)
+            })
+            .collect(),
+        ..probe.clone()
+    };
+    for seat in &cats_now {
+        // A rug under a table or a coffee table before a sofa is no companion to count by.
+        use crate::plan::spec::RelationKind::{Front, Opposite, Under};
+        let Some((kind, table)) = crate::plan::groups::group_of(&probe, seat) else {
+            continue;
+        };
+        if matches!(kind, Under | Front | Opposite) {
+            continue;
+        }
+        // A default seat whose own table is gone (the teacher's chair, once "the invigilator's
+        // desk" took the teacher desk's place) is no seat of the others.
+        if defaults.contains_key(seat) && !explicit.contains_key(seat) {
+            let was = crate::plan::groups::group_of(&default_probe, seat).map(|g| g.1);
+            if was.is_some_and(|w| w != table) {
+                continue;
+            }
+        }
+        let Some(per) = crate::plan::groups::seats_per(&probe, seat, &table) else {
+            continue;
+        };
+        let seat_named = explicit.contains_key(seat);
+        // "along the counter": one particular table, however many seats it gets
+        let one_said = r
+            .mentions
+            .iter()
+            .zip(cats.iter())
+            .any(|(m, c)| *c == table && m.definite && !m.plural && !m.negated && !m.reference);
+        let table_named = explicit.contains_key(&table) || one_said;
+        // "for 24 students" seats the scene's main seats (its most numerous seat category).
+        let main_seat = cats_now
+            .iter()
+            .filter(|c| {
+                use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+                crate::plan::groups::group_of(&probe, c)
+                    .is_some_and(|(k, _)| matches!(k, Around | At | AtBack | Circle))
+            })
+            .max_by_key(|c| {
+                (
+                    defaults.get(*c).copied().unwrap_or(0),
+                    counts.get(*c).copied().unwrap_or(0),
+                )
+            });
+        if let Some(p) = people.filter(|_| main_seat == Some(seat)) {
+            let said = crate::plan::understood::people_phrase(&r.text, p);
+            if !seat_named {
+                counts.insert(seat.clone(), p);
+                inferred.entry(seat.clone()).or_insert_with(|| said.clone());
+            }
+            if !table_named {
+                counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+                inferred.entry(table.clone()).or_insert(said);
+            }
+            continue;
+        }
+        if table_named && !seat_named && per < 12 {
+            // Seats a table the way the scene's defaults do, within its capacity.
+            let (ds, dt) = (defaults.get(seat).copied(), defaults.get(&table).copied());
+            let mut each = match (ds, dt) {
+                (Some(s), Some(t)) if t > 0 => s.div_ceil(t).min(per),
+                _ => per.min(4),
+            };
+            // "a little table and chairs": a table said to be small seats two
+            let small = adjectives.get(&table).is_some_and(|a| {
+                a.iter().any(|w| {
+                    lang::object_footprint(w).is_some_and(|f| f < 1.0)
+                        || lang::object_scale(w).is_some_and(|f| f < 1.0)
+                })
+            });
+            if small {
+                each = each.min(2);
+            }
+            // seats of another kind the text puts at that table take their places ("a desk
+            // and a gaming chair" has one chair)
+            let taken: u32 = explicit
+                .keys()
+                .filter(|c| {
+                    *c != seat
+                        && crate::plan::groups::group_of(&probe, c).is_some_and(|(_, t)| t == table)
+                })
+                .map(|c| counts.get(c).copied().unwrap_or(0))
+                .sum();
+            counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
+            if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
+                inferred
+                    .entry(seat.clone())
+                    .or_insert_with(|| crate::plan::understood::phrase(r, i));
+            }
+        } else if seat_named && !table_named && per < 12 {
+            let need = counts[seat].div_ceil(per.max(1));
+            let t = counts.get(&table).copied().unwrap_or(1);
+            if need > t {
+                counts.insert(table.clone(), need);
+                if let Some(i) = first_mention(seat) {
+                    inferred
+                        .entry(table.clone())
+                        .or_insert_with(|| crate::plan::understood::phrase(r, i));
+                }
+            }
+        }
+    }
+    if people.is_some()
+        && !counts
+            .keys()
+            .any(|c| crate::plan::groups::group_of(&probe, c).is_some())
+    {
+        notes.push("\"for N people\": this scene has no seats to scale; counts kept".into());
+    }
+}
+
+/// Clamps counts (a note names each) and drops what has none.
+pub(super) fn clamp(d: &mut Draft) {
+    let Draft { counts, notes, .. } = d;
+    for (c, n) in counts.iter_mut() {
+        if *n > MAX_NUMBER {
+            notes.push(format!(
+                "{n} {c}: more than {MAX_NUMBER} of one category is not planned; using {MAX_NUMBER}"
+            ));
+            *n = MAX_NUMBER;
+        }
+    }
+    counts.retain(|_, n| *n > 0);
+}

@@ -1,0 +1,194 @@
+//! The describe stage of the offline planner: style words, each object's text-to-3D
+//! description and size in the spec, and what the planner understood (each object's count and
+//! why, the words not used).
+use super::Draft;
+use crate::plan::kb::ObjectKind;
+use crate::plan::spec::{ObjectSpec, SceneSpec};
+use std::collections::BTreeMap;
+
+/// Style words carried into every description when the prompt uses them.
+const STYLES: &[&str] = &[
+    "modern",
+    "minimalist",
+    "minimal",
+    "scandinavian",
+    "nordic",
+    "rustic",
+    "industrial",
+    "mid-century",
+    "bohemian",
+    "boho",
+    "vintage",
+    "retro",
+    "cozy",
+    "cosy",
+    "luxurious",
+    "luxury",
+    "japanese",
+    "zen",
+    "victorian",
+    "baroque",
+    "gothic",
+    "medieval",
+    "futuristic",
+    "sci-fi",
+    "cyberpunk",
+    "art deco",
+    "coastal",
+    "tropical",
+    "farmhouse",
+    "traditional",
+    "contemporary",
+    "elegant",
+    "colorful",
+    "colourful",
+    "pastel",
+    "dark",
+    "bright",
+    "sunny",
+    "wooden",
+    "classic",
+    "mediterranean",
+    "moroccan",
+    "french",
+    "english",
+    "cottage",
+    "steampunk",
+    "fantasy",
+    "festive",
+];
+
+/// The style word `w` is (or starts), if any.
+pub fn style_word(w: &str) -> Option<&'static str> {
+    STYLES.iter().copied().find(|s| *s == w)
+}
+
+pub(super) fn article(s: &str) -> &'static str {
+    match s.chars().next() {
+        Some('a' | 'e' | 'i' | 'o' | 'u') => "an",
+        _ => "a",
+    }
+}
+
+pub(super) fn describe(o: &ObjectKind, adjectives: &[String], styles: &[String]) -> String {
+    let mut words: Vec<String> = styles.to_vec();
+    if adjectives.is_empty() {
+        words.push(o.description.clone());
+    } else {
+        words.extend(adjectives.iter().cloned());
+        words.push(o.category.clone());
+    }
+    let body = words.join(" ");
+    format!("A DSLR photo of {} {body}", article(&body))
+}
+
+/// Style words describe the whole scene unless they are one object's adjectives.
+pub(super) fn styles(d: &Draft) -> Vec<String> {
+    let Draft { r, adjectives, .. } = d;
+    let local = |w: &str| adjectives.values().any(|a| a.iter().any(|x| x == w));
+    let mut v: Vec<String> = vec![];
+    for w in r.text.split(|c: char| !c.is_alphanumeric() && c != '-') {
+        let is_style = style_word(w).is_some()
+            || ["-inspired", "-style", "-styled", "-themed"]
+                .iter()
+                .any(|s| w.ends_with(s) && w.len() > s.len());
+        if is_style && !local(w) && !v.iter().any(|x| x == w) {
+            v.push(w.to_string());
+        }
+    }
+    if r.text.contains("art deco") && !v.iter().any(|x| x == "art deco") {
+        v.push("art deco".into());
+    }
+    v
+}
+
+/// The spec's objects: each category's count, size and description; a category in rows keeps
+/// the most rows any mention of it asks.
+pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSpec> {
+    let Draft {
+        kb,
+        r,
+        cats,
+        counts,
+        sizes,
+        unknown,
+        adjectives,
+        ..
+    } = d;
+    let mut rows: BTreeMap<String, u32> = BTreeMap::new();
+    for (m, c) in r.mentions.iter().zip(cats.iter()) {
+        if m.rows > 0 && !m.negated {
+            let e = rows.entry(c.clone()).or_insert(0);
+            *e = (*e).max(m.rows);
+        }
+    }
+    let mut objects = BTreeMap::new();
+    for (c, n) in counts.iter() {
+        let (size, description) = match kb.object(c) {
+            Some(o) => (
+                sizes.get(c).copied().unwrap_or(o.size),
+                describe(
+                    o,
+                    adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]),
+                    styles,
+                ),
+            ),
+            None => {
+                let size = sizes
+                    .get(c)
+                    .copied()
+                    .or_else(|| unknown.get(c).copied())
+                    .unwrap_or([0.7, 0.6, 0.9]);
+                let mut words = styles.to_vec();
+                words.extend(adjectives.get(c).cloned().unwrap_or_default());
+                words.push(c.clone());
+                let body = words.join(" ");
+                (size, format!("A DSLR photo of {} {body}", article(&body)))
+            }
+        };
+        objects.insert(
+            c.clone(),
+            ObjectSpec {
+                number: *n,
+                size,
+                description,
+                rows: rows.get(c).copied().unwrap_or(0).min(*n),
+            },
+        );
+    }
+    objects
+}
+
+/// Each object's count and why it is there, and the words not used.
+pub(super) fn understood(
+    d: &Draft,
+    spec: &SceneSpec,
+    styles: &[String],
+) -> crate::plan::understood::Understood {
+    let Draft {
+        r,
+        scene,
+        named,
+        defaults,
+        inferred,
+        ..
+    } = d;
+    crate::plan::understood::Understood {
+        objects: spec
+            .objects
+            .iter()
+            .map(|(c, o)| crate::plan::understood::Because {
+                category: c.clone(),
+                count: o.number,
+                why: crate::plan::understood::why(
+                    c,
+                    inferred,
+                    named,
+                    scene.map(|s| s.name.as_str()),
+                    defaults.contains_key(c),
+                ),
+            })
+            .collect(),
+        unused: crate::plan::understood::unused_words(r, styles),
+    }
+}

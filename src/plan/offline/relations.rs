@@ -1,0 +1,176 @@
+//! The relations stage of the offline planner: anchors (the category's, the scene's, then the
+//! text's) and relations (the text's, spread over the instances; the scene's defaults, held by
+//! what fills a replaced default's role; then the functional groups, the text's own kept).
+use super::Draft;
+use crate::plan::spec::{Anchor, Relation, SceneSpec, SceneType};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Each category's anchor: the category's, the scene's, then the text's.
+pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
+    let Draft {
+        kb,
+        r,
+        scene,
+        scene_type,
+        cats,
+        counts,
+        ..
+    } = d;
+    let scene_type = *scene_type;
+    let mut anchors: BTreeMap<String, Anchor> = BTreeMap::new();
+    for c in counts.keys() {
+        let a = kb.object(c).map(|o| o.anchor).unwrap_or(Anchor::Others);
+        anchors.insert(c.clone(), a);
+    }
+    if let Some(s) = scene {
+        for (c, a) in &s.anchors {
+            if counts.contains_key(c) {
+                anchors.insert(c.clone(), *a);
+            }
+        }
+    }
+    // "in one corner, facing the window": one anchor per object, and the facing is what a
+    // position word cannot give back, so it stays
+    let facing: BTreeSet<usize> = r
+        .anchors
+        .iter()
+        .filter(|(_, a)| *a == Anchor::FaceWindow)
+        .map(|&(mi, _)| mi)
+        .collect();
+    for &(mi, a) in &r.anchors {
+        let c = &cats[mi];
+        if counts.contains_key(c) && (a == Anchor::FaceWindow || !facing.contains(&mi)) {
+            anchors.insert(c.clone(), a);
+        }
+    }
+    if scene_type == SceneType::Outdoor {
+        for a in anchors.values_mut() {
+            if *a == Anchor::Corner {
+                *a = Anchor::Side;
+            }
+        }
+    }
+    anchors
+}
+
+/// The spec's relations: the text's (every instance of a plural subject), then the scene's
+/// defaults, then the functional groups (the text's own stay).
+pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
+    let Draft {
+        r,
+        scene,
+        cats,
+        counts,
+        ..
+    } = d;
+    let mut keep: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut pairs: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut push = |spec: &mut SceneSpec, s: String, rel, o: String, user: bool| {
+        if s == o {
+            return;
+        }
+        let key = (s.clone().min(o.clone()), s.clone().max(o.clone()));
+        if pairs.insert(key) {
+            if user {
+                keep.insert((s.clone(), o.clone()));
+            }
+            spec.relations.push(Relation {
+                subject: s,
+                relation: rel,
+                object: o,
+            });
+        }
+    };
+    for &(si, rel, oi) in &r.relations {
+        let (sc, oc) = (&cats[si], &cats[oi]);
+        let (Some(&ns), Some(_)) = (counts.get(sc), counts.get(oc)) else {
+            continue;
+        };
+        // A seat "around" or "at" its table is the group's relation, whatever the phrase.
+        let rel = match crate::plan::groups::group_of(spec, sc) {
+            Some((g, t))
+                if t == *oc
+                    && matches!(
+                        rel,
+                        crate::plan::spec::RelationKind::Around
+                            | crate::plan::spec::RelationKind::At
+                            | crate::plan::spec::RelationKind::AtBack
+                            | crate::plan::spec::RelationKind::Next
+                            | crate::plan::spec::RelationKind::Flank
+                    ) =>
+            {
+                g
+            }
+            _ => rel,
+        };
+        // "a bench on each side of every table": every bench, spread over the tables
+        let every = r.mentions[si].plural
+            || r.mentions[si].count.unwrap_or(1) > 1
+            || r.mentions[si].each_of == Some(oi);
+        let n = if every { ns } else { 1 };
+        if rel == crate::plan::spec::RelationKind::Around
+            || rel == crate::plan::spec::RelationKind::Flank
+            || rel == crate::plan::spec::RelationKind::At
+            || rel == crate::plan::spec::RelationKind::AtBack
+        {
+            // groups spread them over the object's instances
+            if crate::plan::groups::group_of(spec, sc).is_some_and(|(_, t)| t == *oc) {
+                continue;
+            }
+        }
+        // "a lamp on each nightstand", "chairs in front of the sofas": the subjects spread
+        // over the object's instances, one relation per item; "the nightstand" is one
+        let no = counts.get(oc).copied().unwrap_or(1).max(1);
+        let om = &r.mentions[oi];
+        // "three tables, each under a parasol": a parasol of its own for each table
+        let spread =
+            om.reference || om.plural || om.count.is_some_and(|c| c > 1) || om.each_of == Some(si);
+        let n = if spread && no > 1 {
+            n.max(ns.min(no))
+        } else {
+            n
+        };
+        for k in 1..=n {
+            let ko = if spread { (k - 1) % no + 1 } else { 1 };
+            push(spec, format!("{sc}{k}"), rel, format!("{oc}{ko}"), true);
+        }
+    }
+    if let Some(sc) = scene {
+        // a scene's relation of a default that a named thing of its role replaced holds for
+        // that thing (the teacher's desk before the whiteboard that replaced the blackboard)
+        let filling = |c: &str| -> Option<String> {
+            if counts.contains_key(c) {
+                return Some(c.to_string());
+            }
+            let role = crate::plan::roles::role_of(c)?;
+            counts
+                .keys()
+                .find(|k| crate::plan::roles::role_of(k) == Some(role))
+                .cloned()
+        };
+        for rel in &sc.relations {
+            let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
+            else {
+                continue;
+            };
+            let (ns, no) = (counts[&subject], counts[&object]);
+            let n = if rel.every { ns } else { 1 };
+            for k in 1..=n {
+                // every one of them spread over the objects ("beer bench* NEXT bench table")
+                let ko = if rel.every {
+                    (k - 1) % no.max(1) + 1
+                } else {
+                    1
+                };
+                push(
+                    spec,
+                    format!("{subject}{k}"),
+                    rel.relation,
+                    format!("{object}{ko}"),
+                    false,
+                );
+            }
+        }
+    }
+    crate::plan::groups::apply(spec, &keep);
+}

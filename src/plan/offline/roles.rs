@@ -1,0 +1,320 @@
+//! The roles stage of the offline planner: which objects the plan holds before counting (the
+//! scene's defaults, only the generic ones for a place that is not the template's own), the
+//! category each mention means in this scene ("desks" in a classroom are school desks, "a big
+//! potted palm" a potted plant), and after counting what negation and the roles of named objects
+//! take away (the role table is `plan::roles`).
+use super::counts::seat_for;
+use super::Draft;
+use crate::plan::kb::KnowledgeBase;
+use crate::plan::lang;
+use std::collections::BTreeMap;
+
+/// The scene's default furniture (`counts` and `defaults`), less what a place that is not the
+/// template's own does not take.
+pub(super) fn scene_defaults(d: &mut Draft) {
+    let (kb, scene) = (d.kb, d.scene);
+    let Draft {
+        r, counts, notes, ..
+    } = d;
+    if let Some(s) = scene {
+        for (c, n) in &s.objects {
+            // "a haunted ballroom": another place than the template's lends only its generic
+            // furniture (what several scene types have), not its DJ booth
+            if let Some(w) = r.not_literal.as_deref() {
+                if scenes_with(kb, c) < GENERIC_SCENES && !s.own.contains(c) {
+                    notes.push(format!(
+                        "default `{c}` of a {} left out: the \"{w}\" place is not the template's own",
+                        s.name
+                    ));
+                    continue;
+                }
+            }
+            counts.insert(c.clone(), *n);
+        }
+    }
+    if r.not_literal.is_some() {
+        // the seats of a table left out go with it (the reading chairs of a haunted library)
+        let lone: Vec<String> = counts
+            .keys()
+            .filter(|c| {
+                let objs = crate::plan::groups::partners_of(c);
+                scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+                    && !objs.iter().any(|o| counts.contains_key(*o))
+            })
+            .cloned()
+            .collect();
+        for c in lone {
+            counts.remove(&c);
+            notes.push(format!(
+                "default `{c}` left out: what it goes with is left out"
+            ));
+        }
+    }
+    d.defaults = d.counts.clone();
+}
+
+/// The category each mention means (`cats`).
+pub(super) fn mention_kinds(d: &mut Draft) {
+    let (kb, scene) = (d.kb, d.scene);
+    d.cats =
+        d.r.mentions
+            .iter()
+            .map(|m| in_scene(kb, scene, m))
+            .collect();
+    let Draft { r, cats, .. } = d;
+    // "ten round tables ... and a top table": an unknown kind of a noun of which the text
+    // already names a kind is another object, not more of the scene's (it is sized as them).
+    for i in 0..cats.len() {
+        let m = &r.mentions[i];
+        if m.known || m.reference || cats[i] == m.category {
+            continue;
+        }
+        let head = m.category.rsplit(' ').next();
+        let named_elsewhere = r.mentions.iter().zip(cats.iter()).any(|(o, c)| {
+            (*c == cats[i] || c.rsplit(' ').next() == head) && o.known && !o.reference && !o.negated
+        });
+        if named_elsewhere {
+            cats[i] = m.category.clone();
+        }
+    }
+    // "seven tables, four stools apiece" in a bar: stools said per table are not the scene's
+    // stools of another group it has (its bar stools at the counter); they keep their plain kind.
+    for (i, m) in r.mentions.iter().enumerate() {
+        let Some(t) = m.each_of else { continue };
+        let (Some(c), Some(tc)) = (cats.get(i), cats.get(t)) else {
+            continue;
+        };
+        let grouped_elsewhere = crate::plan::groups::group_of_category(c).is_some_and(|objs| {
+            scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+        });
+        if *c != m.category
+            && grouped_elsewhere
+            && crate::plan::groups::relation_between(c, tc).is_none()
+        {
+            cats[i] = m.category.clone();
+        }
+    }
+    // "a kids' table with four little chairs": bare seats said with a table are that table's
+    // seats, not the scene's usual seat kind (the office chairs of its desks).
+    let scene_seats: BTreeMap<String, u32> = scene
+        .map(|s| s.objects.iter().cloned().collect())
+        .unwrap_or_default();
+    for i in 1..r.mentions.len() {
+        let (m, prev) = (&r.mentions[i], &r.mentions[i - 1]);
+        let between = &r.text[prev.end..m.start];
+        if cats[i] == m.category
+            || !between.trim_start().starts_with("with ")
+            || between.contains([',', ';', '.'])
+        {
+            continue;
+        }
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        // the scene's seats of that noun first, then any kind of it ("kids chair")
+        let same_head: BTreeMap<String, u32> = scene_seats
+            .iter()
+            .map(|(c, n)| (c.clone(), *n))
+            .chain(kb.objects.iter().map(|o| (o.category.clone(), 0)))
+            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
+            .collect();
+        if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
+            if seat.rsplit(' ').next() == Some(head.as_str()) {
+                cats[i] = seat;
+            }
+        }
+    }
+    // "three little tables with two chairs per table": tables said with their seats are
+    // tables to sit at, not the scene's side tables.
+    for (i, pair) in r.mentions.windows(2).enumerate() {
+        let (m, next) = (&pair[0], &pair[1]);
+        let with = r.text[m.end..next.start].trim_start().starts_with("with ");
+        if cats[i] == m.category || !(with || next.each_of == Some(i)) {
+            continue;
+        }
+        let seat: BTreeMap<String, u32> = [(next.category.clone(), 0)].into();
+        let sits = |t: &str| seat_for(t, &seat).as_deref() == Some(next.category.as_str());
+        if !sits(&cats[i]) && sits(&m.category) {
+            cats[i] = m.category.clone();
+        }
+    }
+    // "three consoles, each with a seat in front of it": a seat said of each of them is
+    // their usual seat (the console's office chair), whatever its kind.
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        let (Some(x), "seat") = (m.each_of, head.as_str()) else {
+            continue;
+        };
+        let seats: BTreeMap<String, u32> = scene_seats.clone();
+        if let Some(seat) = seat_for(&cats[x], &seats) {
+            cats[i] = seat;
+        }
+    }
+    // "a bench on each long side" of a table, "a bench down each side of every table": a seat
+    // said of each side of a table is the kind of it that table takes (a dining bench, not the
+    // hall's bench), and so is every other mention of it.
+    for i in 0..r.mentions.len() {
+        let (Some(x), true) = (r.mentions[i].each_of, r.mentions[i].parts > 1) else {
+            continue;
+        };
+        let (c, t) = (cats[i].clone(), cats[x].clone());
+        if crate::plan::groups::relation_between(&c, &t).is_some() {
+            continue;
+        }
+        let head = lang::singular(r.mentions[i].text.rsplit(' ').next().unwrap_or(""));
+        // of the kinds that table takes, the one nearest its length
+        let length = kb.object(&t).map_or(0.0, |o| o.size[0]);
+        let Some(seat) = kb
+            .objects
+            .iter()
+            .filter(|o| o.category.rsplit(' ').next() == Some(head.as_str()))
+            .filter(|o| {
+                let one: BTreeMap<String, u32> = [(o.category.clone(), 0)].into();
+                seat_for(&t, &one).as_deref() == Some(o.category.as_str())
+            })
+            .min_by(|a, b| {
+                (a.size[0] - length)
+                    .abs()
+                    .total_cmp(&(b.size[0] - length).abs())
+            })
+            .map(|o| o.category.clone())
+        else {
+            continue;
+        };
+        for (j, cj) in cats.iter_mut().enumerate() {
+            if *cj == c && !r.mentions[j].negated {
+                *cj = seat.clone();
+            }
+        }
+    }
+    // "a big potted palm": a plant that grows to full size outdoors, in a pot, is a potted plant
+    for (i, m) in r.mentions.iter().enumerate() {
+        let Some(o) = kb.object(&cats[i]) else {
+            continue;
+        };
+        if let Some(c) = m
+            .adjectives
+            .iter()
+            .find_map(|a| lang::potted(a, &o.archetype))
+        {
+            if kb.object(&c).is_some() {
+                cats[i] = c;
+            }
+        }
+    }
+}
+
+/// What negation and the roles of named objects take away from the counts: a negated
+/// category, the defaults whose roles named objects fill, the single default a particular
+/// named one replaces ("the invigilator's desk"), and the defaults of a negated role.
+pub(super) fn take_away(d: &mut Draft) {
+    let Draft {
+        r,
+        cats,
+        counts,
+        defaults,
+        named,
+        negated,
+        others,
+        notes,
+        ..
+    } = d;
+    // Negation removes the category, defaults included.
+    for c in negated.iter() {
+        counts.remove(c);
+        named.remove(c);
+    }
+    // Named objects fill the roles of the defaults they replace.
+    notes.extend(crate::plan::roles::apply(counts, named, r.exclusive));
+    // "the invigilator's desk": a particular one takes the place of the scene's single
+    // default of its kind (the teacher's desk).
+    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+        let Some(head) = m.owner.as_ref().and(cat.rsplit(' ').next()) else {
+            continue;
+        };
+        if m.negated {
+            continue;
+        }
+        let gone: Vec<String> = defaults
+            .iter()
+            .filter(|(c, n)| **n == 1 && !named.contains(*c) && c.rsplit(' ').next() == Some(head))
+            .map(|(c, _)| c.clone())
+            .collect();
+        for c in gone {
+            if counts.remove(&c).is_some() {
+                notes.push(format!(
+                    "default {c} left out: the named {cat} takes its place"
+                ));
+            }
+        }
+    }
+    for c in others.iter() {
+        if !named.contains(c) {
+            counts.remove(c);
+        }
+    }
+    // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
+    for c in negated.iter().chain(others.iter()) {
+        if let Some(role) = crate::plan::roles::role_of(c) {
+            counts.retain(|k, _| named.contains(k) || crate::plan::roles::role_of(k) != Some(role));
+        }
+    }
+}
+
+/// The scene's default category that the text's noun `m` means: "desks" in a classroom are
+/// school desks, "chairs" in a cafe are cafe chairs (the default sharing the head noun, the
+/// most numerous first).
+fn in_scene(
+    kb: &KnowledgeBase,
+    scene: Option<&crate::plan::kb::SceneKind>,
+    m: &lang::Mention,
+) -> String {
+    let Some(s) = scene else {
+        return m.category.clone();
+    };
+    if m.owner.is_some() || s.objects.iter().any(|(c, _)| *c == m.category) {
+        return m.category.clone();
+    }
+    let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+    let same_head = |c: &&(String, u32)| c.0.rsplit(' ').next() == Some(head.as_str());
+    if !m.known {
+        // "three sonar consoles" on a bridge: its consoles, described by the text's words
+        return s
+            .objects
+            .iter()
+            .filter(same_head)
+            .max_by_key(|(_, n)| *n)
+            .map(|(c, _)| c.clone())
+            .unwrap_or_else(|| m.category.clone());
+    }
+    // Only what scenes specialise (`kb/words.txt`: specialised); a lamp stays a lamp.
+    if !lang::is_specialised(&head) {
+        return m.category.clone();
+    }
+    let head_cat = kb.object(&head).map(|o| o.category.clone());
+    // Only a bare head noun ("desks", "a chair") is re-read; "an office chair" stays.
+    let bare = m.text.split(' ').count() == 1 || head_cat.as_deref() == Some(m.category.as_str());
+    if !bare {
+        return m.category.clone();
+    }
+    s.objects
+        .iter()
+        .filter(|(c, _)| {
+            c.rsplit(' ').next() == Some(head.as_str())
+                || kb.object(&head).is_some_and(|o| o.category == **c)
+        })
+        .max_by_key(|(_, n)| *n)
+        .map(|(c, _)| c.clone())
+        .unwrap_or_else(|| m.category.clone())
+}
+
+/// How many scene types a category is a default of: furniture of at least
+/// [`GENERIC_SCENES`] is generic (chairs, shelves, rugs), the rest belongs to its places.
+fn scenes_with(kb: &KnowledgeBase, category: &str) -> usize {
+    kb.scenes
+        .iter()
+        .filter(|s| s.objects.iter().any(|(c, _)| c == category))
+        .count()
+}
+
+/// See [`scenes_with`].
+const GENERIC_SCENES: usize = 3;

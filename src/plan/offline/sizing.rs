@@ -1,0 +1,252 @@
+//! The sizing stage of the offline planner: each named object's size (stated, scaled by its size
+//! words, or for an unknown object from its head noun, WordNet or a size class) and the room's
+//! (stated, else chosen to fit the furniture, scaled by "small" or "large").
+use super::Draft;
+use crate::plan::capacity::room_for;
+use crate::plan::kb::KnowledgeBase;
+use crate::plan::lang;
+use crate::plan::spec::{Room, SceneSpec, SceneType};
+use std::collections::BTreeSet;
+
+/// The sizes the mentions give: an unknown object's (with a note), a stated one, or one scaled
+/// by size words; records what the text names and its adjectives.
+pub(super) fn mention_sizes(d: &mut Draft) {
+    let (kb, scene) = (d.kb, d.scene);
+    let Draft {
+        r,
+        cats,
+        named,
+        adjectives,
+        sizes,
+        unknown,
+        notes,
+        ..
+    } = d;
+    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+        if m.negated || m.reference {
+            continue;
+        }
+        if !m.known && !unknown.contains_key(cat) {
+            // "the instructor's mat" in a yoga studio: sized as the scene's own mats
+            let own = scene.and_then(|s| {
+                let head = cat.rsplit(' ').next()?;
+                let (c, _) = s
+                    .objects
+                    .iter()
+                    .find(|(c, _)| c.rsplit(' ').next() == Some(head))?;
+                Some((kb.object(c)?.size, format!("sized as a {c}")))
+            });
+            let (size, how) = own.unwrap_or_else(|| unknown_size(kb, cat));
+            notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
+            unknown.insert(cat.clone(), size);
+        }
+        named.insert(cat.clone());
+        if !m.adjectives.is_empty() {
+            adjectives.insert(cat.clone(), m.adjectives.clone());
+        }
+        let base = kb.object(cat).map(|o| o.size).or(unknown.get(cat).copied());
+        if let Some(mut size) = base {
+            if m.size != [0.0; 3] {
+                // A stated width keeps the shape's proportions in depth only when both are given.
+                for (v, stated) in size.iter_mut().zip(m.size) {
+                    if stated > 0.0 {
+                        *v = stated;
+                    }
+                }
+                sizes.insert(cat.clone(), size);
+            } else if m.known {
+                // "a huge viewscreen", "a tiny desk": the size words of kb/words.txt scale it.
+                let f: f64 = m
+                    .adjectives
+                    .iter()
+                    .filter_map(|a| lang::object_scale(a))
+                    .product();
+                // a word the category's own description has ("small round cafe table") is
+                // already in its size
+                let described = kb.object(cat).map(|o| o.description.as_str()).unwrap_or("");
+                let g: f64 = m
+                    .adjectives
+                    .iter()
+                    .filter(|a| !described.split(' ').any(|w| w == a.as_str()))
+                    .filter_map(|a| lang::object_footprint(a))
+                    .product();
+                if f != 1.0 || g != 1.0 {
+                    for (k, v) in size.iter_mut().enumerate() {
+                        let s = if k < 2 { f * g } else { f };
+                        *v = (*v * s * 100.0).round() / 100.0;
+                    }
+                    sizes.insert(cat.clone(), size);
+                }
+            }
+        }
+    }
+}
+
+/// The room: as stated, else chosen to fit `spec` (scaled by "small" / "large"); a size without
+/// a unit gets a note.
+pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
+    let Draft {
+        r,
+        scene_type,
+        named,
+        notes,
+        ..
+    } = d;
+    let scene_type = *scene_type;
+    let height: f64 = match scene_type {
+        SceneType::Indoor => 2.8,
+        SceneType::Outdoor => 10.0,
+    };
+    let stated = r.room;
+    let room = match stated {
+        Some([w, d]) => {
+            let tallest = spec
+                .instances()
+                .iter()
+                .map(|i| i.size[2])
+                .fold(0.0, f64::max);
+            let h = r.room_height.unwrap_or(height.max(tallest + 0.3));
+            Room {
+                size: [
+                    crate::plan::units::cm(w),
+                    crate::plan::units::cm(d),
+                    crate::plan::units::cm(h),
+                ],
+            }
+        }
+        None => {
+            let mut room = room_for(&spec.instances(), scene_type);
+            if r.scale < 1.0 {
+                room.size = small_room(spec, named, room.size, r.scale, scene_type);
+            } else if r.scale > 1.0 {
+                let s = r.scale.sqrt();
+                for k in 0..2 {
+                    room.size[k] = (room.size[k] * s * 10.0).ceil() / 10.0;
+                }
+            }
+            // things asked in rows: wide and deep enough for the block and its front
+            let need = crate::plan::gcp::rows::room_for_rows(spec);
+            for (v, n) in room.size.iter_mut().zip(need) {
+                *v = v.max((n * 10.0).ceil() / 10.0);
+            }
+            room
+        }
+    };
+    if r.room_unitless {
+        notes.push(format!(
+            "room size {} x {} has no unit: read as metres",
+            room.size[0], room.size[1]
+        ));
+    }
+    room
+}
+
+/// Height below which a thing is at floor level (metres): see [`small_room`].
+const LOW: f64 = 0.3;
+
+/// Floor of a room the text calls small or tiny: what the named objects need in use (their
+/// footprints with room to use them at half the floor, a little more when tiny; the longest
+/// with a walkway), or with nothing named the scene's furniture room scaled by `scale`; never
+/// below a small room's side. The defaults are then trimmed to fit by `capacity::fit`.
+fn small_room(
+    spec: &SceneSpec,
+    named: &BTreeSet<String>,
+    full: [f64; 3],
+    scale: f64,
+    scene_type: SceneType,
+) -> [f64; 3] {
+    let named_inst: Vec<_> = spec
+        .instances()
+        .into_iter()
+        .filter(|i| named.contains(&i.category))
+        .collect();
+    let margin = crate::plan::capacity::USE_MARGIN;
+    // The share of the floor the named furniture may take: more in a room called tiny.
+    let occupancy = if scale < 0.45 { 0.6 } else { 0.5 };
+    // Only what stands on the floor takes floor (a mirror on the wall, a lamp on a table no).
+    let on_floor = |c: &str| {
+        use crate::plan::gcp::classes::{effective_class, Class};
+        matches!(effective_class(spec, c), Class::Floor | Class::AgainstWall)
+    };
+    // A chair at a desk uses the desk's own room in front of it.
+    let tucked = |c: &str| {
+        use crate::plan::groups::{group_of, seats_per};
+        matches!(group_of(spec, c), Some((crate::plan::spec::RelationKind::At | crate::plan::spec::RelationKind::AtBack, t)) if seats_per(spec, c, &t) == Some(1))
+    };
+    // A thing at floor level (a floor cushion, a mattress on the floor) is stepped onto: its
+    // footprint is all it takes.
+    let room_to_use = |h: f64| if h < LOW { 0.0 } else { margin };
+    let need: f64 = named_inst
+        .iter()
+        .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
+        .map(|i| (i.size[0] + room_to_use(i.size[2])) * (i.size[1] + room_to_use(i.size[2])))
+        .sum::<f64>()
+        / occupancy;
+    let longest = spec
+        .instances()
+        .iter()
+        .filter(|i| named.contains(&i.category))
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    let base_side: f64 = match scene_type {
+        SceneType::Indoor if scale < 0.45 => 1.8,
+        SceneType::Indoor => 2.2,
+        SceneType::Outdoor => 6.0,
+    };
+    let min_side = base_side.max(longest + 0.4);
+    // What the text names sets the floor; with nothing named, the scene's furniture scaled.
+    let area = if named_inst.is_empty() {
+        full[0] * full[1] * scale
+    } else {
+        need.min(full[0] * full[1])
+    };
+    let w = (area * 1.25).sqrt().max(min_side);
+    let d = (area / w).max(min_side);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    [r(w), r(d), full[2]]
+}
+
+/// Size of an object the knowledge base lacks: from its head noun's category when it has one,
+/// else from a size class named by its words.
+fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
+    let words: Vec<&str> = name.split(' ').collect();
+    for k in (0..words.len()).rev() {
+        if let Some(o) = kb.object(words[k]) {
+            return (o.size, format!("sized as a {}", o.category));
+        }
+    }
+    // WordNet: "a divan" is a kind of sofa, "an owl" a small thing
+    let head = words.last().copied().unwrap_or("");
+    let kind = crate::plan::lexicon::kind(head);
+    if let Some(crate::plan::lexicon::Kind::Category(c)) = kind {
+        if let Some(o) = kb.object(c) {
+            return (o.size, format!("sized as a {c}, its kind in WordNet"));
+        }
+    }
+    let wn_class = match kind {
+        Some(crate::plan::lexicon::Kind::Size(class)) => class,
+        _ => "",
+    };
+    let has = |ws: &[&str]| words.iter().any(|w| ws.contains(w));
+    let (size, class) = if has(&["small", "tiny", "little", "mini", "miniature"]) {
+        ([0.35, 0.35, 0.4], "small")
+    } else if has(&[
+        "large", "big", "huge", "giant", "enormous", "massive", "tall",
+    ]) {
+        ([1.5, 1.0, 1.6], "large")
+    } else if wn_class == "small" {
+        ([0.35, 0.35, 0.4], "small")
+    } else if wn_class == "large" {
+        ([1.5, 1.0, 1.6], "large")
+    } else {
+        ([0.7, 0.6, 0.9], "medium")
+    };
+    (
+        size,
+        format!("sized as a {class} object {}", fmt_size(size)),
+    )
+}
+
+fn fmt_size(s: [f64; 3]) -> String {
+    format!("{} x {} x {} m", s[0], s[1], s[2])
+}
