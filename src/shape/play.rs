@@ -149,7 +149,16 @@ pub fn pool_float(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let r = hw.min(hd);
     let tube = (0.5 * h).min(0.25 * r);
-    ring(b, Body, tube, r - tube, tube);
+    // Short tubes joined by balls: closed solids, so the ring reads as filled from the side.
+    let rc = r - tube;
+    let at = |k: usize| {
+        let t = k as f64 / 32.0 * TAU;
+        [rc * t.cos(), rc * t.sin(), tube]
+    };
+    for k in 0..32 {
+        b.rod(Body, at(k), at(k + 1), tube);
+        b.ellipsoid(Body, at(k), [tube, tube, tube]);
+    }
     // A valve on the top of the tube.
     b.cylinder(
         Cushion,
