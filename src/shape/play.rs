@@ -156,7 +156,7 @@ pub fn pool_float(b: &mut Builder) {
         [rc * t.cos(), rc * t.sin(), tube]
     };
     for k in 0..32 {
-        b.rod(Body, at(k), at(k + 1), tube);
+        b.rod(Body, at(k), at(k + 1), 0.97 * tube);
         b.ellipsoid(Body, at(k), [tube, tube, tube]);
     }
     // A valve on the top of the tube.
