@@ -113,6 +113,7 @@ pub(crate) fn focal(scene: &SceneBox) -> Option<(usize, Vec<bool>)> {
         d > 1e-6 && (-s * dx + c * dy) / d >= cone
     };
     let (best, n) = (0..scene.objects.len())
+        .filter(|t| scene.objects[*t].size[2] > FLAT)
         .map(|t| {
             let o = &scene.objects[t];
             let n = scene
