@@ -177,18 +177,31 @@ struct Candidate {
     occluder: f64,
     /// Horizontal distance from the camera to the spot it looks at (metres).
     reach: f64,
-    /// The share of the frame each object covers.
-    shares: Vec<f64>,
+    /// The objects in frame (index, share of the frame it covers), in index order, and the sum
+    /// of their shares.
+    shares: Vec<(usize, f64)>,
+    total: f64,
 }
 
 /// How much two views show the same: over the objects, the shares of the frame both give an
 /// object (the smaller), summed, over the larger of the two views' sums; times how alike their
 /// directions are. 1 is the same picture; views of one group from opposite sides are 0.
 fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
-    let both: f64 = a.shares.iter().zip(&b.shares).map(|(x, y)| x.min(*y)).sum();
-    let (sa, sb) = (a.shares.iter().sum::<f64>(), b.shares.iter().sum::<f64>());
     let cos = a.dir[0] * b.dir[0] + a.dir[1] * b.dir[1];
-    both / sa.max(sb).max(1e-9) * cos.max(0.0)
+    if cos <= 0.0 {
+        return 0.0;
+    }
+    // Both lists are in index order: merge them.
+    let (mut both, mut j) = (0.0, 0);
+    for &(k, x) in &a.shares {
+        while j < b.shares.len() && b.shares[j].0 < k {
+            j += 1;
+        }
+        if let Some(&(_, y)) = b.shares.get(j).filter(|s| s.0 == k) {
+            both += x.min(y);
+        }
+    }
+    both / a.total.max(b.total).max(1e-9) * cos
 }
 
 /// Horizontal distance from `p` to an object's footprint (0 inside).
@@ -283,22 +296,33 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 // What is looked at hides nothing, unless it is the near one of a pair, or it
                 // stands before a larger object and hides much of it (a bush before the
                 // fountain).
-                let hides_larger = boxes[k].1.is_some_and(|r| {
-                    scene.objects.iter().enumerate().any(|(j, q)| {
-                        j != k
-                            && shares[j] > 0.03
-                            && dists[j] > dist + 0.5
-                            && volume(q) > volume(o)
-                            && boxes[j].1.is_some_and(|f| hidden_share(&r, &f) > HIDES)
+                if o.size[2] <= FLAT || dist >= d - 0.3 {
+                    continue;
+                }
+                let hides_larger = || {
+                    boxes[k].1.is_some_and(|r| {
+                        scene.objects.iter().enumerate().any(|(j, q)| {
+                            j != k
+                                && shares[j] > 0.03
+                                && dists[j] > dist + 0.5
+                                && volume(q) > volume(o)
+                                && boxes[j].1.is_some_and(|f| hidden_share(&r, &f) > HIDES)
+                        })
                     })
-                });
-                let aimed = looked_at.contains(&k) && dist >= 0.5 * d && !hides_larger;
-                if !aimed && o.size[2] > FLAT && dist < d - 0.3 {
+                };
+                let aimed = looked_at.contains(&k) && dist >= 0.5 * d && !hides_larger();
+                if !aimed {
                     occluder = occluder.max(share);
                 }
             }
+            let total = shares.iter().sum();
             cands.push(Candidate {
-                shares,
+                shares: shares
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(_, s)| *s > 0.0)
+                    .collect(),
+                total,
                 occluder,
                 reach: d,
                 near,
