@@ -3,6 +3,7 @@
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
 use super::cases as c;
+use super::crafts as cr;
 use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
@@ -11,6 +12,7 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
+use super::play as pl;
 use super::structures as st;
 use super::things as t;
 
@@ -298,6 +300,14 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("armour", mk::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
     arch!("barrel", mk::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
     arch!("grill", t::grill, [Body], [Body => [0.12, 0.12, 0.13], Metal => [0.55, 0.55, 0.57], Top => [0.45, 0.45, 0.47]]),
+    arch!("wind_turbine", cr::wind_turbine, [Body], [Body => [0.93, 0.93, 0.92], Metal => [0.85, 0.85, 0.86]]),
+    arch!("throne", cr::throne, [Frame], [Frame => [0.80, 0.62, 0.22], Upholstery => [0.55, 0.08, 0.12]]),
+    arch!("loom", cr::loom, [Frame], [Frame => [0.55, 0.38, 0.22], Canvas => [0.93, 0.90, 0.82], Upholstery => [0.62, 0.20, 0.18], Metal => [0.50, 0.50, 0.52]]),
+    arch!("trampoline", pl::trampoline, [Cushion], [Cushion => [0.15, 0.40, 0.80], Interior => [0.06, 0.06, 0.07], Metal => [0.60, 0.61, 0.63]]),
+    arch!("merry_go_round", pl::merry_go_round, [Top], [Top => [0.85, 0.20, 0.15], Frame => [0.95, 0.78, 0.15], Metal => [0.20, 0.45, 0.75]]),
+    arch!("surfboard", pl::surfboard, [Body], [Body => [0.95, 0.94, 0.90], Frame => [0.10, 0.55, 0.70]]),
+    arch!("pool_float", pl::pool_float, [Body], [Body => [0.95, 0.40, 0.45], Cushion => WHITE]),
+    arch!("ramp", pl::ramp, [Body], [Body => [0.75, 0.62, 0.45], Frame => [0.50, 0.36, 0.22], Top => [0.55, 0.42, 0.28], Metal => [0.60, 0.61, 0.63]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

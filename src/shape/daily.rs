@@ -15,6 +15,43 @@ fn wheel(b: &mut Builder, centre: [f64; 3], r: f64, t: f64) {
     b.rod(Metal, c, hub, 0.35 * r);
 }
 
+/// An open tub (a pram's carrycot, a barrow's bin) centred at `y`: a shell from `z.0` to `z.1`
+/// of half width `r.0` and half depth `r.1` at the rim, with a flat bottom `foot` times the rim
+/// wide and a knee of the wall at (`knee.0` of the rim's radius, `knee.1` of the height); a
+/// dark lining `lining` times the rim wide just under the rim.
+fn tub(
+    b: &mut Builder,
+    y: f64,
+    z: (f64, f64),
+    r: (f64, f64),
+    foot: f64,
+    knee: (f64, f64),
+    lining: f64,
+) {
+    let ((z0, z1), (rw, rd)) = (z, r);
+    b.revolved(
+        Body,
+        0,
+        [0.0, y, z0],
+        IDENTITY,
+        rd / rw,
+        vec![
+            [0.0, 0.0],
+            [foot * rw, 0.0],
+            [knee.0 * rw, knee.1 * (z1 - z0)],
+            [rw, z1 - z0],
+        ],
+    );
+    b.frustum(
+        Interior,
+        [0.0, y, z1 - 0.01],
+        lining * rw,
+        lining * rd,
+        1.0,
+        0.008,
+    );
+}
+
 /// A pram (stroller): four small wheels, a deep carrycot with a folding hood at the back and a
 /// push handle rising behind it.
 pub fn pram(b: &mut Builder) {
@@ -55,27 +92,7 @@ pub fn pram(b: &mut Builder) {
     // The carrycot: a rounded tub, open on top, a dark lining inside.
     let (cw, cd) = (0.85 * hw, 0.6 * hd);
     let (z0, z1) = (0.42 * h, 0.72 * h);
-    b.revolved(
-        Body,
-        0,
-        [0.0, 0.05 * hd, z0],
-        IDENTITY,
-        cd / cw,
-        vec![
-            [0.0, 0.0],
-            [0.8 * cw, 0.0],
-            [cw, 0.35 * (z1 - z0)],
-            [cw, z1 - z0],
-        ],
-    );
-    b.frustum(
-        Interior,
-        [0.0, 0.05 * hd, z1 - 0.01],
-        0.93 * cw,
-        0.93 * cd,
-        1.0,
-        0.008,
-    );
+    tub(b, 0.05 * hd, (z0, z1), (cw, cd), 0.8, (1.0, 0.35), 0.93);
     // The hood: a quarter shell over the back half of the cot.
     b.ellipsoid_rot(
         Shade,
@@ -397,27 +414,7 @@ pub fn barrow(b: &mut Builder) {
         wheel(b, [0.0, hd - r, r], r, 0.08);
         let (z0, z1) = (0.4 * h, h);
         let (tw, td) = (0.95 * hw, 0.5 * hd);
-        b.revolved(
-            Body,
-            0,
-            [0.0, 0.05 * hd, z0],
-            IDENTITY,
-            td / tw,
-            vec![
-                [0.0, 0.0],
-                [0.7 * tw, 0.0],
-                [0.9 * tw, 0.6 * (z1 - z0)],
-                [tw, z1 - z0],
-            ],
-        );
-        b.frustum(
-            Interior,
-            [0.0, 0.05 * hd, z1 - 0.01],
-            0.96 * tw,
-            0.96 * td,
-            1.0,
-            0.008,
-        );
+        tub(b, 0.05 * hd, (z0, z1), (tw, td), 0.7, (0.9, 0.6), 0.96);
         for sx in [-1.0, 1.0] {
             let x = sx * 0.55 * hw;
             b.rod(Frame, [0.0, hd - r, r], [x, -hd, 0.55 * h], 0.018);

@@ -15,6 +15,7 @@
 mod appliances;
 mod archetypes;
 mod cases;
+mod crafts;
 mod daily;
 mod frames;
 pub mod functions;
@@ -24,6 +25,7 @@ mod market;
 pub mod materials;
 mod more;
 pub mod parts;
+mod play;
 mod structures;
 mod things;
 

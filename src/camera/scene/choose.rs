@@ -11,7 +11,9 @@
 //! rather than its back, with no object close in the foreground, and far (in place or direction)
 //! from the views already taken. Host-only.
 use super::views::FLAT;
-use super::views::{facing, frame_share, in_frame, view_stats, ViewStats, MAX_OBJECT_SHARE};
+use super::views::{
+    facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
+};
 use super::{camera, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
 use crate::camera::Camera;
 use crate::plan::spec::SceneType;
@@ -65,6 +67,75 @@ fn foreground(scene: &SceneBox) -> f64 {
     }
 }
 
+/// A nearer object covering more than this share of a larger one's silhouette hides it.
+const HIDES: f64 = 0.2;
+
+/// The volume of an object's box.
+fn volume(o: &ObjectBox) -> f64 {
+    o.size[0] * o.size[1] * o.size[2]
+}
+
+/// A view whose objects cover less of the frame than this is mostly bare wall, floor or
+/// ground, and loses score steeply.
+const BARE: f64 = 0.2;
+/// Half the width of a person standing to take a picture (metres): a render view's spot on the
+/// floor is at least this far from every object standing on the floor, so no view is taken
+/// from on top of a kitchen island or a bed.
+const BODY: f64 = 0.2;
+/// Objects whose bottom is at most this high stand on the floor (a wall-hung board does not).
+const ON_FLOOR: f64 = 0.3;
+
+/// True when a person can stand at `p`'s spot on the floor (see [`BODY`]).
+fn stands(scene: &SceneBox, p: [f64; 3]) -> bool {
+    !scene
+        .objects
+        .iter()
+        .any(|o| o.size[2] > FLAT && o.position[2] <= ON_FLOOR && footprint_distance(o, p) < BODY)
+}
+
+/// An object that several others face (the board pupils' desks face, the TV a sofa faces, the
+/// stage the audience faces) is the room's focal object: the one faced by the most, when at
+/// least [`FOCAL_MIN`] face it. Something faces an object when the object's centre lies within
+/// [`FOCAL_CONE_DEG`] of its front's direction.
+const FOCAL_MIN: usize = 3;
+const FOCAL_CONE_DEG: f64 = 35.0;
+/// The share of the views that see the focal object from its front, looking the way the room
+/// looks (3 of 8).
+const FOCAL_VIEWS: f64 = 0.375;
+
+/// The focal object of `scene` (see [`FOCAL_MIN`]) and which objects face it.
+pub(crate) fn focal(scene: &SceneBox) -> Option<(usize, Vec<bool>)> {
+    let cone = FOCAL_CONE_DEG.to_radians().cos();
+    let faces = |a: &ObjectBox, t: &ObjectBox| {
+        let (s, c) = a.yaw.to_radians().sin_cos();
+        let (dx, dy) = (t.position[0] - a.position[0], t.position[1] - a.position[1]);
+        let d = dx.hypot(dy);
+        d > 1e-6 && (-s * dx + c * dy) / d >= cone
+    };
+    let (best, n) = (0..scene.objects.len())
+        .filter(|t| scene.objects[*t].size[2] > FLAT)
+        .map(|t| {
+            let o = &scene.objects[t];
+            let n = scene
+                .objects
+                .iter()
+                .filter(|a| a.id != o.id && kind(a) != kind(o) && a.size[2] > FLAT && faces(a, o))
+                .count();
+            (t, n)
+        })
+        .max_by_key(|(t, n)| (*n, usize::MAX - t))?;
+    if n < FOCAL_MIN {
+        return None;
+    }
+    let t = &scene.objects[best];
+    let who = scene
+        .objects
+        .iter()
+        .map(|a| a.id != t.id && kind(a) != kind(t) && faces(a, t))
+        .collect();
+    Some((best, who))
+}
+
 /// Valid points along the loop `inset` inside the room's (ground's) edge.
 fn wall_loop(scene: &SceneBox, inset: f64, z: f64) -> Vec<[f64; 3]> {
     let [hx, hy] = scene.half();
@@ -87,7 +158,7 @@ fn wall_loop(scene: &SceneBox, inset: f64, z: f64) -> Vec<[f64; 3]> {
                 _ => [-ax, ay - s, z],
             }
         })
-        .filter(|p| valid_viewpoint(scene, *p))
+        .filter(|p| valid_viewpoint(scene, *p) && stands(scene, *p))
         .collect()
 }
 
@@ -106,6 +177,31 @@ struct Candidate {
     occluder: f64,
     /// Horizontal distance from the camera to the spot it looks at (metres).
     reach: f64,
+    /// The objects in frame (index, share of the frame it covers), in index order, and the sum
+    /// of their shares.
+    shares: Vec<(usize, f64)>,
+    total: f64,
+}
+
+/// How much two views show the same: over the objects, the shares of the frame both give an
+/// object (the smaller), summed, over the larger of the two views' sums; times how alike their
+/// directions are. 1 is the same picture; views of one group from opposite sides are 0.
+fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
+    let cos = a.dir[0] * b.dir[0] + a.dir[1] * b.dir[1];
+    if cos <= 0.0 {
+        return 0.0;
+    }
+    // Both lists are in index order: merge them.
+    let (mut both, mut j) = (0.0, 0);
+    for &(k, x) in &a.shares {
+        while j < b.shares.len() && b.shares[j].0 < k {
+            j += 1;
+        }
+        if let Some(&(_, y)) = b.shares.get(j).filter(|s| s.0 == k) {
+            both += x.min(y);
+        }
+    }
+    both / a.total.max(b.total).max(1e-9) * cos
 }
 
 /// Horizontal distance from `p` to an object's footprint (0 inside).
@@ -182,20 +278,51 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             // How close the nearest object in the frame stands: a foreground lampshade or chair
             // back hides the room even under the share limit.
             let (mut near, mut occluder) = (f64::INFINITY, 0.0f64);
+            let boxes: Vec<(f64, Option<[f64; 4]>)> =
+                scene.objects.iter().map(|o| screen_box(&cam, o)).collect();
+            let shares: Vec<f64> = boxes.iter().map(|b| b.0).collect();
+            let dists: Vec<f64> = scene
+                .objects
+                .iter()
+                .map(|o| footprint_distance(o, *p))
+                .collect();
             for (k, o) in scene.objects.iter().enumerate() {
-                let share = frame_share(&cam, o);
+                let share = shares[k];
                 if share <= 0.03 {
                     continue;
                 }
-                let dist = footprint_distance(o, *p);
+                let dist = dists[k];
                 near = near.min(dist);
-                // What is looked at hides nothing, unless it is the near one of a pair.
-                let aimed = looked_at.contains(&k) && dist >= 0.5 * d;
-                if !aimed && o.size[2] > FLAT && dist < d - 0.3 {
+                // What is looked at hides nothing, unless it is the near one of a pair, or it
+                // stands before a larger object and hides much of it (a bush before the
+                // fountain).
+                if o.size[2] <= FLAT || dist >= d - 0.3 {
+                    continue;
+                }
+                let hides_larger = || {
+                    boxes[k].1.is_some_and(|r| {
+                        scene.objects.iter().enumerate().any(|(j, q)| {
+                            j != k
+                                && shares[j] > 0.03
+                                && dists[j] > dist + 0.5
+                                && volume(q) > volume(o)
+                                && boxes[j].1.is_some_and(|f| hidden_share(&r, &f) > HIDES)
+                        })
+                    })
+                };
+                let aimed = looked_at.contains(&k) && dist >= 0.5 * d && !hides_larger();
+                if !aimed {
                     occluder = occluder.max(share);
                 }
             }
+            let total = shares.iter().sum();
             cands.push(Candidate {
+                shares: shares
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(_, s)| *s > 0.0)
+                    .collect(),
+                total,
                 occluder,
                 reach: d,
                 near,
@@ -224,6 +351,15 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
         .collect();
     let fg = foreground(scene);
     let diagonal = scene.room[0].hypot(scene.room[1]);
+    let focal = focal(scene);
+    // Views that look the way the room looks: the focal object in frame, seen from its front.
+    let looks_ahead = |c: &Candidate| {
+        focal
+            .as_ref()
+            .is_some_and(|(f, _)| c.shows[*f].is_some_and(|s| s > 0.5))
+    };
+    let focal_target = (FOCAL_VIEWS * count as f64).round() as usize;
+    let mut focal_taken = 0;
     let mut seen = vec![0usize; n];
     let mut taken: Vec<usize> = vec![];
     for _ in 0..count.min(cands.len()) {
@@ -232,10 +368,17 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
             if taken.contains(&i) {
                 continue;
             }
-            // Seen from its front an object counts whole; from a side 0.6, from behind 0.2.
+            // Seen from its front an object counts whole; from a side 0.6, from behind 0.2. What
+            // faces the focal object counts whole from behind too: seen looking where it looks.
             let fresh: f64 = (0..n)
                 .filter_map(|k| c.shows[k].map(|f| (k, f)))
-                .map(|(k, f)| weight[k] * (0.6 + 0.4 * f) / (1.0 + 2.0 * seen[k] as f64))
+                .map(|(k, f)| {
+                    let f = match &focal {
+                        Some((_, who)) if who[k] => f.abs(),
+                        _ => f,
+                    };
+                    weight[k] * (0.6 + 0.4 * f) / (1.0 + 2.0 * seen[k] as f64)
+                })
                 .sum();
             let near = taken
                 .iter()
@@ -244,8 +387,10 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                     let dp = (c.cam.position[0] - o.cam.position[0])
                         .hypot(c.cam.position[1] - o.cam.position[1]);
                     let cos = c.dir[0] * o.dir[0] + c.dir[1] * o.dir[1];
-                    // Close in place and direction: a near copy of a view already taken.
-                    (1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)
+                    // Close in place and direction, or showing the same things the same way:
+                    // a near copy of a view already taken.
+                    let alike = ((content_alike(c, o) - 0.4) / 0.6).max(0.0);
+                    ((1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)).max(alike)
                 })
                 .fold(0.0, f64::max);
             // The same subject again, or another of its kind: the views should show the place,
@@ -272,13 +417,22 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 - 3.0 * same as f64
                 - 1.0 * alike as f64
                 - 2.0 * (-c.stats.facing).max(0.0)
-                - 8.0 * (c.occluder - 0.05).max(0.0)
-                + 4.0 * (c.reach / diagonal).min(0.6);
+                - 16.0 * (c.occluder - 0.05).max(0.0)
+                - 20.0 * (BARE - c.stats.covered).max(0.0)
+                + 4.0 * (c.reach / diagonal).min(0.6)
+                + if focal_taken < focal_target && looks_ahead(c) {
+                    3.0
+                } else {
+                    0.0
+                };
             if best.is_none_or(|(_, s)| score > s) {
                 best = Some((i, score));
             }
         }
         let Some((i, _)) = best else { break };
+        if looks_ahead(&cands[i]) {
+            focal_taken += 1;
+        }
         for (s, shown) in seen.iter_mut().zip(&cands[i].shows) {
             if shown.is_some() {
                 *s += 1;

@@ -64,6 +64,40 @@ const NEAR: f64 = 0.2;
 /// The share of the frame `o`'s box covers from `cam`: its silhouette (the box clipped by the
 /// near plane, projected, convex hull) clipped to the image, over the image area.
 pub fn frame_share(cam: &Camera, o: &ObjectBox) -> f64 {
+    let (w, h) = (cam.width as f64, cam.height as f64);
+    polygon_area(&silhouette(cam, o)) / (w * h)
+}
+
+/// The share of the frame `o` covers (as [`frame_share`]) and the bounding rectangle of its
+/// silhouette in the image, `[x0, y0, x1, y1]` pixels (`None` out of frame).
+pub fn screen_box(cam: &Camera, o: &ObjectBox) -> (f64, Option<[f64; 4]>) {
+    let (w, h) = (cam.width as f64, cam.height as f64);
+    let s = silhouette(cam, o);
+    let rect = (s.len() >= 3).then(|| {
+        s.iter()
+            .fold([f64::MAX, f64::MAX, f64::MIN, f64::MIN], |r, p| {
+                [
+                    r[0].min(p[0]),
+                    r[1].min(p[1]),
+                    r[2].max(p[0]),
+                    r[3].max(p[1]),
+                ]
+            })
+    });
+    (polygon_area(&s) / (w * h), rect)
+}
+
+/// The share of rectangle `far` that rectangle `near` covers (see [`screen_box`]).
+pub fn hidden_share(near: &[f64; 4], far: &[f64; 4]) -> f64 {
+    let (a, b) = (near, far);
+    let overlap =
+        (a[2].min(b[2]) - a[0].max(b[0])).max(0.0) * (a[3].min(b[3]) - a[1].max(b[1])).max(0.0);
+    overlap / ((b[2] - b[0]) * (b[3] - b[1])).max(1e-9)
+}
+
+/// `o`'s box as the image sees it: clipped by the near plane, projected, its convex hull
+/// clipped to the image (pixels).
+fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
     let pc = corners(o).map(|p| to_cam(cam, p));
     let mut pts = vec![];
     for (i, a) in pc.iter().enumerate() {
@@ -93,8 +127,7 @@ pub fn frame_share(cam: &Camera, o: &ObjectBox) -> f64 {
         })
         .collect();
     let hull = crate::util::convex_hull(&proj);
-    let clipped = clip_to_rect(&hull, w, h);
-    polygon_area(&clipped) / (w * h)
+    clip_to_rect(&hull, w, h)
 }
 
 /// True when `o`'s box centre is in front of `cam` and inside its frame.
