@@ -23,6 +23,7 @@ mod gather;
 pub mod openings;
 mod poses;
 pub mod rows;
+mod tables;
 use fit::join_names;
 pub use fit::smallest_room;
 use std::collections::{BTreeMap, BTreeSet, VecDeque};

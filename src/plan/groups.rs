@@ -178,12 +178,36 @@ pub fn ring_centre(category: &str) -> bool {
 /// table category the scene holds (a top table and the round tables of a reception); a
 /// sentence's "around" a ring centre (tents around a campfire) becomes a ring.
 pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
+    apply_named(spec, keep, &BTreeSet::new());
+}
+
+/// [`apply`], binding seats first to the tables and counters the sentence `named` (the six
+/// tables of "six tables with four chairs around each" take the chairs, not a classroom's
+/// default desks), then as the rules' order says.
+pub fn apply_named(
+    spec: &mut SceneSpec,
+    keep: &BTreeSet<(String, String)>,
+    named: &BTreeSet<String>,
+) {
+    grow_hosts(spec);
     let count = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
     let mut added: Vec<Relation> = vec![];
     let mut grouped: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut used: BTreeMap<String, u32> = BTreeMap::new();
-    for rule in rules() {
-        let present = rule.present(spec);
+    let mut passes: Vec<(&Rule, Vec<String>)> = vec![];
+    for only_named in [true, false] {
+        for rule in rules() {
+            let mut present = rule.present(spec);
+            if only_named {
+                // seats by size: the tables and counters named
+                present.retain(|c| rule.per_object.is_none() && named.contains(c));
+            }
+            if !present.is_empty() {
+                passes.push((rule, present));
+            }
+        }
+    }
+    for (rule, present) in passes {
         // the object instances, the first category's first, with what each takes
         let seats = rule.per_object.is_none();
         let objects: Vec<(String, u32)> = present
@@ -204,6 +228,28 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
                 if o.number > 0 && names(n, c) && !subjects.iter().any(|s| s.0 == *c) {
                     subjects.push((c.clone(), o.number));
                 }
+            }
+        }
+        // fewer flankers than beds (one nightstand for twin beds): each stands between two
+        if rule.relation == RelationKind::Flank {
+            let free: Vec<String> = subjects
+                .iter()
+                .flat_map(|(c, n)| (1..=*n).map(move |k| format!("{c}{k}")))
+                .filter(|sid| !grouped.contains_key(sid) && !keep.iter().any(|(s, _)| s == sid))
+                .collect();
+            if free.len() < objects.len() && objects.len() >= 2 {
+                for (sid, pair) in free.iter().zip(objects.chunks(2)) {
+                    for (oid, _) in pair {
+                        *used.entry(oid.clone()).or_default() += 1;
+                        added.push(Relation {
+                            subject: sid.clone(),
+                            relation: rule.relation,
+                            object: oid.clone(),
+                        });
+                    }
+                    grouped.insert(sid.clone(), present.clone());
+                }
+                continue;
             }
         }
         for (subj, n) in subjects {
@@ -258,12 +304,105 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         !(replaced(&r.subject, &r.object) || replaced(&r.object, &r.subject) || pulls(&r.subject))
     });
     spec.relations.extend(added);
+    // a seat the sentence puts in front of a desk-like thing it goes with ("three consoles,
+    // each with a seat in front of it") sits at it, when no other seat does
+    let at = |spec: &SceneSpec, o: &str| {
+        spec.relations
+            .iter()
+            .any(|r| r.relation == RelationKind::At && r.object == o)
+    };
+    for k in 0..spec.relations.len() {
+        let r = &spec.relations[k];
+        if r.relation == RelationKind::Front
+            && relation_between(&base(&r.subject), &base(&r.object)) == Some(RelationKind::At)
+            && !at(spec, &r.object)
+        {
+            spec.relations[k].relation = RelationKind::At;
+        }
+    }
     for r in spec.relations.iter_mut() {
         if r.relation == RelationKind::Around && ring_centre(&base(&r.object)) {
             r.relation = RelationKind::Circle;
         }
     }
     shelter_group(spec);
+    grow_supports(spec);
+}
+
+/// The most a host or support grows, as a multiple of its own width.
+const MOST_GROWTH: f64 = 3.0;
+
+/// Tables and counters grow to seat what the scene asks of them (ten round tables with eight
+/// chairs each, eight bar stools at one bar): a seats rule's subjects spread over its hosts,
+/// and a host that seats fewer than its share grows along its width (a square table stays
+/// square), by 0.1 m steps up to [`MOST_GROWTH`] times its width.
+fn grow_hosts(spec: &mut SceneSpec) {
+    for rule in rules().iter().filter(|r| r.per_object.is_none()) {
+        let present = rule.present(spec);
+        let hosts: u32 = present.iter().map(|c| spec.objects[c].number).sum();
+        let seats: u32 = spec
+            .objects
+            .iter()
+            .filter(|(c, o)| {
+                o.number > 0
+                    && group_of(spec, c)
+                        .is_some_and(|(rel, obj)| rel == rule.relation && present.contains(&obj))
+            })
+            .map(|(_, o)| o.number)
+            .sum();
+        if hosts == 0 {
+            continue;
+        }
+        let share = seats.div_ceil(hosts);
+        for c in &present {
+            let Some(o) = spec.objects.get_mut(c) else {
+                continue;
+            };
+            let [w, d, _] = o.size;
+            let square = (w - d).abs() < 0.15;
+            let mut size = o.size;
+            while capacity(rule, size) < share && size[0] < MOST_GROWTH * w {
+                size[0] += 0.1;
+                if square {
+                    size[1] = size[0];
+                }
+            }
+            if capacity(rule, size) >= share {
+                o.size = size.map(|v| (v * 100.0).round() / 100.0);
+            }
+        }
+    }
+}
+
+/// A support grows to hold what stands on it side by side (ten computers on three benches):
+/// the widest load of its instances, each thing's width and 5 cm between and at the ends, up
+/// to [`MOST_GROWTH`] times its width. A single thing never grows its support.
+fn grow_supports(spec: &mut SceneSpec) {
+    let base = |id: &str| {
+        id.trim_end_matches(|c: char| c.is_ascii_digit())
+            .to_string()
+    };
+    let mut load: BTreeMap<String, (f64, u32)> = BTreeMap::new();
+    for r in spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Over)
+    {
+        let Some(o) = spec.objects.get(&base(&r.subject)) else {
+            continue;
+        };
+        let e = load.entry(r.object.clone()).or_insert((0.05, 0));
+        e.0 += o.size[0] + 0.05;
+        e.1 += 1;
+    }
+    for (id, (width, n)) in load {
+        let Some(o) = spec.objects.get_mut(&base(&id)) else {
+            continue;
+        };
+        if n >= 2 && width > o.size[0] {
+            o.size[0] = ((width * 10.0).ceil() / 10.0).min(MOST_GROWTH * o.size[0]);
+        }
+    }
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)

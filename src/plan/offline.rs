@@ -1125,7 +1125,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
             }
         }
     }
-    super::groups::apply(&mut spec, &keep);
+    super::groups::apply_named(&mut spec, &keep, &named);
 
     // Room: as stated, else chosen to fit (scaled by "small" / "large").
     let height: f64 = match scene_type {

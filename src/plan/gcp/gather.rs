@@ -143,7 +143,7 @@ impl Problem {
         // A table keeps room on two of its sides for its seats and the people who sit down;
         // nothing placed later takes it away.
         if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
-            let want = self.seats_of(i).min(2);
+            let want = self.sides_wanted(i);
             if want > 0 && self.free_sides(b, i, None, boxes) < want {
                 score -= ACCESS_WEIGHT;
             }
@@ -151,7 +151,7 @@ impl Problem {
             for (k, bk) in boxes.iter().enumerate() {
                 let Some((bk, ak)) = bk else { continue };
                 let near = aabb_gap(ak, &ab);
-                let want = self.seats_of(k).min(2);
+                let want = self.sides_wanted(k);
                 if near > TABLE_ROOM || k == i || want == 0 || self.linked(i, k) {
                     continue;
                 }
@@ -169,12 +169,23 @@ impl Problem {
         self.rels[i].iter().any(|r| r.1 == j)
     }
 
-    /// How many seats stand AROUND instance `t`.
-    fn seats_of(&self, t: usize) -> usize {
-        self.rels[t]
+    /// How many sides of table `t` keep room for its seats: those its AROUND seats take (four
+    /// at a small table for four, the long pair at a long one), 0 when none.
+    fn sides_wanted(&self, t: usize) -> usize {
+        let seats: Vec<usize> = self.rels[t]
             .iter()
             .filter(|r| !r.2 && r.0 == RelationKind::Around)
-            .count()
+            .map(|r| r.1)
+            .collect();
+        let wide = seats
+            .iter()
+            .map(|&s| self.inst[s].size[0])
+            .fold(0.0, f64::max);
+        let [w, d, _] = self.inst[t].size;
+        match super::tables::side_seats([w, d], wide, seats.len()) {
+            Some((count, _)) => count.iter().filter(|&&c| c > 0).count(),
+            None => seats.len().min(2),
+        }
     }
 
     /// How many sides of table box `b` (instance `t`) have [`TABLE_ROOM`] free beyond them:

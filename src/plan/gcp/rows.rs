@@ -23,7 +23,7 @@ const BEHIND: f64 = 0.9;
 /// stands behind a seat to sit down (0.9 m, the usual circulation behind seated rows; a 0.25 m
 /// radius walker standing 0.15 m behind a chair drawn 0.1 m off its desk, on a navigation mesh
 /// of 5 cm cells, needs about 0.75 m).
-const PASSAGE: f64 = 0.9;
+pub(super) const PASSAGE: f64 = 0.9;
 /// The gap a seat keeps from its desk.
 const SEAT_ROOM: f64 = 0.05;
 /// The centre aisle of rows of four or more.
@@ -248,7 +248,8 @@ pub fn room_for_rows(spec: &SceneSpec) -> [f64; 2] {
 
 impl Problem {
     /// Poses for every instance of every category in rows that `placed` leaves free, written
-    /// into `placed` (the block of a category with an instance already placed is left alone).
+    /// into `placed` (the block of a category with an instance already placed is left alone),
+    /// then the floors of tables with their seats (`tables.rs`).
     /// The front is the wall the block's rows face: tried in the order that leaves most room.
     pub(super) fn place_rows(&self, spec: &SceneSpec, placed: &mut [Option<Pose>]) {
         for cat in spec.objects.keys() {
@@ -270,6 +271,7 @@ impl Problem {
                 }
             }
         }
+        self.place_tables(spec, placed);
     }
 
     /// Stands what the rows face (instance `t`) against the front wall, centred before the
