@@ -23,6 +23,7 @@ mod gather;
 pub mod openings;
 mod poses;
 pub mod rows;
+mod spacing;
 mod tables;
 use fit::join_names;
 pub use fit::smallest_room;

@@ -3,6 +3,7 @@
 //! the big ones (tents) beyond the small ones (seats); and a seat pulled up to its table, desk or
 //! counter keeps a spot free beside or behind it where a person stands to sit down, which nothing
 //! placed later takes away (a chair wedged between a wall and a planter is no seat).
+use super::spacing::{HEAD_HEIGHT, SPOT, TABLE_ROOM};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{overlap_depth, Box2, CIRCLE_GAP};
 use crate::plan::spec::RelationKind;
@@ -11,16 +12,10 @@ use std::f64::consts::TAU;
 /// Footprint area (m²) from which a ring member is big (a tent, not a seat): it stands in the
 /// outer ring.
 const BIG_MEMBER: f64 = 1.5;
-/// Depth of the standing spot beside a seat (m): a person (0.6 m across) and a little room to turn.
-const SPOT: f64 = 0.75;
 /// Weight of a ring member standing closer to its neighbours than an even spread would.
 const SPREAD_WEIGHT: f64 = 6.0;
 /// Weight of a seat left with no standing spot.
 const ACCESS_WEIGHT: f64 = 8.0;
-/// Depth beyond a table's side for a seat and the person who sits down (m).
-const TABLE_ROOM: f64 = 1.2;
-/// Things whose bottom is higher than this leave a standing spot free (m).
-const HEAD_HEIGHT: f64 = 1.9;
 
 impl Problem {
     /// Gaps (m) of the ring round a centre for a member of footprint `s`: seats close in, big

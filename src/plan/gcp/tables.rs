@@ -4,21 +4,77 @@
 //! clear of the walls' band, the doors' zones, what is placed and what stands in the middle (a
 //! dance floor). Each table's seats are drawn up to its sides, the long sides first, spread
 //! evenly along each side and turned to it. A floor that does not fit is left to the search.
-use super::rows::PASSAGE;
+use super::spacing::{PASSAGE, SEAT_GAP};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec};
 
 /// Fewest tables of one category that make a floor of tables.
 const MIN_TABLES: usize = 3;
-/// Gap between a seat and its table's side (m): the group poses' closest.
-const SEAT_GAP: f64 = 0.05;
 /// Free band kept along the walls (m), widest first: things against a wall and a walkway, then
 /// a walkway, then a tight room's last try.
 const WALL_BANDS: [f64; 3] = [1.0, 0.7, 0.35];
 
 /// One table's seats: (instance, side, position along the side).
 type Seating = Vec<(usize, usize, f64)>;
+
+/// The smallest [w, d] whose floor holds the lattice of every floor of tables of `spec` (its
+/// cells in a near-square block, those a CENTER thing takes with them, the walls' middle band),
+/// [0, 0] when there is none.
+pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
+    let base = |id: &str| {
+        id.trim_end_matches(|c: char| c.is_ascii_digit())
+            .to_string()
+    };
+    let mut need = [0.0f64, 0.0f64];
+    for (cat, o) in &spec.objects {
+        let n = o.number as usize;
+        if n < MIN_TABLES || o.rows > 0 {
+            continue;
+        }
+        let seats: Vec<&str> = spec
+            .relations
+            .iter()
+            .filter(|r| r.relation == RelationKind::Around && base(&r.object) == *cat)
+            .map(|r| r.subject.as_str())
+            .collect();
+        if seats.is_empty() {
+            continue;
+        }
+        let deep = seats
+            .iter()
+            .filter_map(|s| spec.objects.get(&base(s)))
+            .map(|s| s.size[1])
+            .fold(0.0, f64::max);
+        let pitch = [0, 1].map(|k| o.size[k] + 2.0 * (deep + SEAT_GAP) + PASSAGE);
+        // cells a lone CENTER thing (a dance floor) and its passage take
+        let middle: usize = spec
+            .objects
+            .iter()
+            .filter(|(c, _)| {
+                spec.anchors.get(&format!("{c}1")) == Some(&Anchor::Center)
+                    && !spec
+                        .relations
+                        .iter()
+                        .any(|r| base(&r.subject) == **c || base(&r.object) == **c)
+            })
+            .map(|(_, m)| {
+                (0..2)
+                    .map(|k| ((m.size[k] + 2.0 * PASSAGE) / pitch[k]).ceil() as usize)
+                    .product::<usize>()
+            })
+            .sum();
+        let cells = n + middle;
+        let nx = (cells as f64).sqrt().ceil() as usize;
+        let ny = cells.div_ceil(nx);
+        let band = 2.0 * WALL_BANDS[1] - PASSAGE;
+        need = [
+            need[0].max(nx as f64 * pitch[0] + band),
+            need[1].max(ny as f64 * pitch[1] + band),
+        ];
+    }
+    need
+}
 
 /// How `n` seats `wide` wide spread over the sides of a table `size` ([width, depth]): the
 /// seats on each side and each seat's side in turn (`None` when there are none, or more than
@@ -296,7 +352,7 @@ mod tests {
             "table":{{"number":{tables},"size":{size:?},"description":"d"}},
             "chair":{{"number":{},"size":[0.45,0.5,0.9],"description":"d"}},
             "dance floor":{{"number":1,"size":[4.0,4.0,0.02],"description":"d"}}}},
-            "anchors":{{"dance floor":"CENTER"}},
+            "anchors":{{"dance floor1":"CENTER"}},
             "relations":[{}]}}"#,
             tables * chairs,
             rels.join(",")
@@ -325,9 +381,11 @@ mod tests {
                 .iter()
                 .find(|o| o.id == "dance floor1")
                 .expect("dance floor");
+            // CENTER: within a quarter of the room's shorter side of its centre
             let r = floor.position[0].hypot(floor.position[1]);
+            let most = 0.25 * l.room.size[0].min(l.room.size[1]);
             assert!(
-                r < 0.5,
+                r <= most,
                 "{tables} tables: the dance floor is {r:.2} m off the middle"
             );
         }
