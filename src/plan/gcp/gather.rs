@@ -167,19 +167,9 @@ impl Problem {
     /// How many sides of table `t` keep room for its seats: those its AROUND seats take (four
     /// at a small table for four, the long pair at a long one), 0 when none.
     fn sides_wanted(&self, t: usize) -> usize {
-        let seats: Vec<usize> = self.rels[t]
-            .iter()
-            .filter(|r| !r.2 && r.0 == RelationKind::Around)
-            .map(|r| r.1)
-            .collect();
-        let wide = seats
-            .iter()
-            .map(|&s| self.inst[s].size[0])
-            .fold(0.0, f64::max);
-        let [w, d, _] = self.inst[t].size;
-        match super::tables::side_seats([w, d], wide, seats.len()) {
-            Some((count, _)) => count.iter().filter(|&&c| c > 0).count(),
-            None => seats.len().min(2),
+        match self.sides_of(t) {
+            (_, Some((count, _))) => count.iter().filter(|&&c| c > 0).count(),
+            (seats, _) => seats.len().min(2),
         }
     }
 

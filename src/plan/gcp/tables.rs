@@ -17,6 +17,8 @@ const WALL_BANDS: [f64; 3] = [1.0, 0.7, 0.35];
 
 /// One table's seats: (instance, side, position along the side).
 type Seating = Vec<(usize, usize, f64)>;
+/// Seats spread over a table's four sides: how many on each, and each seat's side in turn.
+type SideSeats = ([usize; 4], Vec<usize>);
 
 /// The smallest [w, d] whose floor holds the lattice of every floor of tables of `spec` (its
 /// cells in a near-square block, those a CENTER thing takes with them, the walls' middle band),
@@ -81,7 +83,7 @@ pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
 /// the sides take). Sides: 0 front (+y), 1 back, 2 right (+x), 3 left; the long pair first,
 /// each pair filled in turn up to what a side takes (a seat's width and 0.1 m); a square table's
 /// four sides in turn.
-pub(super) fn side_seats(size: [f64; 2], wide: f64, n: usize) -> Option<([usize; 4], Vec<usize>)> {
+fn side_seats(size: [f64; 2], wide: f64, n: usize) -> Option<SideSeats> {
     let [w, d] = size;
     if n == 0 {
         return None;
@@ -180,9 +182,9 @@ impl Problem {
             })
     }
 
-    /// The seats AROUND table `t` over its sides (`None` when it has none, or more than its
-    /// sides take), as [`side_seats`] spreads them.
-    fn seating(&self, t: usize) -> Option<Seating> {
+    /// The seats AROUND table `t` and how [`side_seats`] spreads them over its sides (`None`
+    /// when it has none, or more than its sides take), each seat's side in turn.
+    pub(super) fn sides_of(&self, t: usize) -> (Vec<usize>, Option<SideSeats>) {
         let seats: Vec<usize> = self.rels[t]
             .iter()
             .filter(|r| r.0 == RelationKind::Around && !r.2)
@@ -193,8 +195,17 @@ impl Problem {
             .map(|&s| self.inst[s].size[0])
             .fold(0.0, f64::max);
         let [w, d, _] = self.inst[t].size;
+        let spread = side_seats([w, d], wide, seats.len());
+        (seats, spread)
+    }
+
+    /// The seats AROUND table `t` over its sides (`None` when it has none, or more than its
+    /// sides take), as [`side_seats`] spreads them.
+    fn seating(&self, t: usize) -> Option<Seating> {
+        let (seats, spread) = self.sides_of(t);
+        let (count, order) = spread?;
+        let [w, d, _] = self.inst[t].size;
         let len = [w, w, d, d];
-        let (count, order) = side_seats([w, d], wide, seats.len())?;
         let mut nth = [0usize; 4];
         Some(
             seats
