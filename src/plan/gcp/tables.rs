@@ -48,7 +48,24 @@ pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
             .filter_map(|s| spec.objects.get(&base(s)))
             .map(|s| s.size[1])
             .fold(0.0, f64::max);
-        let pitch = [0, 1].map(|k| o.size[k] + 2.0 * (deep + SEAT_GAP) + PASSAGE);
+        let wide = seats
+            .iter()
+            .filter_map(|s| spec.objects.get(&base(s)))
+            .map(|s| s.size[0])
+            .fold(0.0, f64::max);
+        let Some((count, _)) = side_seats([o.size[0], o.size[1]], wide, seats.len().div_ceil(n))
+        else {
+            continue;
+        };
+        // a seat's depth beyond the sides that have seats: the x pair (2, 3), the y pair (0, 1)
+        let ring = [count[2] + count[3], count[0] + count[1]].map(|k| {
+            if k > 0 {
+                deep + SEAT_GAP
+            } else {
+                0.0
+            }
+        });
+        let pitch = [0, 1].map(|k| o.size[k] + 2.0 * ring[k] + PASSAGE);
         // cells a lone CENTER thing (a dance floor) and its passage take
         let middle: usize = spec
             .objects
@@ -234,7 +251,15 @@ impl Problem {
             .flatten()
             .map(|&(i, _, _)| self.inst[i].size[1])
             .fold(0.0, f64::max);
-        let ring = deep + SEAT_GAP;
+        // seats at the left or right (x) and at the front or back (y) of some table
+        let seated = |sides: [usize; 2]| {
+            seatings
+                .iter()
+                .flatten()
+                .any(|&(_, side, _)| sides.contains(&side))
+        };
+        let ring =
+            [seated([2, 3]), seated([0, 1])].map(|on| if on { deep + SEAT_GAP } else { 0.0 });
         let others: Vec<Box2> = placed
             .iter()
             .enumerate()
@@ -252,12 +277,12 @@ impl Problem {
             // every turn and lattice phase; the one whose tables stand nearest the middle
             let mut best: Option<(f64, f64, Vec<[f64; 2]>)> = None;
             for yaw in [0.0, 90.0] {
-                let [fx, fy] = if yaw == 0.0 {
-                    [s[0], s[1]]
+                let ([fx, fy], [rx, ry]) = if yaw == 0.0 {
+                    ([s[0], s[1]], ring)
                 } else {
-                    [s[1], s[0]]
+                    ([s[1], s[0]], [ring[1], ring[0]])
                 };
-                let cell = [fx + 2.0 * ring, fy + 2.0 * ring];
+                let cell = [fx + 2.0 * rx, fy + 2.0 * ry];
                 let pitch = [cell[0] + PASSAGE, cell[1] + PASSAGE];
                 let xs = lattice(w, band, cell[0], pitch[0]);
                 let ys = lattice(d, band, cell[1], pitch[1]);
