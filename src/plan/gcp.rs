@@ -21,6 +21,8 @@ mod problem;
 mod room;
 pub mod rows;
 mod score;
+mod spacing;
+mod tables;
 use attempt::attempt_layout;
 use fit::join_names;
 pub use fit::smallest_room;

@@ -9,6 +9,9 @@ use super::spec::{Relation, RelationKind, SceneSpec};
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 
+mod grow;
+use grow::{grow_hosts, grow_supports};
+
 /// One rule of kb/groups.txt: every instance of a subject category relates to an instance of
 /// the first object category present (seats: of every present one), spread over the object
 /// instances by what one takes.
@@ -178,12 +181,36 @@ pub fn ring_centre(category: &str) -> bool {
 /// table category the scene holds (a top table and the round tables of a reception); a
 /// sentence's "around" a ring centre (tents around a campfire) becomes a ring.
 pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
+    apply_named(spec, keep, &BTreeSet::new());
+}
+
+/// [`apply`], binding seats first to the tables and counters the sentence `named` (the six
+/// tables of "six tables with four chairs around each" take the chairs, not a classroom's
+/// default desks), then as the rules' order says.
+pub fn apply_named(
+    spec: &mut SceneSpec,
+    keep: &BTreeSet<(String, String)>,
+    named: &BTreeSet<String>,
+) {
+    grow_hosts(spec);
     let count = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
     let mut added: Vec<Relation> = vec![];
     let mut grouped: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut used: BTreeMap<String, u32> = BTreeMap::new();
-    for rule in rules() {
-        let present = rule.present(spec);
+    let mut passes: Vec<(&Rule, Vec<String>)> = vec![];
+    for only_named in [true, false] {
+        for rule in rules() {
+            let mut present = rule.present(spec);
+            if only_named {
+                // seats by size: the tables and counters named
+                present.retain(|c| rule.per_object.is_none() && named.contains(c));
+            }
+            if !present.is_empty() {
+                passes.push((rule, present));
+            }
+        }
+    }
+    for (rule, present) in passes {
         // the object instances, the first category's first, with what each takes
         let seats = rule.per_object.is_none();
         let objects: Vec<(String, u32)> = present
@@ -204,6 +231,28 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
                 if o.number > 0 && names(n, c) && !subjects.iter().any(|s| s.0 == *c) {
                     subjects.push((c.clone(), o.number));
                 }
+            }
+        }
+        // fewer flankers than beds (one nightstand for twin beds): each stands between two
+        if rule.relation == RelationKind::Flank {
+            let free: Vec<String> = subjects
+                .iter()
+                .flat_map(|(c, n)| (1..=*n).map(move |k| format!("{c}{k}")))
+                .filter(|sid| !grouped.contains_key(sid) && !keep.iter().any(|(s, _)| s == sid))
+                .collect();
+            if free.len() < objects.len() && objects.len() >= 2 {
+                for (sid, pair) in free.iter().zip(objects.chunks(2)) {
+                    for (oid, _) in pair {
+                        *used.entry(oid.clone()).or_default() += 1;
+                        added.push(Relation {
+                            subject: sid.clone(),
+                            relation: rule.relation,
+                            object: oid.clone(),
+                        });
+                    }
+                    grouped.insert(sid.clone(), present.clone());
+                }
+                continue;
             }
         }
         for (subj, n) in subjects {
@@ -258,12 +307,29 @@ pub fn apply(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         !(replaced(&r.subject, &r.object) || replaced(&r.object, &r.subject) || pulls(&r.subject))
     });
     spec.relations.extend(added);
+    // a seat the sentence puts in front of a desk-like thing it goes with ("three consoles,
+    // each with a seat in front of it") sits at it, when no other seat does
+    let at = |spec: &SceneSpec, o: &str| {
+        spec.relations
+            .iter()
+            .any(|r| r.relation == RelationKind::At && r.object == o)
+    };
+    for k in 0..spec.relations.len() {
+        let r = &spec.relations[k];
+        if r.relation == RelationKind::Front
+            && relation_between(&base(&r.subject), &base(&r.object)) == Some(RelationKind::At)
+            && !at(spec, &r.object)
+        {
+            spec.relations[k].relation = RelationKind::At;
+        }
+    }
     for r in spec.relations.iter_mut() {
         if r.relation == RelationKind::Around && ring_centre(&base(&r.object)) {
             r.relation = RelationKind::Circle;
         }
     }
     shelter_group(spec);
+    grow_supports(spec);
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)
@@ -436,6 +502,150 @@ mod tests {
         apply(&mut s, &BTreeSet::new());
         assert!(
             has(&s, "bench2", RelationKind::Around, "dining table1"),
+            "{:?}",
+            s.relations
+        );
+    }
+
+    #[test]
+    fn one_nightstand_for_twin_beds_stands_between_them_and_two_beds_keep_their_own() {
+        let beds = |nightstands: u32| {
+            let mut s = spec(
+                &[
+                    ("single bed", 2, [1.0, 2.0, 0.9]),
+                    ("nightstand", nightstands, [0.5, 0.4, 0.55]),
+                ],
+                &[],
+            );
+            apply(&mut s, &BTreeSet::new());
+            s
+        };
+        let s = beds(1);
+        for bed in ["single bed1", "single bed2"] {
+            assert!(
+                has(&s, "nightstand1", RelationKind::Flank, bed),
+                "{bed}: {:?}",
+                s.relations
+            );
+        }
+        let s = beds(2);
+        assert!(
+            has(&s, "nightstand1", RelationKind::Flank, "single bed1")
+                && has(&s, "nightstand2", RelationKind::Flank, "single bed2"),
+            "{:?}",
+            s.relations
+        );
+        assert_eq!(s.relations.len(), 2, "{:?}", s.relations);
+    }
+
+    #[test]
+    fn hosts_and_supports_grow_to_what_they_hold_and_no_further() {
+        // eight stools at one bar: the bar grows to seat them
+        let mut s = spec(
+            &[
+                ("bar counter", 1, [3.0, 0.7, 1.1]),
+                ("bar stool", 8, [0.4, 0.4, 0.75]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        let bar = s.objects["bar counter"].size;
+        assert!(counter_seats(bar) >= 8 && bar[0] < 4.5, "{bar:?}");
+        // a bar that seats them already keeps its size
+        let mut s = spec(
+            &[
+                ("bar counter", 1, [3.0, 0.7, 1.1]),
+                ("bar stool", 4, [0.4, 0.4, 0.75]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        assert_eq!(s.objects["bar counter"].size, [3.0, 0.7, 1.1]);
+        // ten round tables for eighty chairs: each seats eight and stays square
+        let mut s = spec(
+            &[
+                ("round table", 10, [1.0, 1.0, 0.75]),
+                ("dining chair", 80, [0.45, 0.5, 0.9]),
+            ],
+            &[],
+        );
+        apply(&mut s, &BTreeSet::new());
+        let t = s.objects["round table"].size;
+        assert!(table_seats(t) >= 8 && t[0] == t[1], "{t:?}");
+        // four computers on a 1.2 m bench: the bench grows; one monitor on a desk grows nothing
+        let mut s = spec(
+            &[
+                ("science bench", 1, [1.2, 0.8, 0.9]),
+                ("computer", 4, [0.6, 0.25, 0.5]),
+            ],
+            &(1..=4)
+                .map(|k| {
+                    (
+                        ["computer1", "computer2", "computer3", "computer4"][k - 1],
+                        "OVER",
+                        "science bench1",
+                    )
+                })
+                .collect::<Vec<_>>(),
+        );
+        apply(&mut s, &BTreeSet::new());
+        let b = s.objects["science bench"].size;
+        assert!(b[0] >= 4.0 * 0.6 && b[0] <= 3.6 + 1e-9, "{b:?}");
+        let mut s = spec(
+            &[("tv stand", 1, [1.2, 0.4, 0.5]), ("tv", 1, [1.4, 0.1, 0.8])],
+            &[("tv1", "OVER", "tv stand1")],
+        );
+        apply(&mut s, &BTreeSet::new());
+        assert_eq!(s.objects["tv stand"].size[0], 1.2);
+    }
+
+    #[test]
+    fn seats_bind_to_the_tables_named_before_default_desks() {
+        let objects = [
+            ("dining chair", 8, [0.45, 0.5, 0.9]),
+            ("dining table", 2, [1.8, 0.9, 0.75]),
+            ("school desk", 8, [0.7, 0.5, 0.75]),
+        ];
+        let mut s = spec(&objects, &[]);
+        let named: BTreeSet<String> = ["dining chair", "dining table"].map(String::from).into();
+        apply_named(&mut s, &BTreeSet::new(), &named);
+        let at_tables = s
+            .relations
+            .iter()
+            .filter(|r| r.relation == RelationKind::Around && r.object.starts_with("dining table"))
+            .count();
+        assert_eq!(at_tables, 8, "{:?}", s.relations);
+        // nothing named: the rules' order (a classroom's pupils at their desks)
+        let mut s = spec(&objects, &[]);
+        apply(&mut s, &BTreeSet::new());
+        assert!(
+            has(&s, "dining chair1", RelationKind::AtBack, "school desk1"),
+            "{:?}",
+            s.relations
+        );
+    }
+
+    #[test]
+    fn a_seat_in_front_of_a_console_sits_at_it() {
+        let mut s = spec(
+            &[
+                ("spaceship console", 2, [1.6, 0.8, 1.1]),
+                ("office chair", 2, [0.65, 0.65, 1.1]),
+            ],
+            &[
+                ("office chair1", "FRONT", "spaceship console1"),
+                ("office chair2", "FRONT", "spaceship console2"),
+            ],
+        );
+        let keep: BTreeSet<(String, String)> = s
+            .relations
+            .iter()
+            .map(|r| (r.subject.clone(), r.object.clone()))
+            .collect();
+        apply(&mut s, &keep);
+        assert!(
+            has(&s, "office chair1", RelationKind::At, "spaceship console1")
+                && has(&s, "office chair2", RelationKind::At, "spaceship console2"),
             "{:?}",
             s.relations
         );

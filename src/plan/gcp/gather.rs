@@ -3,6 +3,7 @@
 //! the big ones (tents) beyond the small ones (seats); and a seat pulled up to its table, desk or
 //! counter keeps a spot free beside or behind it where a person stands to sit down, which nothing
 //! placed later takes away (a chair wedged between a wall and a planter is no seat).
+use super::spacing::{HEAD_HEIGHT, SPOT, TABLE_ROOM};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{overlap_depth, Box2, CIRCLE_GAP};
 use crate::plan::spec::RelationKind;
@@ -11,16 +12,10 @@ use std::f64::consts::TAU;
 /// Footprint area (m²) from which a ring member is big (a tent, not a seat): it stands in the
 /// outer ring.
 const BIG_MEMBER: f64 = 1.5;
-/// Depth of the standing spot beside a seat (m): a person (0.6 m across) and a little room to turn.
-const SPOT: f64 = 0.75;
 /// Weight of a ring member standing closer to its neighbours than an even spread would.
 const SPREAD_WEIGHT: f64 = 6.0;
 /// Weight of a seat left with no standing spot.
 const ACCESS_WEIGHT: f64 = 8.0;
-/// Depth beyond a table's side for a seat and the person who sits down (m).
-const TABLE_ROOM: f64 = 1.2;
-/// Things whose bottom is higher than this leave a standing spot free (m).
-const HEAD_HEIGHT: f64 = 1.9;
 
 impl Problem {
     /// Gaps (m) of the ring round a centre for a member of footprint `s`: seats close in, big
@@ -143,7 +138,7 @@ impl Problem {
         // A table keeps room on two of its sides for its seats and the people who sit down;
         // nothing placed later takes it away.
         if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
-            let want = self.seats_of(i).min(2);
+            let want = self.sides_wanted(i);
             if want > 0 && self.free_sides(b, i, None, boxes) < want {
                 score -= ACCESS_WEIGHT;
             }
@@ -151,7 +146,7 @@ impl Problem {
             for (k, bk) in boxes.iter().enumerate() {
                 let Some((bk, ak)) = bk else { continue };
                 let near = aabb_gap(ak, &ab);
-                let want = self.seats_of(k).min(2);
+                let want = self.sides_wanted(k);
                 if near > TABLE_ROOM || k == i || want == 0 || self.linked(i, k) {
                     continue;
                 }
@@ -169,12 +164,13 @@ impl Problem {
         self.rels[i].iter().any(|r| r.1 == j)
     }
 
-    /// How many seats stand AROUND instance `t`.
-    fn seats_of(&self, t: usize) -> usize {
-        self.rels[t]
-            .iter()
-            .filter(|r| !r.2 && r.0 == RelationKind::Around)
-            .count()
+    /// How many sides of table `t` keep room for its seats: those its AROUND seats take (four
+    /// at a small table for four, the long pair at a long one), 0 when none.
+    fn sides_wanted(&self, t: usize) -> usize {
+        match self.sides_of(t) {
+            (_, Some((count, _))) => count.iter().filter(|&&c| c > 0).count(),
+            (seats, _) => seats.len().min(2),
+        }
     }
 
     /// How many sides of table box `b` (instance `t`) have [`TABLE_ROOM`] free beyond them:

@@ -34,8 +34,9 @@ impl Problem {
         };
         match rel {
             RelationKind::Around => {
-                // The partner's four sides, each with as many seats as its length takes.
-                for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, -90.0), (3, 90.0)] {
+                // The partner's four sides, each with as many seats as its length takes, every
+                // seat turned to the table (at its right, local +x, a seat faces -x: yaw + 90).
+                for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, 90.0), (3, -90.0)] {
                     let (len, half_across) = if side < 2 {
                         (2.0 * hw, hd)
                     } else {

@@ -9,6 +9,7 @@
 //! benches), are split by a centre aisle. The block keeps a free band at the front for what the
 //! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
 //! face a wall with one.
+use super::spacing::{PASSAGE, SEAT_GAP};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
@@ -17,15 +18,6 @@ use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
 const FRONT: f64 = 1.8;
 /// The least front depth a tight room may keep.
 const FRONT_MIN: f64 = 1.0;
-/// Walkway behind the last row and beside the rows.
-const BEHIND: f64 = 0.9;
-/// Room between a row's seats and the row behind them: a person walks past a seated row and
-/// stands behind a seat to sit down (0.9 m, the usual circulation behind seated rows; a 0.25 m
-/// radius walker standing 0.15 m behind a chair drawn 0.1 m off its desk, on a navigation mesh
-/// of 5 cm cells, needs about 0.75 m).
-const PASSAGE: f64 = 0.9;
-/// The gap a seat keeps from its desk.
-const SEAT_ROOM: f64 = 0.05;
 /// The centre aisle of rows of four or more.
 const AISLE: f64 = 1.0;
 /// The widest angle (degrees) off straight ahead at which a seat at the end of the first
@@ -76,8 +68,8 @@ impl Block {
     /// Room [across, along] the block needs: walkways at both sides and behind, the front band.
     fn needs(&self) -> [f64; 2] {
         [
-            (self.width() + 2.0 * BEHIND).max(self.target_width + 0.4),
-            self.depth() + self.front + BEHIND,
+            (self.width() + 2.0 * PASSAGE).max(self.target_width + 0.4),
+            self.depth() + self.front + PASSAGE,
         ]
     }
 
@@ -145,7 +137,7 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         .iter()
         .filter(|r| r.relation == RelationKind::AtBack && base(&r.object) == cat)
         .filter_map(|r| spec.objects.get(base(&r.subject)))
-        .map(|s| s.size[1] + SEAT_ROOM)
+        .map(|s| s.size[1] + SEAT_GAP)
         .fold(0.0, f64::max);
     // what the rows face (a stage, a screen) and a metre to see it from
     let target = spec
@@ -206,7 +198,7 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         size: s,
         gap_x: (0.25 * s[0]).clamp(0.08, 0.5),
         gap_y: if let Some(depth) = seat_depth {
-            (depth + SEAT_ROOM + PASSAGE).max(1.1)
+            (depth + SEAT_GAP + PASSAGE).max(1.1)
         } else {
             (0.7 * s[1]).clamp(0.45, 1.0)
         },
@@ -234,9 +226,9 @@ fn base(id: &str) -> &str {
 }
 
 /// The smallest [w, d] that holds every block of `spec` facing +y (a room chosen by floor area
-/// alone can be too narrow for ten seats abreast).
+/// alone can be too narrow for ten seats abreast) and every floor of tables.
 pub fn room_for_rows(spec: &SceneSpec) -> [f64; 2] {
-    let mut need = [0.0f64, 0.0f64];
+    let mut need = super::tables::room_for_tables(spec);
     for cat in spec.objects.keys() {
         if let Some(b) = block(spec, cat) {
             let [a, l] = b.needs();
@@ -248,7 +240,8 @@ pub fn room_for_rows(spec: &SceneSpec) -> [f64; 2] {
 
 impl Problem {
     /// Poses for every instance of every category in rows that `placed` leaves free, written
-    /// into `placed` (the block of a category with an instance already placed is left alone).
+    /// into `placed` (the block of a category with an instance already placed is left alone),
+    /// then the floors of tables with their seats (`tables.rs`).
     /// The front is the wall the block's rows face: tried in the order that leaves most room.
     pub(super) fn place_rows(&self, spec: &SceneSpec, placed: &mut [Option<Pose>]) {
         for cat in spec.objects.keys() {
@@ -270,6 +263,7 @@ impl Problem {
                 }
             }
         }
+        self.place_tables(spec, placed);
     }
 
     /// Stands what the rows face (instance `t`) against the front wall, centred before the
@@ -333,11 +327,11 @@ impl Problem {
             }
             let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
             let want = if window { FRONT_MIN } else { b.front };
-            let front = (along - b.depth() - BEHIND).min(want).max(FRONT_MIN);
+            let front = (along - b.depth() - PASSAGE).min(want).max(FRONT_MIN);
             let rest = if window {
                 0.0
             } else {
-                along - b.depth() - BEHIND - front
+                along - b.depth() - PASSAGE - front
             };
             // the block's centre along the facing: behind the front band, the rest shared
             let v0 = 0.5 * along - front - 0.5 * rest.max(0.0) - 0.5 * b.depth();

@@ -172,5 +172,5 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             }
         }
     }
-    crate::plan::groups::apply(spec, &keep);
+    crate::plan::groups::apply_named(spec, &keep, &d.named);
 }
