@@ -26,6 +26,7 @@ pub mod materials;
 mod more;
 pub mod parts;
 mod play;
+mod sport;
 mod structures;
 mod things;
 
