@@ -2,6 +2,7 @@
 //! default colours, and the function that lays out its parts; plus the [`Builder`] the layout
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
+use super::barriers as ba;
 use super::cases as c;
 use super::crafts as cr;
 use super::daily as d;
@@ -312,6 +313,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sports_net", sp::sports_net, [Body], [Body => [0.10, 0.10, 0.11], Canvas => WHITE, Metal => [0.16, 0.30, 0.22]]),
     arch!("diving_board", sp::diving_board, [Top], [Top => [0.20, 0.45, 0.75], Body => [0.80, 0.79, 0.76], Metal => [0.62, 0.63, 0.65]]),
     arch!("buoy", sp::buoy, [Body], [Body => [0.85, 0.15, 0.12], Canvas => WHITE, Metal => [0.30, 0.30, 0.32]]),
+    arch!("stone_wall", ba::stone_wall, [Body, Top], [Body => [0.58, 0.56, 0.52], Top => [0.68, 0.66, 0.61], Interior => [0.25, 0.24, 0.22]]),
+    arch!("stanchions", ba::stanchions, [Upholstery], [Upholstery => [0.55, 0.06, 0.10], Metal => [0.78, 0.64, 0.30]]),
+    arch!("haystack", ba::haystack, [Body], [Body => [0.80, 0.66, 0.35], Top => [0.68, 0.54, 0.28]]),
     arch!("ramp", pl::ramp, [Body], [Body => [0.75, 0.62, 0.45], Frame => [0.50, 0.36, 0.22], Top => [0.55, 0.42, 0.28], Metal => [0.60, 0.61, 0.63]]),
 ];
 

@@ -14,6 +14,7 @@
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
 mod appliances;
 mod archetypes;
+mod barriers;
 mod cases;
 mod crafts;
 mod daily;
