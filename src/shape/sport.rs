@@ -185,3 +185,60 @@ pub fn buoy(b: &mut Builder) {
         [0.2 * r, 0.2 * r, 0.06 * h],
     );
 }
+
+/// A basketball hoop on a pole: a weighted foot at the back, the pole, an arm reaching forward
+/// to a white backboard facing +y, an orange rim in front of it with a net below.
+pub fn hoop(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let pole = (0.04 * hw.min(hd) + 0.04).min(0.08);
+    let yp = -hd + 2.0 * pole;
+    b.cuboid(
+        Body,
+        [-hw.min(0.4), -hd, 0.0],
+        [hw.min(0.4), -hd + 0.5 * b.d, 0.12],
+    );
+    let bh = (0.3 * h).min(1.05);
+    let zb = h - bh;
+    b.cylinder(Metal, [0.0, yp, 0.12], pole, zb + 0.5 * bh - 0.12);
+    // The backboard, 10 cm behind the rim's back.
+    let rr = (0.2 * hw.min(0.5 * b.d)).clamp(0.1, 0.23);
+    let yb = (hd - 2.0 * rr - 0.15).max(yp + 2.0 * pole);
+    b.rod(
+        Metal,
+        [0.0, yp, zb + 0.5 * bh],
+        [0.0, yb, zb + 0.5 * bh],
+        0.7 * pole,
+    );
+    b.cuboid(Canvas, [-hw, yb, zb], [hw, yb + 0.04, h]);
+    b.cuboid(
+        Frame,
+        [-0.3 * hw, yb + 0.04, zb + 0.15 * bh],
+        [0.3 * hw, yb + 0.05, zb + 0.55 * bh],
+    );
+    let zr = zb + 0.15 * bh;
+    let (cy, tube) = (yb + 0.05 + rr + 0.02, 0.012);
+    let profile: Vec<[f64; 2]> = (0..=16)
+        .map(|k| {
+            let t = k as f64 / 16.0 * std::f64::consts::TAU;
+            [rr + tube * t.cos(), tube + tube * t.sin()]
+        })
+        .collect();
+    b.revolved(
+        Top,
+        0,
+        [0.0, cy, zr - tube],
+        super::parts::IDENTITY,
+        1.0,
+        profile,
+    );
+    b.rod(Top, [0.0, yb + 0.04, zr], [0.0, cy - rr, zr], tube);
+    let net = vec![[0.0, 0.0], [0.6 * rr, 0.0], [rr, 0.4 * bh], [0.0, 0.4 * bh]];
+    b.revolved(
+        Cushion,
+        0,
+        [0.0, cy, zr - 0.4 * bh],
+        super::parts::IDENTITY,
+        1.0,
+        net,
+    );
+}
