@@ -317,6 +317,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("stanchions", ba::stanchions, [Upholstery], [Upholstery => [0.55, 0.06, 0.10], Metal => [0.78, 0.64, 0.30]]),
     arch!("haystack", ba::haystack, [Body], [Body => [0.80, 0.66, 0.35], Top => [0.68, 0.54, 0.28]]),
     arch!("hoop", sp::hoop, [Metal], [Metal => [0.20, 0.21, 0.23], Body => [0.25, 0.26, 0.28], Canvas => WHITE, Frame => [0.85, 0.25, 0.12], Top => [0.95, 0.42, 0.10], Cushion => [0.92, 0.92, 0.90]]),
+    arch!("rower", sp::rower, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.55, 0.56, 0.58], Metal => [0.15, 0.15, 0.16], Seat => [0.10, 0.10, 0.11], Top => [0.20, 0.20, 0.22], Handle => [0.10, 0.10, 0.11]]),
     arch!("ramp", pl::ramp, [Body], [Body => [0.75, 0.62, 0.45], Frame => [0.50, 0.36, 0.22], Top => [0.55, 0.42, 0.28], Metal => [0.60, 0.61, 0.63]]),
 ];
 

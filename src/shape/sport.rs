@@ -242,3 +242,51 @@ pub fn hoop(b: &mut Builder) {
         net,
     );
 }
+
+/// A rowing machine: a long rail rising from a foot at the back to a flywheel housing at the
+/// front (+y), a sliding seat on the rail, foot plates before the flywheel and a handle.
+pub fn rower(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let rail = (0.06 * h).clamp(0.03, 0.05);
+    let (zb, zf) = (0.25 * h, 0.45 * h);
+    let yf = hd - 0.45 * h;
+    b.cuboid(Metal, [-0.8 * hw, -hd, 0.0], [0.8 * hw, -hd + 0.08, zb]);
+    b.rod(Frame, [0.0, -hd + 0.04, zb], [0.0, yf, zf], rail);
+    // The flywheel housing: a disc on its side, standing on a foot across the front.
+    let r = (0.5 * h).min(0.45 * hd);
+    b.revolved(
+        Body,
+        0,
+        [-0.12 * hw, hd - r, h - r],
+        super::parts::rot_y(std::f64::consts::FRAC_PI_2),
+        1.0,
+        vec![[0.0, 0.0], [r, 0.0], [r, 0.24 * hw], [0.0, 0.24 * hw]],
+    );
+    b.cuboid(
+        Metal,
+        [-0.8 * hw, hd - 2.0 * r, 0.0],
+        [0.8 * hw, hd - 0.05, 0.05],
+    );
+    b.rod(Metal, [0.0, hd - r, 0.05], [0.0, hd - r, h - r], rail);
+    // The seat a third along the rail, the foot plates before the flywheel.
+    let t = 0.35;
+    let (ys, zs) = (-hd + t * (yf + hd), zb + t * (zf - zb));
+    b.cuboid(
+        Seat,
+        [-0.35 * hw, ys - 0.15, zs + rail],
+        [0.35 * hw, ys + 0.15, zs + rail + 0.06],
+    );
+    for sx in [-1.0, 1.0] {
+        b.cuboid(
+            Top,
+            [sx * 0.15 * hw, yf - 0.35, zf - 0.02],
+            [sx * 0.75 * hw, yf - 0.3, zf + 0.22 * h],
+        );
+    }
+    b.rod(
+        Handle,
+        [-0.45 * hw, yf - 0.1, zf + 0.15 * h],
+        [0.45 * hw, yf - 0.1, zf + 0.15 * h],
+        0.015,
+    );
+}
