@@ -2,6 +2,7 @@
 //! default colours, and the function that lays out its parts; plus the [`Builder`] the layout
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
+use super::barriers as ba;
 use super::cases as c;
 use super::crafts as cr;
 use super::daily as d;
@@ -13,6 +14,7 @@ use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::play as pl;
+use super::sport as sp;
 use super::structures as st;
 use super::things as t;
 
@@ -307,6 +309,15 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("merry_go_round", pl::merry_go_round, [Top], [Top => [0.85, 0.20, 0.15], Frame => [0.95, 0.78, 0.15], Metal => [0.20, 0.45, 0.75]]),
     arch!("surfboard", pl::surfboard, [Body], [Body => [0.95, 0.94, 0.90], Frame => [0.10, 0.55, 0.70]]),
     arch!("pool_float", pl::pool_float, [Body], [Body => [0.95, 0.40, 0.45], Cushion => WHITE]),
+    arch!("goal", sp::goal, [Frame], [Frame => WHITE, Metal => [0.55, 0.56, 0.58], Canvas => [0.86, 0.87, 0.88]]),
+    arch!("sports_net", sp::sports_net, [Body], [Body => [0.10, 0.10, 0.11], Canvas => WHITE, Metal => [0.16, 0.30, 0.22]]),
+    arch!("diving_board", sp::diving_board, [Top], [Top => [0.20, 0.45, 0.75], Body => [0.80, 0.79, 0.76], Metal => [0.62, 0.63, 0.65]]),
+    arch!("buoy", sp::buoy, [Body], [Body => [0.85, 0.15, 0.12], Canvas => WHITE, Metal => [0.30, 0.30, 0.32]]),
+    arch!("stone_wall", ba::stone_wall, [Body, Top], [Body => [0.58, 0.56, 0.52], Top => [0.68, 0.66, 0.61], Interior => [0.25, 0.24, 0.22]]),
+    arch!("stanchions", ba::stanchions, [Upholstery], [Upholstery => [0.55, 0.06, 0.10], Metal => [0.78, 0.64, 0.30]]),
+    arch!("haystack", ba::haystack, [Body], [Body => [0.80, 0.66, 0.35], Top => [0.68, 0.54, 0.28]]),
+    arch!("hoop", sp::hoop, [Metal], [Metal => [0.20, 0.21, 0.23], Body => [0.25, 0.26, 0.28], Canvas => WHITE, Frame => [0.85, 0.25, 0.12], Top => [0.95, 0.42, 0.10], Cushion => [0.92, 0.92, 0.90]]),
+    arch!("rower", sp::rower, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.55, 0.56, 0.58], Metal => [0.15, 0.15, 0.16], Seat => [0.10, 0.10, 0.11], Top => [0.20, 0.20, 0.22], Handle => [0.10, 0.10, 0.11]]),
     arch!("ramp", pl::ramp, [Body], [Body => [0.75, 0.62, 0.45], Frame => [0.50, 0.36, 0.22], Top => [0.55, 0.42, 0.28], Metal => [0.60, 0.61, 0.63]]),
 ];
 

@@ -14,6 +14,7 @@
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
 mod appliances;
 mod archetypes;
+mod barriers;
 mod cases;
 mod crafts;
 mod daily;
@@ -26,6 +27,7 @@ pub mod materials;
 mod more;
 pub mod parts;
 mod play;
+mod sport;
 mod structures;
 mod things;
 

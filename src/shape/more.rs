@@ -329,8 +329,13 @@ pub fn boat(b: &mut Builder) {
     let (hw, hd, full) = (b.w / 2.0, b.d / 2.0, b.h);
     let sails = full > b.w;
     let h = if sails { full.min(0.6 * b.w) } else { full };
-    // Lower half of an ellipsoid centred at the gunwale; the upper half falls outside the box.
-    b.ellipsoid(Body, [0.0, 0.0, h], [hw, hd, h]);
+    // The lower half of a hull lying along y, centred at the gunwale (the upper half falls
+    // outside the box): a blunt stern at -y and a pointed bow at +y.
+    hull(b, Body, hw, hd, h, h / hw);
+    if sails {
+        // A decked yacht: a thin deck of the hull's outline at the gunwale.
+        hull(b, Top, 0.98 * hw, 0.99 * hd, h, (0.02 * h).max(0.01) / hw);
+    }
     for y in [-0.4 * hd, 0.0, 0.4 * hd] {
         b.cuboid(
             Frame,
@@ -357,6 +362,31 @@ pub fn boat(b: &mut Builder) {
         }
         b.rod(Frame, [0.0, mast_y, z0], [0.0, mast_y - foot, z0], 0.7 * r);
     }
+}
+
+/// A spindle along y with its centre line at `(0, 0, z)`: half width `hw`, half length `hd`, a
+/// blunt end towards -y and a pointed one towards +y; its height is `ay` times its width.
+fn hull(b: &mut Builder, role: super::materials::Role, hw: f64, hd: f64, z: f64, ay: f64) {
+    let n = 32;
+    let profile: Vec<[f64; 2]> = (0..=n)
+        .map(|k| {
+            let s = 2.0 * k as f64 / n as f64 - 1.0;
+            let r = if s < 0.0 {
+                (1.0 - s.powi(4)).max(0.0).sqrt()
+            } else {
+                1.0 - s * s
+            };
+            [hw * r, (s + 1.0) * hd]
+        })
+        .collect();
+    b.revolved(
+        role,
+        0,
+        [0.0, -hd, z],
+        super::archetypes::frame_along([0.0, 1.0, 0.0]),
+        ay,
+        profile,
+    );
 }
 
 /// A ring about the x axis: a wheel's tyre at `(x, y, z)`.
