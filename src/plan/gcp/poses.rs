@@ -36,12 +36,23 @@ impl Problem {
             RelationKind::Around => {
                 // The partner's four sides, each with as many seats as its length takes, every
                 // seat turned to the table (at its right, local +x, a seat faces -x: yaw + 90).
+                // People fill an oblong table's long sides first: its ends are offered only when
+                // the long sides cannot hold every seat at it.
+                let seats = self.rels[j]
+                    .iter()
+                    .filter(|&&(rel, _, subject)| rel == RelationKind::Around && !subject)
+                    .count();
+                let (long, short) = (hw.max(hd), hw.min(hd));
+                let ends_needed = long <= 1.2 * short || seats > 2 * slots(2.0 * long, s[0]).len();
                 for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, 90.0), (3, -90.0)] {
                     let (len, half_across) = if side < 2 {
                         (2.0 * hw, hd)
                     } else {
                         (2.0 * hd, hw)
                     };
+                    if !ends_needed && len < 2.0 * long - 1e-9 {
+                        continue;
+                    }
                     // a seat much wider than a side (a bench at a table's end) sits on the
                     // long sides only
                     if s[0] > 1.25 * len && s[0] > 0.8 {
