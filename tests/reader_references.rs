@@ -113,3 +113,14 @@ fn seats_on_each_side_of_a_table_are_that_tables_seats() {
         assert_eq!(at, 2, "{table}{k}: {:?}", s.relations);
     }
 }
+
+#[test]
+fn a_bare_seat_noun_is_the_scenes_seat_of_that_kind() {
+    // a living room's chairs are its armchairs, not dining chairs beside them
+    let s = plan("a snug lounge with a sofa and a chair next to the bookcase");
+    assert_eq!(number(&s, "armchair"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "dining chair"), 0, "{:?}", s.objects);
+    // chairs said with a table to sit at stay the table's chairs
+    let s = plan("a family room with a dining table and six chairs");
+    assert_eq!(number(&s, "dining chair"), 6, "{:?}", s.objects);
+}

@@ -186,6 +186,33 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             }
         }
     }
+    // "a chair either side of the fireplace" in a living room: a bare noun the scene has no
+    // default of is the default that is a kind of it by another name (its armchairs), unless a
+    // table the text names seats it ("a dining table and four chairs").
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        if cats[i] != m.category || m.owner.is_some() || m.text.split(' ').count() != 1 {
+            continue;
+        }
+        let Some(s) = scene else { continue };
+        let Some((kind, _)) = s
+            .objects
+            .iter()
+            .filter(|(c, _)| lang::kind_of_compound(c) == Some(head.as_str()))
+            .max_by_key(|(_, n)| *n)
+        else {
+            continue;
+        };
+        let seat: BTreeMap<String, u32> = [(m.category.clone(), 0)].into();
+        let seated = cats
+            .iter()
+            .chain(r.mentions.iter().map(|o| &o.category))
+            .any(|t| seat_for(t, &seat).as_deref() == Some(m.category.as_str()));
+        if !seated && !s.objects.iter().any(|(c, _)| *c == m.category) {
+            cats[i] = kind.clone();
+        }
+    }
     // "a big potted palm": a plant that grows to full size outdoors, in a pot, is a potted plant
     for (i, m) in r.mentions.iter().enumerate() {
         let Some(o) = kb.object(&cats[i]) else {
