@@ -124,3 +124,10 @@ fn a_bare_seat_noun_is_the_scenes_seat_of_that_kind() {
     let s = plan("a family room with a dining table and six chairs");
     assert_eq!(number(&s, "dining chair"), 6, "{:?}", s.objects);
 }
+
+#[test]
+fn a_named_lamp_replaces_the_default_lamp_of_its_kind() {
+    let s = plan("a lounge with a sofa and a tripod lamp in the corner");
+    assert_eq!(number(&s, "tripod lamp"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "floor lamp"), 0, "{:?}", s.objects);
+}
