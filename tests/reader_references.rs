@@ -131,3 +131,20 @@ fn a_named_lamp_replaces_the_default_lamp_of_its_kind() {
     assert_eq!(number(&s, "tripod lamp"), 1, "{:?}", s.objects);
     assert_eq!(number(&s, "floor lamp"), 0, "{:?}", s.objects);
 }
+
+#[test]
+fn a_thing_beneath_each_window_stands_at_a_window() {
+    use dreamscene::plan::spec::Anchor;
+    let s = plan("a study with two tall windows and a bookcase below each one");
+    let cases: Vec<_> = s
+        .anchors
+        .iter()
+        .filter(|(id, _)| id.starts_with("bookshelf"))
+        .collect();
+    assert_eq!(cases.len(), 2, "{:?}", s.anchors);
+    assert!(
+        cases.iter().all(|(_, a)| **a == Anchor::Window),
+        "{:?}",
+        s.anchors
+    );
+}
