@@ -148,3 +148,12 @@ fn a_thing_beneath_each_window_stands_at_a_window() {
         s.anchors
     );
 }
+
+#[test]
+fn a_thing_on_the_wall_is_the_kind_of_it_that_hangs_there() {
+    let s = plan("a garage with a workbench and some shelves on the wall");
+    assert!(number(&s, "wall shelf") >= 1, "{:?}", s.objects);
+    let s = plan("a great hall with a long table and three tapestries hung on the walls");
+    assert_eq!(number(&s, "tapestry"), 3, "{:?}", s.objects);
+    assert_eq!(number(&s, "tapestry stand"), 0, "{:?}", s.objects);
+}
