@@ -202,10 +202,12 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             continue;
         }
         let Some(s) = scene else { continue };
+        // no more than the scene holds of them: "six chairs" in a lounge are other chairs
         let Some((kind, _)) = s
             .objects
             .iter()
             .filter(|(c, _)| lang::kind_of_compound(c) == Some(head.as_str()))
+            .filter(|(_, n)| m.count.unwrap_or(1) <= *n)
             .max_by_key(|(_, n)| *n)
         else {
             continue;
