@@ -113,3 +113,47 @@ fn seats_on_each_side_of_a_table_are_that_tables_seats() {
         assert_eq!(at, 2, "{table}{k}: {:?}", s.relations);
     }
 }
+
+#[test]
+fn a_bare_seat_noun_is_the_scenes_seat_of_that_kind() {
+    // a living room's chairs are its armchairs, not dining chairs beside them
+    let s = plan("a snug lounge with a sofa and a chair next to the bookcase");
+    assert_eq!(number(&s, "armchair"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "dining chair"), 0, "{:?}", s.objects);
+    // chairs said with a table to sit at stay the table's chairs
+    let s = plan("a family room with a dining table and six chairs");
+    assert_eq!(number(&s, "dining chair"), 6, "{:?}", s.objects);
+}
+
+#[test]
+fn a_named_lamp_replaces_the_default_lamp_of_its_kind() {
+    let s = plan("a lounge with a sofa and a tripod lamp in the corner");
+    assert_eq!(number(&s, "tripod lamp"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "floor lamp"), 0, "{:?}", s.objects);
+}
+
+#[test]
+fn a_thing_beneath_each_window_stands_at_a_window() {
+    use dreamscene::plan::spec::Anchor;
+    let s = plan("a study with two tall windows and a bookcase below each one");
+    let cases: Vec<_> = s
+        .anchors
+        .iter()
+        .filter(|(id, _)| id.starts_with("bookshelf"))
+        .collect();
+    assert_eq!(cases.len(), 2, "{:?}", s.anchors);
+    assert!(
+        cases.iter().all(|(_, a)| **a == Anchor::Window),
+        "{:?}",
+        s.anchors
+    );
+}
+
+#[test]
+fn a_thing_on_the_wall_is_the_kind_of_it_that_hangs_there() {
+    let s = plan("a garage with a workbench and some shelves on the wall");
+    assert!(number(&s, "wall shelf") >= 1, "{:?}", s.objects);
+    let s = plan("a great hall with a long table and three tapestries hung on the walls");
+    assert_eq!(number(&s, "tapestry"), 3, "{:?}", s.objects);
+    assert_eq!(number(&s, "tapestry stand"), 0, "{:?}", s.objects);
+}

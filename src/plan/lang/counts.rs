@@ -4,6 +4,12 @@
 //! ("six rows of ten seats", "two rows of recliners, three in each row"). A mention after
 //! "each" or "every" refers back to an object already named, never a new one.
 use super::{number_of, re, Reading};
+use crate::plan::spec::Anchor;
+
+/// Placement words that put a thing said of each window at that window ("beneath each one").
+const WINDOW_PLACES: &[&str] = &[
+    "under", "beneath", "below", "by", "near", "beside", "next", "front", "at", "before",
+];
 
 /// How many of a thing "each side" and its kin stand for.
 const PARTS: &[(&str, u32)] = &[("side", 2), ("end", 2), ("corner", 4), ("wall", 4)];
@@ -50,9 +56,9 @@ fn is_feature(w: &str) -> bool {
     super::word_list("features").contains(&sg.as_str())
 }
 
-/// The last "N (adjectives) features" of `before` ("three big windows"): its end and N; only of
-/// that feature when `of` is given.
-fn feature_count(before: &str, of: Option<&str>) -> Option<(usize, u32)> {
+/// The last "N (adjectives) features" of `before` ("three big windows"): its end, N and the
+/// feature's noun; only of that feature when `of` is given.
+fn feature_count<'a>(before: &'a str, of: Option<&str>) -> Option<(usize, u32, &'a str)> {
     let mut words: Vec<(usize, &str)> = vec![];
     let mut pos = 0;
     for w in before.split(' ') {
@@ -68,7 +74,7 @@ fn feature_count(before: &str, of: Option<&str>) -> Option<(usize, u32)> {
         for &(end, noun) in words.iter().skip(i + 1).take(3) {
             let same = of.is_none_or(|o| super::singular(o) == super::singular(noun));
             if is_feature(noun) && same {
-                last = Some((end, n));
+                last = Some((end, n, noun));
                 break;
             }
             if !super::is_adjective(noun) {
@@ -191,9 +197,16 @@ pub(super) fn read_counts(r: &mut Reading) {
             } else {
                 feature_count(&t[..m.start], None)
             };
-            if let Some((_, f)) = named_feature.filter(|&(e, _)| near.is_none_or(|n| e > n)) {
+            if let Some((_, f, noun)) =
+                named_feature.filter(|&(e, _, _)| near.is_none_or(|n| e > n))
+            {
                 let m = &mut r.mentions[k];
                 m.count = Some(m.count.unwrap_or(1) * f);
+                // "a plant beneath each one" of the windows: each stands at a window
+                let placed = lead.split_whitespace().any(|w| WINDOW_PLACES.contains(&w));
+                if placed && super::singular(noun) == "window" {
+                    r.anchors.push((k, Anchor::Window));
+                }
                 continue;
             }
         }

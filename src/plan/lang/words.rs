@@ -179,6 +179,15 @@ pub fn is_specialised(head: &str) -> bool {
     word_list("specialised").contains(&head)
 }
 
+/// The head noun a one-word category is a kind of (`kb/words.txt`, kinds): "armchair" is a
+/// chair, so a bare "chair" in a living room is its armchair.
+pub fn kind_of_compound(category: &str) -> Option<&'static str> {
+    word_list("kinds").iter().find_map(|e| {
+        let (c, head) = e.split_once('=')?;
+        (c.replace('_', " ") == category).then_some(head)
+    })
+}
+
 pub fn is_function_word(w: &str) -> bool {
     function().contains(&w)
 }

@@ -61,7 +61,13 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             .iter()
             .map(|m| in_scene(kb, scene, m))
             .collect();
-    let Draft { r, cats, .. } = d;
+    let Draft {
+        r,
+        cats,
+        counts,
+        notes,
+        ..
+    } = d;
     // "ten round tables ... and a top table": an unknown kind of a noun of which the text
     // already names a kind is another object, not more of the scene's (it is sized as them).
     for i in 0..cats.len() {
@@ -183,6 +189,63 @@ pub(super) fn mention_kinds(d: &mut Draft) {
         for (j, cj) in cats.iter_mut().enumerate() {
             if *cj == c && !r.mentions[j].negated {
                 *cj = seat.clone();
+            }
+        }
+    }
+    // "a chair either side of the fireplace" in a living room: a bare noun the scene has no
+    // default of is the default that is a kind of it by another name (its armchairs), unless a
+    // table the text names seats it ("a dining table and four chairs").
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        if cats[i] != m.category || m.owner.is_some() || m.text.split(' ').count() != 1 {
+            continue;
+        }
+        let Some(s) = scene else { continue };
+        // no more than the scene holds of them: "six chairs" in a lounge are other chairs
+        let Some((kind, _)) = s
+            .objects
+            .iter()
+            .filter(|(c, _)| lang::kind_of_compound(c) == Some(head.as_str()))
+            .filter(|(_, n)| m.count.unwrap_or(1) <= *n)
+            .max_by_key(|(_, n)| *n)
+        else {
+            continue;
+        };
+        let seat: BTreeMap<String, u32> = [(m.category.clone(), 0)].into();
+        let seated = cats
+            .iter()
+            .chain(r.mentions.iter().map(|o| &o.category))
+            .any(|t| seat_for(t, &seat).as_deref() == Some(m.category.as_str()));
+        if !seated && !s.objects.iter().any(|(c, _)| *c == m.category) {
+            cats[i] = kind.clone();
+        }
+    }
+    // "shelves on the wall above them", "two tapestries on the wall": a thing said to be on
+    // a wall is the kind of its noun that hangs there (a wall shelf, not a storage shelf)
+    let on_wall = regex::Regex::new(
+        r"^,? (?:(?:hung|hanging|mounted|fixed|high) )?on (?:the|a|one|each|every) walls?\b",
+    )
+    .expect("valid regex");
+    let table = crate::plan::gcp::classes::Placements::builtin();
+    let hangs = |c: &str| matches!(table.class(c), crate::plan::gcp::classes::Class::OnWall(_));
+    for (i, m) in r.mentions.iter().enumerate() {
+        if !on_wall.is_match(&r.text[m.end..]) || hangs(&cats[i]) {
+            continue;
+        }
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        if let Some(o) = kb
+            .objects
+            .iter()
+            .find(|o| o.category.rsplit(' ').next() == Some(head.as_str()) && hangs(&o.category))
+        {
+            // the scene's default the noun was read as is this one (the laundry's shelving)
+            let was = std::mem::replace(&mut cats[i], o.category.clone());
+            if was != m.category && !cats.contains(&was) && counts.remove(&was).is_some() {
+                notes.push(format!(
+                    "default {was} left out: the named {} takes its place",
+                    o.category
+                ));
             }
         }
     }
