@@ -178,3 +178,54 @@ impl Problem {
         Some(out)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::check::Box2;
+    use crate::plan::gcp::{layout, LayoutOptions};
+    use crate::plan::spec::SceneSpec;
+
+    /// Where seat `s` sits at table `t`: on one of its long sides (true) or at an end.
+    fn on_long_side(t: &Box2, s: &Box2) -> bool {
+        let d = [s.c[0] - t.c[0], s.c[1] - t.c[1]];
+        let along = d[0] * t.ex[0] + d[1] * t.ex[1];
+        let across = d[0] * t.ey[0] + d[1] * t.ey[1];
+        let long_x = t.half[0] >= t.half[1];
+        (across.abs() > along.abs()) == long_x
+    }
+
+    #[test]
+    fn seats_fill_an_oblong_tables_long_sides_before_its_ends() {
+        let spec = |chairs: u32| -> SceneSpec {
+            let rels: Vec<String> = (1..=chairs)
+                .map(|k| {
+                    format!(r#"{{"subject":"dining chair{k}","relation":"AROUND","object":"dining table1"}}"#)
+                })
+                .collect();
+            let text = format!(
+                r#"{{"scene_type":"indoor","scene_text":"t","room":{{"size":[5.0,4.0,2.8]}},
+                "anchors":{{"dining table1":"CENTER"}},"objects":{{
+                "dining table":{{"number":1,"size":[1.8,0.9,0.75],"description":"d"}},
+                "dining chair":{{"number":{chairs},"size":[0.5,0.5,0.9],"description":"d"}}}},
+                "relations":[{}]}}"#,
+                rels.join(",")
+            );
+            serde_json::from_str(&text).expect("spec")
+        };
+        for (chairs, want_ends) in [(2u32, 0usize), (6, 0), (8, 2)] {
+            for seed in 0..3 {
+                let l = layout(&spec(chairs), LayoutOptions::seeded(seed)).expect("laid out");
+                let get =
+                    |id: &str| Box2::of(l.objects.iter().find(|o| o.id == id).expect("placed"));
+                let t = get("dining table1");
+                let ends = (1..=chairs)
+                    .filter(|k| !on_long_side(&t, &get(&format!("dining chair{k}"))))
+                    .count();
+                assert!(
+                    ends <= want_ends,
+                    "{chairs} chairs, seed {seed}: {ends} at the ends (at most {want_ends})"
+                );
+            }
+        }
+    }
+}
