@@ -385,6 +385,14 @@ mod tests {
         serde_json::from_str(&text).expect("spec")
     }
 
+    /// Every relation of `s` as the text's own (kept by `apply`).
+    fn user_pairs(s: &SceneSpec) -> BTreeSet<(String, String)> {
+        s.relations
+            .iter()
+            .map(|r| (r.subject.clone(), r.object.clone()))
+            .collect()
+    }
+
     fn has(spec: &SceneSpec, s: &str, rel: RelationKind, o: &str) -> bool {
         spec.relations
             .iter()
@@ -458,11 +466,7 @@ mod tests {
                 ("tent2", "AROUND", "fire pit1"),
             ],
         );
-        let keep: BTreeSet<(String, String)> = s
-            .relations
-            .iter()
-            .map(|r| (r.subject.clone(), r.object.clone()))
-            .collect();
+        let keep = user_pairs(&s);
         apply(&mut s, &keep);
         assert!(
             has(&s, "tent1", RelationKind::Circle, "fire pit1"),
@@ -637,11 +641,7 @@ mod tests {
                 ("office chair2", "FRONT", "spaceship console2"),
             ],
         );
-        let keep: BTreeSet<(String, String)> = s
-            .relations
-            .iter()
-            .map(|r| (r.subject.clone(), r.object.clone()))
-            .collect();
+        let keep = user_pairs(&s);
         apply(&mut s, &keep);
         assert!(
             has(&s, "office chair1", RelationKind::At, "spaceship console1")
