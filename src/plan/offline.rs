@@ -5,7 +5,7 @@
 //! lamps; `capacity` trims default furniture to the room and refuses what cannot fit. A text in
 //! which nothing is recognised is an error, not a generic room.
 //!
-//! Stages, in order (each a submodule working on one [`Draft`]): `roles` (the scene's defaults
+//! Stages, in order (each a submodule working on one `Draft`): `roles` (the scene's defaults
 //! and the category each mention means), `sizing` (sizes the text gives), `counts` (counts and
 //! companions), `roles` again (what negation and named roles take away), `describe` (styles and
 //! descriptions), `relations` (anchors and relations), `sizing` (the room), `describe` (what
