@@ -244,11 +244,14 @@ struct ChainPoint {
     t: u32,
     x: Vec<Vec<f32>>,
     preds: Vec<Vec<Vec<f32>>>,
+    /// Where the null prediction is in each view's predictions (the next inversion step's).
+    null: Option<usize>,
 }
 
 /// Noises every `z0s[v]` (with `eps[v]`) to `t_start`, then walks up through `ts` (ascending) by
-/// DDIM inversion with the null prompt, predicting `conds` (which must include Null) for all
-/// views at every point in one batch.
+/// DDIM inversion with the null prompt, predicting `conds` for all views at every sampled point
+/// in one batch. The `t_start` point only drives the first inversion step, so it predicts the
+/// null prompt alone; `conds` must include Null when a sampled point drives a further step.
 fn chain(
     pred: &mut dyn ViewsPredictor,
     sched: &Schedule,
@@ -258,10 +261,7 @@ fn chain(
     ts: &[u32],
     conds: &[Cond],
 ) -> Result<Vec<ChainPoint>, String> {
-    let null = conds
-        .iter()
-        .position(|c| *c == Cond::Null)
-        .ok_or("the inversion chain needs the null prompt")?;
+    const START: [Cond; 1] = [Cond::Null];
     let times: Vec<u32> = std::iter::once(t_start).chain(ts.iter().copied()).collect();
     let ab0 = sched.alpha_bar(t_start as i64);
     let mut x: Vec<Vec<f32>> = z0s
@@ -272,6 +272,9 @@ fn chain(
     let mut out: Vec<ChainPoint> = vec![];
     for (k, &t) in times.iter().enumerate() {
         if let Some(prev) = k.checked_sub(1).map(|i| &out[i]) {
+            let null = prev
+                .null
+                .ok_or("the inversion chain needs the null prompt")?;
             let (from, to) = (sched.alpha_bar(prev.t as i64), sched.alpha_bar(t as i64));
             x = prev
                 .x
@@ -280,11 +283,13 @@ fn chain(
                 .map(|(xv, pv)| ddim_step(xv, &pv[null], from, to))
                 .collect();
         }
-        let preds = predict_eps(pred, sched, &x, t, conds)?;
+        let here: &[Cond] = if k == 0 { &START } else { conds };
+        let preds = predict_eps(pred, sched, &x, t, here)?;
         out.push(ChainPoint {
             t,
             x: x.clone(),
             preds,
+            null: here.iter().position(|c| *c == Cond::Null),
         });
     }
     Ok(out)
@@ -322,15 +327,20 @@ pub fn mts_gradients(
     ts: &[u32],
     s: &MtsSettings,
 ) -> Result<Vec<Vec<f32>>, String> {
-    let conds = [Cond::Positive, Cond::Negative, Cond::Null];
-    let points = chain(pred, sched, z0s, eps, s.t_start, ts, &conds)?;
+    // The paper's rule needs no negative prompt: a third fewer UNet items per point.
+    let conds: &[Cond] = match s.rule {
+        MtsRule::Paper => &[Cond::Positive, Cond::Null],
+        MtsRule::Code => &[Cond::Positive, Cond::Negative, Cond::Null],
+    };
+    let points = chain(pred, sched, z0s, eps, s.t_start, ts, conds)?;
     let n = ts.len().max(1) as f64;
-    Ok(sum_over_chain(&points, sched, |p, w| {
-        let (pos, neg, null) = (&p[0], &p[1], &p[2]);
-        match s.rule {
-            MtsRule::Paper => scaled_diff(pos, null, s.lambda * w),
-            MtsRule::Code => scaled_diff(&cfg(neg, pos, s.guidance_scale), null, s.lambda * w / n),
-        }
+    Ok(sum_over_chain(&points, sched, |p, w| match s.rule {
+        MtsRule::Paper => scaled_diff(&p[0], &p[1], s.lambda * w),
+        MtsRule::Code => scaled_diff(
+            &cfg(&p[1], &p[0], s.guidance_scale),
+            &p[2],
+            s.lambda * w / n,
+        ),
     }))
 }
 
@@ -372,7 +382,8 @@ pub fn pseudo_gts(
     s: &MtsSettings,
 ) -> Result<Vec<Vec<f32>>, String> {
     let first = *ts.first().ok_or("no timestep sampled")?;
-    let conds = [Cond::Positive, Cond::Negative, Cond::Null];
+    // The one sampled point drives no further inversion step: no null prompt there.
+    let conds = [Cond::Positive, Cond::Negative];
     let points = chain(pred, sched, z0s, eps, s.t_start, &[first], &conds)?;
     let p = &points[1];
     let ab = sched.alpha_bar(first as i64);

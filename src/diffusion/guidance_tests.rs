@@ -63,8 +63,9 @@ fn mts_gradient_matches_the_chain_computed_by_hand() {
     let s = MtsSettings::default();
     let mut fake = Fake { calls: vec![] };
     let g = mts_gradient(&mut fake, &sched, &z0, &eps, &ts, &s).unwrap();
-    // One batched call per chain point (t = 1 and the three sampled), three conditions each.
-    assert_eq!(fake.calls, vec![(1, 3), (200, 3), (410, 3), (600, 3)]);
+    // One batched call per chain point: the start (t = 1) drives only the first inversion step,
+    // so it asks for the null prompt alone; the three sampled points ask for all three.
+    assert_eq!(fake.calls, vec![(1, 1), (200, 3), (410, 3), (600, 3)]);
     // By hand, in f64.
     let ab = |t: u32| sched.alpha_bar(t as i64);
     let mut x: Vec<f64> = z0
@@ -73,6 +74,7 @@ fn mts_gradient_matches_the_chain_computed_by_hand() {
         .map(|(a, b)| ab(1).sqrt() * *a as f64 + (1.0 - ab(1)).sqrt() * *b as f64)
         .collect();
     let mut want = vec![0.0f64; 16];
+    let mut want_paper = vec![0.0f64; 16];
     let mut cur = 1u32;
     for &t in &ts {
         // invert with the null prediction
@@ -87,6 +89,7 @@ fn mts_gradient_matches_the_chain_computed_by_hand() {
             let (pos, neg, null) = (0.5 * xi + c, 0.2 * xi + c, 0.1 * xi + c);
             let e_cfg = neg + 7.5 * (pos - neg);
             want[k] += 0.1 * weight(ab(t)) * (e_cfg - null) / 3.0;
+            want_paper[k] += 0.1 * weight(ab(t)) * (pos - null);
         }
     }
     for (a, b) in g.iter().zip(&want) {
@@ -100,8 +103,17 @@ fn mts_gradient_matches_the_chain_computed_by_hand() {
         rule: MtsRule::Paper,
         ..s
     };
-    let gp = mts_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, &ts, &sp).unwrap();
+    let mut fake = Fake { calls: vec![] };
+    let gp = mts_gradient(&mut fake, &sched, &z0, &eps, &ts, &sp).unwrap();
     assert!(gp.iter().zip(&g).any(|(a, b)| (a - b).abs() > 1e-3));
+    for (a, b) in gp.iter().zip(&want_paper) {
+        assert!(
+            (*a as f64 - b).abs() < 1e-4 * b.abs().max(1.0),
+            "paper rule: {a} vs {b}"
+        );
+    }
+    // The paper's rule has no CFG, so it never asks for the negative prompt.
+    assert_eq!(fake.calls, vec![(1, 1), (200, 2), (410, 2), (600, 2)]);
 }
 
 /// Predicts the true noise for every condition: the inversion chain then stays on
@@ -143,16 +155,11 @@ fn pseudo_gt_edit_sds_and_ism_run_and_differ() {
     let z0 = vec![0.3f32; 8];
     let eps = vec![-0.4f32; 8];
     let s = MtsSettings::default();
-    let gt = pseudo_gt(
-        &mut Fake { calls: vec![] },
-        &sched,
-        &z0,
-        &eps,
-        &[120, 260],
-        &s,
-    )
-    .unwrap();
+    let mut fake = Fake { calls: vec![] };
+    let gt = pseudo_gt(&mut fake, &sched, &z0, &eps, &[120, 260], &s).unwrap();
     assert!(gt.iter().all(|v| v.is_finite()));
+    // x̂₀ at the first sampled point needs its CFG pair only; the start point its null prompt.
+    assert_eq!(fake.calls, vec![(1, 1), (120, 2)]);
     let e = edit_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, &[300], &s).unwrap();
     assert!(e.iter().all(|v| *v > 0.0), "edit prompt pulls away from y");
     let sds = sds_gradient(&mut Fake { calls: vec![] }, &sched, &z0, &eps, 500, &s).unwrap();

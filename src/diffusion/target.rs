@@ -353,7 +353,9 @@ mod tests {
         let mut want = vec![1];
         want.extend(&ts);
         assert_eq!(calls.iter().map(|c| c.0).collect::<Vec<_>>(), want);
-        assert!(calls.iter().all(|c| c.1 == vec![Positive, Negative, Null]));
+        // The start point only drives the first inversion step: the null prompt alone.
+        assert_eq!(calls[0].1, vec![Null]);
+        assert!(calls[1..].iter().all(|c| c.1 == vec![Positive, Negative, Null]));
         // DreamTime: t falls from t_max to t_min over the run.
         let dt = Rule::DreamTime {
             t_min: 20,
