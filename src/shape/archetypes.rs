@@ -352,6 +352,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("garden_arch", ga::garden_arch, [Frame], [Frame => WHITE, Foliage => [0.20, 0.42, 0.16], Pillow => [0.80, 0.12, 0.22], Cushion => [0.95, 0.60, 0.68]]),
     arch!("harp", sc::harp, [Frame], [Frame => [0.80, 0.62, 0.25], Canvas => [0.92, 0.88, 0.78]]),
     arch!("bust", sc::bust, [Body], [Body => [0.93, 0.92, 0.89], Top => [0.70, 0.68, 0.64]]),
+    arch!("altar", sc::altar, [Body], [Body => [0.80, 0.77, 0.70], Top => [0.62, 0.60, 0.56], Canvas => [0.96, 0.95, 0.92], Metal => [0.80, 0.64, 0.28], Light => [1.0, 0.86, 0.55]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -112,3 +112,54 @@ pub fn bust(b: &mut Builder) {
         [0.014 * s, 0.03 * s, 0.028 * s],
     );
 }
+
+/// An altar: a stone block on a plinth under a white cloth that hangs down its front, with two
+/// candlesticks and a cross standing on it.
+pub fn altar(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let top = 0.7 * h;
+    b.cuboid(Top, [-hw, -hd, 0.0], [hw, hd, 0.06 * h]);
+    b.cuboid(
+        Body,
+        [-0.94 * hw, -0.9 * hd, 0.06 * h],
+        [0.94 * hw, 0.9 * hd, top],
+    );
+    // The cloth: over the top, down the front to a third of the height, a little down the sides.
+    b.cuboid(
+        Canvas,
+        [-0.96 * hw, -0.92 * hd, top],
+        [0.96 * hw, 0.92 * hd, top + 0.01],
+    );
+    b.cuboid(
+        Canvas,
+        [-0.96 * hw, 0.9 * hd, 0.45 * top],
+        [0.96 * hw, 0.92 * hd, top],
+    );
+    for sx in [-1.0, 1.0] {
+        b.cuboid(
+            Canvas,
+            [sx * 0.94 * hw - 0.01, -0.92 * hd, 0.7 * top],
+            [sx * 0.94 * hw + 0.01, 0.92 * hd, top],
+        );
+    }
+    // Two candlesticks with lit candles and a cross between them.
+    let z = top + 0.01;
+    let rest = (h - z).max(0.02);
+    for sx in [-1.0, 1.0] {
+        let x = sx * 0.6 * hw;
+        b.frustum(Metal, [x, -0.3 * hd, z], 0.05, 0.05, 0.3, 0.45 * rest);
+        b.cylinder(Canvas, [x, -0.3 * hd, z + 0.45 * rest], 0.02, 0.45 * rest);
+        b.ellipsoid(
+            Light,
+            [x, -0.3 * hd, z + 0.95 * rest],
+            [0.012, 0.012, 0.04 * rest],
+        );
+    }
+    let arm = 0.22 * rest;
+    b.cuboid(Metal, [-0.02, -0.5 * hd, z], [0.02, -0.5 * hd + 0.03, h]);
+    b.cuboid(
+        Metal,
+        [-arm, -0.5 * hd, z + 0.6 * rest],
+        [arm, -0.5 * hd + 0.03, z + 0.68 * rest],
+    );
+}
