@@ -8,15 +8,20 @@ use super::crafts as cr;
 use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
+use super::garden as ga;
 use super::heritage as he;
 use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::play as pl;
+use super::sculpted as sc;
 use super::sport as sp;
 use super::structures as st;
 use super::things as t;
+use super::utility as ut;
+use super::washroom as wa;
+use super::workshop as ws;
 
 /// Collects parts in the object frame for a size `[w, d, h]`.
 pub struct Builder {
@@ -84,6 +89,18 @@ impl Builder {
         let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-9);
         self.revolved(role, 0, a, frame_along(d), 1.0, frustum_profile(r, r, l));
+    }
+
+    /// An oriented box: `half` extents along the axes of `rot`, centred at `centre`.
+    pub fn slab(&mut self, role: Role, centre: V3, half: V3, rot: M3) {
+        self.push(role, 0, Primitive::Cuboid { centre, half, rot });
+    }
+
+    /// Rods of radius `r` joining successive points of `pts` (a bent bar, a chain, an arc).
+    pub fn polyline(&mut self, role: Role, pts: &[V3], r: f64) {
+        for w in pts.windows(2) {
+            self.rod(role, w[0], w[1], r);
+        }
     }
 
     /// An ellipsoid with semi-axes `radii` (x, y, z) at `centre`.
@@ -319,6 +336,23 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("hoop", sp::hoop, [Metal], [Metal => [0.20, 0.21, 0.23], Body => [0.25, 0.26, 0.28], Canvas => WHITE, Frame => [0.85, 0.25, 0.12], Top => [0.95, 0.42, 0.10], Cushion => [0.92, 0.92, 0.90]]),
     arch!("rower", sp::rower, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.55, 0.56, 0.58], Metal => [0.15, 0.15, 0.16], Seat => [0.10, 0.10, 0.11], Top => [0.20, 0.20, 0.22], Handle => [0.10, 0.10, 0.11]]),
     arch!("ramp", pl::ramp, [Body], [Body => [0.75, 0.62, 0.45], Frame => [0.50, 0.36, 0.22], Top => [0.55, 0.42, 0.28], Metal => [0.60, 0.61, 0.63]]),
+    arch!("dish", ut::dish, [Body], [Body => [0.90, 0.90, 0.89], Metal => [0.45, 0.46, 0.48], Handle => [0.20, 0.20, 0.21]]),
+    arch!("solar_panel", ut::solar_panel, [Glass], [Glass => [0.10, 0.16, 0.34], Frame => [0.78, 0.79, 0.81], Metal => [0.55, 0.56, 0.58]]),
+    arch!("gas_cylinder", ut::gas_cylinder, [Body], [Body => [0.20, 0.38, 0.62], Top => [0.90, 0.90, 0.88], Handle => [0.75, 0.60, 0.25], Metal => [0.50, 0.50, 0.52]]),
+    arch!("bike_rack", ut::bike_rack, [Frame], [Frame => [0.68, 0.69, 0.71], Metal => [0.45, 0.46, 0.48]]),
+    arch!("anvil", ws::anvil, [Metal], [Metal => [0.20, 0.20, 0.22], Trunk => [0.45, 0.32, 0.20], Top => [0.70, 0.55, 0.38]]),
+    arch!("lathe", ws::lathe, [Body], [Body => [0.32, 0.46, 0.40], Door => [0.28, 0.40, 0.35], Top => [0.40, 0.41, 0.43], Metal => [0.70, 0.71, 0.73], Trunk => [0.72, 0.56, 0.36], Handle => [0.15, 0.15, 0.16]]),
+    arch!("drill_press", ws::drill_press, [Body], [Body => [0.30, 0.36, 0.46], Top => [0.26, 0.31, 0.40], Metal => [0.72, 0.73, 0.75], Handle => [0.12, 0.12, 0.13]]),
+    arch!("table_saw", ws::table_saw, [Body], [Body => [0.22, 0.23, 0.25], Top => [0.72, 0.73, 0.75], Frame => [0.85, 0.55, 0.12], Metal => [0.36, 0.37, 0.40], Glass => [0.80, 0.30, 0.15], Handle => [0.15, 0.15, 0.16]]),
+    arch!("urinal", wa::urinal, [Body], [Body => WHITE, Canvas => [0.66, 0.70, 0.74], Interior => [0.40, 0.42, 0.44], Metal => STEEL]),
+    arch!("pedestal_sink", wa::pedestal_sink, [Body], [Body => WHITE, Canvas => [0.82, 0.84, 0.86], Interior => [0.30, 0.30, 0.32], Metal => STEEL, Handle => STEEL]),
+    arch!("font", wa::font, [Body, Top], [Body => STONE, Top => [0.58, 0.56, 0.52], Water => [0.35, 0.55, 0.66]]),
+    arch!("hammock", ga::hammock, [Canvas], [Canvas => [0.85, 0.45, 0.25], Frame => [0.55, 0.38, 0.22], Metal => [0.85, 0.80, 0.68]]),
+    arch!("swing_bench", ga::swing_bench, [Seat, Frame], [Seat => [0.62, 0.45, 0.28], Frame => [0.55, 0.40, 0.25], Top => [0.50, 0.36, 0.22], Metal => [0.30, 0.30, 0.32]]),
+    arch!("garden_arch", ga::garden_arch, [Frame], [Frame => WHITE, Foliage => [0.20, 0.42, 0.16], Pillow => [0.80, 0.12, 0.22], Cushion => [0.95, 0.60, 0.68]]),
+    arch!("harp", sc::harp, [Frame], [Frame => [0.80, 0.62, 0.25], Canvas => [0.92, 0.88, 0.78]]),
+    arch!("bust", sc::bust, [Body], [Body => [0.93, 0.92, 0.89], Top => [0.70, 0.68, 0.64]]),
+    arch!("altar", sc::altar, [Body], [Body => [0.80, 0.77, 0.70], Top => [0.62, 0.60, 0.56], Canvas => [0.96, 0.95, 0.92], Metal => [0.80, 0.64, 0.28], Light => [1.0, 0.86, 0.55]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.
