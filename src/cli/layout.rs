@@ -1,6 +1,7 @@
 //! `dreamscene layout`: graph-based constraint placement of a SceneSpec.
 use super::{create_parent, write_png};
 use anyhow::{Context as _, Result};
+use dreamscene::plan::check::walk;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::SceneSpec;
 use std::path::PathBuf;
@@ -31,6 +32,9 @@ pub fn run(a: Args) -> Result<()> {
         for r in &l.unsatisfied {
             eprintln!("  unsatisfied: {r}");
         }
+        for id in walk::unreachable(&l) {
+            eprintln!("  out of reach: no way from the door to where {id} is used");
+        }
         return Ok(());
     }
     let png = a.out.with_extension("png");
@@ -43,6 +47,9 @@ pub fn run(a: Args) -> Result<()> {
     );
     for r in &l.unsatisfied {
         println!("  unsatisfied: {r}");
+    }
+    for id in walk::unreachable(&l) {
+        println!("  out of reach: no way from the door to where {id} is used");
     }
     Ok(())
 }

@@ -16,6 +16,7 @@ mod compose;
 mod fit;
 mod gather;
 pub mod openings;
+mod pairs;
 mod poses;
 mod problem;
 mod room;
@@ -170,6 +171,7 @@ fn layout_in_pinned(
 ) -> Layout {
     let mut work = spec.clone();
     let mounts = classes::apply(&mut work);
+    pairs::float_seats(&mut work, room.size);
     let spec = &work;
     let inst = spec.instances();
     let hung: Vec<Option<f64>> = inst

@@ -308,17 +308,26 @@ pub fn apply_named(
     });
     spec.relations.extend(added);
     // a seat the sentence puts in front of a desk-like thing it goes with ("three consoles,
-    // each with a seat in front of it") sits at it, when no other seat does
+    // each with a seat in front of it", "four bar stools in front of the bar") sits at it, while
+    // it has places left
     let at = |spec: &SceneSpec, o: &str| {
         spec.relations
             .iter()
-            .any(|r| r.relation == RelationKind::At && r.object == o)
+            .filter(|r| r.relation == RelationKind::At && r.object == o)
+            .count() as u32
+    };
+    let places = |spec: &SceneSpec, s: &str, o: &str| {
+        let size = spec.objects.get(&base(o)).map(|x| x.size)?;
+        rules()
+            .iter()
+            .find(|q| q.has_subject(&base(s)) && q.has_object(&base(o)))
+            .filter(|q| q.relation == RelationKind::At)
+            .map(|q| capacity(q, size))
     };
     for k in 0..spec.relations.len() {
         let r = &spec.relations[k];
         if r.relation == RelationKind::Front
-            && relation_between(&base(&r.subject), &base(&r.object)) == Some(RelationKind::At)
-            && !at(spec, &r.object)
+            && places(spec, &r.subject, &r.object).is_some_and(|n| at(spec, &r.object) < n)
         {
             spec.relations[k].relation = RelationKind::At;
         }

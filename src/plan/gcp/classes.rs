@@ -34,12 +34,17 @@ pub struct Placement {
 #[derive(Debug, Clone, Default)]
 pub struct Placements {
     by_category: BTreeMap<String, Placement>,
+    /// (seats, screens) pairs of `faces` lines: what a seat of the list is turned toward.
+    pub faces: Vec<(Vec<String>, Vec<String>)>,
 }
 
 impl Placements {
     /// Parses the table; errors name the line.
     pub fn parse(text: &str) -> Result<Placements, String> {
         let mut by_category = BTreeMap::new();
+        let mut faces = vec![];
+        let list =
+            |v: &str| -> Vec<String> { v.split(',').map(|s| s.trim().to_string()).collect() };
         for (n, line) in text.lines().enumerate() {
             let line = line.trim();
             if line.is_empty() || line.starts_with('#') {
@@ -47,6 +52,13 @@ impl Placements {
             }
             let err = |m: &str| format!("placement.txt line {}: {m}", n + 1);
             let f: Vec<&str> = line.split('|').map(str::trim).collect();
+            if f[0] == "faces" {
+                if f.len() != 3 || f[1].is_empty() || f[2].is_empty() {
+                    return Err(err("needs 3 fields: faces | seats | screens"));
+                }
+                faces.push((list(f[1]), list(f[2])));
+                continue;
+            }
             if f.len() != 4 && f.len() != 5 {
                 return Err(err(
                     "needs 4 or 5 fields: category | class | height | supports [| front clearance]",
@@ -78,11 +90,7 @@ impl Placements {
                 ("ceiling", None) => Class::Ceiling,
                 (c, _) => return Err(err(&format!("class `{c}` with height `{}`", f[2]))),
             };
-            let supports: Vec<String> = if f[3] == "-" {
-                vec![]
-            } else {
-                f[3].split(',').map(|s| s.trim().to_string()).collect()
-            };
+            let supports: Vec<String> = if f[3] == "-" { vec![] } else { list(f[3]) };
             if matches!(class, Class::OnSurface(_)) == supports.is_empty() {
                 return Err(err("on_surface, and only it, names its supports"));
             }
@@ -100,7 +108,7 @@ impl Placements {
                 return Err(err(&format!("`{}` listed twice", f[0])));
             }
         }
-        Ok(Placements { by_category })
+        Ok(Placements { by_category, faces })
     }
 
     /// The built-in table.
@@ -192,6 +200,8 @@ pub struct Mounts {
 /// another instance of it. Returns the wall heights and ceiling things.
 pub fn apply(spec: &mut SceneSpec) -> Mounts {
     one_support(spec);
+    super::pairs::to_named_neighbour(spec);
+    super::pairs::face_screens(spec);
     let mut mounts = Mounts::default();
     let indoor = spec.scene_type == SceneType::Indoor;
     let mut load: BTreeMap<String, f64> = BTreeMap::new();
@@ -405,7 +415,7 @@ fn spread_overflow(spec: &mut SceneSpec) {
     }
 }
 
-fn base(id: &str) -> &str {
+pub(super) fn base(id: &str) -> &str {
     id.trim_end_matches(|c: char| c.is_ascii_digit())
 }
 

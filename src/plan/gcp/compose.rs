@@ -8,6 +8,7 @@
 //! centred on its axis, between [`FRONT_LEGROOM`] and [`FRONT_GAP`] from it and square to
 //! it; a thing over another that it is longer than (UNDER) spanning it,
 //! past both ends, and centred over what stands under it.
+use super::pairs::{VIEW_FAR, VIEW_NEAR};
 use super::{Pose, Problem};
 use crate::plan::check::{
     blocks_sight, gap, opening_distance, overlap_depth, sight_zone, Box2, SIGHTLINE_HEIGHT,
@@ -63,6 +64,26 @@ impl Problem {
             .fold(0.0, f64::max)
     }
 
+    /// The viewing-distance cost of a thing at `b` whose OPPOSITE partner `j`, not placed yet,
+    /// will stand against a wall: that partner before the wall `b` faces, at most [`VIEW_FAR`]
+    /// away (0 when it can be).
+    fn view_ahead(&self, b: &Box2, j: usize) -> f64 {
+        let [hw, hd] = [0.5 * self.room[0], 0.5 * self.room[1]];
+        // distance along b's facing to the wall it looks at
+        let reach = |c: f64, e: f64, h: f64| {
+            if e > 1e-6 {
+                (h - c) / e
+            } else if e < -1e-6 {
+                (-h - c) / e
+            } else {
+                f64::INFINITY
+            }
+        };
+        let t = reach(b.c[0], b.ey[0], hw).min(reach(b.c[1], b.ey[1], hd));
+        let d = t - super::WALL_MARGIN - 0.5 * self.inst[j].size[1];
+        4.0 * ((d - VIEW_FAR).max(0.0) + (VIEW_NEAR - d).max(0.0)).min(2.0)
+    }
+
     fn related(&self, i: usize, j: usize) -> bool {
         self.rels[i].iter().any(|r| r.1 == j)
     }
@@ -95,7 +116,12 @@ impl Problem {
             }
         }
         for &(rel, j, subject) in &self.rels[i] {
-            let Some(bj) = boxed(j) else { continue };
+            let Some(bj) = boxed(j) else {
+                if rel == RelationKind::Opposite && self.inst[j].anchor == Anchor::Side {
+                    score -= self.view_ahead(b, j);
+                }
+                continue;
+            };
             match rel {
                 RelationKind::Opposite => {
                     // on the partner's axis (the object's frame), and nothing tall between
@@ -105,6 +131,9 @@ impl Problem {
                         b.local(bj.c)[0]
                     };
                     score -= 5.0 * lateral.abs().min(2.0);
+                    // at a viewing distance (a sofa 2-3 m from its TV)
+                    let d = ((p.c[0] - bj.c[0]).powi(2) + (p.c[1] - bj.c[1]).powi(2)).sqrt();
+                    score -= 4.0 * ((d - VIEW_FAR).max(0.0) + (VIEW_NEAR - d).max(0.0)).min(2.0);
                     let zone = sight_zone(b, &bj);
                     for (k, bk) in boxes.iter().enumerate() {
                         let Some((bk, _)) = bk else { continue };

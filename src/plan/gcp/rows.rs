@@ -299,7 +299,7 @@ impl Problem {
             self.inst[ids[0]].anchor,
             Anchor::Window | Anchor::FaceWindow
         );
-        let mut tries: Vec<([f64; 2], bool, bool, f64)> = vec![];
+        let mut tries: Vec<([f64; 2], bool, bool, bool, f64)> = vec![];
         for (f, wall) in [
             ([0.0, 1.0], Wall::North),
             ([0.0, -1.0], Wall::South),
@@ -316,12 +316,19 @@ impl Problem {
                     .any(|o| o.kind == OpeningKind::Window && o.wall == wall);
             // the whole front band fits this way
             let full = along >= nl && across >= na;
-            tries.push((f, window, full, slack));
+            // a front wall without a window keeps the board or screen off it
+            let blank = !self.openings.iter().any(|o| o.wall == wall);
+            tries.push((f, window, full, blank, slack));
         }
-        // a window first when asked, then a way with the whole front, then the most room;
-        // ties keep the order (north first)
-        tries.sort_by(|a, b| b.1.cmp(&a.1).then(b.2.cmp(&a.2)).then(b.3.total_cmp(&a.3)));
-        for (f, window, _, slack) in tries {
+        // a window first when asked, then a way with the whole front, then a blank front
+        // wall, then the most room; ties keep the order (north first)
+        tries.sort_by(|a, b| {
+            b.1.cmp(&a.1)
+                .then(b.2.cmp(&a.2))
+                .then(b.3.cmp(&a.3))
+                .then(b.4.total_cmp(&a.4))
+        });
+        for (f, window, _, _, slack) in tries {
             if slack < 0.0 {
                 continue;
             }
