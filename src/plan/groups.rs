@@ -193,6 +193,7 @@ pub fn apply_named(
     named: &BTreeSet<String>,
 ) {
     grow_hosts(spec);
+    text_places_first(spec, keep);
     let count = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
     let mut added: Vec<Relation> = vec![];
     let mut grouped: BTreeMap<String, Vec<String>> = BTreeMap::new();
@@ -330,6 +331,22 @@ pub fn apply_named(
     }
     shelter_group(spec);
     grow_supports(spec);
+}
+
+/// A thing the sentence places (an armchair on either side of the fire, a lamp next to the bed)
+/// keeps no relation of the scene's defaults that would pull it elsewhere (the living room's
+/// armchairs by the coffee table); what stands on or under something keeps that.
+fn text_places_first(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
+    let stacked = |r: &Relation| matches!(r.relation, RelationKind::Over | RelationKind::Under);
+    let own = |r: &Relation| keep.contains(&(r.subject.clone(), r.object.clone()));
+    let placed: BTreeSet<String> = spec
+        .relations
+        .iter()
+        .filter(|r| own(r) && !stacked(r))
+        .map(|r| r.subject.clone())
+        .collect();
+    spec.relations
+        .retain(|r| own(r) || stacked(r) || !placed.contains(&r.subject));
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)
