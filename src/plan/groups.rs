@@ -309,17 +309,20 @@ pub fn apply_named(
     });
     spec.relations.extend(added);
     // a seat the sentence puts in front of a desk-like thing it goes with ("three consoles,
-    // each with a seat in front of it") sits at it, when no other seat does
+    // each with a seat in front of it", "four bar stools in front of the bar") sits at it,
+    // as many as it seats
     let at = |spec: &SceneSpec, o: &str| {
         spec.relations
             .iter()
-            .any(|r| r.relation == RelationKind::At && r.object == o)
+            .filter(|r| r.relation == RelationKind::At && r.object == o)
+            .count() as u32
     };
     for k in 0..spec.relations.len() {
         let r = &spec.relations[k];
+        let (s, o) = (base(&r.subject), base(&r.object));
         if r.relation == RelationKind::Front
-            && relation_between(&base(&r.subject), &base(&r.object)) == Some(RelationKind::At)
-            && !at(spec, &r.object)
+            && relation_between(&s, &o) == Some(RelationKind::At)
+            && at(spec, &r.object) < seats_per(spec, &s, &o).unwrap_or(1)
         {
             spec.relations[k].relation = RelationKind::At;
         }

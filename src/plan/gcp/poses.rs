@@ -77,8 +77,21 @@ impl Problem {
                 }
             }
             RelationKind::At => {
-                // A row along the partner's front, facing it.
-                for g in [0.02, 0.1, 0.2] {
+                // A row along the partner's front, facing it, in line with the seats already
+                // at it (stools at a bar in one straight row).
+                let mut gaps = vec![0.02, 0.1, 0.2];
+                let mate = self.rels[j]
+                    .iter()
+                    .filter(|&&(rel, k, subject)| rel == RelationKind::At && !subject && k != i)
+                    .find_map(|&(_, k, _)| placed[k].map(|q| (k, q)));
+                if let Some((k, q)) = mate {
+                    let d = [q.c[0] - bj.c[0], q.c[1] - bj.c[1]];
+                    let g = d[0] * bj.ey[0] + d[1] * bj.ey[1] - hd - 0.5 * self.inst[k].size[1];
+                    if (0.0..=0.3).contains(&g) {
+                        gaps = vec![g];
+                    }
+                }
+                for g in gaps {
                     for t in slots(2.0 * hw, s[0]) {
                         out.push(Pose {
                             c: at(t, hd + g + 0.5 * s[1]),
@@ -173,9 +186,30 @@ impl Problem {
                     }
                 }
             }
+            RelationKind::Over if self.used_from_front(i) => {
+                // A thing someone sits or stands in front of (a computer with its chair) stands
+                // at the front edge of its support, side by side with the others there.
+                let ly = hd - 0.5 * s[1] - 0.02;
+                for t in slots(2.0 * hw, s[0]) {
+                    out.push(Pose {
+                        c: at(t, ly),
+                        yaw: pj.yaw,
+                        z: bj.z1,
+                    });
+                }
+            }
             _ => return None,
         }
         Some(out)
+    }
+}
+
+impl Problem {
+    /// Whether something is in FRONT of or AT instance `i` (a chair before a computer).
+    fn used_from_front(&self, i: usize) -> bool {
+        self.rels[i].iter().any(|&(rel, _, subject)| {
+            !subject && matches!(rel, RelationKind::Front | RelationKind::At)
+        })
     }
 }
 
