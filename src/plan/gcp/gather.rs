@@ -23,6 +23,9 @@ const FLANK_WEIGHT: f64 = 12.0;
 /// support: more than the walkway the search keeps from unrelated things (2 per metre) and,
 /// 0.2 m past a seat's gap, than the search's seeded jitter (at most 3).
 const DRAWN_UP_WEIGHT: f64 = 20.0;
+/// Weight of a seat at a table standing off the spots the table plans for its seats: more than
+/// the search's seeded jitter (at most 3), less than a relation.
+const SPREAD_SEAT_WEIGHT: f64 = 4.0;
 /// Weight of a seat left with no standing spot.
 const ACCESS_WEIGHT: f64 = 8.0;
 
@@ -122,6 +125,15 @@ impl Problem {
         // A seat keeps a standing spot; nothing takes the last one of a placed seat.
         if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
             if let Some(t) = self.seat_table(i) {
+                // and sits where its table spreads its seats, where it can
+                let around = self.rels[i]
+                    .iter()
+                    .any(|r| r.0 == RelationKind::Around && r.1 == t && r.2);
+                if let Some(pt) = placed[t].filter(|_| around) {
+                    if self.off_planned_spot(i, b, t, &self.boxed(t, &pt)) {
+                        score -= SPREAD_SEAT_WEIGHT;
+                    }
+                }
                 if !self.has_spot(b, t, None, boxes) {
                     score -= ACCESS_WEIGHT;
                 }

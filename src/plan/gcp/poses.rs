@@ -34,33 +34,50 @@ impl Problem {
         };
         match rel {
             RelationKind::Around => {
-                // The partner's four sides, each with as many seats as its length takes, every
-                // seat turned to the table (at its right, local +x, a seat faces -x: yaw + 90).
-                // People fill an oblong table's long sides first: its ends are offered only when
-                // the long sides cannot hold every seat at it.
+                // The partner's four sides, every seat turned to the table (at its right,
+                // local +x, a seat faces -x: yaw + 90). People fill an oblong table's long
+                // sides first, its ends only when the long sides cannot hold every seat at it,
+                // and spread over the sides: the seats the table's sides take in turn
+                // (`sides_of`), evenly along each side (four at a small square table: one a
+                // side, centred); without such a spread, each side's slots.
                 let seats = self.rels[j]
                     .iter()
                     .filter(|&&(rel, _, subject)| rel == RelationKind::Around && !subject)
                     .count();
                 let (long, short) = (hw.max(hd), hw.min(hd));
                 let ends_needed = long <= 1.2 * short || seats > 2 * slots(2.0 * long, s[0]).len();
+                // (a seat much wider than a table's end, a bench, is left to the slots)
+                let spread = self
+                    .sides_of(j)
+                    .1
+                    .filter(|_| !(s[0] > 1.25 * 2.0 * short && s[0] > 0.8))
+                    .map(|(count, _)| count);
                 for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, 90.0), (3, -90.0)] {
                     let (len, half_across) = if side < 2 {
                         (2.0 * hw, hd)
                     } else {
                         (2.0 * hd, hw)
                     };
-                    if !ends_needed && len < 2.0 * long - 1e-9 {
-                        continue;
-                    }
-                    // a seat much wider than a side (a bench at a table's end) sits on the
-                    // long sides only
-                    if s[0] > 1.25 * len && s[0] > 0.8 {
-                        continue;
-                    }
+                    // (each side's slots and ends too, where a planned spot is taken or
+                    // against a wall; the search's score keeps to the planned ones)
+                    let along: Vec<f64> = match spread {
+                        Some(count) => (0..count[side])
+                            .map(|m| len * ((m as f64 + 0.5) / count[side] as f64 - 0.5))
+                            .chain(slots(len, s[0]))
+                            .chain([-0.5 * len, 0.5 * len])
+                            .collect(),
+                        // a seat much wider than a side (a bench at a table's end) sits on
+                        // the long sides only
+                        None if (!ends_needed && len < 2.0 * long - 1e-9)
+                            || (s[0] > 1.25 * len && s[0] > 0.8) =>
+                        {
+                            continue
+                        }
+                        None => slots(len, s[0]),
+                    };
                     for g in [0.05, 0.15] {
                         let off = half_across + g + 0.5 * s[1];
-                        for t in slots(len, s[0]) {
+                        for &t in &along {
                             let c = match side {
                                 0 => at(t, off),
                                 1 => at(t, -off),
@@ -205,6 +222,30 @@ impl Problem {
 }
 
 impl Problem {
+    /// Whether seat `i` at box `b` stands off the spots its table `t` (box `bt`) plans for its
+    /// seats (`sides_of`: one a side, centred, at a small table for four); false when the
+    /// table plans none.
+    pub(super) fn off_planned_spot(&self, i: usize, b: &Box2, t: usize, bt: &Box2) -> bool {
+        let Some((count, _)) = self.sides_of(t).1 else {
+            return false;
+        };
+        let s = self.inst[i].size;
+        let short = bt.half[0].min(bt.half[1]);
+        if s[0] > 1.25 * 2.0 * short && s[0] > 0.8 {
+            return false;
+        }
+        let l = bt.local(b.c);
+        let [hw, hd] = bt.half;
+        // the side it stands at, and where along it
+        let (side, along, len) = if l[1].abs() - hd > l[0].abs() - hw {
+            (if l[1] > 0.0 { 0 } else { 1 }, l[0], 2.0 * hw)
+        } else {
+            (if l[0] > 0.0 { 2 } else { 3 }, l[1], 2.0 * hd)
+        };
+        let n = count[side];
+        !(0..n).any(|m| (len * ((m as f64 + 0.5) / n as f64 - 0.5) - along).abs() < 0.05)
+    }
+
     /// Whether something is in FRONT of or AT instance `i` (a chair before a computer).
     fn used_from_front(&self, i: usize) -> bool {
         self.rels[i].iter().any(|&(rel, _, subject)| {
