@@ -58,13 +58,19 @@ impl Problem {
                     } else {
                         (2.0 * hd, hw)
                     };
-                    // (each side's slots and ends too, where a planned spot is taken or
-                    // against a wall; the search's score keeps to the planned ones)
+                    // (a side with planned seats offers its slots too, and its ends beside a
+                    // lone centred seat, where a planned spot is taken or against a wall; the
+                    // search's score keeps to the planned ones)
                     let along: Vec<f64> = match spread {
+                        Some(count) if count[side] == 0 => continue,
                         Some(count) => (0..count[side])
                             .map(|m| len * ((m as f64 + 0.5) / count[side] as f64 - 0.5))
                             .chain(slots(len, s[0]))
-                            .chain([-0.5 * len, 0.5 * len])
+                            .chain(if count[side] == 1 {
+                                vec![-0.5 * len, 0.5 * len]
+                            } else {
+                                vec![]
+                            })
                             .collect(),
                         // a seat much wider than a side (a bench at a table's end) sits on
                         // the long sides only
