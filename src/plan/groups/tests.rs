@@ -283,3 +283,87 @@ fn a_seat_in_front_of_a_console_sits_at_it() {
         s.relations
     );
 }
+
+#[test]
+fn what_the_sentence_places_drops_the_defaults_that_pull_it_elsewhere() {
+    let mut s = spec(
+        &[
+            ("armchair", 2, [0.85, 0.85, 0.9]),
+            ("fireplace", 1, [1.5, 0.5, 1.1]),
+            ("coffee table", 1, [1.1, 0.6, 0.45]),
+            ("floor lamp", 1, [0.4, 0.4, 1.6]),
+            ("rug", 1, [2.0, 1.4, 0.01]),
+        ],
+        &[
+            ("armchair1", "FLANK", "fireplace1"),
+            ("armchair2", "FLANK", "fireplace1"),
+            ("armchair1", "NEXT", "coffee table1"),
+            ("armchair2", "NEXT", "coffee table1"),
+            ("floor lamp1", "NEXT", "armchair1"),
+            ("rug1", "UNDER", "armchair1"),
+        ],
+    );
+    // the text's own: the armchairs either side of the fire
+    let keep: BTreeSet<(String, String)> =
+        [("armchair1", "fireplace1"), ("armchair2", "fireplace1")]
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect();
+    apply(&mut s, &keep);
+    for a in ["armchair1", "armchair2"] {
+        assert!(has(&s, a, RelationKind::Flank, "fireplace1"), "{a} kept");
+        assert!(
+            !has(&s, a, RelationKind::Next, "coffee table1"),
+            "{a} still pulled to the coffee table: {:?}",
+            s.relations
+        );
+    }
+    // defaults of other subjects, and stacking, stay
+    assert!(has(&s, "floor lamp1", RelationKind::Next, "armchair1"));
+    assert!(has(&s, "rug1", RelationKind::Under, "armchair1"));
+}
+
+#[test]
+fn seats_put_in_front_of_a_counter_sit_at_it_as_many_as_it_seats() {
+    let stools: Vec<String> = (1..=6).map(|k| format!("bar stool{k}")).collect();
+    let relations: Vec<(&str, &str, &str)> = stools
+        .iter()
+        .map(|s| (s.as_str(), "FRONT", "bar counter1"))
+        .collect();
+    let mut s = spec(
+        &[
+            ("bar stool", 6, [0.4, 0.4, 0.75]),
+            ("bar counter", 1, [2.0, 0.7, 1.1]),
+        ],
+        &relations,
+    );
+    let keep = user_pairs(&s);
+    apply(&mut s, &keep);
+    // all six sit at it in a row (the counter grows to seat them), not one
+    for st in &stools {
+        assert!(
+            has(&s, st, RelationKind::At, "bar counter1"),
+            "{st}: {:?}",
+            s.relations
+        );
+    }
+    assert!(s.objects["bar counter"].size[0] >= 6.0 * 0.55 - 0.1);
+    // a desk seats one: the second chair in front of it stays in front
+    let mut s = spec(
+        &[
+            ("office chair", 2, [0.6, 0.6, 1.0]),
+            ("desk", 1, [1.4, 0.7, 0.75]),
+        ],
+        &[
+            ("office chair1", "FRONT", "desk1"),
+            ("office chair2", "FRONT", "desk1"),
+        ],
+    );
+    let keep = user_pairs(&s);
+    apply(&mut s, &keep);
+    let at = ["office chair1", "office chair2"]
+        .iter()
+        .filter(|c| has(&s, c, RelationKind::At, "desk1"))
+        .count();
+    assert_eq!(at, 1, "{:?}", s.relations);
+}
