@@ -309,4 +309,45 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn four_seats_at_a_small_square_table_sit_one_a_side_centred() {
+        let rels: Vec<String> = (1..=4)
+            .map(|k| {
+                format!(
+                    r#"{{"subject":"cafe chair{k}","relation":"AROUND","object":"cafe table1"}}"#
+                )
+            })
+            .collect();
+        let text = format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","room":{{"size":[4.0,4.0,2.8]}},
+            "objects":{{"cafe table":{{"number":1,"size":[1.2,1.2,0.75],"description":"d"}},
+            "cafe chair":{{"number":4,"size":[0.45,0.5,0.85],"description":"d"}}}},
+            "relations":[{}]}}"#,
+            rels.join(",")
+        );
+        let spec: SceneSpec = serde_json::from_str(&text).expect("spec");
+        for seed in 0..3 {
+            let l = layout(&spec, LayoutOptions::seeded(seed)).expect("laid out");
+            let get = |id: &str| Box2::of(l.objects.iter().find(|o| o.id == id).expect("placed"));
+            let t = get("cafe table1");
+            let mut sides = vec![];
+            for k in 1..=4 {
+                let p = t.local(get(&format!("cafe chair{k}")).c);
+                let (across, along) = if p[0].abs() > p[1].abs() {
+                    (p[0], p[1])
+                } else {
+                    (p[1], p[0])
+                };
+                assert!(
+                    along.abs() < 0.05,
+                    "seed {seed}: chair{k} off centre by {along:.2}"
+                );
+                sides.push((p[0].abs() > p[1].abs(), across > 0.0));
+            }
+            sides.sort();
+            sides.dedup();
+            assert_eq!(sides.len(), 4, "seed {seed}: two seats on one side");
+        }
+    }
 }
