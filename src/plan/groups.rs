@@ -193,6 +193,7 @@ pub fn apply_named(
     named: &BTreeSet<String>,
 ) {
     grow_hosts(spec);
+    text_places_first(spec, keep);
     let count = |c: &str| spec.objects.get(c).map(|o| o.number).unwrap_or(0);
     let mut added: Vec<Relation> = vec![];
     let mut grouped: BTreeMap<String, Vec<String>> = BTreeMap::new();
@@ -308,26 +309,20 @@ pub fn apply_named(
     });
     spec.relations.extend(added);
     // a seat the sentence puts in front of a desk-like thing it goes with ("three consoles,
-    // each with a seat in front of it", "four bar stools in front of the bar") sits at it, while
-    // it has places left
+    // each with a seat in front of it", "four bar stools in front of the bar") sits at it,
+    // as many as it seats
     let at = |spec: &SceneSpec, o: &str| {
         spec.relations
             .iter()
             .filter(|r| r.relation == RelationKind::At && r.object == o)
             .count() as u32
     };
-    let places = |spec: &SceneSpec, s: &str, o: &str| {
-        let size = spec.objects.get(&base(o)).map(|x| x.size)?;
-        rules()
-            .iter()
-            .find(|q| q.has_subject(&base(s)) && q.has_object(&base(o)))
-            .filter(|q| q.relation == RelationKind::At)
-            .map(|q| capacity(q, size))
-    };
     for k in 0..spec.relations.len() {
         let r = &spec.relations[k];
+        let (s, o) = (base(&r.subject), base(&r.object));
         if r.relation == RelationKind::Front
-            && places(spec, &r.subject, &r.object).is_some_and(|n| at(spec, &r.object) < n)
+            && relation_between(&s, &o) == Some(RelationKind::At)
+            && at(spec, &r.object) < seats_per(spec, &s, &o).unwrap_or(1)
         {
             spec.relations[k].relation = RelationKind::At;
         }
@@ -339,6 +334,22 @@ pub fn apply_named(
     }
     shelter_group(spec);
     grow_supports(spec);
+}
+
+/// A thing the sentence places (an armchair on either side of the fire, a lamp next to the bed)
+/// keeps no relation of the scene's defaults that would pull it elsewhere (the living room's
+/// armchairs by the coffee table); what stands on or under something keeps that.
+fn text_places_first(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
+    let stacked = |r: &Relation| matches!(r.relation, RelationKind::Over | RelationKind::Under);
+    let own = |r: &Relation| keep.contains(&(r.subject.clone(), r.object.clone()));
+    let placed: BTreeSet<String> = spec
+        .relations
+        .iter()
+        .filter(|r| own(r) && !stacked(r))
+        .map(|r| r.subject.clone())
+        .collect();
+    spec.relations
+        .retain(|r| own(r) || stacked(r) || !placed.contains(&r.subject));
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)
@@ -374,289 +385,4 @@ fn shelter_group(spec: &mut SceneSpec) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn spec(objects: &[(&str, u32, [f64; 3])], relations: &[(&str, &str, &str)]) -> SceneSpec {
-        let objects: Vec<String> = objects
-            .iter()
-            .map(|(c, n, s)| format!(r#""{c}":{{"number":{n},"size":{s:?},"description":"d"}}"#))
-            .collect();
-        let relations: Vec<String> = relations
-            .iter()
-            .map(|(s, r, o)| format!(r#"{{"subject":"{s}","relation":"{r}","object":"{o}"}}"#))
-            .collect();
-        let text = format!(
-            r#"{{"scene_type":"outdoor","scene_text":"t","objects":{{{}}},"relations":[{}]}}"#,
-            objects.join(","),
-            relations.join(",")
-        );
-        serde_json::from_str(&text).expect("spec")
-    }
-
-    /// Every relation of `s` as the text's own (kept by `apply`).
-    fn user_pairs(s: &SceneSpec) -> BTreeSet<(String, String)> {
-        s.relations
-            .iter()
-            .map(|r| (r.subject.clone(), r.object.clone()))
-            .collect()
-    }
-
-    fn has(spec: &SceneSpec, s: &str, rel: RelationKind, o: &str) -> bool {
-        spec.relations
-            .iter()
-            .any(|r| r.subject == s && r.relation == rel && r.object == o)
-    }
-
-    #[test]
-    fn every_line_of_the_groups_table_reads() {
-        let lines = include_str!("kb/groups.txt")
-            .lines()
-            .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-            .count();
-        assert_eq!(
-            rules().len(),
-            lines,
-            "a line of kb/groups.txt does not read"
-        );
-        let kb = super::super::kb::KnowledgeBase::builtin();
-        for r in rules() {
-            let known = |ns: &[&str]| {
-                ns.iter()
-                    .any(|n| n.starts_with("any ") || kb.object(n).is_some())
-            };
-            assert!(
-                known(&r.subjects) && known(&r.objects),
-                "{:?} {:?}",
-                r.subjects,
-                r.objects
-            );
-        }
-    }
-
-    #[test]
-    fn any_kind_of_bridge_crosses_the_pond() {
-        for bridge in ["wooden bridge", "bridge", "stone bridge"] {
-            let mut s = spec(
-                &[("pond", 1, [3.0, 2.0, 0.3]), (bridge, 1, [1.2, 3.5, 1.0])],
-                &[],
-            );
-            apply(&mut s, &BTreeSet::new());
-            assert!(
-                has(&s, "pond1", RelationKind::Under, &format!("{bridge}1")),
-                "{bridge}: {:?}",
-                s.relations
-            );
-        }
-        let mut s = spec(
-            &[
-                ("pond", 1, [3.0, 2.0, 0.3]),
-                ("bridge table", 1, [1.0, 1.0, 1.0]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        assert!(
-            s.relations.is_empty(),
-            "a bridge table is no bridge: {:?}",
-            s.relations
-        );
-    }
-
-    #[test]
-    fn things_around_a_fire_form_a_ring_and_seats_spread_over_every_table() {
-        let mut s = spec(
-            &[
-                ("tent", 3, [2.5, 2.5, 1.5]),
-                ("fire pit", 1, [1.0, 1.0, 0.4]),
-            ],
-            &[
-                ("tent1", "AROUND", "fire pit1"),
-                ("tent2", "AROUND", "fire pit1"),
-            ],
-        );
-        let keep = user_pairs(&s);
-        apply(&mut s, &keep);
-        assert!(
-            has(&s, "tent1", RelationKind::Circle, "fire pit1"),
-            "{:?}",
-            s.relations
-        );
-        // a table is no ring centre: chairs around it stay at its sides
-        let mut s = spec(
-            &[
-                ("dining chair", 10, [0.45, 0.5, 0.9]),
-                ("dining table", 1, [1.8, 0.9, 0.75]),
-                ("kitchen table", 1, [1.2, 0.8, 0.75]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        let at = |t: &str| {
-            s.relations
-                .iter()
-                .filter(|r| r.relation == RelationKind::Around && r.object == t)
-                .count()
-        };
-        assert_eq!(
-            (at("dining table1"), at("kitchen table1")),
-            (5, 5),
-            "{:?}",
-            s.relations
-        );
-        // benches down the sides of a table
-        let mut s = spec(
-            &[
-                ("bench", 2, [1.2, 0.4, 0.45]),
-                ("dining table", 1, [2.2, 1.0, 0.75]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        assert!(
-            has(&s, "bench2", RelationKind::Around, "dining table1"),
-            "{:?}",
-            s.relations
-        );
-    }
-
-    #[test]
-    fn one_nightstand_for_twin_beds_stands_between_them_and_two_beds_keep_their_own() {
-        let beds = |nightstands: u32| {
-            let mut s = spec(
-                &[
-                    ("single bed", 2, [1.0, 2.0, 0.9]),
-                    ("nightstand", nightstands, [0.5, 0.4, 0.55]),
-                ],
-                &[],
-            );
-            apply(&mut s, &BTreeSet::new());
-            s
-        };
-        let s = beds(1);
-        for bed in ["single bed1", "single bed2"] {
-            assert!(
-                has(&s, "nightstand1", RelationKind::Flank, bed),
-                "{bed}: {:?}",
-                s.relations
-            );
-        }
-        let s = beds(2);
-        assert!(
-            has(&s, "nightstand1", RelationKind::Flank, "single bed1")
-                && has(&s, "nightstand2", RelationKind::Flank, "single bed2"),
-            "{:?}",
-            s.relations
-        );
-        assert_eq!(s.relations.len(), 2, "{:?}", s.relations);
-    }
-
-    #[test]
-    fn hosts_and_supports_grow_to_what_they_hold_and_no_further() {
-        // eight stools at one bar: the bar grows to seat them
-        let mut s = spec(
-            &[
-                ("bar counter", 1, [3.0, 0.7, 1.1]),
-                ("bar stool", 8, [0.4, 0.4, 0.75]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        let bar = s.objects["bar counter"].size;
-        assert!(counter_seats(bar) >= 8 && bar[0] < 4.5, "{bar:?}");
-        // a bar that seats them already keeps its size
-        let mut s = spec(
-            &[
-                ("bar counter", 1, [3.0, 0.7, 1.1]),
-                ("bar stool", 4, [0.4, 0.4, 0.75]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        assert_eq!(s.objects["bar counter"].size, [3.0, 0.7, 1.1]);
-        // ten round tables for eighty chairs: each seats eight and stays square
-        let mut s = spec(
-            &[
-                ("round table", 10, [1.0, 1.0, 0.75]),
-                ("dining chair", 80, [0.45, 0.5, 0.9]),
-            ],
-            &[],
-        );
-        apply(&mut s, &BTreeSet::new());
-        let t = s.objects["round table"].size;
-        assert!(table_seats(t) >= 8 && t[0] == t[1], "{t:?}");
-        // four computers on a 1.2 m bench: the bench grows; one monitor on a desk grows nothing
-        let mut s = spec(
-            &[
-                ("science bench", 1, [1.2, 0.8, 0.9]),
-                ("computer", 4, [0.6, 0.25, 0.5]),
-            ],
-            &(1..=4)
-                .map(|k| {
-                    (
-                        ["computer1", "computer2", "computer3", "computer4"][k - 1],
-                        "OVER",
-                        "science bench1",
-                    )
-                })
-                .collect::<Vec<_>>(),
-        );
-        apply(&mut s, &BTreeSet::new());
-        let b = s.objects["science bench"].size;
-        assert!(b[0] >= 4.0 * 0.6 && b[0] <= 3.6 + 1e-9, "{b:?}");
-        let mut s = spec(
-            &[("tv stand", 1, [1.2, 0.4, 0.5]), ("tv", 1, [1.4, 0.1, 0.8])],
-            &[("tv1", "OVER", "tv stand1")],
-        );
-        apply(&mut s, &BTreeSet::new());
-        assert_eq!(s.objects["tv stand"].size[0], 1.2);
-    }
-
-    #[test]
-    fn seats_bind_to_the_tables_named_before_default_desks() {
-        let objects = [
-            ("dining chair", 8, [0.45, 0.5, 0.9]),
-            ("dining table", 2, [1.8, 0.9, 0.75]),
-            ("school desk", 8, [0.7, 0.5, 0.75]),
-        ];
-        let mut s = spec(&objects, &[]);
-        let named: BTreeSet<String> = ["dining chair", "dining table"].map(String::from).into();
-        apply_named(&mut s, &BTreeSet::new(), &named);
-        let at_tables = s
-            .relations
-            .iter()
-            .filter(|r| r.relation == RelationKind::Around && r.object.starts_with("dining table"))
-            .count();
-        assert_eq!(at_tables, 8, "{:?}", s.relations);
-        // nothing named: the rules' order (a classroom's pupils at their desks)
-        let mut s = spec(&objects, &[]);
-        apply(&mut s, &BTreeSet::new());
-        assert!(
-            has(&s, "dining chair1", RelationKind::AtBack, "school desk1"),
-            "{:?}",
-            s.relations
-        );
-    }
-
-    #[test]
-    fn a_seat_in_front_of_a_console_sits_at_it() {
-        let mut s = spec(
-            &[
-                ("spaceship console", 2, [1.6, 0.8, 1.1]),
-                ("office chair", 2, [0.65, 0.65, 1.1]),
-            ],
-            &[
-                ("office chair1", "FRONT", "spaceship console1"),
-                ("office chair2", "FRONT", "spaceship console2"),
-            ],
-        );
-        let keep = user_pairs(&s);
-        apply(&mut s, &keep);
-        assert!(
-            has(&s, "office chair1", RelationKind::At, "spaceship console1")
-                && has(&s, "office chair2", RelationKind::At, "spaceship console2"),
-            "{:?}",
-            s.relations
-        );
-    }
-}
+mod tests;

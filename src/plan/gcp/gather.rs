@@ -3,9 +3,9 @@
 //! the big ones (tents) beyond the small ones (seats); and a seat pulled up to its table, desk or
 //! counter keeps a spot free beside or behind it where a person stands to sit down, which nothing
 //! placed later takes away (a chair wedged between a wall and a planter is no seat).
-use super::spacing::{HEAD_HEIGHT, SPOT, TABLE_ROOM};
+use super::spacing::{HEAD_HEIGHT, SEAT_GAP, SPOT, TABLE_ROOM};
 use super::{yaw_facing, Pose, Problem};
-use crate::plan::check::{overlap_depth, Box2, CIRCLE_GAP};
+use crate::plan::check::{gap, overlap_depth, penetration, Box2, CIRCLE_GAP};
 use crate::plan::spec::RelationKind;
 use std::f64::consts::TAU;
 
@@ -14,6 +14,18 @@ use std::f64::consts::TAU;
 const BIG_MEMBER: f64 = 1.5;
 /// Weight of a ring member standing closer to its neighbours than an even spread would.
 const SPREAD_WEIGHT: f64 = 6.0;
+/// Gap (m) between a flanker and the side of what it flanks, as its poses keep it.
+const FLANK_SIDE_GAP: f64 = 0.02;
+/// Weight of a thing taking the spot a flanker still to come needs: more than a relation of its
+/// own, since the flanker then loses its relation and its place.
+const FLANK_WEIGHT: f64 = 12.0;
+/// Weight (per metre) of the gap between what stands in front of a thing on a support and the
+/// support: more than the walkway the search keeps from unrelated things (2 per metre) and,
+/// 0.2 m past a seat's gap, than the search's seeded jitter (at most 3).
+const DRAWN_UP_WEIGHT: f64 = 20.0;
+/// Weight of a seat at a table standing off the spots the table plans for its seats: more than
+/// the search's seeded jitter (at most 3), less than a relation.
+const SPREAD_SEAT_WEIGHT: f64 = 4.0;
 /// Weight of a seat left with no standing spot.
 const ACCESS_WEIGHT: f64 = 8.0;
 
@@ -113,6 +125,15 @@ impl Problem {
         // A seat keeps a standing spot; nothing takes the last one of a placed seat.
         if b.z0 < HEAD_HEIGHT && b.z1 > 0.05 {
             if let Some(t) = self.seat_table(i) {
+                // and sits where its table spreads its seats, where it can
+                let around = self.rels[i]
+                    .iter()
+                    .any(|r| r.0 == RelationKind::Around && r.1 == t && r.2);
+                if let Some(pt) = placed[t].filter(|_| around) {
+                    if self.off_planned_spot(i, b, t, &self.boxed(t, &pt)) {
+                        score -= SPREAD_SEAT_WEIGHT;
+                    }
+                }
                 if !self.has_spot(b, t, None, boxes) {
                     score -= ACCESS_WEIGHT;
                 }
@@ -156,7 +177,120 @@ impl Problem {
                 }
             }
         }
-        score
+        score - self.flank_cost(i, b, placed, boxes) - self.drawn_up_cost(i, b, placed)
+    }
+
+    /// What stands in front of a thing on a support (a chair before a computer on a bench)
+    /// is drawn up to the support, where a person uses it: the cost of its gap to it.
+    fn drawn_up_cost(&self, i: usize, b: &Box2, placed: &[Option<Pose>]) -> f64 {
+        let mut cost = 0.0;
+        for &(rel, j, subject) in &self.rels[i] {
+            if !subject || rel != RelationKind::Front || placed[j].is_none() {
+                continue;
+            }
+            for &(rel, k, on) in &self.rels[j] {
+                let Some(pk) = placed[k].filter(|_| on && rel == RelationKind::Over) else {
+                    continue;
+                };
+                cost += DRAWN_UP_WEIGHT * (gap(b, &self.boxed(k, &pk)) - SEAT_GAP).max(0.0);
+            }
+        }
+        cost
+    }
+
+    /// The FLANK subjects of `k` not placed yet (the armchairs either side of a fireplace).
+    fn flankers_left(&self, k: usize, placed: &[Option<Pose>]) -> Vec<usize> {
+        self.rels[k]
+            .iter()
+            .filter(|&&(rel, _, subject)| rel == RelationKind::Flank && !subject)
+            .map(|r| r.1)
+            .filter(|&s| placed[s].is_none())
+            .collect()
+    }
+
+    /// How many of the two spots beside box `bk` (instance `k`) are free for its flankers
+    /// `left` (the widest of them, backs in line with `k`'s): inside the room, clear of what
+    /// is placed but the flankers' own partners (and of `extra`).
+    fn free_flanks(
+        &self,
+        bk: &Box2,
+        left: &[usize],
+        extra: Option<&Box2>,
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> usize {
+        let [w, d, _] = self.room;
+        let s = left
+            .iter()
+            .map(|&f| self.inst[f].size)
+            .fold([0.0f64; 3], |a, s| {
+                [a[0].max(s[0]), a[1].max(s[1]), a[2].max(s[2])]
+            });
+        let yaw = (-bk.ey[0]).atan2(bk.ey[1]).to_degrees();
+        let [hw, hd] = bk.half;
+        let clear = |spot: &Box2, o: &Box2| penetration(spot, o) <= 0.02;
+        [-1.0, 1.0]
+            .into_iter()
+            .filter(|side| {
+                let (lx, ly) = (side * (hw + FLANK_SIDE_GAP + 0.5 * s[0]), -hd + 0.5 * s[1]);
+                let c = [
+                    bk.c[0] + lx * bk.ex[0] + ly * bk.ey[0],
+                    bk.c[1] + lx * bk.ex[1] + ly * bk.ey[1],
+                ];
+                let spot = Box2::new(c, yaw, [s[0], s[1]], 0.0, s[2]);
+                let [x0, y0, x1, y1] = spot.aabb();
+                x0 >= -0.5 * w
+                    && x1 <= 0.5 * w
+                    && y0 >= -0.5 * d
+                    && y1 <= 0.5 * d
+                    && extra.is_none_or(|e| clear(&spot, e))
+                    && boxes.iter().enumerate().all(|(j, bj)| {
+                        let Some((bj, _)) = bj else { return true };
+                        left.iter().any(|&f| self.linked(f, j)) || clear(&spot, bj)
+                    })
+            })
+            .count()
+    }
+
+    /// The cost of pose box `b` for `i` keeping flank spots: a thing with flankers to come
+    /// stands where both sides of it are free, and nothing placed before them takes the spot
+    /// one of them needs (a TV stand beside the fireplace whose armchairs are still to come).
+    fn flank_cost(
+        &self,
+        i: usize,
+        b: &Box2,
+        placed: &[Option<Pose>],
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> f64 {
+        if b.z0 >= HEAD_HEIGHT {
+            return 0.0;
+        }
+        let mut cost = 0.0;
+        let own = self.flankers_left(i, placed);
+        if !own.is_empty() && self.free_flanks(b, &own, None, boxes) < own.len().min(2) {
+            cost += ACCESS_WEIGHT;
+        }
+        let ab = b.aabb();
+        for (k, bk) in boxes.iter().enumerate() {
+            let Some((bk, ak)) = bk else { continue };
+            if k == i || aabb_gap(ak, &ab) > 2.0 {
+                continue;
+            }
+            let left: Vec<usize> = self
+                .flankers_left(k, placed)
+                .into_iter()
+                .filter(|&f| f != i)
+                .collect();
+            if left.is_empty() || self.flankers_left(k, placed).contains(&i) {
+                continue;
+            }
+            let need = left.len().min(2);
+            if self.free_flanks(bk, &left, None, boxes) >= need
+                && self.free_flanks(bk, &left, Some(b), boxes) < need
+            {
+                cost += FLANK_WEIGHT;
+            }
+        }
+        cost
     }
 
     /// Whether `i` and `j` are related in the spec.

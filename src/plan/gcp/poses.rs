@@ -34,33 +34,56 @@ impl Problem {
         };
         match rel {
             RelationKind::Around => {
-                // The partner's four sides, each with as many seats as its length takes, every
-                // seat turned to the table (at its right, local +x, a seat faces -x: yaw + 90).
-                // People fill an oblong table's long sides first: its ends are offered only when
-                // the long sides cannot hold every seat at it.
+                // The partner's four sides, every seat turned to the table (at its right,
+                // local +x, a seat faces -x: yaw + 90). People fill an oblong table's long
+                // sides first, its ends only when the long sides cannot hold every seat at it,
+                // and spread over the sides: the seats the table's sides take in turn
+                // (`sides_of`), evenly along each side (four at a small square table: one a
+                // side, centred); without such a spread, each side's slots.
                 let seats = self.rels[j]
                     .iter()
                     .filter(|&&(rel, _, subject)| rel == RelationKind::Around && !subject)
                     .count();
                 let (long, short) = (hw.max(hd), hw.min(hd));
                 let ends_needed = long <= 1.2 * short || seats > 2 * slots(2.0 * long, s[0]).len();
+                // (a seat much wider than a table's end, a bench, is left to the slots)
+                let spread = self
+                    .sides_of(j)
+                    .1
+                    .filter(|_| !(s[0] > 1.25 * 2.0 * short && s[0] > 0.8))
+                    .map(|(count, _)| count);
                 for (side, yaw_off) in [(0usize, 180.0), (1, 0.0), (2, 90.0), (3, -90.0)] {
                     let (len, half_across) = if side < 2 {
                         (2.0 * hw, hd)
                     } else {
                         (2.0 * hd, hw)
                     };
-                    if !ends_needed && len < 2.0 * long - 1e-9 {
-                        continue;
-                    }
-                    // a seat much wider than a side (a bench at a table's end) sits on the
-                    // long sides only
-                    if s[0] > 1.25 * len && s[0] > 0.8 {
-                        continue;
-                    }
+                    // (a side with planned seats offers its slots too, and its ends beside a
+                    // lone centred seat, where a planned spot is taken or against a wall; the
+                    // search's score keeps to the planned ones)
+                    let along: Vec<f64> = match spread {
+                        Some(count) if count[side] == 0 => continue,
+                        Some(count) => (0..count[side])
+                            .map(|m| len * ((m as f64 + 0.5) / count[side] as f64 - 0.5))
+                            .chain(slots(len, s[0]))
+                            .chain(if count[side] == 1 {
+                                vec![-0.5 * len, 0.5 * len]
+                            } else {
+                                vec![]
+                            })
+                            .collect(),
+                        // a seat much wider than a side (a bench at a table's end) sits on
+                        // the long sides only
+                        None if (!ends_needed && len < 2.0 * long - 1e-9)
+                            || (s[0] > 1.25 * len && s[0] > 0.8) =>
+                        {
+                            continue
+                        }
+                        None => slots(len, s[0]),
+                    };
                     for g in [0.05, 0.15] {
                         let off = half_across + g + 0.5 * s[1];
-                        for t in slots(len, s[0]) {
+                        for &t in &along {
                             let c = match side {
                                 0 => at(t, off),
                                 1 => at(t, -off),
@@ -77,8 +100,21 @@ impl Problem {
                 }
             }
             RelationKind::At => {
-                // A row along the partner's front, facing it.
-                for g in [0.02, 0.1, 0.2] {
+                // A row along the partner's front, facing it, in line with the seats already
+                // at it (stools at a bar in one straight row).
+                let mut gaps = vec![0.02, 0.1, 0.2];
+                let mate = self.rels[j]
+                    .iter()
+                    .filter(|&&(rel, k, subject)| rel == RelationKind::At && !subject && k != i)
+                    .find_map(|&(_, k, _)| placed[k].map(|q| (k, q)));
+                if let Some((k, q)) = mate {
+                    let d = [q.c[0] - bj.c[0], q.c[1] - bj.c[1]];
+                    let g = d[0] * bj.ey[0] + d[1] * bj.ey[1] - hd - 0.5 * self.inst[k].size[1];
+                    if (0.0..=0.3).contains(&g) {
+                        gaps = vec![g];
+                    }
+                }
+                for g in gaps {
                     for t in slots(2.0 * hw, s[0]) {
                         out.push(Pose {
                             c: at(t, hd + g + 0.5 * s[1]),
@@ -173,9 +209,54 @@ impl Problem {
                     }
                 }
             }
+            RelationKind::Over if self.used_from_front(i) => {
+                // A thing someone sits or stands in front of (a computer with its chair) stands
+                // at the front edge of its support, side by side with the others there.
+                let ly = hd - 0.5 * s[1] - 0.02;
+                for t in slots(2.0 * hw, s[0]) {
+                    out.push(Pose {
+                        c: at(t, ly),
+                        yaw: pj.yaw,
+                        z: bj.z1,
+                    });
+                }
+            }
             _ => return None,
         }
         Some(out)
+    }
+}
+
+impl Problem {
+    /// Whether seat `i` at box `b` stands off the spots its table `t` (box `bt`) plans for its
+    /// seats (`sides_of`: one a side, centred, at a small table for four); false when the
+    /// table plans none.
+    pub(super) fn off_planned_spot(&self, i: usize, b: &Box2, t: usize, bt: &Box2) -> bool {
+        let Some((count, _)) = self.sides_of(t).1 else {
+            return false;
+        };
+        let s = self.inst[i].size;
+        let short = bt.half[0].min(bt.half[1]);
+        if s[0] > 1.25 * 2.0 * short && s[0] > 0.8 {
+            return false;
+        }
+        let l = bt.local(b.c);
+        let [hw, hd] = bt.half;
+        // the side it stands at, and where along it
+        let (side, along, len) = if l[1].abs() - hd > l[0].abs() - hw {
+            (if l[1] > 0.0 { 0 } else { 1 }, l[0], 2.0 * hw)
+        } else {
+            (if l[0] > 0.0 { 2 } else { 3 }, l[1], 2.0 * hd)
+        };
+        let n = count[side];
+        !(0..n).any(|m| (len * ((m as f64 + 0.5) / n as f64 - 0.5) - along).abs() < 0.05)
+    }
+
+    /// Whether something is in FRONT of or AT instance `i` (a chair before a computer).
+    fn used_from_front(&self, i: usize) -> bool {
+        self.rels[i].iter().any(|&(rel, _, subject)| {
+            !subject && matches!(rel, RelationKind::Front | RelationKind::At)
+        })
     }
 }
 
@@ -226,6 +307,47 @@ mod tests {
                     "{chairs} chairs, seed {seed}: {ends} at the ends (at most {want_ends})"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn four_seats_at_a_small_square_table_sit_one_a_side_centred() {
+        let rels: Vec<String> = (1..=4)
+            .map(|k| {
+                format!(
+                    r#"{{"subject":"cafe chair{k}","relation":"AROUND","object":"cafe table1"}}"#
+                )
+            })
+            .collect();
+        let text = format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","room":{{"size":[4.0,4.0,2.8]}},
+            "objects":{{"cafe table":{{"number":1,"size":[1.2,1.2,0.75],"description":"d"}},
+            "cafe chair":{{"number":4,"size":[0.45,0.5,0.85],"description":"d"}}}},
+            "relations":[{}]}}"#,
+            rels.join(",")
+        );
+        let spec: SceneSpec = serde_json::from_str(&text).expect("spec");
+        for seed in 0..3 {
+            let l = layout(&spec, LayoutOptions::seeded(seed)).expect("laid out");
+            let get = |id: &str| Box2::of(l.objects.iter().find(|o| o.id == id).expect("placed"));
+            let t = get("cafe table1");
+            let mut sides = vec![];
+            for k in 1..=4 {
+                let p = t.local(get(&format!("cafe chair{k}")).c);
+                let (across, along) = if p[0].abs() > p[1].abs() {
+                    (p[0], p[1])
+                } else {
+                    (p[1], p[0])
+                };
+                assert!(
+                    along.abs() < 0.05,
+                    "seed {seed}: chair{k} off centre by {along:.2}"
+                );
+                sides.push((p[0].abs() > p[1].abs(), across > 0.0));
+            }
+            sides.sort();
+            sides.dedup();
+            assert_eq!(sides.len(), 4, "seed {seed}: two seats on one side");
         }
     }
 }
