@@ -253,7 +253,12 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
         let Some(per) = crate::plan::groups::seats_per(&probe, seat, &table) else {
             continue;
         };
-        let seat_named = explicit.contains_key(seat);
+        // "the laptop": a definite mention names it too
+        let seat_named = explicit.contains_key(seat)
+            || r.mentions
+                .iter()
+                .zip(cats.iter())
+                .any(|(m, c)| c == seat && m.definite && !m.negated && !m.reference);
         // "along the counter": one particular table, however many seats it gets
         let one_said = r
             .mentions
@@ -305,15 +310,22 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 each = each.min(2);
             }
             // seats of another kind the text puts at that table take their places ("a desk
-            // and a gaming chair" has one chair)
-            let taken: u32 = explicit
-                .keys()
-                .filter(|c| {
-                    *c != seat
-                        && crate::plan::groups::group_of(&probe, c).is_some_and(|(_, t)| t == table)
-                })
-                .map(|c| counts.get(c).copied().unwrap_or(0))
-                .sum();
+            // and a gaming chair" has one chair); what stands on it takes no seat's place
+            use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+            let seat_kind = |c: &str| {
+                crate::plan::groups::group_of(&probe, c)
+                    .filter(|(k, t)| *t == table && matches!(k, Around | At | AtBack | Circle))
+                    .is_some()
+            };
+            let taken: u32 = if seat_kind(seat) {
+                explicit
+                    .keys()
+                    .filter(|c| *c != seat && seat_kind(c))
+                    .map(|c| counts.get(c).copied().unwrap_or(0))
+                    .sum()
+            } else {
+                0
+            };
             counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred
