@@ -238,3 +238,12 @@ fn things_on_a_counted_support_and_on_a_named_one_stay() {
     let s = plan("a study with a desk and a laptop");
     assert_eq!(number(&s, "office chair"), 1, "{:?}", s.objects.keys());
 }
+
+#[test]
+fn the_bare_noun_of_a_kind_named_before_is_that_object() {
+    let s = plan("a courtyard with a cafe table under a parasol and two chairs at the table");
+    assert_eq!(number(&s, "cafe table"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "dining table"), 0, "{:?}", s.objects.keys());
+    let s = plan("a kitchen with a farmhouse table and a bench beside the table");
+    assert_eq!(number(&s, "dining table"), 0, "{:?}", s.objects.keys());
+}
