@@ -160,9 +160,17 @@ fn issue_21_other_languages_are_refused() {
 /// ones the lexicon knows); short prompts in other languages are still refused.
 #[test]
 fn short_english_with_an_unknown_noun_is_read() {
-    for p in ["a huge viewscreen", "a tiny orrery", "two enormous zeppelins"] {
+    for p in [
+        "a huge viewscreen",
+        "a tiny orrery",
+        "two enormous zeppelins",
+    ] {
         let s = plan(p);
-        assert_eq!(s.instances().len(), if p.starts_with("two") { 2 } else { 1 }, "{p}");
+        assert_eq!(
+            s.instances().len(),
+            if p.starts_with("two") { 2 } else { 1 },
+            "{p}"
+        );
     }
     for p in [
         "une chambre avec un grand lit double",
