@@ -164,3 +164,12 @@ fn a_thing_of_its_own_for_each_spreads_over_them() {
         "{benches:?}"
     );
 }
+
+#[test]
+fn a_table_for_two_is_small_and_seats_add_up_over_mentions() {
+    let s = plan("a breakfast room with a table for two");
+    let t = &s.objects["dining table"];
+    assert!(t.size[0] < 1.0 && t.size[1] < 1.0, "{:?}", t.size);
+    let s = plan("a diner with four tables for two and a table for eight");
+    assert_eq!(number(&s, "dining chair"), 16, "{:?}", s.objects.keys());
+}

@@ -91,7 +91,13 @@ fn feature_count<'a>(before: &'a str, of: Option<&str>) -> Option<(usize, u32, &
 fn definite_references(r: &mut Reading) {
     for k in 0..r.mentions.len() {
         let m = &r.mentions[k];
-        if !m.definite || m.count.is_some() || m.negated || m.text.contains(' ') {
+        // "the headmaster's desk" is a particular one of its own
+        if !m.definite
+            || m.count.is_some()
+            || m.negated
+            || m.owner.is_some()
+            || m.text.contains(' ')
+        {
             continue;
         }
         let head = super::singular(&m.text);
