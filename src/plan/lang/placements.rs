@@ -173,6 +173,51 @@ pub(super) fn read_placements(r: &mut Reading) {
     }
 }
 
+/// "computers on four benches", "a drill on each bench": a support the text names whose kind
+/// holds nothing (a bench to sit on) is the kind of its noun that holds things (a work bench,
+/// `kb/objects.txt` names and `kb/placement.txt` supports), the one that holds the thing
+/// placed first.
+pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading) {
+    use crate::plan::gcp::classes::Placements;
+    let table = Placements::builtin();
+    for &(si, rel, oi) in &r.relations {
+        let (s, o) = (&r.mentions[si], &r.mentions[oi]);
+        if rel != RelationKind::Over
+            || !stands_on_surfaces(&s.category)
+            || table.is_support(&o.category)
+            || !o.known
+        {
+            continue;
+        }
+        let head = super::singular(o.text.rsplit(' ').next().unwrap_or(""));
+        let holds = |c: &str| {
+            let p = table.get(&s.category);
+            (
+                p.is_some_and(|p| p.supports.iter().any(|x| x == c)),
+                table.is_support(c),
+            )
+        };
+        let kind = kb
+            .objects
+            .iter()
+            .filter(|k| {
+                std::iter::once(&k.category)
+                    .chain(&k.synonyms)
+                    .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
+            })
+            .filter(|k| holds(&k.category).1)
+            .min_by_key(|k| !holds(&k.category).0)
+            .map(|k| k.category.clone());
+        if let Some(c) = kind {
+            let was = r.mentions[oi].category.clone();
+            // every mention of that support ("on benches ... each bench")
+            for m in r.mentions.iter_mut().filter(|m| m.category == was) {
+                m.category = c.clone();
+            }
+        }
+    }
+}
+
 /// The thing placed on mention `support` when the text reads "THING on the SUPPORT" right
 /// before `pos` (the phrase that follows the support's noun phrase).
 fn placed_on(ms: &[Mention], t: &str, support: usize, pos: usize) -> Option<usize> {
