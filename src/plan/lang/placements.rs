@@ -174,9 +174,9 @@ pub(super) fn read_placements(r: &mut Reading) {
 }
 
 /// "computers on four benches", "a drill on each bench": a support the text names whose kind
-/// holds nothing (a bench to sit on) is the kind of its noun that holds things (a work bench,
-/// `kb/objects.txt` names and `kb/placement.txt` supports), the one that holds the thing
-/// placed first.
+/// holds nothing (a bench to sit on) is the kind of its noun that holds things (a lab or work
+/// bench, `kb/objects.txt` names and `kb/placement.txt` supports): the one that holds the thing
+/// placed first, then one whose name keeps the noun.
 pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading) {
     use crate::plan::gcp::classes::Placements;
     let table = Placements::builtin();
@@ -206,7 +206,11 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
                     .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
             })
             .filter(|k| holds(&k.category).1)
-            .min_by_key(|k| !holds(&k.category).0)
+            // the kind the thing placed stands on, then one its noun names ("science bench")
+            .min_by_key(|k| {
+                let own = k.category.rsplit(' ').next() == Some(head.as_str());
+                (!holds(&k.category).0, !own)
+            })
             .map(|k| k.category.clone());
         if let Some(c) = kind {
             let was = r.mentions[oi].category.clone();
