@@ -156,6 +156,9 @@ pub(super) fn read_placements(r: &mut Reading) {
             let s = placed_on(&r.mentions, &t, s, m.start())
                 .filter(|_| stands_on_surfaces(&r.mentions[o].category))
                 .unwrap_or(s);
+            // "a nightstand with a lamp on it beside each bed": after "on it" the phrase is
+            // said of what "it" is
+            let s = said_of_pronoun(&r.mentions, &t, s, m.start()).unwrap_or(s);
             for &o in &os {
                 if r.mentions[s].category != r.mentions[o].category {
                     r.relations.push((s, *rel, o));
@@ -220,6 +223,19 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
             }
         }
     }
+}
+
+/// What the pronoun of "THING on it" right before `pos` refers to, when mention `thing` is
+/// placed that way.
+fn said_of_pronoun(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<usize> {
+    let end = ms.get(thing)?.end;
+    let between = t.get(end..pos)?;
+    let on_it = re(r"^ (?:on top of|on|atop|upon) (?:it|them) $");
+    if !on_it.is_match(between) {
+        return None;
+    }
+    let at = end + between.find(" it").or_else(|| between.find(" them"))?;
+    referents(ms, t, at + 1).first().copied()
 }
 
 /// The thing placed on mention `support` when the text reads "THING on the SUPPORT" right
