@@ -156,6 +156,32 @@ fn issue_21_other_languages_are_refused() {
     assert!(e.is_some_and(|e| e.contains("--llm-url")));
 }
 
+/// A short English prompt with one noun the planner lacks is English (its other words are
+/// ones the lexicon knows); short prompts in other languages are still refused.
+#[test]
+fn short_english_with_an_unknown_noun_is_read() {
+    for p in [
+        "a huge viewscreen",
+        "a tiny orrery",
+        "two enormous zeppelins",
+    ] {
+        let s = plan(p);
+        assert_eq!(
+            s.instances().len(),
+            if p.starts_with("two") { 2 } else { 1 },
+            "{p}"
+        );
+    }
+    for p in [
+        "une chambre avec un grand lit double",
+        "uma sala com um sofá e uma mesa",
+        "een woonkamer met een bank en een tafel",
+    ] {
+        let e = plan_prompt(p).err().map(|e| e.to_string());
+        assert!(e.is_some_and(|e| e.contains("--llm-url")), "{p}");
+    }
+}
+
 #[test]
 fn issue_21_room_sizes() {
     let area = |p: &str| {

@@ -164,3 +164,28 @@ fn a_thing_of_its_own_for_each_spreads_over_them() {
         "{benches:?}"
     );
 }
+
+#[test]
+fn a_table_for_two_is_small_and_seats_add_up_over_mentions() {
+    let s = plan("a breakfast room with a table for two");
+    let t = &s.objects["dining table"];
+    assert!(t.size[0] < 1.0 && t.size[1] < 1.0, "{:?}", t.size);
+    let s = plan("a diner with four tables for two and a table for eight");
+    assert_eq!(number(&s, "dining chair"), 16, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn benches_that_hold_things_are_work_benches() {
+    let s = plan("an office with four computers on two benches");
+    // a bench kind that holds things (a lab bench or a work bench)
+    assert_eq!(
+        number(&s, " bench") + number(&s, "workbench"),
+        2,
+        "{:?}",
+        s.objects.keys()
+    );
+    assert!(!s.objects.contains_key("bench"), "{:?}", s.objects.keys());
+    // a bench with nothing on it stays a seat
+    let s = plan("a hallway with a bench and a coat rack");
+    assert!(s.objects.contains_key("bench"), "{:?}", s.objects.keys());
+}

@@ -157,3 +157,93 @@ fn a_thing_on_the_wall_is_the_kind_of_it_that_hangs_there() {
     assert_eq!(number(&s, "tapestry"), 3, "{:?}", s.objects);
     assert_eq!(number(&s, "tapestry stand"), 0, "{:?}", s.objects);
 }
+
+#[test]
+fn a_relation_after_a_support_phrase_belongs_to_the_thing_placed() {
+    // a neighbour that stands on surfaces is the placed thing's neighbour
+    let s = plan("a den with a radio on the sideboard beside the vase");
+    assert!(
+        between(&s, "sideboard", "vase").is_empty(),
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        !between(&s, "radio", "vase").is_empty(),
+        "{:?}",
+        s.relations
+    );
+    // a neighbour on the floor is the support's ("a lamp on the side table next to the sofa")
+    let s = plan("a lounge with a vase on the side table next to the recliner");
+    assert_eq!(
+        between(&s, "side table", "recliner"),
+        vec![RelationKind::Next],
+        "{:?}",
+        s.relations
+    );
+    assert_eq!(between(&s, "vase", "side table"), vec![RelationKind::Over]);
+}
+
+#[test]
+fn it_is_one_thing_and_them_every_thing_said_together() {
+    // "it" is never the plural before it
+    let s = plan("a bar with four stools, a counter and a till on it");
+    assert_eq!(
+        between(&s, "cash register", "bar counter"),
+        vec![RelationKind::Over],
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        s.relations
+            .iter()
+            .all(|r| !r.subject.starts_with("cash register") || !r.object.contains("stool")),
+        "{:?}",
+        s.relations
+    );
+    // "them": both things said together, not the last one
+    let s = plan(
+        "a utility room with a freezer and a washing machine and a shelf on the wall above them",
+    );
+    let shelf = s
+        .objects
+        .keys()
+        .find(|c| c.contains("shelf"))
+        .cloned()
+        .unwrap_or_default();
+    assert!(
+        !between(&s, &shelf, "refrigerator").is_empty(),
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        !between(&s, &shelf, "washing machine").is_empty(),
+        "{:?}",
+        s.relations
+    );
+}
+
+#[test]
+fn things_on_a_counted_support_and_on_a_named_one_stay() {
+    // "on four benches": the number is the support's
+    let s = plan("a workshop with six lamps on three workbenches");
+    assert!(
+        !between(&s, "table lamp", "workbench").is_empty(),
+        "{:?}",
+        s.relations
+    );
+    // "the laptop" beside a lamp on "the desk" is planned
+    let s = plan("a den with a lamp on the desk beside the laptop");
+    assert_eq!(number(&s, "laptop"), 1, "{:?}", s.objects.keys());
+    // what stands on a desk takes no seat's place at it
+    let s = plan("a study with a desk and a laptop");
+    assert_eq!(number(&s, "office chair"), 1, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn the_bare_noun_of_a_kind_named_before_is_that_object() {
+    let s = plan("a courtyard with a cafe table under a parasol and two chairs at the table");
+    assert_eq!(number(&s, "cafe table"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "dining table"), 0, "{:?}", s.objects.keys());
+    let s = plan("a kitchen with a farmhouse table and a bench beside the table");
+    assert_eq!(number(&s, "dining table"), 0, "{:?}", s.objects.keys());
+}

@@ -113,6 +113,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     objects::for_whom(kb, &mut r);
     read_counts(&mut r);
     read_placements(&mut r);
+    placements::supports_hold(kb, &mut r);
     r.not_english = words::not_english(kb, text, &t);
     r
 }

@@ -85,8 +85,43 @@ fn feature_count<'a>(before: &'a str, of: Option<&str>) -> Option<(usize, u32, &
     last
 }
 
+/// "a picnic table under a gazebo and four chairs around the table": a definite bare noun
+/// whose kind the text named before ("the table": a picnic table) refers to that object; it
+/// is no new one.
+fn definite_references(r: &mut Reading) {
+    for k in 0..r.mentions.len() {
+        let m = &r.mentions[k];
+        // "the headmaster's desk" is a particular one of its own
+        if !m.definite
+            || m.count.is_some()
+            || m.negated
+            || m.owner.is_some()
+            || m.text.contains(' ')
+        {
+            continue;
+        }
+        let head = super::singular(&m.text);
+        let earlier = r.mentions[..k]
+            .iter()
+            .rev()
+            .find(|o| {
+                !o.negated
+                    && !o.reference
+                    && o.category != m.category
+                    && o.category.rsplit(' ').next() == Some(head.as_str())
+            })
+            .map(|o| o.category.clone());
+        if let Some(c) = earlier {
+            let m = &mut r.mentions[k];
+            m.category = c;
+            m.reference = true;
+        }
+    }
+}
+
 /// Reads the distributive counts, seats and rows of `r` (after its mentions).
 pub(super) fn read_counts(r: &mut Reading) {
+    definite_references(r);
     let t = r.text.clone();
     // "each X" / "every X" / "per X": a reference to X.
     let each_before = re(r"\b(?:each|every|per)\s+(?:[a-z'-]+\s+){0,2}$");

@@ -29,16 +29,19 @@ pub(super) fn read_placements(r: &mut Reading) {
                     && !m.negated
                     && t[pos..m.start].split_whitespace().all(|w| {
                         is_adjective(w)
-                            || [
-                                "the", "a", "an", "its", "their", "each", "every", "one", "two",
-                            ]
-                            .contains(&w)
+                            || super::number(w).is_some()
+                            || ["the", "a", "an", "its", "their", "each", "every"].contains(&w)
                     })
             })
             .map(|(i, _)| i)
     };
-    let object_after = |ms: &[Mention], pos: usize| -> Option<usize> {
-        referent(ms, &t, pos).or_else(|| named_after(ms, pos))
+    let objects_after = |ms: &[Mention], pos: usize| -> Vec<usize> {
+        let them = referents(ms, &t, pos);
+        if them.is_empty() {
+            named_after(ms, pos).into_iter().collect()
+        } else {
+            them
+        }
     };
     let mut used: Vec<(usize, usize)> = vec![];
     let phrases: &[(&str, Option<RelationKind>)] = &[
@@ -121,6 +124,13 @@ pub(super) fn read_placements(r: &mut Reading) {
             {
                 continue;
             }
+            // "on the side table": the words name an object, no wall
+            if r.mentions
+                .iter()
+                .any(|x| x.start < m.end() && m.start() < x.end)
+            {
+                continue;
+            }
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
                 used.push((m.start(), m.end()));
@@ -136,14 +146,24 @@ pub(super) fn read_placements(r: &mut Reading) {
             let Some(s) = subject_before(&r.mentions, m.start()) else {
                 continue;
             };
-            let Some(o) = object_after(&r.mentions, m.end()) else {
+            let os = objects_after(&r.mentions, m.end());
+            let Some(&o) = os.first() else {
                 continue;
             };
             used.push((m.start(), m.end()));
-            if r.mentions[s].category == r.mentions[o].category {
-                continue;
+            // "a printer on the desk next to the computer": a thing that stands on surfaces is
+            // a neighbour of the thing placed there, not of its support
+            let s = placed_on(&r.mentions, &t, s, m.start())
+                .filter(|_| stands_on_surfaces(&r.mentions[o].category))
+                .unwrap_or(s);
+            // "a nightstand with a lamp on it beside each bed": after "on it" the phrase is
+            // said of what "it" is
+            let s = said_of_pronoun(&r.mentions, &t, s, m.start()).unwrap_or(s);
+            for &o in &os {
+                if r.mentions[s].category != r.mentions[o].category {
+                    r.relations.push((s, *rel, o));
+                }
             }
-            r.relations.push((s, *rel, o));
             if m.as_str() == "between" {
                 // "between the sofa and the armchair": next to both
                 if let Some(o2) = r.mentions.get(o + 1) {
@@ -156,38 +176,161 @@ pub(super) fn read_placements(r: &mut Reading) {
     }
 }
 
-/// The object a pronoun or a part word right after `pos` refers to: "it" / "them" is the last
-/// object named before the phrase's subject ("a painting hanging above it"), a part word of
-/// `kb/words.txt` (parts) the last object named that has such a part ("facing the fire" faces
-/// the fireplace, "above the mantel" is above it).
-fn referent(ms: &[Mention], t: &str, pos: usize) -> Option<usize> {
+/// "computers on four benches", "a drill on each bench": a support the text names whose kind
+/// holds nothing (a bench to sit on) is the kind of its noun that holds things (a lab or work
+/// bench, `kb/objects.txt` names and `kb/placement.txt` supports): the one that holds the thing
+/// placed first, then one whose name keeps the noun.
+pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading) {
+    use crate::plan::gcp::classes::Placements;
+    let table = Placements::builtin();
+    for &(si, rel, oi) in &r.relations {
+        let (s, o) = (&r.mentions[si], &r.mentions[oi]);
+        if rel != RelationKind::Over
+            || !stands_on_surfaces(&s.category)
+            || table.is_support(&o.category)
+            || !o.known
+        {
+            continue;
+        }
+        let head = super::singular(o.text.rsplit(' ').next().unwrap_or(""));
+        let holds = |c: &str| {
+            let p = table.get(&s.category);
+            (
+                p.is_some_and(|p| p.supports.iter().any(|x| x == c)),
+                table.is_support(c),
+            )
+        };
+        let kind = kb
+            .objects
+            .iter()
+            .filter(|k| {
+                std::iter::once(&k.category)
+                    .chain(&k.synonyms)
+                    .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
+            })
+            .filter(|k| holds(&k.category).1)
+            // the kind the thing placed stands on, then one its noun names ("science bench")
+            .min_by_key(|k| {
+                let own = k.category.rsplit(' ').next() == Some(head.as_str());
+                (!holds(&k.category).0, !own)
+            })
+            .map(|k| k.category.clone());
+        if let Some(c) = kind {
+            let was = r.mentions[oi].category.clone();
+            // every mention of that support ("on benches ... each bench")
+            for m in r.mentions.iter_mut().filter(|m| m.category == was) {
+                m.category = c.clone();
+            }
+        }
+    }
+}
+
+/// What the pronoun of "THING on it" right before `pos` refers to, when mention `thing` is
+/// placed that way.
+fn said_of_pronoun(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<usize> {
+    let end = ms.get(thing)?.end;
+    let between = t.get(end..pos)?;
+    let on_it = re(r"^ (?:on top of|on|atop|upon) (?:it|them) $");
+    if !on_it.is_match(between) {
+        return None;
+    }
+    let at = end + between.find(" it").or_else(|| between.find(" them"))?;
+    referents(ms, t, at + 1).first().copied()
+}
+
+/// The thing placed on mention `support` when the text reads "THING on the SUPPORT" right
+/// before `pos` (the phrase that follows the support's noun phrase).
+fn placed_on(ms: &[Mention], t: &str, support: usize, pos: usize) -> Option<usize> {
+    let sup = ms.get(support)?;
+    if !t.get(sup.end..pos)?.trim().is_empty() || support == 0 {
+        return None;
+    }
+    let thing = &ms[support - 1];
+    let on = re(
+        r"^ (?:on top of|on|atop|upon|sitting on|standing on|resting on) (?:(?:the|a|an|its|their|one) )?$",
+    );
+    let before = t.get(thing.end..sup.start)?;
+    // adjectives of the support belong to its mention already
+    (on.is_match(before) && !thing.negated).then_some(support - 1)
+}
+
+/// Whether things of `category` stand on the top of other furniture (`kb/placement.txt`:
+/// on_surface).
+fn stands_on_surfaces(category: &str) -> bool {
+    use crate::plan::gcp::classes::{Class, Placements};
+    matches!(Placements::builtin().class(category), Class::OnSurface(_))
+}
+
+/// Whether the mention names more than one thing.
+fn many(m: &Mention) -> bool {
+    m.plural || m.count.is_some_and(|c| c > 1)
+}
+
+/// Whether only coordination lies between two mentions ("and", "or", commas, determiners).
+fn joined(t: &str, a: &Mention, b: &Mention) -> bool {
+    t.get(a.end..b.start).is_some_and(|between| {
+        between
+            .split(|c: char| !c.is_alphanumeric())
+            .filter(|w| !w.is_empty())
+            .all(|w| {
+                ["and", "or", "a", "an", "the", "some"].contains(&w) || super::number(w).is_some()
+            })
+    })
+}
+
+/// The objects a pronoun or a part word right after `pos` refers to. "it" is the last object
+/// named before the phrase's subject and the things said with it ("a desk with a computer and
+/// a lamp on it": the desk), one thing ("three stools, an island and a bowl on it": the
+/// island); "them" the nearest plural before the subject: a plural noun phrase, or singular
+/// ones said together ("a washer and a dryer and a shelf above them": both). A part word of
+/// `kb/words.txt` (parts) is the last object named that has such a part ("facing the fire"
+/// faces the fireplace, "above the mantel" is above it).
+fn referents(ms: &[Mention], t: &str, pos: usize) -> Vec<usize> {
+    referents_of(ms, t, pos).unwrap_or_default()
+}
+
+fn referents_of(ms: &[Mention], t: &str, pos: usize) -> Option<Vec<usize>> {
     let rest = t.get(pos..)?;
     let mut words = rest
         .split(|c: char| !c.is_alphanumeric() && c != '\'' && c != '-')
         .filter(|w| !w.is_empty());
     let mut w = words.next()?;
-    if ["it", "them"].contains(&w) {
+    let before: Vec<usize> = (0..ms.len())
+        .filter(|&i| ms[i].end <= pos && !ms[i].negated)
+        .collect();
+    if w == "it" {
         // the subject is the last mention before `pos`; the antecedent the one before it and
-        // the things said with it ("a desk with a computer and a lamp on it": the desk)
-        let before: Vec<usize> = (0..ms.len())
-            .filter(|&i| ms[i].end <= pos && !ms[i].negated)
-            .collect();
+        // the things said with it, the first of them that is one thing
         let mut k = before.len().checked_sub(2)?;
-        while k > 0 {
-            let between = t.get(ms[before[k]].end..ms[before[k + 1]].start)?;
-            let joined = between
-                .split(|c: char| !c.is_alphanumeric())
-                .filter(|w| !w.is_empty())
-                .all(|w| {
-                    ["and", "or", "a", "an", "the", "some"].contains(&w)
-                        || super::number(w).is_some()
-                });
-            if !joined {
-                break;
-            }
+        while k > 0 && joined(t, &ms[before[k]], &ms[before[k + 1]]) {
             k -= 1;
         }
-        return before.get(k).copied();
+        let last = before.len() - 2;
+        let one = (k..=last).find(|&j| !many(&ms[before[j]])).unwrap_or(k);
+        return Some(vec![before[one]]);
+    }
+    if w == "them" {
+        // before the subject: a plural, or a run of singulars said together
+        let mut j = before.len().checked_sub(2)?;
+        loop {
+            if many(&ms[before[j]]) {
+                return Some(vec![before[j]]);
+            }
+            let mut from = j;
+            while from > 0
+                && !many(&ms[before[from - 1]])
+                && joined(t, &ms[before[from - 1]], &ms[before[from]])
+            {
+                from -= 1;
+            }
+            if from < j {
+                return Some(before[from..=j].to_vec());
+            }
+            if j == 0 {
+                return Some(vec![before[0]]);
+            }
+            j -= 1;
+        }
     }
     while ["the", "a", "an", "its", "their"].contains(&w) {
         w = words.next()?;
@@ -198,7 +341,10 @@ fn referent(ms: &[Mention], t: &str, pos: usize) -> Option<usize> {
         return None;
     }
     let owners = super::part_owners(w)?;
-    (0..ms.len()).rev().find(|&i| {
-        ms[i].end <= pos && !ms[i].negated && owners.iter().any(|o| *o == ms[i].category)
-    })
+    (0..ms.len())
+        .rev()
+        .find(|&i| {
+            ms[i].end <= pos && !ms[i].negated && owners.iter().any(|o| *o == ms[i].category)
+        })
+        .map(|i| vec![i])
 }

@@ -320,7 +320,9 @@ pub(super) fn not_english(kb: &KnowledgeBase, text: &str, t: &str) -> bool {
         .split(|c: char| !c.is_alphanumeric() && c != '\'')
         .filter(|w| !w.is_empty())
         .collect();
-    // Words an English reader knows: function words, request verbs, object and scene names.
+    // Words an English reader knows: function words, request verbs, object and scene names,
+    // the words of `kb/words.txt` (size words, areas, arrangements) and the nouns of the
+    // lexicon (WordNet's physical things: "a huge zeppelin").
     let (_, objects_by_name) = object_matcher(kb);
     let (_, scenes_by_name) = scene_matcher(kb);
     let known = words
@@ -332,6 +334,10 @@ pub(super) fn not_english(kb: &KnowledgeBase, text: &str, t: &str) -> bool {
                 || number_of(w).is_some()
                 || objects_by_name.contains_key(**w)
                 || scenes_by_name.contains_key(**w)
+                || is_known_word(w)
+                || object_scale(w).is_some()
+                || object_footprint(w).is_some()
+                || crate::plan::lexicon::kind(&singular(w)).is_some()
         })
         .count();
     words.len() >= 3 && other_language(text, known, words.len())

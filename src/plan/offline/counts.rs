@@ -3,6 +3,7 @@
 //! sets ("12 desks" get 12 chairs, "for 24 students" 24 seats, "20 chairs" the tables they
 //! need), clamped to what one category may hold.
 use super::Draft;
+use crate::plan::kb::KnowledgeBase;
 use crate::plan::lang;
 use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType, MAX_NUMBER};
 use std::collections::BTreeMap;
@@ -125,11 +126,60 @@ pub(super) fn mention_counts(d: &mut Draft) {
     }
 }
 
+/// How many `seat`s go round a `table` of footprint `size`.
+fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
+    let objects = [(table, size), (seat, [0.5, 0.5, 0.9])]
+        .into_iter()
+        .map(|(c, size)| {
+            let o = ObjectSpec {
+                number: 1,
+                size,
+                description: String::new(),
+                rows: 0,
+            };
+            (c.to_string(), o)
+        })
+        .collect();
+    let spec = SceneSpec {
+        scene_type: SceneType::Indoor,
+        scene_text: String::new(),
+        room: None,
+        objects,
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
+    crate::plan::groups::seats_per(&spec, seat, table)
+}
+
+/// The size of a `table` that seats `per` (its height kept), when its usual size seats more:
+/// the footprint of the smallest kind of table people sit at (`kb/objects.txt`, the same head
+/// noun) that seats them.
+fn table_seating(kb: &KnowledgeBase, table: &str, seat: &str, per: u32) -> Option<[f64; 3]> {
+    let own = kb.object(table)?.size;
+    let now = capacity(table, seat, own)?;
+    let head = table.rsplit(' ').next()?;
+    let (cap, size) = kb
+        .objects
+        .iter()
+        .filter(|o| o.category.rsplit(' ').next() == Some(head))
+        .filter(|o| seat_for(&o.category, &BTreeMap::new()).is_some())
+        .filter_map(|o| Some((capacity(table, seat, o.size)?, o.size)))
+        .filter(|(c, _)| *c >= per)
+        .min_by(|a, b| {
+            (a.0, a.1[0] * a.1[1])
+                .partial_cmp(&(b.0, b.1[0] * b.1[1]))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })?;
+    (cap < now).then_some([size[0], size[1], own[2]])
+}
+
 /// "A table for six": that many seats at each of those tables. The people the text seats
 /// ("for 24 students"), unless a table's seats were given.
 pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
+    let kb = d.kb;
     let Draft {
         r,
+        sizes,
         cats,
         counts,
         defaults,
@@ -139,6 +189,8 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         ..
     } = d;
     let mut seated = false;
+    // "six tables for two and two tables for six": the seats of every such mention of one
+    // table category add up
     for &(ti, per) in &r.seats_for {
         let table = &cats[ti];
         let Some(&tables) = counts.get(table) else {
@@ -151,7 +203,30 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         inferred
             .entry(seat.clone())
             .or_insert_with(|| crate::plan::understood::seats_phrase(r, ti));
-        let n = per * tables.max(1);
+        let same: Vec<(usize, u32)> = r
+            .seats_for
+            .iter()
+            .filter(|&&(tj, _)| cats[tj] == *table)
+            .copied()
+            .collect();
+        if same.len() > 1 && same[0].0 != ti {
+            continue;
+        }
+        let n = if same.len() > 1 {
+            same.iter()
+                .map(|&(tj, p)| p * r.mentions[tj].count.unwrap_or(tables).max(1))
+                .sum()
+        } else {
+            per * tables.max(1)
+        };
+        // "tables for two": a table the size of one that seats two, not a long one (the
+        // groups' capacity of larger tables counts every side, too many for sizing by)
+        let most = same.iter().map(|&(_, p)| p).max().unwrap_or(per);
+        if !sizes.contains_key(table) && most <= 2 {
+            if let Some(size) = table_seating(kb, table, &seat, most) {
+                sizes.insert(table.clone(), size);
+            }
+        }
         let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
             explicit[&seat].max(n)
         } else {
@@ -253,7 +328,12 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
         let Some(per) = crate::plan::groups::seats_per(&probe, seat, &table) else {
             continue;
         };
-        let seat_named = explicit.contains_key(seat);
+        // "the laptop": a definite mention names it too
+        let seat_named = explicit.contains_key(seat)
+            || r.mentions
+                .iter()
+                .zip(cats.iter())
+                .any(|(m, c)| c == seat && m.definite && !m.negated && !m.reference);
         // "along the counter": one particular table, however many seats it gets
         let one_said = r
             .mentions
@@ -305,15 +385,22 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 each = each.min(2);
             }
             // seats of another kind the text puts at that table take their places ("a desk
-            // and a gaming chair" has one chair)
-            let taken: u32 = explicit
-                .keys()
-                .filter(|c| {
-                    *c != seat
-                        && crate::plan::groups::group_of(&probe, c).is_some_and(|(_, t)| t == table)
-                })
-                .map(|c| counts.get(c).copied().unwrap_or(0))
-                .sum();
+            // and a gaming chair" has one chair); what stands on it takes no seat's place
+            use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+            let seat_kind = |c: &str| {
+                crate::plan::groups::group_of(&probe, c)
+                    .filter(|(k, t)| *t == table && matches!(k, Around | At | AtBack | Circle))
+                    .is_some()
+            };
+            let taken: u32 = if seat_kind(seat) {
+                explicit
+                    .keys()
+                    .filter(|c| *c != seat && seat_kind(c))
+                    .map(|c| counts.get(c).copied().unwrap_or(0))
+                    .sum()
+            } else {
+                0
+            };
             counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred

@@ -5,6 +5,18 @@ use super::Draft;
 use crate::plan::spec::{Anchor, Relation, SceneSpec, SceneType};
 use std::collections::{BTreeMap, BTreeSet};
 
+/// The category mention `i` means: a reference ("the table" after a round table, "each
+/// umbrella") means what the object it refers to was planned as.
+fn meant<'a>(d: &'a Draft, i: usize) -> &'a String {
+    let ms = &d.r.mentions;
+    let m = &ms[i];
+    let first = ms
+        .iter()
+        .position(|o| !o.reference && !o.negated && o.category == m.category)
+        .filter(|_| m.reference && !d.counts.contains_key(&d.cats[i]));
+    &d.cats[first.unwrap_or(i)]
+}
+
 /// Each category's anchor: the category's, the scene's, then the text's.
 pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     let Draft {
@@ -12,7 +24,6 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
         r,
         scene,
         scene_type,
-        cats,
         counts,
         ..
     } = d;
@@ -38,7 +49,7 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
         .map(|&(mi, _)| mi)
         .collect();
     for &(mi, a) in &r.anchors {
-        let c = &cats[mi];
+        let c = meant(d, mi);
         if counts.contains_key(c) && (a == Anchor::FaceWindow || !facing.contains(&mi)) {
             anchors.insert(c.clone(), a);
         }
@@ -57,11 +68,7 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
 /// defaults, then the functional groups (the text's own stay).
 pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
     let Draft {
-        r,
-        scene,
-        cats,
-        counts,
-        ..
+        r, scene, counts, ..
     } = d;
     let mut keep: BTreeSet<(String, String)> = BTreeSet::new();
     let mut pairs: BTreeSet<(String, String)> = BTreeSet::new();
@@ -82,7 +89,7 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         }
     };
     for &(si, rel, oi) in &r.relations {
-        let (sc, oc) = (&cats[si], &cats[oi]);
+        let (sc, oc) = (meant(d, si), meant(d, oi));
         let (Some(&ns), Some(_)) = (counts.get(sc), counts.get(oc)) else {
             continue;
         };
