@@ -343,7 +343,8 @@ mod tests {
 
     #[test]
     fn every_row_names_known_categories_or_the_table_fails_with_its_line() {
-        let objects = "sofa | couch | 2 1 0.8 | SIDE | a sofa\nlamp | | 0.3 0.3 1.5 | CORNER | a lamp";
+        let objects =
+            "sofa | couch | 2 1 0.8 | SIDE | a sofa\nlamp | | 0.3 0.3 1.5 | CORNER | a lamp";
         let e = KnowledgeBase::parse(
             objects,
             "# a comment\nx | indoor | | sofa:1, lamp:1 | | sofa NEXT lamp; lounge chair* NEXT sofa",
@@ -366,7 +367,10 @@ mod tests {
             "x | indoor | | sofa:1!+, lamp:2 | | ",
         )
         .unwrap();
-        assert_eq!(k.scenes[0].objects, [("sofa".into(), 1), ("lamp".into(), 2)]);
+        assert_eq!(
+            k.scenes[0].objects,
+            [("sofa".into(), 1), ("lamp".into(), 2)]
+        );
         assert_eq!(k.scenes[0].own, ["sofa"]);
         assert_eq!(k.scenes[0].essential, ["sofa"]);
         let kitchen = KnowledgeBase::builtin().scene("kitchen").unwrap();

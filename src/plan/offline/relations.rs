@@ -108,9 +108,9 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         let rel = match scene {
             Some(s)
                 if rel == Opposite
-                    && s.relations.iter().any(|k| {
-                        k.relation == Row && k.subject == *sc && k.object == *oc
-                    }) =>
+                    && s.relations
+                        .iter()
+                        .any(|k| k.relation == Row && k.subject == *sc && k.object == *oc) =>
             {
                 Row
             }
