@@ -80,9 +80,11 @@ pub fn fits(size: [f64; 3], room: [f64; 3]) -> bool {
 }
 
 /// Removes the last instance of `cat` (or the category), with its anchors and relations.
-fn remove_one(spec: &mut SceneSpec, cat: &str) {
+/// Returns the instances that were related to it as subjects and now relate to nothing (a bar
+/// stool at the island that went).
+fn remove_one(spec: &mut SceneSpec, cat: &str) -> Vec<String> {
     let Some(o) = spec.objects.get_mut(cat) else {
-        return;
+        return vec![];
     };
     let id = format!("{cat}{}", o.number);
     if o.number > 1 {
@@ -91,15 +93,27 @@ fn remove_one(spec: &mut SceneSpec, cat: &str) {
         spec.objects.remove(cat);
     }
     spec.anchors.remove(&id);
+    let subjects: BTreeSet<String> = spec
+        .relations
+        .iter()
+        .filter(|r| r.object == id && r.subject != id)
+        .map(|r| r.subject.clone())
+        .collect();
     spec.relations.retain(|r| r.subject != id && r.object != id);
+    subjects
+        .into_iter()
+        .filter(|s| !spec.relations.iter().any(|r| r.subject == *s))
+        .collect()
 }
 
 /// Trims default furniture of `spec` (its room set) to fit; `trim` also to the occupancy (a
-/// room the user stated or asked small). Returns one note per trimmed category; an error when
-/// a named object is larger than the room.
+/// room the user stated or asked small), the `essential` defaults (what the place cannot do
+/// without) last. Returns one note per trimmed category; an error when a named object is larger
+/// than the room.
 pub fn fit(
     spec: &mut SceneSpec,
     named: &BTreeSet<String>,
+    essential: &BTreeSet<String>,
     trim: bool,
 ) -> Result<Vec<String>, SpecError> {
     let Some(room) = spec.room else {
@@ -126,7 +140,7 @@ pub fn fit(
         }
         let n = spec.objects[&c].number;
         for _ in 0..n {
-            remove_one(spec, &c);
+            let _ = remove_one(spec, &c);
         }
         *dropped.entry(c).or_default() += n;
     }
@@ -137,8 +151,9 @@ pub fn fit(
             SceneType::Outdoor => 0.3,
         };
         while floor_area(spec) > limit * floor {
-            // The default category to thin: decoration first, then furniture in no group,
-            // then the one whose instances cover the most floor; multiples lose one at a time.
+            // The default category to thin: what the place can do without before what it
+            // cannot, decoration first, then furniture in no group, then the one whose
+            // instances cover the most floor; multiples lose one at a time.
             let base = |id: &str| {
                 id.trim_end_matches(|c: char| c.is_ascii_digit())
                     .to_string()
@@ -157,6 +172,7 @@ pub fn fit(
                         let decor = DECOR.contains(&c) as u8;
                         let loose = !grouped.contains(c) as u8;
                         (
+                            !essential.contains(c) as u8,
                             decor,
                             loose,
                             (o.number > 1) as u8,
@@ -167,12 +183,23 @@ pub fn fit(
                     ka.0.cmp(&kb.0)
                         .then(ka.1.cmp(&kb.1))
                         .then(ka.2.cmp(&kb.2))
-                        .then(ka.3.total_cmp(&kb.3))
+                        .then(ka.3.cmp(&kb.3))
+                        .then(ka.4.total_cmp(&kb.4))
                 })
                 .map(|(c, _)| c.clone());
             let Some(c) = pick else { break };
-            remove_one(spec, &c);
-            *dropped.entry(c).or_default() += 1;
+            let mut gone = vec![c];
+            while let Some(c) = gone.pop() {
+                // a default left relating to nothing goes with what it served
+                let orphans = remove_one(spec, &c);
+                *dropped.entry(c).or_default() += 1;
+                gone.extend(
+                    orphans
+                        .iter()
+                        .map(|id| base(id))
+                        .filter(|o| !named.contains(o) && !essential.contains(o)),
+                );
+            }
         }
     }
     for (c, n) in dropped {

@@ -40,6 +40,9 @@ pub struct SceneKind {
     /// Defaults that belong to the place's kind (a ballroom's dance floor; `+` after the count in
     /// `kb/scenes.txt`): a fantastical version of the place keeps them with its generic furniture.
     pub own: Vec<String>,
+    /// Defaults the place cannot do without (a kitchen's refrigerator, a bedroom's bed; `!` after
+    /// the count): a room too small for every default loses the others first.
+    pub essential: Vec<String>,
     pub anchors: BTreeMap<String, Anchor>,
     pub relations: Vec<KbRelation>,
 }
@@ -148,11 +151,15 @@ impl KnowledgeBase {
             };
             let idx = kb.objects.len();
             for name in std::iter::once(&o.category).chain(&o.synonyms) {
-                // The first category to claim a name keeps it.
-                kb.by_name.entry(name.clone()).or_insert(idx);
-            }
-            if kb.by_name[&o.category] != idx {
-                return Err(err(&format!("category `{}` defined twice", o.category)));
+                if let Some(&other) = kb.by_name.get(name) {
+                    let first = &kb.objects[other].category;
+                    return Err(err(&if *name == o.category && *first == o.category {
+                        format!("category `{name}` defined twice")
+                    } else {
+                        format!("`{name}` already names `{first}`")
+                    }));
+                }
+                kb.by_name.insert(name.clone(), idx);
             }
             kb.objects.push(o);
         }
@@ -178,21 +185,23 @@ impl KnowledgeBase {
             };
             let mut objs = vec![];
             let mut own = vec![];
+            let mut essential = vec![];
             for item in list(f[3]) {
                 let (name, n) = item
                     .rsplit_once(':')
                     .ok_or_else(|| err(&format!("`{item}` needs :count")))?;
-                let (n, is_own) = match n.trim().strip_suffix('+') {
-                    Some(n) => (n, true),
-                    None => (n.trim(), false),
-                };
-                let n: u32 = n
+                let marks = n.trim_start_matches(|c: char| c.is_ascii_digit() || c == ' ');
+                let n: u32 = n[..n.len() - marks.len()]
                     .trim()
                     .parse()
                     .map_err(|_| err(&format!("count in `{item}`")))?;
                 let c = resolve(name.trim())?;
-                if is_own {
-                    own.push(c.clone());
+                for m in marks.trim().chars() {
+                    match m {
+                        '+' => own.push(c.clone()),
+                        '!' => essential.push(c.clone()),
+                        _ => return Err(err(&format!("mark `{m}` in `{item}` (+ or !)"))),
+                    }
                 }
                 objs.push((c, n));
             }
@@ -238,6 +247,7 @@ impl KnowledgeBase {
                 synonyms: list(f[2]),
                 objects: objs,
                 own,
+                essential,
                 anchors,
                 relations,
             });
@@ -329,5 +339,44 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.contains("lamp"), "{e}");
+    }
+
+    #[test]
+    fn every_row_names_known_categories_or_the_table_fails_with_its_line() {
+        let objects =
+            "sofa | couch | 2 1 0.8 | SIDE | a sofa\nlamp | | 0.3 0.3 1.5 | CORNER | a lamp";
+        let e = KnowledgeBase::parse(
+            objects,
+            "# a comment\nx | indoor | | sofa:1, lamp:1 | | sofa NEXT lamp; lounge chair* NEXT sofa",
+        )
+        .unwrap_err();
+        assert_eq!(e, "scenes.txt line 2: unknown object `lounge chair`");
+        let e = KnowledgeBase::parse(objects, "x | indoor | | sofa:1 | chair=SIDE | ").unwrap_err();
+        assert_eq!(e, "scenes.txt line 1: unknown object `chair`");
+        let e = KnowledgeBase::parse(&format!("{objects}\nsettee | couch | 2 1 1 | SIDE | s"), "")
+            .unwrap_err();
+        assert_eq!(e, "objects.txt line 3: `couch` already names `sofa`");
+        let e = KnowledgeBase::parse(objects, "x | indoor | | sofa:1?, lamp:1 | | ").unwrap_err();
+        assert!(e.starts_with("scenes.txt line 1: mark `?`"), "{e}");
+    }
+
+    #[test]
+    fn a_scene_marks_its_own_and_its_essential_defaults() {
+        let k = KnowledgeBase::parse(
+            "sofa | | 2 1 0.8 | SIDE | a sofa\nlamp | | 0.3 0.3 1.5 | CORNER | a lamp",
+            "x | indoor | | sofa:1!+, lamp:2 | | ",
+        )
+        .unwrap();
+        assert_eq!(
+            k.scenes[0].objects,
+            [("sofa".into(), 1), ("lamp".into(), 2)]
+        );
+        assert_eq!(k.scenes[0].own, ["sofa"]);
+        assert_eq!(k.scenes[0].essential, ["sofa"]);
+        let kitchen = KnowledgeBase::builtin().scene("kitchen").unwrap();
+        assert!(
+            kitchen.essential.iter().any(|c| c == "refrigerator"),
+            "a kitchen cannot do without its refrigerator"
+        );
     }
 }

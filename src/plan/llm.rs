@@ -465,12 +465,11 @@ pub fn plan_llm_strict(
         },
         None => chosen,
     });
-    let notes = super::capacity::fit(&mut spec, &named, stated.is_some()).map_err(|e| {
-        LlmError::Answer {
+    let notes = super::capacity::fit(&mut spec, &named, &BTreeSet::new(), stated.is_some())
+        .map_err(|e| LlmError::Answer {
             question: "objects",
             msg: e.to_string(),
-        }
-    })?;
+        })?;
     report.warnings.extend(notes);
     spec.validate().map_err(|e| LlmError::Answer {
         question: "objects",

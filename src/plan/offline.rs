@@ -208,7 +208,11 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     }
     relations::relations(&d, &mut spec);
     spec.room = Some(sizing::room(&mut d, &spec));
-    let fitted = fit(&mut spec, &d.named, d.r.room.is_some() || d.r.scale < 1.0)?;
+    let essential: BTreeSet<String> = d
+        .scene
+        .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());
+    let trim = d.r.room.is_some() || d.r.scale < 1.0;
+    let fitted = fit(&mut spec, &d.named, &essential, trim)?;
     d.notes.extend(fitted);
     let understood = describe::understood(&d, &spec, &styles);
     Ok(Plan {

@@ -14,30 +14,55 @@ struct Roles {
 fn roles() -> &'static Roles {
     static R: OnceLock<Roles> = OnceLock::new();
     R.get_or_init(|| {
-        let mut r = Roles {
-            roles: vec![],
-            needs: vec![],
+        parse(
+            include_str!("kb/roles.txt"),
+            super::kb::KnowledgeBase::builtin(),
+        )
+        .expect("the built-in role table is valid (tested)")
+    })
+}
+
+/// Reads a role table; every line must read and name categories of `kb`, or the error names
+/// the line and the word.
+fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
+    let mut r = Roles {
+        roles: vec![],
+        needs: vec![],
+    };
+    for (ln, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let err = |m: String| format!("roles.txt line {}: {m}", ln + 1);
+        let cols: Vec<&str> = line.split('|').map(str::trim).collect();
+        let list = |s: &str| -> Result<Vec<String>, String> {
+            s.split(',')
+                .map(str::trim)
+                .filter(|c| !c.is_empty())
+                .map(|c| match kb.object(c) {
+                    Some(o) if o.category == c => Ok(c.to_string()),
+                    Some(o) => Err(err(format!("`{c}` is a name of `{}`", o.category))),
+                    None => Err(err(format!("unknown object `{c}`"))),
+                })
+                .collect()
         };
-        for line in include_str!("kb/roles.txt").lines() {
-            let line = line.trim();
-            if line.is_empty() || line.starts_with('#') {
-                continue;
+        match cols.as_slice() {
+            ["needs", cat, served] => {
+                let cat = list(cat)?
+                    .pop()
+                    .ok_or_else(|| err("needs a category".into()))?;
+                r.needs.push((cat, list(served)?));
             }
-            let cols: Vec<&str> = line.split('|').map(str::trim).collect();
-            let list = |s: &str| -> Vec<String> {
-                s.split(',')
-                    .map(|c| c.trim().to_string())
-                    .filter(|c| !c.is_empty())
-                    .collect()
-            };
-            match cols.as_slice() {
-                ["needs", cat, served] => r.needs.push((cat.to_string(), list(served))),
-                [role, cats] => r.roles.push((role.to_string(), list(cats))),
-                _ => {}
+            [role, cats] if *role != "needs" => r.roles.push((role.to_string(), list(cats)?)),
+            _ => {
+                return Err(err(
+                    "expected `role | categories` or `needs | category | categories`".into(),
+                ))
             }
         }
-        r
-    })
+    }
+    Ok(r)
 }
 
 /// The role `category` fills, if any; a category the knowledge base lacks ("captain chair",
@@ -166,16 +191,27 @@ mod tests {
     }
 
     #[test]
-    fn every_role_category_is_a_knowledge_base_category() {
+    fn the_role_table_loads_and_a_broken_one_names_its_line() {
+        assert!(
+            roles().roles.len() >= 5 && !roles().needs.is_empty(),
+            "the built-in role table has its rows"
+        );
         let kb = crate::plan::kb::KnowledgeBase::builtin();
-        assert!(roles().roles.len() >= 5);
-        for (_, cats) in roles().roles.iter().chain(&roles().needs) {
-            for c in cats {
-                assert!(
-                    kb.object(c).is_some_and(|o| o.category == *c),
-                    "`{c}` of kb/roles.txt is no category of kb/objects.txt"
-                );
-            }
-        }
+        let e = parse("# roles\nsleeping place | bed, cot bed", kb).err();
+        assert_eq!(
+            e.as_deref(),
+            Some("roles.txt line 2: unknown object `cot bed`")
+        );
+        let e = parse("main seating | sofa, couch", kb).err();
+        assert_eq!(
+            e.as_deref(),
+            Some("roles.txt line 1: `couch` is a name of `sofa`")
+        );
+        let e = parse("needs | tv stand | tv\nneeds | tv stand", kb).err();
+        assert!(
+            e.as_deref()
+                .is_some_and(|e| e.starts_with("roles.txt line 2: expected")),
+            "{e:?}"
+        );
     }
 }

@@ -110,6 +110,19 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             }
             _ => rel,
         };
+        // "40 seats facing a screen" in a lecture hall: its seats face the screen in rows
+        use crate::plan::spec::RelationKind::{Opposite, Row};
+        let rel = match scene {
+            Some(s)
+                if rel == Opposite
+                    && s.relations
+                        .iter()
+                        .any(|k| k.relation == Row && k.subject == *sc && k.object == *oc) =>
+            {
+                Row
+            }
+            _ => rel,
+        };
         // "a bench on each side of every table": every bench, spread over the tables
         let every = r.mentions[si].plural
             || r.mentions[si].count.unwrap_or(1) > 1
@@ -155,11 +168,17 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
                 .find(|k| crate::plan::roles::role_of(k) == Some(role))
                 .cloned()
         };
+        // where the text puts a thing ("chairs stacked against the back wall") beats where
+        // the scene would have it (in rows before the stage)
+        let placed: BTreeSet<&String> = r.anchors.iter().map(|&(mi, _)| &cats[mi]).collect();
         for rel in &sc.relations {
             let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
             else {
                 continue;
             };
+            if placed.contains(&subject) {
+                continue;
+            }
             let (ns, no) = (counts[&subject], counts[&object]);
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {

@@ -87,6 +87,7 @@ pub(super) fn mention_sizes(d: &mut Draft) {
 pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
     let Draft {
         r,
+        scene,
         scene_type,
         named,
         notes,
@@ -117,7 +118,18 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         None => {
             let mut room = room_for(&spec.instances(), scene_type);
             if r.scale < 1.0 {
-                room.size = small_room(spec, named, room.size, r.scale, scene_type);
+                // what the text names and what the place cannot do without (its bed) set it;
+                // with nothing named, the scene's furniture
+                let essential = scene
+                    .filter(|_| named.iter().any(|c| spec.objects.contains_key(c)))
+                    .map_or(&[][..], |s| &s.essential[..]);
+                let kept: BTreeSet<String> = named
+                    .iter()
+                    .chain(essential)
+                    .filter(|c| spec.objects.contains_key(*c))
+                    .cloned()
+                    .collect();
+                room.size = small_room(spec, &kept, room.size, r.scale, scene_type);
             } else if r.scale > 1.0 {
                 let s = r.scale.sqrt();
                 for k in 0..2 {
