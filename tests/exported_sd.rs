@@ -149,7 +149,11 @@ fn batched_image_targets_equal_the_per_view_targets() {
         // sampled point for its rule's prompts (MTS: 3, the pseudo ground truth's last point: 2).
         let per_point = if rule == Rule::PseudoGt { 2 } else { 3 };
         assert_eq!(split.unet_runs, 1 + per_point * (points - 1), "{rule:?}");
-        assert_eq!(joint.unet_items, 3 * (1 + per_point * (points - 1)), "{rule:?}");
+        assert_eq!(
+            joint.unet_items,
+            3 * (1 + per_point * (points - 1)),
+            "{rule:?}"
+        );
         assert_eq!(joint.unet_items, split.unet_items, "{rule:?}");
         for (i, (a, b)) in per.iter().zip(&batched).enumerate() {
             assert_eq!(a.timesteps, b.timesteps, "{rule:?} view {i}");

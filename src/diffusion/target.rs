@@ -355,7 +355,9 @@ mod tests {
         assert_eq!(calls.iter().map(|c| c.0).collect::<Vec<_>>(), want);
         // The start point only drives the first inversion step: the null prompt alone.
         assert_eq!(calls[0].1, vec![Null]);
-        assert!(calls[1..].iter().all(|c| c.1 == vec![Positive, Negative, Null]));
+        assert!(calls[1..]
+            .iter()
+            .all(|c| c.1 == vec![Positive, Negative, Null]));
         // DreamTime: t falls from t_max to t_min over the run.
         let dt = Rule::DreamTime {
             t_min: 20,

@@ -170,7 +170,7 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         };
         // where the text puts a thing ("chairs stacked against the back wall") beats where
         // the scene would have it (in rows before the stage)
-        let placed: BTreeSet<&String> = r.anchors.iter().map(|&(mi, _)| &cats[mi]).collect();
+        let placed: BTreeSet<&String> = r.anchors.iter().map(|&(mi, _)| meant(d, mi)).collect();
         for rel in &sc.relations {
             let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
             else {
