@@ -107,7 +107,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             Anchor::Center,
         ),
         (
-            r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near) )?walls?|sides?)\b|\bwall-mounted\b|\bagainst the walls?\b|\balong the walls?\b",
+            r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near) )?walls?|sides?|hull)\b|\bwall-mounted\b|\bagainst the (?:walls?|hull)\b|\balong the (?:walls?|hull)\b",
             Anchor::Side,
         ),
         (
