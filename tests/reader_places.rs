@@ -189,3 +189,13 @@ fn benches_that_hold_things_are_work_benches() {
     let s = plan("a hallway with a bench and a coat rack");
     assert!(s.objects.contains_key("bench"), "{:?}", s.objects.keys());
 }
+
+#[test]
+fn a_floor_lamp_kind_put_on_a_table_is_the_lamp_that_stands_on_tables() {
+    let s = plan("a reading room with two long tables and a reading lamp on each table");
+    assert_eq!(number(&s, "reading lamp"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "table lamp"), 2, "{:?}", s.objects.keys());
+    // on something no one stands a lamp on, it stays what it was named
+    let s = plan("a living room with a sofa and a floor lamp on the rug");
+    assert_eq!(number(&s, "floor lamp"), 1, "{:?}", s.objects.keys());
+}

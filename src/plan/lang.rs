@@ -114,6 +114,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     read_counts(&mut r);
     read_placements(&mut r);
     placements::supports_hold(kb, &mut r);
+    placements::surface_kinds(kb, &mut r);
     r.not_english = words::not_english(kb, text, &t);
     r
 }

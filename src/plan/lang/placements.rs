@@ -225,6 +225,47 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
     }
 }
 
+/// A floor-standing thing the text puts on a support ("reading lamps standing on every table")
+/// is the kind of its noun that stands on surfaces, preferring one that names that support
+/// (a table lamp), then one its own noun names; the text's size words keep applying.
+pub(super) fn surface_kinds(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading) {
+    use crate::plan::gcp::classes::{Class, Placements};
+    let table = Placements::builtin();
+    for &(si, rel, oi) in &r.relations {
+        let (s, o) = (&r.mentions[si], &r.mentions[oi]);
+        if rel != RelationKind::Over
+            || !s.known
+            || !matches!(table.class(&s.category), Class::Floor | Class::AgainstWall)
+            || !table.is_support(&o.category)
+        {
+            continue;
+        }
+        let head = super::singular(s.text.rsplit(' ').next().unwrap_or(""));
+        let on = |c: &str| {
+            table
+                .get(c)
+                .is_some_and(|p| p.supports.contains(&o.category))
+        };
+        let kind = kb
+            .objects
+            .iter()
+            .filter(|k| {
+                std::iter::once(&k.category)
+                    .chain(&k.synonyms)
+                    .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
+            })
+            .filter(|k| stands_on_surfaces(&k.category))
+            .min_by_key(|k| {
+                let own = k.category.rsplit(' ').next() == Some(head.as_str());
+                (!on(&k.category), !own)
+            })
+            .map(|k| k.category.clone());
+        if let Some(c) = kind {
+            r.mentions[si].category = c;
+        }
+    }
+}
+
 /// What the pronoun of "THING on it" right before `pos` refers to, when mention `thing` is
 /// placed that way.
 fn said_of_pronoun(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<usize> {
