@@ -173,7 +173,7 @@ impl Problem {
                     let g = gap(b, &bj);
                     score -= 4.0 * (g - FRONT_GAP).clamp(0.0, 2.5);
                     // with room for legs between them
-                    score -= 8.0 * (FRONT_LEGROOM - g).max(0.0);
+                    score -= 30.0 * (FRONT_LEGROOM - g).max(0.0);
                     // and square to it (a coffee table parallel to its sofa)
                     let turn = (p.yaw - placed[j].map_or(p.yaw, |q| q.yaw)).to_radians();
                     score -= 4.0 * turn.sin().abs();
