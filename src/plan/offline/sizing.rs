@@ -212,12 +212,10 @@ fn small_room(
     } else {
         need.min(full[0] * full[1])
     };
+    let w = (area * 1.25).sqrt().max(min_side);
+    let d = (area / w).max(min_side);
     let r = |v: f64| (v * 10.0).ceil() / 10.0;
-    // the depth from the width as rounded, so that rounding both sides up does not add floor
-    // twice
-    let w = r((area * 1.25).sqrt().max(min_side));
-    let d = r((area / w).max(min_side));
-    [w, d, full[2]]
+    [r(w), r(d), full[2]]
 }
 
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,
