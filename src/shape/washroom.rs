@@ -119,32 +119,17 @@ pub fn font(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let r = hw.min(hd);
     let ay = hd / hw;
-    b.revolved(
-        Top,
-        0,
-        [0.0, 0.0, 0.0],
-        IDENTITY,
-        ay,
-        vec![
-            [0.0, 0.0],
-            [0.85 * r, 0.0],
-            [0.85 * r, 0.06 * h],
-            [0.0, 0.06 * h],
-        ],
-    );
-    b.revolved(
-        Top,
-        0,
-        [0.0, 0.0, 0.0],
-        IDENTITY,
-        ay,
-        vec![
-            [0.0, 0.0],
-            [0.65 * r, 0.0],
-            [0.65 * r, 0.12 * h],
-            [0.0, 0.12 * h],
-        ],
-    );
+    // the stepped base: two discs, the upper narrower and taller
+    for (radius, top) in [(0.85 * r, 0.06 * h), (0.65 * r, 0.12 * h)] {
+        b.revolved(
+            Top,
+            0,
+            [0.0, 0.0, 0.0],
+            IDENTITY,
+            ay,
+            vec![[0.0, 0.0], [radius, 0.0], [radius, top], [0.0, top]],
+        );
+    }
     let zb = 0.55 * h;
     b.frustum(
         Body,

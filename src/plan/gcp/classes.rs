@@ -420,7 +420,7 @@ pub(super) fn base(id: &str) -> &str {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::plan::kb::KnowledgeBase;
 
@@ -479,7 +479,13 @@ mod tests {
         assert!(e.contains("line 2") && e.contains("high"), "{e}");
     }
 
-    fn spec(objects: &[&str], anchors: &str, relations: &str) -> SceneSpec {
+    /// A spec of 0.6 × 0.6 × 0.8 m objects (one of each), anchors and relations as JSON; the
+    /// layout tests of `gcp` share it.
+    pub(in crate::plan::gcp) fn spec(
+        objects: &[&str],
+        anchors: &str,
+        relations: &str,
+    ) -> SceneSpec {
         let objects: Vec<String> = objects
             .iter()
             .map(|c| format!(r#""{c}":{{"number":1,"size":[0.6,0.6,0.8],"description":"d"}}"#))

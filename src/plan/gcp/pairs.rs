@@ -157,17 +157,7 @@ pub(super) fn float_seats(spec: &mut SceneSpec, room: [f64; 3]) {
 mod tests {
     use super::*;
 
-    fn spec(objects: &[&str], anchors: &str, relations: &str) -> SceneSpec {
-        let objects: Vec<String> = objects
-            .iter()
-            .map(|c| format!(r#""{c}":{{"number":1,"size":[0.6,0.6,0.8],"description":"d"}}"#))
-            .collect();
-        let text = format!(
-            r#"{{"scene_type":"indoor","scene_text":"t","objects":{{{}}},"anchors":{{{anchors}}},"relations":[{relations}]}}"#,
-            objects.join(",")
-        );
-        serde_json::from_str(&text).expect("spec")
-    }
+    use super::super::classes::tests::spec;
 
     fn triples(s: &SceneSpec) -> Vec<(String, RelationKind, String)> {
         s.relations

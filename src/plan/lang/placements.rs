@@ -200,14 +200,7 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
                 table.is_support(c),
             )
         };
-        let kind = kb
-            .objects
-            .iter()
-            .filter(|k| {
-                std::iter::once(&k.category)
-                    .chain(&k.synonyms)
-                    .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
-            })
+        let kind = kinds_named_by(kb, &head)
             .filter(|k| holds(&k.category).1)
             // the kind the thing placed stands on, then one its noun names ("science bench")
             .min_by_key(|k| {
@@ -223,6 +216,19 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
             }
         }
     }
+}
+
+/// The knowledge base's kinds whose name or a synonym ends in the noun `head` ("bench":
+/// a bench, a science bench, a workbench's "work bench").
+fn kinds_named_by<'a>(
+    kb: &'a crate::plan::kb::KnowledgeBase,
+    head: &'a str,
+) -> impl Iterator<Item = &'a crate::plan::kb::ObjectKind> + 'a {
+    kb.objects.iter().filter(move |k| {
+        std::iter::once(&k.category)
+            .chain(&k.synonyms)
+            .any(|n| n.rsplit(' ').next() == Some(head))
+    })
 }
 
 /// A floor-standing thing the text puts on a support ("reading lamps standing on every table")
@@ -246,14 +252,7 @@ pub(super) fn surface_kinds(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
                 .get(c)
                 .is_some_and(|p| p.supports.contains(&o.category))
         };
-        let kind = kb
-            .objects
-            .iter()
-            .filter(|k| {
-                std::iter::once(&k.category)
-                    .chain(&k.synonyms)
-                    .any(|n| n.rsplit(' ').next() == Some(head.as_str()))
-            })
+        let kind = kinds_named_by(kb, &head)
             .filter(|k| stands_on_surfaces(&k.category))
             .min_by_key(|k| {
                 let own = k.category.rsplit(' ').next() == Some(head.as_str());
