@@ -31,14 +31,7 @@ pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<St
                 },
             );
         }
-        let spec = SceneSpec {
-            scene_type: SceneType::Indoor,
-            scene_text: String::new(),
-            room: None,
-            objects,
-            anchors: BTreeMap::new(),
-            relations: vec![],
-        };
+        let spec = bare_spec(objects);
         crate::plan::groups::group_of(&spec, seat).is_some_and(|(_, t)| t == table)
     };
     counts
@@ -140,14 +133,7 @@ fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
             (c.to_string(), o)
         })
         .collect();
-    let spec = SceneSpec {
-        scene_type: SceneType::Indoor,
-        scene_text: String::new(),
-        room: None,
-        objects,
-        anchors: BTreeMap::new(),
-        relations: vec![],
-    };
+    let spec = bare_spec(objects);
     crate::plan::groups::seats_per(&spec, seat, table)
 }
 
@@ -441,4 +427,17 @@ pub(super) fn clamp(d: &mut Draft) {
         }
     }
     counts.retain(|_, n| *n > 0);
+}
+
+/// A spec of just these objects, with no room, anchors or relations: what the group rules
+/// (seats at a table) are asked about while counts are read.
+fn bare_spec(objects: BTreeMap<String, ObjectSpec>) -> SceneSpec {
+    SceneSpec {
+        scene_type: SceneType::Indoor,
+        scene_text: String::new(),
+        room: None,
+        objects,
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    }
 }
