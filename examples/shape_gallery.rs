@@ -4,11 +4,12 @@
 //! and a 512² close-up of one category (default `sofa`) beside it as `*_closeup.png`.
 //! `all` draws every knowledge-base category (turntable pairs: front 3/4 and back 3/4), in
 //! sheets of 48 tiles `OUT_1.png`, `OUT_2.png`…; `archetypes` one category per archetype; a comma
-//! separated list draws those categories. Each drawn name is printed in tile order.
+//! separated list draws those categories, and `CATEGORY=DESCRIPTION` one as that description
+//! shapes it (`"full length mirror=a round mirror"`). Each drawn name is printed in tile order.
 use dreamscene::camera::Camera;
 use dreamscene::gpu::Context;
 use dreamscene::plan::kb::KnowledgeBase;
-use dreamscene::shape::{archetype_names, archetype_of, build, ShapeOptions};
+use dreamscene::shape::{archetype_described, archetype_names, archetype_of, build, ShapeOptions};
 use dreamscene::splat::raster::Rasterizer;
 
 const EVERYDAY: [&str; 12] = [
@@ -50,17 +51,22 @@ fn render(
     az: f64,
 ) -> anyhow::Result<Vec<[f32; 3]>> {
     let kb = KnowledgeBase::builtin();
+    let (category, description) = split(category);
     let kind = kb
         .object(category)
         .ok_or_else(|| anyhow::anyhow!("unknown category {category}"))?;
-    let g = build(
-        category,
-        kind.size,
-        &kind.description,
-        &ShapeOptions::default(),
-    )?;
+    let description = description.unwrap_or(&kind.description);
+    let g = build(category, kind.size, description, &ShapeOptions::default())?;
     let cam = view(kind.size, px, az);
     Ok(raster.render(ctx, &g, &cam, [0.93, 0.93, 0.95])?.color)
+}
+
+/// `CATEGORY=DESCRIPTION` split in two; a bare category has no description of its own.
+fn split(entry: &str) -> (&str, Option<&str>) {
+    match entry.split_once('=') {
+        Some((c, d)) => (c.trim(), Some(d.trim())),
+        None => (entry, None),
+    }
 }
 
 fn put(sheet: &mut image::RgbImage, img: &[[f32; 3]], tile: u32, ox: u32, oy: u32) {
@@ -118,7 +124,9 @@ fn main() -> anyhow::Result<()> {
                 let img = render(&ctx, &raster, cat, tile, *az)?;
                 put(&mut sheet, &img, tile, (t % cols) * tile, (t / cols) * tile);
             }
-            println!("sheet {} tile {i}: {cat} ({})", s + 1, archetype_of(cat));
+            let (c, d) = split(cat);
+            let arch = d.map_or_else(|| archetype_of(c), |d| archetype_described(c, d));
+            println!("sheet {} tile {i}: {cat} ({arch})", s + 1);
         }
         let path = if cats.len() > per_sheet {
             out.replace(".png", &format!("_{}.png", s + 1))

@@ -378,3 +378,70 @@ fn every_category_maps_to_an_archetype_of_its_own_function() {
         );
     }
 }
+
+/// A form word before the category's name draws the archetype of that form; one that describes
+/// something else, or none, keeps the category's own.
+#[test]
+fn form_words_before_the_name_change_the_form() {
+    use dreamscene::shape::archetype_described;
+    let cases = [
+        ("full length mirror", "a round gilded mirror", "round_mirror"),
+        ("full length mirror", "an oval mirror by the door", "oval_mirror"),
+        ("rug", "a big round wool rug", "round_rug"),
+        ("dining table", "an oval oak dining table", "oval_table"),
+        ("round table", "a square table", "table"),
+        ("ottoman", "a square leather ottoman", "square_ottoman"),
+        // The form word describes the mirror, not the table.
+        ("vanity table", "vanity table with a round mirror", "desk"),
+        ("rug", "a rug under a round table", "rug"),
+        // A form the archetype has not: a round sofa stays a sofa.
+        ("sofa", "a round sofa", "sofa"),
+    ];
+    for (category, description, want) in cases {
+        assert_eq!(
+            archetype_described(category, description),
+            want,
+            "{category}: {description}"
+        );
+    }
+    // The form's parts are its own: a round mirror's glass is a disc, narrower at its top than
+    // a rectangle's of the same box.
+    let size = [0.6, 0.05, 0.6];
+    let top_width = |d: &str| {
+        let parts = dreamscene::shape::parts_described("full length mirror", size, d).unwrap();
+        let mut pts = vec![];
+        let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
+        for p in parts {
+            p.prim.sample(0.01, &mut rng, &mut pts);
+        }
+        let near_top: Vec<f64> = pts
+            .iter()
+            .filter(|s| s.pos[2] > 0.55)
+            .map(|s| s.pos[0].abs())
+            .collect();
+        near_top.iter().fold(0.0f64, |a, v| a.max(*v))
+    };
+    assert!(
+        top_width("a round mirror") < 0.8 * top_width("a mirror"),
+        "a round mirror should narrow towards its top"
+    );
+}
+
+/// An oval rug leaves its box's corners bare; the plain rug fills them.
+#[test]
+fn an_oval_rug_is_an_ellipse() {
+    let size = [2.0, 1.4, 0.005];
+    let corner = |d: &str| {
+        let parts = dreamscene::shape::parts_described("rug", size, d).unwrap();
+        let mut pts = vec![];
+        let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
+        for p in parts {
+            p.prim.sample(0.02, &mut rng, &mut pts);
+        }
+        pts.iter()
+            .filter(|s| s.pos[0].abs() > 0.8 && s.pos[1].abs() > 0.55)
+            .count()
+    };
+    assert_eq!(corner("an oval rug"), 0, "an oval rug reaches its box's corners");
+    assert!(corner("a rug") > 0, "a plain rug should fill its corners");
+}

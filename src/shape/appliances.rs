@@ -16,18 +16,40 @@ fn appliance_body(b: &mut Builder) -> f64 {
     hd - 0.03
 }
 
+/// A fridge: a freezer door over a taller fridge door (side-by-side doors when wide), a dark
+/// gap between them and long bar handles standing off the doors.
 pub fn fridge(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let y = appliance_body(b);
-    let split = 0.62 * h;
-    for (z0, z1) in [(0.04, split - 0.005), (split + 0.005, h - 0.01)] {
-        b.cuboid(Door, [-hw + 0.005, y, z0], [hw - 0.005, hd - 0.012, z1]);
-        let (za, zb) = if z0 < 0.1 {
-            (z1 - 0.45, z1 - 0.08)
-        } else {
-            (z0 + 0.06, (z0 + 0.35).min(z1 - 0.05))
-        };
-        b.cuboid(Handle, [-hw + 0.05, hd - 0.012, za], [-hw + 0.075, hd, zb]);
+    let face = hd - 0.06;
+    b.cuboid(Interior, [-hw + 0.02, -hd, 0.0], [hw - 0.02, face - 0.03, 0.05]);
+    b.cuboid(Body, [-hw, -hd, 0.05], [hw, face, h]);
+    let door = |b: &mut Builder, x0: f64, x1: f64, z0: f64, z1: f64| {
+        b.cuboid(Door, [x0 + 0.012, face, z0 + 0.012], [x1 - 0.012, face + 0.025, z1 - 0.012]);
+    };
+    let bar = |b: &mut Builder, x: f64, z0: f64, z1: f64| {
+        let y = face + 0.025;
+        // A dark recessed grip behind the bar.
+        b.cuboid(Interior, [x - 0.025, y, z0], [x + 0.025, y + 0.002, z1]);
+        b.rod(Handle, [x, hd - 0.016, z0], [x, hd - 0.016, z1], 0.016);
+        for z in [z0 + 0.02, z1 - 0.02] {
+            b.rod(Handle, [x, y, z], [x, hd - 0.016, z], 0.01);
+        }
+    };
+    // The gap between doors shows dark.
+    b.cuboid(Interior, [-hw + 0.01, face, 0.05], [hw - 0.01, face + 0.004, h - 0.01]);
+    if b.w >= 0.85 {
+        // Side-by-side: freezer on the left, fridge on the right, handles at the middle.
+        door(b, -hw, -0.05 * b.w, 0.05, h);
+        door(b, -0.05 * b.w, hw, 0.05, h);
+        bar(b, -0.05 * b.w - 0.04, 0.35 * h, 0.8 * h);
+        bar(b, -0.05 * b.w + 0.04, 0.35 * h, 0.8 * h);
+    } else {
+        let split = 0.65 * h;
+        door(b, -hw, hw, split, h);
+        door(b, -hw, hw, 0.05, split);
+        let x = -hw + 0.07;
+        bar(b, x, split + 0.04, (split + 0.3 * h).min(h - 0.05));
+        bar(b, x, split - 0.35 * h, split - 0.04);
     }
 }
 
@@ -64,48 +86,51 @@ pub fn washer(b: &mut Builder) {
     );
 }
 
+/// A kitchen range: a dark hob with four raised burner rings and grates, a knob strip, and an
+/// oven door with a window and a bar handle over a drawer.
 pub fn stove(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let y = appliance_body(b);
-    b.cuboid(Top, [-hw, -hd, h - 0.01], [hw, hd - 0.03, h]);
-    for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
-        b.frustum(
-            Metal,
-            [sx * 0.25 * b.w, sy * 0.22 * b.d - 0.02, h],
-            0.09,
-            0.09,
-            0.9,
-            0.008,
-        );
+    let face = hd - 0.04;
+    let hob = (0.04 * h).clamp(0.015, 0.03);
+    b.cuboid(Interior, [-hw + 0.02, -hd, 0.0], [hw - 0.02, face - 0.03, 0.05]);
+    b.cuboid(Body, [-hw, -hd, 0.05], [hw, face, h - hob]);
+    b.cuboid(Top, [-hw, -hd, h - hob], [hw, face, h - 0.012]);
+    // A back guard when the range is tall enough to be free-standing.
+    if h > 0.6 {
+        b.cuboid(Body, [-hw, -hd, h - hob], [hw, -hd + 0.04, h]);
     }
-    b.cuboid(
-        Door,
-        [-hw + 0.01, y, 0.75 * h],
-        [hw - 0.01, hd - 0.02, h - 0.03],
-    );
+    let r = (0.16 * b.w).min(0.2 * b.d);
+    for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
+        let (x, y) = (sx * 0.25 * b.w, 0.5 * (face - hd) + sy * 0.22 * b.d);
+        let (x, y) = (x, y.clamp(-hd + 0.05 + r, face - r));
+        let rr = if sx * sy > 0.0 { r } else { 0.75 * r };
+        b.frustum(Metal, [x, y, h - 0.012], rr, rr, 0.95, 0.008);
+        b.frustum(Interior, [x, y, h - 0.012], 0.45 * rr, 0.45 * rr, 1.0, 0.012);
+    }
+    // Knob strip with four knobs.
+    let zk = h - hob - 0.06;
+    b.cuboid(Door, [-hw + 0.01, face, zk - 0.04], [hw - 0.01, face + 0.015, h - hob - 0.005]);
     for k in 0..4 {
         let x = -0.3 * b.w + k as f64 * 0.2 * b.w;
         b.revolved(
             Handle,
             0,
-            [x, hd - 0.02, 0.82 * h],
+            [x, face + 0.015, zk - 0.015],
             rot_x(-FRAC_PI_2),
             1.0,
-            frustum_profile(0.02, 0.02, 0.02),
+            frustum_profile(0.022, 0.018, 0.022),
         );
     }
-    b.cuboid(Door, [-hw + 0.01, y, 0.06], [hw - 0.01, hd - 0.02, 0.7 * h]);
-    b.cuboid(
-        Screen,
-        [-hw + 0.08, hd - 0.02, 0.2 * h],
-        [hw - 0.08, hd - 0.015, 0.55 * h],
-    );
-    b.rod(
-        Handle,
-        [-hw + 0.06, hd - 0.008, 0.64 * h],
-        [hw - 0.06, hd - 0.008, 0.64 * h],
-        0.008,
-    );
+    // Oven door with its window, and a drawer below.
+    let (z0, z1) = (0.2 * h, zk - 0.05);
+    b.cuboid(Door, [-hw + 0.01, face, z0], [hw - 0.01, face + 0.02, z1]);
+    b.cuboid(Screen, [-hw + 0.08, face + 0.02, z0 + 0.06], [hw - 0.08, face + 0.024, z1 - 0.12]);
+    let zh = z1 - 0.05;
+    b.rod(Handle, [-hw + 0.06, hd - 0.008, zh], [hw - 0.06, hd - 0.008, zh], 0.009);
+    for x in [-hw + 0.08, hw - 0.08] {
+        b.rod(Handle, [x, face + 0.02, zh], [x, hd - 0.008, zh], 0.006);
+    }
+    b.cuboid(Door, [-hw + 0.01, face, 0.06], [hw - 0.01, face + 0.02, z0 - 0.01]);
 }
 
 pub fn appliance(b: &mut Builder) {
@@ -127,6 +152,19 @@ pub fn appliance(b: &mut Builder) {
             Interior,
             [0.32 * b.w, y, 0.1 * h],
             [hw - 0.02, hd - 0.02, 0.9 * h],
+        );
+    } else if h > 1.2 {
+        // A standing machine (arcade, cash machine, jukebox): a lit header, a screen at eye
+        // height over a ledge, a service door below.
+        b.cuboid(Light, [-hw + 0.02, y, 0.88 * h], [hw - 0.02, hd - 0.015, h - 0.02]);
+        b.cuboid(Screen, [-hw + 0.05, y, 0.56 * h], [hw - 0.05, hd - 0.015, 0.82 * h]);
+        b.cuboid(Top, [-hw, y, 0.47 * h], [hw, hd, 0.5 * h]);
+        b.cuboid(Door, [-hw + 0.03, y, 0.06], [hw - 0.03, hd - 0.015, 0.42 * h]);
+        b.rod(
+            Handle,
+            [0.3 * b.w, hd - 0.008, 0.3 * h],
+            [0.3 * b.w, hd - 0.008, 0.38 * h],
+            0.008,
         );
     } else {
         b.cuboid(

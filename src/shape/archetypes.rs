@@ -9,9 +9,11 @@ use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
 use super::garden as ga;
+use super::forms as fo;
 use super::heritage as he;
 use super::market as mk;
 use super::materials::{Rgb, Role};
+use super::machines as ma;
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::play as pl;
@@ -20,6 +22,7 @@ use super::sport as sp;
 use super::structures as st;
 use super::things as t;
 use super::utility as ut;
+use super::vitrines as vi;
 use super::washroom as wa;
 use super::workshop as ws;
 
@@ -257,7 +260,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("chalkboard", m::chalkboard, [Canvas], [Canvas => [0.15, 0.25, 0.20]]),
     arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
     arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
-    arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.45, 0.45, 0.47]]),
+    arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
@@ -353,6 +356,20 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("harp", sc::harp, [Frame], [Frame => [0.80, 0.62, 0.25], Canvas => [0.92, 0.88, 0.78]]),
     arch!("bust", sc::bust, [Body], [Body => [0.93, 0.92, 0.89], Top => [0.70, 0.68, 0.64]]),
     arch!("altar", sc::altar, [Body], [Body => [0.80, 0.77, 0.70], Top => [0.62, 0.60, 0.56], Canvas => [0.96, 0.95, 0.92], Metal => [0.80, 0.64, 0.28], Light => [1.0, 0.86, 0.55]]),
+    arch!("dishwasher", ma::dishwasher, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Handle => [0.35, 0.35, 0.37], Light => [0.35, 0.85, 0.95]]),
+    arch!("microwave", ma::microwave, [Body], [Body => [0.82, 0.82, 0.83], Door => [0.16, 0.16, 0.17], Handle => [0.70, 0.70, 0.72], Keys => [0.55, 0.56, 0.58], Screen => [0.06, 0.10, 0.08]]),
+    arch!("coffee_machine", ma::coffee_machine, [Body], [Body => STEEL, Metal => [0.50, 0.50, 0.52], Handle => BLACK, Interior => [0.28, 0.17, 0.09], Canvas => WHITE]),
+    arch!("till", ma::till, [Body], [Body => [0.22, 0.22, 0.24], Door => [0.32, 0.32, 0.34], Keys => [0.88, 0.88, 0.86], Metal => [0.40, 0.40, 0.42], Screen => [0.10, 0.22, 0.32], Canvas => WHITE]),
+    arch!("printer", ma::printer, [Body], [Body => [0.88, 0.88, 0.87], Door => [0.80, 0.80, 0.80], Top => [0.26, 0.26, 0.28], Canvas => WHITE, Screen => [0.10, 0.22, 0.32]]),
+    arch!("display_case", vi::display_case, [Body], [Body => [0.55, 0.38, 0.22], Door => [0.50, 0.34, 0.20], Frame => STEEL, Interior => [0.30, 0.28, 0.26]]),
+    arch!("aquarium", vi::aquarium, [Body, Top, Frame], [Body => BLACK, Door => [0.14, 0.14, 0.15], Top => BLACK, Frame => BLACK, Water => [0.16, 0.42, 0.58], Soil => [0.80, 0.72, 0.56], Foliage => [0.20, 0.55, 0.22], Pane => [0.62, 0.84, 0.90]]),
+    arch!("shower", vi::shower, [Canvas], [Body => WHITE, Canvas => [0.86, 0.88, 0.90], Metal => [0.42, 0.43, 0.45], Handle => [0.42, 0.43, 0.45], Interior => [0.40, 0.40, 0.42]]),
+    arch!("round_mirror", fo::round_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("oval_mirror", fo::oval_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("round_rug", fo::round_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
+    arch!("oval_rug", fo::oval_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
+    arch!("oval_table", fo::oval_table, [Top, Frame], []),
+    arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -28,10 +28,11 @@ pub fn table(b: &mut Builder) {
 pub fn round_table(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let t = (0.05 * h).clamp(0.025, 0.05);
+    // Round: a circle as wide as the box's shorter side (an oval is `oval_table`).
     let m = hw.min(hd);
-    b.frustum(Top, [0.0, 0.0, h - t], hw, hd, 1.0, t);
+    b.frustum(Top, [0.0, 0.0, h - t], m, m, 1.0, t);
     b.cylinder(Frame, [0.0, 0.0, 0.04], (0.12 * m).max(0.03), h - t - 0.04);
-    b.frustum(Frame, [0.0, 0.0, 0.0], 0.6 * hw, 0.6 * hd, 0.45, 0.05);
+    b.frustum(Frame, [0.0, 0.0, 0.0], 0.6 * m, 0.6 * m, 0.45, 0.05);
 }
 
 pub fn desk(b: &mut Builder) {

@@ -53,6 +53,9 @@ pub enum Role {
     Pillow,
     Duvet,
     Glass,
+    /// See-through glass: a faint tint over what stands behind it (a display case's front, an
+    /// aquarium's walls, a shower screen); drawn with a low opacity.
+    Pane,
     Water,
     /// Books and products on shelves; coloured by variant from a palette.
     Books,
@@ -92,6 +95,7 @@ impl Role {
             Pillow => [0.96, 0.96, 0.95],
             Duvet => [0.88, 0.88, 0.86],
             Glass => [0.72, 0.84, 0.88],
+            Pane => [0.80, 0.90, 0.94],
             Water => [0.20, 0.45, 0.62],
             Books => [0.50, 0.30, 0.20],
             Interior => [0.14, 0.11, 0.09],
@@ -132,7 +136,7 @@ impl Role {
             Role::Shade => &[C::Fabric, C::Glass, C::Paper],
             Role::Pot => &[C::Ceramic, C::Stone, C::Metal, C::Plastic, C::Wicker],
             Role::Mattress | Role::Pillow | Role::Duvet => &[C::Fabric],
-            Role::Glass => &[C::Glass],
+            Role::Glass | Role::Pane => &[C::Glass],
             _ => &[],
         };
         ok.contains(&c)

@@ -20,9 +20,11 @@ mod crafts;
 mod daily;
 mod frames;
 pub mod functions;
+mod forms;
 mod furniture;
 mod garden;
 mod heritage;
+mod machines;
 mod market;
 pub mod materials;
 mod more;
@@ -33,6 +35,7 @@ mod sport;
 mod structures;
 mod things;
 mod utility;
+mod vitrines;
 mod washroom;
 mod workshop;
 
@@ -58,6 +61,9 @@ const TANGENT_SCALE: f64 = 0.7;
 const THICKNESS: f64 = 0.15;
 /// Opacity after the sigmoid.
 const OPACITY: f64 = 0.93;
+/// Opacity of see-through glass ([`Role::Pane`]): neighbouring surfels overlap, so a pane
+/// covers about a third of what stands behind it.
+const PANE_OPACITY: f64 = 0.12;
 /// Per-Gaussian brightness variation (±).
 const BRIGHTNESS_JITTER: f64 = 0.04;
 
@@ -100,6 +106,18 @@ pub fn archetype_of(category: &str) -> &'static str {
             _ => DEFAULT_ARCHETYPE,
         },
     }
+}
+
+/// The archetype drawn for a category described by `description`: [`archetype_of`], changed
+/// by a form word before the category's name ("a round mirror", "an oval table"; the table is
+/// `kb/forms.txt`).
+pub fn archetype_described(category: &str, description: &str) -> &'static str {
+    forms::reshaped(archetype_of(category), category, description)
+}
+
+/// The rows of the form table: (archetype, form words, archetype drawn instead).
+pub fn form_rows() -> Vec<(&'static str, Vec<&'static str>, &'static str)> {
+    forms::rows().collect()
 }
 
 /// The archetype a category name suggests by its words, for knowledge-base rows without an
@@ -168,8 +186,18 @@ fn check_size(size: [f64; 3]) -> Result<(), ShapeError> {
 
 /// The parts of a category's archetype at `size`, in the object frame.
 pub fn parts(category: &str, size: [f64; 3]) -> Result<Vec<Part>, ShapeError> {
+    parts_described(category, size, "")
+}
+
+/// The parts of a category's archetype as `description` shapes it (see
+/// [`archetype_described`]), in the object frame.
+pub fn parts_described(
+    category: &str,
+    size: [f64; 3],
+    description: &str,
+) -> Result<Vec<Part>, ShapeError> {
     check_size(size)?;
-    Ok(archetypes::get(archetype_of(category)).parts(size))
+    Ok(archetypes::get(archetype_described(category, description)).parts(size))
 }
 
 /// The default Gaussian count for parts of total surface `area` in a box of `size`.
@@ -192,7 +220,7 @@ pub fn build(
     if let Some(n) = opts.gaussians.filter(|n| *n < 100) {
         return Err(ShapeError::BadCount(n));
     }
-    let arch = archetypes::get(archetype_of(category));
+    let arch = archetypes::get(archetype_described(category, description));
     let parts = arch.parts(size);
     let palette = materials::Palette::new(description, arch.main, arch.defaults);
     let area: f64 = parts.iter().map(|p| p.prim.area()).sum();
@@ -235,6 +263,7 @@ fn sample(
     let light = norm3([0.35, 0.55, 0.75]);
     let log_t = (THICKNESS * spacing).ln() as f32;
     let logit = (OPACITY / (1.0 - OPACITY)).ln() as f32;
+    let pane_logit = (PANE_OPACITY / (1.0 - PANE_OPACITY)).ln() as f32;
     let mut g = Gaussians {
         sh_degree: 0,
         ..Default::default()
@@ -247,6 +276,11 @@ fn sample(
         let part_shade = 1.0 + 0.06 * (((i as u64 * 2_654_435_761) % 1000) as f64 / 1000.0 - 0.5);
         let base = palette.colour(part.role, part.variant);
         let flat = matches!(part.role, Role::Light | Role::Screen);
+        let part_logit = if part.role == Role::Pane {
+            pane_logit
+        } else {
+            logit
+        };
         for s in &surfels {
             let jitter = 1.0 + rng.gen_range(-BRIGHTNESS_JITTER..=BRIGHTNESS_JITTER);
             if !inside(s.pos) {
@@ -271,7 +305,7 @@ fn sample(
             ]);
             g.rotations
                 .push(parts::quaternion(&s.frame).map(|v| v as f32));
-            g.opacities.push(logit);
+            g.opacities.push(part_logit);
             for c in base {
                 let c = (c * k).clamp(0.0, 1.0);
                 g.sh.push(((c as f64 - 0.5) / SH_C0) as f32);
