@@ -18,6 +18,7 @@ use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::play as pl;
 use super::sculpted as sc;
+use super::seats as se;
 use super::sport as sp;
 use super::structures as st;
 use super::things as t;
@@ -369,6 +370,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("round_rug", fo::round_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("oval_rug", fo::oval_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("oval_table", fo::oval_table, [Top, Frame], []),
+    arch!("bean_bag", se::bean_bag, [Upholstery, Cushion], [Upholstery => [0.50, 0.30, 0.45], Cushion => [0.50, 0.30, 0.45]]),
+    arch!("rocking_chair", se::rocking_chair, [Frame, Seat], [Frame => [0.50, 0.33, 0.19], Seat => [0.50, 0.33, 0.19]]),
+    arch!("crib", se::crib, [Frame], [Frame => WHITE, Mattress => WHITE, Duvet => [0.70, 0.82, 0.90]]),
     arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
 ];
 

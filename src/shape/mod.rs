@@ -31,6 +31,7 @@ mod more;
 pub mod parts;
 mod play;
 mod sculpted;
+mod seats;
 mod sport;
 mod structures;
 mod things;
