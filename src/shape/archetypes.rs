@@ -8,6 +8,7 @@ use super::crafts as cr;
 use super::daily as d;
 use super::frames as fr;
 use super::furniture as f;
+use super::games as gm;
 use super::garden as ga;
 use super::forms as fo;
 use super::heritage as he;
@@ -373,6 +374,10 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("bean_bag", se::bean_bag, [Upholstery, Cushion], [Upholstery => [0.50, 0.30, 0.45], Cushion => [0.50, 0.30, 0.45]]),
     arch!("rocking_chair", se::rocking_chair, [Frame, Seat], [Frame => [0.50, 0.33, 0.19], Seat => [0.50, 0.33, 0.19]]),
     arch!("crib", se::crib, [Frame], [Frame => WHITE, Mattress => WHITE, Duvet => [0.70, 0.82, 0.90]]),
+    arch!("coat_rack", se::coat_rack, [Frame], [Frame => [0.45, 0.29, 0.16], Handle => [0.70, 0.58, 0.30], Upholstery => [0.62, 0.47, 0.30]]),
+    arch!("pool_table", gm::pool_table, [Upholstery], [Upholstery => [0.08, 0.42, 0.20], Cushion => [0.06, 0.34, 0.16], Frame => [0.36, 0.20, 0.10], Body => [0.36, 0.20, 0.10], Interior => BLACK, Canvas => WHITE]),
+    arch!("ping_pong_table", gm::ping_pong_table, [Top], [Top => [0.12, 0.30, 0.55], Canvas => WHITE, Interior => [0.10, 0.10, 0.11], Metal => [0.30, 0.30, 0.32]]),
+    arch!("drum_kit", gm::drum_kit, [Body], [Body => [0.70, 0.10, 0.12], Canvas => [0.93, 0.92, 0.88], Metal => [0.70, 0.71, 0.73], Top => [0.82, 0.66, 0.30], Upholstery => BLACK]),
     arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
 ];
 

@@ -22,6 +22,7 @@ mod frames;
 pub mod functions;
 mod forms;
 mod furniture;
+mod games;
 mod garden;
 mod heritage;
 mod machines;

@@ -1,5 +1,5 @@
 //! Layouts of seats and beds whose form is their point: a slouching bean bag, a rocking chair on
-//! its rockers, a crib's barred sides. The front faces +y.
+//! its rockers, a crib's barred sides; and a coat stand with its hooks. The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 
@@ -89,4 +89,30 @@ pub fn crib(b: &mut Builder) {
             b.rod(Frame, a, bb, bar);
         }
     }
+}
+
+/// A coat stand: a pole on splayed feet, two rings of hooks near the top, a knob, and a coat
+/// hanging from one hook.
+pub fn coat_rack(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    b.rod(Frame, [0.0, 0.0, 0.0], [0.0, 0.0, h - 0.06], 0.022);
+    b.ellipsoid(Frame, [0.0, 0.0, h - 0.04], [0.035, 0.035, 0.04]);
+    for k in 0..4 {
+        let a = k as f64 * std::f64::consts::FRAC_PI_2 + 0.4;
+        b.rod(Frame, [0.0, 0.0, 0.25], [0.95 * m * a.cos(), 0.95 * m * a.sin(), 0.015], 0.015);
+    }
+    for (z, n, l) in [(h - 0.16, 6, 0.6 * m), (h - 0.36, 4, 0.5 * m)] {
+        for k in 0..n {
+            let a = k as f64 * std::f64::consts::TAU / n as f64;
+            let tip = [l * a.cos(), l * a.sin(), z + 0.08];
+            b.rod(Handle, [0.0, 0.0, z], tip, 0.008);
+            b.ellipsoid(Handle, tip, [0.014, 0.014, 0.014]);
+        }
+    }
+    // A coat on the hook towards +x: shoulders under the hook, hanging to below the middle.
+    let x = 0.55 * m;
+    let top = h - 0.2;
+    b.ellipsoid(Upholstery, [x, 0.0, top - 0.06], [0.06, 0.16, 0.06]);
+    b.cuboid(Upholstery, [x - 0.06, -0.15, top - 0.85], [x + 0.05, 0.15, top - 0.06]);
 }
