@@ -385,8 +385,16 @@ fn every_category_maps_to_an_archetype_of_its_own_function() {
 fn form_words_before_the_name_change_the_form() {
     use dreamscene::shape::archetype_described;
     let cases = [
-        ("full length mirror", "a round gilded mirror", "round_mirror"),
-        ("full length mirror", "an oval mirror by the door", "oval_mirror"),
+        (
+            "full length mirror",
+            "a round gilded mirror",
+            "round_mirror",
+        ),
+        (
+            "full length mirror",
+            "an oval mirror by the door",
+            "oval_mirror",
+        ),
         ("rug", "a big round wool rug", "round_rug"),
         ("dining table", "an oval oak dining table", "oval_table"),
         ("round table", "a square table", "table"),
@@ -442,6 +450,10 @@ fn an_oval_rug_is_an_ellipse() {
             .filter(|s| s.pos[0].abs() > 0.8 && s.pos[1].abs() > 0.55)
             .count()
     };
-    assert_eq!(corner("an oval rug"), 0, "an oval rug reaches its box's corners");
+    assert_eq!(
+        corner("an oval rug"),
+        0,
+        "an oval rug reaches its box's corners"
+    );
     assert!(corner("a rug") > 0, "a plain rug should fill its corners");
 }

@@ -153,9 +153,9 @@ fn every_archetype_has_a_silhouette_of_its_own() {
         for j in i + 1..reps.len() {
             // A form of an archetype (an oval rug, an oval mirror) differs from it in outline
             // only, which coarse masks of a flat thing cannot tell: tests/shape.rs checks it.
-            let form_pair = forms
-                .iter()
-                .any(|(a, _, d)| (*a, *d) == (reps[i].0, reps[j].0) || (*a, *d) == (reps[j].0, reps[i].0));
+            let form_pair = forms.iter().any(|(a, _, d)| {
+                (*a, *d) == (reps[i].0, reps[j].0) || (*a, *d) == (reps[j].0, reps[i].0)
+            });
             let o = overlap(&m[i], &m[j]);
             if form_pair {
                 continue;

@@ -21,10 +21,18 @@ fn appliance_body(b: &mut Builder) -> f64 {
 pub fn fridge(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let face = hd - 0.06;
-    b.cuboid(Interior, [-hw + 0.02, -hd, 0.0], [hw - 0.02, face - 0.03, 0.05]);
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, -hd, 0.0],
+        [hw - 0.02, face - 0.03, 0.05],
+    );
     b.cuboid(Body, [-hw, -hd, 0.05], [hw, face, h]);
     let door = |b: &mut Builder, x0: f64, x1: f64, z0: f64, z1: f64| {
-        b.cuboid(Door, [x0 + 0.012, face, z0 + 0.012], [x1 - 0.012, face + 0.025, z1 - 0.012]);
+        b.cuboid(
+            Door,
+            [x0 + 0.012, face, z0 + 0.012],
+            [x1 - 0.012, face + 0.025, z1 - 0.012],
+        );
     };
     let bar = |b: &mut Builder, x: f64, z0: f64, z1: f64| {
         let y = face + 0.025;
@@ -36,7 +44,11 @@ pub fn fridge(b: &mut Builder) {
         }
     };
     // The gap between doors shows dark.
-    b.cuboid(Interior, [-hw + 0.01, face, 0.05], [hw - 0.01, face + 0.004, h - 0.01]);
+    b.cuboid(
+        Interior,
+        [-hw + 0.01, face, 0.05],
+        [hw - 0.01, face + 0.004, h - 0.01],
+    );
     if b.w >= 0.85 {
         // Side-by-side: freezer on the left, fridge on the right, handles at the middle.
         door(b, -hw, -0.05 * b.w, 0.05, h);
@@ -92,7 +104,11 @@ pub fn stove(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let face = hd - 0.04;
     let hob = (0.04 * h).clamp(0.015, 0.03);
-    b.cuboid(Interior, [-hw + 0.02, -hd, 0.0], [hw - 0.02, face - 0.03, 0.05]);
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, -hd, 0.0],
+        [hw - 0.02, face - 0.03, 0.05],
+    );
     b.cuboid(Body, [-hw, -hd, 0.05], [hw, face, h - hob]);
     b.cuboid(Top, [-hw, -hd, h - hob], [hw, face, h - 0.012]);
     // A back guard when the range is tall enough to be free-standing.
@@ -105,11 +121,22 @@ pub fn stove(b: &mut Builder) {
         let (x, y) = (x, y.clamp(-hd + 0.05 + r, face - r));
         let rr = if sx * sy > 0.0 { r } else { 0.75 * r };
         b.frustum(Metal, [x, y, h - 0.012], rr, rr, 0.95, 0.008);
-        b.frustum(Interior, [x, y, h - 0.012], 0.45 * rr, 0.45 * rr, 1.0, 0.012);
+        b.frustum(
+            Interior,
+            [x, y, h - 0.012],
+            0.45 * rr,
+            0.45 * rr,
+            1.0,
+            0.012,
+        );
     }
     // Knob strip with four knobs.
     let zk = h - hob - 0.06;
-    b.cuboid(Door, [-hw + 0.01, face, zk - 0.04], [hw - 0.01, face + 0.015, h - hob - 0.005]);
+    b.cuboid(
+        Door,
+        [-hw + 0.01, face, zk - 0.04],
+        [hw - 0.01, face + 0.015, h - hob - 0.005],
+    );
     for k in 0..4 {
         let x = -0.3 * b.w + k as f64 * 0.2 * b.w;
         b.revolved(
@@ -124,13 +151,26 @@ pub fn stove(b: &mut Builder) {
     // Oven door with its window, and a drawer below.
     let (z0, z1) = (0.2 * h, zk - 0.05);
     b.cuboid(Door, [-hw + 0.01, face, z0], [hw - 0.01, face + 0.02, z1]);
-    b.cuboid(Screen, [-hw + 0.08, face + 0.02, z0 + 0.06], [hw - 0.08, face + 0.024, z1 - 0.12]);
+    b.cuboid(
+        Screen,
+        [-hw + 0.08, face + 0.02, z0 + 0.06],
+        [hw - 0.08, face + 0.024, z1 - 0.12],
+    );
     let zh = z1 - 0.05;
-    b.rod(Handle, [-hw + 0.06, hd - 0.008, zh], [hw - 0.06, hd - 0.008, zh], 0.009);
+    b.rod(
+        Handle,
+        [-hw + 0.06, hd - 0.008, zh],
+        [hw - 0.06, hd - 0.008, zh],
+        0.009,
+    );
     for x in [-hw + 0.08, hw - 0.08] {
         b.rod(Handle, [x, face + 0.02, zh], [x, hd - 0.008, zh], 0.006);
     }
-    b.cuboid(Door, [-hw + 0.01, face, 0.06], [hw - 0.01, face + 0.02, z0 - 0.01]);
+    b.cuboid(
+        Door,
+        [-hw + 0.01, face, 0.06],
+        [hw - 0.01, face + 0.02, z0 - 0.01],
+    );
 }
 
 pub fn appliance(b: &mut Builder) {
@@ -156,10 +196,22 @@ pub fn appliance(b: &mut Builder) {
     } else if h > 1.2 {
         // A standing machine (arcade, cash machine, jukebox): a lit header, a screen at eye
         // height over a ledge, a service door below.
-        b.cuboid(Light, [-hw + 0.02, y, 0.88 * h], [hw - 0.02, hd - 0.015, h - 0.02]);
-        b.cuboid(Screen, [-hw + 0.05, y, 0.56 * h], [hw - 0.05, hd - 0.015, 0.82 * h]);
+        b.cuboid(
+            Light,
+            [-hw + 0.02, y, 0.88 * h],
+            [hw - 0.02, hd - 0.015, h - 0.02],
+        );
+        b.cuboid(
+            Screen,
+            [-hw + 0.05, y, 0.56 * h],
+            [hw - 0.05, hd - 0.015, 0.82 * h],
+        );
         b.cuboid(Top, [-hw, y, 0.47 * h], [hw, hd, 0.5 * h]);
-        b.cuboid(Door, [-hw + 0.03, y, 0.06], [hw - 0.03, hd - 0.015, 0.42 * h]);
+        b.cuboid(
+            Door,
+            [-hw + 0.03, y, 0.06],
+            [hw - 0.03, hd - 0.015, 0.42 * h],
+        );
         b.rod(
             Handle,
             [0.3 * b.w, hd - 0.008, 0.3 * h],

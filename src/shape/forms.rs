@@ -30,7 +30,11 @@ pub fn reshaped(archetype: &'static str, category: &str, description: &str) -> &
         .split(|c: char| !c.is_ascii_alphanumeric() && c != '-')
         .filter(|w| !w.is_empty())
         .collect();
-    let head = category.rsplit(' ').next().unwrap_or(category).to_lowercase();
+    let head = category
+        .rsplit(' ')
+        .next()
+        .unwrap_or(category)
+        .to_lowercase();
     let plural = format!("{head}s");
     // Words before the category's head noun; without it, before the first "with".
     let end = words
@@ -71,12 +75,13 @@ fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
         // A cheval stand: two legs from the floor to the frame's sides, splayed feet.
         for sx in [-1.0, 1.0] {
             let x = sx * 0.75 * rx;
-            b.rod(Frame, [x, -hd + 0.5 * t, 0.0], [x, -hd + 0.5 * t, zc], 0.012);
-            b.cuboid(
+            b.rod(
                 Frame,
-                [x - 0.015, -hd, 0.0],
-                [x + 0.015, hd, 0.02],
+                [x, -hd + 0.5 * t, 0.0],
+                [x, -hd + 0.5 * t, zc],
+                0.012,
             );
+            b.cuboid(Frame, [x - 0.015, -hd, 0.0], [x + 0.015, hd, 0.02]);
         }
     }
 }
@@ -121,7 +126,11 @@ pub fn oval_table(b: &mut Builder) {
     let m = hw.min(hd);
     let (long_x, off) = (b.w >= b.d, 0.45 * (hw.max(hd) - m));
     for s in [-1.0, 1.0] {
-        let c = if long_x { [s * off, 0.0] } else { [0.0, s * off] };
+        let c = if long_x {
+            [s * off, 0.0]
+        } else {
+            [0.0, s * off]
+        };
         let r = (0.1 * m).max(0.025);
         b.cylinder(Frame, [c[0], c[1], 0.04], r, h - t - 0.04);
         b.frustum(Frame, [c[0], c[1], 0.0], 0.5 * m, 0.5 * m, 0.45, 0.05);
@@ -134,10 +143,19 @@ pub fn square_ottoman(b: &mut Builder) {
     let feet = (0.12 * h).min(0.05);
     b.legs(Frame, 0.04, 0.02, 0.0, feet);
     b.cuboid(Upholstery, [-hw, -hd, feet], [hw, hd, h - 0.03]);
-    b.cuboid(Cushion, [-hw + 0.01, -hd + 0.01, h - 0.03], [hw - 0.01, hd - 0.01, h]);
+    b.cuboid(
+        Cushion,
+        [-hw + 0.01, -hd + 0.01, h - 0.03],
+        [hw - 0.01, hd - 0.01, h],
+    );
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
-            b.cylinder(Frame, [sx * 0.25 * b.w, sy * 0.25 * b.d, h - 0.001], 0.012, 0.001);
+            b.cylinder(
+                Frame,
+                [sx * 0.25 * b.w, sy * 0.25 * b.d, h - 0.001],
+                0.012,
+                0.001,
+            );
         }
     }
 }

@@ -12,21 +12,56 @@ pub fn pool_table(b: &mut Builder) {
     let rail = (0.08 * b.d).clamp(0.06, 0.12);
     let zb = 0.62 * h;
     b.legs(Frame, 0.12, 0.06, 0.0, zb);
-    b.cuboid(Body, [-hw + 0.03, -hd + 0.03, zb], [hw - 0.03, hd - 0.03, h - 0.05]);
+    b.cuboid(
+        Body,
+        [-hw + 0.03, -hd + 0.03, zb],
+        [hw - 0.03, hd - 0.03, h - 0.05],
+    );
     // Rails on the four sides and the felt between them.
     b.cuboid(Frame, [-hw, -hd, h - 0.05], [hw, -hd + rail, h]);
     b.cuboid(Frame, [-hw, hd - rail, h - 0.05], [hw, hd, h]);
-    b.cuboid(Frame, [-hw, -hd + rail, h - 0.05], [-hw + rail, hd - rail, h]);
+    b.cuboid(
+        Frame,
+        [-hw, -hd + rail, h - 0.05],
+        [-hw + rail, hd - rail, h],
+    );
     b.cuboid(Frame, [hw - rail, -hd + rail, h - 0.05], [hw, hd - rail, h]);
-    b.cuboid(Upholstery, [-hw + rail, -hd + rail, h - 0.05], [hw - rail, hd - rail, h - 0.02]);
+    b.cuboid(
+        Upholstery,
+        [-hw + rail, -hd + rail, h - 0.05],
+        [hw - rail, hd - rail, h - 0.02],
+    );
     let c = 0.03;
-    b.cuboid(Cushion, [-hw + rail, -hd + rail, h - 0.02], [hw - rail, -hd + rail + c, h - 0.005]);
-    b.cuboid(Cushion, [-hw + rail, hd - rail - c, h - 0.02], [hw - rail, hd - rail, h - 0.005]);
-    b.cuboid(Cushion, [-hw + rail, -hd + rail, h - 0.02], [-hw + rail + c, hd - rail, h - 0.005]);
-    b.cuboid(Cushion, [hw - rail - c, -hd + rail, h - 0.02], [hw - rail, hd - rail, h - 0.005]);
+    b.cuboid(
+        Cushion,
+        [-hw + rail, -hd + rail, h - 0.02],
+        [hw - rail, -hd + rail + c, h - 0.005],
+    );
+    b.cuboid(
+        Cushion,
+        [-hw + rail, hd - rail - c, h - 0.02],
+        [hw - rail, hd - rail, h - 0.005],
+    );
+    b.cuboid(
+        Cushion,
+        [-hw + rail, -hd + rail, h - 0.02],
+        [-hw + rail + c, hd - rail, h - 0.005],
+    );
+    b.cuboid(
+        Cushion,
+        [hw - rail - c, -hd + rail, h - 0.02],
+        [hw - rail, hd - rail, h - 0.005],
+    );
     let pr = 0.6 * rail;
     let (px, py) = (hw - 0.7 * rail, hd - 0.7 * rail);
-    for (x, y) in [(-px, -py), (0.0, -py), (px, -py), (-px, py), (0.0, py), (px, py)] {
+    for (x, y) in [
+        (-px, -py),
+        (0.0, -py),
+        (px, -py),
+        (-px, py),
+        (0.0, py),
+        (px, py),
+    ] {
         b.cylinder(Interior, [x, y, h - 0.045], pr, 0.046);
     }
     // A few balls on the felt: a triangle of them and the white.
@@ -62,7 +97,11 @@ pub fn ping_pong_table(b: &mut Builder) {
     b.cuboid(Interior, [-0.004, -hd, zt + 0.01], [0.004, hd, h - 0.02]);
     b.cuboid(Canvas, [-0.006, -hd, h - 0.02], [0.006, hd, h]);
     for sy in [-1.0, 1.0] {
-        b.cuboid(Metal, [-0.015, sy * hd - 0.015 * sy - 0.015, zt], [0.015, sy * hd - 0.015 * sy + 0.015, h]);
+        b.cuboid(
+            Metal,
+            [-0.015, sy * hd - 0.015 * sy - 0.015, zt],
+            [0.015, sy * hd - 0.015 * sy + 0.015, h],
+        );
     }
     // Leg frames under each half.
     for sx in [-1.0, 1.0] {
@@ -72,7 +111,12 @@ pub fn ping_pong_table(b: &mut Builder) {
             b.rod(Metal, [x, y, 0.05], [x, y, zt - t], 0.02);
             b.cylinder(Tyre, [x, y, 0.0], 0.04, 0.05);
         }
-        b.rod(Metal, [x, -hd + 0.12, 0.3 * zt], [x, hd - 0.12, 0.3 * zt], 0.015);
+        b.rod(
+            Metal,
+            [x, -hd + 0.12, 0.3 * zt],
+            [x, hd - 0.12, 0.3 * zt],
+            0.015,
+        );
     }
 }
 
@@ -97,7 +141,12 @@ fn drum(b: &mut Builder, c: [f64; 3], r: f64, len: f64, a: f64) {
 fn cymbal(b: &mut Builder, x: f64, y: f64, z: f64, r: f64) {
     b.rod(Metal, [x, y, 0.0], [x, y, z], 0.01);
     for a in [0.0f64, 2.1, 4.2] {
-        b.rod(Metal, [x, y, 0.25], [x + 0.15 * a.cos(), y + 0.15 * a.sin(), 0.0], 0.007);
+        b.rod(
+            Metal,
+            [x, y, 0.25],
+            [x + 0.15 * a.cos(), y + 0.15 * a.sin(), 0.0],
+            0.007,
+        );
     }
     b.frustum(Top, [x, y, z], r, r, 0.12, 0.025);
 }
@@ -110,14 +159,30 @@ pub fn drum_kit(b: &mut Builder) {
     let rb = 0.28 * s;
     drum(b, [0.0, 0.05 * b.d - 0.2 * s, rb], rb, 0.4 * s, -FRAC_PI_2);
     for x in [-0.16 * s, 0.16 * s] {
-        b.rod(Metal, [x * 0.5, 0.2 * b.d, 2.0 * rb - 0.02], [x, 0.1 * b.d, 2.0 * rb + 0.1 * s], 0.01);
-        drum(b, [x, 0.05 * b.d, 2.0 * rb + 0.04 * s], 0.11 * s, 0.2 * s, 0.5);
+        b.rod(
+            Metal,
+            [x * 0.5, 0.2 * b.d, 2.0 * rb - 0.02],
+            [x, 0.1 * b.d, 2.0 * rb + 0.1 * s],
+            0.01,
+        );
+        drum(
+            b,
+            [x, 0.05 * b.d, 2.0 * rb + 0.04 * s],
+            0.11 * s,
+            0.2 * s,
+            0.5,
+        );
     }
     // Floor tom on the right (seen from the front: the player's right, at -x), snare on the left.
     let (xf, yf) = (-0.42 * b.w, -0.1 * b.d);
     for a in [0.0f64, 2.1, 4.2] {
         let (dx, dy) = (0.14 * s * a.cos(), 0.14 * s * a.sin());
-        b.rod(Metal, [xf + dx, yf + dy, 0.0], [xf + dx, yf + dy, 0.3 * s], 0.008);
+        b.rod(
+            Metal,
+            [xf + dx, yf + dy, 0.0],
+            [xf + dx, yf + dy, 0.3 * s],
+            0.008,
+        );
     }
     b.cylinder(Body, [xf, yf, 0.2 * s], 0.16 * s, 0.3 * s);
     b.cylinder(Canvas, [xf, yf, 0.5 * s], 0.155 * s, 0.004);

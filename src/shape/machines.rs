@@ -42,9 +42,17 @@ fn keypad(b: &mut Builder, x: [f64; 2], z: [f64; 2], y: f64, cols: usize, rows: 
 pub fn dishwasher(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let face = hd - 0.045;
-    b.cuboid(Interior, [-hw + 0.02, -hd, 0.0], [hw - 0.02, face - 0.03, 0.1]);
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, -hd, 0.0],
+        [hw - 0.02, face - 0.03, 0.1],
+    );
     b.cuboid(Body, [-hw, -hd, 0.1], [hw, face, h]);
-    b.cuboid(Door, [-hw + 0.005, face, 0.1], [hw - 0.005, face + 0.02, h - 0.005]);
+    b.cuboid(
+        Door,
+        [-hw + 0.005, face, 0.1],
+        [hw - 0.005, face + 0.02, h - 0.005],
+    );
     let strip = (0.12 * h).clamp(0.06, 0.11);
     b.cuboid(
         Screen,
@@ -69,13 +77,22 @@ pub fn microwave(b: &mut Builder) {
     let feet = 0.012;
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
-            b.cylinder(Metal, [sx * (hw - 0.04), sy * (hd - 0.05), 0.0], 0.012, feet);
+            b.cylinder(
+                Metal,
+                [sx * (hw - 0.04), sy * (hd - 0.05), 0.0],
+                0.012,
+                feet,
+            );
         }
     }
     let face = hd - 0.03;
     b.cuboid(Body, [-hw, -hd, feet], [hw, face, h]);
     let xd = hw - 0.27 * b.w;
-    b.cuboid(Door, [-hw + 0.01, face, feet + 0.01], [xd, face + 0.012, h - 0.01]);
+    b.cuboid(
+        Door,
+        [-hw + 0.01, face, feet + 0.01],
+        [xd, face + 0.012, h - 0.01],
+    );
     b.cuboid(
         Screen,
         [-hw + 0.05, face + 0.012, feet + 0.05],
@@ -88,7 +105,12 @@ pub fn microwave(b: &mut Builder) {
         0.008,
     );
     for z in [feet + 0.05, h - 0.05] {
-        b.rod(Handle, [xd - 0.035, face + 0.012, z], [xd - 0.035, face + 0.025, z], 0.005);
+        b.rod(
+            Handle,
+            [xd - 0.035, face + 0.012, z],
+            [xd - 0.035, face + 0.025, z],
+            0.005,
+        );
     }
     let (x0, x1) = (xd + 0.025, hw - 0.025);
     b.cuboid(Screen, [x0, face, h - 0.09], [x1, face + 0.006, h - 0.04]);
@@ -106,20 +128,44 @@ pub fn coffee_machine(b: &mut Builder) {
     let head = 0.62 * top;
     // Base with the drip tray, a back tower, an upper head reaching to the front.
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd - 0.02, base]);
-    b.cuboid(Metal, [-0.4 * b.w, back, base], [0.4 * b.w, hd - 0.03, base + 0.012]);
+    b.cuboid(
+        Metal,
+        [-0.4 * b.w, back, base],
+        [0.4 * b.w, hd - 0.03, base + 0.012],
+    );
     b.cuboid(Body, [-hw, -hd, base], [hw, back, top]);
-    b.cuboid(Interior, [-hw + 0.02, back, base], [hw - 0.02, back + 0.003, head]);
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, back, base],
+        [hw - 0.02, back + 0.003, head],
+    );
     b.cuboid(Body, [-hw, back, head], [hw, hd - 0.02, top]);
-    b.cuboid(Metal, [-hw + 0.01, hd - 0.02, head + 0.02], [hw - 0.01, hd - 0.012, top - 0.02]);
+    b.cuboid(
+        Metal,
+        [-hw + 0.01, hd - 0.02, head + 0.02],
+        [hw - 0.01, hd - 0.012, top - 0.02],
+    );
     // Two pressure gauges on the front.
     for x in [-0.22 * b.w, 0.22 * b.w] {
-        front_disc(b, Canvas, [x, hd - 0.012, 0.5 * (head + top)], 0.028, 1.0, 0.01);
+        front_disc(
+            b,
+            Canvas,
+            [x, hd - 0.012, 0.5 * (head + top)],
+            0.028,
+            1.0,
+            0.01,
+        );
     }
     // Group head, portafilter and its handle towards the front.
     let yc = 0.5 * (back + hd);
     b.cylinder(Metal, [0.0, yc, head - 0.05], 0.045, 0.05);
     b.cylinder(Metal, [0.0, yc, head - 0.08], 0.04, 0.03);
-    b.rod(Handle, [0.0, yc + 0.03, head - 0.065], [0.0, hd - 0.005, head - 0.09], 0.012);
+    b.rod(
+        Handle,
+        [0.0, yc + 0.03, head - 0.065],
+        [0.0, hd - 0.005, head - 0.09],
+        0.012,
+    );
     // A cup under it, a steam wand beside it.
     b.frustum(Canvas, [0.0, yc, base + 0.012], 0.03, 0.03, 1.2, 0.06);
     b.rod(
@@ -133,7 +179,14 @@ pub fn coffee_machine(b: &mut Builder) {
         let (x, y, r) = (-0.25 * b.w, -0.1 * b.d, 0.1 * b.w.min(b.d));
         b.frustum(Interior, [x, y, top], 0.9 * r, 0.9 * r, 1.2, 0.45 * hopper);
         b.frustum(Pane, [x, y, top], r, r, 1.5, 0.85 * hopper);
-        b.frustum(Handle, [x, y, top + 0.85 * hopper], 1.55 * r, 1.55 * r, 0.8, 0.15 * hopper);
+        b.frustum(
+            Handle,
+            [x, y, top + 0.85 * hopper],
+            1.55 * r,
+            1.55 * r,
+            0.8,
+            0.15 * hopper,
+        );
     }
 }
 
@@ -143,8 +196,16 @@ pub fn till(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let dz = 0.32 * h;
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd - 0.015, dz]);
-    b.cuboid(Door, [-hw + 0.015, hd - 0.015, 0.02], [hw - 0.015, hd, dz - 0.02]);
-    b.cuboid(Interior, [-0.15 * b.w, hd - 0.002, 0.45 * dz], [0.15 * b.w, hd, 0.6 * dz]);
+    b.cuboid(
+        Door,
+        [-hw + 0.015, hd - 0.015, 0.02],
+        [hw - 0.015, hd, dz - 0.02],
+    );
+    b.cuboid(
+        Interior,
+        [-0.15 * b.w, hd - 0.002, 0.45 * dz],
+        [0.15 * b.w, hd, 0.6 * dz],
+    );
     // Keyboard: a wedge rising to the back, with its keys on the slope.
     let (y0, y1) = (hd - 0.02, -hd + 0.35 * b.d);
     let rise = 0.18 * h;
@@ -152,7 +213,11 @@ pub fn till(b: &mut Builder) {
     let len = ((y0 - y1).powi(2) + rise * rise).sqrt();
     let rot = rot_x(-tilt);
     let c = [0.0, 0.5 * (y0 + y1), dz + 0.5 * rise];
-    b.cuboid(Body, [-hw + 0.01, y1, dz], [hw - 0.01, y0 - 0.04, dz + 0.5 * rise]);
+    b.cuboid(
+        Body,
+        [-hw + 0.01, y1, dz],
+        [hw - 0.01, y0 - 0.04, dz + 0.5 * rise],
+    );
     b.slab(Body, c, [hw - 0.01, 0.5 * len, 0.012], rot);
     let (cols, rows) = (6, 4);
     for i in 0..cols {
@@ -163,7 +228,11 @@ pub fn till(b: &mut Builder) {
             b.slab(
                 Keys,
                 [c[0] + p[0], c[1] + p[1], c[2] + p[2]],
-                [0.35 * 1.6 * hw / cols as f64, 0.3 * 0.8 * len / rows as f64, 0.006],
+                [
+                    0.35 * 1.6 * hw / cols as f64,
+                    0.3 * 0.8 * len / rows as f64,
+                    0.006,
+                ],
                 rot,
             );
         }
@@ -173,9 +242,17 @@ pub fn till(b: &mut Builder) {
     let ys = -0.02 * b.d;
     b.cylinder(Metal, [0.0, ys, dz], 0.02, zs0 - dz + 0.02);
     b.cuboid(Body, [-0.36 * b.w, ys - 0.03, zs0], [0.36 * b.w, ys, zs1]);
-    b.cuboid(Screen, [-0.32 * b.w, ys, zs0 + 0.015], [0.32 * b.w, ys + 0.004, zs1 - 0.015]);
+    b.cuboid(
+        Screen,
+        [-0.32 * b.w, ys, zs0 + 0.015],
+        [0.32 * b.w, ys + 0.004, zs1 - 0.015],
+    );
     // Receipt printer at the back right with a curl of paper.
-    b.cuboid(Body, [0.2 * b.w, -hd, dz], [hw - 0.01, -hd + 0.12 * b.d, dz + 0.5 * rise]);
+    b.cuboid(
+        Body,
+        [0.2 * b.w, -hd, dz],
+        [hw - 0.01, -hd + 0.12 * b.d, dz + 0.5 * rise],
+    );
     b.cuboid(
         Canvas,
         [0.25 * b.w, -hd + 0.03, dz + 0.5 * rise],
@@ -195,7 +272,11 @@ pub fn printer(b: &mut Builder) {
     let dh = 0.45 * (h - lid) / drawers as f64;
     for k in 0..drawers {
         let z0 = 0.02 + k as f64 * dh;
-        b.cuboid(Door, [-hw + 0.015, face, z0 + 0.004], [hw - 0.015, hd, z0 + dh - 0.004]);
+        b.cuboid(
+            Door,
+            [-hw + 0.015, face, z0 + 0.004],
+            [hw - 0.015, hd, z0 + dh - 0.004],
+        );
         b.cuboid(
             Interior,
             [-0.12 * b.w, hd - 0.001, z0 + 0.6 * dh],
@@ -204,8 +285,16 @@ pub fn printer(b: &mut Builder) {
     }
     // Output slot under the lid, with a sheet of paper sticking out.
     let zo = h - lid - 0.3 * (h - lid);
-    b.cuboid(Interior, [-0.4 * b.w, face - 0.001, zo], [0.3 * b.w, face, zo + 0.05]);
-    b.cuboid(Canvas, [-0.3 * b.w, face - 0.15 * b.d, zo + 0.01], [0.2 * b.w, face, zo + 0.014]);
+    b.cuboid(
+        Interior,
+        [-0.4 * b.w, face - 0.001, zo],
+        [0.3 * b.w, face, zo + 0.05],
+    );
+    b.cuboid(
+        Canvas,
+        [-0.3 * b.w, face - 0.15 * b.d, zo + 0.01],
+        [0.2 * b.w, face, zo + 0.014],
+    );
     // Scanner lid (dark) and the control panel.
     b.cuboid(Top, [-hw, -hd, h - lid], [hw, hd - 0.06, h]);
     let c = [0.28 * b.w, hd - 0.05, h - lid - 0.01];

@@ -6,13 +6,21 @@ use super::materials::Role::*;
 /// A bean bag: a squashed round body with a slumped back rising behind the seat hollow.
 pub fn bean_bag(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    b.ellipsoid(Upholstery, [0.0, 0.05 * b.d, 0.3 * h], [hw, 0.9 * hd, 0.3 * h]);
+    b.ellipsoid(
+        Upholstery,
+        [0.0, 0.05 * b.d, 0.3 * h],
+        [hw, 0.9 * hd, 0.3 * h],
+    );
     b.ellipsoid(
         Upholstery,
         [0.0, -0.22 * b.d, 0.58 * h],
         [0.85 * hw, 0.5 * hd, 0.42 * h],
     );
-    b.ellipsoid(Cushion, [0.0, 0.12 * b.d, 0.5 * h], [0.55 * hw, 0.45 * hd, 0.08 * h]);
+    b.ellipsoid(
+        Cushion,
+        [0.0, 0.12 * b.d, 0.5 * h],
+        [0.55 * hw, 0.45 * hd, 0.08 * h],
+    );
 }
 
 /// A rocking chair: two curved rockers under the legs, a seat, arms and a tall back of
@@ -39,7 +47,11 @@ pub fn rocking_chair(b: &mut Builder) {
         b.rod(Frame, [x, 0.3 * b.d, zs], [x, 0.3 * b.d, zs + 0.22], 0.015);
         b.rod(Frame, [x, 0.33 * b.d, zs + 0.22], [x, ya, zs + 0.24], 0.02);
     }
-    b.cuboid(Seat, [-hw + 0.03, -0.34 * b.d, zs], [hw - 0.03, 0.34 * b.d, zs + 0.04]);
+    b.cuboid(
+        Seat,
+        [-hw + 0.03, -0.34 * b.d, zs],
+        [hw - 0.03, 0.34 * b.d, zs + 0.04],
+    );
     // The back leans back: posts, spindles and a top rail.
     let (yb, yt) = (-0.32 * b.d, -hd + 0.03);
     let xb = hw - 0.07;
@@ -48,7 +60,12 @@ pub fn rocking_chair(b: &mut Builder) {
         let rr = if k == 0 || k == 6 { 0.02 } else { 0.01 };
         b.rod(Frame, [x, yb, zs + 0.04], [x, yt, h - 0.06], rr);
     }
-    b.rod(Frame, [-xb - 0.02, yt, h - 0.05], [xb + 0.02, yt, h - 0.05], 0.03);
+    b.rod(
+        Frame,
+        [-xb - 0.02, yt, h - 0.05],
+        [xb + 0.02, yt, h - 0.05],
+        0.03,
+    );
 }
 
 /// A crib: corner posts, top and bottom rails and bars all round, a mattress inside.
@@ -58,17 +75,30 @@ pub fn crib(b: &mut Builder) {
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
             let (x, y) = (sx * (hw - p / 2.0), sy * (hd - p / 2.0));
-            b.cuboid(Frame, [x - p / 2.0, y - p / 2.0, 0.0], [x + p / 2.0, y + p / 2.0, h]);
+            b.cuboid(
+                Frame,
+                [x - p / 2.0, y - p / 2.0, 0.0],
+                [x + p / 2.0, y + p / 2.0, h],
+            );
         }
     }
     let zb = 0.25 * h;
     let zm = zb + 0.12;
     b.cuboid(Mattress, [-hw + p, -hd + p, zb], [hw - p, hd - p, zm]);
-    b.cuboid(Duvet, [-hw + p + 0.02, -0.1 * b.d, zm], [hw - p - 0.02, hd - p - 0.03, zm + 0.04]);
+    b.cuboid(
+        Duvet,
+        [-hw + p + 0.02, -0.1 * b.d, zm],
+        [hw - p - 0.02, hd - p - 0.03, zm + 0.04],
+    );
     let t = 0.03;
     let bar = 0.012;
     // Rails along the long sides (y) and the ends (x), with bars between them.
-    let sides: [(bool, f64); 4] = [(true, -hw + t / 2.0), (true, hw - t / 2.0), (false, -hd + t / 2.0), (false, hd - t / 2.0)];
+    let sides: [(bool, f64); 4] = [
+        (true, -hw + t / 2.0),
+        (true, hw - t / 2.0),
+        (false, -hd + t / 2.0),
+        (false, hd - t / 2.0),
+    ];
     for (along_y, c) in sides {
         let span = if along_y { hd - p } else { hw - p };
         for z in [zb - 0.04, h - t] {
@@ -100,7 +130,12 @@ pub fn coat_rack(b: &mut Builder) {
     b.ellipsoid(Frame, [0.0, 0.0, h - 0.04], [0.035, 0.035, 0.04]);
     for k in 0..4 {
         let a = k as f64 * std::f64::consts::FRAC_PI_2 + 0.4;
-        b.rod(Frame, [0.0, 0.0, 0.25], [0.95 * m * a.cos(), 0.95 * m * a.sin(), 0.015], 0.015);
+        b.rod(
+            Frame,
+            [0.0, 0.0, 0.25],
+            [0.95 * m * a.cos(), 0.95 * m * a.sin(), 0.015],
+            0.015,
+        );
     }
     for (z, n, l) in [(h - 0.16, 6, 0.6 * m), (h - 0.36, 4, 0.5 * m)] {
         for k in 0..n {
@@ -114,5 +149,9 @@ pub fn coat_rack(b: &mut Builder) {
     let x = 0.55 * m;
     let top = h - 0.2;
     b.ellipsoid(Upholstery, [x, 0.0, top - 0.06], [0.06, 0.16, 0.06]);
-    b.cuboid(Upholstery, [x - 0.06, -0.15, top - 0.85], [x + 0.05, 0.15, top - 0.06]);
+    b.cuboid(
+        Upholstery,
+        [x - 0.06, -0.15, top - 0.85],
+        [x + 0.05, 0.15, top - 0.06],
+    );
 }

@@ -53,7 +53,11 @@ pub fn display_case(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let zb = if h > 1.4 { 0.35 * h } else { 0.5 * h };
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, zb]);
-    b.cuboid(Door, [-hw + 0.02, hd - 0.002, 0.05], [hw - 0.02, hd, zb - 0.04]);
+    b.cuboid(
+        Door,
+        [-hw + 0.02, hd - 0.002, 0.05],
+        [hw - 0.02, hd, zb - 0.04],
+    );
     let f = 0.02;
     // The front's depth at height z: full at the base, `slope` less at the top.
     let slope = 0.35 * b.d;
@@ -64,7 +68,12 @@ pub fn display_case(b: &mut Builder) {
         b.cuboid(Frame, [x, -hd, zb], [x + f, -hd + f, h]);
         b.cuboid(Frame, [x, -hd, h - f], [x + f, yt, h]);
         b.cuboid(Frame, [x, -hd, zb], [x + f, hd, zb + f]);
-        b.rod(Frame, [x + f / 2.0, hd - f / 2.0, zb], [x + f / 2.0, yt - f / 2.0, h], f / 2.0);
+        b.rod(
+            Frame,
+            [x + f / 2.0, hd - f / 2.0, zb],
+            [x + f / 2.0, yt - f / 2.0, h],
+            f / 2.0,
+        );
     }
     b.cuboid(Frame, [-hw, yt - f, h - f], [hw, yt, h]);
     b.cuboid(Frame, [-hw, -hd, h - f], [hw, -hd + f, h]);
@@ -142,7 +151,13 @@ pub fn aquarium(b: &mut Builder) {
     for (k, (x, y, z)) in fish.into_iter().enumerate() {
         let c = [x * b.w, y * b.d, gravel + z * th];
         let dir = if k % 2 == 0 { 1.0 } else { -1.0 };
-        b.ellipsoid_rot(Books, k as u32 + 2, c, [0.5 * fl, 0.18 * fl, 0.3 * fl], IDENTITY);
+        b.ellipsoid_rot(
+            Books,
+            k as u32 + 2,
+            c,
+            [0.5 * fl, 0.18 * fl, 0.3 * fl],
+            IDENTITY,
+        );
         b.ellipsoid_rot(
             Books,
             k as u32 + 2,
@@ -152,7 +167,11 @@ pub fn aquarium(b: &mut Builder) {
         );
     }
     // The water's surface just under the hood, and the glass.
-    b.cuboid(Pane, [-hw + f, -hd + 0.01, top - 0.04], [hw - f, hd - f, top - 0.038]);
+    b.cuboid(
+        Pane,
+        [-hw + f, -hd + 0.01, top - 0.04],
+        [hw - f, hd - f, top - 0.038],
+    );
     b.cuboid(Pane, [-hw + f, hd - 0.006, zs], [hw - f, hd, top]);
     b.cuboid(Pane, [-hw, -hd + f, zs], [-hw + 0.006, hd - f, top]);
     b.cuboid(Pane, [hw - 0.006, -hd + f, zs], [hw, hd - f, top]);
@@ -185,8 +204,18 @@ pub fn shower(b: &mut Builder) {
     // Riser, arm and head on the back wall; the mixer below.
     let y = -hd + t;
     let zh = 0.88 * h;
-    b.rod(Metal, [0.0, y + 0.02, 0.45 * h], [0.0, y + 0.02, zh + 0.05], 0.012);
-    b.rod(Metal, [0.0, y + 0.02, zh + 0.05], [0.0, y + 0.22, zh + 0.05], 0.01);
+    b.rod(
+        Metal,
+        [0.0, y + 0.02, 0.45 * h],
+        [0.0, y + 0.02, zh + 0.05],
+        0.012,
+    );
+    b.rod(
+        Metal,
+        [0.0, y + 0.02, zh + 0.05],
+        [0.0, y + 0.22, zh + 0.05],
+        0.01,
+    );
     b.revolved(
         Metal,
         0,
