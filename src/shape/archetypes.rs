@@ -12,6 +12,7 @@ use super::furniture as f;
 use super::games as gm;
 use super::garden as ga;
 use super::heritage as he;
+use super::household as ho;
 use super::machines as ma;
 use super::market as mk;
 use super::materials::{Rgb, Role};
@@ -378,6 +379,11 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("pool_table", gm::pool_table, [Upholstery], [Upholstery => [0.08, 0.42, 0.20], Cushion => [0.06, 0.34, 0.16], Frame => [0.36, 0.20, 0.10], Body => [0.36, 0.20, 0.10], Interior => BLACK, Canvas => WHITE]),
     arch!("ping_pong_table", gm::ping_pong_table, [Top], [Top => [0.12, 0.30, 0.55], Canvas => WHITE, Interior => [0.10, 0.10, 0.11], Metal => [0.30, 0.30, 0.32]]),
     arch!("drum_kit", gm::drum_kit, [Body], [Body => [0.70, 0.10, 0.12], Canvas => [0.93, 0.92, 0.88], Metal => [0.70, 0.71, 0.73], Top => [0.82, 0.66, 0.30], Upholstery => BLACK]),
+    arch!("cactus", ho::cactus, [Foliage], [Foliage => [0.30, 0.52, 0.26], Trunk => [0.20, 0.40, 0.18]]),
+    arch!("teddy_bear", ho::teddy_bear, [Upholstery], [Upholstery => [0.62, 0.42, 0.24], Cushion => [0.85, 0.72, 0.55]]),
+    arch!("candle", ho::candle, [Body], [Body => [0.95, 0.92, 0.82], Interior => BLACK, Metal => [0.70, 0.58, 0.32]]),
+    arch!("kettle", ho::kettle, [Body], [Body => STEEL, Handle => BLACK, Glass => [0.45, 0.62, 0.75]]),
+    arch!("toaster", ho::toaster, [Body], [Body => STEEL, Handle => BLACK, Interior => BLACK]),
     arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
 ];
 

@@ -25,6 +25,7 @@ mod furniture;
 mod games;
 mod garden;
 mod heritage;
+mod household;
 mod machines;
 mod market;
 pub mod materials;

@@ -1,0 +1,189 @@
+//! Layouts of small things people name in a room: a cactus with its arms, a teddy bear, a lit
+//! pillar candle, an electric kettle, a toaster. The front faces +y.
+use super::archetypes::Builder;
+use super::materials::Role::*;
+use super::parts::frustum_profile;
+
+/// A column of radius `r` from `base` up `h` with a rounded top.
+fn column(b: &mut Builder, base: [f64; 3], r: f64, h: f64) {
+    b.cylinder(Foliage, base, r, (h - r).max(0.0));
+    b.ellipsoid(
+        Foliage,
+        [base[0], base[1], base[2] + (h - r).max(0.0)],
+        [r, r, r],
+    );
+}
+
+/// A cactus: a ribbed column with two arms bending upwards, in a pot unless it is tree-sized.
+pub fn cactus(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    let potted = h < 1.5;
+    let z0 = if potted {
+        let ph = 0.25 * h;
+        b.frustum(Pot, [0.0, 0.0, 0.0], 0.8 * m, 0.8 * m, 1.2, ph);
+        b.cylinder(Soil, [0.0, 0.0, ph - 0.01], 0.9 * m, 0.012);
+        ph
+    } else {
+        0.0
+    };
+    let r = if potted { 0.45 * m } else { 0.22 * m };
+    column(b, [0.0, 0.0, z0], r, h - z0);
+    // Ribs: darker thin columns round the trunk.
+    for k in 0..8 {
+        let a = k as f64 * std::f64::consts::TAU / 8.0;
+        let (x, y) = (0.93 * r * a.cos(), 0.93 * r * a.sin());
+        b.cylinder(Trunk, [x, y, z0 + 0.05 * h], 0.1 * r, 0.8 * (h - z0 - r));
+    }
+    // Arms: out sideways, then up.
+    let ra = 0.7 * r;
+    for (sx, zf, top) in [(-1.0, 0.45, 0.78), (1.0, 0.58, 0.9)] {
+        let za = z0 + zf * (h - z0);
+        let xa = sx * (hw - ra - 0.01);
+        b.rod(Foliage, [0.0, 0.0, za], [xa, 0.0, za], ra);
+        b.ellipsoid(Foliage, [xa, 0.0, za], [ra, ra, ra]);
+        column(b, [xa, 0.0, za], ra, z0 + top * (h - z0) - za);
+    }
+}
+
+/// A teddy bear sitting: a round body, legs forward, arms at its sides, a head with ears, a
+/// lighter muzzle, dark eyes and nose.
+pub fn teddy_bear(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    b.ellipsoid(
+        Upholstery,
+        [0.0, -0.1 * hd, 0.3 * h],
+        [0.6 * hw, 0.55 * hd, 0.3 * h],
+    );
+    for sx in [-1.0, 1.0] {
+        // Legs forward with lighter pads, arms hanging at the sides.
+        b.ellipsoid(
+            Upholstery,
+            [sx * 0.45 * hw, 0.45 * hd, 0.1 * h],
+            [0.28 * hw, 0.5 * hd, 0.1 * h],
+        );
+        b.ellipsoid(
+            Cushion,
+            [sx * 0.45 * hw, 0.93 * hd, 0.1 * h],
+            [0.2 * hw, 0.05 * hd, 0.08 * h],
+        );
+        b.ellipsoid(
+            Upholstery,
+            [sx * 0.78 * hw, 0.1 * hd, 0.32 * h],
+            [0.2 * hw, 0.25 * hd, 0.16 * h],
+        );
+        // Ears and eyes.
+        b.ellipsoid(
+            Upholstery,
+            [sx * 0.45 * hw, -0.1 * hd, 0.93 * h],
+            [0.17 * hw, 0.12 * hd, 0.07 * h],
+        );
+        b.ellipsoid(
+            BlackKeys,
+            [sx * 0.17 * hw, 0.45 * hd, 0.8 * h],
+            [0.045 * hw, 0.03 * hd, 0.03 * h],
+        );
+    }
+    b.ellipsoid(
+        Upholstery,
+        [0.0, 0.0, 0.74 * h],
+        [0.52 * hw, 0.55 * hd, 0.19 * h],
+    );
+    b.ellipsoid(
+        Cushion,
+        [0.0, 0.5 * hd, 0.7 * h],
+        [0.2 * hw, 0.15 * hd, 0.08 * h],
+    );
+    b.ellipsoid(
+        BlackKeys,
+        [0.0, 0.64 * hd, 0.73 * h],
+        [0.06 * hw, 0.04 * hd, 0.03 * h],
+    );
+}
+
+/// A lit pillar candle on a holder plate: a wax column narrower than the plate, a wick and a
+/// flame.
+pub fn candle(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    let zt = 0.72 * h;
+    b.frustum(Metal, [0.0, 0.0, 0.0], m, m, 0.92, 0.05 * h);
+    b.cylinder(Body, [0.0, 0.0, 0.05 * h], 0.55 * m, zt - 0.05 * h);
+    b.cylinder(Interior, [0.0, 0.0, zt], 0.05 * m, 0.05 * h);
+    b.ellipsoid(
+        Light,
+        [0.0, 0.0, zt + 0.15 * h],
+        [0.16 * m, 0.16 * m, 0.12 * h],
+    );
+}
+
+/// An electric kettle: a body narrowing to its lid, a spout at the front, a handle at the back,
+/// a water window, on a dark power base.
+pub fn kettle(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = 0.62 * hw.min(hd / 0.75);
+    let yc = -0.05 * b.d;
+    b.cylinder(Handle, [0.0, yc, 0.0], 1.05 * r, 0.07 * h);
+    b.revolved(
+        Body,
+        0,
+        [0.0, yc, 0.07 * h],
+        super::parts::IDENTITY,
+        1.0,
+        frustum_profile(r, 0.8 * r, 0.78 * h),
+    );
+    b.cylinder(Handle, [0.0, yc, 0.85 * h], 0.8 * r, 0.03 * h);
+    b.ellipsoid(Handle, [0.0, yc, 0.89 * h], [0.2 * r, 0.2 * r, 0.1 * h]);
+    b.rod(
+        Body,
+        [0.0, yc + 0.85 * r, 0.7 * h],
+        [0.0, hd - 0.01, 0.84 * h],
+        0.12 * r,
+    );
+    b.cuboid(
+        Glass,
+        [-0.12 * r, yc + 0.9 * r, 0.2 * h],
+        [0.12 * r, yc + 1.0 * r, 0.65 * h],
+    );
+    let yb = -hd + 0.02;
+    b.polyline(
+        Handle,
+        &[
+            [0.0, yc - 0.8 * r, 0.85 * h],
+            [0.0, yb, 0.8 * h],
+            [0.0, yb, 0.3 * h],
+            [0.0, yc - 0.9 * r, 0.2 * h],
+        ],
+        0.02,
+    );
+}
+
+/// A toaster: a rounded body with two bread slots on top, a lever and a knob on the front, a
+/// dark foot.
+pub fn toaster(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    b.cuboid(
+        Handle,
+        [-hw + 0.01, -hd + 0.01, 0.0],
+        [hw - 0.01, hd - 0.02, 0.1 * h],
+    );
+    b.cuboid(Body, [-hw, -hd, 0.1 * h], [hw, hd - 0.015, h - 0.02]);
+    b.cuboid(
+        Body,
+        [-hw + 0.01, -hd + 0.01, h - 0.02],
+        [hw - 0.01, hd - 0.025, h],
+    );
+    for y in [-0.22 * b.d, 0.12 * b.d] {
+        b.cuboid(
+            Interior,
+            [-0.38 * b.w, y - 0.015, h - 0.001],
+            [0.38 * b.w, y + 0.015, h],
+        );
+    }
+    b.cuboid(
+        BlackKeys,
+        [0.25 * b.w, hd - 0.015, 0.55 * h],
+        [0.38 * b.w, hd, 0.62 * h],
+    );
+    b.cylinder(BlackKeys, [-0.3 * b.w, hd - 0.015, 0.35 * h], 0.012, 0.015);
+}
