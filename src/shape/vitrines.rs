@@ -233,3 +233,174 @@ pub fn shower(b: &mut Builder) {
         frustum_profile(0.05, 0.04, 0.04),
     );
 }
+
+/// Rows of bottles (a body and a neck each, of the goods palette) on shelves from the back
+/// plane `y[0]` to the front plane `y[1]`, in `[x0, x1]` from `z0` to `z1`.
+fn bottle_shelves(b: &mut Builder, x: [f64; 2], y: [f64; 2], z: [f64; 2], v: &mut u32) {
+    let yf = y[1];
+    let shelves = (((z[1] - z[0]) / 0.3).floor() as usize).max(2);
+    let pitch = (z[1] - z[0]) / shelves as f64;
+    for k in 0..shelves {
+        let z = z[0] + k as f64 * pitch;
+        b.cuboid(Frame, [x[0], y[0], z - 0.01], [x[1], yf - 0.02, z]);
+        let r = (0.15 * pitch).min(0.035);
+        let n = ((x[1] - x[0]) / (2.6 * r)).floor().max(1.0) as usize;
+        let step = (x[1] - x[0]) / n as f64;
+        for i in 0..n {
+            let xc = x[0] + (i as f64 + 0.5) * step;
+            let y = yf - 0.03 - r;
+            let body = 0.5 * pitch;
+            b.revolved(
+                Books,
+                *v,
+                [xc, y, z],
+                IDENTITY,
+                1.0,
+                frustum_profile(r, r, body),
+            );
+            b.revolved(
+                Books,
+                *v,
+                [xc, y, z + body],
+                IDENTITY,
+                1.0,
+                frustum_profile(0.45 * r, 0.35 * r, 0.3 * pitch),
+            );
+            *v += 1;
+        }
+    }
+}
+
+/// A glass-door fridge (drinks, wine): a cabinet with a lit header and a see-through door on
+/// bottles in rows, a long handle.
+pub fn glass_fridge(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let face = hd - 0.03;
+    let header = if h > 1.2 { 0.12 * h } else { 0.0 };
+    b.cuboid(
+        Interior,
+        [-hw + 0.02, -hd, 0.0],
+        [hw - 0.02, face - 0.03, 0.06],
+    );
+    b.cuboid(Body, [-hw, -hd, 0.06], [-hw + 0.04, face, h]);
+    b.cuboid(Body, [hw - 0.04, -hd, 0.06], [hw, face, h]);
+    b.cuboid(Body, [-hw, -hd, 0.06], [hw, -hd + 0.04, h]);
+    b.cuboid(Body, [-hw, -hd, 0.06], [hw, face, 0.12]);
+    b.cuboid(Body, [-hw, -hd, h - header - 0.04], [hw, face, h]);
+    if header > 0.0 {
+        b.cuboid(
+            Light,
+            [-hw + 0.03, face, h - header],
+            [hw - 0.03, face + 0.005, h - 0.02],
+        );
+    }
+    b.cuboid(
+        Interior,
+        [-hw + 0.04, -hd + 0.04, 0.12],
+        [hw - 0.04, -hd + 0.05, h - header - 0.04],
+    );
+    let mut v = 0;
+    bottle_shelves(
+        b,
+        [-hw + 0.05, hw - 0.05],
+        [-hd + 0.05, face],
+        [0.14, h - header - 0.06],
+        &mut v,
+    );
+    // The door: a frame round a see-through pane, a handle up its right side.
+    let (z0, z1) = (0.08, h - header - 0.02);
+    edges_front(b, [-hw + 0.01, z0], [hw - 0.01, z1], face, 0.035);
+    b.cuboid(
+        Pane,
+        [-hw + 0.04, face, z0 + 0.03],
+        [hw - 0.04, face + 0.006, z1 - 0.03],
+    );
+    let x = -hw + 0.06;
+    b.rod(
+        Handle,
+        [x, hd - 0.01, 0.4 * h],
+        [x, hd - 0.01, 0.4 * h + 0.35 * (z1 - z0)],
+        0.012,
+    );
+}
+
+/// A door frame on the front plane `y`: four bars of width `t` round `[x0, z0]..[x1, z1]`.
+fn edges_front(b: &mut Builder, lo: [f64; 2], hi: [f64; 2], y: f64, t: f64) {
+    b.cuboid(Door, [lo[0], y, lo[1]], [hi[0], y + 0.02, lo[1] + t]);
+    b.cuboid(Door, [lo[0], y, hi[1] - t], [hi[0], y + 0.02, hi[1]]);
+    b.cuboid(Door, [lo[0], y, lo[1]], [lo[0] + t, y + 0.02, hi[1]]);
+    b.cuboid(Door, [hi[0] - t, y, lo[1]], [hi[0], y + 0.02, hi[1]]);
+}
+
+/// A vending machine: a window on goods in rows over a pick-up flap, a keypad and coin slot
+/// column on the right, a lit header.
+pub fn vending(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let face = hd - 0.03;
+    b.cuboid(Body, [-hw, -hd, 0.0], [hw, -hd + 0.04, h]);
+    b.cuboid(Body, [-hw, -hd, 0.0], [hw, face, 0.3 * h]);
+    b.cuboid(Body, [-hw, -hd, 0.0], [-hw + 0.03, face, h]);
+    b.cuboid(Body, [-hw, -hd, 0.9 * h], [hw, face, h]);
+    let xc = hw - 0.28 * b.w;
+    b.cuboid(Body, [xc, -hd, 0.0], [hw, face, h]);
+    b.cuboid(
+        Light,
+        [-hw + 0.03, face, 0.91 * h],
+        [hw - 0.03, face + 0.005, h - 0.02],
+    );
+    b.cuboid(
+        Interior,
+        [-hw + 0.03, -hd + 0.04, 0.3 * h],
+        [xc, -hd + 0.05, 0.9 * h],
+    );
+    // Goods on spiral shelves behind the window.
+    let rows = 5;
+    let pitch = 0.6 * h / rows as f64;
+    let mut v = 0;
+    for k in 0..rows {
+        let z = 0.3 * h + k as f64 * pitch;
+        b.cuboid(
+            Metal,
+            [-hw + 0.03, -hd + 0.05, z],
+            [xc, face - 0.02, z + 0.01],
+        );
+        goods(
+            b,
+            [-hw + 0.06, xc - 0.03],
+            face - 0.12,
+            z + 0.01,
+            (0.5 * pitch).min(0.1),
+            &mut v,
+        );
+    }
+    b.cuboid(
+        Pane,
+        [-hw + 0.03, face, 0.3 * h],
+        [xc, face + 0.006, 0.9 * h],
+    );
+    b.cuboid(
+        Interior,
+        [-hw + 0.08, face, 0.08 * h],
+        [xc - 0.05, hd, 0.2 * h],
+    );
+    let (x0, x1) = (xc + 0.04, hw - 0.04);
+    b.cuboid(Screen, [x0, face, 0.72 * h], [x1, face + 0.005, 0.8 * h]);
+    for i in 0..3 {
+        for j in 0..4 {
+            let (x, z) = (
+                x0 + (i as f64 + 0.5) * (x1 - x0) / 3.0,
+                0.5 * h + j as f64 * 0.045,
+            );
+            b.cuboid(
+                Keys,
+                [x - 0.015, face, z],
+                [x + 0.015, face + 0.008, z + 0.03],
+            );
+        }
+    }
+    b.cuboid(
+        Handle,
+        [x0 + 0.03, face, 0.42 * h],
+        [x1 - 0.03, face + 0.01, 0.46 * h],
+    );
+}
