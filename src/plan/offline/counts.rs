@@ -54,6 +54,7 @@ pub(super) fn mention_counts(d: &mut Draft) {
         others,
         explicit,
         inferred,
+        notes,
         ..
     } = d;
     // "two chairs at each table": (category, per instance, category of the distributor).
@@ -116,6 +117,33 @@ pub(super) fn mention_counts(d: &mut Draft) {
         let total = explicit.get(&c).copied().unwrap_or(0) + n;
         explicit.insert(c.clone(), total);
         counts.insert(c, total);
+    }
+    // "a study with a lamp on the desk": a bare noun names the scene's single default of that
+    // noun (its floor lamp), read as the kind the text asks for.
+    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+        if m.negated
+            || m.reference
+            || m.plural
+            || m.text.contains(' ')
+            || m.count.is_some_and(|n| n > 1)
+            || defaults.contains_key(cat)
+        {
+            continue;
+        }
+        let head = lang::singular(&m.text);
+        let same: Vec<&String> = defaults
+            .iter()
+            .filter(|(c, n)| **n == 1 && c.rsplit(' ').next() == Some(head.as_str()))
+            .map(|(c, _)| c)
+            .collect();
+        let [was] = same[..] else {
+            continue;
+        };
+        if !cats.contains(was) && !explicit.contains_key(was) && counts.remove(was).is_some() {
+            notes.push(format!(
+                "default {was} left out: the named {cat} is the {head} asked for"
+            ));
+        }
     }
 }
 
