@@ -312,7 +312,10 @@ fn with_things(t: &str, a: &Mention, b: &Mention) -> bool {
     t.get(a.end..b.start).is_some_and(|between| {
         joined(t, a, b)
             || between.split(|c: char| !c.is_alphanumeric()).any(|w| {
-                ["with", "has", "have", "having", "holding", "holds", "topped"].contains(&w)
+                [
+                    "with", "has", "have", "having", "holding", "holds", "topped",
+                ]
+                .contains(&w)
             })
     })
 }
