@@ -318,3 +318,15 @@ fn seats_around_a_table_named_before_are_that_tables_seats() {
         .count();
     assert_eq!(around, 4, "{:?}", s.relations);
 }
+
+#[test]
+fn a_thing_of_a_companions_slot_takes_its_place() {
+    // a laptop on the desk is its computer; the chair at it stays
+    let s = plan("a study with a writing desk by the window and a laptop on it");
+    assert_eq!(number(&s, "laptop"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "computer"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "office chair"), 1, "{:?}", s.objects.keys());
+    // "the laptop" names it as well
+    let s = plan("a study with a printer on the desk beside the laptop");
+    assert_eq!(number(&s, "computer"), 0, "{:?}", s.objects.keys());
+}
