@@ -247,3 +247,86 @@ fn the_bare_noun_of_a_kind_named_before_is_that_object() {
     let s = plan("a kitchen with a farmhouse table and a bench beside the table");
     assert_eq!(number(&s, "dining table"), 0, "{:?}", s.objects.keys());
 }
+
+#[test]
+fn a_count_either_side_is_the_pair_and_each_side_multiplies() {
+    let benches = |s: &SceneSpec| -> u32 {
+        s.objects
+            .iter()
+            .filter(|(c, _)| c.contains("bench"))
+            .map(|(_, o)| o.number)
+            .sum()
+    };
+    let s = plan("a hall with a fireplace and two benches either side of it");
+    assert_eq!(benches(&s), 2, "{:?}", s.objects);
+    let s = plan("a ship's deck with two cannons on each side");
+    assert_eq!(number(&s, "cannon"), 4, "{:?}", s.objects);
+}
+
+#[test]
+fn a_verb_after_a_noun_is_no_object() {
+    let s = plan("a pond garden where a wooden bridge crosses the stream");
+    assert_eq!(number(&s, "wooden bridge"), 1, "{:?}", s.objects.keys());
+    assert!(
+        !s.objects.keys().any(|c| c.contains("cross")),
+        "{:?}",
+        s.objects.keys()
+    );
+    let s = plan("a loft with a cat sleeping on the rug");
+    assert_eq!(number(&s, "cat"), 1, "{:?}", s.objects.keys());
+    assert!(
+        !s.objects.keys().any(|c| c.contains("sleeping")),
+        "{:?}",
+        s.objects.keys()
+    );
+}
+
+#[test]
+fn it_after_a_relation_is_that_relations_object() {
+    let s = plan("a terrace with a table by the fountain and planters around it");
+    assert_eq!(
+        between(&s, "planter", "fountain"),
+        vec![RelationKind::Around; 3],
+        "{:?}",
+        s.relations
+    );
+    assert!(
+        between(&s, "planter", "patio table").is_empty(),
+        "{:?}",
+        s.relations
+    );
+}
+
+#[test]
+fn a_bare_noun_is_the_scenes_single_default_of_it() {
+    // the study's floor lamp is the lamp the text puts on the desk
+    let s = plan("a study with a lamp on the desk beside the printer");
+    assert_eq!(number(&s, "table lamp"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "floor lamp"), 0, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn seats_around_a_table_named_before_are_that_tables_seats() {
+    let s = plan("a kids playroom with a small table and four little chairs around it");
+    // the room's desk keeps its one chair; no desks for the little chairs
+    assert_eq!(number(&s, "desk"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "office chair"), 1, "{:?}", s.objects);
+    let around: usize = s
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Around && r.subject.contains("chair"))
+        .count();
+    assert_eq!(around, 4, "{:?}", s.relations);
+}
+
+#[test]
+fn a_thing_of_a_companions_slot_takes_its_place() {
+    // a laptop on the desk is its computer; the chair at it stays
+    let s = plan("a study with a writing desk by the window and a laptop on it");
+    assert_eq!(number(&s, "laptop"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "computer"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "office chair"), 1, "{:?}", s.objects.keys());
+    // "the laptop" names it as well
+    let s = plan("a study with a printer on the desk beside the laptop");
+    assert_eq!(number(&s, "computer"), 0, "{:?}", s.objects.keys());
+}

@@ -83,6 +83,13 @@ fn words_the_plan_does_not_use_are_listed_and_no_others() {
     }
     let p = plan("a small modern living room with two grey armchairs by the window");
     assert!(p.understood.unused.is_empty(), "{:?}", p.understood.unused);
+    // a placement word the relations read is used
+    let p = plan("a hallway with a console table and a mirror above it");
+    assert!(
+        !p.understood.unused.iter().any(|u| u == "above"),
+        "{:?}",
+        p.understood.unused
+    );
 }
 
 #[test]

@@ -210,10 +210,13 @@ pub(super) fn read_counts(r: &mut Reading) {
                 None
             };
             let m = &mut r.mentions[k];
-            m.parts = p;
+            // "two armchairs either side of the fire": as many as the sides with "either" or
+            // "both" is the pair, one a side ("an armchair on either side" is two)
+            let one_a_side = matches!(word, "either" | "both") && m.count == Some(p);
+            m.parts = if one_a_side { 1 } else { p };
             m.each_of = owner;
             if owner.is_none() {
-                m.count = Some(m.count.unwrap_or(1) * p);
+                m.count = Some(m.count.unwrap_or(1) * m.parts);
                 m.parts = 1;
             }
             continue;

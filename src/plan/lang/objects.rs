@@ -30,6 +30,29 @@ fn removes(w1: Option<&str>, w2: Option<&str>) -> bool {
     word_list("removers").contains(&format!("{a}_{b}").as_str())
 }
 
+/// Whether `w`, after a noun, is the verb of its clause ("a small bridge crosses the pond", "a
+/// bridge spanning the pond", "an owl perched on the shelf"): a verb form that WordNet knows
+/// no physical thing by, followed by a determiner (or, for a participle, a function word).
+fn verb_after_noun(w: &str, next: Option<&str>) -> bool {
+    const DETERMINERS: &[&str] = &[
+        "the", "a", "an", "its", "their", "his", "her", "this", "that", "these", "those", "each",
+        "every", "my", "our", "your",
+    ];
+    let Some(next) = next else {
+        return false;
+    };
+    let thing = |n: &str| crate::plan::lexicon::kind(n).is_some();
+    if thing(w) || thing(&singular(w)) {
+        return false;
+    }
+    let participle = (w.ends_with("ing") || w.ends_with("ed")) && w.len() > 5;
+    let third_person = w.ends_with('s') && !w.ends_with("ss") && w.len() > 3;
+    DETERMINERS.contains(&next) && (participle || third_person)
+        || participle
+            && super::is_function_word(next)
+            && !["and", "or", "nor", "but"].contains(&next)
+}
+
 /// Whether `p` lies inside one of `spans`.
 fn inside(p: usize, spans: &[(usize, usize)]) -> bool {
     spans.iter().any(|&(s, e)| p >= s && p < e)
@@ -83,10 +106,12 @@ pub(super) fn object_spans(
     // The end of the run of describing words from `j`, and whether a known object or the
     // scene's name cuts it short (the run is then their description).
     let run = |mut j: usize| {
+        let first = j;
         while j < all.len()
             && is_adjective(all[j].1)
             && !inside(all[j].0, masked)
             && !known_at(all[j].0)
+            && !(j > first && verb_after_noun(all[j].1, all.get(j + 1).map(|x| x.1)))
         {
             j += 1;
         }

@@ -75,7 +75,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             Some(RelationKind::At),
         ),
         (
-            r"\b(?:next to|beside|alongside|near|close to|by|between)\b",
+            r"\b(?:next to|beside|alongside|along|near|close to|by|between)\b",
             Some(RelationKind::Next),
         ),
         (
@@ -306,6 +306,20 @@ fn many(m: &Mention) -> bool {
     m.plural || m.count.is_some_and(|c| c > 1)
 }
 
+/// Whether the words between two mentions say the second is with the first ("a desk with a
+/// computer", "a counter holding a till", "a shelf, a vase on it").
+fn with_things(t: &str, a: &Mention, b: &Mention) -> bool {
+    t.get(a.end..b.start).is_some_and(|between| {
+        joined(t, a, b)
+            || between.split(|c: char| !c.is_alphanumeric()).any(|w| {
+                [
+                    "with", "has", "have", "having", "holding", "holds", "topped",
+                ]
+                .contains(&w)
+            })
+    })
+}
+
 /// Whether only coordination lies between two mentions ("and", "or", commas, determiners).
 fn joined(t: &str, a: &Mention, b: &Mention) -> bool {
     t.get(a.end..b.start).is_some_and(|between| {
@@ -342,10 +356,15 @@ fn referents_of(ms: &[Mention], t: &str, pos: usize) -> Option<Vec<usize>> {
         // the subject is the last mention before `pos`; the antecedent the one before it and
         // the things said with it, the first of them that is one thing
         let mut k = before.len().checked_sub(2)?;
+        let last = k;
         while k > 0 && joined(t, &ms[before[k]], &ms[before[k + 1]]) {
             k -= 1;
         }
-        let last = before.len() - 2;
+        // "a bridge over the pond and maple trees around it": the things said together are
+        // said of the one before them only when they are said with it ("a desk with a lamp")
+        if k < last && !with_things(t, &ms[before[k]], &ms[before[k + 1]]) {
+            k += 1;
+        }
         let one = (k..=last).find(|&j| !many(&ms[before[j]])).unwrap_or(k);
         return Some(vec![before[one]]);
     }

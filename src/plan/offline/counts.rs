@@ -6,7 +6,7 @@ use super::Draft;
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::lang;
 use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType, MAX_NUMBER};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// The seat category that goes round `table`: one the plan already has, else the first of the
 /// usual seats that the functional groups put at such a table.
@@ -54,6 +54,7 @@ pub(super) fn mention_counts(d: &mut Draft) {
         others,
         explicit,
         inferred,
+        notes,
         ..
     } = d;
     // "two chairs at each table": (category, per instance, category of the distributor).
@@ -116,6 +117,33 @@ pub(super) fn mention_counts(d: &mut Draft) {
         let total = explicit.get(&c).copied().unwrap_or(0) + n;
         explicit.insert(c.clone(), total);
         counts.insert(c, total);
+    }
+    // "a study with a lamp on the desk": a bare noun names the scene's single default of that
+    // noun (its floor lamp), read as the kind the text asks for.
+    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+        if m.negated
+            || m.reference
+            || m.plural
+            || m.text.contains(' ')
+            || m.count.is_some_and(|n| n > 1)
+            || defaults.contains_key(cat)
+        {
+            continue;
+        }
+        let head = lang::singular(&m.text);
+        let same: Vec<&String> = defaults
+            .iter()
+            .filter(|(c, n)| **n == 1 && c.rsplit(' ').next() == Some(head.as_str()))
+            .map(|(c, _)| c)
+            .collect();
+        let [was] = same[..] else {
+            continue;
+        };
+        if !cats.contains(was) && !explicit.contains_key(was) && counts.remove(was).is_some() {
+            notes.push(format!(
+                "default {was} left out: the named {cat} is the {head} asked for"
+            ));
+        }
     }
 }
 
@@ -371,22 +399,45 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 each = each.min(2);
             }
             // seats of another kind the text puts at that table take their places ("a desk
-            // and a gaming chair" has one chair); what stands on it takes no seat's place
+            // and a gaming chair" has one chair); what stands on it takes no seat's place, but
+            // the place of what fills the same slot on it ("a laptop on the desk" is its
+            // computer: one group line of `kb/groups.txt`)
+            use crate::plan::groups::{group_of_category, relation_between};
             use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
             let seat_kind = |c: &str| {
                 crate::plan::groups::group_of(&probe, c)
                     .filter(|(k, t)| *t == table && matches!(k, Around | At | AtBack | Circle))
                     .is_some()
             };
-            let taken: u32 = if seat_kind(seat) {
-                explicit
-                    .keys()
-                    .filter(|c| *c != seat && seat_kind(c))
-                    .map(|c| counts.get(c).copied().unwrap_or(0))
-                    .sum()
-            } else {
-                0
+            let same_slot = |c: &str| {
+                let line = group_of_category(c);
+                line.is_some()
+                    && line == group_of_category(seat)
+                    && relation_between(c, &table) == relation_between(seat, &table)
             };
+            let takes = |c: &str| {
+                if seat_kind(seat) {
+                    seat_kind(c)
+                } else {
+                    same_slot(c)
+                }
+            };
+            // what the text names, "the laptop" too
+            let said: BTreeSet<&String> = explicit
+                .keys()
+                .chain(
+                    r.mentions
+                        .iter()
+                        .zip(cats.iter())
+                        .filter(|(m, _)| m.definite && !m.negated && !m.reference)
+                        .map(|(_, c)| c),
+                )
+                .collect();
+            let taken: u32 = said
+                .into_iter()
+                .filter(|c| *c != seat && takes(c))
+                .map(|c| counts.get(c).copied().unwrap_or(0))
+                .sum();
             counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred

@@ -108,24 +108,41 @@ pub(super) fn mention_kinds(d: &mut Draft) {
     for i in 1..r.mentions.len() {
         let (m, prev) = (&r.mentions[i], &r.mentions[i - 1]);
         let between = &r.text[prev.end..m.start];
+        // "a small table and four little chairs around it" says them with the table too
+        use crate::plan::spec::RelationKind::{Around, At};
+        let round_it = r
+            .relations
+            .iter()
+            .any(|&(s, k, o)| s == i && o == i - 1 && matches!(k, Around | At));
         if cats[i] == m.category
-            || !between.trim_start().starts_with("with ")
+            || !(between.trim_start().starts_with("with ") || round_it)
             || between.contains([',', ';', '.'])
         {
             continue;
         }
         let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
-        // the scene's seats of that noun first, then any kind of it ("kids chair")
-        let same_head: BTreeMap<String, u32> = scene_seats
-            .iter()
-            .map(|(c, n)| (c.clone(), *n))
-            .chain(kb.objects.iter().map(|o| (o.category.clone(), 0)))
-            .filter(|(c, _)| c.rsplit(' ').next() == Some(head.as_str()))
-            .collect();
-        if let Some(seat) = seat_for(&cats[i - 1], &same_head) {
-            if seat.rsplit(' ').next() == Some(head.as_str()) {
-                cats[i] = seat;
-            }
+        let table = &cats[i - 1];
+        let sits = |c: &str| {
+            let one: BTreeMap<String, u32> = [(c.to_string(), 0)].into();
+            c.rsplit(' ').next() == Some(head.as_str())
+                && seat_for(table, &one).as_deref() == Some(c)
+        };
+        // the scene's seats of that noun first, then the one named like the table ("kids
+        // table", "kids chair"), the usual seats, then any kind of it
+        let named_like = table
+            .split_once(' ')
+            .map(|(q, _)| format!("{q} {head}"))
+            .filter(|c| kb.object(c).is_some());
+        let usual = seat_for(table, &BTreeMap::new());
+        let seat = scene_seats
+            .keys()
+            .cloned()
+            .chain(named_like)
+            .chain(usual)
+            .chain(kb.objects.iter().map(|o| o.category.clone()))
+            .find(|c| sits(c));
+        if let Some(seat) = seat {
+            cats[i] = seat;
         }
     }
     // "three little tables with two chairs per table": tables said with their seats are
