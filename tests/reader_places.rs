@@ -199,3 +199,28 @@ fn a_floor_lamp_kind_put_on_a_table_is_the_lamp_that_stands_on_tables() {
     let s = plan("a living room with a sofa and a floor lamp on the rug");
     assert_eq!(number(&s, "floor lamp"), 1, "{:?}", s.objects.keys());
 }
+
+#[test]
+fn a_place_for_whom_another_scene_names_is_that_scene() {
+    let s = plan("a classroom for toddlers and their teachers");
+    assert_eq!(number(&s, "school desk") + number(&s, "blackboard"), 0);
+    assert!(number(&s, "kids chair") >= 1, "{:?}", s.objects.keys());
+    // no scene is named "kid kitchen": a kitchen for kids is a kitchen
+    let s = plan("a kitchen for kids");
+    assert!(number(&s, "stove") == 1, "{:?}", s.objects.keys());
+    let s = plan("an ict suite with twelve computers");
+    assert_eq!(number(&s, "fume hood") + number(&s, "microscope"), 0);
+    assert_eq!(number(&s, "computer"), 12, "{:?}", s.objects);
+}
+
+#[test]
+fn a_generic_name_is_the_default_of_its_role_and_a_named_kind_replaces_it() {
+    let s = plan("a supermarket with shelving units in four rows");
+    assert_eq!(number(&s, "bookshelf"), 0, "{:?}", s.objects.keys());
+    assert!(number(&s, "display shelf") >= 4, "{:?}", s.objects);
+    let s = plan("a den with shelving units");
+    assert!(number(&s, "bookshelf") >= 1, "{:?}", s.objects.keys());
+    let s = plan("a corner store with two drinks fridges");
+    assert_eq!(number(&s, "refrigerator"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "drinks fridge"), 2, "{:?}", s.objects);
+}

@@ -24,43 +24,72 @@ struct Rule {
     per_object: Option<u32>,
 }
 
-/// The rules of kb/groups.txt, in its order (a line that does not read is left out; the
-/// table's test reads every line).
+/// The rules of kb/groups.txt, in its order.
 fn rules() -> &'static [Rule] {
     static RULES: OnceLock<Vec<Rule>> = OnceLock::new();
     RULES.get_or_init(|| {
-        include_str!("kb/groups.txt")
-            .lines()
-            .filter_map(parse_rule)
-            .collect()
+        parse(
+            include_str!("kb/groups.txt"),
+            super::kb::KnowledgeBase::builtin(),
+        )
+        .expect("the built-in group table is valid (tested)")
     })
 }
 
-/// One line of kb/groups.txt (`None` for comments, blank lines and lines that do not read).
-fn parse_rule(line: &'static str) -> Option<Rule> {
-    let line = line.trim();
-    if line.is_empty() || line.starts_with('#') {
-        return None;
+/// Reads a group table: every line must read and name categories of `kb` (by their own names,
+/// not synonyms; `any X` where X or a category ending in " X" is one), or the error names the
+/// line and the word.
+fn parse(text: &'static str, kb: &super::kb::KnowledgeBase) -> Result<Vec<Rule>, String> {
+    let mut rules = vec![];
+    for (ln, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let err = |m: String| format!("groups.txt line {}: {m}", ln + 1);
+        let f: Vec<&'static str> = line.split('|').map(str::trim).collect();
+        let [subjects, relation, objects, per] = f[..] else {
+            return Err(err(
+                "expected `subjects | RELATION | objects | per object`".into()
+            ));
+        };
+        let names = |s: &'static str| -> Result<Vec<&'static str>, String> {
+            s.split(',')
+                .map(str::trim)
+                .filter(|x| !x.is_empty())
+                .map(|n| {
+                    let known = match n.strip_prefix("any ") {
+                        Some(head) => kb
+                            .objects
+                            .iter()
+                            .any(|o| names(n, &o.category))
+                            .then_some(())
+                            .ok_or_else(|| format!("no category is `{head}` or ends in it")),
+                        None => match kb.object(n) {
+                            Some(o) if o.category == n => Ok(()),
+                            Some(o) => Err(format!("`{n}` is a name of `{}`", o.category)),
+                            None => Err(format!("unknown object `{n}`")),
+                        },
+                    };
+                    known.map(|()| n).map_err(err)
+                })
+                .collect()
+        };
+        rules.push(Rule {
+            subjects: names(subjects)?,
+            relation: super::kb::parse_relation(relation)
+                .ok_or_else(|| err(format!("unknown relation `{relation}`")))?,
+            objects: names(objects)?,
+            per_object: match per {
+                "size" => None,
+                k => Some(
+                    k.parse()
+                        .map_err(|_| err(format!("`{k}` is no number nor `size`")))?,
+                ),
+            },
+        });
     }
-    let f: Vec<&'static str> = line.split('|').map(str::trim).collect();
-    let [subjects, relation, objects, per] = f[..] else {
-        return None;
-    };
-    let names = |s: &'static str| -> Vec<&'static str> {
-        s.split(',')
-            .map(str::trim)
-            .filter(|x| !x.is_empty())
-            .collect()
-    };
-    Some(Rule {
-        subjects: names(subjects),
-        relation: super::kb::parse_relation(relation)?,
-        objects: names(objects),
-        per_object: match per {
-            "size" => None,
-            k => Some(k.parse().ok()?),
-        },
-    })
+    Ok(rules)
 }
 
 /// Whether `category` is what a name of kb/groups.txt says: the name itself, or for `any X`

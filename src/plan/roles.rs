@@ -9,6 +9,8 @@ use std::sync::OnceLock;
 struct Roles {
     roles: Vec<(String, Vec<String>)>,
     needs: Vec<(String, Vec<String>)>,
+    /// Names that say only the role of what they name ("shelving units").
+    generic: Vec<String>,
 }
 
 fn roles() -> &'static Roles {
@@ -28,6 +30,7 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
     let mut r = Roles {
         roles: vec![],
         needs: vec![],
+        generic: vec![],
     };
     for (ln, line) in text.lines().enumerate() {
         let line = line.trim();
@@ -54,10 +57,19 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
                     .ok_or_else(|| err("needs a category".into()))?;
                 r.needs.push((cat, list(served)?));
             }
+            ["generic", names] => {
+                for n in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+                    if kb.object(n).is_none() {
+                        return Err(err(format!("unknown object name `{n}`")));
+                    }
+                    r.generic.push(n.to_string());
+                }
+            }
             [role, cats] if *role != "needs" => r.roles.push((role.to_string(), list(cats)?)),
             _ => {
                 return Err(err(
-                    "expected `role | categories` or `needs | category | categories`".into(),
+                    "expected `role | categories`, `needs | category | categories` or `generic | names`"
+                        .into(),
                 ))
             }
         }
@@ -77,6 +89,12 @@ pub fn role_of(category: &str) -> Option<&'static str> {
             .map(|(r, _)| r.as_str())
     };
     listed(category).or_else(|| listed(super::lexicon::kind_category(category)?))
+}
+
+/// Whether `name` (an object name, singular) says only the role of what it names
+/// (`kb/roles.txt`: generic): "a shelving unit" in a shop is its display shelf.
+pub fn is_generic(name: &str) -> bool {
+    roles().generic.iter().any(|n| n == name)
 }
 
 /// Removes from `counts` the defaults (categories not in `named`) that a named object's role
@@ -207,6 +225,12 @@ mod tests {
             e.as_deref(),
             Some("roles.txt line 1: `couch` is a name of `sofa`")
         );
+        let e = parse("generic | shelving unit, shelving thingy", kb).err();
+        assert_eq!(
+            e.as_deref(),
+            Some("roles.txt line 1: unknown object name `shelving thingy`")
+        );
+        assert!(is_generic("shelving unit") && !is_generic("bookcase"));
         let e = parse("needs | tv stand | tv\nneeds | tv stand", kb).err();
         assert!(
             e.as_deref()

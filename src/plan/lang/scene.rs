@@ -71,12 +71,25 @@ pub(super) fn read_scene(
                         .next()
                 })
                 .flatten();
-            let (i, start) = match modified {
+            let (mut i, start) = match modified {
                 Some(i) => (i, before.len() - word.len()),
                 None => (scene_of[m.as_str()], m.start()),
             };
-            r.scene = Some((i, start, m.end()));
-            masked.push((start, m.end()));
+            // "a classroom for toddlers" is the toddler classroom: a place for whom another
+            // scene's name says it is for
+            let mut end = m.end();
+            if let Some(who) = t[end..].strip_prefix(" for ") {
+                let w = who
+                    .split(|c: char| !c.is_alphanumeric())
+                    .next()
+                    .unwrap_or("");
+                let named = format!("{} {}", super::singular(w), m.as_str());
+                if let Some(&k) = scene_of.get(&named).filter(|_| !w.is_empty()) {
+                    (i, end) = (k, end + " for ".len() + w.len());
+                }
+            }
+            r.scene = Some((i, start, end));
+            masked.push((start, end));
             break;
         }
     }

@@ -366,6 +366,28 @@ fn in_scene(
             .map(|(c, _)| c.clone())
             .unwrap_or_else(|| m.category.clone());
     }
+    // "shelving units" in a shop: a thing said by a name that says only its role (`kb/roles.txt`:
+    // generic) is the scene's default of that role (the shop's display shelves); a kind said
+    // by its own name ("bookcases", "a drinks fridge") stays itself.
+    let words: Vec<&str> = m.text.split(' ').collect();
+    let said = match words.split_last() {
+        Some((last, rest)) if !rest.is_empty() => {
+            format!("{} {}", rest.join(" "), lang::singular(last))
+        }
+        _ => head.clone(),
+    };
+    if crate::plan::roles::is_generic(&said) {
+        if let Some(role) = crate::plan::roles::role_of(&m.category) {
+            let filled = s
+                .objects
+                .iter()
+                .filter(|(c, _)| crate::plan::roles::role_of(c) == Some(role))
+                .max_by_key(|(_, n)| *n);
+            if let Some((c, _)) = filled {
+                return c.clone();
+            }
+        }
+    }
     // Only what scenes specialise (`kb/words.txt`: specialised); a lamp stays a lamp.
     if !lang::is_specialised(&head) {
         return m.category.clone();
