@@ -22,6 +22,7 @@ mod frames;
 pub mod functions;
 mod furniture;
 mod garden;
+mod glasshouse;
 mod heritage;
 mod market;
 pub mod materials;
