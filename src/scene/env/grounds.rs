@@ -23,9 +23,12 @@ const ROOFS: [f32; 3] = [0.36, 0.36, 0.38];
 const PARAPET: [f32; 3] = [0.80, 0.78, 0.74];
 
 /// Ground of an outdoor scene kind: (kind, area colour, area pattern, surround colour, surround
-/// pattern). Kinds not listed stand on grass all round.
+/// pattern).
+type KindGround = (&'static str, [f32; 3], Pattern, [f32; 3], Pattern);
+
+/// The grounds of outdoor scene kinds; kinds not listed stand on grass all round.
 #[rustfmt::skip]
-const GROUNDS: &[(&str, [f32; 3], Pattern, [f32; 3], Pattern)] = &[
+const GROUNDS: &[KindGround] = &[
     ("patio", PAVING, Slabs, GRASS, Mottled),
     ("cafe terrace", PAVING, Slabs, COBBLES, Cobbles),
     ("pool area", LIGHT_PAVING, Slabs, GRASS, Mottled),
