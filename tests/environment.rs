@@ -276,3 +276,53 @@ fn floors_are_patterned_and_deterministic_per_seed() {
     let sd = (lum.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / lum.len() as f64).sqrt();
     assert!(sd / mean > 0.1, "floor brightness sd/mean {}", sd / mean);
 }
+
+/// Outdoors the scene area has its kind's own ground and what lies around it another (paving
+/// inside a lawn, decking in the sea); a rooftop stands inside a parapet, over roofs.
+#[test]
+fn outdoor_grounds_have_an_area_a_surround_and_a_roof_parapet() {
+    let o = |t: &str| draft_colours(SceneType::Outdoor, t);
+    let patio = o("a patio with a table");
+    assert_eq!(patio.ground_pattern, Pattern::Slabs, "paved patio");
+    assert!(patio.surround[1] > patio.surround[0], "a lawn round it");
+    assert_eq!(o("a park").ground, o("a park").surround, "one ground");
+    assert!(o("a park").parapet.is_none(), "no parapet in a park");
+    // what the text says of one ground all round covers it all
+    let snowy = o("a beach with white sand");
+    assert_eq!(snowy.ground, snowy.surround, "white sand all round");
+    let deck = o("a patio with timber decking");
+    assert_eq!(deck.ground_pattern, Pattern::Boards, "decking named");
+    assert!(deck.surround[1] > deck.surround[0], "still a lawn round it");
+    let roof = o("a rooftop terrace with two chairs");
+    assert!(roof.parapet.is_some(), "a parapet round a rooftop");
+    let room = [8.0, 6.0, 5.0];
+    let e = env(
+        SceneType::Outdoor,
+        room,
+        "a rooftop terrace with two chairs",
+        EnvOptions::default(),
+    );
+    // the sky's surfels lie at the hemisphere's radius; the parapet's well inside it
+    let r = 0.9 * hemisphere_radius(room);
+    let wall: Vec<&[f32; 3]> = e
+        .env
+        .means
+        .iter()
+        .filter(|m| m.iter().map(|v| f64::from(*v).powi(2)).sum::<f64>().sqrt() < r)
+        .collect();
+    assert!(
+        wall.len() > 1000,
+        "parapet surfels: {} near the ground",
+        wall.len()
+    );
+    for m in &wall {
+        let (x, y) = (m[0].abs() as f64, m[1].abs() as f64);
+        let edge = (x - 0.5 * room[0]).max(y - 0.5 * room[1]);
+        assert!(
+            (0.0..0.3).contains(&edge) && f64::from(m[2]) <= 1.06,
+            "parapet surfel off the area's edge: {m:?}"
+        );
+    }
+    let total = e.env.len() + e.floor.len();
+    assert!(total <= EnvOptions::default().cap, "{total} over the cap");
+}

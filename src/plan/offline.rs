@@ -18,6 +18,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 mod counts;
 mod describe;
+mod outdoors;
 mod relations;
 mod roles;
 mod sizing;
@@ -150,17 +151,13 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let scene = r.scene.map(|(i, _, _)| &kb.scenes[i]);
     // "a pirate ship's hold": a place inside what the template is the outside of
     let inside = r.not_literal.as_deref().is_some_and(lang::is_indoor_place);
-    let scene_type = scene.map(|s| s.scene_type).filter(|_| !inside).unwrap_or_else(|| {
-        let outdoor = regex::Regex::new(
-            r"\b(outdoor|outdoors|outside|open air|garden|yard|field|forest|street|beach|park|meadow|lawn)\b",
-        )
-        .expect("valid regex");
-        if outdoor.is_match(&r.text) && !inside {
-            SceneType::Outdoor
-        } else {
-            SceneType::Indoor
-        }
-    });
+    let scene_type = scene
+        .map(|s| s.scene_type)
+        .filter(|_| !inside)
+        .unwrap_or_else(|| match inside {
+            true => SceneType::Indoor,
+            false => outdoors::unnamed_place_type(kb, &r),
+        });
     let mut d = Draft {
         kb,
         r,

@@ -11,6 +11,7 @@ use super::frames as fr;
 use super::furniture as f;
 use super::games as gm;
 use super::garden as ga;
+use super::glasshouse as gh;
 use super::heritage as he;
 use super::household as ho;
 use super::machines as ma;
@@ -313,6 +314,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("globe", d::globe, [Body], [Body => [0.24, 0.44, 0.66], Foliage => [0.55, 0.62, 0.34], Frame => DARK_WOOD, Metal => [0.70, 0.58, 0.32]]),
     arch!("barrow", d::barrow, [Body], [Body => [0.35, 0.45, 0.35], Frame => [0.52, 0.38, 0.24], Top => [0.55, 0.40, 0.25], Metal => [0.45, 0.45, 0.47]]),
     arch!("house", d::house, [Body], [Body => [0.62, 0.46, 0.30], Top => [0.32, 0.28, 0.26], Door => [0.40, 0.27, 0.17], Glass => [0.55, 0.70, 0.80]]),
+    arch!("greenhouse", gh::greenhouse, [Metal], [Body => [0.55, 0.36, 0.26], Metal => [0.30, 0.34, 0.32], Glass => [0.80, 0.90, 0.86]]),
     arch!("fire_pit", he::fire_pit, [Body], [Body => STONE, Interior => [0.10, 0.09, 0.08], Trunk => [0.36, 0.26, 0.17], Light => [1.0, 0.55, 0.15]]),
     arch!("well", he::well, [Body], [Body => STONE, Top => [0.40, 0.27, 0.17], Frame => [0.45, 0.31, 0.19], Metal => [0.35, 0.33, 0.30], Interior => [0.08, 0.12, 0.14], Trunk => [0.40, 0.27, 0.17]]),
     arch!("windmill", he::windmill, [Body], [Body => [0.86, 0.82, 0.72], Top => [0.35, 0.24, 0.16], Frame => [0.40, 0.28, 0.18], Canvas => [0.93, 0.91, 0.85], Door => [0.40, 0.27, 0.17], Glass => [0.30, 0.35, 0.40]]),

@@ -24,6 +24,7 @@ pub mod functions;
 mod furniture;
 mod games;
 mod garden;
+mod glasshouse;
 mod heritage;
 mod household;
 mod machines;

@@ -20,6 +20,9 @@ use crate::plan::spec::SceneType;
 
 /// Steepest downward pitch of a render view (degrees).
 const MAX_PITCH_DEG: f64 = 14.0;
+/// How much a view seeing its subject from behind loses per share of the frame that subject
+/// fills (see [`back_penalty`]).
+const BACK_PER_SHARE: f64 = 12.0;
 /// Spacing of the candidate positions along the walls (metres); wider on a large ground, so
 /// there are at most [`MAX_LOOP_POINTS`] a loop.
 const STEP: f64 = 0.25;
@@ -202,6 +205,14 @@ fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
         }
     }
     both / a.total.max(b.total).max(1e-9) * cos
+}
+
+/// What a view loses for seeing its subject from behind: more the more of the frame the back
+/// fills (a sofa's back across the foreground reads as a wall of upholstery; a small chair back
+/// in a wide view does not).
+fn back_penalty(stats: &ViewStats) -> f64 {
+    let back = (-stats.facing).max(0.0);
+    back * (2.0 + BACK_PER_SHARE * stats.largest)
 }
 
 /// Horizontal distance from `p` to an object's footprint (0 inside).
@@ -416,7 +427,7 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 - 6.0 * (fg - c.near).max(0.0)
                 - 3.0 * same as f64
                 - 1.0 * alike as f64
-                - 2.0 * (-c.stats.facing).max(0.0)
+                - back_penalty(&c.stats)
                 - 16.0 * (c.occluder - 0.05).max(0.0)
                 - 20.0 * (BARE - c.stats.covered).max(0.0)
                 + 4.0 * (c.reach / diagonal).min(0.6)

@@ -139,6 +139,12 @@ pub fn is_indoor_place(w: &str) -> bool {
     word_list("indoors").contains(&w)
 }
 
+/// Whether `w` names an outdoor place that no scene template is (`kb/words.txt`, outdoors: "an
+/// allotment", "a rooftop").
+pub fn is_outdoor_place(w: &str) -> bool {
+    word_list("outdoors").contains(&w)
+}
+
 /// A word the reader knows as something other than an object: a part of the room, an area,
 /// an arrangement, people, a room size word or a common English word of requests.
 pub fn is_known_word(w: &str) -> bool {

@@ -24,6 +24,9 @@ pub enum Pattern {
     Speckled,
     /// Strong low-frequency mottle (grass, soil, concrete, snow).
     Mottled,
+    /// 60 cm paving slabs with wide joints and a per-slab tint, legible at the outdoor ground's
+    /// coarser point spacing.
+    Slabs,
 }
 
 /// Colours (linear RGB in [0, 1]) and patterns of the environment surfaces. `floor` is the
@@ -39,6 +42,11 @@ pub struct EnvColours {
     pub wall_pattern: Pattern,
     pub floor_pattern: Pattern,
     pub ground_pattern: Pattern,
+    /// Outdoors: the ground around the scene area (a lawn round a patio, the sea round a deck).
+    pub surround: [f32; 3],
+    pub surround_pattern: Pattern,
+    /// Outdoors: a parapet's colour round the scene area (a rooftop), none elsewhere.
+    pub parapet: Option<[f32; 3]>,
     /// The door leaf: the scene kind's, its style words' ("modern", "rustic"), or what the text
     /// says of its doors ("a red door").
     pub door: [f32; 3],
@@ -123,7 +131,9 @@ const MATERIALS: &[Material] = &[
     m(&["sand", "sandy", "dune", "dunes"], [0.86, 0.76, 0.55], Speckled, Floor, true),
     m(&["snow", "snowy", "snow-covered", "winter"], [0.93, 0.95, 0.98], Mottled, Floor, true),
     m(&["gravel", "pebble", "pebbles"], [0.58, 0.56, 0.52], Speckled, Floor, true),
-    m(&["cobblestone", "cobblestones", "cobbled", "paved", "paving"], [0.50, 0.48, 0.45], Cobbles, Floor, true),
+    m(&["cobblestone", "cobblestones", "cobbled"], [0.50, 0.48, 0.45], Cobbles, Floor, true),
+    m(&["paved", "paving", "slabs", "flagstones"], [0.66, 0.63, 0.58], Slabs, Floor, true),
+    m(&["decking", "decked"], [0.55, 0.40, 0.26], Boards, Floor, true),
     m(&["asphalt", "tarmac"], [0.25, 0.25, 0.26], Speckled, Floor, true),
     m(&["dirt", "soil", "mud", "muddy", "earth"], [0.42, 0.32, 0.22], Mottled, Floor, true),
     m(&["sunset", "dusk", "golden-hour"], [0.95, 0.55, 0.35], Plain, Sky, true),
@@ -241,17 +251,27 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         wall_pattern: Plain,
         floor_pattern: Boards,
         ground_pattern: Mottled,
+        surround: GRASS,
+        surround_pattern: Mottled,
+        parapet: None,
         door: DOOR_WOOD,
     };
-    if let Some(kind) = scene_kind(scene_text) {
-        if let Some(&(_, fc, fp, wc, wp, dc)) = KINDS.iter().find(|k| k.0 == kind) {
-            (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
-            if scene_type == SceneType::Outdoor {
-                (c.ground, c.ground_pattern) = (fc, fp);
-            }
-        }
+    let kind = scene_kind(scene_text);
+    if let Some(&(_, fc, fp, wc, wp, dc)) = kind.and_then(|k| KINDS.iter().find(|x| x.0 == k)) {
+        (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
     }
     let w = words(scene_text);
+    let mut one_ground = true;
+    if scene_type == SceneType::Outdoor {
+        let g = super::grounds::outdoor_ground(kind, &w);
+        (
+            (c.ground, c.ground_pattern),
+            (c.surround, c.surround_pattern),
+        ) = (g.area, g.surround);
+        (c.floor, c.floor_pattern) = g.area;
+        c.parapet = g.parapet;
+        one_ground = g.one_ground;
+    }
     if let Some((_, dc)) = STYLES
         .iter()
         .find(|(ws, _)| w.iter().any(|x| ws.contains(&x.as_str())))
@@ -294,6 +314,10 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
             let (_, col, ton) = modifiers(i);
             apply(&mut c, mat.target, Some(mat), col, ton);
         }
+    }
+    // "a beach with white sand": the one ground all round follows the text
+    if one_ground {
+        (c.surround, c.surround_pattern) = (c.ground, c.ground_pattern);
     }
     c
 }
@@ -417,6 +441,18 @@ pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed:
             k *= 0.85 + 0.3 * hash(row as i64, col as i64, seed);
             if fu < mortar || fv < mortar {
                 mix_to = Some(([0.78, 0.76, 0.72], 0.9));
+            }
+        }
+        Slabs => {
+            let (size, joint) = (0.6, 0.035);
+            let row = (v / size).floor();
+            let uu = u + 0.5 * size * (row as i64 & 1) as f32;
+            let col = (uu / size).floor();
+            let (fu, fv) = (uu - col * size, v - row * size);
+            k *= 1.0 + 0.18 * (hash(row as i64, col as i64, seed) - 0.5);
+            k *= 1.0 + 0.08 * (fbm(u, v, 0.8, seed) - 0.5);
+            if fu.min(size - fu) < joint || fv.min(size - fv) < joint {
+                mix_to = Some(([0.30, 0.30, 0.28], 0.55));
             }
         }
         Speckled => {

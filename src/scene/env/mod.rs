@@ -11,10 +11,12 @@
 //! square metre, scaled down together when the total would pass `cap`. The authors use 400k per
 //! wall and 300k for the floor (2.3M, random uniform points, opacity 0.1); a draft needs far fewer.
 mod colours;
+mod grounds;
 mod light;
 mod openings;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
+pub use grounds::PARAPET_HEIGHT;
 pub use light::{
     bake_light, openings_of, restyle_surface, styled_openings, DraftLight, LitBox, Opening,
 };
@@ -85,15 +87,22 @@ pub fn hemisphere_radius(room: [f64; 3]) -> f64 {
     (0.25 * room[0] * room[0] + 0.25 * room[1] * room[1] + room[2] * room[2]).sqrt()
 }
 
-/// Surface areas (env, floor) in m².
-fn areas(scene_type: SceneType, room: [f64; 3]) -> (f64, f64) {
+/// Thickness of a rooftop's parapet (metres).
+const PARAPET_THICKNESS: f64 = 0.2;
+
+/// Surface areas (env, floor) in m²; `parapet`: outdoors, a parapet round the area.
+fn areas(scene_type: SceneType, room: [f64; 3], parapet: bool) -> (f64, f64) {
     let [w, d, h] = room;
     match scene_type {
         SceneType::Indoor => (2.0 * (w + d) * h + w * d, w * d),
         SceneType::Outdoor => {
             let r = hemisphere_radius(room);
+            let faces = 2.0 * PARAPET_HEIGHT + PARAPET_THICKNESS;
+            // each side runs past the corners by the thickness and the push
+            let run = 2.0 * (w + d) + 8.0 * (PARAPET_THICKNESS + WALL_PUSH);
+            let wall = if parapet { run * faces } else { 0.0 };
             (
-                2.0 * std::f64::consts::PI * r * r,
+                2.0 * std::f64::consts::PI * r * r + wall,
                 std::f64::consts::PI * r * r,
             )
         }
@@ -108,7 +117,7 @@ pub fn init_environment(
     opts: &EnvOptions,
 ) -> Environment {
     let room = room.map(|v| if v.is_finite() { v.max(0.1) } else { 1.0 });
-    let (a_env, a_floor) = areas(scene_type, room);
+    let (a_env, a_floor) = areas(scene_type, room, colours.parapet.is_some());
     let density = opts
         .density
         .max(0.0)
@@ -166,8 +175,9 @@ pub fn init_environment(
             let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
             // Upper hemisphere, cos(polar) uniform in (0, 1) on a Fibonacci lattice; radius
             // jittered R * cbrt(U(0.95, 1.05)) as the authors.
-            let n = (density * a_env) as usize;
-            let spacing = (a_env / n.max(1) as f64).sqrt();
+            let a_sky = 2.0 * std::f64::consts::PI * r * r;
+            let n = (density * a_sky) as usize;
+            let spacing = (a_sky / n.max(1) as f64).sqrt();
             for i in 0..n {
                 let z = (i as f64 + 0.5) / n as f64;
                 let s = (1.0 - z * z).sqrt();
@@ -188,6 +198,9 @@ pub fn init_environment(
                 );
                 b.push(dir.map(|x| x * rad), dir, spacing, c);
             }
+            if let Some(colour) = colours.parapet {
+                parapet(&mut b, &mut rng, room, density, colour);
+            }
             let env = b.take();
             // Ground disk of radius R on a sunflower lattice, z = U(-1 cm, 0).
             let n = (density * a_floor) as usize;
@@ -200,14 +213,15 @@ pub fn init_environment(
                 let y = rr * phi.sin() + rng.gen_range(-jit..jit);
                 let z = -rng.gen_range(0.0..0.01);
                 let speck: f32 = rng.gen();
-                let c = shade(
-                    colours.ground,
-                    colours.ground_pattern,
-                    x as f32,
-                    y as f32,
-                    speck,
-                    opts.seed,
-                );
+                // the scene area's own ground, and around it the surround
+                let inside =
+                    x.abs() <= 0.5 * room[0] + WALL_PUSH && y.abs() <= 0.5 * room[1] + WALL_PUSH;
+                let (base, pattern) = if inside {
+                    (colours.ground, colours.ground_pattern)
+                } else {
+                    (colours.surround, colours.surround_pattern)
+                };
+                let c = shade(base, pattern, x as f32, y as f32, speck, opts.seed);
                 b.push([x, y, z], [0.0, 0.0, 1.0], spacing, c);
             }
             let floor = b.take();
@@ -217,6 +231,44 @@ pub fn init_environment(
                 floor,
             }
         }
+    }
+}
+
+/// A parapet round the `room`'s ground area, just outside it: an inner and an outer face and
+/// a top on each side, `PARAPET_HEIGHT` tall.
+fn parapet(b: &mut Builder, rng: &mut ChaCha8Rng, room: [f64; 3], density: f64, colour: [f32; 3]) {
+    let (hw, hd, t) = (0.5 * room[0], 0.5 * room[1], PARAPET_THICKNESS);
+    for (axis, sign) in [(0usize, -1.0f64), (0, 1.0), (1, -1.0), (1, 1.0)] {
+        // each side runs past the corners by the thickness, so the corners close
+        let (len, off) = if axis == 0 {
+            (room[1] + 2.0 * (t + WALL_PUSH), hw + WALL_PUSH)
+        } else {
+            (room[0] + 2.0 * (t + WALL_PUSH), hd + WALL_PUSH)
+        };
+        let at = |along: f64, across: f64, z: f64| {
+            if axis == 0 {
+                [sign * across, along, z]
+            } else {
+                [along, sign * across, z]
+            }
+        };
+        let out = if axis == 0 {
+            [sign, 0.0, 0.0]
+        } else {
+            [0.0, sign, 0.0]
+        };
+        let inward = out.map(|v| -v);
+        let face = (density * len * PARAPET_HEIGHT) as usize;
+        for (across, normal) in [(off, inward), (off + t, out)] {
+            b.plane(rng, face, [len, PARAPET_HEIGHT], |u, v, _| {
+                (at(u - 0.5 * len, across, v), normal, colour, Pattern::Plain)
+            });
+        }
+        let top = (density * len * t) as usize;
+        b.plane(rng, top, [len, t], |u, v, _| {
+            let p = at(u - 0.5 * len, off + v, PARAPET_HEIGHT);
+            (p, [0.0, 0.0, 1.0], colour, Pattern::Plain)
+        });
     }
 }
 

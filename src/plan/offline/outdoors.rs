@@ -1,0 +1,92 @@
+//! Whether a request that names no known place is outdoors: by its place words (`kb/words.txt`,
+//! outdoors: "a garden", "an allotment", "a rooftop"; indoors: "a grotto", "a cellar"), else by
+//! what it names. A thing that the
+//! knowledge base's outdoor places hold and no indoor place does (a shed, a tree, a swing set)
+//! votes outdoors; one only indoor places hold (a sofa, a bed) votes indoors.
+use super::super::kb::KnowledgeBase;
+use super::super::lang::{self, Reading};
+use super::super::spec::SceneType;
+
+/// The scene type of a reading without a matched place (or whose place is only lent).
+pub(super) fn unnamed_place_type(kb: &KnowledgeBase, r: &Reading) -> SceneType {
+    // "open air" is one place word
+    let text = r.text.replace("open air", "open-air");
+    let words: Vec<&str> = text
+        .split(|c: char| !(c.is_alphanumeric() || c == '-' || c == '\''))
+        .filter(|w| !w.is_empty())
+        .collect();
+    if words.iter().any(|w| lang::is_outdoor_place(w)) {
+        return SceneType::Outdoor;
+    }
+    // "a grotto with a waterfall": a place inside rock or a hull holds outdoor things indoors
+    if words.iter().any(|w| lang::is_indoor_place(w)) {
+        return SceneType::Indoor;
+    }
+    let mut vote = 0i32;
+    for m in r.mentions.iter().filter(|m| m.known && !m.negated) {
+        vote += home(kb, &m.category);
+    }
+    if vote > 0 {
+        SceneType::Outdoor
+    } else {
+        SceneType::Indoor
+    }
+}
+
+/// +1 when only outdoor places of the knowledge base hold `category` by default, -1 when only
+/// indoor ones do, 0 when both or neither.
+fn home(kb: &KnowledgeBase, category: &str) -> i32 {
+    let held = |t: SceneType| {
+        kb.scenes
+            .iter()
+            .filter(|s| s.scene_type == t)
+            .any(|s| s.objects.iter().any(|(c, _)| c == category))
+    };
+    match (held(SceneType::Outdoor), held(SceneType::Indoor)) {
+        (true, false) => 1,
+        (false, true) => -1,
+        _ => 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kind(text: &str) -> SceneType {
+        let kb = KnowledgeBase::builtin();
+        unnamed_place_type(kb, &lang::read(kb, text))
+    }
+
+    #[test]
+    fn place_words_and_outdoor_things_make_a_scene_outdoors() {
+        // place words of the list
+        assert_eq!(
+            kind("an orchard with five trees"),
+            SceneType::Outdoor,
+            "orchard"
+        );
+        assert_eq!(
+            kind("a rooftop with two chairs"),
+            SceneType::Outdoor,
+            "rooftop"
+        );
+        // no place word: what it names
+        assert_eq!(
+            kind("a shed, two raised beds and a wheelbarrow"),
+            SceneType::Outdoor,
+            "garden things"
+        );
+        assert_eq!(
+            kind("a sofa, a rug and a tv"),
+            SceneType::Indoor,
+            "living things"
+        );
+        assert_eq!(
+            kind("a cave with a tree and a rock"),
+            SceneType::Indoor,
+            "a cave"
+        );
+        assert_eq!(kind("two chairs and a table"), SceneType::Indoor, "no vote");
+    }
+}
