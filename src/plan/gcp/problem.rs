@@ -23,6 +23,8 @@ pub(super) struct Problem {
     pub(super) faced: Vec<bool>,
     /// Per instance: hung on a wall (touching it).
     pub(super) wall_hung: Vec<bool>,
+    /// Per instance hung on a wall: the instance with a floor footprint it hangs above.
+    pub(super) above: Vec<Option<usize>>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
@@ -177,6 +179,7 @@ impl Problem {
             }
         }
         out.extend(self.opening_candidates(i));
+        out.extend(self.above_poses(i, placed));
         // Poses derived from each placed partner.
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };

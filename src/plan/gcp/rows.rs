@@ -9,7 +9,7 @@
 //! benches), are split by a centre aisle. The block keeps a free band at the front for what the
 //! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
 //! face a wall with one.
-use super::spacing::{PASSAGE, SEAT_GAP};
+use super::spacing::{PASSAGE, ROW_WALK, SEAT_GAP};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
@@ -18,6 +18,9 @@ use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
 const FRONT: f64 = 1.8;
 /// The least front depth a tight room may keep.
 const FRONT_MIN: f64 = 1.0;
+/// Things at least this long (m) stand in rows of two, split by the aisle, when the rows are
+/// not asked (pews, benches).
+const LONG: f64 = 1.5;
 /// The centre aisle of rows of four or more.
 const AISLE: f64 = 1.0;
 /// The widest angle (degrees) off straight ahead at which a seat at the end of the first
@@ -48,7 +51,7 @@ struct Block {
 }
 
 /// kb/fronts.txt: what rows face, most telling first.
-fn fronts() -> impl Iterator<Item = &'static str> {
+pub(crate) fn fronts() -> impl Iterator<Item = &'static str> {
     include_str!("../kb/fronts.txt")
         .lines()
         .map(str::trim)
@@ -113,6 +116,8 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
             .any(|r| r.relation == RelationKind::Row && r.subject == id)
     });
     let rows = match o.rows {
+        // long things (pews, benches): one a side of the centre aisle
+        0 if in_row && o.size[0] >= LONG => n.div_ceil(2),
         0 if in_row => n.div_ceil((1.5 * n as f64).sqrt().ceil() as usize),
         0 => return None,
         r => (r as usize).min(n),
@@ -200,9 +205,9 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         gap_y: if let Some(depth) = seat_depth {
             (depth + SEAT_GAP + PASSAGE).max(1.1)
         } else {
-            (0.7 * s[1]).clamp(0.45, 1.0)
+            (0.7 * s[1]).clamp(ROW_WALK, 1.0)
         },
-        aisle: if cols >= 4 || (cols >= 2 && s[0] >= 1.5) {
+        aisle: if cols >= 4 || (cols >= 2 && s[0] >= LONG) {
             AISLE
         } else {
             0.0
