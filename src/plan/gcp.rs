@@ -246,6 +246,7 @@ fn layout_in_pinned(
         wall_hung,
         above,
         sightlines,
+        bands: vec![],
         hung,
         openings: vec![],
         zones: vec![],
@@ -285,7 +286,7 @@ fn layout_in_pinned(
         };
         prob.zones = prob.openings.iter().map(opening_zone).collect();
         let mut fixed = pinned.clone();
-        prob.place_rows(spec, &mut fixed);
+        prob.bands = prob.place_rows(spec, &mut fixed);
         let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
         l.openings = prob.openings.clone();
         let q =

@@ -27,6 +27,9 @@ pub(super) struct Problem {
     pub(super) above: Vec<Option<usize>>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
+    /// Front bands of the blocks of rows of this attempt (the view from the rows to what they
+    /// face), each with the instances that belong there.
+    pub(super) bands: Vec<(Box2, Vec<usize>)>,
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     pub(super) sightlines: Vec<(usize, usize)>,
     pub(super) step: f64,
@@ -164,7 +167,12 @@ impl Problem {
                 let r = 0.25 * w.min(d);
                 for x in grid(-hw, hw) {
                     for y in grid(-hd, hd) {
-                        if anchor == Anchor::Center && (x * x + y * y).sqrt() > r {
+                        // (beside a block of rows, whose front band may hold the middle, the
+                        // whole floor)
+                        if anchor == Anchor::Center
+                            && self.bands.is_empty()
+                            && (x * x + y * y).sqrt() > r
+                        {
                             continue;
                         }
                         for &yaw in &yaws[..4] {

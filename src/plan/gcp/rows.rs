@@ -248,7 +248,15 @@ impl Problem {
     /// into `placed` (the block of a category with an instance already placed is left alone),
     /// then the floors of tables with their seats (`tables.rs`).
     /// The front is the wall the block's rows face: tried in the order that leaves most room.
-    pub(super) fn place_rows(&self, spec: &SceneSpec, placed: &mut [Option<Pose>]) {
+    /// Returns the front band of each block that faces something (from its first row to the
+    /// front wall, as wide as the block) with the instances that belong there (the block and
+    /// what stands at its front).
+    pub(super) fn place_rows(
+        &self,
+        spec: &SceneSpec,
+        placed: &mut [Option<Pose>],
+    ) -> Vec<(Box2, Vec<usize>)> {
+        let mut bands = vec![];
         for cat in spec.objects.keys() {
             let Some(b) = block(spec, cat) else { continue };
             let ids: Vec<usize> = (1..=b.n)
@@ -258,17 +266,43 @@ impl Problem {
                 continue;
             }
             if let Some((poses, f)) = self.block_poses(&b, &ids, placed) {
+                let first = poses
+                    .iter()
+                    .map(|p| p.c[0] * f[0] + p.c[1] * f[1])
+                    .fold(f64::NEG_INFINITY, f64::max)
+                    + 0.5 * b.size[1];
                 for (&i, p) in ids.iter().zip(poses) {
                     placed[i] = Some(p);
                 }
+                let mut members = ids.clone();
                 for t in &b.at_front {
                     if let Some(&t) = self.index.get(&format!("{t}1")) {
                         self.place_front(t, f, placed);
+                        members.push(t);
                     }
+                }
+                let along = 0.5
+                    * if f[0] == 0.0 {
+                        self.room[1]
+                    } else {
+                        self.room[0]
+                    };
+                let mid = 0.5 * (first + along);
+                let band = Box2::new(
+                    [mid * f[0], mid * f[1]],
+                    yaw_facing(f),
+                    [b.width(), (along - first).max(0.0)],
+                    0.0,
+                    self.room[2],
+                );
+                // (rows that face nothing, a shop's shelving, keep no view)
+                if !b.at_front.is_empty() {
+                    bands.push((band, members));
                 }
             }
         }
         self.place_tables(spec, placed);
+        bands
     }
 
     /// Stands what the rows face (instance `t`) against the front wall, centred before the
