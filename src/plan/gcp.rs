@@ -9,6 +9,7 @@ use super::check::opening_zone;
 use super::spec::{Layout, Opening, PlacedBy, RelationKind, Room, SceneSpec, SceneType, SpecError};
 use rand::SeedableRng;
 
+mod above;
 mod attempt;
 pub mod classes;
 mod clear;
@@ -221,6 +222,14 @@ fn layout_in_pinned(
         .iter()
         .map(|i| spec.scene_type == SceneType::Indoor && mounts.wall.contains_key(&i.id))
         .collect();
+    let above: Vec<Option<usize>> = inst
+        .iter()
+        .zip(&wall_hung)
+        .map(|(i, &hung)| {
+            let j = *index.get(mounts.above.get(&i.id)?)?;
+            hung.then_some(j)
+        })
+        .collect();
     // (the retry of a room the first search could not pack gives its fronts up)
     let fronts: Vec<Option<f64>> = inst
         .iter()
@@ -235,7 +244,9 @@ fn layout_in_pinned(
         fronts,
         faced,
         wall_hung,
+        above,
         sightlines,
+        bands: vec![],
         hung,
         openings: vec![],
         zones: vec![],
@@ -275,7 +286,7 @@ fn layout_in_pinned(
         };
         prob.zones = prob.openings.iter().map(opening_zone).collect();
         let mut fixed = pinned.clone();
-        prob.place_rows(spec, &mut fixed);
+        prob.bands = prob.place_rows(spec, &mut fixed);
         let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
         l.openings = prob.openings.clone();
         let q =

@@ -362,7 +362,51 @@ pub fn apply_named(
         }
     }
     shelter_group(spec);
+    rows_before_front(spec);
     grow_supports(spec);
+}
+
+/// The fewest things of a kind that stand in rows when they all face one front.
+const ROWS_FROM: u32 = 5;
+
+/// Many things of a kind all in front of, or across from, one thing that rows face (six pews
+/// before the altar, a home cinema's seats across from its screen: kb/fronts.txt), or things
+/// asked in rows that all face it, stand in rows facing it: their relation to it becomes ROW
+/// (in front of it and turned to it, however far back the row).
+fn rows_before_front(spec: &mut SceneSpec) {
+    let fronts: Vec<&str> = crate::plan::gcp::rows::fronts().collect();
+    for (cat, o) in &spec.objects {
+        // (rows asked face their front the same way)
+        let enough = o.number >= ROWS_FROM || (o.rows > 0 && o.number >= 2);
+        if !enough || fronts.contains(&cat.as_str()) {
+            continue;
+        }
+        let id = |k: u32| format!("{cat}{k}");
+        let toward = |k: u32| {
+            spec.relations
+                .iter()
+                .filter(|r| r.subject == id(k))
+                .find(|r| matches!(r.relation, RelationKind::Front | RelationKind::Opposite))
+                .map(|r| r.object.clone())
+        };
+        let Some(front) = toward(1) else { continue };
+        let base = front.trim_end_matches(|c: char| c.is_ascii_digit());
+        if !fronts.contains(&base) || (2..=o.number).any(|k| toward(k).as_ref() != Some(&front)) {
+            continue;
+        }
+        for r in spec.relations.iter_mut() {
+            if r.object == front
+                && base_of(&r.subject) == cat
+                && matches!(r.relation, RelationKind::Front | RelationKind::Opposite)
+            {
+                r.relation = RelationKind::Row;
+            }
+        }
+    }
+}
+
+fn base_of(id: &str) -> &str {
+    id.trim_end_matches(|c: char| c.is_ascii_digit())
 }
 
 /// A thing the sentence places (an armchair on either side of the fire, a lamp next to the bed)

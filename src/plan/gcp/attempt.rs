@@ -101,7 +101,7 @@ pub(super) fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
                     && (rel == RelationKind::Over
                         || (placers && placed_by(rel) && rank[j] < rank[i]));
                 !waits || fixed.contains(&j)
-            });
+            }) && prob.above[i].is_none_or(|j| fixed.contains(&j));
             if ready {
                 fixed.push(i);
             } else {

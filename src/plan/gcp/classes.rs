@@ -191,6 +191,9 @@ pub struct Mounts {
     pub wall: BTreeMap<String, f64>,
     /// Instance ids hung from the ceiling.
     pub ceiling: Vec<String>,
+    /// Instance id hung on a wall -> the thing with a floor footprint it hangs above (a shelf
+    /// "on the wall above" the desk, or above the monitors on that desk).
+    pub above: BTreeMap<String, String>,
 }
 
 /// Puts the placement classes into `spec`'s own terms: against_wall and on_wall things without
@@ -282,6 +285,12 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
             }
         }
     }
+    let over: Vec<(String, String)> = spec
+        .relations
+        .iter()
+        .filter(|r| unstack.contains(&r.subject) && r.relation == RelationKind::Over)
+        .map(|r| (r.subject.clone(), r.object.clone()))
+        .collect();
     spec.relations.retain(|r| {
         !(unstack.contains(&r.subject)
             && matches!(r.relation, RelationKind::Over | RelationKind::Under))
@@ -310,9 +319,34 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
+    for (id, target) in over {
+        if let Some(below) = footprint_below(spec, &target) {
+            mounts.above.entry(id).or_insert(below);
+        }
+    }
     give_up_middle(spec);
     spread_overflow(spec);
     mounts
+}
+
+/// The thing with a floor footprint of its own that `id` is, or stands on (the desk under the
+/// monitor), if any.
+fn footprint_below(spec: &SceneSpec, id: &str) -> Option<String> {
+    let mut at = id.to_string();
+    for _ in 0..=spec.relations.len() {
+        match effective_class(spec, base(&at)) {
+            Class::Floor | Class::AgainstWall => return Some(at),
+            Class::OnWall(_) | Class::Ceiling => return None,
+            Class::OnSurface(_) => {
+                let r = spec
+                    .relations
+                    .iter()
+                    .find(|r| r.subject == at && r.relation == RelationKind::Over)?;
+                at = r.object.clone();
+            }
+        }
+    }
+    None
 }
 
 /// A thing OVER several supports rests on one: those its placement class names are kept when

@@ -115,6 +115,18 @@ impl Problem {
                 }
             }
         }
+        // The view from a block of rows to its front is kept clear of what belongs to neither
+        // (a default table squeezed before the first row).
+        if b.z1 > SIGHTLINE_HEIGHT && b.z0 < super::spacing::HEAD_HEIGHT {
+            for (band, members) in &self.bands {
+                let belongs =
+                    members.contains(&i) || self.rels[i].iter().any(|r| members.contains(&r.1));
+                // (more than an anchor is worth: a table kept mid-room gives the middle up)
+                if !belongs && overlap_depth(b, band) > 0.0 {
+                    score -= 25.0;
+                }
+            }
+        }
         for &(rel, j, subject) in &self.rels[i] {
             let Some(bj) = boxed(j) else {
                 if rel == RelationKind::Opposite && self.inst[j].anchor == Anchor::Side {

@@ -23,8 +23,13 @@ pub(super) struct Problem {
     pub(super) faced: Vec<bool>,
     /// Per instance: hung on a wall (touching it).
     pub(super) wall_hung: Vec<bool>,
+    /// Per instance hung on a wall: the instance with a floor footprint it hangs above.
+    pub(super) above: Vec<Option<usize>>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
+    /// Front bands of the blocks of rows of this attempt (the view from the rows to what they
+    /// face), each with the instances that belong there.
+    pub(super) bands: Vec<(Box2, Vec<usize>)>,
     /// OPPOSITE pairs (subject, object): sightlines to keep clear.
     pub(super) sightlines: Vec<(usize, usize)>,
     pub(super) step: f64,
@@ -162,7 +167,12 @@ impl Problem {
                 let r = 0.25 * w.min(d);
                 for x in grid(-hw, hw) {
                     for y in grid(-hd, hd) {
-                        if anchor == Anchor::Center && (x * x + y * y).sqrt() > r {
+                        // (beside a block of rows, whose front band may hold the middle, the
+                        // whole floor)
+                        if anchor == Anchor::Center
+                            && self.bands.is_empty()
+                            && (x * x + y * y).sqrt() > r
+                        {
                             continue;
                         }
                         for &yaw in &yaws[..4] {
@@ -177,6 +187,7 @@ impl Problem {
             }
         }
         out.extend(self.opening_candidates(i));
+        out.extend(self.above_poses(i, placed));
         // Poses derived from each placed partner.
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };

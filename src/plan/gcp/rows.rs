@@ -9,7 +9,7 @@
 //! benches), are split by a centre aisle. The block keeps a free band at the front for what the
 //! rows face, a walkway behind, and every door's clear zone; rows asked by or facing a window
 //! face a wall with one.
-use super::spacing::{PASSAGE, SEAT_GAP};
+use super::spacing::{PASSAGE, ROW_WALK, SEAT_GAP};
 use super::{yaw_facing, Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
@@ -18,6 +18,9 @@ use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
 const FRONT: f64 = 1.8;
 /// The least front depth a tight room may keep.
 const FRONT_MIN: f64 = 1.0;
+/// Things at least this long (m) stand in rows of two, split by the aisle, when the rows are
+/// not asked (pews, benches).
+const LONG: f64 = 1.5;
 /// The centre aisle of rows of four or more.
 const AISLE: f64 = 1.0;
 /// The widest angle (degrees) off straight ahead at which a seat at the end of the first
@@ -48,7 +51,7 @@ struct Block {
 }
 
 /// kb/fronts.txt: what rows face, most telling first.
-fn fronts() -> impl Iterator<Item = &'static str> {
+pub(crate) fn fronts() -> impl Iterator<Item = &'static str> {
     include_str!("../kb/fronts.txt")
         .lines()
         .map(str::trim)
@@ -113,6 +116,8 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
             .any(|r| r.relation == RelationKind::Row && r.subject == id)
     });
     let rows = match o.rows {
+        // long things (pews, benches): one a side of the centre aisle
+        0 if in_row && o.size[0] >= LONG => n.div_ceil(2),
         0 if in_row => n.div_ceil((1.5 * n as f64).sqrt().ceil() as usize),
         0 => return None,
         r => (r as usize).min(n),
@@ -200,9 +205,9 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         gap_y: if let Some(depth) = seat_depth {
             (depth + SEAT_GAP + PASSAGE).max(1.1)
         } else {
-            (0.7 * s[1]).clamp(0.45, 1.0)
+            (0.7 * s[1]).clamp(ROW_WALK, 1.0)
         },
-        aisle: if cols >= 4 || (cols >= 2 && s[0] >= 1.5) {
+        aisle: if cols >= 4 || (cols >= 2 && s[0] >= LONG) {
             AISLE
         } else {
             0.0
@@ -243,7 +248,15 @@ impl Problem {
     /// into `placed` (the block of a category with an instance already placed is left alone),
     /// then the floors of tables with their seats (`tables.rs`).
     /// The front is the wall the block's rows face: tried in the order that leaves most room.
-    pub(super) fn place_rows(&self, spec: &SceneSpec, placed: &mut [Option<Pose>]) {
+    /// Returns the front band of each block that faces something (from its first row to the
+    /// front wall, as wide as the block) with the instances that belong there (the block and
+    /// what stands at its front).
+    pub(super) fn place_rows(
+        &self,
+        spec: &SceneSpec,
+        placed: &mut [Option<Pose>],
+    ) -> Vec<(Box2, Vec<usize>)> {
+        let mut bands = vec![];
         for cat in spec.objects.keys() {
             let Some(b) = block(spec, cat) else { continue };
             let ids: Vec<usize> = (1..=b.n)
@@ -253,17 +266,43 @@ impl Problem {
                 continue;
             }
             if let Some((poses, f)) = self.block_poses(&b, &ids, placed) {
+                let first = poses
+                    .iter()
+                    .map(|p| p.c[0] * f[0] + p.c[1] * f[1])
+                    .fold(f64::NEG_INFINITY, f64::max)
+                    + 0.5 * b.size[1];
                 for (&i, p) in ids.iter().zip(poses) {
                     placed[i] = Some(p);
                 }
+                let mut members = ids.clone();
                 for t in &b.at_front {
                     if let Some(&t) = self.index.get(&format!("{t}1")) {
                         self.place_front(t, f, placed);
+                        members.push(t);
                     }
+                }
+                let along = 0.5
+                    * if f[0] == 0.0 {
+                        self.room[1]
+                    } else {
+                        self.room[0]
+                    };
+                let mid = 0.5 * (first + along);
+                let band = Box2::new(
+                    [mid * f[0], mid * f[1]],
+                    yaw_facing(f),
+                    [b.width(), (along - first).max(0.0)],
+                    0.0,
+                    self.room[2],
+                );
+                // (rows that face nothing, a shop's shelving, keep no view)
+                if !b.at_front.is_empty() {
+                    bands.push((band, members));
                 }
             }
         }
         self.place_tables(spec, placed);
+        bands
     }
 
     /// Stands what the rows face (instance `t`) against the front wall, centred before the

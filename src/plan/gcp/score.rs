@@ -107,6 +107,12 @@ impl Problem {
                 }
             }
         }
+        // a thing hung above another hangs over it, centred
+        if let Some((holds, off)) = self.above_holds(i, &b, placed) {
+            total += 1;
+            ok += holds as usize;
+            near += off;
+        }
         // A thing stands where what is placed in front of or behind it can keep its own
         // anchor (a sofa where its coffee table can stand in the middle of the room), and a
         // thing in front of or behind another placed first stands where that other can keep

@@ -16,3 +16,6 @@ pub(super) const SPOT: f64 = 0.75;
 pub(super) const TABLE_ROOM: f64 = 1.2;
 /// Things whose bottom is higher than this leave the floor below them free to stand on (m).
 pub(super) const HEAD_HEIGHT: f64 = 1.9;
+/// The clear gap between two rows of seats nobody draws up to anything (theatre seats, pews): a
+/// walker (0.3 m radius, see `check::walk`) passes along the row, with a 10 cm cell to spare.
+pub(super) const ROW_WALK: f64 = 2.0 * crate::plan::check::walk::AGENT_RADIUS + 0.1;

@@ -1,0 +1,135 @@
+//! Placement leftovers of issues 21 and 22: a thing hung on the wall above a floor thing hangs
+//! over it, on the wall it stands against; consoles line the walls; candle stands flank the
+//! altar; pews and a cinema's seats stand in rows facing their front, with a walker's gap
+//! between the rows.
+use dreamscene::plan::check::{validity_problems, walk, wall_distances, Box2};
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::offline::plan_prompt;
+use dreamscene::plan::spec::{Layout, PlacedObject, RelationKind};
+
+/// Plans and lays out `prompt` (seed `seed`); the layout is valid.
+fn lay(prompt: &str, seed: u64) -> (Layout, dreamscene::plan::spec::SceneSpec) {
+    let plan = plan_prompt(prompt).expect("planned");
+    let l = layout(&plan.spec, LayoutOptions::seeded(seed)).expect("laid out");
+    assert!(validity_problems(&l, &plan.spec).is_empty(), "{prompt}");
+    (l, plan.spec)
+}
+
+fn one<'a>(l: &'a Layout, category: &str) -> &'a PlacedObject {
+    l.objects
+        .iter()
+        .find(|o| o.category == category)
+        .unwrap_or_else(|| panic!("no {category} in {:?}", l.objects))
+}
+
+/// The wall `o` stands nearest (in `wall_distances` order) and its distance to it.
+fn nearest_wall(o: &PlacedObject, room: [f64; 3]) -> (usize, f64) {
+    let wd = wall_distances(&Box2::of(o), room);
+    (0..4)
+        .map(|k| (k, wd[k]))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("four walls")
+}
+
+#[test]
+fn a_wall_thing_above_a_floor_thing_hangs_over_it_on_its_wall() {
+    for (prompt, hung, below) in [
+        (
+            "a study with a desk with two monitors and a shelf on the wall above them",
+            "wall shelf",
+            "desk",
+        ),
+        (
+            "a bedroom with a bed, a dresser and a mirror on the wall above the dresser",
+            "full length mirror",
+            "dresser",
+        ),
+    ] {
+        for seed in 0..2 {
+            let (l, _) = lay(prompt, seed);
+            let room = l.room.size;
+            let (h, b) = (one(&l, hung), one(&l, below));
+            let (wall, d) = nearest_wall(b, room);
+            assert!(
+                d <= 0.3,
+                "{prompt} (seed {seed}): the {below} is off its wall"
+            );
+            let hd = wall_distances(&Box2::of(h), room)[wall];
+            assert!(
+                hd <= 0.05,
+                "{prompt} (seed {seed}): {h:?} not on the wall of {b:?}"
+            );
+            let [x0, y0, x1, y1] = Box2::of(b).aabb();
+            let (lo, hi, at) = if wall < 2 {
+                (y0, y1, h.position[1])
+            } else {
+                (x0, x1, h.position[0])
+            };
+            assert!(
+                (lo..=hi).contains(&at),
+                "{prompt} (seed {seed}): the {hung} is not over the {below}: {at} not in {lo}..{hi}"
+            );
+            assert!(
+                h.position[2] >= b.position[2] + b.size[2],
+                "{prompt} (seed {seed}): the {hung} hangs lower than the {below}'s top"
+            );
+        }
+    }
+}
+
+#[test]
+fn consoles_stand_against_the_walls() {
+    let (l, _) = lay(
+        "a ship's bridge with three control consoles and a captain's chair",
+        0,
+    );
+    let consoles: Vec<&PlacedObject> = l
+        .objects
+        .iter()
+        .filter(|o| o.category.contains("console"))
+        .collect();
+    assert_eq!(consoles.len(), 3, "{:?}", l.objects);
+    for c in consoles {
+        let (_, d) = nearest_wall(c, l.room.size);
+        assert!(d <= 0.3, "{} is {d:.2} m off the walls", c.id);
+    }
+}
+
+#[test]
+fn pews_stand_in_rows_facing_the_altar_with_candle_stands_beside_it() {
+    let (l, spec) = lay(
+        "a small chapel with an altar, two candle stands and six pews",
+        0,
+    );
+    let pew_rel: Vec<RelationKind> = spec
+        .relations
+        .iter()
+        .filter(|r| r.subject.starts_with("pew"))
+        .map(|r| r.relation)
+        .collect();
+    assert_eq!(pew_rel, vec![RelationKind::Row; 6], "{:?}", spec.relations);
+    assert!(l.unsatisfied.is_empty(), "{:?}", l.unsatisfied);
+    assert!(
+        l.objects
+            .iter()
+            .all(|o| o.placed_by == dreamscene::plan::spec::PlacedBy::Constraint),
+        "a fallback among {:?}",
+        l.objects
+    );
+    let altar = Box2::of(one(&l, "altar"));
+    for s in l.objects.iter().filter(|o| o.category == "candle stand") {
+        let g = dreamscene::plan::check::gap(&Box2::of(s), &altar);
+        assert!(g <= 0.15, "{} {g:.2} m from the altar", s.id);
+    }
+}
+
+#[test]
+fn rows_of_theatre_seats_leave_room_to_walk_to_every_seat() {
+    let (l, _) = lay(
+        "a small cinema with four rows of six seats facing the screen",
+        0,
+    );
+    assert!(l.unsatisfied.is_empty(), "{:?}", l.unsatisfied);
+    let stuck = walk::unreachable(&l);
+    assert!(stuck.is_empty(), "out of reach: {stuck:?}");
+}
