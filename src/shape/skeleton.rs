@@ -9,22 +9,16 @@ use std::f64::consts::TAU;
 pub fn skeleton(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let m = hw.min(hd);
-    // The stand: five feet round a hub, a pole up behind the spine to a hook under the skull.
+    // The stand: five feet on castors spread over the whole footprint round a hub behind the
+    // spine, a pole up from the hub to a hook under the skull.
     let yp = -0.75 * hd;
     for k in 0..5 {
         let a = k as f64 * TAU / 5.0 + TAU / 4.0;
-        b.rod(
-            Metal,
-            [0.0, yp, 0.03],
-            [0.9 * m * a.cos(), yp + 0.9 * m * a.sin(), 0.02],
-            0.012,
-        );
-        b.ellipsoid(
-            BlackKeys,
-            [0.9 * m * a.cos(), yp + 0.9 * m * a.sin(), 0.02],
-            [0.02, 0.02, 0.02],
-        );
+        let foot = [0.95 * hw * a.cos(), 0.95 * hd * a.sin(), 0.03];
+        b.rod(Metal, [0.0, yp, 0.05], foot, 0.014);
+        b.ellipsoid(BlackKeys, [foot[0], foot[1], 0.025], [0.025, 0.025, 0.025]);
     }
+    b.frustum(Metal, [0.0, yp, 0.0], 0.05, 0.05, 0.6, 0.08);
     b.cylinder(Metal, [0.0, yp, 0.02], 0.012, 0.9 * h);
     b.rod(
         Metal,
