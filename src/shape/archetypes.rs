@@ -12,6 +12,7 @@ use super::furniture as f;
 use super::games as gm;
 use super::garden as ga;
 use super::glasshouse as gh;
+use super::hangings as hg;
 use super::heritage as he;
 use super::household as ho;
 use super::machines as ma;
@@ -19,9 +20,11 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
+use super::picnic as pc;
 use super::play as pl;
 use super::sculpted as sc;
 use super::seats as se;
+use super::skeleton as sk;
 use super::sport as sp;
 use super::structures as st;
 use super::things as t;
@@ -215,6 +218,7 @@ const WHITE: Rgb = [0.92, 0.92, 0.91];
 const STEEL: Rgb = [0.72, 0.73, 0.75];
 const BLACK: Rgb = [0.08, 0.08, 0.09];
 const DARK_WOOD: Rgb = [0.30, 0.19, 0.11];
+const BRASS: Rgb = [0.72, 0.56, 0.28];
 const STONE: Rgb = [0.66, 0.64, 0.60];
 
 macro_rules! arch {
@@ -388,6 +392,13 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("toaster", ho::toaster, [Body], [Body => STEEL, Handle => BLACK, Interior => BLACK]),
     arch!("glass_fridge", vi::glass_fridge, [Body, Door], [Body => [0.15, 0.15, 0.16], Door => [0.15, 0.15, 0.16], Interior => [0.30, 0.32, 0.34], Frame => [0.70, 0.71, 0.73], Light => [0.95, 0.96, 1.0], Handle => STEEL]),
     arch!("vending", vi::vending, [Body], [Body => [0.75, 0.12, 0.12], Interior => [0.12, 0.12, 0.13], Metal => [0.60, 0.61, 0.63], Keys => [0.85, 0.85, 0.83], Handle => [0.30, 0.30, 0.32]]),
+    arch!("chandelier", hg::chandelier, [Metal], [Metal => BRASS, Body => [0.95, 0.93, 0.88], Glass => [0.86, 0.90, 0.95], Light => [1.0, 0.88, 0.60]]),
+    arch!("pendant_light", hg::pendant_light, [Shade], [Shade => [0.16, 0.24, 0.22], Metal => BRASS, Light => [1.0, 0.90, 0.65]]),
+    arch!("ceiling_light", hg::ceiling_light, [Metal], [Metal => [0.86, 0.86, 0.85], Light => [1.0, 0.97, 0.88]]),
+    arch!("ceiling_fan", hg::ceiling_fan, [Frame], [Frame => [0.45, 0.30, 0.18], Body => [0.90, 0.90, 0.88], Metal => [0.80, 0.80, 0.80], Light => [1.0, 0.96, 0.86]]),
+    arch!("banner", hg::banner, [Canvas], [Canvas => [0.58, 0.10, 0.12], Cushion => [0.86, 0.68, 0.26], Frame => DARK_WOOD, Metal => BRASS]),
+    arch!("picnic_table", pc::picnic_table, [Top, Seat, Frame], [Top => [0.62, 0.47, 0.32], Seat => [0.62, 0.47, 0.32], Frame => [0.55, 0.41, 0.27]]),
+    arch!("skeleton", sk::skeleton, [Body], [Body => [0.93, 0.90, 0.80], Metal => [0.30, 0.31, 0.33], Interior => BLACK]),
     arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
 ];
 

@@ -1,0 +1,176 @@
+//! Layouts of things that hang: from the ceiling (a chandelier, a pendant light, a flush
+//! ceiling light, a ceiling fan), their top face against the ceiling, and a cloth banner on a
+//! wall rod. The front faces +y, z up, the bottom face's centre at the origin.
+use super::archetypes::Builder;
+use super::materials::Role::*;
+use super::parts::{mat_mul, rot_x, rot_y, rot_z, IDENTITY};
+use std::f64::consts::TAU;
+
+/// A small round plate against the ceiling at the top (where a rod or cord is fixed).
+fn canopy(b: &mut Builder, r: f64) {
+    let h = b.h;
+    b.frustum(Metal, [0.0, 0.0, h - 0.03], 0.7 * r, 0.7 * r, 1.4, 0.03);
+}
+
+/// A chandelier: a rod from a ceiling plate down to a turned stem ending in a ball finial, a
+/// ring of curved arms round the stem, each carrying a candle sleeve with a lit bulb, and
+/// crystal drops hanging from the arms.
+pub fn chandelier(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    canopy(b, 0.16 * m);
+    let zs = 0.55 * h;
+    b.cylinder(Metal, [0.0, 0.0, zs], 0.012, h - zs);
+    // The stem: a vase between two knops and a ball finial under the arms.
+    b.ellipsoid(Metal, [0.0, 0.0, zs], [0.06 * m, 0.06 * m, 0.04 * h]);
+    b.frustum(
+        Metal,
+        [0.0, 0.0, 0.25 * h],
+        0.05 * m,
+        0.05 * m,
+        1.6,
+        0.3 * h,
+    );
+    b.ellipsoid(Metal, [0.0, 0.0, 0.2 * h], [0.16 * m, 0.16 * m, 0.06 * h]);
+    b.ellipsoid(Metal, [0.0, 0.0, 0.07 * h], [0.06 * m, 0.06 * m, 0.07 * h]);
+    let n = 6;
+    let r = 0.78 * m;
+    let zc = 0.3 * h;
+    for k in 0..n {
+        let a = k as f64 * TAU / n as f64;
+        let (c, s) = (a.cos(), a.sin());
+        let p = |rr: f64, z: f64| [rr * c, rr * s, z];
+        // An arm: out and down from the hub, then up to its cup.
+        b.polyline(
+            Metal,
+            &[
+                p(0.12 * m, 0.2 * h),
+                p(0.45 * m, 0.14 * h),
+                p(0.7 * m, 0.18 * h),
+                p(r, zc - 0.02),
+            ],
+            0.012,
+        );
+        b.frustum(Metal, p(r, zc - 0.03), 0.06 * m, 0.06 * m, 1.3, 0.03);
+        b.cylinder(Body, p(r, zc), 0.025, 0.12 * h);
+        b.ellipsoid(Light, p(r, zc + 0.12 * h + 0.03), [0.025, 0.025, 0.04]);
+        // A crystal drop under the arm's bend.
+        b.cylinder(Glass, p(0.58 * m, 0.08 * h), 0.003, 0.07 * h);
+        b.ellipsoid(Glass, p(0.58 * m, 0.07 * h), [0.018, 0.018, 0.03]);
+    }
+}
+
+/// A pendant light: a cord from a ceiling plate down to a cone shade, its glowing bulb showing
+/// under the rim.
+pub fn pendant_light(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    canopy(b, 0.35 * m);
+    let sh = (0.4 * h).min(1.1 * m);
+    b.cylinder(BlackKeys, [0.0, 0.0, sh], 0.006, h - sh);
+    b.cylinder(Metal, [0.0, 0.0, sh - 0.01], 0.15 * m, 0.05);
+    b.frustum(Shade, [0.0, 0.0, 0.02], m, m, 0.22, sh - 0.02);
+    b.cylinder(Light, [0.0, 0.0, 0.017], 0.9 * m, 0.004);
+    b.ellipsoid(Light, [0.0, 0.0, 0.03], [0.3 * m, 0.3 * m, 0.03]);
+}
+
+/// A flush ceiling light: a metal ring against the ceiling and a glowing opal dome under it.
+pub fn ceiling_light(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let ring = (0.2 * h).min(0.03);
+    b.frustum(Metal, [0.0, 0.0, h - ring], hw, hd, 1.0, ring);
+    let rz = h - ring;
+    let n = 12;
+    let mut profile: Vec<[f64; 2]> = (0..=n)
+        .map(|i| {
+            let phi = i as f64 / n as f64 * TAU / 4.0;
+            [0.94 * hw * phi.sin(), -rz * phi.cos()]
+        })
+        .collect();
+    profile.push([0.0, 0.0]);
+    b.revolved(Light, 0, [0.0, 0.0, rz], IDENTITY, hd / hw, profile);
+}
+
+/// A ceiling fan: a down rod from a ceiling plate to a motor housing, five pitched blades on
+/// arms round it, and a light bowl underneath.
+pub fn ceiling_fan(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    canopy(b, 0.12 * m);
+    let zm = (0.3 * h).max(0.2).min(h - 0.05);
+    b.cylinder(Metal, [0.0, 0.0, zm], 0.018, h - zm);
+    b.frustum(Body, [0.0, 0.0, zm - 0.06], 0.17 * m, 0.17 * m, 0.75, 0.12);
+    b.frustum(Body, [0.0, 0.0, zm - 0.1], 0.12 * m, 0.12 * m, 1.4, 0.04);
+    let blade_w = 0.2 * m;
+    let (r0, r1) = (0.22 * m, 0.98 * m);
+    let zb = zm - 0.03;
+    for k in 0..5 {
+        let a = k as f64 * TAU / 5.0;
+        let (c, s) = (a.cos(), a.sin());
+        let rot = mat_mul(&rot_z(a), &rot_x(0.2));
+        let mid = 0.5 * (r0 + r1);
+        b.rod(
+            Metal,
+            [0.1 * m * c, 0.1 * m * s, zb],
+            [(r0 + 0.05) * c, (r0 + 0.05) * s, zb],
+            0.012,
+        );
+        b.slab(
+            Frame,
+            [mid * c, mid * s, zb],
+            [0.5 * (r1 - r0), 0.5 * blade_w, 0.006],
+            rot,
+        );
+    }
+    // The light kit: a frosted bowl under the housing.
+    let lz = (zm - 0.14).max(0.03);
+    b.cylinder(Metal, [0.0, 0.0, lz], 0.06 * m, 0.04);
+    b.ellipsoid(Light, [0.0, 0.0, lz], [0.12 * m, 0.12 * m, lz.min(0.06)]);
+}
+
+/// A cloth banner hung against the wall: a rod with knobbed ends hung by a cord, the cloth
+/// falling from it to a pointed foot, a round emblem on its face. No frame.
+pub fn banner(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let y = -hd + 0.012;
+    let zr = h - 0.12 * h.min(1.0);
+    b.rod(Frame, [-hw, y, zr], [hw, y, zr], 0.012);
+    for sx in [-1.0, 1.0] {
+        b.ellipsoid(Metal, [sx * hw, y, zr], [0.022, 0.022, 0.022]);
+        b.rod(
+            BlackKeys,
+            [sx * 0.8 * hw, y - 0.004, zr],
+            [0.0, y - 0.004, h - 0.005],
+            0.003,
+        );
+    }
+    // The cloth: a straight drop, then a point as deep as half its width (a square turned 45°
+    // behind the straight part's foot) where the banner is tall enough for it.
+    let cw = 0.88 * hw;
+    let t = 0.004;
+    let pointed = cw < 0.3 * h;
+    let zf = if pointed { 0.02 + cw } else { 0.02 };
+    b.cuboid(Canvas, [-cw, y - t, zf], [cw, y + t, zr - 0.01]);
+    if pointed {
+        let s = cw / std::f64::consts::SQRT_2;
+        b.slab(Canvas, [0.0, y, zf], [s, t, s], rot_y(TAU / 8.0));
+    }
+    // Edging stripes down the sides and an emblem on the face.
+    for sx in [-1.0, 1.0] {
+        b.cuboid(
+            Cushion,
+            [sx * 0.86 * cw, y + t, zf],
+            [sx * 0.94 * cw, y + t + 0.002, zr - 0.01],
+        );
+    }
+    let er = (0.45 * cw).min(0.18 * (zr - zf));
+    let ez = zf + 0.6 * (zr - zf);
+    b.revolved(
+        Cushion,
+        0,
+        [0.0, y + t, ez],
+        rot_x(-TAU / 4.0),
+        1.0,
+        vec![[0.0, 0.0], [er, 0.0], [er, 0.003], [0.0, 0.003]],
+    );
+}
