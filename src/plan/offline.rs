@@ -22,6 +22,7 @@ mod outdoors;
 mod relations;
 mod roles;
 mod sizing;
+mod supports;
 use describe::describe;
 pub use describe::style_word;
 
@@ -180,6 +181,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     roles::mention_kinds(&mut d);
     sizing::mention_sizes(&mut d);
     counts::mention_counts(&mut d);
+    supports::plural_supports(&mut d);
     let people = counts::seats_for(&mut d);
     roles::take_away(&mut d);
     counts::companions(&mut d, people);

@@ -83,6 +83,14 @@ pub(super) fn object_spans(
         }) {
             continue;
         }
+        // "the bridge of a spaceship": the head noun of the scene's name, said of the place,
+        // is the scene, not an object in it
+        if scene.is_some_and(|(i, _, _)| {
+            kb.scenes[i].name.rsplit(' ').next() == Some(super::singular(m.as_str()).as_str())
+                && t[m.end()..].trim_start().starts_with("of ")
+        }) {
+            continue;
+        }
         let (cat, plural) = table[m.as_str()].clone();
         if let Some(last) = raw.last_mut() {
             if t[last.1..m.start()].trim().is_empty() && (last.2 == cat || !last.3) {

@@ -1,0 +1,46 @@
+//! Supports counted by what they hold: "ten computers on benches" (a plural support with no
+//! count) gets as many benches as ten computers need, each with a person's working width.
+use super::Draft;
+use crate::plan::gcp::classes::{Class, Placements};
+use crate::plan::spec::RelationKind;
+
+/// The width along a support's front that one thing placed on it takes when a person uses it
+/// there (a seat in front): about a person's elbow room at a work surface.
+const WORK_WIDTH: f64 = 0.7;
+
+/// Raises the count of every plural support the text gives no count ("on benches") to what the
+/// things placed on it need: its width holds `max(thing's width, WORK_WIDTH)` per thing.
+pub(super) fn plural_supports(d: &mut Draft) {
+    let table = Placements::builtin();
+    for (oi, m) in d.r.mentions.iter().enumerate() {
+        if !m.plural || m.count.is_some() || m.definite || m.reference || m.negated {
+            continue;
+        }
+        let sup = &d.cats[oi];
+        let Some(width) = d.kb.object(sup).map(|o| o.size[0]) else {
+            continue;
+        };
+        let mut held: Vec<&String> =
+            d.r.relations
+                .iter()
+                .filter(|&&(_, rel, o)| o == oi && rel == RelationKind::Over)
+                .map(|&(si, _, _)| &d.cats[si])
+                .filter(|c| matches!(table.class(c), Class::OnSurface(_)))
+                .collect();
+        held.sort();
+        held.dedup();
+        let mut need = 0u32;
+        for c in held {
+            let n = d.counts.get(c).copied().unwrap_or(0);
+            let w = d.kb.object(c).map_or(WORK_WIDTH, |o| o.size[0]);
+            let per = (width / w.max(WORK_WIDTH)).floor().max(1.0) as u32;
+            need += n.div_ceil(per);
+        }
+        if need > d.counts.get(sup).copied().unwrap_or(0) {
+            d.counts.insert(sup.clone(), need);
+            d.notes.push(format!(
+                "{need} {sup}: as many as the things placed on them need"
+            ));
+        }
+    }
+}
