@@ -224,3 +224,50 @@ fn a_generic_name_is_the_default_of_its_role_and_a_named_kind_replaces_it() {
     assert_eq!(number(&s, "refrigerator"), 0, "{:?}", s.objects.keys());
     assert_eq!(number(&s, "drinks fridge"), 2, "{:?}", s.objects);
 }
+
+/// A plural support with no count ("on benches", "on tables") is as many as the things placed on
+/// it need: each holds what fits along its width, at least a person's working width per thing.
+#[test]
+fn a_plural_support_without_a_count_holds_all_that_is_put_on_it() {
+    for (prompt, thing, support) in [
+        (
+            "an office with twelve monitors on desks",
+            "computer",
+            "desk",
+        ),
+        (
+            "a repair shop with ten laptops on workbenches",
+            "laptop",
+            "workbench",
+        ),
+        (
+            "a call centre with fourteen computers on tables",
+            "computer",
+            "table",
+        ),
+    ] {
+        let spec = plan(prompt);
+        let things = number(&spec, thing);
+        let (n, size) = spec
+            .objects
+            .iter()
+            .filter(|(c, _)| c.contains(support))
+            .map(|(_, o)| (o.number, o.size))
+            .max_by_key(|(n, _)| *n)
+            .unwrap_or_else(|| panic!("{prompt}: no {support} in {:?}", spec.objects.keys()));
+        let each = spec
+            .objects
+            .iter()
+            .find(|(c, _)| c.contains(thing))
+            .map(|(_, o)| o.size[0].max(0.7))
+            .unwrap_or(0.7);
+        let per = (size[0] / each).floor().max(1.0) as u32;
+        assert!(things >= 9, "{prompt}: {things} {thing}");
+        assert!(
+            n * per >= things,
+            "{prompt}: {n} {support} of {:.2} m hold {} of {things} {thing}",
+            size[0],
+            n * per
+        );
+    }
+}
