@@ -5,6 +5,7 @@ use super::spec::{
     SceneType,
 };
 
+pub mod ceiling;
 pub mod fronts;
 pub mod walk;
 
