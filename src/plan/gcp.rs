@@ -11,6 +11,7 @@ use rand::SeedableRng;
 
 mod above;
 mod attempt;
+mod ceiling;
 pub mod classes;
 mod clear;
 mod compose;
@@ -230,6 +231,14 @@ fn layout_in_pinned(
             hung.then_some(j)
         })
         .collect();
+    let ceiling: Vec<bool> = inst
+        .iter()
+        .map(|i| mounts.ceiling.contains(&i.id))
+        .collect();
+    let hang_over: Vec<Option<usize>> = inst
+        .iter()
+        .map(|i| index.get(mounts.hang_over.get(&i.id)?).copied())
+        .collect();
     // (the retry of a room the first search could not pack gives its fronts up)
     let fronts: Vec<Option<f64>> = inst
         .iter()
@@ -245,6 +254,8 @@ fn layout_in_pinned(
         faced,
         wall_hung,
         above,
+        ceiling,
+        hang_over,
         sightlines,
         bands: vec![],
         hung,

@@ -130,11 +130,14 @@ pub(super) fn attempt_layout(
     let n = prob.inst.len();
     let mut placed: Vec<Option<Pose>> = pinned.to_vec();
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
-    for i in order(prob, rng) {
+    // things hung from the ceiling last, where what stands below them puts them
+    let (mut seq, hung): (Vec<usize>, Vec<usize>) =
+        order(prob, rng).into_iter().partition(|&i| !prob.ceiling[i]);
+    seq.extend(hung);
+    for i in seq {
         if placed[i].is_some() {
             continue;
         }
-        let (group, cands) = prob.candidates(i, &placed);
         let boxes: Vec<Option<(Box2, [f64; 4])>> = placed
             .iter()
             .enumerate()
@@ -145,6 +148,14 @@ pub(super) fn attempt_layout(
                 })
             })
             .collect();
+        let hang = prob.ceiling_poses(i, &placed).into_iter().find(|p| {
+            prob.evaluate(i, p, &placed, &boxes, 0.0).0
+        });
+        if let Some(p) = hang {
+            placed[i] = Some(p);
+            continue;
+        }
+        let (group, cands) = prob.candidates(i, &placed);
         let mut best: Option<(f64, Pose, bool)> = None;
         let mut search = |poses: &[Pose], best: &mut Option<(f64, Pose, bool)>| {
             for p in poses {

@@ -194,6 +194,9 @@ pub struct Mounts {
     /// Instance id hung on a wall -> the thing with a floor footprint it hangs above (a shelf
     /// "on the wall above" the desk, or above the monitors on that desk).
     pub above: BTreeMap<String, String>,
+    /// Instance id hung from the ceiling -> the thing with a floor footprint it hangs over (a
+    /// chandelier "over the table", pendant lights "above the island").
+    pub hang_over: BTreeMap<String, String>,
 }
 
 /// Puts the placement classes into `spec`'s own terms: against_wall and on_wall things without
@@ -244,7 +247,11 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                     // outdoors there is no wall: it stands where it is put, at its height
                     mounts.wall.insert(id, h);
                 }
-                Class::Ceiling if indoor => mounts.ceiling.push(id),
+                Class::Ceiling if indoor => {
+                    // hung from the ceiling, it rests on nothing
+                    unstack.push(id.clone());
+                    mounts.ceiling.push(id);
+                }
                 Class::OnSurface(_) => {
                     let has_own = spec.relations.iter().any(|r| {
                         r.subject == id
@@ -291,9 +298,17 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         .filter(|r| unstack.contains(&r.subject) && r.relation == RelationKind::Over)
         .map(|r| (r.subject.clone(), r.object.clone()))
         .collect();
+    // "a table under the chandelier": the chandelier hangs over the table
+    let under: Vec<(String, String)> = spec
+        .relations
+        .iter()
+        .filter(|r| mounts.ceiling.contains(&r.object) && r.relation == RelationKind::Under)
+        .map(|r| (r.object.clone(), r.subject.clone()))
+        .collect();
     spec.relations.retain(|r| {
         !(unstack.contains(&r.subject)
             && matches!(r.relation, RelationKind::Over | RelationKind::Under))
+            && !(mounts.ceiling.contains(&r.object) && r.relation == RelationKind::Under)
     });
     // A desk, table or counter "facing the window" (a support: used from its front) is used
     // facing it: its back to the window, and the seats at it face the window.
@@ -319,9 +334,14 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
-    for (id, target) in over {
+    for (id, target) in over.into_iter().chain(under) {
         if let Some(below) = footprint_below(spec, &target) {
-            mounts.above.entry(id).or_insert(below);
+            let to = if mounts.ceiling.contains(&id) {
+                &mut mounts.hang_over
+            } else {
+                &mut mounts.above
+            };
+            to.entry(id).or_insert(below);
         }
     }
     give_up_middle(spec);

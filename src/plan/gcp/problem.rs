@@ -25,6 +25,10 @@ pub(super) struct Problem {
     pub(super) wall_hung: Vec<bool>,
     /// Per instance hung on a wall: the instance with a floor footprint it hangs above.
     pub(super) above: Vec<Option<usize>>,
+    /// Per instance: hung from the ceiling.
+    pub(super) ceiling: Vec<bool>,
+    /// Per instance hung from the ceiling: the instance with a floor footprint it hangs over.
+    pub(super) hang_over: Vec<Option<usize>>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
     /// Front bands of the blocks of rows of this attempt (the view from the rows to what they

@@ -83,9 +83,10 @@ pub(super) fn read_placements(r: &mut Reading) {
             Some(RelationKind::Opposite),
         ),
         (r"\b(?:behind|in back of)\b", Some(RelationKind::Behind)),
-        // "a painting above the piano": over it (a thing hung on the wall keeps its wall)
+        // "a painting above the piano": over it (a thing hung on the wall keeps its wall, one
+        // hung from the ceiling its ceiling: "a chandelier hanging over the table")
         (
-            r"\b(?:above|right above|just above)\b",
+            r"\b(?:(?:hanging|hung|suspended) )?(?:(?:right|just|directly) )?(?:above|over)\b",
             Some(RelationKind::Over),
         ),
     ];
@@ -143,6 +144,10 @@ pub(super) fn read_placements(r: &mut Reading) {
             if used.iter().any(|&(s, e)| m.start() < e && s < m.end()) {
                 continue;
             }
+            if m.as_str().ends_with("over") && counts_after(&t[m.end()..]) {
+                // "over 20 chairs", "over a dozen tables": more than, not above
+                continue;
+            }
             let Some(s) = subject_before(&r.mentions, m.start()) else {
                 continue;
             };
@@ -173,6 +178,16 @@ pub(super) fn read_placements(r: &mut Reading) {
                 }
             }
         }
+    }
+}
+
+/// Whether `rest` begins with a count ("20 chairs", "a dozen tables").
+fn counts_after(rest: &str) -> bool {
+    let mut w = rest.split_whitespace();
+    match w.next() {
+        Some("a" | "an") => matches!(w.next(), Some("dozen" | "hundred" | "couple" | "score")),
+        Some(x) => super::number(x).is_some() || x == "dozen",
+        None => false,
     }
 }
 
