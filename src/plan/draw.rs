@@ -1,5 +1,6 @@
 //! `layout.png`: a top-down drawing of a layout: the room outline, each footprint filled with
-//! an arrow for its facing, a numbered marker per object (moved off crowded spots with a leader
+//! an arrow for its facing (a thing hung from the ceiling as a dashed outline over what stands
+//! below), a numbered marker per object (moved off crowded spots with a leader
 //! line back to its object, so that no two markers overlap) and a legend beside the plan that
 //! names each number. North (+y) is up.
 use super::check::Box2;
@@ -8,6 +9,13 @@ use font8x8::UnicodeFonts;
 use image::{Rgb, RgbImage};
 
 const MARGIN: f64 = 40.0;
+/// Length of a dash (and of its gap) in the outline of a thing hung from the ceiling (m).
+const DASH: f64 = 0.08;
+
+/// Whether `o` hangs from the ceiling of a room `height` high (its top there, off the floor).
+fn hangs_from_ceiling(o: &super::spec::PlacedObject, height: f64) -> bool {
+    o.position[2] > 0.0 && (o.position[2] + o.size[2] - height).abs() <= 0.01
+}
 
 struct Canvas {
     img: RgbImage,
@@ -53,6 +61,17 @@ impl Canvas {
     /// The part of the pixel segment a-b that lies on the image (grown by `width`), so that a
     /// line's cost is bounded by the image's size, not by how far off it an end lies (an object
     /// moved by hand to x = 1e8). None when none of it does.
+    /// [`Canvas::line`] in dashes of [`DASH`] metres with gaps as long.
+    fn dashed(&mut self, a: [f64; 2], b: [f64; 2], c: Rgb<u8>, width: f64) {
+        let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let n = (len / DASH).ceil().max(1.0) as usize;
+        for k in (0..n).step_by(2) {
+            let (t0, t1) = (k as f64 / n as f64, ((k + 1) as f64 / n as f64).min(1.0));
+            let at = |t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+            self.line(at(t0), at(t1), c, width);
+        }
+    }
+
     fn clip(&self, a: [f64; 2], b: [f64; 2], width: f64) -> Option<([f64; 2], [f64; 2])> {
         let lo = -width - 1.0;
         let hi = [
@@ -298,6 +317,16 @@ pub fn draw_layout(l: &Layout) -> RgbImage {
     for &i in &order {
         let o = &l.objects[i];
         let b = Box2::of(o);
+        if hangs_from_ceiling(o, l.room.size[2]) {
+            // as on an architect's plan: a dashed outline over what stands below
+            let Rgb([r, g, bl]) = colour(&o.category);
+            let ink = Rgb([r / 2, g / 2, bl / 2]);
+            let c = b.corners();
+            for k in 0..4 {
+                cv.dashed(c[k], c[(k + 1) % 4], ink, 3.0);
+            }
+            continue;
+        }
         cv.fill_box(&b, colour(&o.category));
         let c = b.corners();
         let edge = if o.placed_by == PlacedBy::Fallback {
