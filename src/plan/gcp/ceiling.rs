@@ -8,9 +8,12 @@ use super::{Pose, Problem};
 use crate::plan::check::ceiling::CEILING_WALL_GAP;
 use crate::plan::spec::{Anchor, RelationKind};
 
-/// Least free length a hung thing keeps on each side along a row over a piece (m): pendants
-/// over an island are not hung shade to shade.
+/// Free length (m) between neighbours in a row over a piece that makes several lights no one
+/// placed hang there: pendants over an island are not hung shade to shade.
 const ROW_GAP: f64 = 0.3;
+/// Least free length (m) between neighbours in a row said to hang over a piece (four pendants
+/// over a short island hang closer rather than past its ends).
+const ROW_GAP_ASKED: f64 = 0.05;
 /// Steps (m) of the nudges tried around a hung thing's own spot when something tall stands
 /// there.
 const NUDGES: [f64; 3] = [0.15, 0.3, 0.5];
@@ -69,12 +72,13 @@ impl Problem {
     }
 
     /// Spots of `n` things of width `w` in a row along the long side of placed `j`'s
-    /// footprint, centred over it: evenly over its length, at least `w` + [`ROW_GAP`] apart.
+    /// footprint, centred over it: evenly over its length, at least `w` + [`ROW_GAP_ASKED`]
+    /// apart.
     fn row_over(&self, j: usize, pj: &Pose, n: usize, w: f64) -> Vec<Pose> {
         let b = self.boxed(j, pj);
         let long = if b.half[0] >= b.half[1] { 0 } else { 1 };
         let axis = if long == 0 { b.ex } else { b.ey };
-        let step = (2.0 * b.half[long] / n as f64).max(w + ROW_GAP);
+        let step = (2.0 * b.half[long] / n as f64).max(w + ROW_GAP_ASKED);
         (0..n)
             .map(|k| {
                 let t = (k as f64 - 0.5 * (n as f64 - 1.0)) * step;
@@ -136,7 +140,9 @@ impl Problem {
 
     /// The spots of ceiling thing `i`'s group over placed `j`, kept clear of the walls where
     /// they stay over it; `None` when one does not and `strict` (a piece by a wall that no one
-    /// asked to hang over: the room's middle or a grid is better).
+    /// asked to hang over: the room's middle or a grid is better). When `strict`, a spot kept
+    /// clear of the walls must also stay over the middle half of the piece's depth (a light
+    /// over a desk's front edge is no light over the desk).
     fn spots_over(&self, i: usize, j: usize, n: usize, strict: bool, placed: &[Option<Pose>]) -> Option<Vec<Pose>> {
         let pj = placed[j]?;
         let below = self.boxed(j, &pj);
@@ -144,7 +150,10 @@ impl Problem {
         let mut out = vec![];
         for spot in self.row_over(j, &pj, n, s[0].max(s[1])) {
             let clear = self.clear_of_walls(i, spot);
-            if below.contains(clear.c) {
+            let l = below.local(clear.c);
+            let short = if below.half[0] >= below.half[1] { 1 } else { 0 };
+            let centred = l[short].abs() <= 0.5 * below.half[short] + 1e-9;
+            if below.contains(clear.c) && (centred || !strict) {
                 out.push(clear);
             } else if strict {
                 return None;
