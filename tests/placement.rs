@@ -119,7 +119,12 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
             for s in &subjects {
                 out.push((
                     hangs_from_ceiling(&Box2::of(s), room),
-                    format!("{} top {:.2} wall gap {:.2}", s.id, top(s), wall_gap(s, room)),
+                    format!(
+                        "{} top {:.2} wall gap {:.2}",
+                        s.id,
+                        top(s),
+                        wall_gap(s, room)
+                    ),
                 ));
             }
             if subjects.is_empty() {

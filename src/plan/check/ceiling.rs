@@ -34,7 +34,10 @@ mod tests {
     #[test]
     fn a_light_at_the_ceiling_over_the_table_hangs_over_it() {
         let light = Box2::new([1.2, 0.6], 0.0, [0.8, 0.8], 2.05, 2.8);
-        assert!(hangs_over(&light, &table(), ROOM), "centred, at the ceiling");
+        assert!(
+            hangs_over(&light, &table(), ROOM),
+            "centred, at the ceiling"
+        );
         assert!(hangs_from_ceiling(&light, ROOM), "clear of the walls");
     }
 
@@ -50,7 +53,10 @@ mod tests {
     #[test]
     fn a_light_by_a_wall_or_below_the_ceiling_is_not_hung_from_it() {
         let by_wall = Box2::new([2.0, 0.0], 0.0, [0.8, 0.8], 2.05, 2.8);
-        assert!(!hangs_from_ceiling(&by_wall, ROOM), "0.1 m from the east wall");
+        assert!(
+            !hangs_from_ceiling(&by_wall, ROOM),
+            "0.1 m from the east wall"
+        );
         let low = Box2::new([0.0, 0.0], 0.0, [0.8, 0.8], 1.0, 1.75);
         assert!(!hangs_from_ceiling(&low, ROOM), "top below the ceiling");
     }

@@ -131,8 +131,9 @@ pub(super) fn attempt_layout(
     let mut placed: Vec<Option<Pose>> = pinned.to_vec();
     let mut by: Vec<PlacedBy> = vec![PlacedBy::Constraint; n];
     // things hung from the ceiling last, where what stands below them puts them
-    let (mut seq, hung): (Vec<usize>, Vec<usize>) =
-        order(prob, rng).into_iter().partition(|&i| !prob.ceiling[i]);
+    let (mut seq, hung): (Vec<usize>, Vec<usize>) = order(prob, rng)
+        .into_iter()
+        .partition(|&i| !prob.ceiling[i]);
     seq.extend(hung);
     for i in seq {
         if placed[i].is_some() {
@@ -148,9 +149,10 @@ pub(super) fn attempt_layout(
                 })
             })
             .collect();
-        let hang = prob.ceiling_poses(i, &placed).into_iter().find(|p| {
-            prob.evaluate(i, p, &placed, &boxes, 0.0).0
-        });
+        let hang = prob
+            .ceiling_poses(i, &placed)
+            .into_iter()
+            .find(|p| prob.evaluate(i, p, &placed, &boxes, 0.0).0);
         if let Some(p) = hang {
             placed[i] = Some(p);
             continue;

@@ -143,7 +143,14 @@ impl Problem {
     /// asked to hang over: the room's middle or a grid is better). When `strict`, a spot kept
     /// clear of the walls must also stay over the middle half of the piece's depth (a light
     /// over a desk's front edge is no light over the desk).
-    fn spots_over(&self, i: usize, j: usize, n: usize, strict: bool, placed: &[Option<Pose>]) -> Option<Vec<Pose>> {
+    fn spots_over(
+        &self,
+        i: usize,
+        j: usize,
+        n: usize,
+        strict: bool,
+        placed: &[Option<Pose>],
+    ) -> Option<Vec<Pose>> {
         let pj = placed[j]?;
         let below = self.boxed(j, &pj);
         let s = self.inst[i].size;

@@ -306,9 +306,10 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         .map(|r| (r.object.clone(), r.subject.clone()))
         .collect();
     spec.relations.retain(|r| {
-        !(unstack.contains(&r.subject)
-            && matches!(r.relation, RelationKind::Over | RelationKind::Under))
-            && !(mounts.ceiling.contains(&r.object) && r.relation == RelationKind::Under)
+        let stacked = unstack.contains(&r.subject)
+            && matches!(r.relation, RelationKind::Over | RelationKind::Under);
+        let under_hung = mounts.ceiling.contains(&r.object) && r.relation == RelationKind::Under;
+        !(stacked || under_hung)
     });
     // A desk, table or counter "facing the window" (a support: used from its front) is used
     // facing it: its back to the window, and the seats at it face the window.
