@@ -276,7 +276,18 @@ fn own_placement_prompts_are_placed_as_people_place_things() {
     // ("over", "hung"), so in a file of their own that its runner does not read
     let text = include_str!("data/ceiling_own.json");
     let ceiling: Vec<Value> = serde_json::from_str(text).expect("ceiling_own.json");
-    cases.extend(ceiling);
+    for c in ceiling {
+        // a prompt of both files is laid out once, judged by the rules of both
+        let same = cases.iter_mut().find(|k| k["prompt"] == c["prompt"]);
+        match (same, c["rules"].as_array()) {
+            (Some(k), Some(more)) => {
+                if let Some(rules) = k["rules"].as_array_mut() {
+                    rules.extend(more.iter().cloned());
+                }
+            }
+            _ => cases.push(c),
+        }
+    }
     let start = std::time::Instant::now();
     let (mut held, mut total, mut right, mut unreachable) = (0, 0, 0, 0);
     for c in &cases {
