@@ -1,6 +1,6 @@
 //! Placement leftovers of issues 21 and 22: a thing hung on the wall above a floor thing hangs
 //! over it, on the wall it stands against; consoles line the walls; candle stands flank the
-//! altar; pews and a cinema's seats stand in rows facing their front, with a walker's gap
+//! altar, more of them beside it; pews and a cinema's seats stand in rows facing their front, with a walker's gap
 //! between the rows; each table is the size of the seats said for it, with those seats at it.
 use dreamscene::plan::check::{validity_problems, walk, wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -120,6 +120,31 @@ fn pews_stand_in_rows_facing_the_altar_with_candle_stands_beside_it() {
     for s in l.objects.iter().filter(|o| o.category == "candle stand") {
         let g = dreamscene::plan::check::gap(&Box2::of(s), &altar);
         assert!(g <= 0.15, "{} {g:.2} m from the altar", s.id);
+    }
+}
+
+#[test]
+fn candle_stands_beyond_the_two_that_flank_the_altar_stand_beside_it_too() {
+    // not tuned on: more stands than the altar's two sides take
+    for (prompt, n) in [
+        (
+            "a cathedral with an altar, five candle stands and ten pews",
+            5,
+        ),
+        ("a small chapel with three candle stands by the altar", 3),
+    ] {
+        let (l, _) = lay(prompt, 2);
+        let altar = Box2::of(one(&l, "altar"));
+        let stands: Vec<&PlacedObject> = l
+            .objects
+            .iter()
+            .filter(|o| o.category == "candle stand")
+            .collect();
+        assert_eq!(stands.len(), n, "{prompt}");
+        for s in stands {
+            let g = dreamscene::plan::check::gap(&Box2::of(s), &altar);
+            assert!(g <= 0.5, "{prompt}: {} {g:.2} m from the altar", s.id);
+        }
     }
 }
 
