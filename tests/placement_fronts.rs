@@ -206,3 +206,22 @@ fn each_table_is_sized_for_the_seats_said_for_it_and_has_them() {
         assert!(left.is_empty(), "{prompt}: {left:?}");
     }
 }
+
+#[test]
+fn a_receptions_named_round_tables_keep_its_chairs() {
+    // not tuned on: named tables of another kind than the default round banquet tables
+    for prompt in [
+        "a ballroom with a top table and seven round tables",
+        "an event hall with five round tables",
+    ] {
+        let (l, spec) = lay(prompt, 0);
+        let chairs: Vec<&str> = spec
+            .relations
+            .iter()
+            .filter(|r| r.relation == RelationKind::Around && r.object.starts_with("round table"))
+            .map(|r| r.subject.as_str())
+            .collect();
+        assert!(chairs.len() >= 10, "{prompt}: {:?}", spec.relations);
+        assert!(l.unsatisfied.is_empty(), "{prompt}: {:?}", l.unsatisfied);
+    }
+}
