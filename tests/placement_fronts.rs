@@ -173,7 +173,7 @@ fn each_table_is_sized_for_the_seats_said_for_it_and_has_them() {
         ),
     ] {
         let (l, spec) = lay(prompt, 1);
-        let (cat, o) = spec
+        let (cat, _) = spec
             .objects
             .iter()
             .find(|(_, o)| o.sizes.len() == want.len())

@@ -108,6 +108,10 @@ fn generic_room(prompt: &str) -> SceneSpec {
     spec
 }
 
+/// A table category laid for different numbers: its seat category and, per instance in index
+/// order, its seats and size.
+type Laid = (String, Vec<(u32, [f64; 3])>);
+
 /// What the stages of [`plan_prompt`] build up.
 struct Draft<'a> {
     kb: &'a KnowledgeBase,
@@ -140,7 +144,7 @@ struct Draft<'a> {
     inferred: BTreeMap<String, String>,
     /// Tables laid for different numbers ("six tables for two and two tables for six"): the
     /// table category -> its seat category and, per instance in index order, its seats and size.
-    laid: BTreeMap<String, (String, Vec<(u32, [f64; 3])>)>,
+    laid: BTreeMap<String, Laid>,
 }
 
 /// Plans `prompt` offline, or says why it cannot.
