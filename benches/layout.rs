@@ -29,6 +29,7 @@ fn spec30() -> SceneSpec {
                 size,
                 description: format!("A DSLR photo of a {cat}"),
                 rows: 0,
+                sizes: vec![],
             },
         );
         for k in 1..=n {

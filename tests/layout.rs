@@ -233,6 +233,7 @@ fn random_specs_always_give_valid_layouts() {
                     ],
                     description: "A DSLR photo of a thing".into(),
                     rows: 0,
+                    sizes: vec![],
                 },
             );
         }

@@ -262,6 +262,11 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
                 out.push((false, "no anchor".into()));
             }
         }
+        "max_area" => {
+            let area = l.room.size[0] * l.room.size[1];
+            let most = num("m2", f64::INFINITY);
+            out.push((area <= most, format!("room {area:.1} m² (want <= {most})")));
+        }
         k => panic!("rule kind {k} is not judged here"),
     }
     out

@@ -1,7 +1,7 @@
 //! Placement leftovers of issues 21 and 22: a thing hung on the wall above a floor thing hangs
 //! over it, on the wall it stands against; consoles line the walls; candle stands flank the
-//! altar; pews and a cinema's seats stand in rows facing their front, with a walker's gap
-//! between the rows.
+//! altar, more of them beside it; pews and a cinema's seats stand in rows facing their front, with a walker's gap
+//! between the rows; each table is the size of the seats said for it, with those seats at it.
 use dreamscene::plan::check::{validity_problems, walk, wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
@@ -124,6 +124,31 @@ fn pews_stand_in_rows_facing_the_altar_with_candle_stands_beside_it() {
 }
 
 #[test]
+fn candle_stands_beyond_the_two_that_flank_the_altar_stand_beside_it_too() {
+    // not tuned on: more stands than the altar's two sides take
+    for (prompt, n) in [
+        (
+            "a cathedral with an altar, five candle stands and ten pews",
+            5,
+        ),
+        ("a small chapel with three candle stands by the altar", 3),
+    ] {
+        let (l, _) = lay(prompt, 2);
+        let altar = Box2::of(one(&l, "altar"));
+        let stands: Vec<&PlacedObject> = l
+            .objects
+            .iter()
+            .filter(|o| o.category == "candle stand")
+            .collect();
+        assert_eq!(stands.len(), n, "{prompt}");
+        for s in stands {
+            let g = dreamscene::plan::check::gap(&Box2::of(s), &altar);
+            assert!(g <= 0.5, "{prompt}: {} {g:.2} m from the altar", s.id);
+        }
+    }
+}
+
+#[test]
 fn rows_of_theatre_seats_leave_room_to_walk_to_every_seat() {
     let (l, _) = lay(
         "a small cinema with four rows of six seats facing the screen",
@@ -132,4 +157,71 @@ fn rows_of_theatre_seats_leave_room_to_walk_to_every_seat() {
     assert!(l.unsatisfied.is_empty(), "{:?}", l.unsatisfied);
     let stuck = walk::unreachable(&l);
     assert!(stuck.is_empty(), "out of reach: {stuck:?}");
+}
+
+#[test]
+fn each_table_is_sized_for_the_seats_said_for_it_and_has_them() {
+    // prompts not tuned on: tables for different numbers in one place
+    for (prompt, want) in [
+        (
+            "a tea room with three tables for two and two tables for four",
+            &[2, 2, 2, 4, 4][..],
+        ),
+        (
+            "a canteen with two tables for eight and four tables for two",
+            &[8, 8, 2, 2, 2, 2][..],
+        ),
+    ] {
+        let (l, spec) = lay(prompt, 1);
+        let (cat, _) = spec
+            .objects
+            .iter()
+            .find(|(_, o)| o.sizes.len() == want.len())
+            .unwrap_or_else(|| panic!("{prompt}: no tables sized one by one"));
+        for (k, &seats) in want.iter().enumerate() {
+            let id = format!("{cat}{}", k + 1);
+            let t = l.objects.iter().find(|p| p.id == id).unwrap();
+            let area = t.size[0] * t.size[1];
+            // kb/seating.txt: under 0.7 m² for two, over 1 m² for four and more
+            assert!(
+                (seats == 2) == (area < 0.7),
+                "{prompt}: {id} for {seats} is {:?}",
+                t.size
+            );
+            let at: Vec<&str> = spec
+                .relations
+                .iter()
+                .filter(|r| r.relation == RelationKind::Around && r.object == id)
+                .map(|r| r.subject.as_str())
+                .collect();
+            assert_eq!(at.len(), seats, "{prompt}: {id} seats {at:?}");
+            // and the layout puts them at it, beside its footprint
+            for s in at {
+                let c = l.objects.iter().find(|p| p.id == s).unwrap();
+                let g = dreamscene::plan::check::gap(&Box2::of(c), &Box2::of(t));
+                assert!(g < 0.3, "{prompt}: {s} is {g:.2} m from {id}");
+            }
+        }
+        let left = dreamscene::plan::check::relations_unsatisfied(&l.objects, &spec.relations);
+        assert!(left.is_empty(), "{prompt}: {left:?}");
+    }
+}
+
+#[test]
+fn a_receptions_named_round_tables_keep_its_chairs() {
+    // not tuned on: named tables of another kind than the default round banquet tables
+    for prompt in [
+        "a ballroom with a top table and seven round tables",
+        "an event hall with five round tables",
+    ] {
+        let (l, spec) = lay(prompt, 0);
+        let chairs: Vec<&str> = spec
+            .relations
+            .iter()
+            .filter(|r| r.relation == RelationKind::Around && r.object.starts_with("round table"))
+            .map(|r| r.subject.as_str())
+            .collect();
+        assert!(chairs.len() >= 10, "{prompt}: {:?}", spec.relations);
+        assert!(l.unsatisfied.is_empty(), "{prompt}: {:?}", l.unsatisfied);
+    }
 }

@@ -319,3 +319,27 @@ fn layout_labels_never_overlap() {
         }
     }
 }
+
+#[test]
+fn a_spec_may_give_each_instance_its_own_size_one_for_each() {
+    let text = |sizes: &str| {
+        format!(
+            r#"{{"scene_type":"indoor","scene_text":"t","objects":{{
+            "table":{{"number":2,"size":[1.8,0.9,0.75],"description":"d"{sizes}}}}}}}"#
+        )
+    };
+    // without `sizes` every instance has `size`, and none is written back
+    let plain = SceneSpec::parse(text("").as_bytes()).unwrap();
+    assert!(plain.instances().iter().all(|i| i.size == [1.8, 0.9, 0.75]));
+    assert!(!serde_json::to_string(&plain).unwrap().contains("sizes"));
+    let own =
+        SceneSpec::parse(text(r#","sizes":[[0.8,0.8,0.75],[1.8,0.9,0.75]]"#).as_bytes()).unwrap();
+    let sizes: Vec<[f64; 3]> = own.instances().iter().map(|i| i.size).collect();
+    assert_eq!(sizes, [[0.8, 0.8, 0.75], [1.8, 0.9, 0.75]]);
+    assert_eq!(own.size_of("table1"), Some([0.8, 0.8, 0.75]));
+    // one size for two tables, or a side of no length: one clear line
+    let e = SceneSpec::parse(text(r#","sizes":[[0.8,0.8,0.75]]"#).as_bytes()).unwrap_err();
+    assert!(e.contains("1 sizes for 2 instances"), "{e}");
+    let e = SceneSpec::parse(text(r#","sizes":[[0.8,0.0,0.75],[1,1,1]]"#).as_bytes()).unwrap_err();
+    assert!(e.contains("`table`: size") && !e.contains('\n'), "{e}");
+}

@@ -218,6 +218,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             size: [0.6, 0.5, 0.5],
             description: "A DSLR photo of a crate".into(),
             rows: 0,
+            sizes: vec![],
         },
     );
     objects.insert(
@@ -227,6 +228,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             size: [0.6, 0.6, 0.9],
             description: "A DSLR photo of a barrel".into(),
             rows: 0,
+            sizes: vec![],
         },
     );
     objects.insert(
@@ -236,6 +238,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             size: [0.9, 0.5, 0.55],
             description: "A DSLR photo of a chest".into(),
             rows: 0,
+            sizes: vec![],
         },
     );
     let mut spec = SceneSpec {

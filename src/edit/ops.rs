@@ -393,6 +393,7 @@ fn gcp_spec(
                 size,
                 description: id.clone(),
                 rows: 0,
+                sizes: vec![],
             },
         );
         if anchor != Anchor::Others {

@@ -247,8 +247,8 @@ pub fn apply_named(
             .iter()
             .take(if seats { present.len() } else { 1 })
             .flat_map(|c| {
-                let cap = capacity(rule, spec.objects[c].size);
-                (1..=count(c)).map(move |m| (format!("{c}{m}"), cap))
+                let o = &spec.objects[c];
+                (1..=count(c)).map(move |m| (format!("{c}{m}"), capacity(rule, o.size_of(m))))
             })
             .collect();
         if objects.is_empty() {

@@ -282,6 +282,7 @@ fn parse_objects(
                 size,
                 description,
                 rows: 0,
+                sizes: vec![],
             },
         );
     }

@@ -13,6 +13,7 @@ pub mod lexicon;
 pub mod llm;
 pub mod offline;
 pub mod roles;
+pub mod seating;
 pub mod spec;
 pub mod understood;
 pub mod units;

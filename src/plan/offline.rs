@@ -85,6 +85,7 @@ fn generic_room(prompt: &str) -> SceneSpec {
                 size: o.size,
                 description: describe(o, &[], &[]),
                 rows: 0,
+                sizes: vec![],
             },
         );
         for k in 1..=n {
@@ -106,6 +107,10 @@ fn generic_room(prompt: &str) -> SceneSpec {
     ));
     spec
 }
+
+/// A table category laid for different numbers: its seat category and, per instance in index
+/// order, its seats and size.
+type Laid = (String, Vec<(u32, [f64; 3])>);
 
 /// What the stages of [`plan_prompt`] build up.
 struct Draft<'a> {
@@ -137,6 +142,9 @@ struct Draft<'a> {
     explicit: BTreeMap<String, u32>,
     /// Counts that a phrase implies rather than names: category -> the phrase.
     inferred: BTreeMap<String, String>,
+    /// Tables laid for different numbers ("six tables for two and two tables for six"): the
+    /// table category -> its seat category and, per instance in index order, its seats and size.
+    laid: BTreeMap<String, Laid>,
 }
 
 /// Plans `prompt` offline, or says why it cannot.
@@ -176,6 +184,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         unknown: BTreeMap::new(),
         explicit: BTreeMap::new(),
         inferred: BTreeMap::new(),
+        laid: BTreeMap::new(),
     };
     roles::scene_defaults(&mut d);
     roles::mention_kinds(&mut d);

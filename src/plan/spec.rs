@@ -139,6 +139,22 @@ pub struct ObjectSpec {
     /// turned the same way toward the front; 0 (the default, not written) when no rows are asked.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub rows: u32,
+    /// The size of each instance in index order, where instances differ ("six tables for two
+    /// and two tables for six"); `size` is then the largest. Empty (the default, not written)
+    /// when every instance has `size`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub sizes: Vec<[f64; 3]>,
+}
+
+impl ObjectSpec {
+    /// The size of instance `k` (1-based): its own where the spec gives one, else `size`.
+    pub fn size_of(&self, k: u32) -> [f64; 3] {
+        (k as usize)
+            .checked_sub(1)
+            .and_then(|i| self.sizes.get(i))
+            .copied()
+            .unwrap_or(self.size)
+    }
 }
 
 fn is_zero(v: &u32) -> bool {
@@ -294,12 +310,21 @@ impl SceneSpec {
                 out.push(Instance {
                     id,
                     category: cat.clone(),
-                    size: o.size,
+                    size: o.size_of(k),
                     anchor,
                 });
             }
         }
         out
+    }
+
+    /// The size of instance `id` (`table7`): its own where the spec gives one, else its
+    /// category's.
+    pub fn size_of(&self, id: &str) -> Option<[f64; 3]> {
+        let cat = id.trim_end_matches(|c: char| c.is_ascii_digit());
+        let o = self.objects.get(cat)?;
+        let k = id[cat.len()..].parse().unwrap_or(1);
+        Some(o.size_of(k))
     }
 
     /// Whether instances `a` and `b` are an OVER / UNDER pair (either way round): such pairs may
@@ -329,14 +354,15 @@ impl SceneSpec {
             if o.number == 0 || o.number > MAX_NUMBER {
                 return bad(format!("`{cat}`: number {} (1 to {MAX_NUMBER})", o.number));
             }
-            if !o
-                .size
-                .iter()
-                .all(|v| v.is_finite() && *v > 0.0 && *v <= 50.0)
-            {
+            let fine = |s: &[f64; 3]| s.iter().all(|v| v.is_finite() && *v > 0.0 && *v <= 50.0);
+            if let Some(s) = std::iter::once(&o.size).chain(&o.sizes).find(|s| !fine(s)) {
+                return bad(format!("`{cat}`: size {s:?} (each side in (0, 50] metres)"));
+            }
+            if !o.sizes.is_empty() && o.sizes.len() != o.number as usize {
                 return bad(format!(
-                    "`{cat}`: size {:?} (each side in (0, 50] metres)",
-                    o.size
+                    "`{cat}`: {} sizes for {} instances (one each, or none)",
+                    o.sizes.len(),
+                    o.number
                 ));
             }
         }

@@ -435,7 +435,7 @@ fn give_up_middle(spec: &mut SceneSpec) {
 /// nightstand" said of one nightstand, four monitors said of one of two desks). When no
 /// instance has room they stay where they were put.
 fn spread_overflow(spec: &mut SceneSpec) {
-    let width = |id: &str| spec.objects.get(base(id)).map_or(0.0, |o| o.size[0]);
+    let width = |id: &str| spec.size_of(id).map_or(0.0, |s| s[0]);
     let mut used: BTreeMap<String, f64> = BTreeMap::new();
     let mut moves: Vec<(usize, String)> = vec![];
     for (k, r) in spec.relations.iter().enumerate() {

@@ -129,7 +129,7 @@ pub(super) fn float_seats(spec: &mut SceneSpec, room: [f64; 3]) {
         .iter()
         .flat_map(|(s, _)| s)
         .collect();
-    let depth = |spec: &SceneSpec, id: &str| spec.objects.get(base(id)).map_or(0.0, |o| o.size[1]);
+    let depth = |spec: &SceneSpec, id: &str| spec.size_of(id).map_or(0.0, |s| s[1]);
     let mut floated = vec![];
     for r in &spec.relations {
         if r.relation != RelationKind::Opposite {

@@ -5,7 +5,7 @@
 //! dance floor). Each table's seats are drawn up to its sides, the long sides first, spread
 //! evenly along each side and turned to it. A floor that does not fit is left to the search.
 use super::spacing::{PASSAGE, SEAT_GAP};
-use super::{yaw_facing, Pose, Problem};
+use super::{Pose, Problem};
 use crate::plan::check::{penetration, Box2};
 use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec};
 
@@ -43,29 +43,55 @@ pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
         if seats.is_empty() {
             continue;
         }
-        let deep = seats
+        let seat_sizes = || seats.iter().filter_map(|s| spec.objects.get(&base(s)));
+        let deep = seat_sizes().map(|s| s.size[1]).fold(0.0, f64::max);
+        let wide = seat_sizes().map(|s| s.size[0]).fold(0.0, f64::max);
+        // the tables of each size (tables laid for two and for six), with their seats' share
+        let mut groups: Vec<([f64; 3], usize)> = vec![];
+        for k in 1..=o.number {
+            let size = o.size_of(k);
+            match groups.iter_mut().find(|(s, _)| *s == size) {
+                Some(g) => g.1 += 1,
+                None => groups.push((size, 1)),
+            }
+        }
+        let pitches: Vec<([f64; 2], usize)> = groups
             .iter()
-            .filter_map(|s| spec.objects.get(&base(s)))
-            .map(|s| s.size[1])
-            .fold(0.0, f64::max);
-        let wide = seats
+            .filter_map(|&(size, m)| {
+                let at = |t: &str| {
+                    spec.relations
+                        .iter()
+                        .filter(|r| r.relation == RelationKind::Around && r.object == t)
+                        .count()
+                };
+                let per = (1..=o.number)
+                    .filter(|&k| o.size_of(k) == size)
+                    .map(|k| at(&format!("{cat}{k}")))
+                    .max()
+                    .unwrap_or(0)
+                    .max(if groups.len() == 1 {
+                        seats.len().div_ceil(n)
+                    } else {
+                        0
+                    });
+                let (count, _) = side_seats([size[0], size[1]], wide, per)?;
+                // a seat's depth beyond the sides that have seats: the x pair (2, 3), the y pair (0, 1)
+                let ring = [count[2] + count[3], count[0] + count[1]].map(|k| {
+                    if k > 0 {
+                        deep + SEAT_GAP
+                    } else {
+                        0.0
+                    }
+                });
+                Some(([0, 1].map(|k| size[k] + 2.0 * ring[k] + PASSAGE), m))
+            })
+            .collect();
+        let Some(&(pitch, _)) = pitches
             .iter()
-            .filter_map(|s| spec.objects.get(&base(s)))
-            .map(|s| s.size[0])
-            .fold(0.0, f64::max);
-        let Some((count, _)) = side_seats([o.size[0], o.size[1]], wide, seats.len().div_ceil(n))
+            .max_by(|a, b| (a.0[0] * a.0[1]).total_cmp(&(b.0[0] * b.0[1])))
         else {
             continue;
         };
-        // a seat's depth beyond the sides that have seats: the x pair (2, 3), the y pair (0, 1)
-        let ring = [count[2] + count[3], count[0] + count[1]].map(|k| {
-            if k > 0 {
-                deep + SEAT_GAP
-            } else {
-                0.0
-            }
-        });
-        let pitch = [0, 1].map(|k| o.size[k] + 2.0 * ring[k] + PASSAGE);
         // cells a lone CENTER thing (a dance floor) and its passage take
         let middle: usize = spec
             .objects
@@ -83,7 +109,14 @@ pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
                     .product::<usize>()
             })
             .sum();
-        let cells = n + middle;
+        // the tables of every size in the largest one's cells, as many of those as their
+        // floor fills
+        let area: f64 = pitches
+            .iter()
+            .map(|(p, m)| p[0] * p[1] * *m as f64)
+            .sum::<f64>()
+            + middle as f64 * pitch[0] * pitch[1];
+        let cells = (area / (pitch[0] * pitch[1])).ceil().max(1.0) as usize;
         let nx = (cells as f64).sqrt().ceil() as usize;
         let ny = cells.div_ceil(nx);
         let band = 2.0 * WALL_BANDS[1] - PASSAGE;
@@ -173,16 +206,32 @@ impl Problem {
             if tables.len() != n || !tables.iter().all(|&t| self.free_table(t, placed)) {
                 continue;
             }
-            let Some(seatings) = tables
-                .iter()
-                .map(|&t| self.seating(t))
-                .collect::<Option<Vec<Seating>>>()
-            else {
-                continue;
-            };
-            if let Some(poses) = self.floor_poses(&tables, &seatings, placed) {
-                for (i, p) in poses {
-                    placed[i] = Some(p);
+            // tables of one size make one lattice (tables laid for two, tables for six), the
+            // largest first, nearest the middle
+            let mut sizes: Vec<[f64; 3]> = vec![];
+            for &t in &tables {
+                if !sizes.contains(&self.inst[t].size) {
+                    sizes.push(self.inst[t].size);
+                }
+            }
+            sizes.sort_by(|a, b| (b[0] * b[1]).total_cmp(&(a[0] * a[1])));
+            for size in sizes {
+                let alike: Vec<usize> = tables
+                    .iter()
+                    .copied()
+                    .filter(|&t| self.inst[t].size == size)
+                    .collect();
+                let Some(seatings) = alike
+                    .iter()
+                    .map(|&t| self.seating(t))
+                    .collect::<Option<Vec<Seating>>>()
+                else {
+                    continue;
+                };
+                if let Some(poses) = self.floor_poses(&alike, &seatings, placed) {
+                    for (i, p) in poses {
+                        placed[i] = Some(p);
+                    }
                 }
             }
         }
@@ -345,9 +394,15 @@ impl Problem {
                     b.c[0] + lx * b.ex[0] + ly * b.ey[0],
                     b.c[1] + lx * b.ex[1] + ly * b.ey[1],
                 ];
-                let yaw = yaw_facing([b.c[0] - c[0], b.c[1] - c[1]]);
-                // square to the side, not to the centre
-                let yaw = p.yaw + 90.0 * ((yaw - p.yaw) / 90.0).round();
+                // square to its side, facing across it (a seat near a long side's end
+                // faces that side, not the table's nearest end)
+                let yaw = p.yaw
+                    + match side {
+                        0 => 180.0,
+                        1 => 0.0,
+                        2 => 90.0,
+                        _ => -90.0,
+                    };
                 (i, Pose { c, yaw, z: 0.0 })
             })
             .collect()

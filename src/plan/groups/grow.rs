@@ -30,7 +30,8 @@ pub(super) fn grow_hosts(spec: &mut SceneSpec) {
         }
         let share = seats.div_ceil(hosts);
         for c in &present {
-            let Some(o) = spec.objects.get_mut(c) else {
+            // tables laid each for its own seats keep their sizes
+            let Some(o) = spec.objects.get_mut(c).filter(|o| o.sizes.is_empty()) else {
                 continue;
             };
             let [w, d, _] = o.size;

@@ -28,6 +28,7 @@ pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<St
                     size: [1.0, 1.0, 1.0],
                     description: String::new(),
                     rows: 0,
+                    sizes: vec![],
                 },
             );
         }
@@ -157,6 +158,7 @@ fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
                 size,
                 description: String::new(),
                 rows: 0,
+                sizes: vec![],
             };
             (c.to_string(), o)
         })
@@ -165,26 +167,25 @@ fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
     crate::plan::groups::seats_per(&spec, seat, table)
 }
 
-/// The size of a `table` that seats `per` (its height kept), when its usual size seats more:
-/// the footprint of the smallest kind of table people sit at (`kb/objects.txt`, the same head
-/// noun) that seats them.
-fn table_seating(kb: &KnowledgeBase, table: &str, seat: &str, per: u32) -> Option<[f64; 3]> {
-    let own = kb.object(table)?.size;
-    let now = capacity(table, seat, own)?;
-    let head = table.rsplit(' ').next()?;
-    let (cap, size) = kb
-        .objects
-        .iter()
-        .filter(|o| o.category.rsplit(' ').next() == Some(head))
-        .filter(|o| seat_for(&o.category, &BTreeMap::new()).is_some())
-        .filter_map(|o| Some((capacity(table, seat, o.size)?, o.size)))
-        .filter(|(c, _)| *c >= per)
-        .min_by(|a, b| {
-            (a.0, a.1[0] * a.1[1])
-                .partial_cmp(&(b.0, b.1[0] * b.1[1]))
-                .unwrap_or(std::cmp::Ordering::Equal)
-        })?;
-    (cap < now).then_some([size[0], size[1], own[2]])
+/// The footprint of a `table` laid for `per` people (kb/seating.txt), its height kept: a round
+/// one when its kind or the text says so. Only plain dining-like tables (a picnic table's size
+/// holds its benches, a pool table seats nobody).
+fn table_laid(
+    kb: &KnowledgeBase,
+    table: &str,
+    adjectives: &BTreeMap<String, Vec<String>>,
+    per: u32,
+) -> Option<[f64; 3]> {
+    let o = kb.object(table)?;
+    let round = o.archetype == "round_table"
+        || adjectives
+            .get(table)
+            .is_some_and(|a| a.iter().any(|w| w == "round"));
+    if !(o.archetype == "table" || round) {
+        return None;
+    }
+    let [w, d] = crate::plan::seating::table_for(per.max(1), round)?;
+    Some([w, d, o.size[2]])
 }
 
 /// "A table for six": that many seats at each of those tables. The people the text seats
@@ -200,6 +201,8 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         named,
         explicit,
         inferred,
+        adjectives,
+        laid,
         ..
     } = d;
     let mut seated = false;
@@ -233,12 +236,32 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         } else {
             per * tables.max(1)
         };
-        // "tables for two": a table the size of one that seats two, not a long one (the
-        // groups' capacity of larger tables counts every side, too many for sizing by)
+        // "tables for two": a table the size of one laid for two, not a long one; "six tables
+        // for two and two tables for six": each table the size of its own seats, and the
+        // seats said for it at it
         let most = same.iter().map(|&(_, p)| p).max().unwrap_or(per);
-        if !sizes.contains_key(table) && most <= 2 {
-            if let Some(size) = table_seating(kb, table, &seat, most) {
-                sizes.insert(table.clone(), size);
+        let each: Vec<u32> = same
+            .iter()
+            .flat_map(|&(tj, p)| std::iter::repeat_n(p, r.mentions[tj].count.unwrap_or(1) as usize))
+            .collect();
+        let mixed = each.iter().any(|&p| p != most) && each.len() == tables as usize;
+        if !sizes.contains_key(table) {
+            let laid_for = |p: u32| table_laid(kb, table, adjectives, p);
+            let list: Option<Vec<(u32, [f64; 3])>> =
+                each.iter().map(|&p| Some((p, laid_for(p)?))).collect();
+            match (mixed, list, laid_for(most), kb.object(table)) {
+                (true, Some(list), Some(big), _) => {
+                    sizes.insert(table.clone(), big);
+                    laid.insert(table.clone(), (seat.clone(), list));
+                }
+                // a usual table that seats them keeps its size unless a smaller one is laid for them
+                (_, _, Some(size), Some(o))
+                    if size[0] * size[1] < o.size[0] * o.size[1]
+                        || capacity(table, &seat, o.size).is_some_and(|c| c < most) =>
+                {
+                    sizes.insert(table.clone(), size);
+                }
+                _ => {}
             }
         }
         let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
@@ -298,6 +321,7 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                         size,
                         description: String::new(),
                         rows: 0,
+                        sizes: vec![],
                     },
                 )
             })
@@ -316,6 +340,7 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                     size,
                     description: String::new(),
                     rows: 0,
+                    sizes: vec![],
                 };
                 (c.clone(), o)
             })

@@ -113,6 +113,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
         sizes,
         unknown,
         adjectives,
+        laid,
         ..
     } = d;
     let mut rows: BTreeMap<String, u32> = BTreeMap::new();
@@ -153,6 +154,12 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
                 size,
                 description,
                 rows: rows.get(c).copied().unwrap_or(0).min(*n),
+                // tables laid for different numbers: each its own size
+                sizes: laid
+                    .get(c)
+                    .filter(|(_, each)| each.len() == *n as usize)
+                    .map(|(_, each)| each.iter().map(|&(_, s)| s).collect())
+                    .unwrap_or_default(),
             },
         );
     }

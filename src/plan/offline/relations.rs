@@ -155,6 +155,29 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             push(spec, format!("{sc}{k}"), rel, format!("{oc}{ko}"), true);
         }
     }
+    // tables laid for different numbers: the seats said for each table at it
+    for (table, (seat, each)) in &d.laid {
+        let (Some(&nt), Some(&ns)) = (counts.get(table), counts.get(seat)) else {
+            continue;
+        };
+        let rel = crate::plan::groups::relation_between(seat, table)
+            .unwrap_or(crate::plan::spec::RelationKind::Around);
+        let mut k = 0;
+        for (t, &(per, _)) in each.iter().enumerate().take(nt as usize) {
+            for _ in 0..per {
+                if k < ns {
+                    k += 1;
+                    push(
+                        spec,
+                        format!("{seat}{k}"),
+                        rel,
+                        format!("{table}{}", t + 1),
+                        true,
+                    );
+                }
+            }
+        }
+    }
     if let Some(sc) = scene {
         // a scene's relation of a default that a named thing of its role replaced holds for
         // that thing (the teacher's desk before the whiteboard that replaced the blackboard)
