@@ -10,6 +10,7 @@
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground, and far (in place or direction)
 //! from the views already taken. Host-only.
+use super::faults::footprint_distance;
 use super::views::FLAT;
 use super::views::{
     facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
@@ -213,16 +214,6 @@ fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
 fn back_penalty(stats: &ViewStats) -> f64 {
     let back = (-stats.facing).max(0.0);
     back * (2.0 + BACK_PER_SHARE * stats.largest)
-}
-
-/// Horizontal distance from `p` to an object's footprint (0 inside).
-pub(crate) fn footprint_distance(o: &ObjectBox, p: [f64; 3]) -> f64 {
-    let (s, c) = o.yaw.to_radians().sin_cos();
-    let (dx, dy) = (p[0] - o.position[0], p[1] - o.position[1]);
-    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
-    let ox = (lx.abs() - 0.5 * o.size[0]).max(0.0);
-    let oy = (ly.abs() - 0.5 * o.size[1]).max(0.0);
-    ox.hypot(oy)
 }
 
 /// An object's kind from its id: the id without its trailing count (`tree3` → `tree`).
