@@ -129,7 +129,13 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
                 continue;
             }
         };
-        let l = layout(&spec, LayoutOptions::seeded(0))?;
+        let l = match layout(&spec, LayoutOptions::seeded(0)) {
+            Ok(l) => l,
+            Err(e) => {
+                println!("skipped: {e}");
+                continue;
+            }
+        };
         let scene = SceneBox::from_layout(&l);
         let cams = render_views(&scene, views, 512, 512);
         let old = explore_path(&scene, views, 512, 512);
