@@ -466,6 +466,7 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 - 3.0 * (c.stats.largest - 0.2).max(0.0)
                 - 6.0 * (fg - c.near).max(0.0)
                 - 3.0 * same as f64
+                - if same >= 2 { POOR } else { 0.0 }
                 - 1.0 * alike as f64
                 - back_penalty(&c.stats)
                 - 16.0 * (c.occluder - 0.05).max(0.0)

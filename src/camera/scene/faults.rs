@@ -12,8 +12,8 @@ use crate::camera::Camera;
 pub const BARE_COVER: f64 = 0.25;
 /// A blocker: an object covering more than [`BLOCKER_SHARE`] of the frame whose footprint stands
 /// nearer the camera than [`BLOCKER_PER_SIZE`] of its largest side (so it spans a wide angle),
-/// and within [`BLOCKER_NEAR`] metres, with something in frame at least [`BLOCKER_BEHIND`]
-/// metres further that it stands before (a lampshade before the sofa).
+/// and within [`BLOCKER_NEAR`] metres, with the room at least [`BLOCKER_BEHIND`] metres further
+/// behind it (a lampshade before the sofa).
 pub const BLOCKER_SHARE: f64 = 0.05;
 pub const BLOCKER_PER_SIZE: f64 = 0.9;
 pub const BLOCKER_NEAR: f64 = 1.5;
@@ -64,20 +64,37 @@ pub fn is_panel(o: &ObjectBox) -> bool {
 }
 
 /// The share of the frame of the panels that `cam` sees edge-on (beyond [`GRAZING_DEG`] from
-/// their face, or from behind), given each object's share of the frame.
+/// their face or back), given each object's share of the frame.
 pub fn grazing_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
     let cos = GRAZING_DEG.to_radians().cos();
     scene
         .objects
         .iter()
         .zip(shares)
-        .filter(|(o, s)| **s > GRAZING_SHARE && is_panel(o) && facing(o, cam.position) < cos)
+        .filter(|(o, s)| **s > GRAZING_SHARE && is_panel(o) && facing(o, cam.position).abs() < cos)
         .map(|(_, s)| *s)
         .sum()
 }
 
+/// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
+fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
+    let [hx, hy] = scene.half();
+    let (fx, fy) = (cam.rotation[0][2], cam.rotation[1][2]);
+    let n = fx.hypot(fy).max(1e-9);
+    let reach = |p: f64, f: f64, h: f64| {
+        if f.abs() < 1e-9 {
+            f64::INFINITY
+        } else {
+            ((f.signum() * h - p) / f).max(0.0)
+        }
+    };
+    let (dx, dy) = (fx / n, fy / n);
+    reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
+}
+
 /// The largest share of the frame a blocker covers (see [`BLOCKER_SHARE`]), 0 without one,
-/// given each object's share of the frame.
+/// given each object's share of the frame. What it stands before is the room: another object
+/// in frame, or the wall or ground edge the view looks at.
 pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
     let dists: Vec<f64> = scene
         .objects
@@ -85,14 +102,18 @@ pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
         .map(|o| footprint_distance(o, cam.position))
         .collect();
     let seen = |k: usize| shares[k] > 0.02 && scene.objects[k].size[2] > FLAT;
+    let far = (0..scene.objects.len())
+        .filter(|&j| seen(j))
+        .map(|j| dists[j])
+        .fold(depth(scene, cam), f64::max);
     (0..scene.objects.len())
         .filter(|&k| {
             let o = &scene.objects[k];
             let near = BLOCKER_NEAR.min(BLOCKER_PER_SIZE * o.size[0].max(o.size[1]).max(o.size[2]));
-            seen(k) && shares[k] > BLOCKER_SHARE && dists[k] < near
-        })
-        .filter(|&k| {
-            (0..scene.objects.len()).any(|j| seen(j) && dists[j] > dists[k] + BLOCKER_BEHIND)
+            seen(k)
+                && shares[k] > BLOCKER_SHARE
+                && dists[k] < near
+                && far > dists[k] + BLOCKER_BEHIND
         })
         .map(|k| shares[k])
         .fold(0.0, f64::max)
