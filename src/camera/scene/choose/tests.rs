@@ -208,7 +208,7 @@ fn small_rooms_get_few_poor_views() {
     // Small rooms with few pieces, written before the fault rules and never looked at while
     // tuning them: a person calls a view poor when it is mostly bare wall or floor, has a blocker
     // at the lens, sees a mirror or painting edge-on or copies an earlier view. Before the rules
-    // 10 of these 40 views were clean and 19 bare; the last views must not be the poor ones.
+    // 8 of these 40 views were clean and 19 bare; the last views must not be the poor ones.
     let prompts = [
         "a powder room with a toilet, a sink, a mirror and a towel rack",
         "a sewing room with a sewing machine, a chair, a shelf and a mirror",
