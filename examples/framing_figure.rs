@@ -4,16 +4,48 @@
 //! - subject repeats: the most views one object is the subject of (fills the most of the frame);
 //! - back views: views that see their subject from behind (facing cosine < −0.5);
 //! - foreground views: views with an object covering part of the frame within 1.2 m;
-//! - objects in view, on average.
+//! - objects in view, on average;
+//! - what a person calls poor ([`view_faults`]): views of mostly bare wall or floor, with a
+//!   blocker close to the lens, with a mirror, painting, TV or whiteboard seen edge-on, and near
+//!   copies of an earlier view; "clean" views have none of these.
 //!
 //! Also compares the chosen views (`render_views`, what `generate` writes) with the exploring path.
 //!
-//! `cargo run --release --example framing_figure [CORPUS.json|"PROMPT;PROMPT…"] [N] [VIEWS]`
-//! (defaults: /work/shared/prompts/fidelity_dev.json, 30 prompts, 8 views of 512²).
-use dreamscene::camera::scene::{explore_path, frame_share, render_views, view_stats, SceneBox};
+//! `cargo run --release --example framing_figure [CORPUS.json|"PROMPT;PROMPT…"|small] [N] [VIEWS]`
+//! (defaults: /work/shared/prompts/fidelity_dev.json, 30 prompts, 8 views of 512²; then the
+//! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
+use dreamscene::camera::scene::{
+    alike, blocker_share, explore_path, frame_share, grazing_share, render_views, view_faults,
+    view_stats, SceneBox,
+};
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
+
+/// Small rooms with few objects, where the last views of a greedy pick run short of good
+/// pictures (written before the pick was tuned on them).
+const SMALL_ROOMS: &[&str] = &[
+    "a home gym with a treadmill, a dumbbell rack, yoga mats and a wall mirror",
+    "a small bathroom with a bathtub, a toilet, a sink and a mirror",
+    "a box room office with a desk, an office chair and a bookcase",
+    "a walk-in closet with a wardrobe, a dresser, a mirror and an ottoman",
+    "a kids' bedroom with a bunk bed, a toy chest, a small desk and a rug",
+    "a laundry room with a washing machine, a dryer, a sink and a shelf",
+    "a narrow hallway with a coat stand, a shoe rack, a mirror and a console table",
+    "a galley kitchen with a fridge, a stove, a sink and a dishwasher",
+    "a studio flat with a bed, a sofa, a small table, two chairs and a TV",
+    "a dining room for eight",
+    "a cozy living room",
+    "a small bedroom with a single bed, a wardrobe and a desk",
+    "a utility room with a boiler, a washing machine and a shelf",
+    "a tiny study with a desk, a chair, a lamp and a painting",
+    "a nursery with a crib, a changing table, a rocking chair and a rug",
+    "a small bathroom with a shower, a toilet, a sink and a towel rack",
+    "a pantry with shelves and a freezer",
+    "an entryway with a bench and a mirror",
+    "a small bedroom with a double bed, two nightstands, a dresser and a mirror",
+    "a craft room with a table, a chair, a shelf and a pegboard",
+];
 
 /// Index of the (non-flat) object filling most of the frame, and the cosine between its facing
 /// and the direction from it to the camera.
@@ -56,25 +88,40 @@ fn nearest(scene: &SceneBox, cam: &Camera) -> f64 {
 
 fn main() -> anyhow::Result<()> {
     let args: Vec<String> = std::env::args().collect();
-    let corpus = args
-        .get(1)
-        .cloned()
-        .unwrap_or_else(|| "/work/shared/prompts/fidelity_dev.json".into());
     let n: usize = args.get(2).map_or(Ok(30), |s| s.parse())?;
     let views: usize = args.get(3).map_or(Ok(8), |s| s.parse())?;
+    let small: Vec<String> = SMALL_ROOMS.iter().map(|s| s.to_string()).collect();
+    let corpus = match args.get(1).map(String::as_str) {
+        Some("small") => return figure("small rooms", &small, views),
+        Some(c) => c.to_string(),
+        None => "/work/shared/prompts/fidelity_dev.json".into(),
+    };
     let prompts: Vec<String> = if corpus.ends_with(".json") {
         let text = std::fs::read_to_string(&corpus)?;
         let items: Vec<serde_json::Value> = serde_json::from_str(&text)?;
         items
             .iter()
+            .take(n)
             .map(|i| i["prompt"].as_str().unwrap_or_default().to_string())
             .collect()
     } else {
         corpus.split(';').map(|s| s.trim().to_string()).collect()
     };
+    figure(&corpus, &prompts, views)?;
+    if args.len() < 2 {
+        figure("small rooms", &small, views)?;
+    }
+    Ok(())
+}
+
+/// Prints the figures of the render views of `prompts`.
+fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
+    println!("== {name}");
+    let verbose = std::env::var("DREAMSCENE_VIEWS").is_ok_and(|v| v == "1");
     let (mut good, mut good_old, mut total) = (0usize, 0usize, 0usize);
     let (mut repeats, mut back, mut fore, mut shown) = (0usize, 0usize, 0usize, 0usize);
-    for prompt in prompts.iter().take(n) {
+    let [mut bare, mut blocker, mut grazing, mut copy, mut clean] = [0usize; 5];
+    for prompt in prompts {
         let spec = match plan_prompt(prompt) {
             Ok(p) => p.spec,
             Err(e) => {
@@ -82,11 +129,18 @@ fn main() -> anyhow::Result<()> {
                 continue;
             }
         };
-        let l = layout(&spec, LayoutOptions::seeded(0))?;
+        let l = match layout(&spec, LayoutOptions::seeded(0)) {
+            Ok(l) => l,
+            Err(e) => {
+                println!("skipped: {e}");
+                continue;
+            }
+        };
         let scene = SceneBox::from_layout(&l);
         let cams = render_views(&scene, views, 512, 512);
         let old = explore_path(&scene, views, 512, 512);
         let stats: Vec<_> = cams.iter().map(|c| view_stats(&scene, c)).collect();
+        let faults = view_faults(&scene, &cams);
         let g = stats.iter().filter(|s| s.framed_well()).count();
         let go = old
             .iter()
@@ -100,14 +154,58 @@ fn main() -> anyhow::Result<()> {
         let b = subjects.iter().filter(|s| s.1 < -0.5).count();
         let f = cams.iter().filter(|c| nearest(&scene, c) < 1.2).count();
         let iv: usize = stats.iter().map(|s| s.in_view).sum();
+        let count = |p: fn(&dreamscene::camera::scene::ViewFaults) -> bool| {
+            faults.iter().filter(|v| p(v)).count()
+        };
+        let fl = [
+            count(|v| v.bare),
+            count(|v| v.blocker),
+            count(|v| v.grazing),
+            count(|v| v.copy),
+            count(|v| v.clean()),
+        ];
         println!(
-            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | {} objects: {:.50}",
+            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} clean {} | {} objects: {:.50}",
             cams.len(),
             old.len(),
             iv as f64 / cams.len().max(1) as f64,
+            fl[0],
+            fl[1],
+            fl[2],
+            fl[3],
+            fl[4],
             l.objects.len(),
             prompt
         );
+        if verbose {
+            for (k, c) in cams.iter().enumerate() {
+                let shares: Vec<f64> = scene.objects.iter().map(|o| frame_share(c, o)).collect();
+                let s = &stats[k];
+                let copy = (0..k)
+                    .map(|j| {
+                        let other: Vec<f64> = scene
+                            .objects
+                            .iter()
+                            .map(|o| frame_share(&cams[j], o))
+                            .collect();
+                        alike((c, &shares), (&cams[j], &other))
+                    })
+                    .fold(0.0, f64::max);
+                println!(
+                    "  view {}: in view {} largest {:.2} covered {:.2} nearest {:.2} blocker {:.2} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
+                    k + 1,
+                    s.in_view,
+                    s.largest,
+                    s.covered,
+                    nearest(&scene, c),
+                    blocker_share(&scene, c, &shares),
+                    grazing_share(&scene, c, &shares),
+                    faults[k],
+                    c.position[0],
+                    c.position[1]
+                );
+            }
+        }
         good += g;
         good_old += go;
         total += cams.len();
@@ -115,6 +213,11 @@ fn main() -> anyhow::Result<()> {
         back += b;
         fore += f;
         shown += iv;
+        bare += fl[0];
+        blocker += fl[1];
+        grazing += fl[2];
+        copy += fl[3];
+        clean += fl[4];
     }
     println!(
         "framing: {good}/{total} views framed well ({:.1}%); the exploring path: {good_old}/{total} ({:.1}%)",
@@ -124,6 +227,10 @@ fn main() -> anyhow::Result<()> {
     println!(
         "summed subject repeats {repeats}, back views {back}, foreground views {fore}, objects in view {:.2} a view",
         shown as f64 / total.max(1) as f64
+    );
+    println!(
+        "poor views: bare {bare}, blocker {blocker}, edge-on {grazing}, near copy {copy}; clean {clean}/{total} ({:.1}%)",
+        100.0 * clean as f64 / total.max(1) as f64
     );
     Ok(())
 }

@@ -10,6 +10,7 @@
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground, and far (in place or direction)
 //! from the views already taken. Host-only.
+use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER, COPY};
 use super::views::FLAT;
 use super::views::{
     facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
@@ -38,6 +39,8 @@ const FOREGROUND_PER_SIDE: f64 = 0.4;
 /// is the scene cameras' [`SCENE_FOV_X`] (55°), and between the two it widens linearly.
 const WIDE_FOV_X: f64 = 1.35;
 const SMALL_ROOM: f64 = 3.0;
+/// The lens of the views from a room's corners to its centre (horizontal, radians; 90°).
+const FILL_FOV_X: f64 = std::f64::consts::FRAC_PI_2;
 const LARGE_ROOM: f64 = 5.0;
 
 /// Eye height of the render views: 1.5 m, lower in low rooms.
@@ -78,9 +81,13 @@ fn volume(o: &ObjectBox) -> f64 {
     o.size[0] * o.size[1] * o.size[2]
 }
 
-/// A view whose objects cover less of the frame than this is mostly bare wall, floor or
-/// ground, and loses score steeply.
-const BARE: f64 = 0.2;
+/// What a view loses for each fault a person sees in it (`faults.rs`): mostly bare, a blocker
+/// at the lens, a panel seen edge-on, a near copy of a view already taken. Views below
+/// [`BARE_COVER`] lose score steeply on top.
+const POOR: f64 = 6.0;
+/// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
+/// loses, so a poor view that frames well is still taken before one that does not.
+const GOOD: f64 = 24.0;
 /// Half the width of a person standing to take a picture (metres): a render view's spot on the
 /// floor is at least this far from every object standing on the floor, so no view is taken
 /// from on top of a kitchen island or a bed.
@@ -180,6 +187,10 @@ struct Candidate {
     occluder: f64,
     /// Horizontal distance from the camera to the spot it looks at (metres).
     reach: f64,
+    /// The share of the frame of a blocker close to the lens and of panels seen edge-on
+    /// ([`blocker_share`], [`grazing_share`]).
+    blocker: f64,
+    grazing: f64,
     /// The objects in frame (index, share of the frame it covers), in index order, and the sum
     /// of their shares.
     shares: Vec<(usize, f64)>,
@@ -213,16 +224,6 @@ fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
 fn back_penalty(stats: &ViewStats) -> f64 {
     let back = (-stats.facing).max(0.0);
     back * (2.0 + BACK_PER_SHARE * stats.largest)
-}
-
-/// Horizontal distance from `p` to an object's footprint (0 inside).
-pub(crate) fn footprint_distance(o: &ObjectBox, p: [f64; 3]) -> f64 {
-    let (s, c) = o.yaw.to_radians().sin_cos();
-    let (dx, dy) = (p[0] - o.position[0], p[1] - o.position[1]);
-    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
-    let ox = (lx.abs() - 0.5 * o.size[0]).max(0.0);
-    let oy = (ly.abs() - 0.5 * o.size[1]).max(0.0);
-    ox.hypot(oy)
 }
 
 /// An object's kind from its id: the id without its trailing count (`tree3` → `tree`).
@@ -269,9 +270,28 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
         }
     }
     let max_pitch = MAX_PITCH_DEG.to_radians().tan();
+    // Every position looks at every target; the room's corners also look at its centre through
+    // the widest lens: the views that fill in where a small room runs short of good ones.
+    let mut shots: Vec<([f64; 3], usize, f64)> = positions
+        .iter()
+        .flat_map(|p| (0..targets.len()).map(move |t| (*p, t, fov)))
+        .collect();
+    if scene.scene_type == SceneType::Indoor {
+        let [hx, hy] = scene.half();
+        for inset in [edge, edge + apart] {
+            for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                let p = [sx * (hx - inset), sy * (hy - inset), eye];
+                if valid_viewpoint(scene, p) && stands(scene, p) {
+                    shots.push((p, 0, fov.max(FILL_FOV_X)));
+                }
+            }
+        }
+    }
     let mut cands = vec![];
-    for p in &positions {
-        for (t, looked_at) in &targets {
+    for (p, ti, fov) in shots {
+        let (t, looked_at) = &targets[ti];
+        let p = &p;
+        {
             let d = (t[0] - p[0]).hypot(t[1] - p[1]);
             if d < 0.8 {
                 continue;
@@ -327,7 +347,13 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 }
             }
             let total = shares.iter().sum();
+            let (blocker, grazing) = (
+                blocker_share(scene, &cam, &shares),
+                grazing_share(scene, &cam, &shares),
+            );
             cands.push(Candidate {
+                blocker,
+                grazing,
                 shares: shares
                     .into_iter()
                     .enumerate()
@@ -400,10 +426,16 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                     let cos = c.dir[0] * o.dir[0] + c.dir[1] * o.dir[1];
                     // Close in place and direction, or showing the same things the same way:
                     // a near copy of a view already taken.
-                    let alike = ((content_alike(c, o) - 0.4) / 0.6).max(0.0);
-                    ((1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)).max(alike)
+                    let alike = content_alike(c, o);
+                    let copy = if alike > COPY { 1.0 } else { 0.0 };
+                    let alike = ((alike - 0.4) / 0.6).max(0.0);
+                    (
+                        ((1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)).max(alike),
+                        copy,
+                    )
                 })
-                .fold(0.0, f64::max);
+                .fold((0.0f64, 0.0f64), |a, b| (a.0.max(b.0), a.1.max(b.1)));
+            let (near, copy) = near;
             // The same subject again, or another of its kind: the views should show the place,
             // not one piece of it from every side.
             let (same, alike) = c.stats.subject.map_or((0, 0), |s| {
@@ -418,7 +450,15 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                     }
                 })
             });
-            let good = if c.stats.framed_well() { 10.0 } else { 0.0 };
+            let good = if c.stats.framed_well() { GOOD } else { 0.0 };
+            // What a person calls a poor picture (`faults.rs`) loses [`POOR`] a fault: a wide
+            // view of the room from its edge is better than any of them.
+            let flag = |b: bool| if b { 1.0 } else { 0.0 };
+            let (bare, blocker, grazing) = (
+                flag(c.stats.covered < BARE_COVER),
+                flag(c.blocker > 0.0),
+                flag(c.grazing > 0.0),
+            );
             let over = (c.stats.largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
                 - 6.0 * near
@@ -426,10 +466,13 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 - 3.0 * (c.stats.largest - 0.2).max(0.0)
                 - 6.0 * (fg - c.near).max(0.0)
                 - 3.0 * same as f64
+                - if same >= 2 { POOR } else { 0.0 }
                 - 1.0 * alike as f64
                 - back_penalty(&c.stats)
                 - 16.0 * (c.occluder - 0.05).max(0.0)
-                - 20.0 * (BARE - c.stats.covered).max(0.0)
+                - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
+                - POOR * (bare + copy + blocker + grazing)
+                - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
                 + if focal_taken < focal_target && looks_ahead(c) {
                     3.0

@@ -19,10 +19,14 @@
 //! offset scaled by 0.98 (1.02 when it fell inside the object it orbits), as the authors do, for
 //! at most [`MAX_TRIES`] tries; then the nearest valid point of a 0.2 m grid takes its place.
 mod choose;
+mod faults;
 mod paths;
 mod views;
 
 pub use choose::{eye_height, render_views, view_fov};
+pub use faults::{
+    alike, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER, COPY,
+};
 pub use paths::{explore_path, inference_circle, orbit};
 pub use views::{
     facing, frame_share, framing_score, in_frame, overview_camera, view_stats, ViewStats,

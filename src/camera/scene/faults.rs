@@ -1,0 +1,157 @@
+//! What a person calls a poor picture, measured from a view's camera and the layout boxes
+//! (occlusion ignored): mostly bare wall or floor, a blocker close to the lens, a flat piece (a
+//! mirror, painting, TV or whiteboard) seen edge-on, and a near copy of an earlier view. The
+//! render views are scored against these (`choose.rs`) and the framing figure counts them.
+//! Host-only.
+use super::views::{facing, frame_share, FLAT};
+use super::{ObjectBox, SceneBox};
+use crate::camera::Camera;
+
+/// A view whose objects' boxes cover less than this share of the frame is mostly bare wall or
+/// floor (box silhouettes overstate what chairs and tables hide, so this is generous).
+pub const BARE_COVER: f64 = 0.25;
+/// A blocker: an object covering more than [`BLOCKER_SHARE`] of the frame whose footprint stands
+/// nearer the camera than [`BLOCKER_PER_SIZE`] of its largest side (so it spans a wide angle),
+/// and within [`BLOCKER_NEAR`] metres, with the room at least [`BLOCKER_BEHIND`] metres further
+/// behind it (a lampshade before the sofa).
+pub const BLOCKER_SHARE: f64 = 0.05;
+pub const BLOCKER_PER_SIZE: f64 = 0.9;
+pub const BLOCKER_NEAR: f64 = 1.5;
+pub const BLOCKER_BEHIND: f64 = 1.0;
+/// A flat piece seen at more than this angle from its face (degrees) is seen edge-on.
+pub const GRAZING_DEG: f64 = 65.0;
+/// A flat piece: at most this deep (metres) and this share of its width and height.
+const FLAT_DEPTH: f64 = 0.15;
+const FLAT_RATIO: f64 = 0.25;
+/// A flat piece counts when it covers more than this share of the frame.
+const GRAZING_SHARE: f64 = 0.02;
+/// Two views are near copies when they show this much the same (see [`alike`]).
+pub const COPY: f64 = 0.6;
+
+/// The faults of one view among a list.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ViewFaults {
+    pub bare: bool,
+    pub blocker: bool,
+    pub grazing: bool,
+    /// A near copy of an earlier view of the list.
+    pub copy: bool,
+}
+
+impl ViewFaults {
+    /// True when the view has no fault.
+    pub fn clean(&self) -> bool {
+        !(self.bare || self.blocker || self.grazing || self.copy)
+    }
+}
+
+/// Horizontal distance from `p` to an object's footprint (0 inside).
+pub(crate) fn footprint_distance(o: &ObjectBox, p: [f64; 3]) -> f64 {
+    let (s, c) = o.yaw.to_radians().sin_cos();
+    let (dx, dy) = (p[0] - o.position[0], p[1] - o.position[1]);
+    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
+    let ox = (lx.abs() - 0.5 * o.size[0]).max(0.0);
+    let oy = (ly.abs() - 0.5 * o.size[1]).max(0.0);
+    ox.hypot(oy)
+}
+
+/// True for a thin upright panel (a mirror, painting, TV, whiteboard): shallow against its
+/// width and height.
+pub fn is_panel(o: &ObjectBox) -> bool {
+    o.size[2] > FLAT
+        && o.size[1] <= FLAT_DEPTH
+        && o.size[1] <= FLAT_RATIO * o.size[0].min(o.size[2])
+}
+
+/// The share of the frame of the panels that `cam` sees edge-on (beyond [`GRAZING_DEG`] from
+/// their face or back), given each object's share of the frame.
+pub fn grazing_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
+    let cos = GRAZING_DEG.to_radians().cos();
+    scene
+        .objects
+        .iter()
+        .zip(shares)
+        .filter(|(o, s)| **s > GRAZING_SHARE && is_panel(o) && facing(o, cam.position).abs() < cos)
+        .map(|(_, s)| *s)
+        .sum()
+}
+
+/// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
+fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
+    let [hx, hy] = scene.half();
+    let (fx, fy) = (cam.rotation[0][2], cam.rotation[1][2]);
+    let n = fx.hypot(fy).max(1e-9);
+    let reach = |p: f64, f: f64, h: f64| {
+        if f.abs() < 1e-9 {
+            f64::INFINITY
+        } else {
+            ((f.signum() * h - p) / f).max(0.0)
+        }
+    };
+    let (dx, dy) = (fx / n, fy / n);
+    reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
+}
+
+/// The largest share of the frame a blocker covers (see [`BLOCKER_SHARE`]), 0 without one,
+/// given each object's share of the frame. What it stands before is the room: another object
+/// in frame, or the wall or ground edge the view looks at.
+pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
+    let dists: Vec<f64> = scene
+        .objects
+        .iter()
+        .map(|o| footprint_distance(o, cam.position))
+        .collect();
+    let seen = |k: usize| shares[k] > 0.02 && scene.objects[k].size[2] > FLAT;
+    let far = (0..scene.objects.len())
+        .filter(|&j| seen(j))
+        .map(|j| dists[j])
+        .fold(depth(scene, cam), f64::max);
+    (0..scene.objects.len())
+        .filter(|&k| {
+            let o = &scene.objects[k];
+            let near = BLOCKER_NEAR.min(BLOCKER_PER_SIZE * o.size[0].max(o.size[1]).max(o.size[2]));
+            seen(k)
+                && shares[k] > BLOCKER_SHARE
+                && dists[k] < near
+                && far > dists[k] + BLOCKER_BEHIND
+        })
+        .map(|k| shares[k])
+        .fold(0.0, f64::max)
+}
+
+/// How much two views show the same: over the objects, the smaller of the shares of the frame
+/// the two give it, summed, over the larger of the views' summed shares; times the cosine
+/// between their directions (0 when they look apart by 90° or more). 1 is the same picture.
+pub fn alike(a: (&Camera, &[f64]), b: (&Camera, &[f64])) -> f64 {
+    let fwd = |c: &Camera| [c.rotation[0][2], c.rotation[1][2]];
+    let (da, db) = (fwd(a.0), fwd(b.0));
+    let (na, nb) = (da[0].hypot(da[1]), db[0].hypot(db[1]));
+    let cos = (da[0] * db[0] + da[1] * db[1]) / (na * nb).max(1e-9);
+    if cos <= 0.0 {
+        return 0.0;
+    }
+    let both: f64 = a.1.iter().zip(b.1).map(|(x, y)| x.min(*y)).sum();
+    let (ta, tb): (f64, f64) = (a.1.iter().sum(), b.1.iter().sum());
+    both / ta.max(tb).max(1e-9) * cos
+}
+
+/// The faults of each of `cams` (a near copy is judged against the views before it).
+pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
+    let shares: Vec<Vec<f64>> = cams
+        .iter()
+        .map(|c| scene.objects.iter().map(|o| frame_share(c, o)).collect())
+        .collect();
+    cams.iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let s = &shares[i];
+            let covered: f64 = s.iter().sum();
+            ViewFaults {
+                bare: covered < BARE_COVER,
+                blocker: blocker_share(scene, c, s) > 0.0,
+                grazing: grazing_share(scene, c, s) > 0.0,
+                copy: (0..i).any(|j| alike((c, s), (&cams[j], &shares[j])) > COPY),
+            }
+        })
+        .collect()
+}
