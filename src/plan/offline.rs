@@ -179,6 +179,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     };
     roles::scene_defaults(&mut d);
     roles::mention_kinds(&mut d);
+    supports::work_tables(&mut d);
     sizing::mention_sizes(&mut d);
     counts::mention_counts(&mut d);
     supports::plural_supports(&mut d);

@@ -212,10 +212,11 @@ fn small_room(
     } else {
         need.min(full[0] * full[1])
     };
-    let w = (area * 1.25).sqrt().max(min_side);
-    let d = (area / w).max(min_side);
-    let r = |v: f64| (v * 10.0).ceil() / 10.0;
-    [r(w), r(d), full[2]]
+    // Sides to the 10 cm: the width up, the depth from the rounded width and down, so the
+    // floor stays within the area (a cramped 11.9 m² room is not 3.9 x 3.1 = 12.1 m²).
+    let w = ((area * 1.25).sqrt().max(min_side) * 10.0).ceil() / 10.0;
+    let d = ((area / w * 10.0).floor() / 10.0).max(min_side);
+    [w, (d * 10.0).ceil() / 10.0, full[2]]
 }
 
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,

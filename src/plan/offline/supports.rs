@@ -44,3 +44,24 @@ pub(super) fn plural_supports(d: &mut Draft) {
         }
     }
 }
+
+/// A bare "table" that holds something worked at ("computers on tables", "a laptop on the
+/// table") is a table to work at: the work table (`kb/roles.txt`) its things go on in
+/// `kb/groups.txt`, a desk, not the dining table a bare table otherwise is.
+pub(super) fn work_tables(d: &mut Draft) {
+    for &(si, rel, oi) in &d.r.relations {
+        let Some(m) = d.r.mentions.get(oi) else {
+            continue;
+        };
+        let bare = crate::plan::lang::singular(&m.text) == "table";
+        if rel != RelationKind::Over || !bare || si >= d.cats.len() {
+            continue;
+        }
+        let desk = crate::plan::groups::group_of_category(&d.cats[si])
+            .and_then(|objs| objs.first())
+            .filter(|c| crate::plan::roles::role_of(c) == Some("work table"));
+        if let (Some(desk), Some(c)) = (desk, d.cats.get_mut(oi)) {
+            *c = desk.to_string();
+        }
+    }
+}
