@@ -36,8 +36,17 @@ pub(super) fn plural_supports(d: &mut Draft) {
             let per = (width / w.max(WORK_WIDTH)).floor().max(1.0) as u32;
             need += n.div_ceil(per);
         }
-        if need > d.counts.get(sup).copied().unwrap_or(0) {
+        let had = d.counts.get(sup).copied().unwrap_or(0);
+        if need > had {
             d.counts.insert(sup.clone(), need);
+            // "an office chair at each one": what is said per support grows with them
+            for (m, c) in d.r.mentions.iter().zip(&d.cats) {
+                if m.each_of == Some(oi) && !m.negated {
+                    let more = m.count.unwrap_or(1) * m.parts * (need - had.max(1));
+                    *d.counts.entry(c.clone()).or_default() += more;
+                    *d.explicit.entry(c.clone()).or_default() += more;
+                }
+            }
             d.notes.push(format!(
                 "{need} {sup}: as many as the things placed on them need"
             ));
