@@ -186,6 +186,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let people = counts::seats_for(&mut d);
     roles::take_away(&mut d);
     counts::companions(&mut d, people);
+    supports::per_instance(&mut d);
     counts::clamp(&mut d);
     if d.counts.is_empty() {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));

@@ -36,17 +36,8 @@ pub(super) fn plural_supports(d: &mut Draft) {
             let per = (width / w.max(WORK_WIDTH)).floor().max(1.0) as u32;
             need += n.div_ceil(per);
         }
-        let had = d.counts.get(sup).copied().unwrap_or(0);
-        if need > had {
+        if need > d.counts.get(sup).copied().unwrap_or(0) {
             d.counts.insert(sup.clone(), need);
-            // "an office chair at each one": what is said per support grows with them
-            for (m, c) in d.r.mentions.iter().zip(&d.cats) {
-                if m.each_of == Some(oi) && !m.negated {
-                    let more = m.count.unwrap_or(1) * m.parts * (need - had.max(1));
-                    *d.counts.entry(c.clone()).or_default() += more;
-                    *d.explicit.entry(c.clone()).or_default() += more;
-                }
-            }
             d.notes.push(format!(
                 "{need} {sup}: as many as the things placed on them need"
             ));
@@ -71,6 +62,27 @@ pub(super) fn work_tables(d: &mut Draft) {
             .filter(|c| crate::plan::roles::role_of(c) == Some("work table"));
         if let (Some(desk), Some(c)) = (desk, d.cats.get_mut(oi)) {
             *c = desk.to_string();
+        }
+    }
+}
+
+/// What is said per instance of a thing ("an office chair at each one" of the tables) follows
+/// that thing's final count, when its count grew after the reading (as many desks as the
+/// computers on them need): never fewer than the count per instance times the instances.
+pub(super) fn per_instance(d: &mut Draft) {
+    let mut want: std::collections::BTreeMap<String, u32> = Default::default();
+    for (m, c) in d.r.mentions.iter().zip(&d.cats) {
+        let Some(x) = m.each_of.filter(|_| !m.negated) else {
+            continue;
+        };
+        let over = d.cats.get(x).and_then(|o| d.counts.get(o)).copied();
+        *want.entry(c.clone()).or_default() += m.count.unwrap_or(1) * m.parts * over.unwrap_or(1);
+    }
+    for (c, n) in want {
+        let now = d.counts.get(&c).copied().unwrap_or(0);
+        if n > now && now > 0 {
+            d.counts.insert(c.clone(), n);
+            d.explicit.insert(c, n);
         }
     }
 }
