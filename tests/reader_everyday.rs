@@ -58,7 +58,9 @@ fn what_is_said_per_support_follows_the_supports_count() {
     let s = plan("an exam hall with thirty laptops on tables and a chair at each one");
     let desks = count(&s, "desk");
     assert!(desks >= 15, "{:?}", s.objects);
-    assert_eq!(number(&s, "chair"), desks, "{:?}", s.objects);
+    assert_eq!(count(&s, "laptop"), 30, "{:?}", s.objects);
+    // a chair at each of them (the room may have its own chair besides, a teacher's)
+    assert!(number(&s, "chair") >= desks, "{:?}", s.objects);
 }
 
 #[test]
@@ -88,7 +90,9 @@ fn new_places_are_their_own_scenes() {
     assert_eq!(number(&s, "whiteboard") + number(&s, "desk"), 0, "{:?}", s.objects);
     let s = plan("a contact center for customer support");
     assert!(count(&s, "computer") >= 1 && count(&s, "desk") >= 1, "{:?}", s.objects);
+    // the crates of kennels are its dog crates
     let s = plan("dog kennels with eight crates");
+    assert_eq!(count(&s, "dog crate"), 8, "{:?}", s.objects);
     assert_eq!(number(&s, "crate"), 8, "{:?}", s.objects);
 }
 
