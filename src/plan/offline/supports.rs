@@ -47,14 +47,17 @@ pub(super) fn plural_supports(d: &mut Draft) {
 
 /// A bare "table" that holds something worked at ("computers on tables", "a laptop on the
 /// table") is a table to work at: the work table (`kb/roles.txt`) its things go on in
-/// `kb/groups.txt`, a desk, not the dining table a bare table otherwise is.
+/// `kb/groups.txt`, a desk, not the dining table a bare table otherwise is; the scene's own
+/// table said alone stays (a laptop on the table of a dining room).
 pub(super) fn work_tables(d: &mut Draft) {
     for &(si, rel, oi) in &d.r.relations {
         let Some(m) = d.r.mentions.get(oi) else {
             continue;
         };
         let bare = crate::plan::lang::singular(&m.text) == "table";
-        if rel != RelationKind::Over || !bare || si >= d.cats.len() {
+        // "a laptop on the table" in a kitchen is on its table; tables of computers are desks
+        let the_scenes = !m.plural && d.cats.get(oi).is_some_and(|c| d.defaults.contains_key(c));
+        if rel != RelationKind::Over || !bare || the_scenes || si >= d.cats.len() {
             continue;
         }
         let desk = crate::plan::groups::group_of_category(&d.cats[si])
