@@ -43,13 +43,18 @@ fn a_plural_name_of_several_words_is_its_category() {
 
 #[test]
 fn a_table_that_holds_computers_is_a_desk() {
-    let s = plan("an internet cafe with ten computers on tables");
+    let s = plan("an IT support office with ten computers on tables");
     assert_eq!(count(&s, "dining table"), 0, "{:?}", s.objects.keys());
     assert!(count(&s, "desk") >= 5, "{:?}", s.objects.keys());
     assert_eq!(count(&s, "computer"), 10, "{:?}", s.objects.keys());
     // a table that holds what is not worked at stays a table
-    let s = plan("a dining room with a laptop on the table");
-    assert_eq!(count(&s, "desk"), 0, "{:?}", s.objects.keys());
+    for p in [
+        "a dining room with a laptop on the table",
+        "a kitchen with a laptop on the table",
+    ] {
+        let s = plan(p);
+        assert_eq!(count(&s, "desk"), 0, "{p}: {:?}", s.objects.keys());
+    }
     let s = plan("a dining room with a vase of tulips on the table");
     assert_eq!(count(&s, "desk"), 0, "{:?}", s.objects.keys());
     assert!(number(&s, "table") >= 1, "{:?}", s.objects.keys());
@@ -57,7 +62,7 @@ fn a_table_that_holds_computers_is_a_desk() {
 
 #[test]
 fn what_is_said_per_support_follows_the_supports_count() {
-    let s = plan("an exam hall with thirty laptops on tables and a chair at each one");
+    let s = plan("a call center with thirty laptops on tables and a chair at each one");
     let desks = count(&s, "desk");
     assert!(desks >= 15, "{:?}", s.objects);
     assert_eq!(count(&s, "laptop"), 30, "{:?}", s.objects);
@@ -128,4 +133,20 @@ fn a_prompt_may_start_with_a_hyphen() {
     let spec = SceneSpec::read(&dir.join("spec.json")).unwrap();
     assert_eq!(spec.objects.get("refrigerator").map(|o| o.number), Some(1));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// "Desks for twelve people": things that seat one each, said with how many people and no count,
+/// are one per person.
+#[test]
+fn things_for_one_said_for_people_are_one_each() {
+    let s = plan("an open plan office with desks for twelve people");
+    assert_eq!(count(&s, "desk"), 12, "{:?}", s.objects);
+    assert!(count(&s, "office chair") <= 13, "{:?}", s.objects);
+    // a table for several keeps seating them each
+    let s = plan("a canteen with tables for four");
+    assert!(
+        number(&s, "chair") >= 4 * number(&s, "table").max(1),
+        "{:?}",
+        s.objects
+    );
 }

@@ -45,19 +45,23 @@ pub(super) fn plural_supports(d: &mut Draft) {
     }
 }
 
-/// A bare "table" that holds something worked at ("computers on tables", "a laptop on the
-/// table") is a table to work at: the work table (`kb/roles.txt`) its things go on in
-/// `kb/groups.txt`, a desk, not the dining table a bare table otherwise is; the scene's own
-/// table said alone stays (a laptop on the table of a dining room).
+/// Bare "tables" that hold something worked at ("computers on tables") are tables to work at:
+/// the work table (`kb/roles.txt`) its things go on in `kb/groups.txt`, a desk, not the dining
+/// tables bare tables otherwise are; a single table ("a laptop on the table" of a kitchen) and
+/// the tables of a place with tables to sit at (a cafe's, a classroom's: its meal tables or
+/// pupil places) stay tables.
 pub(super) fn work_tables(d: &mut Draft) {
     for &(si, rel, oi) in &d.r.relations {
         let Some(m) = d.r.mentions.get(oi) else {
             continue;
         };
         let bare = crate::plan::lang::singular(&m.text) == "table";
-        // "a laptop on the table" in a kitchen is on its table; tables of computers are desks
-        let the_scenes = !m.plural && d.cats.get(oi).is_some_and(|c| d.defaults.contains_key(c));
-        if rel != RelationKind::Over || !bare || the_scenes || si >= d.cats.len() {
+        // "a laptop on the table" in a kitchen is on its table; a place with tables to sit at
+        // (a cafe's, a classroom's) has those
+        let sit_at = d.defaults.keys().any(|c| {
+            crate::plan::roles::role_of(c).is_some_and(|r| r == "meal table" || r == "pupil place")
+        });
+        if rel != RelationKind::Over || !bare || !m.plural || sit_at || si >= d.cats.len() {
             continue;
         }
         let desk = crate::plan::groups::group_of_category(&d.cats[si])
