@@ -161,7 +161,7 @@ fn issue_21_other_languages_are_refused() {
 #[test]
 fn short_english_with_an_unknown_noun_is_read() {
     for p in [
-        "a huge viewscreen",
+        "a huge tesseract",
         "a tiny orrery",
         "two enormous zeppelins",
     ] {

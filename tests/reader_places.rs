@@ -243,7 +243,7 @@ fn a_plural_support_without_a_count_holds_all_that_is_put_on_it() {
         (
             "a call centre with fourteen computers on tables",
             "computer",
-            "table",
+            "desk",
         ),
     ] {
         let spec = plan(prompt);

@@ -308,6 +308,8 @@ fn positive_density(s: &str) -> Result<f64, String> {
 #[derive(clap::Args)]
 pub struct Args {
     /// What to build, e.g. "a cozy living room".
+    /// A prompt may start with a hyphen ("- a kitchen", a dialogue's first line).
+    #[arg(allow_hyphen_values = true)]
     pub prompt: Option<String>,
     /// Output scene directory (created if missing).
     #[arg(long)]

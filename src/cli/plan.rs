@@ -9,6 +9,8 @@ use std::path::{Path, PathBuf};
 #[derive(clap::Args)]
 pub struct Args {
     /// What to build, e.g. "a cozy living room".
+    /// A prompt may start with a hyphen ("- a kitchen", a dialogue's first line).
+    #[arg(allow_hyphen_values = true)]
     pub prompt: Option<String>,
     /// A dialogue instead: a JSON list of {"role", "content"}; the user turns are planned.
     #[arg(long)]

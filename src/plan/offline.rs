@@ -188,12 +188,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     };
     roles::scene_defaults(&mut d);
     roles::mention_kinds(&mut d);
+    supports::work_tables(&mut d);
     sizing::mention_sizes(&mut d);
     counts::mention_counts(&mut d);
     supports::plural_supports(&mut d);
     let people = counts::seats_for(&mut d);
     roles::take_away(&mut d);
     counts::companions(&mut d, people);
+    supports::per_instance(&mut d);
     counts::clamp(&mut d);
     if d.counts.is_empty() {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));

@@ -325,7 +325,7 @@ pub(super) fn read_mentions(
                     count = Some(n);
                     if let Some(m) = prev3.and_then(number_of) {
                         if m > 1
-                            && ["dozen", "pair", "couple", "sets", "set"]
+                            && ["dozen", "pair", "pairs", "couple", "sets", "set"]
                                 .contains(&prev2.unwrap_or(""))
                         {
                             count = Some(m * n.max(1));

@@ -58,6 +58,7 @@ pub(super) const NUMBERS: &[(&str, u32)] = &[
     ("both", 2),
     ("couple", 2),
     ("pair", 2),
+    ("pairs", 2),
     ("several", 3),
     ("few", 3),
     ("some", 2),

@@ -229,6 +229,22 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         if same.len() > 1 && same[0].0 != ti {
             continue;
         }
+        // "desks for twelve people": things that seat one each, said in the plural with no
+        // count, are as many as the people
+        let m = &r.mentions[ti];
+        let size = sizes
+            .get(table)
+            .copied()
+            .or_else(|| kb.object(table).map(|o| o.size));
+        let one_each = m.plural
+            && m.count.is_none()
+            && same.len() == 1
+            && size.and_then(|z| capacity(table, &seat, z)) == Some(1);
+        if one_each {
+            counts.insert(table.clone(), per);
+            explicit.insert(table.clone(), per);
+        }
+        let tables = if one_each { 1 } else { tables };
         let n = if same.len() > 1 {
             same.iter()
                 .map(|&(tj, p)| p * r.mentions[tj].count.unwrap_or(tables).max(1))

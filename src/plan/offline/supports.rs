@@ -44,3 +44,52 @@ pub(super) fn plural_supports(d: &mut Draft) {
         }
     }
 }
+
+/// Bare "tables" that hold something worked at ("computers on tables") are tables to work at:
+/// the work table (`kb/roles.txt`) its things go on in `kb/groups.txt`, a desk, not the dining
+/// tables bare tables otherwise are; a single table ("a laptop on the table" of a kitchen) and
+/// the tables of a place with tables to sit at (a cafe's, a classroom's: its meal tables or
+/// pupil places) stay tables.
+pub(super) fn work_tables(d: &mut Draft) {
+    for &(si, rel, oi) in &d.r.relations {
+        let Some(m) = d.r.mentions.get(oi) else {
+            continue;
+        };
+        let bare = crate::plan::lang::singular(&m.text) == "table";
+        // "a laptop on the table" in a kitchen is on its table; a place with tables to sit at
+        // (a cafe's, a classroom's) has those
+        let sit_at = d.defaults.keys().any(|c| {
+            crate::plan::roles::role_of(c).is_some_and(|r| r == "meal table" || r == "pupil place")
+        });
+        if rel != RelationKind::Over || !bare || !m.plural || sit_at || si >= d.cats.len() {
+            continue;
+        }
+        let desk = crate::plan::groups::group_of_category(&d.cats[si])
+            .and_then(|objs| objs.first())
+            .filter(|c| crate::plan::roles::role_of(c) == Some("work table"));
+        if let (Some(desk), Some(c)) = (desk, d.cats.get_mut(oi)) {
+            *c = desk.to_string();
+        }
+    }
+}
+
+/// What is said per instance of a thing ("an office chair at each one" of the tables) follows
+/// that thing's final count, when its count grew after the reading (as many desks as the
+/// computers on them need): never fewer than the count per instance times the instances.
+pub(super) fn per_instance(d: &mut Draft) {
+    let mut want: std::collections::BTreeMap<String, u32> = Default::default();
+    for (m, c) in d.r.mentions.iter().zip(&d.cats) {
+        let Some(x) = m.each_of.filter(|_| !m.negated) else {
+            continue;
+        };
+        let over = d.cats.get(x).and_then(|o| d.counts.get(o)).copied();
+        *want.entry(c.clone()).or_default() += m.count.unwrap_or(1) * m.parts * over.unwrap_or(1);
+    }
+    for (c, n) in want {
+        let now = d.counts.get(&c).copied().unwrap_or(0);
+        if n > now && now > 0 {
+            d.counts.insert(c.clone(), n);
+            d.explicit.insert(c, n);
+        }
+    }
+}
