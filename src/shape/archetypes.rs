@@ -412,6 +412,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("phone_box", gz::phone_box, [Body, Frame, Top], [Body => [0.78, 0.09, 0.08], Frame => [0.78, 0.09, 0.08], Top => [0.74, 0.08, 0.07], Light => [0.98, 0.97, 0.92], BlackKeys => [0.10, 0.10, 0.11], Metal => [0.30, 0.30, 0.32], Handle => [0.25, 0.25, 0.27]]),
     arch!("fish_bowl", gz::fish_bowl, [Pane], [Pane => [0.66, 0.84, 0.92], Water => [0.40, 0.62, 0.78], Soil => [0.70, 0.62, 0.50], Foliage => [0.25, 0.55, 0.25]]),
     arch!("installation", sc::installation, [Top, Cushion], [Body => [0.95, 0.95, 0.94], Metal => [0.75, 0.76, 0.78], Top => [0.85, 0.15, 0.12], Cushion => [0.95, 0.75, 0.10]]),
+    arch!("clothes_rack", gym::clothes_rack, [Frame], [Frame => [0.70, 0.71, 0.73], Metal => [0.55, 0.56, 0.58], Tyre => BLACK]),
+    arch!("record_player", ho::record_player, [Body], [Body => [0.45, 0.29, 0.16], Metal => STEEL, BlackKeys => [0.05, 0.05, 0.06], Light => [0.85, 0.25, 0.15], Glass => [0.35, 0.35, 0.38], Handle => [0.80, 0.80, 0.78]]),
     arch!("stand_mixer", gd::stand_mixer, [Body], [Body => [0.78, 0.10, 0.12], Metal => STEEL, Handle => STEEL, Interior => [0.55, 0.56, 0.58]]),
     arch!("shredder", gd::shredder, [Metal], [Metal => [0.22, 0.22, 0.24], Top => [0.12, 0.12, 0.13], Interior => BLACK, Light => [0.35, 0.85, 0.40], Canvas => WHITE]),
     arch!("printer_3d", gd::printer_3d, [Frame], [Frame => [0.12, 0.12, 0.13], Body => [0.18, 0.18, 0.19], Top => [0.30, 0.30, 0.32], Metal => STEEL, Screen => [0.10, 0.22, 0.32], Upholstery => [0.95, 0.50, 0.10]]),

@@ -1,5 +1,6 @@
 //! Layouts of gym things: a dumbbell rack (a low frame with two tiers of dumbbells, round heads
-//! on short bars) and a yoga mat (a thin mat with its end still rolled). The front faces +y.
+//! on short bars), a yoga mat (a thin mat with its end still rolled) and a clothes rail with
+//! garments on hangers. The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 
@@ -83,5 +84,38 @@ pub fn yoga_mat(b: &mut Builder) {
     b.rod(Upholstery, [-hw + 0.004, y, r], [hw - 0.004, y, r], r);
     for x in [-hw, hw - 0.004] {
         b.rod(Cushion, [x, y, r], [x + 0.004, y, r], 0.8 * r);
+    }
+}
+
+/// A clothes rail: a bar on two uprights standing on feet with castors, a row of garments of
+/// several colours hanging from it on hangers.
+pub fn clothes_rack(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = 0.015;
+    let zr = h - r;
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - r);
+        b.rod(Frame, [x, 0.0, 0.05], [x, 0.0, zr], r);
+        b.rod(Frame, [x, -hd + r, 0.05], [x, hd - r, 0.05], r);
+        for y in [-hd + 0.03, hd - 0.03] {
+            b.ellipsoid(Tyre, [x, y, 0.025], [0.025, 0.025, 0.025]);
+        }
+    }
+    b.rod(Frame, [-hw + r, 0.0, zr], [hw - r, 0.0, zr], r);
+    // Garments: hangers' hooks on the bar, shoulders and bodies hanging, side by side.
+    let n = ((b.w - 0.1) / 0.09).floor().max(1.0) as usize;
+    let pitch = (b.w - 0.1) / n as f64;
+    let len = (0.55 * h).min(1.0);
+    for i in 0..n {
+        let x = -hw + 0.05 + (i as f64 + 0.5) * pitch;
+        let long = if i % 3 == 1 { 1.0 } else { 0.75 };
+        let zt = zr - 0.06;
+        b.rod(Metal, [x, 0.0, zt], [x, 0.0, zr], 0.004);
+        b.cuboid_v(
+            Books,
+            i as u32,
+            [x - 0.35 * pitch, -0.8 * hd.min(0.25), zt - long * len],
+            [x + 0.35 * pitch, 0.8 * hd.min(0.25), zt],
+        );
     }
 }
