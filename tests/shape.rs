@@ -265,6 +265,34 @@ fn colour_words_change_colours() {
     assert_eq!(words[2].part, Some(Role::Frame));
 }
 
+/// A rock's lumps each take a shade of their own (hue shifts the light cannot make: it scales
+/// all channels alike), a stone word recolours the rock, and a machine's name ("paper
+/// shredder") is not read as the material it is made of.
+#[test]
+fn rock_lumps_differ_in_shade_and_names_are_not_materials() {
+    let opts = ShapeOptions::default();
+    let size = [1.2, 1.0, 0.8];
+    let rock = build("rock", size, "a big rock", &opts).unwrap();
+    let ratios: Vec<f64> = (0..rock.len())
+        .map(|i| colour(&rock, i))
+        .filter(|c| c[2] > 0.05)
+        .map(|c| c[0] / c[2])
+        .collect();
+    let (lo, hi) = ratios
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(l, h), r| (l.min(*r), h.max(*r)));
+    assert!(
+        hi - lo > 0.08,
+        "red/blue ratios of a rock span {lo:.3}..{hi:.3}"
+    );
+    let plain = mean_colour(&rock);
+    let granite = mean_colour(&build("rock", size, "a granite boulder", &opts).unwrap());
+    assert!(granite[0] < plain[0] - 0.05, "{granite:?} {plain:?}");
+    let shredder =
+        mean_colour(&build("paper shredder", [0.4, 0.3, 0.6], "a paper shredder", &opts).unwrap());
+    assert!(shredder.iter().all(|c| *c < 0.5), "{shredder:?}");
+}
+
 #[test]
 fn deterministic_per_seed_and_seeds_differ() {
     let size = [0.45, 0.5, 0.9];

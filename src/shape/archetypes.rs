@@ -9,9 +9,12 @@ use super::daily as d;
 use super::forms as fo;
 use super::frames as fr;
 use super::furniture as f;
+use super::gadgets as gd;
 use super::games as gm;
 use super::garden as ga;
 use super::glasshouse as gh;
+use super::glazed as gz;
+use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
 use super::household as ho;
@@ -22,6 +25,7 @@ use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::picnic as pc;
 use super::play as pl;
+use super::rocks;
 use super::sculpted as sc;
 use super::seats as se;
 use super::skeleton as sk;
@@ -318,7 +322,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("globe", d::globe, [Body], [Body => [0.24, 0.44, 0.66], Foliage => [0.55, 0.62, 0.34], Frame => DARK_WOOD, Metal => [0.70, 0.58, 0.32]]),
     arch!("barrow", d::barrow, [Body], [Body => [0.35, 0.45, 0.35], Frame => [0.52, 0.38, 0.24], Top => [0.55, 0.40, 0.25], Metal => [0.45, 0.45, 0.47]]),
     arch!("house", d::house, [Body], [Body => [0.62, 0.46, 0.30], Top => [0.32, 0.28, 0.26], Door => [0.40, 0.27, 0.17], Glass => [0.55, 0.70, 0.80]]),
-    arch!("greenhouse", gh::greenhouse, [Metal], [Body => [0.55, 0.36, 0.26], Metal => [0.30, 0.34, 0.32], Glass => [0.80, 0.90, 0.86]]),
+    arch!("greenhouse", gh::greenhouse, [Metal], [Body => [0.55, 0.36, 0.26], Metal => [0.30, 0.34, 0.32], Pane => [0.80, 0.90, 0.86], Top => [0.55, 0.40, 0.25], Frame => [0.45, 0.32, 0.20]]),
     arch!("fire_pit", he::fire_pit, [Body], [Body => STONE, Interior => [0.10, 0.09, 0.08], Trunk => [0.36, 0.26, 0.17], Light => [1.0, 0.55, 0.15]]),
     arch!("well", he::well, [Body], [Body => STONE, Top => [0.40, 0.27, 0.17], Frame => [0.45, 0.31, 0.19], Metal => [0.35, 0.33, 0.30], Interior => [0.08, 0.12, 0.14], Trunk => [0.40, 0.27, 0.17]]),
     arch!("windmill", he::windmill, [Body], [Body => [0.86, 0.82, 0.72], Top => [0.35, 0.24, 0.16], Frame => [0.40, 0.28, 0.18], Canvas => [0.93, 0.91, 0.85], Door => [0.40, 0.27, 0.17], Glass => [0.30, 0.35, 0.40]]),
@@ -400,6 +404,21 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("picnic_table", pc::picnic_table, [Top, Seat, Frame], [Top => [0.62, 0.47, 0.32], Seat => [0.62, 0.47, 0.32], Frame => [0.55, 0.41, 0.27]]),
     arch!("skeleton", sk::skeleton, [Body], [Body => [0.93, 0.90, 0.80], Metal => [0.30, 0.31, 0.33], Interior => BLACK]),
     arch!("square_ottoman", fo::square_ottoman, [Upholstery, Cushion], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.55, 0.45, 0.38], Frame => DARK_WOOD]),
+    arch!("dumbbell_rack", gym::dumbbell_rack, [Frame], [Frame => [0.16, 0.16, 0.17], Metal => [0.10, 0.10, 0.11], Handle => STEEL]),
+    arch!("yoga_mat", gym::yoga_mat, [Upholstery], [Upholstery => [0.46, 0.30, 0.62], Cushion => [0.34, 0.22, 0.47]]),
+    arch!("rock", rocks::rock, [Stone], []),
+    arch!("snowman", rocks::snowman, [Body], [Body => [0.96, 0.97, 0.99], Pot => [0.95, 0.50, 0.10], BlackKeys => [0.06, 0.06, 0.07], Trunk => [0.36, 0.24, 0.14], Upholstery => [0.75, 0.12, 0.12], Metal => [0.08, 0.08, 0.09]]),
+    arch!("china_cabinet", gz::china_cabinet, [Body, Door, Frame], [Body => [0.42, 0.24, 0.14], Door => [0.46, 0.27, 0.16], Frame => [0.42, 0.24, 0.14], Interior => [0.55, 0.45, 0.36]]),
+    arch!("phone_box", gz::phone_box, [Body, Frame, Top], [Body => [0.78, 0.09, 0.08], Frame => [0.78, 0.09, 0.08], Top => [0.74, 0.08, 0.07], Light => [0.98, 0.97, 0.92], BlackKeys => [0.10, 0.10, 0.11], Metal => [0.30, 0.30, 0.32], Handle => [0.25, 0.25, 0.27]]),
+    arch!("fish_bowl", gz::fish_bowl, [Pane], [Pane => [0.66, 0.84, 0.92], Water => [0.40, 0.62, 0.78], Soil => [0.70, 0.62, 0.50], Foliage => [0.25, 0.55, 0.25]]),
+    arch!("installation", sc::installation, [Top, Cushion], [Body => [0.95, 0.95, 0.94], Metal => [0.75, 0.76, 0.78], Top => [0.85, 0.15, 0.12], Cushion => [0.95, 0.75, 0.10]]),
+    arch!("clothes_rack", gym::clothes_rack, [Frame], [Frame => [0.70, 0.71, 0.73], Metal => [0.55, 0.56, 0.58], Tyre => BLACK]),
+    arch!("record_player", ho::record_player, [Body], [Body => [0.45, 0.29, 0.16], Metal => STEEL, BlackKeys => [0.05, 0.05, 0.06], Light => [0.85, 0.25, 0.15], Glass => [0.35, 0.35, 0.38], Handle => [0.80, 0.80, 0.78]]),
+    arch!("stand_mixer", gd::stand_mixer, [Body], [Body => [0.78, 0.10, 0.12], Metal => STEEL, Handle => STEEL, Interior => [0.55, 0.56, 0.58]]),
+    arch!("shredder", gd::shredder, [Metal], [Metal => [0.22, 0.22, 0.24], Top => [0.12, 0.12, 0.13], Interior => BLACK, Light => [0.35, 0.85, 0.40], Canvas => WHITE]),
+    arch!("printer_3d", gd::printer_3d, [Frame], [Frame => [0.12, 0.12, 0.13], Body => [0.18, 0.18, 0.19], Top => [0.30, 0.30, 0.32], Metal => STEEL, Screen => [0.10, 0.22, 0.32], Upholstery => [0.95, 0.50, 0.10]]),
+    arch!("generator", gd::generator, [Body], [Body => [0.90, 0.68, 0.10], Frame => [0.12, 0.12, 0.13], Metal => [0.45, 0.46, 0.48], Top => [0.15, 0.15, 0.16], Tyre => BLACK, Interior => BLACK, Screen => [0.05, 0.05, 0.05]]),
+    arch!("radiator", gd::radiator, [Body], [Body => WHITE, Metal => STEEL, Handle => WHITE]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -15,7 +15,7 @@ pub fn greenhouse(b: &mut Builder) {
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, base]);
     // Glass walls set just inside the frame, so the bars stand proud of them.
     let g = 0.5 * BAR;
-    b.cuboid(Glass, [-hw + g, -hd + g, base], [hw - g, hd - g, eave]);
+    b.cuboid(Pane, [-hw + g, -hd + g, base], [hw - g, hd - g, eave]);
     // Posts round the walls and the eave and sill rails.
     let bays = |len: f64| ((len / BAY).round() as usize).max(1);
     let (nx, ny) = (bays(b.w), bays(b.d));
@@ -63,7 +63,7 @@ pub fn greenhouse(b: &mut Builder) {
         let centre = [0.0, sy * 0.5 * hd, eave + 0.5 * rise];
         let rot = rot_x(-sy * slope);
         b.push(
-            Glass,
+            Pane,
             0,
             Primitive::Cuboid {
                 centre,
@@ -92,10 +92,53 @@ pub fn greenhouse(b: &mut Builder) {
         let y = hd * (1.0 - (k as f64 + 0.5) / n as f64);
         for sx in [-1.0, 1.0] {
             let x = sx * (hw - g);
-            b.cuboid(Glass, [x - 0.005, -y, z0], [x + 0.005, y, z1]);
+            b.cuboid(Pane, [x - 0.005, -y, z0], [x + 0.005, y, z1]);
         }
     }
     b.cuboid(Metal, [-hw, -BAR, h - BAR], [hw, BAR, h]);
+    staging(b, base);
+}
+
+/// Inside, seen through the glass: a staging bench along the back wall with a row of potted
+/// plants on it, and taller plants in pots on the floor at the ends.
+fn staging(b: &mut Builder, base: f64) {
+    let (hw, hd) = b.half();
+    if hw < 0.6 || hd < 0.6 {
+        return;
+    }
+    let (x0, x1) = (-hw + 0.2, hw - 0.2);
+    let (y0, y1) = (-hd + 0.1, -hd + 0.1 + (0.3 * b.d).min(0.7));
+    let zt = 0.8;
+    b.cuboid(Top, [x0, y0, zt - 0.04], [x1, y1, zt]);
+    for x in [x0, x1 - 0.05] {
+        for y in [y0, y1 - 0.05] {
+            b.cuboid(Frame, [x, y, 0.0], [x + 0.05, y + 0.05, zt - 0.04]);
+        }
+    }
+    let n = ((x1 - x0) / 0.35).floor().max(1.0) as usize;
+    let yc = 0.5 * (y0 + y1);
+    for i in 0..n {
+        let x = x0 + (i as f64 + 0.5) * (x1 - x0) / n as f64;
+        b.frustum(Pot, [x, yc, zt], 0.07, 0.07, 1.3, 0.12);
+        b.ellipsoid_rot(
+            Foliage,
+            i as u32,
+            [x, yc, zt + 0.22],
+            [0.14, 0.14, 0.14],
+            super::parts::IDENTITY,
+        );
+    }
+    for (k, x) in [x0 + 0.1, x1 - 0.1].into_iter().enumerate() {
+        let y = hd - 0.45;
+        b.frustum(Pot, [x, y, base.min(0.05)], 0.15, 0.15, 1.2, 0.3);
+        b.ellipsoid_rot(
+            Foliage,
+            k as u32 + 2,
+            [x, y, 0.75],
+            [0.28, 0.28, 0.4],
+            super::parts::IDENTITY,
+        );
+    }
 }
 
 /// A vertical frame post at (x, y) from `z0` to `z1`.

@@ -1,5 +1,5 @@
 //! Layouts of small things people name in a room: a cactus with its arms, a teddy bear, a lit
-//! pillar candle, an electric kettle, a toaster. The front faces +y.
+//! pillar candle, an electric kettle, a toaster, a record player. The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::frustum_profile;
@@ -186,4 +186,30 @@ pub fn toaster(b: &mut Builder) {
         [0.38 * b.w, hd, 0.62 * h],
     );
     b.cylinder(BlackKeys, [-0.3 * b.w, hd - 0.015, 0.35 * h], 0.012, 0.015);
+}
+
+/// A record player: a wooden plinth, a platter with a black record and its label, a tonearm
+/// from its rest at the back right across to the record, a smoked lid standing open behind.
+pub fn record_player(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zp = 0.45 * h;
+    b.cuboid(Body, [-hw, -hd + 0.02, 0.0], [hw, hd, zp]);
+    for x in [-hw + 0.04, hw - 0.04] {
+        b.cylinder(Handle, [x, hd - 0.04, zp - 0.06], 0.012, 0.06);
+    }
+    let rp = (0.42 * b.d).min(0.36 * b.w);
+    let (xp, yp) = (-0.12 * b.w, 0.02 * b.d);
+    b.cylinder(Metal, [xp, yp, zp], 1.02 * rp, 0.015);
+    b.cylinder(BlackKeys, [xp, yp, zp + 0.015], rp, 0.004);
+    b.cylinder(Light, [xp, yp, zp + 0.019], 0.33 * rp, 0.001);
+    let pivot = [hw - 0.08, -0.25 * hd, zp];
+    b.cylinder(Metal, pivot, 0.02, 0.03);
+    b.rod(
+        Metal,
+        [pivot[0], pivot[1], zp + 0.03],
+        [xp + 0.55 * rp, yp + 0.55 * rp, zp + 0.03],
+        0.005,
+    );
+    // The lid, open, leaning back along the rear edge.
+    b.cuboid(Glass, [-hw, -hd, zp], [hw, -hd + 0.012, h]);
 }

@@ -69,6 +69,9 @@ pub enum Role {
     Canvas,
     /// Emissive-looking parts: bulbs, flames.
     Light,
+    /// Rough natural stone (rocks, boulders): lumps differ in shade and a little in hue by
+    /// variant, like weathered rock.
+    Stone,
 }
 
 impl Role {
@@ -105,6 +108,7 @@ impl Role {
             Skin => [0.85, 0.68, 0.55],
             Canvas => [0.96, 0.96, 0.95],
             Light => [1.00, 0.93, 0.70],
+            Stone => [0.55, 0.53, 0.49],
         }
     }
 
@@ -137,6 +141,7 @@ impl Role {
             Role::Pot => &[C::Ceramic, C::Stone, C::Metal, C::Plastic, C::Wicker],
             Role::Mattress | Role::Pillow | Role::Duvet => &[C::Fabric],
             Role::Glass | Role::Pane => &[C::Glass],
+            Role::Stone => &[C::Stone],
             _ => &[],
         };
         ok.contains(&c)
@@ -455,23 +460,32 @@ impl Palette {
             .iter()
             .find(|c| c.0 == role)
             .map_or(role.default_colour(), |c| c.1);
-        if role == Role::Foliage {
-            // Leaf clusters differ in shade and a little in hue, like real foliage.
-            const SHADE: [[f32; 3]; 5] = [
+        // Leaf clusters and a rock's lumps differ in shade and a little in hue, like real
+        // foliage and weathered stone.
+        let shades: &[[f32; 3]] = match role {
+            Role::Foliage => &[
                 [1.0, 1.0, 1.0],
                 [0.82, 0.88, 0.80],
                 [1.1, 1.12, 0.95],
                 [0.9, 0.95, 1.05],
                 [1.15, 1.05, 0.85],
-            ];
-            let k = SHADE[variant as usize % SHADE.len()];
-            return [0, 1, 2].map(|i| (c[i] * k[i]).min(1.0));
-        }
-        c
+            ],
+            Role::Stone => &[
+                [1.0, 1.0, 1.0],
+                [0.84, 0.83, 0.81],
+                [1.08, 1.03, 0.94],
+                [0.93, 0.88, 0.80],
+                [1.14, 1.13, 1.11],
+                [0.76, 0.76, 0.77],
+            ],
+            _ => return c,
+        };
+        let k = shades[variant as usize % shades.len()];
+        [0, 1, 2].map(|i| (c[i] * k[i]).min(1.0))
     }
 }
 
-const ALL_ROLES: [Role; 12] = [
+const ALL_ROLES: [Role; 13] = [
     Role::Upholstery,
     Role::Cushion,
     Role::Seat,
@@ -484,6 +498,7 @@ const ALL_ROLES: [Role; 12] = [
     Role::Shade,
     Role::Pot,
     Role::Glass,
+    Role::Stone,
 ];
 
 #[cfg(test)]

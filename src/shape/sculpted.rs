@@ -1,4 +1,5 @@
-//! Layouts of a concert harp and a portrait bust on its plinth. The front faces +y, z up, the
+//! Layouts of a concert harp, a portrait bust on its plinth, an altar and a modern art
+//! installation (a ring, a tipped cube and a ball on a plinth). The front faces +y, z up, the
 //! bottom face's centre at the origin.
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::*;
@@ -162,4 +163,37 @@ pub fn altar(b: &mut Builder) {
         [-arm, -0.5 * hd, z + 0.6 * rest],
         [arm, -0.5 * hd + 0.03, z + 0.68 * rest],
     );
+}
+
+/// A modern art installation: on a low white plinth, a large steel ring standing upright, a
+/// cube tipped onto its edge and a ball, in bold colours.
+pub fn installation(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zp = 0.08 * h;
+    b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, zp]);
+    // The ring in the x-z plane towards the back.
+    let rr = (0.5 * (h - zp)).min(0.85 * hw) - 0.03;
+    let (cx, cy, cz) = (-0.2 * hw, -0.35 * hd, zp + rr + 0.03);
+    let pts: Vec<V3> = (0..=32)
+        .map(|i| {
+            let a = i as f64 / 32.0 * std::f64::consts::TAU;
+            [cx + rr * a.cos(), cy, cz + rr * a.sin()]
+        })
+        .collect();
+    b.polyline(Metal, &pts, 0.03);
+    // A cube tipped onto one edge, its diagonal upright, in front to the right.
+    let s = 0.3 * b.w.min(b.d);
+    let c = [
+        0.35 * hw,
+        0.25 * hd,
+        zp + s * std::f64::consts::SQRT_2 / 2.0,
+    ];
+    let rot = super::parts::mat_mul(
+        &super::parts::rot_z(0.5),
+        &super::parts::rot_y(std::f64::consts::FRAC_PI_4),
+    );
+    b.slab(Top, c, [s / 2.0, s / 2.0, s / 2.0], rot);
+    // A ball at the front left.
+    let rb = 0.15 * b.w.min(b.d);
+    b.ellipsoid(Cushion, [-0.45 * hw, 0.5 * hd, zp + rb], [rb, rb, rb]);
 }
