@@ -10,9 +10,9 @@ use crate::camera::Camera;
 /// A view whose objects' boxes cover less than this share of the frame is mostly bare wall or
 /// floor (box silhouettes overstate what chairs and tables hide, so this is generous).
 pub const BARE_COVER: f64 = 0.25;
-/// A blocker: an object covering more than [`BLOCKER_SHARE`] of the frame whose footprint stands
-/// nearer the camera than [`BLOCKER_PER_SIZE`] of its largest side (so it spans a wide angle),
-/// and within [`BLOCKER_NEAR`] metres, with the room at least [`BLOCKER_BEHIND`] metres further
+/// A blocker: an object covering more than `BLOCKER_SHARE` of the frame whose footprint stands
+/// nearer the camera than `BLOCKER_PER_SIZE` of its largest side (so it spans a wide angle),
+/// and within `BLOCKER_NEAR` metres, with the room at least `BLOCKER_BEHIND` metres further
 /// behind it (a lampshade before the sofa).
 pub const BLOCKER_SHARE: f64 = 0.05;
 pub const BLOCKER_PER_SIZE: f64 = 0.9;
@@ -63,7 +63,7 @@ pub fn is_panel(o: &ObjectBox) -> bool {
         && o.size[1] <= FLAT_RATIO * o.size[0].min(o.size[2])
 }
 
-/// The share of the frame of the panels that `cam` sees edge-on (beyond [`GRAZING_DEG`] from
+/// The share of the frame of the panels that `cam` sees edge-on (beyond `GRAZING_DEG` from
 /// their face or back), given each object's share of the frame.
 pub fn grazing_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
     let cos = GRAZING_DEG.to_radians().cos();
@@ -92,7 +92,7 @@ fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
 }
 
-/// The largest share of the frame a blocker covers (see [`BLOCKER_SHARE`]), 0 without one,
+/// The largest share of the frame a blocker covers (see `BLOCKER_SHARE`), 0 without one,
 /// given each object's share of the frame. What it stands before is the room: another object
 /// in frame, or the wall or ground edge the view looks at.
 pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
