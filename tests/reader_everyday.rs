@@ -3,15 +3,9 @@
 //! support whose count the reader works out, and places the knowledge base now knows (a post
 //! office, a call centre, boarding kennels). Prompts of no corpus.
 #![allow(clippy::unwrap_used, reason = "tests")]
-use dreamscene::plan::offline::plan_prompt;
+mod reading;
 use dreamscene::plan::spec::{RelationKind, SceneSpec};
-
-fn plan(prompt: &str) -> SceneSpec {
-    match plan_prompt(prompt) {
-        Ok(p) => p.spec,
-        Err(e) => panic!("{prompt}: {e}"),
-    }
-}
+use reading::plan;
 
 /// Instances of the categories whose name has `word` as a whole word.
 fn number(spec: &SceneSpec, word: &str) -> u32 {

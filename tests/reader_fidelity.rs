@@ -2,8 +2,10 @@
 //! break the reader before it was changed) through the offline planner, with the reading rules
 //! of the fidelity corpus (count, absent, fails, max_area) checked on the plan the way
 //! `shared/tools/check_fidelity.py` checks them; plus the examples of issue 21.
+mod reading;
 use dreamscene::plan::offline::plan_prompt;
 use dreamscene::plan::spec::SceneSpec;
+use reading::plan;
 use regex::Regex;
 use serde_json::Value;
 
@@ -94,12 +96,6 @@ fn own_prompts_are_read_the_way_people_mean_them() {
         "{held}/{total} rules held:\n{}",
         failed.join("\n")
     );
-}
-
-fn plan(prompt: &str) -> SceneSpec {
-    plan_prompt(prompt)
-        .unwrap_or_else(|e| panic!("{prompt}: {e}"))
-        .spec
 }
 
 /// The size the plan of `prompt` gives category `c`.

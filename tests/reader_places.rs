@@ -4,15 +4,9 @@
 //! tiny room holds things at floor level without room to walk round them; heaps, participles,
 //! area words, removal verbs and the seats a table already has are read the way people mean them.
 //! Prompts of no corpus.
-use dreamscene::plan::offline::plan_prompt;
+mod reading;
 use dreamscene::plan::spec::{Anchor, RelationKind, SceneSpec, SceneType};
-
-fn plan(prompt: &str) -> SceneSpec {
-    match plan_prompt(prompt) {
-        Ok(p) => p.spec,
-        Err(e) => panic!("{prompt}: {e}"),
-    }
-}
+use reading::plan;
 
 fn number(spec: &SceneSpec, word: &str) -> u32 {
     spec.objects

@@ -1,15 +1,9 @@
 //! What a placement phrase refers to when it names no object: a pronoun ("above it": the thing
 //! named before its subject and what is said with it) or a part of an object ("facing the fire":
 //! the fireplace), and seats said of each side of a table. None of these prompts is in a corpus.
-use dreamscene::plan::offline::plan_prompt;
+mod reading;
 use dreamscene::plan::spec::{RelationKind, SceneSpec};
-
-fn plan(prompt: &str) -> SceneSpec {
-    match plan_prompt(prompt) {
-        Ok(p) => p.spec,
-        Err(e) => panic!("{prompt}: {e}"),
-    }
-}
+use reading::plan;
 
 /// The relation kinds `spec` has between an instance of `subject` and one of `object`
 /// (categories).
