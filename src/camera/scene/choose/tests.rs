@@ -89,6 +89,18 @@ fn a_small_room_gets_a_wider_lens() {
     assert_eq!(view_fov(&open), SCENE_FOV_X, "open ground");
 }
 
+/// The offline plan of `prompt`, laid out at seed 0, and the eight render views chosen for it.
+fn eight_views(prompt: &str) -> (SceneBox, Vec<Camera>) {
+    let spec = crate::plan::offline::plan_prompt(prompt)
+        .expect("plans")
+        .spec;
+    let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(0))
+        .expect("lays out");
+    let scene = SceneBox::from_layout(&l);
+    let cams = render_views(&scene, 8, 64, 64);
+    (scene, cams)
+}
+
 #[test]
 fn views_vary_their_subject_and_see_it_from_the_front() {
     // Prompts the choice was not tuned on, indoor and out, small rooms and wide grounds. Before
@@ -104,13 +116,7 @@ fn views_vary_their_subject_and_see_it_from_the_front() {
     ];
     let mut backs = 0;
     for prompt in prompts {
-        let spec = crate::plan::offline::plan_prompt(prompt)
-            .expect("plans")
-            .spec;
-        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(0))
-            .expect("lays out");
-        let scene = SceneBox::from_layout(&l);
-        let cams = render_views(&scene, 8, 64, 64);
+        let (scene, cams) = eight_views(prompt);
         let stats: Vec<ViewStats> = cams.iter().map(|c| view_stats(&scene, c)).collect();
         let most = (0..scene.objects.len())
             .map(|k| stats.iter().filter(|s| s.subject == Some(k)).count())
@@ -144,13 +150,7 @@ fn views_stand_on_the_floor_look_where_the_room_looks_and_never_repeat() {
         ("a bedroom with a double bed and a desk", false),
     ];
     for (prompt, has_focal) in prompts {
-        let spec = crate::plan::offline::plan_prompt(prompt)
-            .expect("plans")
-            .spec;
-        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(0))
-            .expect("lays out");
-        let scene = SceneBox::from_layout(&l);
-        let cams = render_views(&scene, 8, 64, 64);
+        let (scene, cams) = eight_views(prompt);
         for c in &cams {
             let under = scene.objects.iter().find(|o| {
                 o.size[2] > FLAT
@@ -218,13 +218,7 @@ fn small_rooms_get_few_poor_views() {
     ];
     let (mut clean, mut bare, mut well, mut total) = (0, 0, 0, 0);
     for prompt in prompts {
-        let spec = crate::plan::offline::plan_prompt(prompt)
-            .expect("plans")
-            .spec;
-        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(0))
-            .expect("lays out");
-        let scene = SceneBox::from_layout(&l);
-        let cams = render_views(&scene, 8, 64, 64);
+        let (scene, cams) = eight_views(prompt);
         assert_eq!(cams.len(), 8, "{prompt}: eight views");
         let faults = crate::camera::scene::view_faults(&scene, &cams);
         clean += faults.iter().filter(|f| f.clean()).count();
