@@ -10,13 +10,18 @@
 #                    libonnxruntime_providers_webgpu.so (what scripts/setup.sh installs)
 #   .dev/bin.tar.xz  target/release/dreamscene and release test binaries named t_NN_<file>
 #                    (cargo test --release --no-run; built in /work/main, so that path is linked)
-#   .dev/carry/      scripts/dev/make_full_export.sh's carry (graphs + weights.json)
-# Usage there: bash scripts/dev/device_measure.sh [setup,doctor,bench,sd,unet,tests,scene]
+#   .dev/carry/      scripts/dev/make_full_export.sh's carry (graphs + weights.json);
+#                    CARRY=.dev/carry16 for the fp16 one (make_full_export.sh DIR fp16)
+# Usage there: bash scripts/dev/device_measure.sh [setup,doctor,bench,benchgen,sd,unet,variants,tests,scene]
+# `variants` times the UNet under each of $VARIANTS (';'-separated DREAMSCENE_WEBGPU_OPTIONS).
+# A step that would start after $BUDGET_S seconds (default 540) is skipped.
 set -u
 STEPS=${1:-setup,doctor,bench,sd,unet,tests,scene}
 R=$(pwd); O=${OUT:-/tmp/out}; mkdir -p $O
 log() { echo "== $(date -u +%T) $*"; }
-has() { [[ ",$STEPS," == *",$1,"* ]]; }
+T0=$(date +%s)
+has() { [[ ",$STEPS," == *",$1,"* ]] || return 1
+  if [ $(( $(date +%s) - T0 )) -gt ${BUDGET_S:-540} ]; then log "$1: not run (time)"; return 1; fi; }
 export HOME=/tmp/dshome; mkdir -p $HOME/.local/share/dreamscene/onnxruntime
 export NVICD=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
 log setup
@@ -44,17 +49,26 @@ peak() { # peak() LABEL CMD... : runs CMD, samples its host RSS, prints peak hos
   log "$label rc=$rc peak host ${hw} KiB, peak device ${g} MiB (whole GPU)"
 }
 if has doctor; then log doctor; timeout 60 $D doctor --provider webgpu 2>&1 | tail -30; timeout 60 $D doctor 2>&1 | grep -i -E "provider|auto|device|vulkan" | head; fi
-if has bench; then log bench; timeout 60 $D bench --runs 3 2>&1 | tail -30; timeout 70 $D bench --generate --runs 2 2>&1 | tail -20; fi
+if has bench; then log bench; timeout ${BENCH_S:-60} $D bench --runs 3 2>&1 | tail -30; fi
+if has benchgen; then log benchgen; timeout 70 $D bench --generate --runs 2 2>&1 | tail -20; fi
 if has sd; then
-  log fill; M=/tmp/full; rm -rf $M; cp -r .dev/carry $M
+  log fill; M=/tmp/full; rm -rf $M; cp -r ${CARRY:-.dev/carry} $M
   timeout 240 python3 scripts/dev/weightless.py fill $M 2>&1 | tail -5; du -sh $M
-  log sd-generate; peak sdgen timeout ${SD_S:-240} $D bench --generate --prior sd --models $M --provider webgpu --runs 1 2>&1 | tail -20
+  log sd-generate; peak sdgen timeout ${SD_S:-240} $D bench --generate --prior sd --models $M --provider webgpu --runs 1 --modes ${SD_MODES:-both} 2>&1 | tail -20
 fi
 if has unet; then log sd-unet; peak unet timeout 100 $D bench --unet --models /tmp/full --provider webgpu --runs 2 2>&1 | tail -20
+fi
+if has variants; then
+  IFS=';' read -ra VS <<< "${VARIANTS:-;validationMode=disabled;preferredLayout=NCHW}"
+  for v in "${VS[@]}"; do log "unet variant '$v'"
+    [ $(( $(date +%s) - T0 )) -gt ${BUDGET_S:-540} ] && { log "variant '$v': not run (time)"; continue; }
+    DREAMSCENE_WEBGPU_OPTIONS="$v" timeout 90 $D bench --unet --models /tmp/full --provider webgpu --runs 2 2>&1 | tail -9
+  done
 fi
 if has tests; then
   log tests; export DREAMSCENE_VALIDATION=1 DREAMSCENE_REQUIRE_VALIDATION=1
   t0=$(date +%s); for t in target/release/t_*; do n=${t##*/t_}; s=$(date +%s)
+    [ "${n%%_*}" -lt "${TESTS_FROM:-0}" ] && continue
     [ $((s-t0)) -gt ${TESTS_S:-170} ] && { echo "$n: not run (time)"; continue; }
     r=$(timeout 60 $t --test-threads 4 2>&1 | grep -E "^test result|panicked|FAILED|failed" | head -5)
     echo "$n ($(( $(date +%s)-s )) s): $r"; done

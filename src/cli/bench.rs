@@ -21,6 +21,10 @@ pub struct Args {
     /// kernels and host, batched and per view).
     #[arg(long, default_value = "oracle", value_parser = ["oracle", "sd"], requires = "generate")]
     pub prior: String,
+    /// Which sd iterations --generate --prior sd times: both (batched and per view), batched
+    /// or per-view.
+    #[arg(long, default_value = "both", value_parser = ["both", "batched", "per-view"])]
+    pub modes: String,
     /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
     #[arg(long, env = "DREAMSCENE_MODELS")]
     pub models: Option<PathBuf>,
@@ -49,7 +53,7 @@ pub fn run(a: Args) -> Result<()> {
     if a.unet {
         bench_unet(a.json, a.models, a.provider, a.latent, a.runs)
     } else if a.generate && a.prior == "sd" {
-        bench_generate_sd(a.json, a.models, a.provider, a.runs)
+        bench_generate_sd(a.json, a.models, a.provider, a.runs, &a.modes)
     } else if a.generate {
         bench_generate(a.json, a.runs)
     } else {
@@ -105,14 +109,20 @@ fn bench_generate_sd(
     models: Option<PathBuf>,
     provider: Provider,
     runs: usize,
+    modes: &str,
 ) -> Result<()> {
+    let per_view_modes: &[bool] = match modes {
+        "batched" => &[false],
+        "per-view" => &[true],
+        _ => &[false, true],
+    };
     let Some(dir) = models else {
         bail!("bench --generate --prior sd needs --models DIR (or DREAMSCENE_MODELS)");
     };
     let ctx = open_device()?;
     let mut figures = vec![];
     for size in SD_SIZES {
-        for per_view in [false, true] {
+        for &per_view in per_view_modes {
             let f = dreamscene::bench_sd::bench_generate_sd(
                 &ctx, &dir, provider, 20_000, 4, size, runs, per_view,
             )?;

@@ -73,7 +73,68 @@ pub fn devices(env: &Environment) -> Result<Vec<ort::device::Device<'_>>, String
     Ok(devs)
 }
 
-/// The session options of the provider: Dawn on Vulkan.
+/// The session options of the provider: Dawn on Vulkan, then the `KEY=VALUE` pairs of
+/// `$DREAMSCENE_WEBGPU_OPTIONS` (comma-separated, e.g. `validationMode=disabled,preferredLayout=NCHW`),
+/// which override the defaults: the provider's settings can be measured without a rebuild.
 pub fn options() -> Vec<(String, String)> {
-    vec![(format!("{EP}.dawnBackendType"), "Vulkan".to_string())]
+    let extra = std::env::var("DREAMSCENE_WEBGPU_OPTIONS").unwrap_or_default();
+    let (options, bad) = with_overrides(&extra);
+    for b in bad {
+        eprintln!("warning: DREAMSCENE_WEBGPU_OPTIONS: `{b}` is not KEY=VALUE; ignored");
+    }
+    options
+}
+
+/// The default options with `extra`'s pairs over them, each key prefixed by the EP's name,
+/// and the pairs that are not `KEY=VALUE`.
+fn with_overrides(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
+    let mut options = vec![("dawnBackendType".to_string(), "Vulkan".to_string())];
+    let mut bad = vec![];
+    for pair in extra.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        match pair.split_once('=') {
+            Some((k, v)) if !k.trim().is_empty() => {
+                let (k, v) = (k.trim().to_string(), v.trim().to_string());
+                match options.iter_mut().find(|(key, _)| *key == k) {
+                    Some(o) => o.1 = v,
+                    None => options.push((k, v)),
+                }
+            }
+            _ => bad.push(pair.to_string()),
+        }
+    }
+    let options = options
+        .into_iter()
+        .map(|(k, v)| (format!("{EP}.{k}"), v))
+        .collect();
+    (options, bad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overrides_replace_defaults_and_add_keys() {
+        let (o, bad) = with_overrides(" validationMode=disabled, dawnBackendType=D3D12,oops,,=x");
+        assert_eq!(
+            o,
+            vec![
+                (format!("{EP}.dawnBackendType"), "D3D12".to_string()),
+                (format!("{EP}.validationMode"), "disabled".to_string()),
+            ],
+            "an override replaces the default and a new key is added"
+        );
+        assert_eq!(
+            bad,
+            vec!["oops".to_string(), "=x".to_string()],
+            "bad pairs are reported"
+        );
+        let (o, bad) = with_overrides("");
+        assert_eq!(
+            o,
+            vec![(format!("{EP}.dawnBackendType"), "Vulkan".to_string())],
+            "defaults"
+        );
+        assert!(bad.is_empty(), "nothing to report");
+    }
 }
