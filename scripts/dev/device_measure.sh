@@ -12,6 +12,7 @@
 #                    (cargo test --release --no-run; built in /work/main, so that path is linked)
 #   .dev/carry/      scripts/dev/make_full_export.sh's carry (graphs + weights.json);
 #                    CARRY=.dev/carry16 for the fp16 one (make_full_export.sh DIR fp16)
+#   .dev/taesd/      TAESD=.dev/taesd: scripts/dev/make_taesd_shaped.py's pair, added to the models
 # Usage there: bash scripts/dev/device_measure.sh [setup,doctor,bench,benchgen,sd,unet,variants,tests,scene]
 # `variants` times the UNet under each of $VARIANTS (';'-separated DREAMSCENE_WEBGPU_OPTIONS).
 # A step that would start after $BUDGET_S seconds (default 540) is skipped.
@@ -54,6 +55,8 @@ if has benchgen; then log benchgen; timeout 70 $D bench --generate --runs 2 2>&1
 if has sd; then
   log fill; M=/tmp/full; rm -rf $M; cp -r ${CARRY:-.dev/carry} $M
   timeout 240 python3 scripts/dev/weightless.py fill $M 2>&1 | tail -5; du -sh $M
+  # TAESD=DIR: a tiny autoencoder pair (scripts/dev/make_taesd_shaped.py) for the per-iteration codec
+  [ -n "${TAESD:-}" ] && cp -r $TAESD/taesd_encoder $TAESD/taesd_decoder $M/
   log sd-generate; peak sdgen timeout ${SD_S:-240} $D bench --generate --prior sd --models $M --provider webgpu --runs 1 --modes ${SD_MODES:-both} 2>&1 | tail -20
 fi
 if has unet; then log sd-unet; peak unet timeout 100 $D bench --unet --models /tmp/full --provider webgpu --runs 2 2>&1 | tail -20
