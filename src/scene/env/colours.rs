@@ -232,6 +232,8 @@ fn scene_kind(text: &str) -> Option<&'static str> {
 fn words(text: &str) -> Vec<String> {
     text.to_lowercase()
         .split(|c: char| !(c.is_alphanumeric() || c == '-' || c == '\''))
+        // a possessive names its noun: "a pirate ship's deck" is a pirate ship's scene
+        .map(|w| w.strip_suffix("'s").unwrap_or(w).trim_matches('\''))
         .filter(|w| !w.is_empty())
         .map(str::to_string)
         .collect()
