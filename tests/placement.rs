@@ -688,3 +688,54 @@ fn partners_keep_room_for_what_they_place() {
         );
     }
 }
+
+/// A big corner piece (a shower cabin, an L-shaped desk) stands square in its corner, not
+/// turned 45 degrees across twice its floor; a small one (a plant) may face out diagonally.
+/// "A shower room" is a bathroom, not a second shower. Prompts written before the rule.
+#[test]
+fn big_corner_pieces_stand_square_in_their_corners() {
+    for (prompt, category) in [
+        (
+            "a shower room with a shower in the corner, a toilet and a sink",
+            "shower",
+        ),
+        (
+            "a study with an L-shaped desk in the corner, an office chair and a bookcase",
+            "l-shaped desk",
+        ),
+        ("an en suite with a shower, a toilet and a basin", "shower"),
+    ] {
+        for seed in 0..3 {
+            let l = lay(prompt, seed);
+            let found = find(&l, category);
+            assert_eq!(found.len(), 1, "{prompt} (seed {seed}): one {category}");
+            let o = found[0];
+            let off_square = (o.yaw.rem_euclid(90.0)).min(90.0 - o.yaw.rem_euclid(90.0));
+            assert!(
+                off_square < 1.0,
+                "{prompt} (seed {seed}): {category} turned {} degrees",
+                o.yaw
+            );
+            let (hw, hd) = (0.5 * l.room.size[0], 0.5 * l.room.size[1]);
+            let (w, d) = if o.yaw.rem_euclid(180.0) < 45.0 || o.yaw.rem_euclid(180.0) > 135.0 {
+                (o.size[0], o.size[1])
+            } else {
+                (o.size[1], o.size[0])
+            };
+            let gx = hw - (o.position[0].abs() + 0.5 * w);
+            let gy = hd - (o.position[1].abs() + 0.5 * d);
+            assert!(
+                gx < 0.35 && gy < 0.35,
+                "{prompt} (seed {seed}): {category} {gx:.2} and {gy:.2} m from its corner's walls"
+            );
+        }
+    }
+    let plan = plan_prompt("a shower room with a shower in the corner, a toilet and a sink")
+        .expect("planned");
+    assert!(
+        plan.spec.objects.contains_key("bathroom sink")
+            && !plan.spec.objects.contains_key("kitchen sink"),
+        "a shower room's sink is a bathroom sink: {:?}",
+        plan.spec.objects.keys().collect::<Vec<_>>()
+    );
+}

@@ -49,6 +49,9 @@ pub(super) struct Pose {
     pub(super) z: f64,
 }
 
+/// A corner thing at least this wide on both sides (metres) stands square in its corner.
+const FLUSH_CORNER_SIDE: f64 = 0.8;
+
 pub(super) fn yaw_facing(d: [f64; 2]) -> f64 {
     // facing (-sin yaw, cos yaw) = d / |d|
     (-d[0]).atan2(d[1]).to_degrees()
@@ -143,27 +146,37 @@ impl Problem {
                 }
             }
             Anchor::Corner => {
-                // Facing diagonally out of each corner, its box against both walls.
+                // Its box against both walls of each corner: a small thing (a plant, a coat
+                // rack, a corner shelf) faces diagonally out of it; a big one (a shower cabin,
+                // an L-shaped desk) stands square in it, facing along either wall, since a
+                // footprint turned 45 degrees takes twice its floor.
+                let square = s[0].min(s[1]) >= FLUSH_CORNER_SIDE;
                 for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
-                    let yaw = yaw_facing([-sx, -sy]);
-                    let probe = Box2::new([0.0, 0.0], yaw, [s[0], s[1]], 0.0, s[2]);
-                    let [x0, y0, x1, y1] = probe.aabb();
-                    for inset in [WALL_MARGIN, 0.5 * CORNER_DISTANCE] {
-                        let cx = if sx < 0.0 {
-                            -hw + inset - x0
-                        } else {
-                            hw - inset - x1
-                        };
-                        let cy = if sy < 0.0 {
-                            -hd + inset - y0
-                        } else {
-                            hd - inset - y1
-                        };
-                        out.push(Pose {
-                            c: [cx, cy],
-                            yaw,
-                            z: 0.0,
-                        });
+                    let yaws = if square {
+                        vec![yaw_facing([-sx, 0.0]), yaw_facing([0.0, -sy])]
+                    } else {
+                        vec![yaw_facing([-sx, -sy])]
+                    };
+                    for yaw in yaws {
+                        let probe = Box2::new([0.0, 0.0], yaw, [s[0], s[1]], 0.0, s[2]);
+                        let [x0, y0, x1, y1] = probe.aabb();
+                        for inset in [WALL_MARGIN, 0.5 * CORNER_DISTANCE] {
+                            let cx = if sx < 0.0 {
+                                -hw + inset - x0
+                            } else {
+                                hw - inset - x1
+                            };
+                            let cy = if sy < 0.0 {
+                                -hd + inset - y0
+                            } else {
+                                hd - inset - y1
+                            };
+                            out.push(Pose {
+                                c: [cx, cy],
+                                yaw,
+                                z: 0.0,
+                            });
+                        }
                     }
                 }
             }
