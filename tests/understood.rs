@@ -122,3 +122,22 @@ fn plan_prints_and_records_what_was_understood() {
     dreamscene::plan::spec::SceneSpec::read(&dir.as_path().join("spec.json")).unwrap();
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A description says each word once: the adjectives the user gave, minus those the category's
+/// name already has ("a big potted palm" is not "a big potted potted plant").
+#[test]
+fn descriptions_do_not_repeat_the_name_s_words() {
+    for prompt in [
+        "a florist's with a counter and a big potted palm by the window",
+        "a hallway with a tall potted fern and a coat rack",
+        "a kitchen with a big wooden dining table",
+    ] {
+        let p = plan(prompt);
+        for (c, o) in &p.spec.objects {
+            let words: Vec<&str> = o.description.split_whitespace().collect();
+            for pair in words.windows(2) {
+                assert_ne!(pair[0], pair[1], "{prompt}: {c}: {}", o.description);
+            }
+        }
+    }
+}

@@ -75,7 +75,14 @@ pub(super) fn describe(o: &ObjectKind, adjectives: &[String], styles: &[String])
     if adjectives.is_empty() {
         words.push(o.description.clone());
     } else {
-        words.extend(adjectives.iter().cloned());
+        // an adjective the name already says ("a potted plant" said as "a potted palm") once
+        let named: Vec<&str> = o.category.split_whitespace().collect();
+        words.extend(
+            adjectives
+                .iter()
+                .filter(|a| !named.contains(&a.as_str()))
+                .cloned(),
+        );
         words.push(o.category.clone());
     }
     let body = words.join(" ");
