@@ -141,3 +141,21 @@ fn descriptions_do_not_repeat_the_name_s_words() {
         }
     }
 }
+
+/// "A wall of mirrors" is one mirror panel over a wall, not two small mirrors. Prompts written
+/// before the category.
+#[test]
+fn a_wall_of_mirrors_is_one_mirror_wall() {
+    for prompt in [
+        "a gym with three treadmills and a wall of mirrors",
+        "a dance room with a mirrored wall",
+        "a hallway with a wall-to-wall mirror and a bench",
+    ] {
+        let p = plan(prompt);
+        assert_eq!(why(&p, "mirror wall").count, 1, "{prompt}");
+        assert!(
+            !p.spec.objects.contains_key("mirror"),
+            "{prompt}: no small mirrors"
+        );
+    }
+}
