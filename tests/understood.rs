@@ -159,3 +159,14 @@ fn a_wall_of_mirrors_is_one_mirror_wall() {
         );
     }
 }
+
+/// "Buckets of flowers" are flower buckets (a bucket holding cut flowers), not empty pails; a
+/// bucket alone stays a bucket. Prompts written before the category.
+#[test]
+fn buckets_of_flowers_hold_flowers() {
+    let p = plan("a flower stall with four buckets of flowers and a counter");
+    assert_eq!(why(&p, "flower bucket").count, 4, "four flower buckets");
+    assert!(!p.spec.objects.contains_key("bucket"), "no empty pails");
+    let p = plan("a utility room with a washing machine and a bucket");
+    assert_eq!(why(&p, "bucket").count, 1, "a bucket alone");
+}
