@@ -89,7 +89,7 @@ pub fn barrister_bookcase(b: &mut Builder) {
 
 /// A supermarket freezer case: a white chest on a dark kick plinth with a bumper rail along
 /// its front, a frosty well full of boxes and tubs seen through two sliding glass lids in a
-/// steel frame, a lit price strip along the front edge. A tall one is a glass-door freezer.
+/// steel frame, a lit price strip along the front edge and a lit header along the back. A tall one is a glass-door freezer.
 pub fn freezer_case(b: &mut Builder) {
     if b.h > 1.4 {
         glass_fridge(b);
@@ -102,13 +102,15 @@ pub fn freezer_case(b: &mut Builder) {
         [-hw + 0.03, -hd + 0.03, 0.0],
         [hw - 0.03, hd - 0.03, kick],
     );
+    // The chest stops below the lit header along its back.
+    let hc = 0.85 * h;
     // The four walls of the chest round an open well.
-    b.cuboid(Body, [-hw, hd - wall, kick], [hw, hd, h - 0.03]);
-    b.cuboid(Body, [-hw, -hd, kick], [hw, -hd + wall, h - 0.03]);
+    b.cuboid(Body, [-hw, hd - wall, kick], [hw, hd, hc - 0.03]);
+    b.cuboid(Body, [-hw, -hd, kick], [hw, -hd + wall, hc - 0.03]);
     for x in [-hw, hw - wall] {
-        b.cuboid(Body, [x, -hd, kick], [x + wall, hd, h - 0.03]);
+        b.cuboid(Body, [x, -hd, kick], [x + wall, hd, hc - 0.03]);
     }
-    let floor = 0.62 * h;
+    let floor = 0.62 * hc;
     b.cuboid(
         Interior,
         [-hw + wall, -hd + wall, kick],
@@ -127,17 +129,17 @@ pub fn freezer_case(b: &mut Builder) {
         goods(b, x, y, z, s, &mut v);
     }
     // Bumper rail and a lit price strip along the front.
-    b.cuboid(Metal, [-hw, hd - 0.005, 0.35 * h], [hw, hd, 0.42 * h]);
+    b.cuboid(Metal, [-hw, hd - 0.005, 0.35 * hc], [hw, hd, 0.42 * hc]);
     b.cuboid(
         Light,
-        [-hw + wall, hd - 0.004, h - 0.1],
-        [hw - wall, hd, h - 0.06],
+        [-hw + wall, hd - 0.004, hc - 0.1],
+        [hw - wall, hd, hc - 0.06],
     );
     // The lids: two sliding panes in a steel frame, both slid over the left half (the back one
     // a little higher), so the right half of the well is open.
-    let zl = h - 0.03;
-    edges(b, Frame, [-hw, -hd, zl], [hw, hd, h], 0.025);
-    b.cuboid(Frame, [-0.0125, -hd, zl], [0.0125, hd, h]);
+    let zl = hc - 0.03;
+    edges(b, Frame, [-hw, -hd, zl], [hw, hd, hc], 0.025);
+    b.cuboid(Frame, [-0.0125, -hd, zl], [0.0125, hd, hc]);
     b.cuboid(
         Pane,
         [-hw + 0.02, -hd + 0.02, zl + 0.006],
@@ -152,6 +154,13 @@ pub fn freezer_case(b: &mut Builder) {
         Metal,
         [0.0, -hd + 0.02, zl + 0.02],
         [0.04, hd - 0.02, zl + 0.027],
+    );
+    // The lit header standing along the back edge.
+    b.cuboid(Body, [-hw, -hd, hc - 0.03], [hw, -hd + 0.05, h]);
+    b.cuboid(
+        Light,
+        [-hw + 0.05, -hd + 0.05, hc + 0.2 * (h - hc)],
+        [hw - 0.05, -hd + 0.055, h - 0.2 * (h - hc)],
     );
 }
 
