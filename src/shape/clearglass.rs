@@ -222,6 +222,57 @@ pub fn fume_hood(b: &mut Builder) {
             }
         }
     }
+    // A shelf of reagent bottles along the back, and a retort stand holding a round flask
+    // over a burner, both standing up behind the sash's glass.
+    let zsh = zt + 0.5 * (zh - zt);
+    let ysh = -hd + 0.03;
+    b.cuboid(
+        Frame,
+        [-hw + side, ysh, zsh - 0.02],
+        [hw - side, ysh + 0.16, zsh],
+    );
+    let mut v = 0;
+    let rb = 0.03;
+    let nb = ((b.w - 2.0 * side - 0.1) / (3.0 * rb)).floor().max(1.0) as usize;
+    for k in 0..nb {
+        let x = -hw + side + 0.05 + (k as f64 + 0.5) * (b.w - 2.0 * side - 0.1) / nb as f64;
+        let hb = 0.14 + 0.06 * (k % 3) as f64;
+        b.revolved(
+            Books,
+            v,
+            [x, ysh + 0.08, zsh],
+            IDENTITY,
+            1.0,
+            frustum_profile(rb, rb, hb),
+        );
+        b.cylinder(Top, [x, ysh + 0.08, zsh + hb], 0.5 * rb, 0.03);
+        v += 1;
+    }
+    let xr = 0.6 * hw;
+    b.cuboid(
+        Metal,
+        [xr - 0.1, -0.3 * hd, zt],
+        [xr + 0.1, -0.1 * hd, zt + 0.015],
+    );
+    b.cylinder(Metal, [xr, -0.25 * hd, zt], 0.01, 0.75 * (zh - zt));
+    let zf = zt + 0.55 * (zh - zt);
+    b.rod(
+        Metal,
+        [xr, -0.25 * hd, zf + 1.2 * r],
+        [xr - 0.2, -0.25 * hd, zf + 1.2 * r],
+        0.008,
+    );
+    b.ellipsoid(
+        Glass,
+        [xr - 0.2, -0.25 * hd, zf],
+        [1.3 * r, 1.3 * r, 1.3 * r],
+    );
+    b.ellipsoid(
+        Water,
+        [xr - 0.2, -0.25 * hd, zf - 0.5 * r],
+        [1.0 * r, 1.0 * r, 0.7 * r],
+    );
+    b.cylinder(Glass, [xr - 0.2, -0.25 * hd, zf + r], 0.35 * r, 1.2 * r);
     // The sash: raised to about half the opening, a frame round its glass, the handle bar.
     let (z0, z1) = (zt + 0.45 * (zh - zt), zh + 0.2 * (h - zh));
     let yf = hd - 0.03;

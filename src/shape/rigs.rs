@@ -252,7 +252,7 @@ fn lying_pod(b: &mut Builder, hw: f64, hd: f64, h: f64) {
     b.revolved(
         Light,
         0,
-        [0.0, 0.0, zc - 0.01],
+        [0.0, 0.0, zc + 0.002],
         IDENTITY,
         ay,
         vec![[0.0, 0.0], [0.8 * hw, 0.0], [0.8 * hw, 0.005], [0.0, 0.005]],
