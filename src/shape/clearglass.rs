@@ -231,7 +231,6 @@ pub fn fume_hood(b: &mut Builder) {
         [-hw + side, ysh, zsh - 0.02],
         [hw - side, ysh + 0.16, zsh],
     );
-    let mut v = 0;
     let rb = 0.03;
     let nb = ((b.w - 2.0 * side - 0.1) / (3.0 * rb)).floor().max(1.0) as usize;
     for k in 0..nb {
@@ -239,14 +238,13 @@ pub fn fume_hood(b: &mut Builder) {
         let hb = 0.14 + 0.06 * (k % 3) as f64;
         b.revolved(
             Books,
-            v,
+            k as u32,
             [x, ysh + 0.08, zsh],
             IDENTITY,
             1.0,
             frustum_profile(rb, rb, hb),
         );
         b.cylinder(Top, [x, ysh + 0.08, zsh + hb], 0.5 * rb, 0.03);
-        v += 1;
     }
     let xr = 0.6 * hw;
     b.cuboid(
