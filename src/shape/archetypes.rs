@@ -33,6 +33,7 @@ use super::sculpted as sc;
 use super::seats as se;
 use super::skeleton as sk;
 use super::sport as sp;
+use super::stands as sd;
 use super::structures as st;
 use super::things as t;
 use super::utility as ut;
@@ -433,6 +434,10 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("forklift", rigs::forklift, [Body], [Body => [0.95, 0.72, 0.08], Metal => [0.22, 0.22, 0.24], Frame => [0.12, 0.12, 0.13], Seat => [0.10, 0.10, 0.11], Handle => STEEL, Light => [1.0, 0.62, 0.12], Tyre => BLACK]),
     arch!("staff", rigs::staff, [Trunk], [Trunk => [0.42, 0.29, 0.17], Metal => [0.15, 0.15, 0.16], Light => [0.45, 0.80, 1.0]]),
     arch!("pod", rigs::pod, [Body], [Body => [0.90, 0.91, 0.92], Frame => [0.25, 0.26, 0.28], Light => [0.35, 0.90, 1.0], Pane => [0.78, 0.92, 0.98], Canvas => [0.55, 0.65, 0.75], Metal => [0.45, 0.46, 0.48], Door => [0.80, 0.81, 0.82], Glass => [0.40, 0.70, 0.85]]),
+    arch!("music_stand", sd::music_stand, [Metal], [Metal => [0.10, 0.10, 0.11], Canvas => [0.96, 0.94, 0.88], BlackKeys => [0.15, 0.15, 0.16]]),
+    arch!("iv_stand", sd::iv_stand, [Metal], [Metal => STEEL, Tyre => BLACK, Pane => [0.88, 0.92, 0.95], Water => [0.82, 0.90, 0.96], Canvas => [0.90, 0.92, 0.94], Body => [0.90, 0.90, 0.88], Screen => [0.10, 0.30, 0.22]]),
+    arch!("traffic_light", sd::traffic_light, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.25, 0.26, 0.27], Light => [0.95, 0.12, 0.08], Top => [1.0, 0.68, 0.05], Seat => [0.10, 0.85, 0.35]]),
+    arch!("gramophone", sd::gramophone, [Metal], [Metal => BRASS, Trunk => [0.40, 0.22, 0.12], Frame => [0.30, 0.17, 0.09], Interior => [0.35, 0.25, 0.12]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

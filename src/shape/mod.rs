@@ -46,6 +46,7 @@ mod sculpted;
 mod seats;
 mod skeleton;
 mod sport;
+mod stands;
 mod structures;
 mod things;
 mod utility;
