@@ -21,6 +21,7 @@ use super::hangings as hg;
 use super::heritage as he;
 use super::household as ho;
 use super::machines as ma;
+use super::markers as mr;
 use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
@@ -438,6 +439,10 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("iv_stand", sd::iv_stand, [Metal], [Metal => STEEL, Tyre => BLACK, Pane => [0.88, 0.92, 0.95], Water => [0.82, 0.90, 0.96], Canvas => [0.90, 0.92, 0.94], Body => [0.90, 0.90, 0.88], Screen => [0.10, 0.30, 0.22]]),
     arch!("traffic_light", sd::traffic_light, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.25, 0.26, 0.27], Light => [0.95, 0.12, 0.08], Top => [1.0, 0.68, 0.05], Seat => [0.10, 0.85, 0.35]]),
     arch!("gramophone", sd::gramophone, [Metal], [Metal => BRASS, Trunk => [0.40, 0.22, 0.12], Frame => [0.30, 0.17, 0.09], Interior => [0.35, 0.25, 0.12]]),
+    arch!("headstone", mr::headstone, [Body], [Body => [0.58, 0.58, 0.56], Stone => [0.50, 0.49, 0.46], Interior => [0.22, 0.22, 0.22]]),
+    arch!("flagpole", mr::flagpole, [Upholstery], [Upholstery => [0.80, 0.12, 0.14], Cushion => [0.95, 0.95, 0.94], Metal => [0.78, 0.79, 0.80], Handle => [0.85, 0.70, 0.30], Stone => [0.62, 0.62, 0.60]]),
+    arch!("portable_toilet", mr::portable_toilet, [Body, Door], [Body => [0.15, 0.38, 0.72], Door => [0.17, 0.42, 0.78], Top => [0.92, 0.92, 0.90], Frame => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Handle => [0.85, 0.85, 0.85], Seat => [0.15, 0.75, 0.30], Interior => [0.08, 0.10, 0.14]]),
+    arch!("projector", mr::projector, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.25, 0.25, 0.27], Glass => [0.15, 0.20, 0.28], Interior => [0.30, 0.30, 0.32], Light => [0.35, 0.80, 1.0]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

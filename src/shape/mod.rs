@@ -34,6 +34,7 @@ mod hangings;
 mod heritage;
 mod household;
 mod machines;
+mod markers;
 mod market;
 pub mod materials;
 mod more;
