@@ -214,3 +214,72 @@ fn every_archetype_has_a_silhouette_of_its_own() {
     );
     assert!(alike.is_empty(), "archetypes that look alike: {alike:#?}");
 }
+
+/// Of the cells of a view where see-through glass ([`Role::Pane`]) is the nearest surface, the
+/// share where the nearest surface behind it is something held (books, goods, plants, water, a
+/// glow, a sleeper), not a carcass, a shelf back or a frame. Looking down the axis `axis` (1:
+/// from the front, +y; 2: from above, +z) over `n` × `n` cells of the size box.
+fn held_behind_glass(category: &str, axis: usize, n: usize) -> (usize, f64) {
+    let kb = KnowledgeBase::builtin();
+    let o = kb.object(category).expect("a knowledge-base category");
+    let size = o.size;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+    let diag = size.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let (a, b) = if axis == 1 { (0, 2) } else { (0, 1) };
+    let lo = [-size[0] / 2.0, -size[1] / 2.0, 0.0];
+    // Per cell: the nearest pane's depth, and the nearest other surface's depth and role.
+    let mut pane = vec![f64::NEG_INFINITY; n * n];
+    let mut other: Vec<(f64, Option<Role>)> = vec![(f64::NEG_INFINITY, None); n * n];
+    for part in parts_described(category, size, &o.description).unwrap_or_default() {
+        let mut s = vec![];
+        part.prim.sample(diag / 120.0, &mut rng, &mut s);
+        for p in s.iter().map(|s| s.pos) {
+            let cell = |k: usize| (((p[k] - lo[k]) / size[k] * n as f64) as usize).min(n - 1);
+            let i = cell(a) * n + cell(b);
+            if part.role == Role::Pane {
+                pane[i] = pane[i].max(p[axis]);
+            } else if p[axis] > other[i].0 {
+                other[i] = (p[axis], Some(part.role));
+            }
+        }
+    }
+    let fixed = [
+        Role::Body,
+        Role::Interior,
+        Role::Frame,
+        Role::Door,
+        Role::Top,
+        Role::Metal,
+        Role::Handle,
+    ];
+    let glazed: Vec<usize> = (0..n * n).filter(|i| pane[*i] > other[*i].0).collect();
+    let held = glazed
+        .iter()
+        .filter(|i| other[**i].1.is_some_and(|r| !fixed.contains(&r)))
+        .count();
+    (glazed.len(), held as f64 / glazed.len().max(1) as f64)
+}
+
+#[test]
+fn glass_that_must_be_seen_through_shows_what_it_holds() {
+    // A glass case drawn with opaque tinted glass, or empty behind its glass, fails: its glass
+    // is no pane, or a bare shelf back shows through it.
+    let cases = [
+        ("bookcase with doors", 1),
+        ("freezer case", 2),
+        ("fume hood", 1),
+        ("terrarium", 2),
+        ("crystal ball", 1),
+        ("blender", 1),
+        ("stasis pod", 2),
+    ];
+    let mut poor = vec![];
+    for (category, axis) in cases {
+        let (cells, share) = held_behind_glass(category, axis, 24);
+        eprintln!("{category}: {cells} glazed cells, {share:.2} show what it holds");
+        if cells < 24 || share < 0.3 {
+            poor.push(format!("{category}: {cells} glazed cells, {share:.2} held"));
+        }
+    }
+    assert!(poor.is_empty(), "glass that hides what it holds: {poor:#?}");
+}

@@ -4,6 +4,7 @@
 use super::appliances as a;
 use super::barriers as ba;
 use super::cases as c;
+use super::clearglass as cg;
 use super::crafts as cr;
 use super::daily as d;
 use super::forms as fo;
@@ -12,6 +13,7 @@ use super::furniture as f;
 use super::gadgets as gd;
 use super::games as gm;
 use super::garden as ga;
+use super::gizmos as gi;
 use super::glasshouse as gh;
 use super::glazed as gz;
 use super::gym;
@@ -19,17 +21,20 @@ use super::hangings as hg;
 use super::heritage as he;
 use super::household as ho;
 use super::machines as ma;
+use super::markers as mr;
 use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::picnic as pc;
 use super::play as pl;
+use super::rigs;
 use super::rocks;
 use super::sculpted as sc;
 use super::seats as se;
 use super::skeleton as sk;
 use super::sport as sp;
+use super::stands as sd;
 use super::structures as st;
 use super::things as t;
 use super::utility as ut;
@@ -250,7 +255,6 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("dresser", c::dresser, [Body, Door, Top], []),
     arch!("wardrobe", c::wardrobe, [Body, Door, Top], []),
     arch!("sideboard", c::sideboard, [Body, Door, Top], []),
-    arch!("glass_cabinet", c::glass_cabinet, [Body, Top], []),
     arch!("shelf", c::shelf, [Frame], [Interior => DARK_WOOD]),
     arch!("rack", c::rack, [Frame], [Frame => [0.40, 0.41, 0.43]]),
     arch!("floor_lamp", c::floor_lamp, [Shade], []),
@@ -277,7 +281,6 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
     arch!("cylinder", m::cylinder, [Body], []),
-    arch!("sphere", m::sphere, [Body], [Body => [0.55, 0.53, 0.50]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
     arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
     arch!("boat", m::boat, [Body], [Body => [0.50, 0.33, 0.20], Frame => [0.62, 0.47, 0.30]]),
@@ -419,6 +422,27 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("printer_3d", gd::printer_3d, [Frame], [Frame => [0.12, 0.12, 0.13], Body => [0.18, 0.18, 0.19], Top => [0.30, 0.30, 0.32], Metal => STEEL, Screen => [0.10, 0.22, 0.32], Upholstery => [0.95, 0.50, 0.10]]),
     arch!("generator", gd::generator, [Body], [Body => [0.90, 0.68, 0.10], Frame => [0.12, 0.12, 0.13], Metal => [0.45, 0.46, 0.48], Top => [0.15, 0.15, 0.16], Tyre => BLACK, Interior => BLACK, Screen => [0.05, 0.05, 0.05]]),
     arch!("radiator", gd::radiator, [Body], [Body => WHITE, Metal => STEEL, Handle => WHITE]),
+    arch!("barrister_bookcase", cg::barrister_bookcase, [Body, Top, Frame], [Body => [0.42, 0.26, 0.15], Top => [0.40, 0.24, 0.14], Frame => [0.40, 0.24, 0.14], Interior => [0.20, 0.13, 0.08], Handle => BRASS]),
+    arch!("freezer_case", cg::freezer_case, [Body], [Body => WHITE, Interior => [0.74, 0.84, 0.90], Frame => STEEL, Metal => [0.30, 0.31, 0.33], Light => [0.85, 0.93, 1.0], Pane => [0.80, 0.90, 0.96]]),
+    arch!("fume_hood", cg::fume_hood, [Body], [Body => [0.86, 0.87, 0.86], Door => [0.80, 0.81, 0.80], Top => [0.12, 0.12, 0.13], Interior => [0.62, 0.64, 0.64], Metal => STEEL, Light => [0.95, 0.97, 1.0], Water => [0.30, 0.62, 0.85], Glass => [0.78, 0.88, 0.90], Screen => [0.10, 0.35, 0.25]]),
+    arch!("terrarium", cg::terrarium, [Frame], [Frame => [0.12, 0.12, 0.13], Soil => [0.30, 0.21, 0.14], Foliage => [0.30, 0.55, 0.20], Pane => [0.82, 0.92, 0.90]]),
+    arch!("crystal_ball", cg::crystal_ball, [Pane], [Pane => [0.78, 0.80, 0.96], Light => [0.72, 0.62, 1.0], Glass => [0.88, 0.90, 1.0], Trunk => [0.22, 0.13, 0.08], Metal => BRASS]),
+    arch!("game_console", gi::game_console, [Body], [Body => [0.10, 0.10, 0.11], Light => [0.35, 0.65, 1.0], Interior => BLACK, BlackKeys => [0.03, 0.03, 0.03]]),
+    arch!("mic_stand", gi::mic_stand, [Metal], [Metal => [0.12, 0.12, 0.13], Handle => [0.35, 0.35, 0.37], BlackKeys => [0.08, 0.08, 0.09], Canvas => [0.62, 0.63, 0.65], Tyre => BLACK]),
+    arch!("blender", gi::blender, [Body], [Body => [0.80, 0.80, 0.82], Top => [0.12, 0.12, 0.13], Handle => [0.20, 0.20, 0.22], Light => [0.40, 0.80, 1.0], Water => [0.88, 0.42, 0.50], Pane => [0.84, 0.90, 0.92]]),
+    arch!("rice_cooker", gi::rice_cooker, [Body], [Body => [0.94, 0.94, 0.93], Top => [0.88, 0.88, 0.88], Handle => [0.40, 0.40, 0.42], Metal => [0.55, 0.56, 0.58], Light => [0.95, 0.60, 0.25]]),
+    arch!("birdcage", gi::birdcage, [Metal, Body], [Metal => BRASS, Body => BRASS, Trunk => [0.55, 0.40, 0.25], Handle => [0.95, 0.55, 0.10]]),
+    arch!("forklift", rigs::forklift, [Body], [Body => [0.95, 0.72, 0.08], Metal => [0.22, 0.22, 0.24], Frame => [0.12, 0.12, 0.13], Seat => [0.10, 0.10, 0.11], Handle => STEEL, Light => [1.0, 0.62, 0.12], Tyre => BLACK]),
+    arch!("staff", rigs::staff, [Trunk], [Trunk => [0.42, 0.29, 0.17], Metal => [0.15, 0.15, 0.16], Light => [0.45, 0.80, 1.0]]),
+    arch!("pod", rigs::pod, [Body], [Body => [0.90, 0.91, 0.92], Frame => [0.25, 0.26, 0.28], Light => [0.35, 0.90, 1.0], Pane => [0.78, 0.92, 0.98], Canvas => [0.55, 0.65, 0.75], Metal => [0.45, 0.46, 0.48], Door => [0.80, 0.81, 0.82], Glass => [0.40, 0.70, 0.85]]),
+    arch!("music_stand", sd::music_stand, [Metal], [Metal => [0.10, 0.10, 0.11], Canvas => [0.96, 0.94, 0.88], BlackKeys => [0.15, 0.15, 0.16]]),
+    arch!("iv_stand", sd::iv_stand, [Metal], [Metal => STEEL, Tyre => BLACK, Pane => [0.88, 0.92, 0.95], Water => [0.82, 0.90, 0.96], Canvas => [0.90, 0.92, 0.94], Body => [0.90, 0.90, 0.88], Screen => [0.10, 0.30, 0.22]]),
+    arch!("traffic_light", sd::traffic_light, [Body], [Body => [0.12, 0.12, 0.13], Frame => [0.25, 0.26, 0.27], Light => [0.95, 0.12, 0.08], Top => [1.0, 0.68, 0.05], Seat => [0.10, 0.85, 0.35]]),
+    arch!("gramophone", sd::gramophone, [Metal], [Metal => BRASS, Trunk => [0.40, 0.22, 0.12], Frame => [0.30, 0.17, 0.09], Interior => [0.35, 0.25, 0.12]]),
+    arch!("headstone", mr::headstone, [Body], [Body => [0.58, 0.58, 0.56], Stone => [0.50, 0.49, 0.46], Interior => [0.22, 0.22, 0.22]]),
+    arch!("flagpole", mr::flagpole, [Upholstery], [Upholstery => [0.80, 0.12, 0.14], Cushion => [0.95, 0.95, 0.94], Metal => [0.78, 0.79, 0.80], Handle => [0.85, 0.70, 0.30], Stone => [0.62, 0.62, 0.60]]),
+    arch!("portable_toilet", mr::portable_toilet, [Body, Door], [Body => [0.15, 0.38, 0.72], Door => [0.17, 0.42, 0.78], Top => [0.92, 0.92, 0.90], Frame => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Handle => [0.85, 0.85, 0.85], Seat => [0.15, 0.75, 0.30], Interior => [0.08, 0.10, 0.14]]),
+    arch!("projector", mr::projector, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.25, 0.25, 0.27], Glass => [0.15, 0.20, 0.28], Interior => [0.30, 0.30, 0.32], Light => [0.35, 0.80, 1.0]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -1,4 +1,4 @@
-//! Layouts of case goods and fixtures: cabinets, dressers, wardrobes, glass cabinets, shelves,
+//! Layouts of case goods and fixtures: cabinets, dressers, wardrobes, shelves,
 //! lamps, rugs, counters, sinks, fireplaces, pianos, bathtubs and toilets. The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
@@ -97,48 +97,6 @@ pub fn wardrobe(b: &mut Builder) {
 pub fn sideboard(b: &mut Builder) {
     let doors = ((b.w / 0.45).round() as usize).clamp(1, 5);
     case(b, doors, 0, true);
-}
-
-/// A glass-fronted cabinet: closed base, glass upper case with shelves inside.
-pub fn glass_cabinet(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let zb = if h > 1.4 { 0.4 * h } else { 0.1 * h };
-    b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, zb]);
-    b.cuboid(Top, [-hw, -hd, h - 0.04], [hw, hd, h]);
-    let f = 0.03;
-    for sx in [-1.0, 1.0] {
-        let x = sx * (hw - f / 2.0);
-        for sy in [-1.0, 1.0] {
-            let y = sy * (hd - f / 2.0);
-            b.cuboid(
-                Body,
-                [x - f / 2.0, y - f / 2.0, zb],
-                [x + f / 2.0, y + f / 2.0, h - 0.04],
-            );
-        }
-    }
-    b.cuboid(Interior, [-hw + f, -hd, zb], [hw - f, -hd + 0.01, h - 0.04]);
-    let mut z = zb + 0.3;
-    let mut v = 0;
-    while z < h - 0.1 {
-        b.cuboid(Body, [-hw + f, -hd + 0.01, z], [hw - f, hd - f, z + 0.015]);
-        let mut x = -hw + f + 0.05;
-        while x < hw - f - 0.12 {
-            b.ellipsoid_rot(
-                Books,
-                v,
-                [x + 0.05, -hd * 0.2, z + 0.08],
-                [0.045, 0.045, 0.065],
-                IDENTITY,
-            );
-            x += 0.14;
-            v += 1;
-        }
-        z += 0.35;
-    }
-    b.cuboid(Glass, [-hw + f, hd - 0.006, zb], [hw - f, hd, h - 0.04]);
-    b.cuboid(Glass, [-hw, -hd + f, zb], [-hw + 0.006, hd - f, h - 0.04]);
-    b.cuboid(Glass, [hw - 0.006, -hd + f, zb], [hw, hd - f, h - 0.04]);
 }
 
 /// Shelves filled with items `item` wide on average (books ~4 cm, boxes ~25 cm).

@@ -220,42 +220,6 @@ pub fn cylinder(b: &mut Builder) {
     b.frustum(Body, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
 }
 
-/// A ball: one ellipsoid filling the box when it is about as tall as wide (rocks, bowls); a
-/// round ball on a stand when a little taller (a crystal ball, a pod); stacked balls of
-/// shrinking size when much taller (a snowman). A ball is never stretched upwards.
-pub fn sphere(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let r = hw.min(hd);
-    if h <= 2.3 * r {
-        b.ellipsoid(Body, [0.0, 0.0, h / 2.0], [hw, hd, h / 2.0]);
-        return;
-    }
-    let rest = h - 2.0 * r;
-    if rest < r {
-        // A ball on a short round stand.
-        b.frustum(
-            Frame,
-            [0.0, 0.0, 0.0],
-            0.7 * r,
-            0.7 * r,
-            0.6,
-            rest + 0.1 * r,
-        );
-        b.ellipsoid(Body, [0.0, 0.0, h - r], [r, r, r]);
-        return;
-    }
-    // Balls of radius r, 0.75 r, 0.55 r overlapping by a tenth, scaled to the height.
-    let ks = [1.0, 0.75, 0.55];
-    let k = (h / (1.8 * ks.iter().sum::<f64>() * r)).min(1.0);
-    let mut z = 0.0;
-    for (i, f) in ks.iter().enumerate() {
-        let rr = f * k * r;
-        let c = if i == 0 { rr } else { z + 0.8 * rr };
-        b.ellipsoid(Body, [0.0, 0.0, c.min(h - rr)], [rr, rr, rr]);
-        z = c + rr;
-    }
-}
-
 pub fn cone(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, 0.03]);

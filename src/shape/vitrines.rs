@@ -8,7 +8,7 @@ use super::parts::{frustum_profile, rot_x, IDENTITY};
 use std::f64::consts::FRAC_PI_2;
 
 /// Thin frame bars along the twelve edges of the box `lo..hi`.
-fn edges(b: &mut Builder, role: Role, lo: [f64; 3], hi: [f64; 3], t: f64) {
+pub(super) fn edges(b: &mut Builder, role: Role, lo: [f64; 3], hi: [f64; 3], t: f64) {
     for sy in [lo[1], hi[1] - t] {
         for sz in [lo[2], hi[2] - t] {
             b.cuboid(role, [lo[0], sy, sz], [hi[0], sy + t, sz + t]);
@@ -26,7 +26,7 @@ fn edges(b: &mut Builder, role: Role, lo: [f64; 3], hi: [f64; 3], t: f64) {
 
 /// A row of goods on a shelf at height `z` between `x0` and `x1`, at depth `y`: blocks and
 /// rounds of the goods palette, alternating, about `s` across.
-fn goods(b: &mut Builder, x: [f64; 2], y: f64, z: f64, s: f64, v: &mut u32) {
+pub(super) fn goods(b: &mut Builder, x: [f64; 2], y: f64, z: f64, s: f64, v: &mut u32) {
     let n = ((x[1] - x[0]) / (1.4 * s)).floor().max(1.0) as usize;
     let pitch = (x[1] - x[0]) / n as f64;
     for i in 0..n {
