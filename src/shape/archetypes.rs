@@ -442,7 +442,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("pallet", sx::pallet, [Top, Frame], [Top => [0.74, 0.60, 0.42], Frame => [0.64, 0.50, 0.34]]),
     arch!("murphy_bed", sx::murphy_bed, [Body, Door, Top], [Mattress => [0.90, 0.88, 0.84], Metal => [0.30, 0.30, 0.32]]),
     arch!("snake_plant", pt::snake_plant, [Foliage], [Foliage => [0.16, 0.36, 0.18], Pot => [0.88, 0.87, 0.84]]),
-    arch!("fern", pt::fern, [Foliage], [Foliage => [0.30, 0.56, 0.20]]),
+    arch!("fern", pt::fern, [Foliage], [Foliage => [0.30, 0.56, 0.20], Trunk => [0.26, 0.40, 0.16]]),
     arch!("bamboo", pt::bamboo, [Foliage], [Trunk => [0.55, 0.64, 0.26], Foliage => [0.28, 0.55, 0.20], Pot => [0.20, 0.22, 0.24]]),
     arch!("orchid", pt::orchid, [Canvas], [Canvas => [0.97, 0.96, 0.97], Pillow => [0.85, 0.35, 0.55], Foliage => [0.18, 0.42, 0.18], Pot => [0.90, 0.90, 0.88], Trunk => [0.35, 0.40, 0.22]]),
     arch!("bonsai", pt::bonsai, [Foliage], [Foliage => [0.18, 0.42, 0.16], Trunk => [0.40, 0.30, 0.22], Pot => [0.34, 0.24, 0.20]]),

@@ -1,6 +1,6 @@
 //! Layouts of potted plants by kind, each with its own habit: a snake plant (upright sword
-//! leaves), a fern (arching fronds spilling over the pot), lucky bamboo (jointed canes with
-//! leaf tufts), an orchid (broad leaves, a staked arching spray of flowers), a bonsai (a
+//! leaves), a fern (arching fronds of paired leaflets spilling over the pot), lucky bamboo
+//! (jointed canes with leaf tufts), an orchid (broad leaves, a staked arching spray of flowers), a bonsai (a
 //! twisted trunk with flat pads of leaves in a shallow tray) and a hanging plant (a pot on three
 //! cords with trailing strands). The front faces +y.
 use super::archetypes::{frame_along, Builder};
@@ -76,8 +76,8 @@ pub fn snake_plant(b: &mut Builder) {
 pub fn fern(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let m = hw.min(hd);
-    let r = 0.6 * m;
-    let ph = (0.35 * h).min(0.3);
+    let r = 0.42 * m;
+    let ph = (0.3 * h).min(0.25);
     pot(b, r, ph);
     let n = 16;
     let segs = 7;
@@ -86,29 +86,40 @@ pub fn fern(b: &mut Builder) {
         let (s, c) = a.sin_cos();
         // Inner fronds stand taller, outer ones reach further and droop.
         let k = (i % 4) as f64 / 3.0;
-        let reach = (0.55 + 0.4 * k) * (m - 0.04);
-        let rise = (1.0 - 0.45 * k) * (h - ph - 0.05);
+        let reach = (0.8 + 0.2 * k) * (m - 0.02);
+        let rise = (0.7 - 0.4 * k) * (h - ph - 0.05);
         for j in 0..segs {
             let t0 = j as f64 / segs as f64;
             let t1 = (j + 1) as f64 / segs as f64;
             // Out along the frond; up in a parabola that falls past its peak.
             let at = |t: f64| {
                 let out = reach * t;
-                let up = rise * (1.1 * t - t * t) / 0.3025;
+                let up = rise * (1.4 * t - 1.2 * t * t) / 0.408;
                 [out * c, out * s, ph + up.max(0.0)]
             };
             let (q0, q1) = (at(t0), at(t1));
             let d = [q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]];
             let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            // The stalk, and a pair of leaflets either side of it, shorter towards the tip.
+            b.rod(Trunk, q0, q1, 0.004);
             let centre = [0, 1, 2].map(|q| 0.5 * (q0[q] + q1[q]));
-            let width = (0.2 * reach).min(0.07) * (1.0 - 0.8 * t0);
-            b.ellipsoid_rot(
-                Foliage,
-                (i + j) as u32,
-                centre,
-                [width, 0.2 * width, 0.62 * len],
-                frame_along(unit(d)),
-            );
+            let leaflet = (0.22 * reach).min(0.08) * (1.0 - 0.75 * t0);
+            let side = [-s, c, 0.0];
+            for sign in [-1.0, 1.0] {
+                let dir = side.map(|v| sign * v);
+                let mid = [
+                    centre[0] + dir[0] * 0.5 * leaflet,
+                    centre[1] + dir[1] * 0.5 * leaflet,
+                    centre[2] - 0.15 * leaflet,
+                ];
+                b.ellipsoid_rot(
+                    Foliage,
+                    (i + j) as u32,
+                    mid,
+                    [(0.45 * len).max(0.01), 0.06 * leaflet, 0.5 * leaflet],
+                    frame_along(dir),
+                );
+            }
         }
     }
 }
