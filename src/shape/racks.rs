@@ -171,7 +171,7 @@ pub fn pantry_rack(b: &mut Builder) {
             let kind = (n * 7 + k as u32 * 3) % 5;
             let used = match kind {
                 // A jar: see-through glass over its food, a metal lid.
-                0 | 1 | 2 => {
+                0..=2 => {
                     let r = 0.045;
                     let jh = room * (0.7 + 0.1 * kind as f64);
                     let c = [x + r, -0.2 * hd, z];
