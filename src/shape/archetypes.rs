@@ -4,6 +4,7 @@
 use super::appliances as a;
 use super::barriers as ba;
 use super::bins as bn;
+use super::carts as ca;
 use super::cases as c;
 use super::crafts as cr;
 use super::daily as d;
@@ -447,6 +448,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("orchid", pt::orchid, [Canvas], [Canvas => [0.97, 0.96, 0.97], Pillow => [0.85, 0.35, 0.55], Foliage => [0.18, 0.42, 0.18], Pot => [0.90, 0.90, 0.88], Trunk => [0.35, 0.40, 0.22]]),
     arch!("bonsai", pt::bonsai, [Foliage], [Foliage => [0.18, 0.42, 0.16], Trunk => [0.40, 0.30, 0.22], Pot => [0.34, 0.24, 0.20]]),
     arch!("hanging_plant", pt::hanging_plant, [Foliage], [Foliage => [0.24, 0.52, 0.20], Frame => [0.85, 0.80, 0.68], Pot => [0.88, 0.86, 0.82]]),
+    arch!("cart", ca::cart, [Metal, Frame], [Metal => BRASS, Frame => BRASS, Top => [0.20, 0.20, 0.21], Handle => BRASS, Tyre => BLACK, Glass => [0.20, 0.36, 0.22], BlackKeys => [0.45, 0.16, 0.08], Pane => [0.85, 0.92, 0.95], Canvas => [0.70, 0.55, 0.33]]),
+    arch!("airer", ca::airer, [Frame], [Frame => [0.88, 0.88, 0.87], Metal => [0.80, 0.80, 0.80]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

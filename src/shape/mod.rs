@@ -16,6 +16,7 @@ mod appliances;
 mod archetypes;
 mod barriers;
 mod bins;
+mod carts;
 mod cases;
 mod crafts;
 mod daily;
