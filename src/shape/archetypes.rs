@@ -3,6 +3,8 @@
 //! functions (in `furniture.rs` and `more.rs`) use.
 use super::appliances as a;
 use super::barriers as ba;
+use super::bins as bn;
+use super::carts as ca;
 use super::cases as c;
 use super::clearglass as cg;
 use super::crafts as cr;
@@ -20,6 +22,7 @@ use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
 use super::household as ho;
+use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
 use super::market as mk;
@@ -27,16 +30,20 @@ use super::materials::{Rgb, Role};
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::picnic as pc;
+use super::plants as pt;
 use super::play as pl;
 use super::rigs;
+use super::racks as rk;
 use super::rocks;
 use super::sculpted as sc;
 use super::seats as se;
+use super::sets as sx;
 use super::skeleton as sk;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
 use super::things as t;
+use super::training as tr;
 use super::utility as ut;
 use super::vitrines as vi;
 use super::washroom as wa;
@@ -443,6 +450,30 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("flagpole", mr::flagpole, [Upholstery], [Upholstery => [0.80, 0.12, 0.14], Cushion => [0.95, 0.95, 0.94], Metal => [0.78, 0.79, 0.80], Handle => [0.85, 0.70, 0.30], Stone => [0.62, 0.62, 0.60]]),
     arch!("portable_toilet", mr::portable_toilet, [Body, Door], [Body => [0.15, 0.38, 0.72], Door => [0.17, 0.42, 0.78], Top => [0.92, 0.92, 0.90], Frame => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Handle => [0.85, 0.85, 0.85], Seat => [0.15, 0.75, 0.30], Interior => [0.08, 0.10, 0.14]]),
     arch!("projector", mr::projector, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.25, 0.25, 0.27], Glass => [0.15, 0.20, 0.28], Interior => [0.30, 0.30, 0.32], Light => [0.35, 0.80, 1.0]]),
+    arch!("towel_rack", rk::towel_rack, [Metal], [Metal => STEEL, Canvas => [0.93, 0.92, 0.88], Cushion => [0.45, 0.62, 0.72]]),
+    arch!("wine_rack", rk::wine_rack, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Interior => [0.20, 0.13, 0.08], Glass => [0.14, 0.30, 0.16], BlackKeys => [0.30, 0.08, 0.10]]),
+    arch!("pantry_rack", rk::pantry_rack, [Frame, Top], [Frame => [0.62, 0.47, 0.30], Top => [0.66, 0.50, 0.32], Pane => [0.85, 0.92, 0.92], Metal => [0.78, 0.72, 0.55]]),
+    arch!("weapon_rack", rk::weapon_rack, [Frame], [Frame => [0.45, 0.30, 0.17], Trunk => [0.52, 0.38, 0.24], Metal => [0.74, 0.75, 0.78], Handle => [0.62, 0.50, 0.25]]),
+    arch!("trash_can", bn::trash_can, [Body], [Body => STEEL, Top => [0.50, 0.51, 0.53], Metal => [0.55, 0.56, 0.58], Handle => [0.12, 0.12, 0.13], Tyre => [0.12, 0.12, 0.13]]),
+    arch!("umbrella_stand", bn::umbrella_stand, [Body], [Body => [0.30, 0.40, 0.50], Interior => [0.10, 0.10, 0.11], Metal => [0.40, 0.40, 0.42], Handle => [0.30, 0.19, 0.10]]),
+    arch!("weight_bench", tr::weight_bench, [Upholstery], [Upholstery => [0.10, 0.10, 0.11], Frame => [0.20, 0.20, 0.22], Metal => [0.12, 0.12, 0.13], Handle => STEEL]),
+    arch!("punching_bag", tr::punching_bag, [Upholstery], [Upholstery => [0.62, 0.10, 0.10], Cushion => [0.10, 0.10, 0.11], Frame => [0.18, 0.18, 0.20], Metal => [0.62, 0.63, 0.65]]),
+    arch!("chaise", lo::chaise, [Upholstery, Cushion], [Frame => DARK_WOOD, Pillow => [0.80, 0.74, 0.62]]),
+    arch!("egg_chair", lo::egg_chair, [Upholstery, Cushion], [Body => WHITE, Metal => STEEL, Upholstery => [0.20, 0.30, 0.45], Cushion => [0.22, 0.33, 0.48]]),
+    arch!("papasan", lo::papasan, [Cushion], [Frame => [0.72, 0.55, 0.33], Cushion => [0.82, 0.76, 0.64]]),
+    arch!("hanging_chair", lo::hanging_chair, [Frame], [Frame => [0.70, 0.54, 0.33], Metal => [0.20, 0.20, 0.21], Cushion => [0.92, 0.90, 0.84]]),
+    arch!("recliner", lo::recliner, [Upholstery, Cushion], [Upholstery => [0.36, 0.24, 0.16], Cushion => [0.40, 0.27, 0.18], Metal => [0.25, 0.25, 0.27]]),
+    arch!("nesting_tables", sx::nesting_tables, [Top, Frame], []),
+    arch!("pallet", sx::pallet, [Top, Frame], [Top => [0.74, 0.60, 0.42], Frame => [0.64, 0.50, 0.34]]),
+    arch!("murphy_bed", sx::murphy_bed, [Body, Door, Top], [Mattress => [0.90, 0.88, 0.84], Metal => [0.30, 0.30, 0.32]]),
+    arch!("snake_plant", pt::snake_plant, [Foliage], [Foliage => [0.16, 0.36, 0.18], Pot => [0.88, 0.87, 0.84]]),
+    arch!("fern", pt::fern, [Foliage], [Foliage => [0.30, 0.56, 0.20], Trunk => [0.26, 0.40, 0.16]]),
+    arch!("bamboo", pt::bamboo, [Foliage], [Trunk => [0.55, 0.64, 0.26], Foliage => [0.28, 0.55, 0.20], Pot => [0.20, 0.22, 0.24]]),
+    arch!("orchid", pt::orchid, [Canvas], [Canvas => [0.97, 0.96, 0.97], Pillow => [0.85, 0.35, 0.55], Foliage => [0.18, 0.42, 0.18], Pot => [0.90, 0.90, 0.88], Trunk => [0.35, 0.40, 0.22]]),
+    arch!("bonsai", pt::bonsai, [Foliage], [Foliage => [0.18, 0.42, 0.16], Trunk => [0.40, 0.30, 0.22], Pot => [0.34, 0.24, 0.20]]),
+    arch!("hanging_plant", pt::hanging_plant, [Foliage], [Foliage => [0.24, 0.52, 0.20], Frame => [0.85, 0.80, 0.68], Pot => [0.88, 0.86, 0.82]]),
+    arch!("cart", ca::cart, [Metal, Frame], [Metal => BRASS, Frame => BRASS, Top => [0.20, 0.20, 0.21], Handle => BRASS, Tyre => BLACK, Glass => [0.20, 0.36, 0.22], BlackKeys => [0.45, 0.16, 0.08], Pane => [0.85, 0.92, 0.95], Canvas => [0.70, 0.55, 0.33]]),
+    arch!("airer", ca::airer, [Frame], [Frame => [0.88, 0.88, 0.87], Metal => [0.80, 0.80, 0.80]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

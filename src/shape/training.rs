@@ -1,0 +1,164 @@
+//! Layouts of strength and boxing gear: a weight bench (a padded bench on a steel frame, with
+//! uprights at its head holding a loaded barbell) and a punching bag hanging on a chain from
+//! the arm of its stand, clear of the floor. The front faces +y.
+use super::archetypes::Builder;
+use super::materials::Role::*;
+
+/// A barbell plate: a disc of radius `r` on the bar at `x`, `w` thick, at (`y`, `z`).
+fn plate(b: &mut Builder, x: f64, y: f64, z: f64, r: f64, w: f64) {
+    b.rod(Metal, [x - w / 2.0, y, z], [x + w / 2.0, y, z], r);
+    b.rod(
+        Handle,
+        [x - w / 2.0 - 0.004, y, z],
+        [x + w / 2.0 + 0.004, y, z],
+        0.25 * r,
+    );
+}
+
+/// A weight bench: a long pad and a short seat pad on a steel spine with a foot at each end,
+/// two uprights at the head end (-y) with hooks, a loaded barbell resting on them.
+pub fn weight_bench(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let pw = (0.14 * b.w).clamp(0.12, 0.16);
+    let zp = (0.36 * h).min(0.45);
+    let s = 0.05;
+    // The steel frame: a spine under the pad, a T-foot at the front, the uprights' base behind.
+    b.cuboid(
+        Frame,
+        [-s / 2.0, -hd + 0.25, zp - 0.12],
+        [s / 2.0, hd - 0.08, zp - 0.07],
+    );
+    b.cuboid(
+        Frame,
+        [-s / 2.0, hd - 0.13, 0.0],
+        [s / 2.0, hd - 0.08, zp - 0.07],
+    );
+    b.cuboid(Frame, [-2.0 * pw, hd - 0.13, 0.0], [2.0 * pw, hd - 0.08, s]);
+    let xu = (0.62 * hw).max(pw + 0.1);
+    let yu = -hd + 0.12;
+    b.cuboid(Frame, [-xu - s, yu - 0.1, 0.0], [xu + s, yu + 0.1, s]);
+    b.cuboid(Frame, [-s / 2.0, yu, 0.0], [s / 2.0, -hd + 0.25 + s, s]);
+    b.cuboid(
+        Frame,
+        [-s / 2.0, -hd + 0.25, s],
+        [s / 2.0, -hd + 0.25 + s, zp - 0.07],
+    );
+    // The pads: a long back pad and a short seat pad with a gap, on brackets.
+    let y_split = hd - 0.42;
+    b.cuboid(
+        Upholstery,
+        [-pw, -hd + 0.2, zp - 0.07],
+        [pw, y_split - 0.02, zp],
+    );
+    b.cuboid(
+        Upholstery,
+        [-pw, y_split + 0.02, zp - 0.07],
+        [pw, hd - 0.02, zp],
+    );
+    // The uprights with J hooks, a bar across them with plates at both ends.
+    let zb = h - 0.2;
+    for sx in [-1.0, 1.0] {
+        let x = sx * xu;
+        b.cuboid(
+            Frame,
+            [x - s / 2.0, yu - s / 2.0, s],
+            [x + s / 2.0, yu + s / 2.0, zb + 0.08],
+        );
+        b.cuboid(
+            Metal,
+            [x - s / 2.0, yu, zb - 0.04],
+            [x + s / 2.0, yu + 0.07, zb - 0.02],
+        );
+        b.cuboid(
+            Metal,
+            [x - s / 2.0, yu + 0.05, zb - 0.04],
+            [x + s / 2.0, yu + 0.07, zb + 0.02],
+        );
+    }
+    let yb = yu + 0.035;
+    let zbar = zb - 0.02 + 0.015;
+    b.rod(Handle, [-hw, yb, zbar], [hw, yb, zbar], 0.015);
+    let rp = (h - zbar - 0.005).min(0.19);
+    for sx in [-1.0, 1.0] {
+        plate(b, sx * (hw - 0.12), yb, zbar, rp, 0.05);
+        plate(b, sx * (hw - 0.065), yb, zbar, 0.75 * rp, 0.04);
+    }
+}
+
+/// A punching bag on its stand: a base frame with counterweights, an upright at the back, an
+/// arm reaching forward, a chain and four straps down to a long round bag that hangs clear of
+/// the floor.
+pub fn punching_bag(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let s = 0.06;
+    let yp = -hd + s;
+    // The base: two rails front to back and a cross member behind; weight plates on pegs.
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - s / 2.0);
+        b.cuboid(Frame, [x - s / 2.0, -hd, 0.0], [x + s / 2.0, hd, s]);
+        let xin = sx * (hw - s - 0.04);
+        b.rod(
+            Metal,
+            [xin - 0.02, -hd + 0.2, s + 0.1],
+            [xin + 0.02, -hd + 0.2, s + 0.1],
+            0.1,
+        );
+    }
+    b.cuboid(Frame, [-hw, -hd, 0.0], [hw, -hd + 2.0 * s, s]);
+    b.cuboid(
+        Frame,
+        [-s / 2.0, yp - s / 2.0, s],
+        [s / 2.0, yp + s / 2.0, h - 0.02],
+    );
+    // The arm over the bag, with a brace down to the upright.
+    let yb = 0.25 * hd;
+    b.cuboid(
+        Frame,
+        [-s / 2.0, yp - s / 2.0, h - 0.07],
+        [s / 2.0, yb + 0.05, h - 0.02],
+    );
+    b.rod(Frame, [0.0, yp, h - 0.45], [0.0, yp + 0.3, h - 0.07], 0.02);
+    // The bag: rounded ends, a seam band near the top, hanging clear of the floor.
+    let r = (0.6 * hw.min(hd)).min(0.18);
+    let z0 = 0.3 * h;
+    let z1 = h - 0.5;
+    let e = 0.06;
+    b.revolved(
+        Upholstery,
+        0,
+        [0.0, yb, z0],
+        super::parts::IDENTITY,
+        1.0,
+        vec![
+            [0.0, 0.0],
+            [0.8 * r, 0.01],
+            [r, e],
+            [r, z1 - z0 - e],
+            [0.8 * r, z1 - z0 - 0.01],
+            [0.0, z1 - z0],
+        ],
+    );
+    b.cylinder(Cushion, [0.0, yb, z1 - 0.16], 1.01 * r, 0.04);
+    // Chain from the arm to a ring, straps from the ring to the bag's top.
+    let ring = z1 + 0.18;
+    let links = 6;
+    for k in 0..links {
+        let za = h - 0.07 - (h - 0.07 - ring) * k as f64 / links as f64;
+        let zb = h - 0.07 - (h - 0.07 - ring) * (k + 1) as f64 / links as f64;
+        b.ellipsoid(
+            Metal,
+            [0.0, yb, 0.5 * (za + zb)],
+            [0.012, 0.012, 0.5 * (za - zb)],
+        );
+    }
+    for k in 0..4 {
+        let a = std::f64::consts::FRAC_PI_4 + k as f64 * std::f64::consts::FRAC_PI_2;
+        let (sa, ca) = a.sin_cos();
+        b.rod(
+            Metal,
+            [0.0, yb, ring],
+            [0.7 * r * ca, yb + 0.7 * r * sa, z1 - 0.01],
+            0.006,
+        );
+    }
+}
