@@ -162,3 +162,28 @@ fn a_weight_bench_has_a_loaded_bar_above_its_pads() {
     let (p0, p1) = range(&of(&s, Role::Metal), 2);
     assert!(p1 - p0 > 0.25, "plates {:.2} m tall", p1 - p0);
 }
+
+#[test]
+fn an_exercise_bike_stands_on_its_frame_not_on_wheels() {
+    // No tyres touch the floor: the flywheel turns clear of it, in the front half, and the
+    // frame's stabilisers carry the bike; a bicycle rides on its tyres.
+    let (s, size) = samples("exercise bike");
+    let fly = of(&s, Role::Metal);
+    let tyres = of(&s, Role::Tyre);
+    let (lo, _) = range(&tyres, 2);
+    assert!(lo > 0.05, "exercise bike: a tyre reaches down to {lo:.2} m");
+    let (y_lo, _) = range(&tyres, 1);
+    assert!(
+        y_lo > 0.0,
+        "exercise bike: the flywheel is not at the front ({y_lo:.2})"
+    );
+    let (floor, _) = range(&of(&s, Role::Frame), 2);
+    assert!(
+        floor < 0.01,
+        "exercise bike: its frame is off the floor ({floor:.3})"
+    );
+    assert!(!fly.is_empty() && size[2] > 1.0, "exercise bike: parts");
+    let (s, _) = samples("bicycle");
+    let (lo, _) = range(&of(&s, Role::Tyre), 2);
+    assert!(lo < 0.01, "a bicycle stands on its tyres ({lo:.3})");
+}

@@ -32,8 +32,8 @@ use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY
 use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
-use super::rigs;
 use super::racks as rk;
+use super::rigs;
 use super::rocks;
 use super::sculpted as sc;
 use super::seats as se;
@@ -458,6 +458,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("umbrella_stand", bn::umbrella_stand, [Body], [Body => [0.30, 0.40, 0.50], Interior => [0.10, 0.10, 0.11], Metal => [0.40, 0.40, 0.42], Handle => [0.30, 0.19, 0.10]]),
     arch!("weight_bench", tr::weight_bench, [Upholstery], [Upholstery => [0.10, 0.10, 0.11], Frame => [0.20, 0.20, 0.22], Metal => [0.12, 0.12, 0.13], Handle => STEEL]),
     arch!("punching_bag", tr::punching_bag, [Upholstery], [Upholstery => [0.62, 0.10, 0.10], Cushion => [0.10, 0.10, 0.11], Frame => [0.18, 0.18, 0.20], Metal => [0.62, 0.63, 0.65]]),
+    arch!("exercise_bike", tr::exercise_bike, [Frame], [Frame => [0.20, 0.20, 0.22], Metal => [0.55, 0.56, 0.58], Upholstery => [0.10, 0.10, 0.11], Seat => [0.12, 0.12, 0.13], Tyre => [0.75, 0.12, 0.10]]),
     arch!("chaise", lo::chaise, [Upholstery, Cushion], [Frame => DARK_WOOD, Pillow => [0.80, 0.74, 0.62]]),
     arch!("egg_chair", lo::egg_chair, [Upholstery, Cushion], [Body => WHITE, Metal => STEEL, Upholstery => [0.20, 0.30, 0.45], Cushion => [0.22, 0.33, 0.48]]),
     arch!("papasan", lo::papasan, [Cushion], [Frame => [0.72, 0.55, 0.33], Cushion => [0.82, 0.76, 0.64]]),

@@ -162,3 +162,70 @@ pub fn punching_bag(b: &mut Builder) {
         );
     }
 }
+
+/// An exercise bike: no wheels to ride on, but a heavy flywheel at the front under a cover,
+/// a frame on two floor stabilisers, a saddle on its post, cranks with pedals, and a column at
+/// the front carrying the handlebars and a small console.
+pub fn exercise_bike(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let s = 0.045;
+    // The stabilisers across the floor, front and back.
+    let (yf, yr) = (hd - 0.08, -hd + 0.08);
+    for y in [yf, yr] {
+        b.cuboid(Frame, [-0.9 * hw, y - s, 0.0], [0.9 * hw, y + s, s]);
+    }
+    // The flywheel at the front, a heavy disc across x, and its half cover.
+    let rf = (0.22 * h).min(0.3 * hd);
+    let (yw, zw) = (yf - rf - 0.05, rf + 0.08);
+    b.rod(Metal, [-0.03, yw, zw], [0.03, yw, zw], rf);
+    b.rod(Tyre, [-0.035, yw, zw], [0.035, yw, zw], 0.3 * rf);
+    // The frame: a beam from the back foot up to the saddle post, a front column up to the bars.
+    let post = [0.0, -0.35 * hd, 0.5 * h];
+    let saddle = [0.0, -0.4 * hd, 0.72 * h];
+    let bars = [0.0, yf - 0.2, 0.92 * h];
+    let crank = [0.0, -0.05 * hd, zw];
+    b.polyline(Frame, &[[0.0, yr, s], crank, [0.0, yw, zw]], 0.03);
+    b.polyline(Frame, &[crank, post, saddle], 0.028);
+    b.polyline(
+        Frame,
+        &[[0.0, yf, s], [0.0, yw + 0.05, zw + rf], bars],
+        0.03,
+    );
+    b.rod(Frame, post, [0.0, yw + 0.05, zw + rf], 0.025);
+    b.ellipsoid(
+        Seat,
+        [0.0, saddle[1], saddle[2] + 0.03],
+        [0.09, 0.15, 0.035],
+    );
+    // The handlebars: a bar across with grips reaching back, a console above them.
+    let gx = 0.8 * hw.min(0.3);
+    b.rod(
+        Metal,
+        [-gx, bars[1], bars[2]],
+        [gx, bars[1], bars[2]],
+        0.016,
+    );
+    for sx in [-1.0, 1.0] {
+        b.rod(
+            Upholstery,
+            [sx * gx, bars[1], bars[2]],
+            [sx * gx, bars[1] - 0.18, bars[2] + 0.04],
+            0.02,
+        );
+    }
+    b.cuboid(
+        Screen,
+        [-0.1, bars[1] + 0.02, bars[2] + 0.05],
+        [0.1, bars[1] + 0.07, (bars[2] + 0.17).min(h)],
+    );
+    // The cranks and pedals either side of the crank hub.
+    for sx in [-1.0, 1.0] {
+        let p = [sx * 0.09, crank[1] + 0.05 * sx, crank[2] - 0.12 * sx];
+        b.rod(Metal, [sx * 0.06, crank[1], crank[2]], p, 0.012);
+        b.cuboid(
+            Upholstery,
+            [p[0] - 0.05, p[1] - 0.05, p[2] - 0.012],
+            [p[0] + 0.05, p[1] + 0.05, p[2] + 0.012],
+        );
+    }
+}
