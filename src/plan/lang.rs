@@ -96,7 +96,7 @@ fn re(p: &str) -> Regex {
 
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
-    let t = normalise(text);
+    let t = words::compound_numbers(&normalise(text));
     let mut r = Reading {
         text: t.clone(),
         scale: 1.0,

@@ -54,6 +54,9 @@ pub(super) const NUMBERS: &[(&str, u32)] = &[
     ("forty", 40),
     ("fifty", 50),
     ("sixty", 60),
+    ("seventy", 70),
+    ("eighty", 80),
+    ("ninety", 90),
     ("dozen", 12),
     ("both", 2),
     ("couple", 2),
@@ -225,6 +228,21 @@ pub fn normalise(text: &str) -> String {
         .split_whitespace()
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// Numbers of two words written out ("twenty-four", "thirty two") as digits, so that they
+/// count what follows as a number word does.
+pub(super) fn compound_numbers(t: &str) -> String {
+    static RE: OnceLock<Regex> = OnceLock::new();
+    let re = RE.get_or_init(|| {
+        Regex::new(r"\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b")
+            .expect("valid regex")
+    });
+    re.replace_all(t, |c: &regex::Captures| {
+        let n = number_of(&c[1]).unwrap_or(0) + number_of(&c[2]).unwrap_or(0);
+        n.to_string()
+    })
+    .into_owned()
 }
 
 pub fn plurals(name: &str) -> Vec<String> {
