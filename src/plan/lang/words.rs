@@ -189,6 +189,12 @@ pub fn is_specialised(head: &str) -> bool {
     word_list("specialised").contains(&head)
 }
 
+/// Whether a bare count of `head` takes in every kind of it the place has (`kb/words.txt`,
+/// counted_whole): "ten chairs" are all the chairs.
+pub fn counts_whole(head: &str) -> bool {
+    word_list("counted_whole").contains(&head)
+}
+
 /// The head noun a one-word category is a kind of (`kb/words.txt`, kinds): "armchair" is a
 /// chair, so a bare "chair" in a living room is its armchair.
 pub fn kind_of_compound(category: &str) -> Option<&'static str> {
@@ -243,6 +249,27 @@ pub(super) fn compound_numbers(t: &str) -> String {
         n.to_string()
     })
     .into_owned()
+}
+
+/// The knowledge base's category a misspelt noun means ("a wardobe" is a wardrobe): the one
+/// category with a name of one word one edit away (a letter left out, added, changed, or two
+/// swapped), when the word is long enough to tell ("shell" is no shelf, "broom" no brook) and is
+/// no noun the lexicon knows.
+pub(super) fn misspelt(kb: &KnowledgeBase, noun: &str) -> Option<String> {
+    if noun.chars().count() < 6 || crate::plan::lexicon::kind(noun).is_some() {
+        return None;
+    }
+    let mut near = kb
+        .objects
+        .iter()
+        .filter(|o| {
+            std::iter::once(&o.category)
+                .chain(&o.synonyms)
+                .any(|n| !n.contains(' ') && strsim::damerau_levenshtein(n, noun) == 1)
+        })
+        .map(|o| o.category.clone());
+    let first = near.next()?;
+    near.all(|c| c == first).then_some(first)
 }
 
 pub fn plurals(name: &str) -> Vec<String> {

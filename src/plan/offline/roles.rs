@@ -344,9 +344,11 @@ pub(super) fn take_away(d: &mut Draft) {
 }
 
 /// "five manicure tables, two chairs at each": a bare noun the text counts ("chairs") is all of
-/// it the place has, so the scene's other defaults of that noun (its pedicure chairs) do not
+/// it the place has (`kb/words.txt`: counted_whole), so the scene's other defaults of that noun
+/// (its pedicure chairs) do not
 /// add to it; those the place cannot do without or that is its own stay, and so do those that
-/// serve something else the plan holds (the teacher's chair at the teacher's desk).
+/// serve something else the plan holds (the teacher's chair at the teacher's desk) or that the
+/// place sets with another thing it holds (a library's reading chairs by their floor lamps).
 #[allow(clippy::too_many_arguments, reason = "the draft's fields, borrowed apart")]
 fn counted_nouns(
     r: &lang::Reading,
@@ -367,6 +369,9 @@ fn counted_nouns(
             continue;
         }
         let head = lang::singular(&m.text);
+        if !lang::counts_whole(&head) {
+            continue;
+        }
         let gone: Vec<String> = defaults
             .keys()
             .filter(|c| *c != cat && !named.contains(*c) && counts.contains_key(*c))
@@ -376,6 +381,15 @@ fn counted_nouns(
                 !crate::plan::groups::partners_of(c)
                     .iter()
                     .any(|p| *p != cat && counts.contains_key(*p))
+            })
+            .filter(|c| {
+                let other = |o: &String| o != *c && o != cat && counts.contains_key(o);
+                !scene.is_some_and(|s| {
+                    s.relations.iter().any(|k| {
+                        (k.subject == **c && other(&k.object))
+                            || (k.object == **c && other(&k.subject))
+                    })
+                })
             })
             .cloned()
             .collect();
