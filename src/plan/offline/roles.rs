@@ -349,7 +349,10 @@ pub(super) fn take_away(d: &mut Draft) {
 /// add to it; those the place cannot do without or that is its own stay, and so do those that
 /// serve something else the plan holds (the teacher's chair at the teacher's desk) or that the
 /// place sets with another thing it holds (a library's reading chairs by their floor lamps).
-#[allow(clippy::too_many_arguments, reason = "the draft's fields, borrowed apart")]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the draft's fields, borrowed apart"
+)]
 fn counted_nouns(
     r: &lang::Reading,
     cats: &[String],
