@@ -1,7 +1,9 @@
 //! Everyday prompts of places and phrasings no corpus has: plural names of several words, a
 //! table that holds computers, a ship's bridge, "pairs of", what is said per instance of a
 //! support whose count the reader works out, and places the knowledge base now knows (a post
-//! office, a call centre, boarding kennels). Prompts of no corpus.
+//! office, a call centre, boarding kennels, a generic shop, a print shop, a dental surgery, a
+//! wheelhouse); counted chairs, two-word numbers, misspelt nouns and ceiling lights over tables.
+//! Prompts of no corpus.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod reading;
 use dreamscene::plan::spec::{RelationKind, SceneSpec};
@@ -143,4 +145,99 @@ fn things_for_one_said_for_people_are_one_each() {
         "{:?}",
         s.objects
     );
+}
+
+#[test]
+fn a_shop_of_no_known_kind_sells_no_clothes() {
+    for p in [
+        "a shoe store with a bench and three shelves",
+        "a music shop with four guitars and a counter",
+        "a copy shop with two large printers and a counter",
+    ] {
+        let s = plan(p);
+        assert_eq!(
+            number(&s, "mannequin") + number(&s, "clothes"),
+            0,
+            "{p}: {:?}",
+            s.objects.keys()
+        );
+        assert_eq!(number(&s, "counter"), 1, "{p}: {:?}", s.objects.keys());
+    }
+    let s = plan("a copy shop with two large printers and a counter");
+    assert_eq!(count(&s, "large format printer"), 2, "{:?}", s.objects);
+    let s = plan("a fashion shop with two mirrors");
+    assert!(number(&s, "clothes") >= 1, "{:?}", s.objects.keys());
+}
+
+#[test]
+fn counted_chairs_are_all_the_chairs() {
+    let s = plan("a nail bar with four manicure tables and eight chairs");
+    assert_eq!(number(&s, "chair"), 8, "{:?}", s.objects);
+    // the teacher's chair serves the teacher's desk, not the pupils' desks
+    let s = plan("a classroom with 20 desks and 20 chairs");
+    assert_eq!(number(&s, "chair"), 21, "{:?}", s.objects);
+    // a pub's pool table is no table its customers sit at
+    let s = plan("a pub with four tables and sixteen chairs");
+    assert_eq!(count(&s, "pool table"), 1, "{:?}", s.objects);
+    assert_eq!(number(&s, "chair"), 16, "{:?}", s.objects);
+}
+
+#[test]
+fn numbers_of_two_words_count() {
+    let s = plan("a classroom with thirty two desks and a blackboard");
+    assert_eq!(count(&s, "school desk"), 32, "{:?}", s.objects);
+    let s = plan("a banquet hall with twenty-one round tables");
+    assert_eq!(count(&s, "round table"), 21, "{:?}", s.objects);
+}
+
+#[test]
+fn a_misspelt_noun_is_the_thing_it_almost_names() {
+    let s = plan("a living room with a sofa, a bookcsae and an armchiar");
+    assert_eq!(count(&s, "bookshelf"), 1, "{:?}", s.objects.keys());
+    assert_eq!(count(&s, "armchair"), 1, "{:?}", s.objects.keys());
+    // short real words stay themselves: a broom is no brook, a shell no shelf
+    let s = plan("a witch's hut with a broom, a shell and a cauldron");
+    assert_eq!(
+        number(&s, "stream") + number(&s, "shelf"),
+        0,
+        "{:?}",
+        s.objects.keys()
+    );
+}
+
+#[test]
+fn a_light_hung_over_a_table_lights_the_table_alone() {
+    let s = plan("a small dining table beneath a chandelier with four chairs around it");
+    let under = |subject: &str| {
+        s.relations
+            .iter()
+            .any(|r| r.subject.starts_with(subject) && r.relation == RelationKind::Under)
+    };
+    assert!(under("dining table"), "{:?}", s.relations);
+    assert!(!under("dining chair"), "{:?}", s.relations);
+    // the seats of a table under a parasol are under it too
+    let s = plan("a patio table under a parasol with four chairs");
+    let sheltered = s
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Under && r.subject.contains("chair"))
+        .count();
+    assert_eq!(sheltered, 4, "{:?}", s.relations);
+}
+
+#[test]
+fn sinks_wheels_and_reception_desks_are_those_of_the_place() {
+    let s = plan("a barber shop with two sinks");
+    assert_eq!(count(&s, "salon sink"), 2, "{:?}", s.objects.keys());
+    let s = plan("a dental clinic with two dental chairs and a sink");
+    assert_eq!(number(&s, "kitchen"), 0, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "sink"), 1, "{:?}", s.objects.keys());
+    let s = plan("the wheelhouse of a fishing boat with a wheel and a radar screen");
+    assert_eq!(count(&s, "ship wheel"), 1, "{:?}", s.objects.keys());
+    let s = plan("a clinic waiting room with a reception desk and eight chairs");
+    assert_eq!(number(&s, "reception"), 1, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "counter"), 0, "{:?}", s.objects.keys());
+    let s = plan("a lakeside with two canoes and a jetty");
+    assert_eq!(count(&s, "canoe"), 2, "{:?}", s.objects.keys());
+    assert_eq!(number(&s, "boat"), 0, "{:?}", s.objects.keys());
 }

@@ -426,13 +426,16 @@ fn text_places_first(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)
-/// are under it too: they sit inside its footprint, below its roof.
+/// are under it too: they sit inside its footprint, below its roof. A light hung from the
+/// ceiling over the table ("a round table under a pendant light") lights the table alone.
 fn shelter_group(spec: &mut SceneSpec) {
+    use crate::plan::gcp::classes::{Class, Placements};
+    let hung = |id: &str| Placements::builtin().class(base_of(id)) == Class::Ceiling;
     let mut extra: Vec<Relation> = vec![];
     for roof in spec
         .relations
         .iter()
-        .filter(|r| r.relation == RelationKind::Under)
+        .filter(|r| r.relation == RelationKind::Under && !hung(&r.object))
     {
         for seat in spec.relations.iter().filter(|r| {
             r.object == roof.subject

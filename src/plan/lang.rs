@@ -20,9 +20,9 @@ use placements::read_placements;
 use regex::Regex;
 use words::not_objects;
 pub use words::{
-    alternation, is_adjective, is_function_word, is_indoor_place, is_known_word, is_outdoor_place,
-    is_specialised, is_verb, kind_of_compound, normalise, number, object_footprint, object_scale,
-    part_owners, plural_means_one, plurals, potted, singular,
+    alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
+    is_outdoor_place, is_specialised, is_verb, kind_of_compound, normalise, number,
+    object_footprint, object_scale, part_owners, plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
 
@@ -96,7 +96,7 @@ fn re(p: &str) -> Regex {
 
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
-    let t = normalise(text);
+    let t = words::compound_numbers(&normalise(text));
     let mut r = Reading {
         text: t.clone(),
         scale: 1.0,

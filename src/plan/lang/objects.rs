@@ -409,7 +409,10 @@ pub(super) fn read_mentions(
             let mut words: Vec<&str> = head_text.split(' ').collect();
             let head = singular(words.pop().unwrap_or(""));
             adjectives.extend(words.iter().map(|w| w.to_string()));
-            (head, false)
+            match super::words::misspelt(kb, &head) {
+                Some(c) => (c, true),
+                None => (head, false),
+            }
         } else {
             (cat, true)
         };

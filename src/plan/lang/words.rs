@@ -54,6 +54,9 @@ pub(super) const NUMBERS: &[(&str, u32)] = &[
     ("forty", 40),
     ("fifty", 50),
     ("sixty", 60),
+    ("seventy", 70),
+    ("eighty", 80),
+    ("ninety", 90),
     ("dozen", 12),
     ("both", 2),
     ("couple", 2),
@@ -186,6 +189,12 @@ pub fn is_specialised(head: &str) -> bool {
     word_list("specialised").contains(&head)
 }
 
+/// Whether a bare count of `head` takes in every kind of it the place has (`kb/words.txt`,
+/// counted_whole): "ten chairs" are all the chairs.
+pub fn counts_whole(head: &str) -> bool {
+    word_list("counted_whole").contains(&head)
+}
+
 /// The head noun a one-word category is a kind of (`kb/words.txt`, kinds): "armchair" is a
 /// chair, so a bare "chair" in a living room is its armchair.
 pub fn kind_of_compound(category: &str) -> Option<&'static str> {
@@ -225,6 +234,42 @@ pub fn normalise(text: &str) -> String {
         .split_whitespace()
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// Numbers of two words written out ("twenty-four", "thirty two") as digits, so that they
+/// count what follows as a number word does.
+pub(super) fn compound_numbers(t: &str) -> String {
+    static RE: OnceLock<Regex> = OnceLock::new();
+    let re = RE.get_or_init(|| {
+        Regex::new(r"\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b")
+            .expect("valid regex")
+    });
+    re.replace_all(t, |c: &regex::Captures| {
+        let n = number_of(&c[1]).unwrap_or(0) + number_of(&c[2]).unwrap_or(0);
+        n.to_string()
+    })
+    .into_owned()
+}
+
+/// The knowledge base's category a misspelt noun means ("a wardobe" is a wardrobe): the one
+/// category with a name of one word one edit away (a letter left out, added, changed, or two
+/// swapped), when the word is long enough to tell ("shell" is no shelf, "broom" no brook) and is
+/// no noun the lexicon knows.
+pub(super) fn misspelt(kb: &KnowledgeBase, noun: &str) -> Option<String> {
+    if noun.chars().count() < 6 || crate::plan::lexicon::kind(noun).is_some() {
+        return None;
+    }
+    let mut near = kb
+        .objects
+        .iter()
+        .filter(|o| {
+            std::iter::once(&o.category)
+                .chain(&o.synonyms)
+                .any(|n| !n.contains(' ') && strsim::damerau_levenshtein(n, noun) == 1)
+        })
+        .map(|o| o.category.clone());
+    let first = near.next()?;
+    near.all(|c| c == first).then_some(first)
 }
 
 pub fn plurals(name: &str) -> Vec<String> {

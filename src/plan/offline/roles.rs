@@ -289,12 +289,14 @@ pub(super) fn mention_kinds(d: &mut Draft) {
 pub(super) fn take_away(d: &mut Draft) {
     let Draft {
         r,
+        scene,
         cats,
         counts,
         defaults,
         named,
         negated,
         others,
+        explicit,
         notes,
         ..
     } = d;
@@ -332,10 +334,73 @@ pub(super) fn take_away(d: &mut Draft) {
             counts.remove(c);
         }
     }
+    counted_nouns(r, cats, counts, defaults, named, explicit, *scene, notes);
     // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
     for c in negated.iter().chain(others.iter()) {
         if let Some(role) = crate::plan::roles::role_of(c) {
             counts.retain(|k, _| named.contains(k) || crate::plan::roles::role_of(k) != Some(role));
+        }
+    }
+}
+
+/// "five manicure tables, two chairs at each": a bare noun the text counts ("chairs") is all of
+/// it the place has (`kb/words.txt`: counted_whole), so the scene's other defaults of that noun
+/// (its pedicure chairs) do not
+/// add to it; those the place cannot do without or that is its own stay, and so do those that
+/// serve something else the plan holds (the teacher's chair at the teacher's desk) or that the
+/// place sets with another thing it holds (a library's reading chairs by their floor lamps).
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the draft's fields, borrowed apart"
+)]
+fn counted_nouns(
+    r: &lang::Reading,
+    cats: &[String],
+    counts: &mut BTreeMap<String, u32>,
+    defaults: &BTreeMap<String, u32>,
+    named: &std::collections::BTreeSet<String>,
+    explicit: &BTreeMap<String, u32>,
+    scene: Option<&crate::plan::kb::SceneKind>,
+    notes: &mut Vec<String>,
+) {
+    for (m, cat) in r.mentions.iter().zip(cats) {
+        let counted = m.count.is_some_and(|n| n >= 2) || m.each_of.is_some();
+        if m.negated || m.reference || !counted || m.text.contains(' ') {
+            continue;
+        }
+        if !explicit.contains_key(cat) {
+            continue;
+        }
+        let head = lang::singular(&m.text);
+        if !lang::counts_whole(&head) {
+            continue;
+        }
+        let gone: Vec<String> = defaults
+            .keys()
+            .filter(|c| *c != cat && !named.contains(*c) && counts.contains_key(*c))
+            .filter(|c| c.rsplit(' ').next() == Some(head.as_str()))
+            .filter(|c| scene.is_none_or(|s| !s.own.contains(c) && !s.essential.contains(c)))
+            .filter(|c| {
+                !crate::plan::groups::partners_of(c)
+                    .iter()
+                    .any(|p| *p != cat && counts.contains_key(*p))
+            })
+            .filter(|c| {
+                let other = |o: &String| o != *c && o != cat && counts.contains_key(o);
+                !scene.is_some_and(|s| {
+                    s.relations.iter().any(|k| {
+                        (k.subject == **c && other(&k.object))
+                            || (k.object == **c && other(&k.subject))
+                    })
+                })
+            })
+            .cloned()
+            .collect();
+        for c in gone {
+            counts.remove(&c);
+            notes.push(format!(
+                "default {c} left out: the text counts the {head}s ({cat})"
+            ));
         }
     }
 }
