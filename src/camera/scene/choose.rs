@@ -10,7 +10,9 @@
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground, and far (in place or direction)
 //! from the views already taken. Host-only.
-use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER, COPY};
+use super::faults::{
+    blocker_share, footprint_distance, grazing_share, BARE_COVER, BARE_WALL, COPY,
+};
 use super::views::FLAT;
 use super::views::{
     facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,

@@ -4,12 +4,16 @@
 //! render views are scored against these (`choose.rs`) and the framing figure counts them.
 //! Host-only.
 use super::views::{facing, frame_share, FLAT};
+use super::wall::bare_wall_share;
 use super::{ObjectBox, SceneBox};
 use crate::camera::Camera;
 
 /// A view whose objects' boxes cover less than this share of the frame is mostly bare wall or
 /// floor (box silhouettes overstate what chairs and tables hide, so this is generous).
 pub const BARE_COVER: f64 = 0.25;
+/// A view more than this share of whose frame is wall with nothing before it (no object, door
+/// or window; see [`bare_wall_share`]) is mostly bare wall, however much its boxes cover.
+pub const BARE_WALL: f64 = 0.45;
 /// A blocker: an object covering more than `BLOCKER_SHARE` of the frame whose footprint stands
 /// nearer the camera than `BLOCKER_PER_SIZE` of its largest side (so it spans a wide angle),
 /// and within `BLOCKER_NEAR` metres, with the room at least `BLOCKER_BEHIND` metres further
@@ -147,7 +151,7 @@ pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
             let s = &shares[i];
             let covered: f64 = s.iter().sum();
             ViewFaults {
-                bare: covered < BARE_COVER,
+                bare: covered < BARE_COVER || bare_wall_share(scene, c) > BARE_WALL,
                 blocker: blocker_share(scene, c, s) > 0.0,
                 grazing: grazing_share(scene, c, s) > 0.0,
                 copy: (0..i).any(|j| alike((c, s), (&cams[j], &shares[j])) > COPY),

@@ -22,12 +22,15 @@ mod choose;
 mod faults;
 mod paths;
 mod views;
+mod wall;
 
 pub use choose::{eye_height, render_views, view_fov};
 pub use faults::{
-    alike, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER, COPY,
+    alike, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER, BARE_WALL,
+    COPY,
 };
 pub use paths::{explore_path, inference_circle, orbit};
+pub use wall::{bare_wall_share, opening_box};
 pub use views::{
     facing, frame_share, framing_score, in_frame, overview_camera, view_stats, ViewStats,
     MAX_OBJECT_SHARE,
@@ -64,6 +67,9 @@ pub struct SceneBox {
     pub scene_type: SceneType,
     pub room: [f64; 3],
     pub objects: Vec<ObjectBox>,
+    /// The room's doors and windows as thin boxes on their walls ([`opening_box`]): something a
+    /// view sees, never something it stands in or is about.
+    pub openings: Vec<ObjectBox>,
 }
 
 impl SceneBox {
@@ -81,6 +87,12 @@ impl SceneBox {
                     size: o.size,
                     yaw: o.yaw,
                 })
+                .collect(),
+            openings: layout
+                .openings
+                .iter()
+                .enumerate()
+                .map(|(n, o)| opening_box(o, n + 1))
                 .collect(),
         }
     }
