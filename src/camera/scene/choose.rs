@@ -14,6 +14,7 @@ use super::faults::{
     blocker_share, footprint_distance, grazing_share, BARE_COVER, BARE_WALL, COPY,
 };
 use super::views::FLAT;
+use super::wall::bare_wall_share;
 use super::views::{
     facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
 };
@@ -90,6 +91,11 @@ const POOR: f64 = 6.0;
 /// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
 /// loses, so a poor view that frames well is still taken before one that does not.
 const GOOD: f64 = 24.0;
+/// Up to this share of the frame bare wall costs a view nothing (a room's walls show above its
+/// furniture in every picture taken at eye height); beyond it each share costs
+/// [`WALL_PER_SHARE`].
+const WALL_FREE: f64 = 0.3;
+const WALL_PER_SHARE: f64 = 12.0;
 /// Half the width of a person standing to take a picture (metres): a render view's spot on the
 /// floor is at least this far from every object standing on the floor, so no view is taken
 /// from on top of a kitchen island or a bed.
@@ -375,6 +381,12 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
     pick(scene, cands, count)
 }
 
+/// What a view loses for the share of its frame that is bare wall ([`bare_wall_share`]): from
+/// [`WALL_FREE`] on, steeply, and [`POOR`] on top past [`BARE_WALL`] (a fault).
+fn wall_penalty(wall: f64) -> f64 {
+    WALL_PER_SHARE * (wall - WALL_FREE).max(0.0) + if wall > BARE_WALL { POOR } else { 0.0 }
+}
+
 /// Greedy choice of `count` candidates (see the module doc).
 fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
     let n = scene.objects.len();
@@ -401,8 +413,11 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
     let mut focal_taken = 0;
     let mut seen = vec![0usize; n];
     let mut taken: Vec<usize> = vec![];
+    let mut walls: Vec<Option<f64>> = vec![None; cands.len()];
     for _ in 0..count.min(cands.len()) {
-        let mut best: Option<(usize, f64)> = None;
+        // Each candidate's score before the bare wall it shows (costly to measure, so measured
+        // only for the candidates that could still win, best first).
+        let mut scores: Vec<(usize, f64)> = vec![];
         for (i, c) in cands.iter().enumerate() {
             if taken.contains(&i) {
                 continue;
@@ -481,6 +496,16 @@ fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
                 } else {
                     0.0
                 };
+            scores.push((i, score));
+        }
+        scores.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let mut best: Option<(usize, f64)> = None;
+        for (i, score) in scores {
+            if best.is_some_and(|(_, s)| s >= score) {
+                break;
+            }
+            let wall = *walls[i].get_or_insert_with(|| bare_wall_share(scene, &cands[i].cam));
+            let score = score - wall_penalty(wall);
             if best.is_none_or(|(_, s)| score > s) {
                 best = Some((i, score));
             }
