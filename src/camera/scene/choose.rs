@@ -18,7 +18,7 @@ use super::wall::bare_wall_share;
 use super::views::{
     facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
 };
-use super::{camera, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
+use super::{camera, kind, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
 use crate::camera::Camera;
 use crate::plan::spec::SceneType;
 
@@ -234,10 +234,6 @@ fn back_penalty(stats: &ViewStats) -> f64 {
     back * (2.0 + BACK_PER_SHARE * stats.largest)
 }
 
-/// An object's kind from its id: the id without its trailing count (`tree3` → `tree`).
-fn kind(o: &ObjectBox) -> &str {
-    o.id.trim_end_matches(|c: char| c.is_ascii_digit())
-}
 
 /// `count` render views of `scene` chosen by what they show (see the module doc), named
 /// `view_0000`…; every camera is a valid viewpoint. An empty scene gets views of the room from

@@ -32,7 +32,7 @@ pub use faults::{
 pub use paths::{explore_path, inference_circle, orbit};
 pub use wall::{bare_wall_share, opening_box};
 pub use views::{
-    facing, frame_share, framing_score, in_frame, overview_camera, view_stats, ViewStats,
+    facing, frame_share, framing_score, in_frame, overview_camera, screen_box, view_stats, ViewStats,
     MAX_OBJECT_SHARE,
 };
 
@@ -117,6 +117,12 @@ impl SceneBox {
     pub(crate) fn zmid(&self) -> f64 {
         0.5 * self.top()
     }
+}
+
+/// An object's kind from its id: the id without its trailing count (`tree3` → `tree`), which
+/// is its category.
+pub(crate) fn kind(o: &ObjectBox) -> &str {
+    o.id.trim_end_matches(|c: char| c.is_ascii_digit())
 }
 
 impl ObjectBox {
