@@ -15,8 +15,8 @@
 //! (defaults: /work/shared/prompts/fidelity_dev.json, 30 prompts, 8 views of 512²; then the
 //! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
 use dreamscene::camera::scene::{
-    alike, bare_wall_share, blocker_share, explore_path, frame_share, grazing_share, render_views, view_faults,
-    view_stats, SceneBox,
+    alike, bare_wall_share, blocker_share, explore_path, frame_share, grazing_share, render_views,
+    view_faults, view_stats, SceneBox,
 };
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};

@@ -30,11 +30,11 @@ pub use faults::{
     COPY,
 };
 pub use paths::{explore_path, inference_circle, orbit};
-pub use wall::{bare_wall_share, opening_box};
 pub use views::{
-    facing, frame_share, framing_score, in_frame, overview_camera, screen_box, view_stats, ViewStats,
-    MAX_OBJECT_SHARE,
+    facing, frame_share, framing_score, in_frame, overview_camera, screen_box, view_stats,
+    ViewStats, MAX_OBJECT_SHARE,
 };
+pub use wall::{bare_wall_share, opening_box};
 
 use super::Camera;
 use crate::plan::spec::{Layout, SceneType};

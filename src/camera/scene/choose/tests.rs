@@ -1,7 +1,7 @@
 //! Tests of the render-view choice.
 use super::*;
 use crate::camera::scene::views::tests::boxed;
-use crate::camera::scene::{frame_share, framing_score, overview_camera};
+use crate::camera::scene::{frame_share, framing_score, overview_camera, BARE_WALL};
 
 #[test]
 fn views_of_a_furnished_room_frame_several_objects() {
@@ -236,7 +236,8 @@ fn small_rooms_get_few_poor_views() {
     // The faults grew stricter (bare wall, a column at the frame's side, a mirror past 45°):
     // by them the pick before the bare-wall rule gets 14 of 40 clean, this one 19.
     assert!(clean * 5 >= total * 2, "{clean} of {total} views clean");
-    assert!(bare * 8 <= total, "{bare} of {total} views mostly bare");
+    // Bare now also counts views of mostly bare wall: 12 of 40 here (5 by the box cover alone).
+    assert!(bare * 3 <= total, "{bare} of {total} views mostly bare");
     assert!(
         well * 10 >= total * 9,
         "{well} of {total} views framed well"
@@ -271,5 +272,8 @@ fn views_show_the_room_not_bare_wall() {
         total += cams.len();
     }
     assert!(clean * 10 >= total * 7, "{clean} of {total} views clean");
-    assert!(wall * 6 <= total, "{wall} of {total} views mostly bare wall");
+    assert!(
+        wall * 6 <= total,
+        "{wall} of {total} views mostly bare wall"
+    );
 }
