@@ -107,3 +107,53 @@ pub fn bare_wall_share(scene: &SceneBox, cam: &Camera) -> f64 {
     }
     bare as f64 / (SAMPLES * SAMPLES) as f64
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::scene::camera;
+    use crate::plan::spec::OpeningKind;
+
+    #[test]
+    fn a_window_covers_the_bare_wall_it_stands_in() {
+        // From the room's centre, level, at the north wall 2 m away through a 55° lens: the
+        // wall fills the frame's middle band; a window as wide as the view covers much of it.
+        let mut scene = SceneBox {
+            scene_type: SceneType::Indoor,
+            room: [8.0, 4.0, 3.0],
+            objects: vec![],
+            openings: vec![],
+        };
+        let cam = camera(
+            [0.0, 0.0, 1.5],
+            [0.0, 1.0, 1.5],
+            [0.0, 0.0, 1.0],
+            64,
+            64,
+            0.96,
+        );
+        let bare = bare_wall_share(&scene, &cam);
+        // Wall from z = 0 to 3 at 2 m: ±37° vertically, beyond the lens's ±27.5°: all wall.
+        assert!(bare > 0.99, "bare wall {bare}");
+        let window = Opening {
+            kind: OpeningKind::Window,
+            wall: Wall::North,
+            position: [0.0, 2.0, 1.0],
+            width: 4.0,
+            height: 1.0,
+        };
+        scene.openings.push(opening_box(&window, 1));
+        // The window spans z 1..2 of the wall: 2·atan(0.5/2) of the ±27.5° frame, ~0.5.
+        let covered = bare_wall_share(&scene, &cam);
+        assert!((covered - 0.5).abs() < 0.1, "bare wall {covered}");
+        let outdoor = SceneBox {
+            scene_type: SceneType::Outdoor,
+            ..scene
+        };
+        assert_eq!(
+            bare_wall_share(&outdoor, &cam),
+            0.0,
+            "open ground has no wall"
+        );
+    }
+}
