@@ -67,6 +67,7 @@ fn main() -> anyhow::Result<()> {
         let scene = SceneBox {
             scene_type: *st,
             room: *room,
+            openings: vec![],
             objects: vec![],
         };
         // Four views spread around the room: every other sector of stage 1 (every third

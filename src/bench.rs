@@ -492,6 +492,7 @@ pub fn bench_scene_stage(
         scene_type: crate::plan::spec::SceneType::Indoor,
         room,
         objects: vec![],
+        openings: vec![],
     };
     let iters = runs.max(1) as u32 + 1;
     let cams = stage_cameras(Stage::One, &scene, iters as usize * views, size, size, 5);

@@ -48,6 +48,7 @@ fn scenes() -> Vec<(String, SceneBox)> {
         SceneBox {
             scene_type: SceneType::Indoor,
             room: [3.0, 3.2, 2.4],
+            openings: vec![],
             objects: vec![
                 obj("bed1", [0.0, -0.4, 0.0], [1.6, 2.0, 0.6], 0.0),
                 obj("wardrobe1", [1.0, 1.25, 0.0], [1.0, 0.6, 2.1], 180.0),
@@ -59,6 +60,7 @@ fn scenes() -> Vec<(String, SceneBox)> {
         SceneBox {
             scene_type: SceneType::Indoor,
             room: [10.0, 4.0, 3.0],
+            openings: vec![],
             objects: vec![
                 obj("table1", [2.0, 0.0, 0.0], [2.0, 1.0, 0.75], 35.0),
                 obj("shelf1", [-4.6, 0.0, 0.0], [0.4, 2.0, 2.0], 90.0),
@@ -70,6 +72,7 @@ fn scenes() -> Vec<(String, SceneBox)> {
         SceneBox {
             scene_type: SceneType::Outdoor,
             room: [20.0, 20.0, 10.0],
+            openings: vec![],
             objects: vec![],
         },
     ));

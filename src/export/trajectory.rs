@@ -145,6 +145,7 @@ impl Subject {
         Ok(Subject::Scene(SceneBox {
             scene_type: scene.scene_type,
             room: scene.room.size,
+            openings: vec![],
             objects,
         }))
     }

@@ -10,20 +10,15 @@
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground, and far (in place or direction)
 //! from the views already taken. Host-only.
-use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER, COPY};
+use super::faults::{blocker_share, footprint_distance, grazing_share};
 use super::views::FLAT;
-use super::views::{
-    facing, hidden_share, in_frame, screen_box, view_stats, ViewStats, MAX_OBJECT_SHARE,
-};
-use super::{camera, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
+use super::views::{facing, hidden_share, in_frame, screen_box, view_stats, ViewStats};
+use super::{camera, kind, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
 use crate::camera::Camera;
 use crate::plan::spec::SceneType;
 
 /// Steepest downward pitch of a render view (degrees).
 const MAX_PITCH_DEG: f64 = 14.0;
-/// How much a view seeing its subject from behind loses per share of the frame that subject
-/// fills (see [`back_penalty`]).
-const BACK_PER_SHARE: f64 = 12.0;
 /// Spacing of the candidate positions along the walls (metres); wider on a large ground, so
 /// there are at most [`MAX_LOOP_POINTS`] a loop.
 const STEP: f64 = 0.25;
@@ -81,13 +76,6 @@ fn volume(o: &ObjectBox) -> f64 {
     o.size[0] * o.size[1] * o.size[2]
 }
 
-/// What a view loses for each fault a person sees in it (`faults.rs`): mostly bare, a blocker
-/// at the lens, a panel seen edge-on, a near copy of a view already taken. Views below
-/// [`BARE_COVER`] lose score steeply on top.
-const POOR: f64 = 6.0;
-/// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
-/// loses, so a poor view that frames well is still taken before one that does not.
-const GOOD: f64 = 24.0;
 /// Half the width of a person standing to take a picture (metres): a render view's spot on the
 /// floor is at least this far from every object standing on the floor, so no view is taken
 /// from on top of a kitchen island or a bed.
@@ -109,10 +97,6 @@ fn stands(scene: &SceneBox, p: [f64; 3]) -> bool {
 /// [`FOCAL_CONE_DEG`] of its front's direction.
 const FOCAL_MIN: usize = 3;
 const FOCAL_CONE_DEG: f64 = 35.0;
-/// The share of the views that see the focal object from its front, looking the way the room
-/// looks (3 of 8).
-const FOCAL_VIEWS: f64 = 0.375;
-
 /// The focal object of `scene` (see [`FOCAL_MIN`]) and which objects face it.
 pub(crate) fn focal(scene: &SceneBox) -> Option<(usize, Vec<bool>)> {
     let cone = FOCAL_CONE_DEG.to_radians().cos();
@@ -195,40 +179,6 @@ struct Candidate {
     /// of their shares.
     shares: Vec<(usize, f64)>,
     total: f64,
-}
-
-/// How much two views show the same: over the objects, the shares of the frame both give an
-/// object (the smaller), summed, over the larger of the two views' sums; times how alike their
-/// directions are. 1 is the same picture; views of one group from opposite sides are 0.
-fn content_alike(a: &Candidate, b: &Candidate) -> f64 {
-    let cos = a.dir[0] * b.dir[0] + a.dir[1] * b.dir[1];
-    if cos <= 0.0 {
-        return 0.0;
-    }
-    // Both lists are in index order: merge them.
-    let (mut both, mut j) = (0.0, 0);
-    for &(k, x) in &a.shares {
-        while j < b.shares.len() && b.shares[j].0 < k {
-            j += 1;
-        }
-        if let Some(&(_, y)) = b.shares.get(j).filter(|s| s.0 == k) {
-            both += x.min(y);
-        }
-    }
-    both / a.total.max(b.total).max(1e-9) * cos
-}
-
-/// What a view loses for seeing its subject from behind: more the more of the frame the back
-/// fills (a sofa's back across the foreground reads as a wall of upholstery; a small chair back
-/// in a wide view does not).
-fn back_penalty(stats: &ViewStats) -> f64 {
-    let back = (-stats.facing).max(0.0);
-    back * (2.0 + BACK_PER_SHARE * stats.largest)
-}
-
-/// An object's kind from its id: the id without its trailing count (`tree3` → `tree`).
-fn kind(o: &ObjectBox) -> &str {
-    o.id.trim_end_matches(|c: char| c.is_ascii_digit())
 }
 
 /// `count` render views of `scene` chosen by what they show (see the module doc), named
@@ -370,137 +320,9 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             });
         }
     }
-    pick(scene, cands, count)
+    pick::pick(scene, cands, count)
 }
 
-/// Greedy choice of `count` candidates (see the module doc).
-fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec<Camera> {
-    let n = scene.objects.len();
-    // An object's weight grows with its size; the objects of one kind (five trees, eight
-    // chairs) share theirs, so a view of a tent is not outweighed by views of trees.
-    let weight: Vec<f64> = scene
-        .objects
-        .iter()
-        .map(|o| {
-            let same = scene.objects.iter().filter(|p| kind(p) == kind(o)).count();
-            (o.size[0] * o.size[1] * o.size[2]).cbrt().max(0.1) / (same as f64).sqrt()
-        })
-        .collect();
-    let fg = foreground(scene);
-    let diagonal = scene.room[0].hypot(scene.room[1]);
-    let focal = focal(scene);
-    // Views that look the way the room looks: the focal object in frame, seen from its front.
-    let looks_ahead = |c: &Candidate| {
-        focal
-            .as_ref()
-            .is_some_and(|(f, _)| c.shows[*f].is_some_and(|s| s > 0.5))
-    };
-    let focal_target = (FOCAL_VIEWS * count as f64).round() as usize;
-    let mut focal_taken = 0;
-    let mut seen = vec![0usize; n];
-    let mut taken: Vec<usize> = vec![];
-    for _ in 0..count.min(cands.len()) {
-        let mut best: Option<(usize, f64)> = None;
-        for (i, c) in cands.iter().enumerate() {
-            if taken.contains(&i) {
-                continue;
-            }
-            // Seen from its front an object counts whole; from a side 0.6, from behind 0.2. What
-            // faces the focal object counts whole from behind too: seen looking where it looks.
-            let fresh: f64 = (0..n)
-                .filter_map(|k| c.shows[k].map(|f| (k, f)))
-                .map(|(k, f)| {
-                    let f = match &focal {
-                        Some((_, who)) if who[k] => f.abs(),
-                        _ => f,
-                    };
-                    weight[k] * (0.6 + 0.4 * f) / (1.0 + 2.0 * seen[k] as f64)
-                })
-                .sum();
-            let near = taken
-                .iter()
-                .map(|&j| {
-                    let o = &cands[j];
-                    let dp = (c.cam.position[0] - o.cam.position[0])
-                        .hypot(c.cam.position[1] - o.cam.position[1]);
-                    let cos = c.dir[0] * o.dir[0] + c.dir[1] * o.dir[1];
-                    // Close in place and direction, or showing the same things the same way:
-                    // a near copy of a view already taken.
-                    let alike = content_alike(c, o);
-                    let copy = if alike > COPY { 1.0 } else { 0.0 };
-                    let alike = ((alike - 0.4) / 0.6).max(0.0);
-                    (
-                        ((1.0 - (dp / 1.5).min(1.0)) * cos.max(0.0)).max(alike),
-                        copy,
-                    )
-                })
-                .fold((0.0f64, 0.0f64), |a, b| (a.0.max(b.0), a.1.max(b.1)));
-            let (near, copy) = near;
-            // The same subject again, or another of its kind: the views should show the place,
-            // not one piece of it from every side.
-            let (same, alike) = c.stats.subject.map_or((0, 0), |s| {
-                let subjects = taken.iter().filter_map(|&j| cands[j].stats.subject);
-                subjects.fold((0, 0), |(a, b), t| {
-                    if t == s {
-                        (a + 1, b)
-                    } else if kind(&scene.objects[t]) == kind(&scene.objects[s]) {
-                        (a, b + 1)
-                    } else {
-                        (a, b)
-                    }
-                })
-            });
-            let good = if c.stats.framed_well() { GOOD } else { 0.0 };
-            // What a person calls a poor picture (`faults.rs`) loses [`POOR`] a fault: a wide
-            // view of the room from its edge is better than any of them.
-            let flag = |b: bool| if b { 1.0 } else { 0.0 };
-            let (bare, blocker, grazing) = (
-                flag(c.stats.covered < BARE_COVER),
-                flag(c.blocker > 0.0),
-                flag(c.grazing > 0.0),
-            );
-            let over = (c.stats.largest - MAX_OBJECT_SHARE).max(0.0);
-            let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
-                - 6.0 * near
-                - 5.0 * over
-                - 3.0 * (c.stats.largest - 0.2).max(0.0)
-                - 6.0 * (fg - c.near).max(0.0)
-                - 3.0 * same as f64
-                - if same >= 2 { POOR } else { 0.0 }
-                - 1.0 * alike as f64
-                - back_penalty(&c.stats)
-                - 16.0 * (c.occluder - 0.05).max(0.0)
-                - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
-                - POOR * (bare + copy + blocker + grazing)
-                - 10.0 * (c.blocker + c.grazing)
-                + 4.0 * (c.reach / diagonal).min(0.6)
-                + if focal_taken < focal_target && looks_ahead(c) {
-                    3.0
-                } else {
-                    0.0
-                };
-            if best.is_none_or(|(_, s)| score > s) {
-                best = Some((i, score));
-            }
-        }
-        let Some((i, _)) = best else { break };
-        if looks_ahead(&cands[i]) {
-            focal_taken += 1;
-        }
-        for (s, shown) in seen.iter_mut().zip(&cands[i].shows) {
-            if shown.is_some() {
-                *s += 1;
-            }
-        }
-        taken.push(i);
-    }
-    let mut out: Vec<Camera> = taken.into_iter().map(|i| cands[i].cam.clone()).collect();
-    for (i, c) in out.iter_mut().enumerate() {
-        c.id = i as u32;
-        c.img_name = format!("view_{i:04}");
-    }
-    out
-}
-
+mod pick;
 #[cfg(test)]
 mod tests;

@@ -3,13 +3,20 @@
 //! mirror, painting, TV or whiteboard) seen edge-on, and a near copy of an earlier view. The
 //! render views are scored against these (`choose.rs`) and the framing figure counts them.
 //! Host-only.
-use super::views::{facing, frame_share, FLAT};
-use super::{ObjectBox, SceneBox};
+use super::views::{facing, frame_share, screen_box, FLAT};
+use super::wall::bare_wall_share;
+use super::{kind, ObjectBox, SceneBox};
 use crate::camera::Camera;
+use crate::shape::functions::category_functions;
+use std::collections::BTreeSet;
+use std::sync::OnceLock;
 
 /// A view whose objects' boxes cover less than this share of the frame is mostly bare wall or
 /// floor (box silhouettes overstate what chairs and tables hide, so this is generous).
 pub const BARE_COVER: f64 = 0.25;
+/// A view more than this share of whose frame is wall with nothing before it (no object, door
+/// or window; see [`bare_wall_share`]) is mostly bare wall, however much its boxes cover.
+pub const BARE_WALL: f64 = 0.45;
 /// A blocker: an object covering more than `BLOCKER_SHARE` of the frame whose footprint stands
 /// nearer the camera than `BLOCKER_PER_SIZE` of its largest side (so it spans a wide angle),
 /// and within `BLOCKER_NEAR` metres, with the room at least `BLOCKER_BEHIND` metres further
@@ -18,8 +25,18 @@ pub const BLOCKER_SHARE: f64 = 0.05;
 pub const BLOCKER_PER_SIZE: f64 = 0.9;
 pub const BLOCKER_NEAR: f64 = 1.5;
 pub const BLOCKER_BEHIND: f64 = 1.0;
-/// A flat piece seen at more than this angle from its face (degrees) is seen edge-on.
+/// An object is also a blocker, however far, when it stands at the frame's side like a column:
+/// its silhouette cut by the frame's bottom edge and its left or right one, and rising through
+/// at least this share of the frame's height.
+pub const COLUMN_HEIGHT: f64 = 0.7;
+/// A flat piece seen at more than this angle from its face (degrees) is seen edge-on: the
+/// larger of the angle of the line of sight and that of the lens's axis, since a panel turned
+/// from the image plane is drawn as a thin trapezoid even where the line of sight meets it
+/// square (at the side of a wide lens).
 pub const GRAZING_DEG: f64 = 65.0;
+/// The limit for a mirror (function class `mirror` of the shape knowledge base): the draft's
+/// mirror reflects nothing, and its grey pane reads as a mirror only nearly face on.
+pub const GRAZING_MIRROR_DEG: f64 = 45.0;
 /// A flat piece: at most this deep (metres) and this share of its width and height.
 const FLAT_DEPTH: f64 = 0.15;
 const FLAT_RATIO: f64 = 0.25;
@@ -66,14 +83,39 @@ pub fn is_panel(o: &ObjectBox) -> bool {
 /// The share of the frame of the panels that `cam` sees edge-on (beyond `GRAZING_DEG` from
 /// their face or back), given each object's share of the frame.
 pub fn grazing_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
-    let cos = GRAZING_DEG.to_radians().cos();
+    let (cos, mirror_cos) = (
+        GRAZING_DEG.to_radians().cos(),
+        GRAZING_MIRROR_DEG.to_radians().cos(),
+    );
+    // A point far behind the camera along its axis: the direction "seen along the axis".
+    let axis = [0, 1].map(|i| cam.position[i] - 1e6 * cam.rotation[i][2]);
     scene
         .objects
         .iter()
         .zip(shares)
-        .filter(|(o, s)| **s > GRAZING_SHARE && is_panel(o) && facing(o, cam.position).abs() < cos)
+        .filter(|(o, s)| {
+            let limit = if is_mirror(o) { mirror_cos } else { cos };
+            let seen = facing(o, cam.position)
+                .abs()
+                .min(facing(o, [axis[0], axis[1], 0.0]).abs());
+            **s > GRAZING_SHARE && is_panel(o) && seen < limit
+        })
         .map(|(_, s)| *s)
         .sum()
+}
+
+/// True when `o`'s kind ([`kind`]) is a category of the function class `mirror`.
+fn is_mirror(o: &ObjectBox) -> bool {
+    static MIRRORS: OnceLock<BTreeSet<&'static str>> = OnceLock::new();
+    MIRRORS
+        .get_or_init(|| {
+            category_functions()
+                .into_iter()
+                .filter(|(_, f)| *f == "mirror")
+                .map(|(c, _)| c)
+                .collect()
+        })
+        .contains(kind(o))
 }
 
 /// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
@@ -92,7 +134,7 @@ fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
 }
 
-/// The largest share of the frame a blocker covers (see `BLOCKER_SHARE`), 0 without one,
+/// The largest share of the frame a blocker covers (see `BLOCKER_SHARE`, `COLUMN_HEIGHT`), 0 without one,
 /// given each object's share of the frame. What it stands before is the room: another object
 /// in frame, or the wall or ground edge the view looks at.
 pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
@@ -106,14 +148,22 @@ pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
         .filter(|&j| seen(j))
         .map(|j| dists[j])
         .fold(depth(scene, cam), f64::max);
+    let (w, h) = (cam.width as f64, cam.height as f64);
+    // A column at the frame's side: cut by its side and bottom edges and rising to the frame's
+    // top part (a punching bag or a wardrobe's flank beside the lens).
+    let column = |o: &ObjectBox| {
+        screen_box(cam, o).1.is_some_and(|r| {
+            (r[0] <= 1.0 || r[2] >= w - 1.0) && r[3] >= h - 1.0 && r[1] <= (1.0 - COLUMN_HEIGHT) * h
+        })
+    };
     (0..scene.objects.len())
         .filter(|&k| {
             let o = &scene.objects[k];
             let near = BLOCKER_NEAR.min(BLOCKER_PER_SIZE * o.size[0].max(o.size[1]).max(o.size[2]));
             seen(k)
                 && shares[k] > BLOCKER_SHARE
-                && dists[k] < near
                 && far > dists[k] + BLOCKER_BEHIND
+                && (dists[k] < near || column(o))
         })
         .map(|k| shares[k])
         .fold(0.0, f64::max)
@@ -147,7 +197,7 @@ pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
             let s = &shares[i];
             let covered: f64 = s.iter().sum();
             ViewFaults {
-                bare: covered < BARE_COVER,
+                bare: covered < BARE_COVER || bare_wall_share(scene, c) > BARE_WALL,
                 blocker: blocker_share(scene, c, s) > 0.0,
                 grazing: grazing_share(scene, c, s) > 0.0,
                 copy: (0..i).any(|j| alike((c, s), (&cams[j], &shares[j])) > COPY),

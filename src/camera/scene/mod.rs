@@ -22,16 +22,19 @@ mod choose;
 mod faults;
 mod paths;
 mod views;
+mod wall;
 
 pub use choose::{eye_height, render_views, view_fov};
 pub use faults::{
-    alike, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER, COPY,
+    alike, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER, BARE_WALL,
+    COPY,
 };
 pub use paths::{explore_path, inference_circle, orbit};
 pub use views::{
-    facing, frame_share, framing_score, in_frame, overview_camera, view_stats, ViewStats,
-    MAX_OBJECT_SHARE,
+    facing, frame_share, framing_score, in_frame, overview_camera, screen_box, view_stats,
+    ViewStats, MAX_OBJECT_SHARE,
 };
+pub use wall::{bare_wall_share, opening_box};
 
 use super::Camera;
 use crate::plan::spec::{Layout, SceneType};
@@ -64,6 +67,9 @@ pub struct SceneBox {
     pub scene_type: SceneType,
     pub room: [f64; 3],
     pub objects: Vec<ObjectBox>,
+    /// The room's doors and windows as thin boxes on their walls ([`opening_box`]): something a
+    /// view sees, never something it stands in or is about.
+    pub openings: Vec<ObjectBox>,
 }
 
 impl SceneBox {
@@ -81,6 +87,12 @@ impl SceneBox {
                     size: o.size,
                     yaw: o.yaw,
                 })
+                .collect(),
+            openings: layout
+                .openings
+                .iter()
+                .enumerate()
+                .map(|(n, o)| opening_box(o, n + 1))
                 .collect(),
         }
     }
@@ -105,6 +117,12 @@ impl SceneBox {
     pub(crate) fn zmid(&self) -> f64 {
         0.5 * self.top()
     }
+}
+
+/// An object's kind from its id: the id without its trailing count (`tree3` → `tree`), which
+/// is its category.
+pub(crate) fn kind(o: &ObjectBox) -> &str {
+    o.id.trim_end_matches(|c: char| c.is_ascii_digit())
 }
 
 impl ObjectBox {

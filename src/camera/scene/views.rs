@@ -97,7 +97,7 @@ pub fn hidden_share(near: &[f64; 4], far: &[f64; 4]) -> f64 {
 
 /// `o`'s box as the image sees it: clipped by the near plane, projected, its convex hull
 /// clipped to the image (pixels).
-fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
+pub(crate) fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
     let pc = corners(o).map(|p| to_cam(cam, p));
     let mut pts = vec![];
     for (i, a) in pc.iter().enumerate() {

@@ -1,13 +1,14 @@
 //! Tests of the render-view choice.
 use super::*;
 use crate::camera::scene::views::tests::boxed;
-use crate::camera::scene::{frame_share, framing_score, overview_camera};
+use crate::camera::scene::{frame_share, framing_score, overview_camera, BARE_WALL};
 
 #[test]
 fn views_of_a_furnished_room_frame_several_objects() {
     let scene = SceneBox {
         scene_type: SceneType::Indoor,
         room: [5.0, 4.0, 2.8],
+        openings: vec![],
         objects: vec![
             boxed("sofa1", 0.0, -1.5, [2.1, 0.9, 0.85]),
             boxed("coffee table1", 0.0, -0.3, [1.1, 0.6, 0.45]),
@@ -65,8 +66,9 @@ fn views_of_the_living_room_keep_clear_of_foreground_objects() {
         let cams = render_views(&scene, 8, 64, 48);
         close += foreground_views(&scene, &cams, 1.4);
     }
+    // The bare-wall rule trades some distance for views that show more than wall: 4 before it.
     assert!(
-        close <= 4,
+        close <= 8,
         "{close} of 32 views stand within 1.4 m of an object in frame (before the foreground rule: 17)"
     );
 }
@@ -76,6 +78,7 @@ fn a_small_room_gets_a_wider_lens() {
     let room = |w: f64, d: f64| SceneBox {
         scene_type: SceneType::Indoor,
         room: [w, d, 2.7],
+        openings: vec![],
         objects: vec![],
     };
     assert_eq!(view_fov(&room(6.0, 5.0)), SCENE_FOV_X, "a large room");
@@ -122,8 +125,9 @@ fn views_vary_their_subject_and_see_it_from_the_front() {
             .map(|k| stats.iter().filter(|s| s.subject == Some(k)).count())
             .max()
             .unwrap_or(0);
+        // 3 before the bare-wall rule, which favours the laundry room's large machines.
         assert!(
-            most <= 3,
+            most <= 4,
             "{prompt}: one object is the subject of {most} of 8 views"
         );
         backs += stats.iter().filter(|s| s.facing < -0.5).count();
@@ -229,10 +233,47 @@ fn small_rooms_get_few_poor_views() {
             .count();
         total += cams.len();
     }
-    assert!(clean * 5 >= total * 3, "{clean} of {total} views clean");
-    assert!(bare * 8 <= total, "{bare} of {total} views mostly bare");
+    // The faults grew stricter (bare wall, a column at the frame's side, a mirror past 45°):
+    // by them the pick before the bare-wall rule gets 14 of 40 clean, this one 19.
+    assert!(clean * 5 >= total * 2, "{clean} of {total} views clean");
+    // Bare now also counts views of mostly bare wall: 12 of 40 here (5 by the box cover alone).
+    assert!(bare * 3 <= total, "{bare} of {total} views mostly bare");
     assert!(
         well * 10 >= total * 9,
         "{well} of {total} views framed well"
+    );
+}
+
+#[test]
+fn views_show_the_room_not_bare_wall() {
+    // Rooms written before the bare-wall rule, its mirror limit and the doors and windows were
+    // measured, and never looked at while tuning them: a plant and an armchair against an empty
+    // wall cover a quarter of the frame with their boxes, yet a person sees mostly wall. Before
+    // the pick weighed bare wall, 27 of these 48 views were clean and 19 mostly bare wall (by
+    // the bare-wall rule alone); after, 38 and 6.
+    let prompts = [
+        "a family room with a sectional sofa, two armchairs, a TV and a bookcase",
+        "a guest bedroom with a queen bed, a wardrobe, an armchair and a full length mirror",
+        "a garage gym with a punching bag, a weight bench, a rowing machine and a mirror",
+        "a breakfast room with a round table, four chairs and a sideboard",
+        "a dressing room with a vanity table, a stool, a mirror and a wardrobe",
+        "a den with a leather sofa, a desk, a floor lamp and a plant",
+    ];
+    let (mut clean, mut wall, mut total) = (0, 0, 0);
+    for prompt in prompts {
+        let (scene, cams) = eight_views(prompt);
+        assert_eq!(cams.len(), 8, "{prompt}: eight views");
+        let faults = crate::camera::scene::view_faults(&scene, &cams);
+        clean += faults.iter().filter(|f| f.clean()).count();
+        wall += cams
+            .iter()
+            .filter(|c| crate::camera::scene::bare_wall_share(&scene, c) > BARE_WALL)
+            .count();
+        total += cams.len();
+    }
+    assert!(clean * 10 >= total * 7, "{clean} of {total} views clean");
+    assert!(
+        wall * 6 <= total,
+        "{wall} of {total} views mostly bare wall"
     );
 }
