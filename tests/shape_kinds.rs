@@ -187,3 +187,19 @@ fn an_exercise_bike_stands_on_its_frame_not_on_wheels() {
     let (lo, _) = range(&of(&s, Role::Tyre), 2);
     assert!(lo < 0.01, "a bicycle stands on its tyres ({lo:.3})");
 }
+
+#[test]
+fn pictures_hang_flat_on_their_wall() {
+    // A painting, a tapestry and a hanging scroll are hung (placement: on the wall): the whole
+    // picture lies within a few centimetres of its back, with no posts or feet standing out.
+    for category in ["painting", "tapestry", "hanging scroll"] {
+        let (s, size) = samples(category);
+        let back = -size[1] / 2.0;
+        let (_, front) = range(&s.iter().map(|(p, _)| *p).collect::<Vec<_>>(), 1);
+        assert!(
+            front - back < 0.06,
+            "{category}: stands {:.2} m out from its wall",
+            front - back
+        );
+    }
+}

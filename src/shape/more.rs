@@ -144,7 +144,7 @@ pub fn screen(b: &mut Builder) {
 }
 
 /// A panel on two posts with feet: the surface (`role`) faces +y from `z0` up.
-fn panel(b: &mut Builder, role: Role, z0: f64, patches: bool) {
+fn panel(b: &mut Builder, role: Role, z0: f64) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let post = 0.035;
     for sx in [-1.0, 1.0] {
@@ -165,40 +165,46 @@ fn panel(b: &mut Builder, role: Role, z0: f64, patches: bool) {
     b.cuboid(Frame, [-hw + post, -t / 2.0, z0], [hw - post, t / 2.0, h]);
     let (x0, x1, z1) = (-hw + post + fw, hw - post - fw, h - fw);
     b.cuboid(role, [x0, t / 2.0, z0 + fw], [x1, t / 2.0 + 0.003, z1]);
-    if patches {
-        // A painting's subject: a few overlapping colour fields.
-        let (pw, ph) = (x1 - x0, z1 - z0 - fw);
-        for (k, (u0, v0, u1, v1)) in [
-            (0.0, 0.0, 1.0, 0.45),
-            (0.0, 0.45, 1.0, 1.0),
-            (0.2, 0.2, 0.55, 0.7),
-            (0.6, 0.1, 0.85, 0.5),
-        ]
-        .iter()
-        .enumerate()
-        {
-            let y = t / 2.0 + 0.003 + 0.002 * k as f64;
-            b.cuboid_v(
-                Books,
-                [3, 1, 0, 5][k],
-                [x0 + u0 * pw, y, z0 + fw + v0 * ph],
-                [x0 + u1 * pw, y + 0.002, z0 + fw + v1 * ph],
-            );
-        }
-    }
 }
 
 pub fn board(b: &mut Builder) {
     let z0 = if b.h > 1.5 { 0.35 * b.h } else { 0.1 * b.h };
-    panel(b, Canvas, z0, false);
+    panel(b, Canvas, z0);
 }
 
 pub fn chalkboard(b: &mut Builder) {
     board(b);
 }
 
+/// A picture hung on a wall: a frame over its whole box with the canvas and its subject in
+/// front, its back against the wall (-y); no posts or feet, since it hangs.
 pub fn painting(b: &mut Builder) {
-    panel(b, Canvas, 0.3 * b.h, true);
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let t = (0.8 * b.d).clamp(0.005, 0.04);
+    let fw = (0.06 * b.w.min(h)).clamp(0.015, 0.06);
+    b.cuboid(Frame, [-hw, -hd, 0.0], [hw, -hd + t, h]);
+    let y = -hd + t;
+    let (x0, x1, z0, z1) = (-hw + fw, hw - fw, fw, h - fw);
+    b.cuboid(Canvas, [x0, y, z0], [x1, y + 0.003, z1]);
+    // Its subject: a few overlapping colour fields.
+    let (pw, ph) = (x1 - x0, z1 - z0);
+    for (k, (u0, v0, u1, v1)) in [
+        (0.0, 0.0, 1.0, 0.45),
+        (0.0, 0.45, 1.0, 1.0),
+        (0.2, 0.2, 0.55, 0.7),
+        (0.6, 0.1, 0.85, 0.5),
+    ]
+    .iter()
+    .enumerate()
+    {
+        let yk = y + 0.003 + 0.002 * k as f64;
+        b.cuboid_v(
+            Books,
+            [3, 1, 0, 5][k],
+            [x0 + u0 * pw, yk, z0 + v0 * ph],
+            [x0 + u1 * pw, yk + 0.002, z0 + v1 * ph],
+        );
+    }
 }
 
 pub fn mirror(b: &mut Builder) {
