@@ -26,6 +26,7 @@ pub mod rows;
 mod score;
 mod spacing;
 mod tables;
+mod walls;
 use attempt::attempt_layout;
 use fit::join_names;
 pub use fit::smallest_room;

@@ -272,6 +272,8 @@ impl Problem {
             }
             // Around the partner in its frame: front, behind, left, right at several gaps.
             let ext = 0.5 * s[0].max(s[1]);
+            let square = self.scene == SceneType::Indoor
+                && (self.faced[i] || self.inst[i].anchor == Anchor::Side);
             for (dir, half) in [
                 (bj.ey, 0.5 * sj[1]),
                 ([-bj.ey[0], -bj.ey[1]], 0.5 * sj[1]),
@@ -287,7 +289,13 @@ impl Problem {
                             pj.c[1] + dir[1] * base + lateral[1] * t * ext,
                         ];
                         let to = [pj.c[0] - c[0], pj.c[1] - c[1]];
-                        let face = yaw_facing(to);
+                        // (a thing against a wall stays square to it: a dishwasher beside
+                        // its sink is not turned toward the sink's centre)
+                        let face = if square {
+                            (yaw_facing(to) / 90.0).round() * 90.0
+                        } else {
+                            yaw_facing(to)
+                        };
                         for yaw in [
                             face,
                             face + 180.0,
