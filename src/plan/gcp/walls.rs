@@ -59,7 +59,9 @@ impl Problem {
         // what stands in the strip of wall this thing backs onto: placed floor things and
         // the doors' clear zones
         let in_strip = |a: &[f64; 4]| {
-            let near = (a[across] - wall_at).abs().min((a[across + 2] - wall_at).abs());
+            let near = (a[across] - wall_at)
+                .abs()
+                .min((a[across + 2] - wall_at).abs());
             let spans = a[across] <= wall_at && a[across + 2] >= wall_at;
             near < depth || spans
         };
@@ -86,4 +88,3 @@ impl Problem {
         SLIVER_WEIGHT * (wasted(lo - left) + wasted(right - hi))
     }
 }
-
