@@ -7,9 +7,6 @@ use super::views::{facing, frame_share, screen_box, FLAT};
 use super::wall::bare_wall_share;
 use super::{kind, ObjectBox, SceneBox};
 use crate::camera::Camera;
-use crate::shape::functions::category_functions;
-use std::collections::BTreeSet;
-use std::sync::OnceLock;
 
 /// A view whose objects' boxes cover less than this share of the frame is mostly bare wall or
 /// floor (box silhouettes overstate what chairs and tables hide, so this is generous).
@@ -104,18 +101,12 @@ pub fn grazing_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
         .sum()
 }
 
-/// True when `o`'s kind ([`kind`]) is a category of the function class `mirror`.
+/// True when `o`'s kind ([`kind`]) names a mirror (a mirror, a full length mirror, a mirror wall).
 fn is_mirror(o: &ObjectBox) -> bool {
-    static MIRRORS: OnceLock<BTreeSet<&'static str>> = OnceLock::new();
-    MIRRORS
-        .get_or_init(|| {
-            category_functions()
-                .into_iter()
-                .filter(|(_, f)| *f == "mirror")
-                .map(|(c, _)| c)
-                .collect()
-        })
-        .contains(kind(o))
+    // camera may not import shape (layering): a mirror is a category named by the word
+    kind(o)
+        .split_whitespace()
+        .any(|w| w == "mirror" || w == "mirrors")
 }
 
 /// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
