@@ -31,7 +31,7 @@ pub const COLUMN_HEIGHT: f64 = 0.7;
 /// from the image plane is drawn as a thin trapezoid even where the line of sight meets it
 /// square (at the side of a wide lens).
 pub const GRAZING_DEG: f64 = 65.0;
-/// The limit for a mirror (function class `mirror` of the shape knowledge base): the draft's
+/// The limit for a mirror (a category named by the word, see `is_mirror`): the draft's
 /// mirror reflects nothing, and its grey pane reads as a mirror only nearly face on.
 pub const GRAZING_MIRROR_DEG: f64 = 45.0;
 /// A flat piece: at most this deep (metres) and this share of its width and height.
@@ -195,4 +195,31 @@ pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::scene::views::tests::boxed;
+
+    #[test]
+    fn mirrors_are_known_by_their_name_word() {
+        for id in [
+            "mirror1",
+            "full length mirror2",
+            "mirror wall1",
+            "magic mirror1",
+        ] {
+            assert!(
+                is_mirror(&boxed(id, 0.0, 0.0, [1.0, 0.05, 1.5])),
+                "{id} is a mirror"
+            );
+        }
+        for id in ["painting1", "tv1", "mirrored cabinet1", "whiteboard3"] {
+            assert!(
+                !is_mirror(&boxed(id, 0.0, 0.0, [1.0, 0.05, 1.5])),
+                "{id} is no mirror"
+            );
+        }
+    }
 }
