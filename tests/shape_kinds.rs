@@ -192,7 +192,7 @@ fn an_exercise_bike_stands_on_its_frame_not_on_wheels() {
 fn pictures_hang_flat_on_their_wall() {
     // A painting, a tapestry and a hanging scroll are hung (placement: on the wall): the whole
     // picture lies within a few centimetres of its back, with no posts or feet standing out.
-    for category in ["painting", "tapestry", "hanging scroll"] {
+    for category in ["painting", "tapestry", "hanging scroll", "poster"] {
         let (s, size) = samples(category);
         let back = -size[1] / 2.0;
         let (_, front) = range(&s.iter().map(|(p, _)| *p).collect::<Vec<_>>(), 1);
@@ -202,4 +202,38 @@ fn pictures_hang_flat_on_their_wall() {
             front - back
         );
     }
+}
+
+#[test]
+fn a_poster_is_a_print_to_its_edges_not_a_framed_glass() {
+    // A poster's sheet has no frame round it: what lies at its side edges is paper, and its
+    // printed field spans most of its width and height (a mirror or a painting would show a
+    // frame at the edge, a blank sheet no print).
+    let (s, size) = samples("poster");
+    let hw = size[0] / 2.0;
+    let edge: Vec<Role> = s
+        .iter()
+        .filter(|(p, _)| p[0].abs() > hw - 0.005)
+        .map(|(_, r)| *r)
+        .collect();
+    assert!(!edge.is_empty(), "no samples at the edge");
+    assert!(
+        edge.iter().all(|r| *r == Role::Canvas),
+        "a poster's edge is paper: {edge:?}"
+    );
+    let print = of(&s, Role::Body);
+    let (x0, x1) = range(&print, 0);
+    let (z0, z1) = range(&print, 2);
+    assert!(
+        x1 - x0 > 0.8 * size[0],
+        "print spans {:.2} of {:.2} m",
+        x1 - x0,
+        size[0]
+    );
+    assert!(
+        z1 - z0 > 0.6 * size[2],
+        "print spans {:.2} of {:.2} m",
+        z1 - z0,
+        size[2]
+    );
 }

@@ -283,6 +283,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("chalkboard", m::chalkboard, [Canvas], [Canvas => [0.15, 0.25, 0.20]]),
     arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
     arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),

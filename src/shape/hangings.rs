@@ -174,3 +174,36 @@ pub fn banner(b: &mut Builder) {
         vec![[0.0, 0.0], [er, 0.0], [er, 0.003], [0.0, 0.003]],
     );
 }
+
+/// A poster: a paper sheet flat on the wall with no frame, printed edge to edge: a colour
+/// field, a large round motif across it, a pale title band near the top and lines of small print
+/// at the foot, and a pin at each top corner.
+pub fn poster(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let y = -hd + 0.002;
+    b.cuboid(Canvas, [-hw, -hd, 0.0], [hw, y, h]);
+    let m = (0.05 * b.w.min(h)).clamp(0.01, 0.04);
+    let (x0, x1, z0, z1) = (-hw + m, hw - m, m, h - m);
+    let (pw, ph) = (x1 - x0, z1 - z0);
+    // The printed field, then the motif over it, nearer the viewer.
+    b.cuboid(Body, [x0, y, z0 + 0.18 * ph], [x1, y + 0.002, z1]);
+    let r = 0.32 * pw.min(ph);
+    b.ellipsoid(Cushion, [0.0, y + 0.004, z0 + 0.52 * ph], [r, 0.001, r]);
+    b.cuboid(
+        Canvas,
+        [x0 + 0.1 * pw, y + 0.004, z0 + 0.84 * ph],
+        [x1 - 0.1 * pw, y + 0.006, z0 + 0.93 * ph],
+    );
+    for k in 0..3 {
+        let z = z0 + (0.04 + 0.045 * k as f64) * ph;
+        let x_end = x1 - (0.1 + 0.15 * k as f64) * pw;
+        b.cuboid(
+            Frame,
+            [x0 + 0.08 * pw, y, z],
+            [x_end, y + 0.002, z + 0.018 * ph],
+        );
+    }
+    for x in [x0 + 0.02, x1 - 0.02] {
+        b.ellipsoid(Metal, [x, y + 0.004, z1 - 0.01], [0.008, 0.004, 0.008]);
+    }
+}
