@@ -220,7 +220,12 @@ pub(super) fn read_mentions(
         if !negated && idx > 0 {
             // "no sofa, tv or rug" / "without a sofa or a tv": connectors only since a negated
             // one; what was replaced ("instead of a bed, a desk") passes nothing on.
-            let prev_neg = r.mentions.last().is_some_and(|p| p.negated) && !prev_replaced;
+            // A colon, semicolon, full stop or dash ends the list the negation governs
+            // ("without a wardrobe: a single bed and a chair").
+            let prev_neg = r.mentions.last().is_some_and(|p| p.negated)
+                && !prev_replaced
+                && !t[prev_end..start].contains([':', ';', '.', '!', '?'])
+                && !t[prev_end..start].contains(" - ");
             let only_connectors = stop
                 .iter()
                 .all(|w| ["or", "nor", ",", "a", "an", "any", "the"].contains(w));
