@@ -265,3 +265,45 @@ fn a_plural_support_without_a_count_holds_all_that_is_put_on_it() {
         );
     }
 }
+
+/// People ("the staff", "a receptionist") are no objects, and the rooms named after what people
+/// do there ("a break room", "a staff room") or the places of the dead ("a cemetery", "a
+/// graveyard") are places with their own furniture, the latter outdoors.
+#[test]
+fn people_and_activity_places_are_no_objects() {
+    for prompt in [
+        "a break room for the staff",
+        "a staff room with a kettle on the counter",
+        "a hotel lobby with a reception desk and a receptionist",
+    ] {
+        let s = plan(prompt);
+        for word in ["break", "staff", "receptionist"] {
+            assert!(
+                !s.objects.keys().any(|c| c.split(' ').any(|w| w == word)),
+                "{prompt}: {:?}",
+                s.objects.keys()
+            );
+        }
+        assert!(!s.objects.is_empty(), "{prompt}");
+    }
+    for prompt in ["a cemetery", "an old graveyard with two benches"] {
+        let s = plan(prompt);
+        assert_eq!(s.scene_type, SceneType::Outdoor, "{prompt}");
+        assert!(
+            number(&s, "tombstone") > 0,
+            "{prompt}: {:?}",
+            s.objects.keys()
+        );
+        assert!(!s.objects.contains_key("flagpole"), "{prompt}");
+    }
+    for prompt in ["a dance studio", "a ballet studio with a piano"] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "easel"), 0, "{prompt}: {:?}", s.objects.keys());
+        assert_eq!(
+            number(&s, "mirror wall"),
+            1,
+            "{prompt}: {:?}",
+            s.objects.keys()
+        );
+    }
+}

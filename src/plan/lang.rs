@@ -9,6 +9,7 @@ use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, Dims};
 
 mod counts;
+mod mentions;
 mod objects;
 mod place;
 mod placements;
@@ -108,9 +109,9 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let dims: Vec<Dims> = find_dims(&t);
     scene::read_scene(kb, &t, &mut r, &mut masked);
     let raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
-    objects::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
+    mentions::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
     room::read_room(&t, &mut r, &masked, &dims);
-    objects::for_whom(kb, &mut r);
+    mentions::for_whom(kb, &mut r);
     read_counts(&mut r);
     read_placements(&mut r);
     placements::supports_hold(kb, &mut r);

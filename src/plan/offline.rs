@@ -6,21 +6,23 @@
 //! which nothing is recognised is an error, not a generic room.
 //!
 //! Stages, in order (each a submodule working on one `Draft`): `roles` (the scene's defaults
-//! and the category each mention means), `sizing` (sizes the text gives), `counts` (counts and
-//! companions), `roles` again (what negation and named roles take away), `describe` (styles and
-//! descriptions), `relations` (anchors and relations), `sizing` (the room), `describe` (what
-//! was understood).
+//! and the category each mention means), `sizing` (sizes the text gives), `counts` (counts),
+//! `seats` (seats at tables, "a table for six"), `companions` (what the counts set), `roles`
+//! again (what negation and named roles take away), `describe` (styles and descriptions),
+//! `relations` (anchors and relations), `sizing` (the room), `describe` (what was understood).
 use super::capacity::fit;
 use super::kb::{KnowledgeBase, SceneKind};
 use super::lang::{self, Reading};
 use super::spec::{ObjectSpec, SceneSpec, SceneType};
 use std::collections::{BTreeMap, BTreeSet};
 
+mod companions;
 mod counts;
 mod describe;
 mod outdoors;
 mod relations;
 mod roles;
+mod seats;
 mod sizing;
 mod supports;
 use describe::describe;
@@ -192,9 +194,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     sizing::mention_sizes(&mut d);
     counts::mention_counts(&mut d);
     supports::plural_supports(&mut d);
-    let people = counts::seats_for(&mut d);
+    let people = seats::seats_for(&mut d);
     roles::take_away(&mut d);
-    counts::companions(&mut d, people);
+    companions::companions(&mut d, people);
     supports::per_instance(&mut d);
     counts::clamp(&mut d);
     if d.counts.is_empty() {

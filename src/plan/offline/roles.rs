@@ -3,7 +3,7 @@
 //! category each mention means in this scene ("desks" in a classroom are school desks, "a big
 //! potted palm" a potted plant), and after counting what negation and the roles of named objects
 //! take away (the role table is `plan::roles`).
-use super::counts::seat_for;
+use super::seats::seat_for;
 use super::Draft;
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::lang;

@@ -1,0 +1,217 @@
+//! Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" 24 seats,
+//! "20 chairs" the tables they need.
+use super::Draft;
+use crate::plan::lang;
+use crate::plan::spec::{ObjectSpec, SceneSpec};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" (`people`)
+/// 24 seats, "20 chairs" the tables they need.
+pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
+    let Draft {
+        kb,
+        r,
+        cats,
+        scene_type,
+        counts,
+        defaults,
+        named,
+        sizes,
+        unknown,
+        explicit,
+        inferred,
+        notes,
+        adjectives,
+        ..
+    } = d;
+    let scene_type = *scene_type;
+    let first_mention = |c: &str| cats.iter().position(|x| x == c);
+    let probe = SceneSpec {
+        scene_type,
+        scene_text: String::new(),
+        room: None,
+        objects: counts
+            .iter()
+            .map(|(c, n)| {
+                let size = sizes
+                    .get(c)
+                    .copied()
+                    .or_else(|| kb.object(c).map(|o| o.size))
+                    .or_else(|| unknown.get(c).copied())
+                    .unwrap_or([0.7, 0.6, 0.9]);
+                (
+                    c.clone(),
+                    ObjectSpec {
+                        number: *n,
+                        size,
+                        description: String::new(),
+                        rows: 0,
+                        sizes: vec![],
+                    },
+                )
+            })
+            .collect(),
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
+    let cats_now: Vec<String> = counts.keys().cloned().collect();
+    let default_probe = SceneSpec {
+        objects: defaults
+            .iter()
+            .map(|(c, n)| {
+                let size = kb.object(c).map(|o| o.size).unwrap_or([0.7, 0.6, 0.9]);
+                let o = ObjectSpec {
+                    number: *n,
+                    size,
+                    description: String::new(),
+                    rows: 0,
+                    sizes: vec![],
+                };
+                (c.clone(), o)
+            })
+            .collect(),
+        ..probe.clone()
+    };
+    for seat in &cats_now {
+        // A rug under a table or a coffee table before a sofa is no companion to count by.
+        use crate::plan::spec::RelationKind::{Front, Opposite, Under};
+        let Some((kind, table)) = crate::plan::groups::group_of(&probe, seat) else {
+            continue;
+        };
+        if matches!(kind, Under | Front | Opposite) {
+            continue;
+        }
+        // A default seat whose own table is gone (the teacher's chair, once "the invigilator's
+        // desk" took the teacher desk's place) is no seat of the others.
+        if defaults.contains_key(seat) && !explicit.contains_key(seat) {
+            let was = crate::plan::groups::group_of(&default_probe, seat).map(|g| g.1);
+            if was.is_some_and(|w| w != table) {
+                continue;
+            }
+        }
+        let Some(per) = crate::plan::groups::seats_per(&probe, seat, &table) else {
+            continue;
+        };
+        // "the laptop": a definite mention names it too
+        let seat_named = explicit.contains_key(seat)
+            || r.mentions
+                .iter()
+                .zip(cats.iter())
+                .any(|(m, c)| c == seat && m.definite && !m.negated && !m.reference);
+        // "along the counter": one particular table, however many seats it gets
+        let one_said = r
+            .mentions
+            .iter()
+            .zip(cats.iter())
+            .any(|(m, c)| *c == table && m.definite && !m.plural && !m.negated && !m.reference);
+        let table_named = explicit.contains_key(&table) || one_said;
+        // "for 24 students" seats the scene's main seats (its most numerous seat category).
+        let main_seat = cats_now
+            .iter()
+            .filter(|c| {
+                use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+                crate::plan::groups::group_of(&probe, c)
+                    .is_some_and(|(k, _)| matches!(k, Around | At | AtBack | Circle))
+            })
+            .max_by_key(|c| {
+                (
+                    defaults.get(*c).copied().unwrap_or(0),
+                    counts.get(*c).copied().unwrap_or(0),
+                )
+            });
+        if let Some(p) = people.filter(|_| main_seat == Some(seat)) {
+            let said = crate::plan::understood::people_phrase(&r.text, p);
+            if !seat_named {
+                counts.insert(seat.clone(), p);
+                inferred.entry(seat.clone()).or_insert_with(|| said.clone());
+            }
+            if !table_named {
+                counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+                inferred.entry(table.clone()).or_insert(said);
+            }
+            continue;
+        }
+        if table_named && !seat_named && per < 12 {
+            // Seats a table the way the scene's defaults do, within its capacity.
+            let (ds, dt) = (defaults.get(seat).copied(), defaults.get(&table).copied());
+            let mut each = match (ds, dt) {
+                (Some(s), Some(t)) if t > 0 => s.div_ceil(t).min(per),
+                _ => per.min(4),
+            };
+            // "a little table and chairs": a table said to be small seats two
+            let small = adjectives.get(&table).is_some_and(|a| {
+                a.iter().any(|w| {
+                    lang::object_footprint(w).is_some_and(|f| f < 1.0)
+                        || lang::object_scale(w).is_some_and(|f| f < 1.0)
+                })
+            });
+            if small {
+                each = each.min(2);
+            }
+            // seats of another kind the text puts at that table take their places ("a desk
+            // and a gaming chair" has one chair); what stands on it takes no seat's place, but
+            // the place of what fills the same slot on it ("a laptop on the desk" is its
+            // computer: one group line of `kb/groups.txt`)
+            use crate::plan::groups::{group_of_category, relation_between};
+            use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+            let seat_kind = |c: &str| {
+                crate::plan::groups::group_of(&probe, c)
+                    .filter(|(k, t)| *t == table && matches!(k, Around | At | AtBack | Circle))
+                    .is_some()
+            };
+            let same_slot = |c: &str| {
+                let line = group_of_category(c);
+                line.is_some()
+                    && line == group_of_category(seat)
+                    && relation_between(c, &table) == relation_between(seat, &table)
+            };
+            let takes = |c: &str| {
+                if seat_kind(seat) {
+                    seat_kind(c)
+                } else {
+                    same_slot(c)
+                }
+            };
+            // what the text names, "the laptop" too
+            let said: BTreeSet<&String> = explicit
+                .keys()
+                .chain(
+                    r.mentions
+                        .iter()
+                        .zip(cats.iter())
+                        .filter(|(m, _)| m.definite && !m.negated && !m.reference)
+                        .map(|(_, c)| c),
+                )
+                .collect();
+            let taken: u32 = said
+                .into_iter()
+                .filter(|c| *c != seat && takes(c))
+                .map(|c| counts.get(c).copied().unwrap_or(0))
+                .sum();
+            counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
+            if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
+                inferred
+                    .entry(seat.clone())
+                    .or_insert_with(|| crate::plan::understood::phrase(r, i));
+            }
+        } else if seat_named && !table_named && per < 12 {
+            let need = counts[seat].div_ceil(per.max(1));
+            let t = counts.get(&table).copied().unwrap_or(1);
+            if need > t {
+                counts.insert(table.clone(), need);
+                if let Some(i) = first_mention(seat) {
+                    inferred
+                        .entry(table.clone())
+                        .or_insert_with(|| crate::plan::understood::phrase(r, i));
+                }
+            }
+        }
+    }
+    if people.is_some()
+        && !counts
+            .keys()
+            .any(|c| crate::plan::groups::group_of(&probe, c).is_some())
+    {
+        notes.push("\"for N people\": this scene has no seats to scale; counts kept".into());
+    }
+}

@@ -1,0 +1,205 @@
+//! Seats at tables while counts are read: the seat category that goes round a table, how many
+//! fit round one, the footprint of a table laid for N, and "a table for six" (the people the
+//! text seats).
+use super::Draft;
+use crate::plan::kb::KnowledgeBase;
+use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType};
+use std::collections::BTreeMap;
+
+/// The seat category that goes round `table`: one the plan already has, else the first of the
+/// usual seats that the functional groups put at such a table.
+pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<String> {
+    const USUAL: &[&str] = &[
+        "dining chair",
+        "cafe chair",
+        "patio chair",
+        "office chair",
+        "bar stool",
+    ];
+    let probe = |seat: &str| {
+        let mut objects = BTreeMap::new();
+        for c in [table, seat] {
+            objects.insert(
+                c.to_string(),
+                ObjectSpec {
+                    number: 1,
+                    size: [1.0, 1.0, 1.0],
+                    description: String::new(),
+                    rows: 0,
+                    sizes: vec![],
+                },
+            );
+        }
+        let spec = bare_spec(objects);
+        crate::plan::groups::group_of(&spec, seat).is_some_and(|(_, t)| t == table)
+    };
+    counts
+        .keys()
+        .map(String::as_str)
+        .chain(USUAL.iter().copied())
+        .find(|s| *s != table && probe(s))
+        .map(str::to_string)
+}
+
+/// How many `seat`s go round a `table` of footprint `size`.
+fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
+    let objects = [(table, size), (seat, [0.5, 0.5, 0.9])]
+        .into_iter()
+        .map(|(c, size)| {
+            let o = ObjectSpec {
+                number: 1,
+                size,
+                description: String::new(),
+                rows: 0,
+                sizes: vec![],
+            };
+            (c.to_string(), o)
+        })
+        .collect();
+    let spec = bare_spec(objects);
+    crate::plan::groups::seats_per(&spec, seat, table)
+}
+
+/// The footprint of a `table` laid for `per` people (kb/seating.txt), its height kept: a round
+/// one when its kind or the text says so. Only plain dining-like tables (a picnic table's size
+/// holds its benches, a pool table seats nobody).
+fn table_laid(
+    kb: &KnowledgeBase,
+    table: &str,
+    adjectives: &BTreeMap<String, Vec<String>>,
+    per: u32,
+) -> Option<[f64; 3]> {
+    let o = kb.object(table)?;
+    let round = o.archetype == "round_table"
+        || adjectives
+            .get(table)
+            .is_some_and(|a| a.iter().any(|w| w == "round"));
+    if !(o.archetype == "table" || round) {
+        return None;
+    }
+    let [w, d] = crate::plan::seating::table_for(per.max(1), round)?;
+    Some([w, d, o.size[2]])
+}
+
+/// "A table for six": that many seats at each of those tables. The people the text seats
+/// ("for 24 students"), unless a table's seats were given.
+pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
+    let kb = d.kb;
+    let Draft {
+        r,
+        sizes,
+        cats,
+        counts,
+        defaults,
+        named,
+        explicit,
+        inferred,
+        adjectives,
+        laid,
+        ..
+    } = d;
+    let mut seated = false;
+    // "six tables for two and two tables for six": the seats of every such mention of one
+    // table category add up
+    for &(ti, per) in &r.seats_for {
+        let table = &cats[ti];
+        let Some(&tables) = counts.get(table) else {
+            continue;
+        };
+        let Some(seat) = seat_for(table, counts) else {
+            continue;
+        };
+        seated = true;
+        inferred
+            .entry(seat.clone())
+            .or_insert_with(|| crate::plan::understood::seats_phrase(r, ti));
+        let same: Vec<(usize, u32)> = r
+            .seats_for
+            .iter()
+            .filter(|&&(tj, _)| cats[tj] == *table)
+            .copied()
+            .collect();
+        if same.len() > 1 && same[0].0 != ti {
+            continue;
+        }
+        // "desks for twelve people": things that seat one each, said in the plural with no
+        // count, are as many as the people
+        let m = &r.mentions[ti];
+        let size = sizes
+            .get(table)
+            .copied()
+            .or_else(|| kb.object(table).map(|o| o.size));
+        let one_each = m.plural
+            && m.count.is_none()
+            && same.len() == 1
+            && size.and_then(|z| capacity(table, &seat, z)) == Some(1);
+        if one_each {
+            counts.insert(table.clone(), per);
+            explicit.insert(table.clone(), per);
+        }
+        let tables = if one_each { 1 } else { tables };
+        let n = if same.len() > 1 {
+            same.iter()
+                .map(|&(tj, p)| p * r.mentions[tj].count.unwrap_or(tables).max(1))
+                .sum()
+        } else {
+            per * tables.max(1)
+        };
+        // "tables for two": a table the size of one laid for two, not a long one; "six tables
+        // for two and two tables for six": each table the size of its own seats, and the
+        // seats said for it at it
+        let most = same.iter().map(|&(_, p)| p).max().unwrap_or(per);
+        let each: Vec<u32> = same
+            .iter()
+            .flat_map(|&(tj, p)| std::iter::repeat_n(p, r.mentions[tj].count.unwrap_or(1) as usize))
+            .collect();
+        let mixed = each.iter().any(|&p| p != most) && each.len() == tables as usize;
+        if !sizes.contains_key(table) {
+            let laid_for = |p: u32| table_laid(kb, table, adjectives, p);
+            let list: Option<Vec<(u32, [f64; 3])>> =
+                each.iter().map(|&p| Some((p, laid_for(p)?))).collect();
+            match (mixed, list, laid_for(most), kb.object(table)) {
+                (true, Some(list), Some(big), _) => {
+                    sizes.insert(table.clone(), big);
+                    laid.insert(table.clone(), (seat.clone(), list));
+                }
+                // a usual table that seats them keeps its size unless a smaller one is laid for them
+                (_, _, Some(size), Some(o))
+                    if size[0] * size[1] < o.size[0] * o.size[1]
+                        || capacity(table, &seat, o.size).is_some_and(|c| c < most) =>
+                {
+                    sizes.insert(table.clone(), size);
+                }
+                _ => {}
+            }
+        }
+        let total = if explicit.contains_key(&seat) && !defaults.contains_key(&seat) {
+            explicit[&seat].max(n)
+        } else {
+            n
+        };
+        explicit.insert(seat.clone(), total);
+        named.insert(seat.clone());
+        counts.insert(seat, total);
+    }
+    if seated {
+        None
+    } else {
+        r.people
+    }
+}
+
+/// Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" (`people`)
+/// 24 seats, "20 chairs" the tables they need.
+/// A spec of just these objects, with no room, anchors or relations: what the group rules
+/// (seats at a table) are asked about while counts are read.
+fn bare_spec(objects: BTreeMap<String, ObjectSpec>) -> SceneSpec {
+    SceneSpec {
+        scene_type: SceneType::Indoor,
+        scene_text: String::new(),
+        room: None,
+        objects,
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    }
+}
