@@ -252,6 +252,9 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         } else {
             per * tables.max(1)
         };
+        // the seats of another table the text names that they also go to ("a head table and
+        // ten round tables for eight": the head table's party besides the eighty)
+        let n = n + other_tables_seats(kb, table, &seat, counts, explicit, sizes);
         // "tables for two": a table the size of one laid for two, not a long one; "six tables
         // for two and two tables for six": each table the size of its own seats, and the
         // seats said for it at it
@@ -294,6 +297,30 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
     } else {
         r.people
     }
+}
+
+/// The seats of the tables other than `table` that the text names with no seats said and that
+/// `seat` goes to (a head table beside round tables laid for eight).
+fn other_tables_seats(
+    kb: &KnowledgeBase,
+    table: &str,
+    seat: &str,
+    counts: &BTreeMap<String, u32>,
+    explicit: &BTreeMap<String, u32>,
+    sizes: &BTreeMap<String, [f64; 3]>,
+) -> u32 {
+    counts
+        .iter()
+        .filter(|&(t, _)| t != table && explicit.contains_key(t))
+        .filter(|&(t, _)| seat_for(t, counts).as_deref() == Some(seat))
+        .filter_map(|(t, &k)| {
+            let size = sizes
+                .get(t)
+                .copied()
+                .or_else(|| kb.object(t).map(|o| o.size))?;
+            Some(k * capacity(t, seat, size)?)
+        })
+        .sum()
 }
 
 /// Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" (`people`)
