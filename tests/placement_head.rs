@@ -1,6 +1,6 @@
-//! Placement faults of round 16: a head table's party sits along its back, facing the room
-//! with it, backs to a wall; the head table's seats come on top of the seats said for the
-//! round tables.
+//! Placement faults of round 16: a small lounge's seat faces its wall TV; a head table's party
+//! sits along its back, facing the room with it, backs to a wall; the head table's seats come
+//! on top of the seats said for the round tables.
 use dreamscene::plan::check::{validity_problems, wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
@@ -112,5 +112,37 @@ fn a_head_tables_seats_come_on_top_of_the_round_tables_seats() {
         };
         assert_eq!(at("round table"), round * per, "{prompt}");
         assert!(at("top table") >= 4, "{prompt}");
+    }
+}
+
+#[test]
+fn a_small_lounges_seat_faces_its_wall_tv() {
+    // the seat stands where the wall it faces can take the TV clear of the door and windows,
+    // centred on a short wall when only there it keeps clear of both end walls
+    for prompt in [
+        "a small lounge with a loveseat, a tv on the wall and a floor lamp",
+        "a snug with a small sofa, a wall-mounted tv and a side table",
+        "a little sitting room with a small sofa, a wall-mounted tv and a plant",
+    ] {
+        for seed in 0..3 {
+            let (l, _) = lay(prompt, seed);
+            let seat = placed(&l, "loveseat1");
+            let tv = placed(&l, "tv1");
+            let f = facing(seat);
+            let d = [
+                tv.position[0] - seat.position[0],
+                tv.position[1] - seat.position[1],
+            ];
+            let cos = (d[0] * f[0] + d[1] * f[1]) / d[0].hypot(d[1]);
+            assert!(
+                cos > 0.85,
+                "{prompt} (seed {seed}): the TV is off the seat's axis"
+            );
+            assert!(
+                l.unsatisfied.is_empty(),
+                "{prompt} (seed {seed}): {:?}",
+                l.unsatisfied
+            );
+        }
     }
 }

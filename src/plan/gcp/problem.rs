@@ -53,6 +53,11 @@ pub(super) struct Pose {
 /// (`poses.rs`, AT_BACK) try 0.05 and this.
 pub(super) const AT_BACK_GAP: f64 = 0.12;
 
+/// How near one wall a SIDE thing stands (m), ARCHITECTURE.md "Relation and anchor meaning":
+/// a thing with little more slack than twice this along its wall keeps clear of both end walls
+/// only near the wall's middle.
+const SIDE_DISTANCE: f64 = 0.3;
+
 /// A corner thing at least this wide on both sides (metres) stands square in its corner.
 const FLUSH_CORNER_SIDE: f64 = 0.8;
 
@@ -123,6 +128,16 @@ impl Problem {
                 .chain([hi])
                 .collect()
         };
+        // Spots along a wall `2 * half` long for a thing `2 * own` wide: the grid, and the
+        // wall's middle where it has little slack (there alone a thing on a short wall keeps
+        // clear of both end walls, and the grid may step over it).
+        let along = |half: f64, own: f64| -> Vec<f64> {
+            let mut v = grid(-half + own, half - own);
+            if 2.0 * (half - own) <= 2.0 * (SIDE_DISTANCE + self.step) {
+                v.push(0.0);
+            }
+            v
+        };
         // Yaws suggested by placed partners.
         let mut yaws: Vec<f64> = vec![0.0, 90.0, 180.0, -90.0];
         for &(_, j, _) in &self.rels[i] {
@@ -148,7 +163,7 @@ impl Problem {
                     match wall {
                         0 | 1 => {
                             let x = if wall == 0 { -hw + off } else { hw - off };
-                            for y in grid(-hd + along_half, hd - along_half) {
+                            for y in along(hd, along_half) {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,
@@ -158,7 +173,7 @@ impl Problem {
                         }
                         _ => {
                             let y = if wall == 2 { -hd + off } else { hd - off };
-                            for x in grid(-hw + along_half, hw - along_half) {
+                            for x in along(hw, along_half) {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,

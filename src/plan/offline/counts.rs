@@ -46,8 +46,10 @@ pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<St
 /// The counts the mentions give: negated and "no other" categories, counts distributed over the
 /// instances of another object ("two chairs at each table"), a bare plural's default count.
 pub(super) fn mention_counts(d: &mut Draft) {
+    let kb = d.kb;
     let Draft {
         r,
+        sizes,
         cats,
         counts,
         defaults,
@@ -112,7 +114,10 @@ pub(super) fn mention_counts(d: &mut Draft) {
     let mut spread: BTreeMap<String, u32> = BTreeMap::new();
     for (c, per, x) in &distributed {
         let over = counts.get(x).copied().unwrap_or(1).max(1);
-        *spread.entry(c.clone()).or_default() += per * over;
+        // ("eight chairs at each round table" and a head table: its party besides)
+        let said: Vec<&String> = distributed.iter().map(|d| &d.2).collect();
+        let besides = other_tables_seats(kb, x, c, counts, explicit, sizes, &said);
+        *spread.entry(c.clone()).or_default() += per * over + besides;
     }
     for (c, n) in spread {
         let total = explicit.get(&c).copied().unwrap_or(0) + n;
@@ -254,7 +259,8 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         };
         // the seats of another table the text names that they also go to ("a head table and
         // ten round tables for eight": the head table's party besides the eighty)
-        let n = n + other_tables_seats(kb, table, &seat, counts, explicit, sizes);
+        let said: Vec<&String> = r.seats_for.iter().map(|&(tj, _)| &cats[tj]).collect();
+        let n = n + other_tables_seats(kb, table, &seat, counts, explicit, sizes, &said);
         // "tables for two": a table the size of one laid for two, not a long one; "six tables
         // for two and two tables for six": each table the size of its own seats, and the
         // seats said for it at it
@@ -299,8 +305,8 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
     }
 }
 
-/// The seats of the tables other than `table` that the text names with no seats said and that
-/// `seat` goes to (a head table beside round tables laid for eight).
+/// The seats of the tables other than `table` that the text names with no seats said (`said`:
+/// those with their seats said) and that `seat` sits at (a head table beside round tables laid for eight).
 fn other_tables_seats(
     kb: &KnowledgeBase,
     table: &str,
@@ -308,11 +314,19 @@ fn other_tables_seats(
     counts: &BTreeMap<String, u32>,
     explicit: &BTreeMap<String, u32>,
     sizes: &BTreeMap<String, [f64; 3]>,
+    said: &[&String],
 ) -> u32 {
     counts
         .iter()
-        .filter(|&(t, _)| t != table && explicit.contains_key(t))
+        .filter(|&(t, _)| t != table && explicit.contains_key(t) && !said.contains(&t))
         .filter(|&(t, _)| seat_for(t, counts).as_deref() == Some(seat))
+        .filter(|&(t, _)| {
+            use crate::plan::spec::RelationKind::{Around, At, AtBack};
+            matches!(
+                crate::plan::groups::relation_between(seat, t),
+                Some(Around | At | AtBack)
+            )
+        })
         .filter_map(|(t, &k)| {
             let size = sizes
                 .get(t)
