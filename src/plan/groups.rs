@@ -5,7 +5,7 @@
 //! or desk, the TV across from the sofa with the coffee table between, a rug under the group.
 //! They become relations of the spec (AROUND, AT, AT_BACK, FLANK, CIRCLE, ROW and the plain kinds) that
 //! the GCP layout satisfies (sun loungers in pairs beneath a parasol); offline and LLM plans both go through [`apply`].
-use super::spec::{Relation, RelationKind, SceneSpec};
+use super::spec::{Anchor, Relation, RelationKind, SceneSpec};
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 
@@ -143,7 +143,7 @@ fn counter_seats(size: [f64; 3]) -> u32 {
 fn capacity(rule: &Rule, size: [f64; 3]) -> u32 {
     match (rule.per_object, rule.relation) {
         (Some(k), _) => k,
-        (None, RelationKind::At) => counter_seats(size),
+        (None, RelationKind::At | RelationKind::AtBack) => counter_seats(size),
         (None, _) => table_seats(size),
     }
 }
@@ -362,6 +362,7 @@ pub fn apply_named(
         }
     }
     shelter_group(spec);
+    seats_take_the_wall(spec);
     rows_before_front(spec);
     grow_supports(spec);
 }
@@ -423,6 +424,25 @@ fn text_places_first(spec: &mut SceneSpec, keep: &BTreeSet<(String, String)>) {
         .collect();
     spec.relations
         .retain(|r| own(r) || stacked(r) || !placed.contains(&r.subject));
+}
+
+/// Seats along the back of a thing that stands against a wall (a head table's party) take the
+/// wall themselves: their backs to it, the thing before them facing the room with them. The
+/// seats are anchored SIDE and the thing is free of the wall (the layout keeps it a seat's depth
+/// off the wall, see `gcp::problem`).
+fn seats_take_the_wall(spec: &mut SceneSpec) {
+    let backed: Vec<(String, String)> = spec
+        .relations
+        .iter()
+        .filter(|r| {
+            r.relation == RelationKind::AtBack && spec.anchors.get(&r.object) == Some(&Anchor::Side)
+        })
+        .map(|r| (r.subject.clone(), r.object.clone()))
+        .collect();
+    for (seat, table) in backed {
+        spec.anchors.insert(seat, Anchor::Side);
+        spec.anchors.insert(table, Anchor::Others);
+    }
 }
 
 /// The seats of a table that stands under a shelter (a table under a gazebo or a parasol)

@@ -125,8 +125,15 @@ impl Problem {
                 }
             }
             RelationKind::AtBack => {
-                // Along the partner's back, turned as it is.
-                for g in [0.05, 0.12] {
+                // Along the partner's back, turned as it is; a seat against the wall (a
+                // head table's) in line with the wall.
+                let wide = super::problem::AT_BACK_GAP;
+                let gaps: &[f64] = if self.inst[i].anchor == crate::plan::spec::Anchor::Side {
+                    &[wide]
+                } else {
+                    &[0.05, wide]
+                };
+                for &g in gaps {
                     for t in slots(2.0 * hw, s[0]) {
                         out.push(Pose {
                             c: at(t, -hd - g - 0.5 * s[1]),

@@ -49,6 +49,15 @@ pub(super) struct Pose {
     pub(super) z: f64,
 }
 
+/// The widest gap between a desk's back and its seat there (m): the seats' poses
+/// (`poses.rs`, AT_BACK) try 0.05 and this.
+pub(super) const AT_BACK_GAP: f64 = 0.12;
+
+/// How near one wall a SIDE thing stands (m), ARCHITECTURE.md "Relation and anchor meaning":
+/// a thing with little more slack than twice this along its wall keeps clear of both end walls
+/// only near the wall's middle.
+const SIDE_DISTANCE: f64 = 0.3;
+
 /// A corner thing at least this wide on both sides (metres) stands square in its corner.
 const FLUSH_CORNER_SIDE: f64 = 0.8;
 
@@ -89,6 +98,19 @@ impl Problem {
         (group, self.all_candidates(i, placed))
     }
 
+    /// The room instance `i` keeps between its back and the wall for the seats at its back
+    /// that stand against the wall (a head table's party): the deepest seat and its gap; 0
+    /// when none.
+    pub(super) fn wall_seats_depth(&self, i: usize) -> f64 {
+        self.rels[i]
+            .iter()
+            .filter(|&&(rel, k, subject)| {
+                rel == RelationKind::AtBack && !subject && self.inst[k].anchor == Anchor::Side
+            })
+            .map(|&(_, k, _)| self.inst[k].size[1] + AT_BACK_GAP)
+            .fold(0.0, f64::max)
+    }
+
     /// Every candidate pose for instance `i`: anchor regions and around placed partners.
     pub(super) fn all_candidates(&self, i: usize, placed: &[Option<Pose>]) -> Vec<Pose> {
         let [w, d, _] = self.room;
@@ -106,6 +128,16 @@ impl Problem {
                 .chain([hi])
                 .collect()
         };
+        // Spots along a wall `2 * half` long for a thing `2 * own` wide: the grid, and the
+        // wall's middle where it has little slack (there alone a thing on a short wall keeps
+        // clear of both end walls, and the grid may step over it).
+        let along = |half: f64, own: f64| -> Vec<f64> {
+            let mut v = grid(-half + own, half - own);
+            if 2.0 * (half - own) <= 2.0 * (SIDE_DISTANCE + self.step) {
+                v.push(0.0);
+            }
+            v
+        };
         // Yaws suggested by placed partners.
         let mut yaws: Vec<f64> = vec![0.0, 90.0, 180.0, -90.0];
         for &(_, j, _) in &self.rels[i] {
@@ -114,17 +146,24 @@ impl Problem {
                 yaws.push(pj.yaw + 180.0);
             }
         }
-        match self.inst[i].anchor {
+        // (a thing whose seats at its back stand against the wall stands before them)
+        let back = self.wall_seats_depth(i);
+        let anchor = if back > 0.0 {
+            Anchor::Side
+        } else {
+            self.inst[i].anchor
+        };
+        match anchor {
             Anchor::Side => {
                 // Back to each wall, facing into the room, anywhere along it.
                 for (wall, yaw) in [(0usize, -90.0), (1, 90.0), (2, 0.0), (3, 180.0)] {
                     let depth_half = 0.5 * s[1];
-                    let off = WALL_MARGIN + depth_half;
+                    let off = WALL_MARGIN + depth_half + back;
                     let along_half = 0.5 * s[0];
                     match wall {
                         0 | 1 => {
                             let x = if wall == 0 { -hw + off } else { hw - off };
-                            for y in grid(-hd + along_half, hd - along_half) {
+                            for y in along(hd, along_half) {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,
@@ -134,7 +173,7 @@ impl Problem {
                         }
                         _ => {
                             let y = if wall == 2 { -hd + off } else { hd - off };
-                            for x in grid(-hw + along_half, hw - along_half) {
+                            for x in along(hw, along_half) {
                                 out.push(Pose {
                                     c: [x, y],
                                     yaw,

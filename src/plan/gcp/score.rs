@@ -138,6 +138,12 @@ impl Problem {
     fn lookahead(&self, i: usize, p: &Pose, b: &Box2, placed: &[Option<Pose>]) -> usize {
         let mut n = 0;
         for &(rel, j, subject) in &self.rels[i] {
+            if rel == RelationKind::Opposite && subject && placed[j].is_none() {
+                if let Some(z) = self.hung[j].filter(|_| self.wall_hung[j]) {
+                    n += self.wall_spot_ahead(b, self.inst[j].size, z) as usize;
+                }
+                continue;
+            }
             let dir = match rel {
                 RelationKind::Front => 1.0,
                 RelationKind::Behind => -1.0,
@@ -169,6 +175,45 @@ impl Problem {
             }) as usize;
         }
         n
+    }
+}
+
+impl Problem {
+    /// Whether a thing of size `s` hung at height `z` finds a spot on the wall that a seat at
+    /// box `b` faces, across from it (OPPOSITE) and clear of the doors and windows (a small
+    /// lounge's sofa not set where its wall TV could only hang over a window).
+    fn wall_spot_ahead(&self, b: &Box2, s: [f64; 3], z: f64) -> bool {
+        let [hw, hd] = [0.5 * self.room[0], 0.5 * self.room[1]];
+        // the wall ahead: its inward direction against the seat's facing
+        let walls = [
+            ([1.0, 0.0], -hw),
+            ([-1.0, 0.0], hw),
+            ([0.0, 1.0], -hd),
+            ([0.0, -1.0], hd),
+        ];
+        let Some((inward, at)) = walls
+            .into_iter()
+            .find(|(n, _)| n[0] * b.ey[0] + n[1] * b.ey[1] < -0.9)
+        else {
+            return false;
+        };
+        let yaw = yaw_facing(inward);
+        let off = at + (WALL_MARGIN + 0.5 * s[1]) * (inward[0] + inward[1]);
+        [0.0, -0.25, 0.25, -0.5, 0.5, -0.75, 0.75].iter().any(|&t| {
+            let p = [
+                b.c[0] + t * b.half[0] * b.ex[0],
+                b.c[1] + t * b.half[0] * b.ex[1],
+            ];
+            let c = if inward[0] != 0.0 {
+                [off, p[1]]
+            } else {
+                [p[0], off]
+            };
+            let spot = Box2::new(c, yaw, [s[0], s[1]], z, z + s[2]);
+            wall_distances(&spot, self.room).iter().all(|&v| v >= -1e-9)
+                && !self.zones.iter().any(|zone| penetration(&spot, zone) > 0.0)
+                && crate::plan::check::relation_holds_box(b, RelationKind::Opposite, &spot)
+        })
     }
 }
 

@@ -9,8 +9,10 @@ use std::collections::BTreeMap;
 /// The counts the mentions give: negated and "no other" categories, counts distributed over the
 /// instances of another object ("two chairs at each table"), a bare plural's default count.
 pub(super) fn mention_counts(d: &mut Draft) {
+    let kb = d.kb;
     let Draft {
         r,
+        sizes,
         cats,
         counts,
         defaults,
@@ -75,7 +77,10 @@ pub(super) fn mention_counts(d: &mut Draft) {
     let mut spread: BTreeMap<String, u32> = BTreeMap::new();
     for (c, per, x) in &distributed {
         let over = counts.get(x).copied().unwrap_or(1).max(1);
-        *spread.entry(c.clone()).or_default() += per * over;
+        // ("eight chairs at each round table" and a head table: its party besides)
+        let said: Vec<&String> = distributed.iter().map(|d| &d.2).collect();
+        let besides = super::seats::other_tables_seats(kb, x, c, counts, explicit, sizes, &said);
+        *spread.entry(c.clone()).or_default() += per * over + besides;
     }
     for (c, n) in spread {
         let total = explicit.get(&c).copied().unwrap_or(0) + n;

@@ -145,6 +145,10 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
         } else {
             per * tables.max(1)
         };
+        // the seats of another table the text names that they also go to ("a head table and
+        // ten round tables for eight": the head table's party besides the eighty)
+        let said: Vec<&String> = r.seats_for.iter().map(|&(tj, _)| &cats[tj]).collect();
+        let n = n + other_tables_seats(kb, table, &seat, counts, explicit, sizes, &said);
         // "tables for two": a table the size of one laid for two, not a long one; "six tables
         // for two and two tables for six": each table the size of its own seats, and the
         // seats said for it at it
@@ -193,6 +197,38 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
 /// 24 seats, "20 chairs" the tables they need.
 /// A spec of just these objects, with no room, anchors or relations: what the group rules
 /// (seats at a table) are asked about while counts are read.
+/// The seats of the tables other than `table` that the text names with no seats said (`said`:
+/// those with their seats said) and that `seat` sits at (a head table beside round tables laid for eight).
+pub(super) fn other_tables_seats(
+    kb: &KnowledgeBase,
+    table: &str,
+    seat: &str,
+    counts: &BTreeMap<String, u32>,
+    explicit: &BTreeMap<String, u32>,
+    sizes: &BTreeMap<String, [f64; 3]>,
+    said: &[&String],
+) -> u32 {
+    counts
+        .iter()
+        .filter(|&(t, _)| t != table && explicit.contains_key(t) && !said.contains(&t))
+        .filter(|&(t, _)| seat_for(t, counts).as_deref() == Some(seat))
+        .filter(|&(t, _)| {
+            use crate::plan::spec::RelationKind::{Around, At, AtBack};
+            matches!(
+                crate::plan::groups::relation_between(seat, t),
+                Some(Around | At | AtBack)
+            )
+        })
+        .filter_map(|(t, &k)| {
+            let size = sizes
+                .get(t)
+                .copied()
+                .or_else(|| kb.object(t).map(|o| o.size))?;
+            Some(k * capacity(t, seat, size)?)
+        })
+        .sum()
+}
+
 fn bare_spec(objects: BTreeMap<String, ObjectSpec>) -> SceneSpec {
     SceneSpec {
         scene_type: SceneType::Indoor,
