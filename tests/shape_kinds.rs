@@ -237,3 +237,65 @@ fn a_poster_is_a_print_to_its_edges_not_a_framed_glass() {
         size[2]
     );
 }
+
+#[test]
+fn a_mirror_wall_is_glass_edge_to_edge_in_a_thin_metal_trim() {
+    // A mirror wall (a dance studio's, a gym's) is glass across the whole wall with a metal
+    // edge a finger wide; before, it was drawn as a framed mirror, its wooden frame 4 cm wide
+    // and a foot at the bottom. Its synonyms and a wider wall read the same.
+    let kb = KnowledgeBase::builtin();
+    for (category, width) in [("mirror wall", None), ("wall of mirrors", Some(6.0))] {
+        let entry = kb.object(category).unwrap();
+        let mut size = entry.size;
+        if let Some(w) = width {
+            size[0] = w;
+        }
+        let ps = parts(&entry.category, size).unwrap();
+        let roles: Vec<Role> = ps.iter().map(|p| p.role).collect();
+        assert!(
+            roles
+                .iter()
+                .all(|r| matches!(r, Role::Canvas | Role::Metal)),
+            "{category}: only glass and metal, got {roles:?}"
+        );
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let (mut glass, mut metal) = (vec![], vec![]);
+        for p in &ps {
+            let mut s = vec![];
+            p.prim.sample(0.01, &mut rng, &mut s);
+            // What faces the room: the samples of faces turned to +y, weighed by their area.
+            let front = s
+                .iter()
+                .filter(|s| s.normal()[1] > 0.9)
+                .map(|s| (s.pos, s.du * s.dv));
+            match p.role {
+                Role::Canvas => glass.extend(front),
+                _ => metal.extend(front),
+            }
+        }
+        let pts: Vec<[f64; 3]> = glass.iter().map(|g| g.0).collect();
+        let (x0, x1) = range(&pts, 0);
+        let (z0, z1) = range(&pts, 2);
+        assert!(
+            x1 - x0 > 0.97 * size[0] && z1 - z0 > 0.97 * size[2],
+            "{category}: the glass spans {:.2} x {:.2} m of {:.2} x {:.2}",
+            x1 - x0,
+            z1 - z0,
+            size[0],
+            size[2]
+        );
+        let area = |v: &[([f64; 3], f64)]| v.iter().map(|g| g.1).sum::<f64>();
+        let share = area(&metal) / (area(&metal) + area(&glass)).max(1e-9);
+        assert!(
+            share < 0.05,
+            "{category}: {:.0}% of the face is trim",
+            100.0 * share
+        );
+    }
+    // An ordinary wall mirror keeps its frame.
+    let size = kb.object("mirror").unwrap().size;
+    assert!(parts("mirror", size)
+        .unwrap()
+        .iter()
+        .any(|p| p.role == Role::Frame));
+}

@@ -27,6 +27,7 @@ use super::machines as ma;
 use super::markers as mr;
 use super::market as mk;
 use super::materials::{Rgb, Role};
+use super::mirrors as mi;
 use super::more as m;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::picnic as pc;
@@ -284,6 +285,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
     arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
     arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
+    arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => [0.78, 0.84, 0.88], Metal => [0.74, 0.75, 0.77]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),

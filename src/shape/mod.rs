@@ -40,6 +40,7 @@ mod machines;
 mod markers;
 mod market;
 pub mod materials;
+mod mirrors;
 mod more;
 pub mod parts;
 mod picnic;

@@ -1,14 +1,17 @@
 //! The render views: the pictures a user opens first (`renders/`), chosen by what they show.
 //!
 //! Candidates stand at eye height on loops along the room's walls (outdoors: the ground's edge,
-//! the loops further apart on a wide ground), every valid viewpoint 0.25 m apart, each looking at
+//! the loops further apart on a wide ground; indoors also one with the back to the wall),
+//! every valid viewpoint 0.25 m apart, each looking at
 //! an object, a pair of neighbouring objects or the room centre at a gentle downward pitch,
 //! through a lens that widens in a small room ([`view_fov`]). Each candidate is measured from the
 //! layout boxes alone (occlusion ignored, see [`view_stats`]); the views are then picked
-//! greedily: first those that frame well ([`ViewStats::framed_well`]), each adding the most
+//! greedily: first those that frame well ([`ViewStats::framed_well`], counting an object and
+//! what rests on it as one piece, so a TV on its stand is no wide view), each adding the most
 //! objects not yet shown (an object seen from its front counts more than one seen from behind),
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
-//! rather than its back, with no object close in the foreground, and far (in place or direction)
+//! rather than its back, with no object close in the foreground (nor standing in the frame's
+//! middle like a pillar: a floor lamp before the sofa), and far (in place or direction)
 //! from the views already taken. Host-only.
 use super::faults::{blocker_share, footprint_distance, grazing_share};
 use super::views::FLAT;
@@ -175,6 +178,13 @@ struct Candidate {
     /// ([`blocker_share`], [`grazing_share`]).
     blocker: f64,
     grazing: f64,
+    /// The pieces in view and the largest share of the frame one covers ([`pieces`]).
+    pieces: usize,
+    piece: f64,
+    /// The share of the frame of a foreground object standing in it like a pillar, before the
+    /// room ([`stands_mid_frame`]): a floor lamp splitting the picture. Its box's share is
+    /// small (a pole and a shade), what it does to the picture is not.
+    pillar: f64,
     /// The objects in frame (index, share of the frame it covers), in index order, and the sum
     /// of their shares.
     shares: Vec<(usize, f64)>,
@@ -197,6 +207,11 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
     };
     for k in 0..3 {
         positions.extend(wall_loop(scene, edge + apart * k as f64, eye));
+    }
+    if scene.scene_type == SceneType::Indoor {
+        // Stepping back to the wall: in a small room the few centimetres behind the first loop
+        // take a second piece into the frame.
+        positions.extend(wall_loop(scene, ROOM_MARGIN, eye));
     }
     if positions.is_empty() {
         positions.extend(super::nearest_valid(scene, [0.0, 0.0, eye]));
@@ -237,6 +252,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             }
         }
     }
+    let piece = pieces::piece_of(scene);
     let mut cands = vec![];
     for (p, ti, fov) in shots {
         let (t, looked_at) = &targets[ti];
@@ -258,7 +274,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             let dir = [(t[0] - p[0]) / d, (t[1] - p[1]) / d];
             // How close the nearest object in the frame stands: a foreground lampshade or chair
             // back hides the room even under the share limit.
-            let (mut near, mut occluder) = (f64::INFINITY, 0.0f64);
+            let (mut near, mut occluder, mut pillar) = (f64::INFINITY, 0.0f64, 0.0f64);
             let boxes: Vec<(f64, Option<[f64; 4]>)> =
                 scene.objects.iter().map(|o| screen_box(&cam, o)).collect();
             let shares: Vec<f64> = boxes.iter().map(|b| b.0).collect();
@@ -274,6 +290,11 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 }
                 let dist = dists[k];
                 near = near.min(dist);
+                if dist < PILLAR_NEAR
+                    && stands_mid_frame(&cam, o, boxes[k].1, dist, &dists, &shares)
+                {
+                    pillar = pillar.max(share);
+                }
                 // What is looked at hides nothing, unless it is the near one of a pair, or it
                 // stands before a larger object and hides much of it (a bush before the
                 // fountain).
@@ -297,11 +318,16 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 }
             }
             let total = shares.iter().sum();
+            let shown: Vec<bool> = scene.objects.iter().map(|o| in_frame(&cam, o)).collect();
+            let (pieces, piece_share) = pieces::pieces_in_view(scene, &piece, &shown, &shares);
             let (blocker, grazing) = (
                 blocker_share(scene, &cam, &shares),
                 grazing_share(scene, &cam, &shares),
             );
             cands.push(Candidate {
+                pillar,
+                pieces,
+                piece: piece_share,
                 blocker,
                 grazing,
                 shares: shares
@@ -323,6 +349,42 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
     pick::pick(scene, cands, count)
 }
 
+/// True when `o` (its silhouette's box `rect`, `dist` metres away) stands inside `cam`'s frame
+/// like a pillar: from the frame's lower part ([`PILLAR_FOOT`] of its height down) up past its
+/// centre, cut by neither side (at a side it is a column, a blocker of `faults.rs`), narrower
+/// than half the frame, with something in frame at least [`PILLAR_BEHIND`] further. The
+/// caller asks this of objects within [`PILLAR_NEAR`] only.
+fn stands_mid_frame(
+    cam: &Camera,
+    o: &ObjectBox,
+    rect: Option<[f64; 4]>,
+    dist: f64,
+    dists: &[f64],
+    shares: &[f64],
+) -> bool {
+    let (w, h) = (cam.width as f64, cam.height as f64);
+    let Some(r) = rect else { return false };
+    o.size[2] > FLAT
+        && r[3] >= PILLAR_FOOT * h
+        && r[1] < 0.5 * h
+        && r[2] - r[0] < 0.5 * w
+        && r[0] > 1.0
+        && r[2] < w - 1.0
+        && dists
+            .iter()
+            .zip(shares)
+            .any(|(d, s)| *s > 0.03 && *d > dist + PILLAR_BEHIND)
+}
+
+/// How near (metres) a pillar stands: a floor lamp 2 m off still splits the picture it stands
+/// in the middle of, past the foreground distance.
+const PILLAR_NEAR: f64 = 2.5;
+/// How low in the frame (share of its height from the top) a pillar's foot reaches.
+const PILLAR_FOOT: f64 = 0.75;
+/// How much further (metres) the room behind a pillar must stand.
+const PILLAR_BEHIND: f64 = 1.0;
+
 mod pick;
+mod pieces;
 #[cfg(test)]
 mod tests;

@@ -13,7 +13,8 @@ use crate::camera::Camera;
 /// fills (see [`back_penalty`]).
 const BACK_PER_SHARE: f64 = 12.0;
 /// What a view loses for each fault a person sees in it (`faults.rs`): mostly bare, a blocker
-/// at the lens, a panel seen edge-on, a near copy of a view already taken. Views below
+/// at the lens, a panel seen edge-on, a near copy of a view already taken; and for a
+/// foreground pillar in mid-frame (`stands_mid_frame`). Views below
 /// [`BARE_COVER`] lose score steeply on top.
 const POOR: f64 = 6.0;
 /// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
@@ -143,7 +144,12 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                     }
                 })
             });
-            let good = if c.stats.framed_well() { GOOD } else { 0.0 };
+            // Framing well counts pieces: a TV on its stand is one thing, not two.
+            let good = if c.stats.framed_well() && c.pieces >= 2 && c.piece <= MAX_OBJECT_SHARE {
+                GOOD
+            } else {
+                0.0
+            };
             // What a person calls a poor picture (`faults.rs`) loses [`POOR`] a fault: a wide
             // view of the room from its edge is better than any of them.
             let flag = |b: bool| if b { 1.0 } else { 0.0 };
@@ -152,12 +158,18 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 flag(c.blocker > 0.0),
                 flag(c.grazing > 0.0),
             );
-            let over = (c.stats.largest - MAX_OBJECT_SHARE).max(0.0);
+            let largest = c.piece;
+            let over = (largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
                 - 6.0 * near
                 - 5.0 * over
-                - 3.0 * (c.stats.largest - 0.2).max(0.0)
+                - 3.0 * (largest - 0.2).max(0.0)
                 - 6.0 * (fg - c.near).max(0.0)
+                - if c.pillar > 0.0 {
+                    2.0 * POOR + 10.0 * c.pillar
+                } else {
+                    0.0
+                }
                 - 3.0 * same as f64
                 - if same >= 2 { POOR } else { 0.0 }
                 - 1.0 * alike as f64

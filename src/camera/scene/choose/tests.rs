@@ -1,7 +1,9 @@
 //! Tests of the render-view choice.
 use super::*;
 use crate::camera::scene::views::tests::boxed;
-use crate::camera::scene::{frame_share, framing_score, overview_camera, BARE_WALL};
+use crate::camera::scene::{
+    frame_share, framing_score, overview_camera, BARE_WALL, MAX_OBJECT_SHARE,
+};
 
 #[test]
 fn views_of_a_furnished_room_frame_several_objects() {
@@ -66,9 +68,10 @@ fn views_of_the_living_room_keep_clear_of_foreground_objects() {
         let cams = render_views(&scene, 8, 64, 48);
         close += foreground_views(&scene, &cams, 1.4);
     }
-    // The bare-wall rule trades some distance for views that show more than wall: 4 before it.
+    // The bare-wall rule trades some distance for views that show more than wall: 4 before it,
+    // 7 since.
     assert!(
-        close <= 8,
+        close <= 7,
         "{close} of 32 views stand within 1.4 m of an object in frame (before the foreground rule: 17)"
     );
 }
@@ -125,9 +128,10 @@ fn views_vary_their_subject_and_see_it_from_the_front() {
             .map(|k| stats.iter().filter(|s| s.subject == Some(k)).count())
             .max()
             .unwrap_or(0);
-        // 3 before the bare-wall rule, which favours the laundry room's large machines.
+        // The bare-wall rule had let the laundry room's large machines take 4; with views
+        // stepped back to the wall and pieces counted, 3 again.
         assert!(
-            most <= 4,
+            most <= 3,
             "{prompt}: one object is the subject of {most} of 8 views"
         );
         backs += stats.iter().filter(|s| s.facing < -0.5).count();
@@ -234,8 +238,9 @@ fn small_rooms_get_few_poor_views() {
         total += cams.len();
     }
     // The faults grew stricter (bare wall, a column at the frame's side, a mirror past 45°):
-    // by them the pick before the bare-wall rule gets 14 of 40 clean, this one 19.
-    assert!(clean * 5 >= total * 2, "{clean} of {total} views clean");
+    // by them the pick before the bare-wall rule gets 14 of 40 clean, the pick before views
+    // stepped back to the wall 18, this one 20.
+    assert!(clean * 40 >= total * 19, "{clean} of {total} views clean");
     // Bare now also counts views of mostly bare wall: 12 of 40 here (5 by the box cover alone).
     assert!(bare * 3 <= total, "{bare} of {total} views mostly bare");
     assert!(
@@ -276,4 +281,72 @@ fn views_show_the_room_not_bare_wall() {
         wall * 6 <= total,
         "{wall} of {total} views mostly bare wall"
     );
+}
+
+/// True when `cam` has a foreground pillar (`stands_mid_frame`): an object within
+/// `PILLAR_NEAR` standing in the frame's middle from its lower part up past its centre.
+fn has_pillar(scene: &SceneBox, cam: &Camera) -> bool {
+    let boxes: Vec<(f64, Option<[f64; 4]>)> =
+        scene.objects.iter().map(|o| screen_box(cam, o)).collect();
+    let shares: Vec<f64> = boxes.iter().map(|b| b.0).collect();
+    let dists: Vec<f64> = scene
+        .objects
+        .iter()
+        .map(|o| footprint_distance(o, cam.position))
+        .collect();
+    scene.objects.iter().enumerate().any(|(k, o)| {
+        shares[k] > 0.03
+            && dists[k] < PILLAR_NEAR
+            && stands_mid_frame(cam, o, boxes[k].1, dists[k], &dists, &shares)
+    })
+}
+
+#[test]
+fn views_never_close_in_on_one_piece_nor_stand_behind_a_pillar() {
+    // The README's prompt showed a TV on its stand filling a view (two objects, so it "framed
+    // well") and a floor lamp standing in mid-frame before the TV; the dining room for eight
+    // had chair backs rising through the middle of three views. Each view now shows at least
+    // two pieces (an object and what rests on it are one), none over the share limit, and no
+    // foreground pillar. The living room over four layouts, the dining room and two rooms
+    // of a lamp, a sofa and a TV not looked at while tuning.
+    let mut scenes = vec![];
+    for seed in 0..4 {
+        let spec = crate::plan::offline::plan_prompt("a cozy living room")
+            .expect("plans")
+            .spec;
+        let l = crate::plan::gcp::layout(&spec, crate::plan::gcp::LayoutOptions::seeded(seed))
+            .expect("lays out");
+        scenes.push((
+            format!("a cozy living room, seed {seed}"),
+            SceneBox::from_layout(&l),
+        ));
+    }
+    for prompt in [
+        "a dining room for eight",
+        "a den with a leather sofa, a desk, a floor lamp and a plant",
+        "a living room with a sofa, a tv on a tv stand, a floor lamp and an armchair",
+    ] {
+        scenes.push((prompt.to_string(), eight_views(prompt).0));
+    }
+    let (mut close_ups, mut pillars) = (vec![], vec![]);
+    for (name, scene) in &scenes {
+        let cams = render_views(scene, 8, 64, 64);
+        let piece = pieces::piece_of(scene);
+        for (v, c) in cams.iter().enumerate() {
+            let shares: Vec<f64> = scene.objects.iter().map(|o| frame_share(c, o)).collect();
+            let shown: Vec<bool> = scene.objects.iter().map(|o| in_frame(c, o)).collect();
+            let (n, largest) = pieces::pieces_in_view(scene, &piece, &shown, &shares);
+            if n < 2 || largest > MAX_OBJECT_SHARE {
+                close_ups.push(format!("{name}: view {v} ({n} pieces, {largest:.2})"));
+            }
+            if has_pillar(scene, c) {
+                pillars.push(format!("{name}: view {v}"));
+            }
+        }
+    }
+    assert!(
+        close_ups.is_empty(),
+        "close-ups of one piece: {close_ups:?}"
+    );
+    assert!(pillars.is_empty(), "pillars in mid-frame: {pillars:?}");
 }
