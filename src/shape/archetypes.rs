@@ -4,9 +4,11 @@
 use super::appliances as a;
 use super::barriers as ba;
 use super::bins as bn;
+use super::care as cw;
 use super::carts as ca;
 use super::cases as c;
 use super::clearglass as cg;
+use super::clocks as ck;
 use super::crafts as cr;
 use super::daily as d;
 use super::forms as fo;
@@ -21,13 +23,16 @@ use super::glazed as gz;
 use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
+use super::holders as hr;
 use super::household as ho;
+use super::instruments as ins;
 use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
 use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::more as m;
+use super::partitions as pn;
 use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
 use super::picnic as pc;
 use super::plants as pt;
@@ -35,10 +40,12 @@ use super::play as pl;
 use super::racks as rk;
 use super::rigs;
 use super::rocks;
+use super::salon as sa;
 use super::sculpted as sc;
 use super::seats as se;
 use super::sets as sx;
 use super::skeleton as sk;
+use super::sleepers as sl;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
@@ -475,6 +482,22 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("hanging_plant", pt::hanging_plant, [Foliage], [Foliage => [0.24, 0.52, 0.20], Frame => [0.85, 0.80, 0.68], Pot => [0.88, 0.86, 0.82]]),
     arch!("cart", ca::cart, [Metal, Frame], [Metal => BRASS, Frame => BRASS, Top => [0.20, 0.20, 0.21], Handle => BRASS, Tyre => BLACK, Glass => [0.20, 0.36, 0.22], BlackKeys => [0.45, 0.16, 0.08], Pane => [0.85, 0.92, 0.95], Canvas => [0.70, 0.55, 0.33]]),
     arch!("airer", ca::airer, [Frame], [Frame => [0.88, 0.88, 0.87], Metal => [0.80, 0.80, 0.80]]),
+    arch!("wall_clock", ck::wall_clock, [Frame], [Frame => [0.12, 0.12, 0.13], Canvas => [0.96, 0.96, 0.94], BlackKeys => BLACK]),
+    arch!("grandfather_clock", ck::grandfather_clock, [Body, Door, Frame], [Body => [0.36, 0.20, 0.11], Door => [0.38, 0.21, 0.12], Frame => [0.30, 0.17, 0.09], Top => [0.80, 0.66, 0.35], Canvas => [0.95, 0.92, 0.84], Metal => BRASS, Handle => BRASS, Interior => [0.08, 0.06, 0.05], BlackKeys => BLACK]),
+    arch!("wheelchair", cw::wheelchair, [Upholstery], [Upholstery => [0.10, 0.10, 0.11], Frame => [0.70, 0.71, 0.73], Metal => STEEL, Tyre => BLACK, Handle => BLACK]),
+    arch!("high_chair", cw::high_chair, [Frame, Seat], [Frame => [0.70, 0.52, 0.32], Seat => [0.72, 0.54, 0.34], Cushion => [0.55, 0.75, 0.82], Top => WHITE]),
+    arch!("hospital_bed", sl::hospital_bed, [Frame, Body], [Frame => [0.78, 0.79, 0.80], Body => [0.88, 0.90, 0.90], Mattress => [0.45, 0.66, 0.74], Duvet => [0.92, 0.93, 0.95], Pillow => WHITE, Metal => STEEL, Tyre => BLACK, Top => [0.80, 0.82, 0.84], Screen => [0.15, 0.25, 0.30]]),
+    arch!("cabin_bed", sl::cabin_bed, [Frame], [Frame => [0.93, 0.92, 0.90], Body => [0.93, 0.92, 0.90], Door => [0.88, 0.88, 0.86], Duvet => [0.40, 0.55, 0.75], Mattress => [0.85, 0.85, 0.82], Pillow => WHITE, Handle => STEEL, Top => [0.78, 0.62, 0.42]]),
+    arch!("barber_chair", sa::barber_chair, [Upholstery], [Upholstery => [0.50, 0.08, 0.08], Metal => [0.80, 0.81, 0.83], Body => WHITE, Frame => DARK_WOOD, Handle => [0.20, 0.20, 0.21]]),
+    arch!("dentist_chair", sa::dentist_chair, [Upholstery, Cushion], [Upholstery => [0.35, 0.65, 0.70], Cushion => [0.33, 0.62, 0.67], Body => WHITE, Metal => STEEL, Light => [1.0, 0.96, 0.85], Top => [0.85, 0.86, 0.87], Canvas => WHITE, Water => [0.50, 0.70, 0.85], Handle => STEEL]),
+    arch!("pedicure_chair", sa::pedicure_chair, [Upholstery], [Upholstery => [0.30, 0.20, 0.15], Cushion => [0.34, 0.23, 0.17], Body => [0.12, 0.12, 0.13], Top => [0.80, 0.78, 0.74], Canvas => WHITE, Water => [0.45, 0.70, 0.85], Metal => STEEL]),
+    arch!("magazine_rack", hr::magazine_rack, [Frame], [Frame => [0.62, 0.47, 0.30]]),
+    arch!("shoe_rack", hr::shoe_rack, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Interior => [0.12, 0.12, 0.12]]),
+    arch!("plate_rack", hr::plate_rack, [Frame], [Frame => [0.62, 0.47, 0.30], Canvas => WHITE, Pot => [0.30, 0.45, 0.70]]),
+    arch!("book_cart", hr::book_cart, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Metal => [0.20, 0.20, 0.21], Tyre => BLACK]),
+    arch!("church_organ", ins::church_organ, [Body, Top], [Body => [0.40, 0.25, 0.14], Top => [0.36, 0.22, 0.12], Metal => [0.80, 0.80, 0.78], Interior => [0.10, 0.07, 0.05], Keys => [0.95, 0.93, 0.88], BlackKeys => BLACK, Handle => [0.90, 0.88, 0.82], Frame => [0.42, 0.27, 0.15], Seat => [0.40, 0.25, 0.14]]),
+    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.80, 0.80, 0.78], Trunk => BLACK]),
+    arch!("folding_screen", pn::folding_screen, [Frame], [Frame => [0.45, 0.30, 0.17], Canvas => [0.92, 0.88, 0.78], Upholstery => [0.50, 0.34, 0.20], Metal => BRASS]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.
