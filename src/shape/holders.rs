@@ -192,7 +192,7 @@ pub fn plate_rack(b: &mut Builder) {
     }
 }
 
-/// A book cart: two end frames on castors, a base shelf, tiers of shelves on both faces that
+/// A book cart: two open end frames on castors, a base shelf, tiers of shelves on both faces that
 /// slope down to a middle spine so the books on them lean back against it, a top tray, and a
 /// push handle at each end.
 pub fn book_cart(b: &mut Builder) {
@@ -204,9 +204,24 @@ pub fn book_cart(b: &mut Builder) {
         for sy in [-1.0, 1.0] {
             castor(b, sx * (xe - 0.04), sy * (hd - 0.06), rc, z0);
         }
+        // The end frame: two posts, a low panel and a top rail, open between so the sloped
+        // shelves show from the side.
+        for sy in [-1.0, 1.0] {
+            let y = sy * (hd - 0.02);
+            b.cuboid(
+                Frame,
+                [sx * xe - 0.012, y - 0.02, z0],
+                [sx * xe + 0.012, y + 0.02, h - 0.04],
+            );
+        }
         b.cuboid(
             Frame,
             [sx * xe - 0.01, -hd, z0],
+            [sx * xe + 0.01, hd, z0 + 0.08],
+        );
+        b.cuboid(
+            Frame,
+            [sx * xe - 0.01, -hd, h - 0.1],
             [sx * xe + 0.01, hd, h - 0.04],
         );
         // The push handle: a loop out from the end frame.
@@ -225,21 +240,32 @@ pub fn book_cart(b: &mut Builder) {
     b.cuboid(Frame, [-xe, -hd, z0], [xe, hd, z0 + 0.02]);
     b.cuboid(Frame, [-xe, -0.008, z0], [xe, 0.008, h - 0.04]);
     b.cuboid(Top, [-xe - 0.01, -hd, h - 0.04], [xe + 0.01, hd, h - 0.02]);
-    // Sloped shelves, two tiers a face, books leaning back on each.
+    // Sloped shelves, two tiers a face, each with a back board leaning in at the same angle
+    // (an A-frame), and books standing square to the shelf, leaning back on the board.
     let tiers = 2;
     let pitch = (h - 0.06 - z0) / tiers as f64;
-    let slope = 0.28f64;
-    let bh = (0.62 * pitch).min(0.26);
-    let bd = (0.6 * hd).min(0.17);
+    let slope = 0.25f64;
+    let bh = (0.7 * pitch).min(0.28);
+    let y_back = 0.012 + bh * slope.tan();
+    let bd = (0.9 * (hd - y_back - 0.02)).clamp(0.03, 0.17);
     for k in 0..tiers {
         let z = z0 + 0.03 + k as f64 * pitch;
         for sy in [-1.0, 1.0] {
-            let rise = (hd - 0.01) * slope.tan();
+            let rise = (hd - 0.01 - y_back) * slope.tan();
+            pad(
+                b,
+                Frame,
+                0.0,
+                [sy * y_back, z],
+                [sy * 0.012, z + bh],
+                xe,
+                0.012,
+            );
             pad(
                 b,
                 Top,
                 0.0,
-                [sy * 0.01, z],
+                [sy * y_back, z],
                 [sy * (hd - 0.01), z + rise],
                 xe,
                 0.015,
@@ -247,7 +273,7 @@ pub fn book_cart(b: &mut Builder) {
             b.cuboid(
                 Top,
                 [-xe, sy * hd - 0.01 * (sy + 1.0), z + rise],
-                [xe, sy * hd - 0.01 * (sy - 1.0), z + rise + 0.05],
+                [xe, sy * hd - 0.01 * (sy - 1.0), z + rise + 0.03],
             );
             let mut x = -xe + 0.02;
             let mut i = 0u32;
@@ -255,11 +281,11 @@ pub fn book_cart(b: &mut Builder) {
                 let bt = 0.025 + 0.01 * ((i * 7 + k as u32 * 3) % 4) as f64;
                 let hh = bh * (0.8 + 0.05 * ((i * 5 + 1) % 5) as f64);
                 if (i + k as u32) % 9 != 8 {
-                    // The book's foot rests on the shelf against the spine, leaning back.
+                    // The book's foot rests on the shelf against the back board.
                     let up = [-sy * slope.sin(), slope.cos()];
                     let along = [sy * slope.cos(), slope.sin()];
                     let foot = [
-                        sy * 0.018 + along[0] * bd / 2.0,
+                        sy * (y_back + 0.008) + along[0] * bd / 2.0,
                         z + 0.008 + along[1] * bd / 2.0,
                     ];
                     let c = [foot[0] + up[0] * hh / 2.0, foot[1] + up[1] * hh / 2.0];
