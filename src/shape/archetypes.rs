@@ -496,7 +496,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("plate_rack", hr::plate_rack, [Frame], [Frame => [0.62, 0.47, 0.30], Canvas => WHITE, Pot => [0.30, 0.45, 0.70]]),
     arch!("book_cart", hr::book_cart, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Metal => [0.20, 0.20, 0.21], Tyre => BLACK]),
     arch!("church_organ", ins::church_organ, [Body, Top], [Body => [0.40, 0.25, 0.14], Top => [0.36, 0.22, 0.12], Metal => [0.80, 0.80, 0.78], Interior => [0.10, 0.07, 0.05], Keys => [0.95, 0.93, 0.88], BlackKeys => BLACK, Handle => [0.90, 0.88, 0.82], Frame => [0.42, 0.27, 0.15], Seat => [0.40, 0.25, 0.14]]),
-    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.80, 0.80, 0.78], Trunk => BLACK]),
+    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.55, 0.53, 0.48], Trunk => BLACK]),
     arch!("folding_screen", pn::folding_screen, [Frame], [Frame => [0.45, 0.30, 0.17], Canvas => [0.92, 0.88, 0.78], Upholstery => [0.50, 0.34, 0.20], Metal => BRASS]),
 ];
 

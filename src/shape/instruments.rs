@@ -156,7 +156,7 @@ pub fn bowed_instrument(b: &mut Builder) {
     b.ellipsoid(Body, [0.0, 0.0, zu], [0.8 * bw, t, 0.13 * h]);
     // The f-holes either side of the bridge.
     for sx in [-1.0, 1.0] {
-        let x = sx * 0.33 * bw;
+        let x = sx * 0.4 * bw;
         b.rod(
             Interior,
             [x, 0.97 * t, zw - 0.06 * h],
@@ -166,13 +166,13 @@ pub fn bowed_instrument(b: &mut Builder) {
     }
     b.cuboid(
         Top,
-        [-0.35 * bw, 0.9 * t, zw - 0.02],
-        [0.35 * bw, 1.25 * t, zw + 0.05 * h],
+        [-0.2 * bw, 0.9 * t, zw - 0.02],
+        [0.2 * bw, 1.25 * t, zw + 0.05 * h],
     );
     b.cuboid(
         BlackKeys,
-        [-0.2 * bw, 0.85 * t, pin + 0.05 * h],
-        [0.2 * bw, 1.05 * t, zw - 0.08 * h],
+        [-0.12 * bw, 0.85 * t, pin + 0.05 * h],
+        [0.12 * bw, 1.05 * t, zw - 0.08 * h],
     );
     // The neck and fingerboard, the pegbox and the scroll.
     let zf = pin + 0.83 * h;
