@@ -16,6 +16,7 @@ mod appliances;
 mod archetypes;
 mod barriers;
 mod bins;
+mod builder;
 mod care;
 mod carts;
 mod cases;
