@@ -1,12 +1,15 @@
 //! The archetype table: each archetype's name, the roles its first colour word paints, its
-//! default colours, and the function that lays out its parts; plus the [`Builder`] the layout
-//! functions (in `furniture.rs` and `more.rs`) use.
+//! default colours, and the function that lays out its parts (with the [`Builder`] of
+//! `builder.rs`, re-exported here for the layout modules).
 use super::appliances as a;
 use super::barriers as ba;
 use super::bins as bn;
+pub use super::builder::{frame_along, Builder};
+use super::care as cw;
 use super::carts as ca;
 use super::cases as c;
 use super::clearglass as cg;
+use super::clocks as ck;
 use super::crafts as cr;
 use super::daily as d;
 use super::forms as fo;
@@ -21,7 +24,9 @@ use super::glazed as gz;
 use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
+use super::holders as hr;
 use super::household as ho;
+use super::instruments as ins;
 use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
@@ -29,17 +34,20 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
-use super::parts::{ellipsoid_profile, frustum_profile, Part, Primitive, IDENTITY, M3, V3};
+use super::partitions as pn;
+use super::parts::Part;
 use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
 use super::racks as rk;
 use super::rigs;
 use super::rocks;
+use super::salon as sa;
 use super::sculpted as sc;
 use super::seats as se;
 use super::sets as sx;
 use super::skeleton as sk;
+use super::sleepers as sl;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
@@ -49,161 +57,6 @@ use super::utility as ut;
 use super::vitrines as vi;
 use super::washroom as wa;
 use super::workshop as ws;
-
-/// Collects parts in the object frame for a size `[w, d, h]`.
-pub struct Builder {
-    pub parts: Vec<Part>,
-    pub w: f64,
-    pub d: f64,
-    pub h: f64,
-}
-
-impl Builder {
-    /// Half width and half depth.
-    pub fn half(&self) -> (f64, f64) {
-        (self.w / 2.0, self.d / 2.0)
-    }
-
-    pub fn push(&mut self, role: Role, variant: u32, prim: Primitive) {
-        self.parts.push(Part {
-            prim,
-            role,
-            variant,
-        });
-    }
-
-    /// An axis-aligned box between corners `lo` and `hi` (degenerate extents are thickened to
-    /// 1 mm so every box has a surface).
-    pub fn cuboid(&mut self, role: Role, lo: V3, hi: V3) {
-        self.cuboid_v(role, 0, lo, hi);
-    }
-
-    /// [`Builder::cuboid`] with a colour variant.
-    pub fn cuboid_v(&mut self, role: Role, variant: u32, lo: V3, hi: V3) {
-        let centre = [0, 1, 2].map(|i| 0.5 * (lo[i] + hi[i]));
-        let half = [0, 1, 2].map(|i| (0.5 * (hi[i] - lo[i]).abs()).max(0.0005));
-        self.push(
-            role,
-            variant,
-            Primitive::Cuboid {
-                centre,
-                half,
-                rot: IDENTITY,
-            },
-        );
-    }
-
-    /// A closed vertical elliptic frustum standing on `base`: radii `rx`, `ry` at the bottom,
-    /// `top` times them at the top, height `h`.
-    pub fn frustum(&mut self, role: Role, base: V3, rx: f64, ry: f64, top: f64, h: f64) {
-        self.revolved(
-            role,
-            0,
-            base,
-            IDENTITY,
-            ry / rx,
-            frustum_profile(rx, rx * top, h),
-        );
-    }
-
-    /// A closed vertical cylinder.
-    pub fn cylinder(&mut self, role: Role, base: V3, r: f64, h: f64) {
-        self.frustum(role, base, r, r, 1.0, h);
-    }
-
-    /// A closed cylinder of radius `r` from `a` to `b`.
-    pub fn rod(&mut self, role: Role, a: V3, b: V3, r: f64) {
-        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-9);
-        self.revolved(role, 0, a, frame_along(d), 1.0, frustum_profile(r, r, l));
-    }
-
-    /// An oriented box: `half` extents along the axes of `rot`, centred at `centre`.
-    pub fn slab(&mut self, role: Role, centre: V3, half: V3, rot: M3) {
-        self.push(role, 0, Primitive::Cuboid { centre, half, rot });
-    }
-
-    /// Rods of radius `r` joining successive points of `pts` (a bent bar, a chain, an arc).
-    pub fn polyline(&mut self, role: Role, pts: &[V3], r: f64) {
-        for w in pts.windows(2) {
-            self.rod(role, w[0], w[1], r);
-        }
-    }
-
-    /// An ellipsoid with semi-axes `radii` (x, y, z) at `centre`.
-    pub fn ellipsoid(&mut self, role: Role, centre: V3, radii: V3) {
-        self.ellipsoid_rot(role, 0, centre, radii, IDENTITY);
-    }
-
-    /// An oriented ellipsoid with a colour variant.
-    pub fn ellipsoid_rot(&mut self, role: Role, variant: u32, centre: V3, radii: V3, rot: M3) {
-        let profile = ellipsoid_profile(radii[0], radii[2]);
-        self.revolved(role, variant, centre, rot, radii[1] / radii[0], profile);
-    }
-
-    /// A surface of revolution (see [`Primitive::Revolved`]).
-    pub fn revolved(
-        &mut self,
-        role: Role,
-        variant: u32,
-        origin: V3,
-        rot: M3,
-        ay: f64,
-        profile: Vec<[f64; 2]>,
-    ) {
-        self.push(
-            role,
-            variant,
-            Primitive::Revolved {
-                origin,
-                rot,
-                ay,
-                profile,
-            },
-        );
-    }
-
-    /// Four square legs of side `s` inset `inset` from the corners, from `z0` to `z1`.
-    pub fn legs(&mut self, role: Role, s: f64, inset: f64, z0: f64, z1: f64) {
-        let (hw, hd) = self.half();
-        for sx in [-1.0, 1.0] {
-            for sy in [-1.0, 1.0] {
-                let (x, y) = (sx * (hw - inset - s / 2.0), sy * (hd - inset - s / 2.0));
-                self.cuboid(
-                    role,
-                    [x - s / 2.0, y - s / 2.0, z0],
-                    [x + s / 2.0, y + s / 2.0, z1],
-                );
-            }
-        }
-    }
-}
-
-/// A rotation whose local z axis points along `d`.
-pub fn frame_along(d: V3) -> M3 {
-    let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt().max(1e-12);
-    let z = d.map(|v| v / l);
-    let helper = if z[2].abs() < 0.9 {
-        [0.0, 0.0, 1.0]
-    } else {
-        [1.0, 0.0, 0.0]
-    };
-    let x = {
-        let c = [
-            helper[1] * z[2] - helper[2] * z[1],
-            helper[2] * z[0] - helper[0] * z[2],
-            helper[0] * z[1] - helper[1] * z[0],
-        ];
-        let l = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
-        c.map(|v| v / l)
-    };
-    let y = [
-        z[1] * x[2] - z[2] * x[1],
-        z[2] * x[0] - z[0] * x[2],
-        z[0] * x[1] - z[1] * x[0],
-    ];
-    [[x[0], y[0], z[0]], [x[1], y[1], z[1]], [x[2], y[2], z[2]]]
-}
 
 /// One archetype.
 pub struct Archetype {
@@ -478,6 +331,22 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("hanging_plant", pt::hanging_plant, [Foliage], [Foliage => [0.24, 0.52, 0.20], Frame => [0.85, 0.80, 0.68], Pot => [0.88, 0.86, 0.82]]),
     arch!("cart", ca::cart, [Metal, Frame], [Metal => BRASS, Frame => BRASS, Top => [0.20, 0.20, 0.21], Handle => BRASS, Tyre => BLACK, Glass => [0.20, 0.36, 0.22], BlackKeys => [0.45, 0.16, 0.08], Pane => [0.85, 0.92, 0.95], Canvas => [0.70, 0.55, 0.33]]),
     arch!("airer", ca::airer, [Frame], [Frame => [0.88, 0.88, 0.87], Metal => [0.80, 0.80, 0.80]]),
+    arch!("wall_clock", ck::wall_clock, [Frame], [Frame => [0.12, 0.12, 0.13], Canvas => [0.96, 0.96, 0.94], BlackKeys => BLACK]),
+    arch!("grandfather_clock", ck::grandfather_clock, [Body, Door, Frame], [Body => [0.36, 0.20, 0.11], Door => [0.38, 0.21, 0.12], Frame => [0.30, 0.17, 0.09], Top => [0.80, 0.66, 0.35], Canvas => [0.95, 0.92, 0.84], Metal => BRASS, Handle => BRASS, Interior => [0.08, 0.06, 0.05], BlackKeys => BLACK]),
+    arch!("wheelchair", cw::wheelchair, [Upholstery], [Upholstery => [0.10, 0.10, 0.11], Frame => [0.70, 0.71, 0.73], Metal => STEEL, Tyre => BLACK, Handle => BLACK]),
+    arch!("high_chair", cw::high_chair, [Frame, Seat], [Frame => [0.70, 0.52, 0.32], Seat => [0.72, 0.54, 0.34], Cushion => [0.55, 0.75, 0.82], Top => WHITE]),
+    arch!("hospital_bed", sl::hospital_bed, [Frame, Body], [Frame => [0.78, 0.79, 0.80], Body => [0.88, 0.90, 0.90], Mattress => [0.45, 0.66, 0.74], Duvet => [0.92, 0.93, 0.95], Pillow => WHITE, Metal => STEEL, Tyre => BLACK, Top => [0.80, 0.82, 0.84], Screen => [0.15, 0.25, 0.30]]),
+    arch!("cabin_bed", sl::cabin_bed, [Frame], [Frame => [0.93, 0.92, 0.90], Body => [0.93, 0.92, 0.90], Door => [0.88, 0.88, 0.86], Duvet => [0.40, 0.55, 0.75], Mattress => [0.85, 0.85, 0.82], Pillow => WHITE, Handle => STEEL, Top => [0.78, 0.62, 0.42]]),
+    arch!("barber_chair", sa::barber_chair, [Upholstery], [Upholstery => [0.50, 0.08, 0.08], Metal => [0.80, 0.81, 0.83], Body => WHITE, Frame => DARK_WOOD, Handle => [0.20, 0.20, 0.21]]),
+    arch!("dentist_chair", sa::dentist_chair, [Upholstery, Cushion], [Upholstery => [0.35, 0.65, 0.70], Cushion => [0.33, 0.62, 0.67], Body => WHITE, Metal => STEEL, Light => [1.0, 0.96, 0.85], Top => [0.85, 0.86, 0.87], Canvas => WHITE, Water => [0.50, 0.70, 0.85], Handle => STEEL]),
+    arch!("pedicure_chair", sa::pedicure_chair, [Upholstery], [Upholstery => [0.30, 0.20, 0.15], Cushion => [0.34, 0.23, 0.17], Body => [0.12, 0.12, 0.13], Top => [0.80, 0.78, 0.74], Canvas => WHITE, Water => [0.45, 0.70, 0.85], Metal => STEEL]),
+    arch!("magazine_rack", hr::magazine_rack, [Frame], [Frame => [0.62, 0.47, 0.30]]),
+    arch!("shoe_rack", hr::shoe_rack, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Interior => [0.12, 0.12, 0.12]]),
+    arch!("plate_rack", hr::plate_rack, [Frame], [Frame => [0.62, 0.47, 0.30], Canvas => WHITE, Pot => [0.30, 0.45, 0.70]]),
+    arch!("book_cart", hr::book_cart, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Metal => [0.20, 0.20, 0.21], Tyre => BLACK]),
+    arch!("church_organ", ins::church_organ, [Body, Top], [Body => [0.40, 0.25, 0.14], Top => [0.36, 0.22, 0.12], Metal => [0.80, 0.80, 0.78], Interior => [0.10, 0.07, 0.05], Keys => [0.95, 0.93, 0.88], BlackKeys => BLACK, Handle => [0.90, 0.88, 0.82], Frame => [0.42, 0.27, 0.15], Seat => [0.40, 0.25, 0.14]]),
+    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.55, 0.53, 0.48], Trunk => BLACK]),
+    arch!("folding_screen", pn::folding_screen, [Frame], [Frame => [0.45, 0.30, 0.17], Canvas => [0.92, 0.88, 0.78], Upholstery => [0.50, 0.34, 0.20], Metal => BRASS]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.
