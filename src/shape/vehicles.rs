@@ -180,11 +180,11 @@ pub fn bus(b: &mut Builder) {
     for sx in [-1.0, 1.0] {
         b.cuboid(
             Light,
-            [sx * 0.78 * hw - 0.12, hd, 0.18 * h],
-            [sx * 0.78 * hw + 0.12, hd + g, 0.24 * h],
+            [sx * 0.78 * hw - 0.15, hd, 0.22 * h],
+            [sx * 0.78 * hw + 0.15, hd + 1.5 * g, 0.3 * h],
         );
     }
-    bumper(b, hd, 1.0, zf, 0.07 * h);
+    bumper(b, hd, 1.0, zf, 0.14 * h);
     b.cuboid(
         Glass,
         [-0.8 * hw, -hd - g, 0.6 * h],
