@@ -48,6 +48,8 @@ pub fn air_conditioner(b: &mut Builder) {
         );
         return;
     }
+    // The louvres and the grille stand proud of the front, inside the size box.
+    let hd = hd - 3.5 * g;
     b.cuboid(
         Frame,
         [-0.95 * hw, -0.95 * hd, 0.0],
@@ -55,24 +57,26 @@ pub fn air_conditioner(b: &mut Builder) {
     );
     b.cuboid(Body, [-hw, -hd, 0.03 * h], [hw, hd, 0.92 * h]);
     b.ellipsoid(Body, [0.0, 0.0, 0.92 * h], [hw, hd, 0.08 * h]);
+    // A front panel over the whole face, the outlet and the grille set in it.
+    b.cuboid(Door, [-hw, hd, 0.03 * h], [hw, hd + 0.3 * g, 0.92 * h]);
     // The outlet: a dark opening crossed by louvres.
-    let (z0, z1) = (0.62 * h, 0.86 * h);
-    b.cuboid(Interior, [-0.8 * hw, hd, z0], [0.8 * hw, hd + g, z1]);
+    let (z0, z1) = (0.56 * h, 0.9 * h);
+    b.cuboid(Interior, [-0.9 * hw, hd, z0], [0.9 * hw, hd + g, z1]);
     let n = 5;
     for k in 0..n {
         let z = z0 + (z1 - z0) * (k as f64 + 0.5) / n as f64;
         b.slab(
             Metal,
             [0.0, hd + 2.5 * g, z],
-            [0.78 * hw, 0.8 * g, 0.4 * (z1 - z0) / n as f64],
+            [0.88 * hw, 0.8 * g, 0.4 * (z1 - z0) / n as f64],
             rot_x(0.6),
         );
     }
     // The display and its buttons.
     b.cuboid(
         Screen,
-        [-0.45 * hw, hd, 0.5 * h],
-        [0.45 * hw, hd + g, 0.56 * h],
+        [-0.9 * hw, hd, 0.48 * h],
+        [0.9 * hw, hd + g, 0.555 * h],
     );
     b.cuboid(
         Light,
@@ -80,16 +84,16 @@ pub fn air_conditioner(b: &mut Builder) {
         [0.1 * hw, hd + 1.5 * g, 0.545 * h],
     );
     // The intake grille: horizontal bars over a dark panel.
-    let (z0, z1) = (0.08 * h, 0.42 * h);
-    b.cuboid(Interior, [-0.8 * hw, hd, z0], [0.8 * hw, hd + g, z1]);
+    let (z0, z1) = (0.05 * h, 0.47 * h);
+    b.cuboid(Interior, [-0.9 * hw, hd, z0], [0.9 * hw, hd + g, z1]);
     let n = 7;
     for k in 0..n {
         let z = z0 + (z1 - z0) * (k as f64 + 0.5) / n as f64;
         let t = 0.25 * (z1 - z0) / n as f64;
         b.cuboid(
             Frame,
-            [-0.8 * hw, hd + g, z - t],
-            [0.8 * hw, hd + 2.0 * g, z + t],
+            [-0.9 * hw, hd + g, z - t],
+            [0.9 * hw, hd + 2.0 * g, z + t],
         );
     }
 }

@@ -77,8 +77,9 @@ fn side_windows(b: &mut Builder, x: f64, (y0, y1): (f64, f64), (z0, z1): (f64, f
 /// a windscreen and cab windows, a panel side with a sliding door's seams, rear doors with
 /// windows.
 pub fn van(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let g = proud(b);
+    // Lamps, windows and bumpers stand proud of the body, all inside the size box.
+    let (hw, hd, h) = (b.w / 2.0 - g, b.d / 2.0 - 2.5 * g, b.h);
     let r = (0.17 * h).min(0.08 * b.d);
     let tw = (0.12 * b.w).min(0.25);
     let zf = 0.45 * r;
@@ -129,8 +130,9 @@ pub fn van(b: &mut Builder) {
 /// windscreen with a lit destination sign above it, a folding door on the right (+x) near the
 /// front, a rear window and lamps.
 pub fn bus(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let g = proud(b);
+    // Lamps, windows and bumpers stand proud of the body, all inside the size box.
+    let (hw, hd, h) = (b.w / 2.0 - g, b.d / 2.0 - 2.5 * g, b.h);
     let r = (0.15 * h).min(0.05 * b.d);
     let tw = (0.12 * b.w).min(0.3);
     let zf = 0.4 * r;
@@ -166,25 +168,25 @@ pub fn bus(b: &mut Builder) {
             [hw - 0.02 + 2.0 * g, yc + 0.02 * b.d, 0.85 * h],
         );
     }
-    // The windscreen, the destination sign over it, lamps and bumper.
+    // The front is all windscreen, destination sign and a deep bumper with lamps in it.
     b.cuboid(
         Glass,
-        [-0.9 * hw, hd, 0.35 * h],
-        [0.9 * hw, hd + g, 0.84 * h],
+        [-hw + 0.02, hd, 0.3 * h],
+        [hw - 0.02, hd + g, 0.86 * h],
     );
     b.cuboid(
         Light,
-        [-0.7 * hw, hd, 0.87 * h],
-        [0.7 * hw, hd + g, 0.95 * h],
+        [-hw + 0.02, hd, 0.87 * h],
+        [hw - 0.02, hd + 1.5 * g, 0.96 * h],
     );
+    bumper(b, hd, 1.0, zf, 0.3 * h - zf);
     for sx in [-1.0, 1.0] {
         b.cuboid(
             Light,
-            [sx * 0.78 * hw - 0.15, hd, 0.22 * h],
-            [sx * 0.78 * hw + 0.15, hd + 1.5 * g, 0.3 * h],
+            [sx * 0.75 * hw - 0.15, hd, 0.18 * h],
+            [sx * 0.75 * hw + 0.15, hd + 2.5 * g, 0.25 * h],
         );
     }
-    bumper(b, hd, 1.0, zf, 0.14 * h);
     b.cuboid(
         Glass,
         [-0.8 * hw, -hd - g, 0.6 * h],
@@ -199,8 +201,9 @@ pub fn bus(b: &mut Builder) {
 /// A pickup: a low body the whole length, a bonnet in front of a cab with a windscreen and
 /// side windows, and behind the cab an open bed with low walls and a tailgate.
 pub fn pickup(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let g = proud(b);
+    // Lamps, windows and bumpers stand proud of the body, all inside the size box.
+    let (hw, hd, h) = (b.w / 2.0 - g, b.d / 2.0 - 2.5 * g, b.h);
     let r = (0.2 * h).min(0.07 * b.d);
     let tw = (0.12 * b.w).min(0.25);
     let zf = 0.5 * r;
@@ -232,8 +235,20 @@ pub fn pickup(b: &mut Builder) {
         (0.62 * h, 0.93 * h),
         2,
     );
-    front_face(b, hd, 0.72 * hw, 0.34 * h, 0.1 * hw);
-    bumper(b, hd, 1.0, zf, 0.08 * h);
+    // A big chrome grille between the headlights, a pickup's face.
+    b.cuboid(
+        Metal,
+        [-0.7 * hw, hd, 0.22 * h],
+        [0.7 * hw, hd + g, 0.55 * h],
+    );
+    for sx in [-1.0, 1.0] {
+        b.cuboid(
+            Light,
+            [sx * 0.85 * hw - 0.08, hd, 0.42 * h],
+            [sx * 0.85 * hw + 0.08, hd + g, 0.52 * h],
+        );
+    }
+    bumper(b, hd, 1.0, zf, 0.22 * h - zf);
     // The open bed: a floor low in the body, two side walls, the tailgate.
     let t = 0.05 * b.w;
     let (zb, zw) = (0.3 * h, 0.6 * h);
@@ -257,8 +272,9 @@ pub fn pickup(b: &mut Builder) {
 /// A lorry: a cab at the front (flat face, windscreen, side windows), a chassis of two rails
 /// behind it carrying a tall cargo box with rear doors, one front axle and two rear axles.
 pub fn lorry(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let g = proud(b);
+    // Lamps, windows and bumpers stand proud of the body, all inside the size box.
+    let (hw, hd, h) = (b.w / 2.0 - g, b.d / 2.0 - 2.5 * g, b.h);
     let r = (0.14 * h).min(0.06 * b.d);
     let tw = (0.12 * b.w).min(0.3);
     let zf = 0.6 * r;
