@@ -135,7 +135,7 @@ fn a_pickup_has_an_open_bed_behind_its_cab_and_a_lorry_a_tall_box() {
     );
     // Three axles: a front one and two at the back, every tyre on the ground.
     let tyres = of(&s, Role::Tyre);
-    assert_eq!(runs(&tyres, 1, 0.1), 3, "lorry axles");
+    assert_eq!(runs(&tyres, 1, 0.05), 3, "lorry axles");
     assert!(range(&tyres, 2).0 < 0.01, "lorry: tyres off the ground");
 }
 
