@@ -10,8 +10,10 @@ use super::carts as ca;
 use super::cases as c;
 use super::clearglass as cg;
 use super::clocks as ck;
+use super::coast as co;
 use super::crafts as cr;
 use super::daily as d;
+use super::fixtures as fx;
 use super::forms as fo;
 use super::frames as fr;
 use super::furniture as f;
@@ -34,6 +36,8 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
+use super::orchard as oc;
+use super::parlour as pa;
 use super::partitions as pn;
 use super::parts::Part;
 use super::picnic as pc;
@@ -43,6 +47,7 @@ use super::racks as rk;
 use super::rigs;
 use super::rocks;
 use super::salon as sa;
+use super::scopes as sco;
 use super::sculpted as sc;
 use super::seats as se;
 use super::sets as sx;
@@ -54,9 +59,11 @@ use super::structures as st;
 use super::things as t;
 use super::training as tr;
 use super::utility as ut;
+use super::vehicles as ve;
 use super::vitrines as vi;
 use super::washroom as wa;
 use super::workshop as ws;
+use super::yard as yd;
 
 /// One archetype.
 pub struct Archetype {
@@ -347,6 +354,25 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("church_organ", ins::church_organ, [Body, Top], [Body => [0.40, 0.25, 0.14], Top => [0.36, 0.22, 0.12], Metal => [0.80, 0.80, 0.78], Interior => [0.10, 0.07, 0.05], Keys => [0.95, 0.93, 0.88], BlackKeys => BLACK, Handle => [0.90, 0.88, 0.82], Frame => [0.42, 0.27, 0.15], Seat => [0.40, 0.25, 0.14]]),
     arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.55, 0.53, 0.48], Trunk => BLACK]),
     arch!("folding_screen", pn::folding_screen, [Frame], [Frame => [0.45, 0.30, 0.17], Canvas => [0.92, 0.88, 0.78], Upholstery => [0.50, 0.34, 0.20], Metal => BRASS]),
+    arch!("van", ve::van, [Body], [Body => WHITE, Glass => [0.22, 0.27, 0.32], Frame => [0.15, 0.15, 0.16], Interior => [0.12, 0.12, 0.13], Light => [1.0, 0.95, 0.80]]),
+    arch!("bus", ve::bus, [Body], [Body => [0.78, 0.10, 0.10], Top => [0.90, 0.90, 0.89], Glass => [0.20, 0.25, 0.30], Frame => [0.15, 0.15, 0.16], Door => [0.18, 0.18, 0.20], Light => [1.0, 0.80, 0.30]]),
+    arch!("pickup", ve::pickup, [Body], [Body => [0.20, 0.30, 0.55], Glass => [0.22, 0.27, 0.32], Frame => [0.15, 0.15, 0.16], Interior => [0.10, 0.10, 0.11], Light => [1.0, 0.95, 0.80]]),
+    arch!("lorry", ve::lorry, [Canvas], [Body => [0.75, 0.12, 0.10], Canvas => [0.93, 0.93, 0.92], Glass => [0.22, 0.27, 0.32], Frame => [0.12, 0.12, 0.13], Interior => [0.10, 0.10, 0.11], Metal => [0.55, 0.56, 0.58], Light => [1.0, 0.95, 0.80]]),
+    arch!("air_conditioner", fx::air_conditioner, [Body, Door], [Body => WHITE, Door => [0.88, 0.88, 0.89], Metal => [0.86, 0.86, 0.87], Frame => [0.70, 0.70, 0.72], Interior => [0.14, 0.14, 0.15], Screen => [0.10, 0.12, 0.14], Light => [0.35, 0.75, 1.0]]),
+    arch!("range_hood", fx::range_hood, [Body, Metal], [Body => STEEL, Metal => STEEL, Frame => [0.50, 0.51, 0.53], Interior => [0.15, 0.15, 0.16], Light => [1.0, 0.95, 0.80], Handle => BLACK]),
+    arch!("kiln", fx::kiln, [Body], [Body => [0.76, 0.77, 0.79], Metal => [0.42, 0.43, 0.45], Top => [0.68, 0.69, 0.71], Frame => [0.18, 0.18, 0.20], Screen => [0.14, 0.14, 0.15], Light => [0.95, 0.35, 0.15], Handle => [0.28, 0.28, 0.30], Interior => BLACK]),
+    arch!("microscope", sco::microscope, [Body], [Body => [0.93, 0.93, 0.91], Metal => STEEL, Top => BLACK, Handle => [0.16, 0.16, 0.17], BlackKeys => BLACK, Light => [1.0, 0.95, 0.80]]),
+    arch!("spotlight", sco::spotlight, [Body], [Body => BLACK, Metal => [0.16, 0.16, 0.17], Frame => [0.12, 0.12, 0.13], Handle => [0.22, 0.22, 0.24], Light => [1.0, 0.95, 0.75], Interior => BLACK, Tyre => BLACK]),
+    arch!("foosball", pa::foosball, [Body], [Body => [0.55, 0.38, 0.22], Frame => DARK_WOOD, Canvas => [0.20, 0.55, 0.25], Cushion => WHITE, Metal => STEEL, Handle => BLACK, Upholstery => [0.80, 0.12, 0.10], Seat => [0.12, 0.25, 0.70], Skin => [0.90, 0.75, 0.60], Interior => BLACK]),
+    arch!("roulette", pa::roulette, [Canvas], [Canvas => [0.10, 0.42, 0.22], Frame => [0.40, 0.22, 0.12], Cushion => WHITE, Foliage => [0.10, 0.60, 0.25], Upholstery => [0.78, 0.10, 0.10], BlackKeys => BLACK, Top => [0.55, 0.35, 0.18], Metal => BRASS]),
+    arch!("gnome", yd::gnome, [Upholstery], [Body => [0.20, 0.35, 0.70], Upholstery => [0.82, 0.12, 0.10], Canvas => [0.96, 0.96, 0.95], Skin => [0.95, 0.76, 0.62], BlackKeys => [0.25, 0.16, 0.09], Frame => [0.25, 0.16, 0.09], Metal => BRASS]),
+    arch!("seesaw", yd::seesaw, [Top], [Top => [0.95, 0.72, 0.10], Frame => [0.20, 0.45, 0.75], Metal => STEEL, Seat => [0.80, 0.12, 0.10], Handle => [0.15, 0.15, 0.16]]),
+    arch!("lawn_mower", yd::lawn_mower, [Body], [Body => [0.80, 0.12, 0.10], Frame => [0.20, 0.20, 0.22], Top => BLACK, Canvas => [0.25, 0.25, 0.27], Metal => [0.16, 0.16, 0.17], Handle => BLACK, Tyre => BLACK]),
+    arch!("shopping_cart", yd::shopping_cart, [Metal], [Metal => STEEL, Frame => [0.62, 0.63, 0.65], Handle => [0.80, 0.12, 0.10], Tyre => BLACK]),
+    arch!("lighthouse", co::lighthouse, [Upholstery], [Body => WHITE, Upholstery => [0.80, 0.12, 0.10], Stone => STONE, Door => [0.20, 0.25, 0.30], Interior => BLACK, Frame => [0.15, 0.15, 0.16], Metal => [0.15, 0.15, 0.16], Glass => [0.75, 0.85, 0.90], Light => [1.0, 0.90, 0.55], Top => [0.80, 0.12, 0.10]]),
+    arch!("mast", co::mast, [Canvas], [Trunk => [0.45, 0.30, 0.17], Canvas => [0.93, 0.90, 0.80], Frame => [0.40, 0.27, 0.15], BlackKeys => [0.15, 0.12, 0.10], Upholstery => [0.80, 0.12, 0.10]]),
+    arch!("fruit_tree", oc::fruit_tree, [Skin], [Skin => [0.80, 0.10, 0.10], Foliage => [0.25, 0.50, 0.18], Trunk => [0.35, 0.24, 0.15]]),
+    arch!("blossom_tree", oc::blossom_tree, [Foliage], [Foliage => [0.96, 0.70, 0.80], Cushion => [0.99, 0.90, 0.93], Trunk => [0.25, 0.16, 0.12]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.
