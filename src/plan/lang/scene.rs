@@ -31,7 +31,22 @@ pub(super) fn read_scene(
         .filter_map(|d| t.find(d))
         .min()
         .filter(|&i| i > 0);
-    for m in scene_re.find_iter(t) {
+    let found: Vec<regex::Match> = scene_re.find_iter(t).collect();
+    let shared = |name: &str| {
+        word_list("shared_rooms")
+            .iter()
+            .any(|w| w.replace('_', " ") == name)
+    };
+    for (k, m) in found.iter().enumerate() {
+        // An owner's place ("the dentist's") said before a room any place has ("a dentist's
+        // waiting room") only qualifies that room.
+        if m.as_str().ends_with("'s")
+            && found
+                .get(k + 1)
+                .is_some_and(|n| n.start() == m.end() + 1 && shared(n.as_str()))
+        {
+            continue;
+        }
         let inside_object = objects
             .iter()
             .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
@@ -58,7 +73,8 @@ pub(super) fn read_scene(
             let word = before.rsplit(' ').next().unwrap_or("");
             // So does an owner's place: "a wizard's laboratory" is the wizard's study, not a
             // school lab; "a child's bedroom" the child's room.
-            let generic = word_list("place_heads").contains(&m.as_str()) || word.ends_with("'s");
+            let generic = word_list("place_heads").contains(&m.as_str())
+                || (word.ends_with("'s") && !shared(m.as_str()));
             let modified = (generic && !word.is_empty() && !is_function_word(word))
                 .then(|| {
                     scene_of
