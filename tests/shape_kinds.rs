@@ -2,6 +2,8 @@
 //! what hangs is clear of the floor, what holds things holds them, what comes in a set is
 //! several. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
+mod common;
+use common::samples::{of, range};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{parts, Role};
 use rand::SeedableRng;
@@ -17,20 +19,6 @@ fn samples(category: &str) -> (Vec<([f64; 3], Role)>, [f64; 3]) {
         out.extend(s.iter().map(|s| (s.pos, p.role)));
     }
     (out, size)
-}
-
-fn of(s: &[([f64; 3], Role)], role: Role) -> Vec<[f64; 3]> {
-    s.iter()
-        .filter(|(_, r)| *r == role)
-        .map(|(p, _)| *p)
-        .collect()
-}
-
-fn range(pts: &[[f64; 3]], axis: usize) -> (f64, f64) {
-    pts.iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p[axis]), hi.max(p[axis]))
-        })
 }
 
 #[test]

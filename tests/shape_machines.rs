@@ -4,6 +4,8 @@
 //! table's rods stick out past both long sides, a lighthouse tapers under its lantern, a fruit
 //! tree bears fruit. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
+mod common;
+use common::samples::{of, range};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{archetype_of, build, parts, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
@@ -27,20 +29,6 @@ fn samples_at(category: &str, size: Option<[f64; 3]>) -> (Samples, [f64; 3]) {
 
 fn samples(category: &str) -> (Samples, [f64; 3]) {
     samples_at(category, None)
-}
-
-fn of(s: &Samples, role: Role) -> Vec<[f64; 3]> {
-    s.iter()
-        .filter(|(_, r)| *r == role)
-        .map(|(p, _)| *p)
-        .collect()
-}
-
-fn range(pts: &[[f64; 3]], axis: usize) -> (f64, f64) {
-    pts.iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p[axis]), hi.max(p[axis]))
-        })
 }
 
 fn mean(pts: &[[f64; 3]], axis: usize) -> f64 {

@@ -4,23 +4,11 @@
 //! and hands, a hospital bed raises its head, racks hold plates, books and shoes, a folding
 //! screen stands in a zigzag. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
+mod common;
+use common::samples::{of, range};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{parts, Role};
 use rand::SeedableRng;
-
-fn of(s: &[([f64; 3], Role)], role: Role) -> Vec<[f64; 3]> {
-    s.iter()
-        .filter(|(_, r)| *r == role)
-        .map(|(p, _)| *p)
-        .collect()
-}
-
-fn range(pts: &[[f64; 3]], axis: usize) -> (f64, f64) {
-    pts.iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p[axis]), hi.max(p[axis]))
-        })
-}
 
 /// Surface samples of `category` at `size`, with their roles.
 fn samples_at(category: &str, size: [f64; 3]) -> Vec<([f64; 3], Role)> {
