@@ -307,3 +307,60 @@ fn people_and_activity_places_are_no_objects() {
         );
     }
 }
+
+#[test]
+fn an_owners_place_before_a_room_every_place_has_is_that_room() {
+    // "the dentist's" names the surgery, but "a dentist's waiting room" is a waiting room (of
+    // the dentist's): no dentist chair, its chairs waiting chairs, not desks with office chairs.
+    for prompt in [
+        "a dentist's waiting room with eight chairs and a fish tank",
+        "the dentist's waiting room",
+        "a cobbler's waiting room with four chairs",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "dentist"), 0, "{prompt}: {:?}", s.objects.keys());
+        assert_eq!(
+            number(&s, "office chair"),
+            0,
+            "{prompt}: {:?}",
+            s.objects.keys()
+        );
+        assert!(
+            number(&s, "waiting chair") >= 4,
+            "{prompt}: {:?}",
+            s.objects.keys()
+        );
+    }
+    // The owner's own place stays the owner's, and an owner's generic room is the owner's room.
+    assert_eq!(number(&plan("a dentist's office"), "dentist chair"), 1);
+    assert_eq!(number(&plan("the dentist's"), "dentist chair"), 1);
+    assert!(number(&plan("a wizard's laboratory"), "cauldron") >= 1);
+}
+
+#[test]
+fn a_side_table_stands_beside_a_seat() {
+    // A side table serves a seat: with no sofa, it is set beside the armchair or the waiting
+    // chairs, not left free in the middle of the room.
+    for (prompt, seat) in [
+        (
+            "a reading corner with an armchair, a side table and a bookcase",
+            "armchair",
+        ),
+        ("a waiting room with six chairs", "waiting chair"),
+        (
+            "a bedroom with a rocking chair and a side table",
+            "rocking chair",
+        ),
+    ] {
+        let s = plan(prompt);
+        assert!(
+            s.relations
+                .iter()
+                .any(|r| r.subject.starts_with("side table")
+                    && r.relation == RelationKind::Next
+                    && r.object.starts_with(seat)),
+            "{prompt}: {:?}",
+            s.relations
+        );
+    }
+}
