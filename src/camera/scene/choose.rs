@@ -3,17 +3,20 @@
 //! Candidates stand at eye height on loops along the room's walls (outdoors: the ground's edge,
 //! the loops further apart on a wide ground; indoors also one with the back to the wall),
 //! every valid viewpoint 0.25 m apart, each looking at
-//! an object, a pair of neighbouring objects or the room centre at a gentle downward pitch,
-//! through a lens that widens in a small room ([`view_fov`]). Each candidate is measured from the
+//! an object, a pair of neighbouring objects or the room centre at a gentle downward pitch
+//! (steeper in a small room, where the furniture stands close), through a lens that widens in a
+//! small room ([`view_fov`]); indoors each spot also turns on the spot to evenly spaced
+//! directions (`sweep.rs`), so a room with one spot to stand on still has several pictures. Each candidate is measured from the
 //! layout boxes alone (occlusion ignored, see [`view_stats`]); the views are then picked
 //! greedily: first those that frame well ([`ViewStats::framed_well`], counting an object and
 //! what rests on it as one piece, so a TV on its stand is no wide view), each adding the most
 //! objects not yet shown (an object seen from its front counts more than one seen from behind),
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground (nor standing in the frame's
-//! middle like a pillar: a floor lamp before the sofa), and far (in place or direction)
-//! from the views already taken. Host-only.
-use super::faults::{blocker_share, footprint_distance, grazing_share};
+//! middle like a pillar: a floor lamp before the sofa, nor cut by the frame's bottom: chair
+//! backs before the sideboard), and far (in place or direction) from the views already taken
+//! (a near copy costs more than framing well gains). Host-only.
+use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
 use super::views::FLAT;
 use super::views::{facing, hidden_share, in_frame, screen_box, view_stats, ViewStats};
 use super::{camera, kind, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
@@ -22,6 +25,12 @@ use crate::plan::spec::SceneType;
 
 /// Steepest downward pitch of a render view (degrees).
 const MAX_PITCH_DEG: f64 = 14.0;
+/// The steepest pitch in a room [`SMALL_ROOM`] metres or less across: there the furniture
+/// stands within 1–2 m, and looked at level from eye height it fills the frame's lower third
+/// under a band of bare wall; a person looks down on it (as a photographer of a box room
+/// does). Measured on the framing figure's small rooms: 14° left 35 of 160 views mostly bare,
+/// 26° 18; steeper (34°) looks down on the floor more than into the room.
+const SMALL_ROOM_PITCH_DEG: f64 = 26.0;
 /// Spacing of the candidate positions along the walls (metres); wider on a large ground, so
 /// there are at most [`MAX_LOOP_POINTS`] a loop.
 const STEP: f64 = 0.25;
@@ -55,12 +64,26 @@ pub fn eye_height(scene: &SceneBox) -> f64 {
 pub fn view_fov(scene: &SceneBox) -> f64 {
     match scene.scene_type {
         SceneType::Outdoor => SCENE_FOV_X,
+        SceneType::Indoor => SCENE_FOV_X + smallness(scene) * (WIDE_FOV_X - SCENE_FOV_X),
+    }
+}
+
+/// How small `scene` is for its views: 0 from [`LARGE_ROOM`] across on (and outdoors), 1 at
+/// [`SMALL_ROOM`] or less, linear between.
+fn smallness(scene: &SceneBox) -> f64 {
+    match scene.scene_type {
+        SceneType::Outdoor => 0.0,
         SceneType::Indoor => {
             let side = scene.room[0].min(scene.room[1]);
-            let t = ((LARGE_ROOM - side) / (LARGE_ROOM - SMALL_ROOM)).clamp(0.0, 1.0);
-            SCENE_FOV_X + t * (WIDE_FOV_X - SCENE_FOV_X)
+            ((LARGE_ROOM - side) / (LARGE_ROOM - SMALL_ROOM)).clamp(0.0, 1.0)
         }
     }
+}
+
+/// The steepest downward pitch of the render views of `scene` (degrees): [`MAX_PITCH_DEG`],
+/// steeper in a small room up to [`SMALL_ROOM_PITCH_DEG`].
+fn view_pitch(scene: &SceneBox) -> f64 {
+    MAX_PITCH_DEG + smallness(scene) * (SMALL_ROOM_PITCH_DEG - MAX_PITCH_DEG)
 }
 
 /// The foreground distance of `scene` (see [`FOREGROUND`]).
@@ -159,6 +182,11 @@ fn wall_loop(scene: &SceneBox, inset: f64, z: f64) -> Vec<[f64; 3]> {
         .collect()
 }
 
+/// One shot to measure: the eye, the spot it looks at, the target it aims at (its index in
+/// the list of targets, 0 the room), the lens, and whether it is a turn on the spot
+/// ([`sweep::turns`]).
+type Shot = ([f64; 3], [f64; 3], usize, f64, bool);
+
 /// One scored candidate.
 struct Candidate {
     cam: Camera,
@@ -185,6 +213,10 @@ struct Candidate {
     /// room ([`stands_mid_frame`]): a floor lamp splitting the picture. Its box's share is
     /// small (a pole and a shade), what it does to the picture is not.
     pillar: f64,
+    /// The share of the frame of a foreground object not looked at that the frame's bottom
+    /// edge cuts ([`cut_at_foot`]): the backs of the chairs at a dining table across the bottom
+    /// of a view of the sideboard.
+    cut: f64,
     /// The objects in frame (index, share of the frame it covers), in index order, and the sum
     /// of their shares.
     shares: Vec<(usize, f64)>,
@@ -234,28 +266,35 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             }
         }
     }
-    let max_pitch = MAX_PITCH_DEG.to_radians().tan();
+    let max_pitch = view_pitch(scene).to_radians().tan();
     // Every position looks at every target; the room's corners also look at its centre through
     // the widest lens: the views that fill in where a small room runs short of good ones.
-    let mut shots: Vec<([f64; 3], usize, f64)> = positions
+    let mut shots: Vec<Shot> = positions
         .iter()
-        .flat_map(|p| (0..targets.len()).map(move |t| (*p, t, fov)))
+        .flat_map(|p| {
+            let targets = &targets;
+            (0..targets.len()).map(move |t| (*p, targets[t].0, t, fov, false))
+        })
         .collect();
+    // Each spot also turns on the spot (`sweep::turns`): where a small room has one or two
+    // spots to stand on, another view from there is another direction, not a copy.
+    shots.extend(sweep::turns(scene, &positions, fov));
     if scene.scene_type == SceneType::Indoor {
         let [hx, hy] = scene.half();
         for inset in [edge, edge + apart] {
             for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
                 let p = [sx * (hx - inset), sy * (hy - inset), eye];
                 if valid_viewpoint(scene, p) && stands(scene, p) {
-                    shots.push((p, 0, fov.max(FILL_FOV_X)));
+                    shots.push((p, targets[0].0, 0, fov.max(FILL_FOV_X), false));
                 }
             }
         }
     }
     let piece = pieces::piece_of(scene);
+    let fg = foreground(scene);
     let mut cands = vec![];
-    for (p, ti, fov) in shots {
-        let (t, looked_at) = &targets[ti];
+    for (p, t, ti, fov, turned) in shots {
+        let (t, looked_at) = (&t, &targets[ti].1);
         let p = &p;
         {
             let d = (t[0] - p[0]).hypot(t[1] - p[1]);
@@ -266,6 +305,10 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             let tz = t[2].max(eye - max_pitch * d).min(eye);
             let cam = camera(*p, [t[0], t[1], tz], [0.0, 0.0, 1.0], width, height, fov);
             let stats = view_stats(scene, &cam);
+            // A turn is a view only where it frames the room ([`sweep`]).
+            if turned && !(stats.framed_well() && stats.covered >= BARE_COVER) {
+                continue;
+            }
             let shows = scene
                 .objects
                 .iter()
@@ -274,7 +317,8 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             let dir = [(t[0] - p[0]) / d, (t[1] - p[1]) / d];
             // How close the nearest object in the frame stands: a foreground lampshade or chair
             // back hides the room even under the share limit.
-            let (mut near, mut occluder, mut pillar) = (f64::INFINITY, 0.0f64, 0.0f64);
+            let (mut near, mut occluder, mut pillar, mut cut) =
+                (f64::INFINITY, 0.0f64, 0.0f64, 0.0f64);
             let boxes: Vec<(f64, Option<[f64; 4]>)> =
                 scene.objects.iter().map(|o| screen_box(&cam, o)).collect();
             let shares: Vec<f64> = boxes.iter().map(|b| b.0).collect();
@@ -294,6 +338,9 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                     && stands_mid_frame(&cam, o, boxes[k].1, dist, &dists, &shares)
                 {
                     pillar = pillar.max(share);
+                }
+                if dist < fg && !looked_at.contains(&k) && cut_at_foot(&cam, o, boxes[k].1) {
+                    cut = cut.max(share);
                 }
                 // What is looked at hides nothing, unless it is the near one of a pair, or it
                 // stands before a larger object and hides much of it (a bush before the
@@ -326,6 +373,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             );
             cands.push(Candidate {
                 pillar,
+                cut,
                 pieces,
                 piece: piece_share,
                 blocker,
@@ -376,6 +424,14 @@ fn stands_mid_frame(
             .any(|(d, s)| *s > 0.03 && *d > dist + PILLAR_BEHIND)
 }
 
+/// True when `o` (its silhouette's box `rect`) stands upright in `cam`'s frame with its foot cut
+/// by the frame's bottom edge: seen from so near that only its top half is in the picture,
+/// before what the view is of. The caller asks this of objects nearer than the foreground
+/// distance ([`foreground`]) that the view does not aim at.
+fn cut_at_foot(cam: &Camera, o: &ObjectBox, rect: Option<[f64; 4]>) -> bool {
+    o.size[2] > FLAT && rect.is_some_and(|r| r[3] >= cam.height as f64 - 1.0)
+}
+
 /// How near (metres) a pillar stands: a floor lamp 2 m off still splits the picture it stands
 /// in the middle of, past the foreground distance.
 const PILLAR_NEAR: f64 = 2.5;
@@ -386,5 +442,6 @@ const PILLAR_BEHIND: f64 = 1.0;
 
 mod pick;
 mod pieces;
+mod sweep;
 #[cfg(test)]
 mod tests;

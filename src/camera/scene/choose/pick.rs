@@ -20,6 +20,10 @@ const POOR: f64 = 6.0;
 /// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
 /// loses, so a poor view that frames well is still taken before one that does not.
 const GOOD: f64 = 24.0;
+/// What a near copy of a view already taken loses on top of [`POOR`]: together more than
+/// half of [`GOOD`], so a room with one spot to stand on turns to a new direction
+/// (`sweep.rs`) rather than repeating a well framed picture.
+const COPY_MORE: f64 = 9.0;
 /// Up to this share of the frame bare wall costs a view nothing (a room's walls show above its
 /// furniture in every picture taken at eye height); beyond it each share costs
 /// [`WALL_PER_SHARE`].
@@ -170,6 +174,11 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 } else {
                     0.0
                 }
+                - if c.cut > 0.0 {
+                    POOR + 10.0 * c.cut
+                } else {
+                    0.0
+                }
                 - 3.0 * same as f64
                 - if same >= 2 { POOR } else { 0.0 }
                 - 1.0 * alike as f64
@@ -177,6 +186,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - 16.0 * (c.occluder - 0.05).max(0.0)
                 - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
                 - POOR * (bare + copy + blocker + grazing)
+                - COPY_MORE * copy
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
                 + if focal_taken < focal_target && looks_ahead(c) {
