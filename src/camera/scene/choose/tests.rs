@@ -239,13 +239,13 @@ fn small_rooms_get_few_poor_views() {
     }
     // The faults grew stricter (bare wall, a column at the frame's side, a mirror past 45°):
     // by them the pick before the bare-wall rule gets 14 of 40 clean, the pick before views
-    // stepped back to the wall 18, this one 18 to 20 (the mudroom's shoe rack and a side
-    // table beside its seat changed boxes since it was 20).
-    assert!(clean * 40 >= total * 18, "{clean} of {total} views clean");
-    // Bare now also counts views of mostly bare wall: 12 of 40 here (5 by the box cover alone).
-    assert!(bare * 3 <= total, "{bare} of {total} views mostly bare");
+    // stepped back to the wall 18, the pick before small rooms were looked down on and every
+    // spot turned 18 to 20, this one 26.
+    assert!(clean * 40 >= total * 24, "{clean} of {total} views clean");
+    // Bare also counts views of mostly bare wall: 12 of 40 here before, 8 now.
+    assert!(bare * 5 <= total, "{bare} of {total} views mostly bare");
     assert!(
-        well * 10 >= total * 9,
+        well * 40 >= total * 39,
         "{well} of {total} views framed well"
     );
 }
@@ -256,7 +256,7 @@ fn views_show_the_room_not_bare_wall() {
     // measured, and never looked at while tuning them: a plant and an armchair against an empty
     // wall cover a quarter of the frame with their boxes, yet a person sees mostly wall. Before
     // the pick weighed bare wall, 27 of these 48 views were clean and 19 mostly bare wall (by
-    // the bare-wall rule alone); after, 38 and 6.
+    // the bare-wall rule alone); after, 38 and 6; with small rooms looked down on, 43 and 1.
     let prompts = [
         "a family room with a sectional sofa, two armchairs, a TV and a bookcase",
         "a guest bedroom with a queen bed, a wardrobe, an armchair and a full length mirror",
@@ -277,9 +277,9 @@ fn views_show_the_room_not_bare_wall() {
             .count();
         total += cams.len();
     }
-    assert!(clean * 10 >= total * 7, "{clean} of {total} views clean");
+    assert!(clean * 48 >= total * 40, "{clean} of {total} views clean");
     assert!(
-        wall * 6 <= total,
+        wall * 24 <= total,
         "{wall} of {total} views mostly bare wall"
     );
 }
@@ -350,4 +350,76 @@ fn views_never_close_in_on_one_piece_nor_stand_behind_a_pillar() {
         "close-ups of one piece: {close_ups:?}"
     );
     assert!(pillars.is_empty(), "pillars in mid-frame: {pillars:?}");
+}
+
+/// The pairs of `cams` that stand within 0.5 m of each other and look within 20° of the same
+/// way: near-identical pictures.
+fn near_identical(cams: &[Camera]) -> usize {
+    let yaw = |c: &Camera| c.rotation[1][2].atan2(c.rotation[0][2]).to_degrees();
+    let mut n = 0;
+    for i in 0..cams.len() {
+        for j in 0..i {
+            let (a, b) = (&cams[i], &cams[j]);
+            let dp = (a.position[0] - b.position[0]).hypot(a.position[1] - b.position[1]);
+            let dy = ((yaw(a) - yaw(b) + 540.0) % 360.0 - 180.0).abs();
+            n += usize::from(dp < 0.5 && dy < 20.0);
+        }
+    }
+    n
+}
+
+#[test]
+fn views_of_a_room_with_few_spots_turn_rather_than_repeat() {
+    // A box room has one or two spots to stand on: aimed only at its objects, 8 views from
+    // there were near-identical pictures (the box room office: 16 pairs within 0.5 m and 20°,
+    // the box room with a bed 10, the small study 10). Now the spots turn to other
+    // directions and a near copy costs more than framing well gains: 9, 3 and 1 (42 pairs
+    // before in all five rooms, 13 now).
+    let prompts = [
+        "a box room office with a desk, an office chair and a bookcase",
+        "a box room with a single bed and a chest of drawers",
+        "a small study with a desk",
+        "a small bathroom",
+        "a tiny kitchen",
+    ];
+    let mut pairs = vec![];
+    for prompt in prompts {
+        let (scene, cams) = eight_views(prompt);
+        assert_eq!(cams.len(), 8, "{prompt}: eight views");
+        assert!(cams.iter().all(|c| valid_viewpoint(&scene, c.position)));
+        pairs.push((prompt, near_identical(&cams)));
+    }
+    let total: usize = pairs.iter().map(|p| p.1).sum();
+    assert!(total <= 16, "near-identical pairs of views: {pairs:?}");
+}
+
+#[test]
+fn views_of_a_dining_table_keep_chair_backs_out_of_the_frame_foot() {
+    // The dining room for eight showed chair backs cut by the frame's bottom edge, close before
+    // the sideboard or the cabinet the view was of. The dining room and two of our own: 6 such
+    // views of 24 without the rule (`cut_at_foot`), 2 with it.
+    let mut cut = vec![];
+    for prompt in [
+        "a dining room for eight",
+        "a dining room with a table for six and a sideboard",
+        "a dining room with a long table, ten chairs and a china cabinet",
+    ] {
+        let (scene, cams) = eight_views(prompt);
+        let fg = foreground(&scene);
+        for (v, c) in cams.iter().enumerate() {
+            let stats = view_stats(&scene, c);
+            let chair = scene.objects.iter().enumerate().any(|(k, o)| {
+                let (share, rect) = screen_box(c, o);
+                Some(k) != stats.subject
+                    && kind(o).ends_with("chair")
+                    && share > 0.03
+                    && footprint_distance(o, c.position) < fg
+                    && cut_at_foot(c, o, rect)
+            });
+            if chair {
+                cut.push(format!("{prompt}: view {v}"));
+            }
+        }
+    }
+    assert!(cut.len() <= 3, "chair backs at the frame's foot: {cut:?}");
 }
