@@ -170,3 +170,32 @@ fn a_telly_is_a_tv_and_a_livingroom_a_living_room() {
         assert!(number(&s, "coffee table") == 1, "{prompt}: {:?}", keys(&s));
     }
 }
+
+#[test]
+fn a_tea_set_is_one_thing_on_its_table() {
+    for prompt in [
+        "a japanese tea house with a low table, four floor cushions around it and a tea set on the table",
+        "a living room with a sofa and a teapot on the coffee table",
+        "a kitchen with a table and a tea set on it",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "tea set"), 1, "{prompt}: {:?}", keys(&s));
+        assert!(!s.objects.contains_key("tea"), "{prompt}: {:?}", keys(&s));
+        let on = s.relations.iter().any(|r| {
+            r.subject.starts_with("tea set") && format!("{:?}", r.relation) == "Over"
+        });
+        assert!(on, "{prompt}: {:?}", s.relations);
+    }
+}
+
+#[test]
+fn a_lobby_has_a_reception_desk() {
+    for prompt in [
+        "a hotel lobby with a reception desk, two sofas and a coffee table between them",
+        "a hotel lobby",
+        "a hotel lobby with a reception desk and a luggage cart",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "reception desk"), 1, "{prompt}: {:?}", keys(&s));
+    }
+}
