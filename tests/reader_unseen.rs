@@ -199,3 +199,20 @@ fn a_lobby_has_a_reception_desk() {
         assert_eq!(number(&s, "reception desk"), 1, "{prompt}: {:?}", keys(&s));
     }
 }
+
+#[test]
+fn a_photo_studio_has_its_backdrop_and_lights() {
+    for (prompt, lights) in [
+        (
+            "a photo studio with a backdrop, two softbox lights and one stool in the middle",
+            2,
+        ),
+        ("a photography studio", 2),
+        ("a portrait studio with three studio lights and a chair", 3),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "backdrop"), 1, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "softbox"), lights, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "easel"), 0, "{prompt}: {:?}", keys(&s));
+    }
+}
