@@ -262,7 +262,7 @@ const CASES: &[Case] = &[
     (
         "a hotel lobby with a reception desk and two sofas",
         None,
-        &[("hotel reception", 1), ("lobby sofa", 2)],
+        &[("hotel reception desk", 1), ("lobby sofa", 2)],
     ),
     (
         "a waiting room with eight chairs and a water cooler",

@@ -22,7 +22,7 @@ use regex::Regex;
 use words::not_objects;
 pub use words::{
     alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
-    is_outdoor_place, is_specialised, is_verb, kind_of_compound, normalise, number,
+    is_outdoor_place, is_seat, is_specialised, is_verb, kind_of_compound, normalise, number,
     object_footprint, object_scale, part_owners, plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
@@ -110,6 +110,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     scene::read_scene(kb, &t, &mut r, &mut masked);
     let raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
     mentions::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
+    mentions::place_names(&mut r);
     room::read_room(&t, &mut r, &masked, &dims);
     mentions::for_whom(kb, &mut r);
     read_counts(&mut r);

@@ -8,7 +8,7 @@
 //! Stages, in order (each a submodule working on one `Draft`): `roles` (the scene's defaults
 //! and the category each mention means), `sizing` (sizes the text gives), `counts` (counts),
 //! `seats` (seats at tables, "a table for six"), `companions` (what the counts set), `roles`
-//! again (what negation and named roles take away), `describe` (styles and descriptions),
+//! again (what negation and named roles take away), `purpose` (seats for someone), `describe` (styles and descriptions),
 //! `relations` (anchors and relations), `sizing` (the room), `describe` (what was understood).
 use super::capacity::fit;
 use super::kb::{KnowledgeBase, SceneKind};
@@ -20,6 +20,7 @@ mod companions;
 mod counts;
 mod describe;
 mod outdoors;
+mod purpose;
 mod relations;
 mod roles;
 mod seats;
@@ -196,6 +197,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     supports::plural_supports(&mut d);
     let people = seats::seats_for(&mut d);
     roles::take_away(&mut d);
+    purpose::seats_for_someone(&mut d);
     companions::companions(&mut d, people);
     supports::per_instance(&mut d);
     counts::clamp(&mut d);

@@ -324,3 +324,28 @@ pub(super) fn for_whom(kb: &KnowledgeBase, r: &mut Reading) {
         }
     }
 }
+
+/// "a tiny tv room with ... a television on the wall": a noun that names the place it stands
+/// before (`kb/words.txt`: place_heads, "room") is no object of its own when the text names
+/// that thing again; the later mention is the one.
+pub(super) fn place_names(r: &mut Reading) {
+    let heads = word_list("place_heads");
+    let names_place = |m: &Mention| {
+        r.text[m.end..]
+            .strip_prefix(' ')
+            .and_then(|t| t.split(|c: char| !c.is_alphanumeric()).next())
+            .is_some_and(|w| heads.contains(&w))
+    };
+    let gone: Vec<usize> = (0..r.mentions.len())
+        .filter(|&i| {
+            let m = &r.mentions[i];
+            names_place(m)
+                && r.mentions.iter().enumerate().any(|(j, o)| {
+                    j != i && o.category == m.category && !o.negated && !names_place(o)
+                })
+        })
+        .collect();
+    for i in gone.into_iter().rev() {
+        r.mentions.remove(i);
+    }
+}

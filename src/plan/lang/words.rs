@@ -195,6 +195,12 @@ pub fn counts_whole(head: &str) -> bool {
     word_list("counted_whole").contains(&head)
 }
 
+/// Whether `category` is a thing to sit on: its head noun is one of `kb/words.txt`, seats.
+pub fn is_seat(category: &str) -> bool {
+    let head = category.rsplit(' ').next().unwrap_or(category);
+    word_list("seats").contains(&head)
+}
+
 /// The head noun a one-word category is a kind of (`kb/words.txt`, kinds): "armchair" is a
 /// chair, so a bare "chair" in a living room is its armchair.
 pub fn kind_of_compound(category: &str) -> Option<&'static str> {

@@ -197,7 +197,20 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
         } else if seat_named && !table_named && per < 12 {
             let need = counts[seat].div_ceil(per.max(1));
             let t = counts.get(&table).copied().unwrap_or(1);
-            if need > t {
+            // "two barber chairs" in a salon whose defaults give each chair its station: the
+            // stations, still as many as the defaults, follow the chairs the text counts, fewer
+            // as well as more (not chairs said "at each" of something else)
+            let paired = matches!(
+                (defaults.get(seat), defaults.get(&table)),
+                (Some(s), Some(dt)) if *dt > 0 && *s == dt * per && *dt == t
+            );
+            let counted = explicit.get(seat) == counts.get(seat)
+                && !r
+                    .mentions
+                    .iter()
+                    .zip(cats.iter())
+                    .any(|(m, c)| c == seat && m.each_of.is_some());
+            if need > t || (paired && counted && need < t) {
                 counts.insert(table.clone(), need);
                 if let Some(i) = first_mention(seat) {
                     inferred
