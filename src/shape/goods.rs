@@ -63,8 +63,8 @@ impl Goods {
         Goods::ALL.into_iter().find(|g| g.name() == name.trim())
     }
 
-    /// Colours of this kind's goods, chosen by a part's variant: the first [`Goods::specials`]
-    /// entries are fixed colours the builder asks for by index (a basket's wicker, a medicine
+    /// Colours of this kind's goods, chosen by a part's variant: the first few
+    /// entries (its specials) are fixed colours the builder asks for by index (a basket's wicker, a medicine
     /// box's white), the rest are the kind's product colours.
     pub fn palette(self) -> &'static [Rgb] {
         match self {
