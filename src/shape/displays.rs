@@ -151,7 +151,7 @@ pub fn file_sorter(b: &mut Builder) {
 
 /// A hood dryer chair: an armchair low in the size box, a chrome column rising behind its back
 /// to an arm reaching forward, and the dryer's dome hood on the arm over where the sitter's head
-/// is, open below and tilted to the front, dark inside, with a control dial on its side.
+/// is, its open rim tilted to face down and forward, dark inside, with a control dial on its side.
 pub fn hood_dryer_chair(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let chair_h = (0.62 * h).min(0.95);
@@ -176,7 +176,7 @@ pub fn hood_dryer_chair(b: &mut Builder) {
             })
             .collect::<Vec<_>>()
     };
-    let tilt = rot_x(-0.6);
+    let tilt = rot_x(0.6);
     let base = [centre[0], centre[1], centre[2] - 0.5 * r];
     b.revolved(Body, 0, base, tilt, 1.0, dome(r));
     b.revolved(

@@ -63,9 +63,9 @@ impl Goods {
         Goods::ALL.into_iter().find(|g| g.name() == name.trim())
     }
 
-    /// Colours of this kind's goods, chosen by a part's variant: the first few
-    /// entries (its specials) are fixed colours the builder asks for by index (a basket's wicker, a medicine
-    /// box's white), the rest are the kind's product colours.
+    /// Colours of this kind's goods, chosen by a part's variant: the first few entries (its
+    /// specials) are fixed colours the builder asks for by index (a basket's wicker, a
+    /// medicine box's white), the rest are the kind's product colours.
     pub fn palette(self) -> &'static [Rgb] {
         match self {
             Goods::Books => BOOKS,
