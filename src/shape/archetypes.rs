@@ -13,6 +13,7 @@ use super::clocks as ck;
 use super::coast as co;
 use super::crafts as cr;
 use super::daily as d;
+use super::displays as dp;
 use super::fixtures as fx;
 use super::forms as fo;
 use super::frames as fr;
@@ -76,13 +77,14 @@ pub struct Archetype {
 }
 
 impl Archetype {
-    /// The parts at `size`.
-    pub fn parts(&self, size: [f64; 3]) -> Vec<Part> {
+    /// The parts at `size`, shelves holding `goods`.
+    pub fn parts_holding(&self, size: [f64; 3], goods: Option<super::goods::Goods>) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
             w: size[0],
             d: size[1],
             h: size[2],
+            goods,
         };
         (self.layout)(&mut b);
         b.parts
@@ -347,6 +349,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("barber_chair", sa::barber_chair, [Upholstery], [Upholstery => [0.50, 0.08, 0.08], Metal => [0.80, 0.81, 0.83], Body => WHITE, Frame => DARK_WOOD, Handle => [0.20, 0.20, 0.21]]),
     arch!("dentist_chair", sa::dentist_chair, [Upholstery, Cushion], [Upholstery => [0.35, 0.65, 0.70], Cushion => [0.33, 0.62, 0.67], Body => WHITE, Metal => STEEL, Light => [1.0, 0.96, 0.85], Top => [0.85, 0.86, 0.87], Canvas => WHITE, Water => [0.50, 0.70, 0.85], Handle => STEEL]),
     arch!("pedicure_chair", sa::pedicure_chair, [Upholstery], [Upholstery => [0.30, 0.20, 0.15], Cushion => [0.34, 0.23, 0.17], Body => [0.12, 0.12, 0.13], Top => [0.80, 0.78, 0.74], Canvas => WHITE, Water => [0.45, 0.70, 0.85], Metal => STEEL]),
+    arch!("magazine_stand", dp::magazine_stand, [Frame, Top], [Frame => [0.22, 0.22, 0.24], Top => [0.30, 0.30, 0.32], Canvas => WHITE]),
+    arch!("file_sorter", dp::file_sorter, [Frame], [Frame => [0.16, 0.16, 0.17], Canvas => WHITE]),
+    arch!("hood_dryer_chair", dp::hood_dryer_chair, [Upholstery, Cushion], [Upholstery => [0.12, 0.12, 0.13], Cushion => [0.14, 0.14, 0.15], Frame => [0.70, 0.71, 0.73], Body => [0.90, 0.88, 0.86], Metal => STEEL, Handle => BLACK, Interior => [0.20, 0.20, 0.21]]),
     arch!("magazine_rack", hr::magazine_rack, [Frame], [Frame => [0.62, 0.47, 0.30]]),
     arch!("shoe_rack", hr::shoe_rack, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Interior => [0.12, 0.12, 0.12]]),
     arch!("plate_rack", hr::plate_rack, [Frame], [Frame => [0.62, 0.47, 0.30], Canvas => WHITE, Pot => [0.30, 0.45, 0.70]]),

@@ -10,6 +10,8 @@ pub struct Builder {
     pub w: f64,
     pub d: f64,
     pub h: f64,
+    /// What the category's shelves hold (`kb/shelf_goods.txt`); `None` where it has no row.
+    pub goods: Option<super::goods::Goods>,
 }
 
 impl Builder {
@@ -74,7 +76,12 @@ impl Builder {
 
     /// An oriented box: `half` extents along the axes of `rot`, centred at `centre`.
     pub fn slab(&mut self, role: Role, centre: V3, half: V3, rot: M3) {
-        self.push(role, 0, Primitive::Cuboid { centre, half, rot });
+        self.slab_v(role, 0, centre, half, rot);
+    }
+
+    /// [`Builder::slab`] with a colour variant.
+    pub fn slab_v(&mut self, role: Role, variant: u32, centre: V3, half: V3, rot: M3) {
+        self.push(role, variant, Primitive::Cuboid { centre, half, rot });
     }
 
     /// Rods of radius `r` joining successive points of `pts` (a bent bar, a chain, an arc).

@@ -1,6 +1,7 @@
 //! Layouts of case goods and fixtures: cabinets, dressers, wardrobes, shelves,
 //! lamps, rugs, counters, sinks, fireplaces, pianos, bathtubs and toilets. The front faces +y.
 use super::archetypes::Builder;
+use super::goods::{fill, Bay, Draws};
 use super::materials::Role::*;
 use super::parts::{frustum_profile, IDENTITY};
 
@@ -99,8 +100,9 @@ pub fn sideboard(b: &mut Builder) {
     case(b, doors, 0, true);
 }
 
-/// Shelves filled with items `item` wide on average (books ~4 cm, boxes ~25 cm).
-fn shelves(b: &mut Builder, item: f64, back: bool) {
+/// Shelves filled with what the category holds ([`Builder::goods`], books by default): side
+/// panels, a plinth, boards, and (`back`) a back panel; the goods builder fills each board.
+fn shelves(b: &mut Builder, back: bool) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let t = 0.025;
     for sx in [-1.0, 1.0] {
@@ -114,14 +116,8 @@ fn shelves(b: &mut Builder, item: f64, back: bool) {
     let plinth = 0.06;
     let pitch = (h - plinth - t) / rows as f64;
     b.cuboid(Frame, [-hw + t, -hd + 0.012, 0.0], [hw - t, hd, plinth]);
-    let mut rng = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = move || {
-        rng ^= rng << 13;
-        rng ^= rng >> 7;
-        rng ^= rng << 17;
-        (rng % 10_000) as f64 / 10_000.0
-    };
-    let mut v = 0;
+    let goods = b.goods.unwrap_or_default();
+    let mut draws = Draws::new(0x2545_f491_4f6c_dd1d);
     for r in 0..=rows {
         let z = plinth + r as f64 * pitch;
         b.cuboid(
@@ -132,35 +128,26 @@ fn shelves(b: &mut Builder, item: f64, back: bool) {
         if r == rows {
             break;
         }
-        let mut x = -hw + t + 0.01;
-        let end = hw - t - 0.01;
-        let room = pitch - t - 0.02;
-        while x < end - 0.02 {
-            let bw = (item * (0.6 + 0.8 * next())).min(end - x);
-            if next() < 0.08 {
-                x += bw;
-                continue;
-            }
-            let bh = room * (0.65 + 0.3 * next());
-            let depth = (0.8 * b.d).min(0.3);
-            b.cuboid_v(
-                Books,
-                v,
-                [x, -hd + 0.014, z + t],
-                [x + bw - 0.002, -hd + 0.014 + depth, z + t + bh],
-            );
-            v += 1 + (next() * 3.0) as u32;
-            x += bw;
-        }
+        // Goods stand towards the front edge, where a deep rack shows them.
+        let depth = (0.8 * b.d).min(0.45);
+        let bay = Bay {
+            x0: -hw + t + 0.01,
+            x1: hw - t - 0.01,
+            y0: (hd - 0.02 - depth).max(-hd + 0.014),
+            depth,
+            z: z + t,
+            room: pitch - t - 0.02,
+        };
+        fill(b, goods, bay, &mut draws);
     }
 }
 
 pub fn shelf(b: &mut Builder) {
-    shelves(b, 0.04, true);
+    shelves(b, true);
 }
 
 pub fn rack(b: &mut Builder) {
-    shelves(b, 0.25, false);
+    shelves(b, false);
 }
 
 pub fn floor_lamp(b: &mut Builder) {

@@ -387,23 +387,12 @@ pub fn colour_words(description: &str) -> Vec<ColourWord> {
     out
 }
 
-/// Colours of a shelf's books and products, chosen by variant.
-const BOOK_PALETTE: &[Rgb] = &[
-    [0.62, 0.14, 0.12],
-    [0.14, 0.24, 0.45],
-    [0.20, 0.40, 0.24],
-    [0.80, 0.68, 0.40],
-    [0.30, 0.20, 0.14],
-    [0.85, 0.82, 0.74],
-    [0.55, 0.30, 0.45],
-    [0.15, 0.15, 0.16],
-    [0.80, 0.45, 0.15],
-];
-
 /// Per-role colours for one object.
 #[derive(Debug, Clone)]
 pub struct Palette {
     colours: Vec<(Role, Rgb)>,
+    /// Colours of the [`Role::Books`] parts (books and products on shelves), by variant.
+    goods: &'static [Rgb],
 }
 
 impl Palette {
@@ -447,13 +436,22 @@ impl Palette {
                 }
             }
         }
-        Palette { colours }
+        Palette {
+            colours,
+            goods: super::goods::Goods::Books.palette(),
+        }
+    }
+
+    /// This palette with `goods` as the colours of its [`Role::Books`] parts (what a shelf
+    /// holds: loaves, packs, toys…), chosen by variant.
+    pub fn holding(self, goods: &'static [Rgb]) -> Palette {
+        Palette { goods, ..self }
     }
 
     /// The colour of a part with this role and variant.
     pub fn colour(&self, role: Role, variant: u32) -> Rgb {
         if role == Role::Books {
-            return BOOK_PALETTE[variant as usize % BOOK_PALETTE.len()];
+            return self.goods[variant as usize % self.goods.len()];
         }
         let c = self
             .colours

@@ -25,6 +25,7 @@ mod clocks;
 mod coast;
 mod crafts;
 mod daily;
+mod displays;
 mod fittings;
 mod fixtures;
 mod forms;
@@ -37,6 +38,7 @@ mod garden;
 mod gizmos;
 mod glasshouse;
 mod glazed;
+mod goods;
 mod gym;
 mod hangings;
 mod heritage;
@@ -79,6 +81,7 @@ mod washroom;
 mod workshop;
 mod yard;
 
+pub use goods::Goods;
 pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
 pub use parts::{Part, Primitive};
 
@@ -237,7 +240,19 @@ pub fn parts_described(
     description: &str,
 ) -> Result<Vec<Part>, ShapeError> {
     check_size(size)?;
-    Ok(archetypes::get(archetype_described(category, description)).parts(size))
+    let arch = archetypes::get(archetype_described(category, description));
+    Ok(arch.parts_holding(size, goods::goods_of(category, arch.name)))
+}
+
+/// What a category's shelves hold (`kb/shelf_goods.txt`): its row, else its archetype's;
+/// `None` for categories whose archetype has no shelves of goods.
+pub fn goods_of(category: &str) -> Option<Goods> {
+    goods::goods_of(category, archetype_of(category))
+}
+
+/// The category rows of the shelf goods table, and the lines of it that do not parse.
+pub fn goods_rows() -> (Vec<(&'static str, Goods)>, Vec<&'static str>) {
+    (goods::rows(), goods::bad_lines())
 }
 
 /// The default Gaussian count for parts of total surface `area` in a box of `size`.
@@ -261,8 +276,10 @@ pub fn build(
         return Err(ShapeError::BadCount(n));
     }
     let arch = archetypes::get(archetype_described(category, description));
-    let parts = arch.parts(size);
-    let palette = materials::Palette::new(description, arch.main, arch.defaults);
+    let goods = goods::goods_of(category, arch.name);
+    let parts = arch.parts_holding(size, goods);
+    let palette = materials::Palette::new(description, arch.main, arch.defaults)
+        .holding(goods.unwrap_or_default().palette());
     let area: f64 = parts.iter().map(|p| p.prim.area()).sum();
     let n = opts
         .gaussians
@@ -388,7 +405,7 @@ mod kb_tests {
             let palette = materials::Palette::new("", arch.main, arch.defaults);
             let [hw, hd, h] = [o.size[0] / 2.0, o.size[1] / 2.0, o.size[2]];
             let spacing = 0.03;
-            for part in arch.parts(o.size) {
+            for part in arch.parts_holding(o.size, goods::goods_of(&o.category, arch.name)) {
                 let mut raw = vec![];
                 part.prim.sample(
                     spacing,
