@@ -29,6 +29,7 @@ use super::heritage as he;
 use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
+use super::laundry as la;
 use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
@@ -150,7 +151,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
     arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => [0.78, 0.84, 0.88], Metal => [0.74, 0.75, 0.77]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
-    arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
+    arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE, Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.25, 0.40, 0.75]]),
+    arch!("dryer", la::dryer, [Body, Door], [Body => WHITE, Door => WHITE, Screen => [0.12, 0.14, 0.16], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Interior => [0.2, 0.2, 0.2]]),
+    arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
     arch!("cylinder", m::cylinder, [Body], []),

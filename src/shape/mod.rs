@@ -43,6 +43,7 @@ mod heritage;
 mod holders;
 mod household;
 mod instruments;
+mod laundry;
 mod lounge;
 mod machines;
 mod markers;
