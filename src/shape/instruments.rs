@@ -1,9 +1,10 @@
 //! Layouts of instruments that are neither pianos nor plucked: a church organ (a case at the
 //! back carrying ranks of metal pipes in three flats above a console of stepped manuals, stop
 //! knobs, a music desk, a pedalboard and the bench; from behind, panel doors under an open back
-//! showing a rank of wooden pipes) and a bowed string instrument (a cello or a
-//! double bass: a waisted body with f-holes, a long black fingerboard, a bridge, strings, a
-//! pegbox ending in a scroll, standing on its end pin in a stand). The front faces +y.
+//! showing a rank of wooden pipes) and a bowed string instrument (a cello or a double bass: a
+//! waisted body with f-holes, a long black fingerboard, a bridge, four strings, a pegbox ending
+//! in a scroll, standing on its end pin in a stand, its bow leaning on the stand). The front
+//! faces +y.
 use super::archetypes::Builder;
 use super::fittings::{disc, pad};
 use super::materials::Role::*;
@@ -44,6 +45,10 @@ fn case_back(b: &mut Builder, yr: f64, zi: f64) {
             [sx * 0.1, yr - 1.5 * t, 0.5 * zi],
             0.015,
         );
+    }
+    // A case too low for an upper back keeps its doors only.
+    if zi + 0.3 > h - 0.14 {
+        return;
     }
     b.cuboid(
         Interior,
@@ -263,7 +268,7 @@ pub fn bowed_instrument(b: &mut Builder) {
         0.1 * bw,
     );
     for k in 0..4 {
-        let x = (k as f64 - 1.5) * 0.05 * bw;
+        let x = (k as f64 - 1.5) * 0.08 * bw;
         b.rod(
             Metal,
             [x, 1.02 * t, zw - 0.08 * h],
@@ -296,4 +301,18 @@ pub fn bowed_instrument(b: &mut Builder) {
         );
     }
     disc(b, Frame, [0.0, 0.0, 0.01], [0.0, 0.0, 1.0], 0.06, 0.02);
+    // The bow leaning on the stand at the left: a dark stick, its pale hair a finger's width
+    // in front of it, the frog at its foot.
+    let (foot, tip) = (
+        [-(hw - 0.04), ys + 0.04, 0.01],
+        [-0.15 * hw, ys + 0.04, 0.6 * h],
+    );
+    b.rod(Trunk, foot, tip, 0.006);
+    let hair = |p: [f64; 3]| [p[0] + 0.012, p[1] + 0.012, p[2]];
+    b.rod(Canvas, hair([foot[0], foot[1], 0.06]), hair(tip), 0.004);
+    b.cuboid(
+        BlackKeys,
+        [foot[0] - 0.012, foot[1] - 0.01, 0.04],
+        [foot[0] + 0.024, foot[1] + 0.024, 0.09],
+    );
 }

@@ -104,15 +104,16 @@ pub fn tram(b: &mut Builder) {
         } else {
             (x, x + 2.0 * g)
         };
+        let (dh, gh) = ((0.05 * b.d).min(0.6), (0.025 * b.d).min(0.3));
         for k in [-0.3, 0.0, 0.3] {
             let y = k * b.d;
-            b.cuboid(Door, [xa, y - 0.6, zf + 0.03], [xb, y + 0.6, 0.92 * zr]);
-            for dy in [-0.3, 0.3] {
+            b.cuboid(Pane, [xa, y - dh, zf + 0.03], [xb, y + dh, 0.92 * zr]);
+            for dy in [-gh, gh] {
                 let (xa, xb) = if sx < 0.0 { (xa - g, xa) } else { (xb, xb + g) };
                 b.cuboid(
                     Glass,
-                    [xa, y + dy - 0.22, 0.3 * zr],
-                    [xb, y + dy + 0.22, 0.85 * zr],
+                    [xa, y + dy - 0.8 * gh, 0.3 * zr],
+                    [xb, y + dy + 0.8 * gh, 0.85 * zr],
                 );
             }
         }
@@ -145,7 +146,7 @@ pub fn tram(b: &mut Builder) {
     // Small wheels on two bogies under the skirt.
     let r = 0.8 * c.r;
     for yb in [hd - 0.18 * b.d, -hd + 0.18 * b.d] {
-        for dy in [-0.9, 0.9] {
+        for dy in [-1.0, 1.0].map(|k| k * (0.075 * b.d).min(0.9)) {
             axle_between(b, (-hw + 0.1, hw - 0.1), yb + dy, r, c.tw);
         }
     }
