@@ -364,7 +364,7 @@ fn treatment_recliners_lean_back_on_a_pedestal_and_a_tattoo_chair_has_a_long_arm
             let back = height(-0.5 * size[1], -0.2 * size[1]);
             let seat = height(-0.05 * size[1], 0.1 * size[1]);
             assert!(
-                back > seat + 0.1,
+                back > seat + 0.05,
                 "{name} {size:?}: back {back:.2}, seat {seat:.2}"
             );
             // It stands on a narrow pedestal, not on four legs at its corners.
@@ -425,4 +425,23 @@ fn runs(pts: &[[f64; 3]], axis: usize, cell: f64) -> usize {
     cells.sort_unstable();
     cells.dedup();
     1 + cells.windows(2).filter(|w| w[1] - w[0] > 1).count()
+}
+
+#[test]
+fn a_hood_dryer_chair_leans_its_hood_over_the_seat() {
+    for name in ["hair dryer chair", "hood dryer"] {
+        for size in sizes(name, [1.1, 1.0, 1.1], [0.8, 1.0, 1.4]) {
+            let s = samples_at(name, size);
+            let seat = of(&s, Role::Upholstery);
+            let back_top = range(&seat, 2).1;
+            let hood: Vec<[f64; 3]> = of(&s, Role::Body)
+                .into_iter()
+                .filter(|p| p[2] > back_top + 0.1)
+                .collect();
+            assert!(hood.len() > 50, "{name} {size:?}: no hood over the chair");
+            // Over the seat, in front of the back rest, not behind it.
+            let y = hood.iter().map(|p| p[1]).sum::<f64>() / hood.len() as f64;
+            assert!(y > -0.25 * size[1], "{name} {size:?}: hood at y {y:.2}");
+        }
+    }
 }

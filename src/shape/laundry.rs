@@ -1,6 +1,5 @@
 //! Layouts of appliances told apart by one working part, and the back every tall appliance
-//! shows: a tumble dryer (a solid round door with a small tinted window and a chrome ring, a
-//! programme dial on its control strip, a lint filter slot, a vent duct at its back), a wall
+//! shows: a washer's porthole (a round door with a chrome ring round its window), a wall
 //! oven (a built-in oven with no hob: a control strip with knobs and a clock, a tall window door
 //! under a bar handle, a warming drawer) and the service back (a screwed panel, a power cord
 //! and, for a washer, its inlet and drain hoses). The front faces +y; backs at -y.
@@ -63,49 +62,6 @@ pub(super) fn porthole(b: &mut Builder, y: f64, zc: f64, r: f64, glass: f64) {
     disc(b, Door, [0.0, y + 0.01, zc], Y, r, 0.02);
     band(b, Metal, [0.0, y + 0.022, zc], Y, r, 0.18 * r, 0.008);
     disc(b, Screen, [0.0, y + 0.022, zc], Y, glass * r, 0.006);
-}
-
-/// A tumble dryer: the body, a control strip with a programme dial and a display, a solid
-/// round door with a small window, a lint filter slot under it, the service back and a vent
-/// duct leaving the back.
-pub fn dryer(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let face = hd - 0.03;
-    b.cuboid(
-        Interior,
-        [-hw + 0.02, -hd + BACK, 0.0],
-        [hw - 0.02, face - 0.03, 0.03],
-    );
-    b.cuboid(Body, [-hw, -hd + BACK, 0.03], [hw, face, h]);
-    b.cuboid(
-        Door,
-        [-hw + 0.01, face, 0.85 * h],
-        [hw - 0.01, hd - 0.02, h - 0.01],
-    );
-    disc(
-        b,
-        Metal,
-        [-0.25 * b.w, hd - 0.015, 0.92 * h],
-        Y,
-        0.035,
-        0.015,
-    );
-    b.cuboid(
-        Screen,
-        [0.05 * b.w, hd - 0.02, 0.89 * h],
-        [0.35 * b.w, hd - 0.015, 0.96 * h],
-    );
-    let r = (0.32 * b.w).min(0.3 * h);
-    porthole(b, face, 0.5 * h, r, 0.45);
-    b.cuboid(
-        Interior,
-        [-0.3 * b.w, face, 0.1 * h],
-        [0.3 * b.w, face + 0.006, 0.14 * h],
-    );
-    service_back(b, false);
-    let zv = 0.2 * h;
-    disc(b, Metal, [0.0, -hd + 0.5 * BACK, zv], Y, 0.05, BACK);
-    band(b, Frame, [0.0, -hd + 0.5 * BACK, zv], Y, 0.055, 0.01, 0.02);
 }
 
 /// A wall oven: a steel box with no hob, a dark control strip with two knobs and a lit clock

@@ -28,11 +28,11 @@ fn back_shell(b: &mut Builder, c: &Couch, t: f64) {
     );
 }
 
-/// A patient chair: the treatment couch reclined 30° with its arm rests, a shell behind the
+/// A patient chair: the treatment couch reclined 40° with its arm rests, a shell behind the
 /// back and a foot plate under the end of the leg rest.
 pub fn patient_chair(b: &mut Builder) {
     let hd = b.d / 2.0;
-    let c = couch(b, 30.0);
+    let c = couch(b, 40.0);
     back_shell(b, &c, 0.07);
     pad(
         b,
@@ -45,11 +45,11 @@ pub fn patient_chair(b: &mut Builder) {
     );
 }
 
-/// A tattoo chair: the treatment couch laid flatter (20°), a long padded arm rest on a post at
+/// A tattoo chair: the treatment couch laid almost flat (12°), a long padded arm rest on a post at
 /// its right reaching forward past the seat, and a foot pedal on its base plate.
 pub fn tattoo_chair(b: &mut Builder) {
     let hw = b.w / 2.0;
-    let c = couch(b, 20.0);
+    let c = couch(b, 12.0);
     back_shell(b, &c, 0.07);
     let x = (c.cw + 0.05).min(hw - 0.06);
     let za = c.zs + 0.26;

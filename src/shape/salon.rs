@@ -1,11 +1,14 @@
 //! Layouts of the chairs of a trade: a barber chair (a padded seat on a round chrome pedestal,
 //! arms, a back with a headrest on a stem and a chrome footrest in front), a dentist's chair (a
 //! reclined couch on a pedestal plate with an overhead lamp on an arm, an instrument tray and a
-//! rinsing bowl; its couch is `pub(super)` for the recliners of `recliners.rs`) and a pedicure chair (a throne-like padded seat raised on a plinth with a foot
-//! basin in front of it, and at the back of its plinth a grille and the basin's plumbing). The front faces +y; backs at -y.
+//! rinsing bowl; its couch is `pub(super)` for the recliners of `recliners.rs`), a pedicure
+//! chair (a throne-like padded seat raised on a plinth with a foot basin in front of it, and at
+//! the back of its plinth a grille and the basin's plumbing) and a hood dryer chair (an armchair
+//! under a domed hood on a stem). The front faces +y; backs at -y.
 use super::archetypes::Builder;
 use super::fittings::{band, disc, pad, pedestal};
 use super::materials::Role::*;
+use super::parts::rot_x;
 
 /// A barber chair: the pedestal, a seat box, the seat, padded arms on chrome supports, a
 /// slightly reclined back, a headrest above it on a stem, and a chrome footrest reaching out
@@ -343,5 +346,47 @@ pub fn pedicure_chair(b: &mut Builder) {
             [0.0, yt + 0.12, zb + 0.12],
         ],
         0.015,
+    );
+}
+
+/// A hood dryer chair: an armchair as high as a seat, and behind it a stem on a round foot that
+/// rises past the back and leans a domed hood forward over the sitter's head, its dark mouth
+/// facing down and forward.
+pub fn hood_dryer_chair(b: &mut Builder) {
+    let (hd, h) = (b.d / 2.0, b.h);
+    let full = b.h;
+    b.h = (0.62 * h).clamp(0.6, 1.0);
+    super::furniture::armchair(b);
+    b.h = full;
+    let ys = -hd + 0.05;
+    disc(
+        b,
+        Metal,
+        [0.0, ys + 0.12, 0.01],
+        [0.0, 0.0, 1.0],
+        0.14,
+        0.02,
+    );
+    let r = (0.22 * b.w).clamp(0.12, 0.25);
+    let zh = h - r;
+    let yh = (-hd + 0.3 + 0.9 * r).min(0.05);
+    b.polyline(
+        Metal,
+        &[
+            [0.0, ys, 0.02],
+            [0.0, ys, zh + 0.1],
+            [0.0, yh - 0.5 * r, zh + 0.1],
+        ],
+        0.02,
+    );
+    let tilt = rot_x(-30f64.to_radians());
+    b.ellipsoid_rot(Body, 0, [0.0, yh, zh], [r, r, 0.8 * r], tilt);
+    disc(
+        b,
+        Interior,
+        [0.0, yh + 0.25 * r, zh - 0.45 * r],
+        [0.0, 0.5, -0.87],
+        0.85 * r,
+        0.01,
     );
 }

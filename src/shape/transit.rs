@@ -1,6 +1,6 @@
 //! Layouts of vehicles that are told from a van or a bus by one working part: a food truck (a
 //! van's cab and box with a serving hatch cut in its right side (+x), a counter under it and
-//! an awning propped open over it, a lit menu band and a roof vent) and a tram (a long low body
+//! an awning propped open over it, a lit menu band, a name board over the windscreen and a roof vent) and a tram (a long low body
 //! alike at both ends, each with a windscreen and a destination sign, doors on both sides, small
 //! wheels behind a skirt on two bogies and a pantograph on the roof). Built from the shared
 //! chassis and faces of `vehicles.rs`. The front faces +y; everything stays inside the size box.
@@ -39,6 +39,12 @@ pub fn food_truck(b: &mut Builder) {
         let (xa, xb) = if sx < 0.0 { (x - g, x) } else { (x, x + g) };
         b.cuboid(Light, [xa, -hd + 0.05, 0.83 * h], [xb, y1, 0.9 * h]);
     }
+    // A lit name board over the windscreen, standing up past the roof.
+    b.cuboid(
+        Light,
+        [-c.hw + 0.05, yb - 0.1, 0.9 * h],
+        [c.hw - 0.05, yb + g, h],
+    );
     // Rear doors' seam, lamps and bumper.
     b.cuboid(
         Interior,
