@@ -422,3 +422,194 @@ fn fruit_trees_bear_red_fruit_and_cherries_blossom_pink() {
     let plain = share("tree", red);
     assert!(plain < 0.005, "a plain tree bears fruit ({plain:.3})");
 }
+
+/// The samples of `category` drawn at `size`, for the vehicle and appliance checks below.
+fn at(category: &str, size: [f64; 3]) -> Samples {
+    samples_at(category, Some(size)).0
+}
+
+/// `category`'s knowledge-base size and that size scaled by `k` (the sizes a plan may give).
+fn sized(category: &str, k: [f64; 3]) -> [[f64; 3]; 2] {
+    let s = KnowledgeBase::builtin().object(category).unwrap().size;
+    [s, [s[0] * k[0], s[1] * k[1], s[2] * k[2]]]
+}
+
+#[test]
+fn a_tram_carries_a_pantograph_over_its_roof_and_is_alike_at_both_ends() {
+    for name in ["streetcar", "tram"] {
+        for size in sized(name, [1.0, 1.6, 1.1]) {
+            let s = at(name, size);
+            let body = of(&s, Role::Body);
+            let roof = range(&body, 2).1;
+            let over: Vec<[f64; 3]> = of(&s, Role::Metal)
+                .into_iter()
+                .filter(|p| p[2] > roof + 0.3 && p[1].abs() < 0.25 * size[1])
+                .collect();
+            assert!(!over.is_empty(), "{name} {size:?}: nothing over the roof");
+            let (x0, x1) = range(&over, 0);
+            assert!(
+                x1 - x0 > 0.4 * size[0],
+                "{name} {size:?}: no collector bar across ({x0:.2}..{x1:.2})"
+            );
+            // A destination sign and a windscreen at both ends.
+            for end in [-1.0, 1.0] {
+                let near = |r: Role| {
+                    of(&s, r)
+                        .into_iter()
+                        .filter(|p| end * p[1] > 0.48 * size[1])
+                        .count()
+                };
+                assert!(
+                    near(Role::Light) > 10 && near(Role::Glass) > 10,
+                    "{name} {size:?}: the end at {end} has no sign or windscreen"
+                );
+            }
+        }
+    }
+    // A bus has no pantograph: nothing metal rides on its roof.
+    let (s, size) = samples("bus");
+    let high = of(&s, Role::Metal)
+        .into_iter()
+        .filter(|p| p[2] > 0.9 * size[2])
+        .count();
+    assert_eq!(high, 0, "a bus carries metal on its roof");
+}
+
+#[test]
+fn a_food_truck_opens_a_serving_hatch_under_an_awning_on_its_side() {
+    for name in ["food truck", "snack van"] {
+        for size in sized(name, [0.9, 1.3, 1.0]) {
+            let s = at(name, size);
+            let body = of(&s, Role::Body);
+            let side = range(&body, 0).1;
+            // The hatch: a dark opening on the right side, at counter height.
+            let hatch: Vec<[f64; 3]> = of(&s, Role::Interior)
+                .into_iter()
+                .filter(|p| p[0] > side - 0.05 && p[1].abs() < 0.4 * size[1])
+                .collect();
+            let (z0, z1) = range(&hatch, 2);
+            let (y0, y1) = range(&hatch, 1);
+            assert!(
+                z1 - z0 > 0.25 * size[2] && y1 - y0 > 0.25 * size[1],
+                "{name} {size:?}: hatch {y0:.2}..{y1:.2} × {z0:.2}..{z1:.2}"
+            );
+            // The awning stands out past the side, above the hatch; the counter under it.
+            let awning = of(&s, Role::Canvas);
+            assert!(
+                range(&awning, 0).1 > side + 0.1 && range(&awning, 2).0 > z1 - 0.05,
+                "{name} {size:?}: no awning out over the hatch"
+            );
+            let counter = of(&s, Role::Top);
+            assert!(
+                range(&counter, 0).1 > side + 0.1 && range(&counter, 2).1 < z0 + 0.05,
+                "{name} {size:?}: no counter under the hatch"
+            );
+        }
+    }
+    let (van, _) = samples("van");
+    assert!(of(&van, Role::Canvas).is_empty(), "a van has an awning");
+}
+
+/// Whether the samples `pts` of a face (x, z) are round: their bounding box's corners empty.
+fn round(pts: &[[f64; 3]]) -> bool {
+    let (x0, x1) = range(pts, 0);
+    let (z0, z1) = range(pts, 2);
+    let (xc, zc, rx, rz) = (
+        0.5 * (x0 + x1),
+        0.5 * (z0 + z1),
+        0.5 * (x1 - x0),
+        0.5 * (z1 - z0),
+    );
+    let corners = pts
+        .iter()
+        .filter(|p| (p[0] - xc).abs() > 0.8 * rx && (p[2] - zc).abs() > 0.8 * rz)
+        .count();
+    (rx / rz - 1.0).abs() < 0.15 && corners == 0
+}
+
+#[test]
+fn a_washer_shows_a_round_door_and_its_hoses_at_the_back() {
+    // A tumble dryer is drawn as the washer (see README): both have the porthole.
+    for name in ["washing machine", "washer", "dryer", "tumble dryer"] {
+        for size in sized(name, [1.0, 1.0, 1.2]) {
+            let s = at(name, size);
+            // The door's chrome ring, on the front below the control strip.
+            let ring: Vec<[f64; 3]> = of(&s, Role::Metal)
+                .into_iter()
+                .filter(|p| p[1] > 0.4 * size[1] && p[2] < 0.8 * size[2])
+                .collect();
+            assert!(
+                ring.len() > 20 && round(&ring),
+                "{name} {size:?}: no round door"
+            );
+            // Behind the body: the inlet and drain hoses.
+            let hoses = of(&s, Role::Handle)
+                .into_iter()
+                .filter(|p| p[1] < -0.5 * size[1] + 0.035)
+                .count();
+            assert!(hoses > 10, "{name}: no hoses at the back");
+        }
+    }
+}
+
+#[test]
+fn a_wall_oven_has_no_hob_and_a_range_has_rings() {
+    for (name, hob) in [
+        ("wall oven", false),
+        ("built-in oven", false),
+        ("stove", true),
+        ("cooker", true),
+    ] {
+        let (s, size) = samples(name);
+        let rings = of(&s, Role::Metal)
+            .into_iter()
+            .filter(|p| p[2] > 0.95 * size[2] && p[1].abs() < 0.4 * size[1])
+            .count();
+        assert_eq!(rings > 0, hob, "{name}: {rings} samples of hob rings");
+        // Both have an oven door with a window under a bar handle.
+        assert!(of(&s, Role::Screen).len() > 20, "{name}: no oven window");
+    }
+}
+
+#[test]
+fn a_pizza_oven_is_a_dome_with_an_arched_mouth_not_a_fireplace() {
+    assert_ne!(archetype_of("pizza oven"), archetype_of("fireplace"));
+    for name in ["pizza oven", "wood-fired oven"] {
+        for size in sized(name, [1.2, 0.9, 0.8]) {
+            let s = at(name, size);
+            // The dome above the hearth slab (what lies under the slab is hidden).
+            let zb = range(&of(&s, Role::Top), 2).1;
+            let dome: Vec<[f64; 3]> = of(&s, Role::Body)
+                .into_iter()
+                .filter(|p| p[2] >= zb)
+                .collect();
+            let zt = range(&dome, 2).1;
+            // Rounded: near its top the dome is far narrower than at its foot.
+            let width = |z0: f64, z1: f64| {
+                let band: Vec<[f64; 3]> = dome
+                    .iter()
+                    .filter(|p| (z0..z1).contains(&p[2]))
+                    .cloned()
+                    .collect();
+                let (a, b) = range(&band, 0);
+                b - a
+            };
+            let low = width(zb, zb + 0.1 * (zt - zb));
+            let high = width(zt - 0.1 * (zt - zb), zt);
+            assert!(high < 0.6 * low, "{name} {size:?}: {high:.2} vs {low:.2}");
+            // A dark mouth on the front, rounded at its top, and a flue above the dome.
+            let mouth: Vec<[f64; 3]> = of(&s, Role::Interior)
+                .into_iter()
+                .filter(|p| p[2] > zb)
+                .collect();
+            assert!(
+                range(&mouth, 1).0 > 0.3 * size[1],
+                "{name}: no mouth in front"
+            );
+            assert!(
+                range(&of(&s, Role::Metal), 2).1 > zt,
+                "{name}: no flue above the dome"
+            );
+        }
+    }
+}

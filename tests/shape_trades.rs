@@ -336,3 +336,112 @@ fn an_organ_has_pipes_above_its_keys_and_a_cello_stands_on_its_pin() {
         assert!(top > 0.95 * 1.3, "{name}: no scroll at the top ({top:.2})");
     }
 }
+
+#[test]
+fn treatment_recliners_lean_back_on_a_pedestal_and_a_tattoo_chair_has_a_long_arm_rest() {
+    for name in [
+        "patient chair",
+        "treatment chair",
+        "tattoo chair",
+        "tattoo bed",
+    ] {
+        for size in sizes(name, [1.1, 1.1, 1.0], [0.9, 1.8, 1.2]) {
+            let s = samples_at(name, size);
+            // The couch's middle, between its arm rests.
+            let pad: Vec<[f64; 3]> = of(&s, Role::Upholstery)
+                .into_iter()
+                .filter(|p| p[0].abs() < 0.15 * size[0])
+                .collect();
+            // The back rest rises behind the seat: the pad is higher at its back than its middle.
+            let height = |y0: f64, y1: f64| {
+                let part: Vec<[f64; 3]> = pad
+                    .iter()
+                    .filter(|p| (y0..y1).contains(&p[1]))
+                    .cloned()
+                    .collect();
+                range(&part, 2).1
+            };
+            let back = height(-0.5 * size[1], -0.2 * size[1]);
+            let seat = height(-0.05 * size[1], 0.1 * size[1]);
+            assert!(
+                back > seat + 0.05,
+                "{name} {size:?}: back {back:.2}, seat {seat:.2}"
+            );
+            // It stands on a narrow pedestal, not on four legs at its corners.
+            let foot: Vec<[f64; 3]> = s
+                .iter()
+                .filter(|(p, _)| p[2] < 0.05)
+                .map(|(p, _)| *p)
+                .collect();
+            let (x0, x1) = range(&foot, 0);
+            assert!(
+                x1 - x0 < 0.75 * size[0],
+                "{name} {size:?}: feet {x0:.2}..{x1:.2}"
+            );
+            if name.starts_with("tattoo") {
+                let arm: Vec<[f64; 3]> = of(&s, Role::Cushion)
+                    .into_iter()
+                    .filter(|p| p[0] > 0.2 * size[0])
+                    .collect();
+                let (y0, y1) = range(&arm, 1);
+                assert!(y1 - y0 > 0.5, "{name} {size:?}: arm rest {y0:.2}..{y1:.2}");
+            }
+        }
+    }
+}
+
+#[test]
+fn an_organ_and_a_pedicure_chair_show_their_works_from_behind() {
+    for size in sizes("church organ", [1.2, 1.0, 1.1], [1.6, 1.0, 2.6]) {
+        let s = samples_at("church organ", size);
+        let behind: Vec<[f64; 3]> = of(&s, Role::Frame)
+            .into_iter()
+            .filter(|p| p[1] < -0.5 * size[1] + 0.04 && p[2] > 0.55 * size[2])
+            .collect();
+        assert!(
+            runs(&behind, 0, 0.02) >= 5,
+            "church organ {size:?}: no rank of pipes at the back"
+        );
+    }
+    for size in sizes("pedicure chair", [1.0, 1.1, 0.9], [0.8, 1.3, 1.3]) {
+        let s = samples_at("pedicure chair", size);
+        let pipes = of(&s, Role::Metal)
+            .into_iter()
+            .filter(|p| p[1] < -0.5 * size[1] + 0.06)
+            .count();
+        assert!(
+            pipes > 20,
+            "pedicure chair {size:?}: no plumbing at the back"
+        );
+    }
+}
+
+/// Runs of occupied cells (of `cell` metres) along `axis`: separate pipes, rods.
+fn runs(pts: &[[f64; 3]], axis: usize, cell: f64) -> usize {
+    let mut cells: Vec<i64> = pts
+        .iter()
+        .map(|p| (p[axis] / cell).floor() as i64)
+        .collect();
+    cells.sort_unstable();
+    cells.dedup();
+    1 + cells.windows(2).filter(|w| w[1] - w[0] > 1).count()
+}
+
+#[test]
+fn a_hood_dryer_chair_leans_its_hood_over_the_seat() {
+    for name in ["hair dryer chair", "hood dryer"] {
+        for size in sizes(name, [1.1, 1.0, 1.1], [0.8, 1.0, 1.4]) {
+            let s = samples_at(name, size);
+            let seat = of(&s, Role::Upholstery);
+            let back_top = range(&seat, 2).1;
+            let hood: Vec<[f64; 3]> = of(&s, Role::Body)
+                .into_iter()
+                .filter(|p| p[2] > back_top + 0.1)
+                .collect();
+            assert!(hood.len() > 50, "{name} {size:?}: no hood over the chair");
+            // Over the seat, in front of the back rest, not behind it.
+            let y = hood.iter().map(|p| p[1]).sum::<f64>() / hood.len() as f64;
+            assert!(y > -0.25 * size[1], "{name} {size:?}: hood at y {y:.2}");
+        }
+    }
+}

@@ -1,5 +1,7 @@
-//! Layouts of appliances: fridges, washers, stoves and small appliances. The front faces +y.
+//! Layouts of appliances: fridges, washers (a programme dial and a porthole door with a chrome
+//! ring; hoses at the back), stoves and small appliances. The front faces +y.
 use super::archetypes::Builder;
+use super::laundry::{porthole, service_back, BACK};
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
 use std::f64::consts::FRAC_PI_2;
@@ -12,7 +14,7 @@ fn appliance_body(b: &mut Builder) -> f64 {
         [-hw + 0.02, -hd, 0.0],
         [hw - 0.02, hd - 0.06, 0.03],
     );
-    b.cuboid(Body, [-hw, -hd, 0.03], [hw, hd - 0.03, h]);
+    b.cuboid(Body, [-hw, -hd + BACK, 0.03], [hw, hd - 0.03, h]);
     hd - 0.03
 }
 
@@ -78,24 +80,17 @@ pub fn washer(b: &mut Builder) {
         [0.1 * b.w, hd - 0.02, 0.88 * h],
         [0.35 * b.w, hd - 0.015, h - 0.03],
     );
+    b.revolved(
+        Metal,
+        0,
+        [-0.25 * b.w, hd - 0.02, 0.92 * h],
+        rot_x(-FRAC_PI_2),
+        1.0,
+        frustum_profile(0.035, 0.03, 0.015),
+    );
     let r = (0.34 * b.w).min(0.32 * h);
-    let zc = 0.45 * h;
-    b.revolved(
-        Handle,
-        0,
-        [0.0, y, zc],
-        rot_x(-FRAC_PI_2),
-        1.0,
-        frustum_profile(r, r, 0.015),
-    );
-    b.revolved(
-        Screen,
-        0,
-        [0.0, y, zc],
-        rot_x(-FRAC_PI_2),
-        1.0,
-        frustum_profile(0.75 * r, 0.75 * r, 0.025),
-    );
+    porthole(b, y, 0.45 * h, r, 0.75);
+    service_back(b, true);
 }
 
 /// A kitchen range: a dark hob with four raised burner rings and grates, a knob strip, and an

@@ -30,6 +30,7 @@ use super::heritage as he;
 use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
+use super::laundry as la;
 use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
@@ -38,6 +39,7 @@ use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
 use super::orchard as oc;
+use super::ovens as ov;
 use super::parlour as pa;
 use super::partitions as pn;
 use super::parts::Part;
@@ -45,6 +47,7 @@ use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
 use super::racks as rk;
+use super::recliners as rc;
 use super::rigs;
 use super::rocks;
 use super::salon as sa;
@@ -59,6 +62,7 @@ use super::stands as sd;
 use super::structures as st;
 use super::things as t;
 use super::training as tr;
+use super::transit as tt;
 use super::utility as ut;
 use super::vehicles as ve;
 use super::vitrines as vi;
@@ -149,7 +153,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
     arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => [0.78, 0.84, 0.88], Metal => [0.74, 0.75, 0.77]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
-    arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE]),
+    arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE, Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.25, 0.40, 0.75]]),
+    arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
     arch!("cylinder", m::cylinder, [Body], []),
@@ -348,19 +353,24 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cabin_bed", sl::cabin_bed, [Frame], [Frame => [0.93, 0.92, 0.90], Body => [0.93, 0.92, 0.90], Door => [0.88, 0.88, 0.86], Duvet => [0.40, 0.55, 0.75], Mattress => [0.85, 0.85, 0.82], Pillow => WHITE, Handle => STEEL, Top => [0.78, 0.62, 0.42]]),
     arch!("barber_chair", sa::barber_chair, [Upholstery], [Upholstery => [0.50, 0.08, 0.08], Metal => [0.80, 0.81, 0.83], Body => WHITE, Frame => DARK_WOOD, Handle => [0.20, 0.20, 0.21]]),
     arch!("dentist_chair", sa::dentist_chair, [Upholstery, Cushion], [Upholstery => [0.35, 0.65, 0.70], Cushion => [0.33, 0.62, 0.67], Body => WHITE, Metal => STEEL, Light => [1.0, 0.96, 0.85], Top => [0.85, 0.86, 0.87], Canvas => WHITE, Water => [0.50, 0.70, 0.85], Handle => STEEL]),
-    arch!("pedicure_chair", sa::pedicure_chair, [Upholstery], [Upholstery => [0.30, 0.20, 0.15], Cushion => [0.34, 0.23, 0.17], Body => [0.12, 0.12, 0.13], Top => [0.80, 0.78, 0.74], Canvas => WHITE, Water => [0.45, 0.70, 0.85], Metal => STEEL]),
     arch!("magazine_stand", dp::magazine_stand, [Frame, Top], [Frame => [0.22, 0.22, 0.24], Top => [0.30, 0.30, 0.32], Canvas => WHITE]),
     arch!("file_sorter", dp::file_sorter, [Frame], [Frame => [0.16, 0.16, 0.17], Canvas => WHITE]),
-    arch!("hood_dryer_chair", dp::hood_dryer_chair, [Upholstery, Cushion], [Upholstery => [0.12, 0.12, 0.13], Cushion => [0.14, 0.14, 0.15], Frame => [0.70, 0.71, 0.73], Body => [0.90, 0.88, 0.86], Metal => STEEL, Handle => BLACK, Interior => [0.20, 0.20, 0.21]]),
+    arch!("patient_chair", rc::patient_chair, [Upholstery, Cushion], [Upholstery => [0.30, 0.45, 0.60], Cushion => [0.28, 0.42, 0.57], Body => [0.85, 0.86, 0.87], Metal => STEEL]),
+    arch!("tattoo_chair", rc::tattoo_chair, [Upholstery, Cushion], [Upholstery => [0.10, 0.10, 0.11], Cushion => [0.12, 0.12, 0.13], Body => [0.25, 0.25, 0.27], Metal => STEEL]),
+    arch!("hood_dryer_chair", sa::hood_dryer_chair, [Upholstery, Cushion], [Upholstery => [0.55, 0.18, 0.30], Frame => DARK_WOOD, Body => [0.90, 0.90, 0.91], Metal => STEEL, Interior => [0.15, 0.15, 0.16]]),
+    arch!("pedicure_chair", sa::pedicure_chair, [Upholstery], [Upholstery => [0.30, 0.20, 0.15], Cushion => [0.34, 0.23, 0.17], Body => [0.12, 0.12, 0.13], Top => [0.80, 0.78, 0.74], Canvas => WHITE, Water => [0.45, 0.70, 0.85], Metal => STEEL, Frame => [0.25, 0.25, 0.26]]),
     arch!("magazine_rack", hr::magazine_rack, [Frame], [Frame => [0.62, 0.47, 0.30]]),
     arch!("shoe_rack", hr::shoe_rack, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Interior => [0.12, 0.12, 0.12]]),
     arch!("plate_rack", hr::plate_rack, [Frame], [Frame => [0.62, 0.47, 0.30], Canvas => WHITE, Pot => [0.30, 0.45, 0.70]]),
     arch!("book_cart", hr::book_cart, [Frame, Top], [Frame => [0.55, 0.38, 0.22], Top => [0.58, 0.41, 0.25], Metal => [0.20, 0.20, 0.21], Tyre => BLACK]),
     arch!("church_organ", ins::church_organ, [Body, Top], [Body => [0.40, 0.25, 0.14], Top => [0.36, 0.22, 0.12], Metal => [0.80, 0.80, 0.78], Interior => [0.10, 0.07, 0.05], Keys => [0.95, 0.93, 0.88], BlackKeys => BLACK, Handle => [0.90, 0.88, 0.82], Frame => [0.42, 0.27, 0.15], Seat => [0.40, 0.25, 0.14]]),
-    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.55, 0.53, 0.48], Trunk => BLACK]),
+    arch!("bowed_instrument", ins::bowed_instrument, [Body], [Body => [0.55, 0.28, 0.12], Frame => [0.48, 0.26, 0.12], BlackKeys => BLACK, Interior => BLACK, Top => [0.85, 0.72, 0.50], Metal => [0.55, 0.53, 0.48], Trunk => BLACK, Canvas => [0.92, 0.90, 0.84]]),
     arch!("folding_screen", pn::folding_screen, [Frame], [Frame => [0.45, 0.30, 0.17], Canvas => [0.92, 0.88, 0.78], Upholstery => [0.50, 0.34, 0.20], Metal => BRASS]),
     arch!("van", ve::van, [Body], [Body => WHITE, Glass => [0.22, 0.27, 0.32], Frame => [0.15, 0.15, 0.16], Interior => [0.12, 0.12, 0.13], Light => [1.0, 0.95, 0.80]]),
     arch!("bus", ve::bus, [Body], [Body => [0.78, 0.10, 0.10], Top => [0.90, 0.90, 0.89], Glass => [0.20, 0.25, 0.30], Frame => [0.15, 0.15, 0.16], Door => [0.18, 0.18, 0.20], Light => [1.0, 0.80, 0.30]]),
+    arch!("food_truck", tt::food_truck, [Body], [Body => [0.95, 0.72, 0.18], Canvas => [0.80, 0.18, 0.15], Top => [0.78, 0.79, 0.80], Glass => [0.22, 0.27, 0.32], Frame => [0.15, 0.15, 0.16], Interior => [0.10, 0.09, 0.08], Metal => [0.70, 0.71, 0.72], Light => [1.0, 0.93, 0.70]]),
+    arch!("tram", tt::tram, [Body], [Body => [0.75, 0.12, 0.12], Top => [0.90, 0.88, 0.80], Glass => [0.20, 0.25, 0.30], Frame => [0.15, 0.15, 0.16], Pane => [0.80, 0.78, 0.70], Metal => [0.35, 0.36, 0.38], Light => [1.0, 0.85, 0.40]]),
+    arch!("pizza_oven", ov::pizza_oven, [Body], [Body => [0.66, 0.36, 0.24], Stone => [0.62, 0.60, 0.57], Top => [0.72, 0.70, 0.66], Frame => [0.50, 0.24, 0.16], Interior => [0.06, 0.05, 0.05], Trunk => [0.45, 0.30, 0.18], Light => [1.0, 0.55, 0.15], Metal => [0.20, 0.20, 0.21]]),
     arch!("pickup", ve::pickup, [Body], [Body => [0.20, 0.30, 0.55], Glass => [0.22, 0.27, 0.32], Frame => [0.15, 0.15, 0.16], Interior => [0.10, 0.10, 0.11], Light => [1.0, 0.95, 0.80]]),
     arch!("lorry", ve::lorry, [Canvas], [Body => [0.75, 0.12, 0.10], Canvas => [0.93, 0.93, 0.92], Glass => [0.22, 0.27, 0.32], Frame => [0.12, 0.12, 0.13], Interior => [0.10, 0.10, 0.11], Metal => [0.55, 0.56, 0.58], Light => [1.0, 0.95, 0.80]]),
     arch!("air_conditioner", fx::air_conditioner, [Body, Door], [Body => WHITE, Door => [0.88, 0.88, 0.89], Metal => [0.86, 0.86, 0.87], Frame => [0.70, 0.70, 0.72], Interior => [0.14, 0.14, 0.15], Screen => [0.10, 0.12, 0.14], Light => [0.35, 0.75, 1.0]]),

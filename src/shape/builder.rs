@@ -20,6 +20,20 @@ impl Builder {
         (self.w / 2.0, self.d / 2.0)
     }
 
+    /// Moves every part drawn since the first `first` parts by `by` (a body drawn centred,
+    /// then set off-centre to leave room beside it).
+    pub fn translate_from(&mut self, first: usize, by: V3) {
+        for p in &mut self.parts[first..] {
+            let c = match &mut p.prim {
+                Primitive::Cuboid { centre, .. } => centre,
+                Primitive::Revolved { origin, .. } => origin,
+            };
+            for (v, d) in c.iter_mut().zip(by) {
+                *v += d;
+            }
+        }
+    }
+
     pub fn push(&mut self, role: Role, variant: u32, prim: Primitive) {
         self.parts.push(Part {
             prim,

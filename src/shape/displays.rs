@@ -1,8 +1,7 @@
 //! Layouts of things that show printed matter face-out or upright: a magazine stand (a
 //! newsstand rack of tiers stepping back as they rise, each a sloped ledge with magazines
-//! leaning face-out on it), a desktop file rack (a sorter of slanted slots stepping up to the
-//! back, a folder standing in each) and a salon hood dryer chair (an armchair with a dome hood
-//! on a column over the sitter's head). The front faces +y; backs at -y.
+//! leaning face-out on it) and a desktop file rack (a sorter of slanted slots stepping up to the
+//! back, a folder standing in each). The front faces +y; backs at -y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::rot_x;
@@ -147,45 +146,4 @@ pub fn file_sorter(b: &mut Builder) {
             rot_x(lean),
         );
     }
-}
-
-/// A hood dryer chair: an armchair low in the size box, a chrome column rising behind its back
-/// to an arm reaching forward, and the dryer's dome hood on the arm over where the sitter's head
-/// is, its open rim tilted to face down and forward, dark inside, with a control dial on its side.
-pub fn hood_dryer_chair(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let chair_h = (0.62 * h).min(0.95);
-    let full = b.h;
-    b.h = chair_h;
-    super::furniture::armchair(b);
-    b.h = full;
-    // The column behind the back, on a round foot.
-    let yc = -hd + 0.05;
-    b.cylinder(Metal, [0.0, yc, 0.0], (0.3 * hw).min(0.14), 0.02);
-    let top = h - 0.1;
-    b.rod(Metal, [0.0, yc, 0.02], [0.0, yc, top], 0.025);
-    // The hood: a dome of radius r, its rim tilted to face down and forward over the head.
-    let r = (0.75 * hw).min(0.28).min(0.3 * h);
-    let centre = [0.0, yc + r + 0.12, top - 0.3 * r];
-    b.rod(Metal, [0.0, yc, top], [0.0, centre[1], top], 0.02);
-    let dome = |rr: f64| {
-        (0..=12)
-            .map(|i| {
-                let a = i as f64 / 12.0 * std::f64::consts::FRAC_PI_2;
-                [rr * a.cos(), 1.1 * rr * a.sin()]
-            })
-            .collect::<Vec<_>>()
-    };
-    let tilt = rot_x(0.6);
-    let base = [centre[0], centre[1], centre[2] - 0.5 * r];
-    b.revolved(Body, 0, base, tilt, 1.0, dome(r));
-    b.revolved(
-        Interior,
-        0,
-        [base[0], base[1], base[2] - 0.004],
-        tilt,
-        1.0,
-        dome(0.94 * r),
-    );
-    b.cylinder(Handle, [r + 0.005, base[1], base[2] + 0.3 * r], 0.03, 0.02);
 }

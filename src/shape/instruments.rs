@@ -1,8 +1,10 @@
 //! Layouts of instruments that are neither pianos nor plucked: a church organ (a case at the
 //! back carrying ranks of metal pipes in three flats above a console of stepped manuals, stop
-//! knobs, a music desk, a pedalboard and the bench) and a bowed string instrument (a cello or a
-//! double bass: a waisted body with f-holes, a long black fingerboard, a bridge, strings, a
-//! pegbox ending in a scroll, standing on its end pin in a stand). The front faces +y.
+//! knobs, a music desk, a pedalboard and the bench; from behind, panel doors under an open back
+//! showing a rank of wooden pipes) and a bowed string instrument (a cello or a double bass: a
+//! waisted body with f-holes, a long black fingerboard, a bridge, four strings, a pegbox ending
+//! in a scroll, standing on its end pin in a stand, its bow leaning on the stand). The front
+//! faces +y.
 use super::archetypes::Builder;
 use super::fittings::{disc, pad};
 use super::materials::Role::*;
@@ -20,6 +22,54 @@ fn pipe(b: &mut Builder, x: f64, y: f64, z0: f64, z1: f64, r: f64) {
     );
 }
 
+/// The back of an organ's case at `yr`: below the impost height `zi` two framed panel doors
+/// with knobs for the tuner, above it the open back showing a rank of square wooden pipes
+/// standing in the dark of the case, graded from the middle out, a cornice over them.
+fn case_back(b: &mut Builder, yr: f64, zi: f64) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let t = 0.3 * (yr + hd);
+    for sx in [-1.0, 1.0] {
+        let (x0, x1) = (sx * 0.04, sx * (hw - 0.06));
+        let (xa, xb) = (x0.min(x1), x0.max(x1));
+        for (lo, hi) in [
+            ([xa, yr - t, 0.1], [xb, yr, 0.16]),
+            ([xa, yr - t, zi - 0.22], [xb, yr, zi - 0.16]),
+            ([xa, yr - t, 0.1], [xa + 0.06, yr, zi - 0.16]),
+            ([xb - 0.06, yr - t, 0.1], [xb, yr, zi - 0.16]),
+        ] {
+            b.cuboid(Frame, lo, hi);
+        }
+        b.rod(
+            Handle,
+            [sx * 0.1, yr - t, 0.5 * zi],
+            [sx * 0.1, yr - 1.5 * t, 0.5 * zi],
+            0.015,
+        );
+    }
+    // A case too low for an upper back keeps its doors only.
+    if zi + 0.3 > h - 0.14 {
+        return;
+    }
+    b.cuboid(
+        Interior,
+        [-hw + 0.06, yr - 0.004, zi],
+        [hw - 0.06, yr, h - 0.14],
+    );
+    let n = ((b.w - 0.2) / 0.12).floor().max(3.0) as usize;
+    let side = ((yr + hd) * 0.7).min(0.08);
+    for i in 0..n {
+        let u = (i as f64 + 0.5) / n as f64;
+        let x = -hw + 0.1 + u * (b.w - 0.2);
+        let z1 = zi + (0.4 + 0.5 * (1.0 - (2.0 * u - 1.0).abs())) * (h - 0.2 - zi);
+        b.cuboid(
+            Frame,
+            [x - 0.5 * side, -hd + 0.005, zi + 0.02],
+            [x + 0.5 * side, -hd + 0.005 + side, z1],
+        );
+    }
+    b.cuboid(Top, [-hw, -hd, h - 0.14], [hw, yr, h - 0.08]);
+}
+
 /// A church organ: the case, an impost ledge carrying three flats of pipes (a tall middle tower
 /// peaking at its centre, the side flats rising to the outside), the console with two manuals
 /// and stop jambs, the pedalboard under it and the bench in front.
@@ -27,8 +77,11 @@ pub fn church_organ(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let yc = -hd + (0.45 * b.d).min(0.6);
     let zi = (0.5 * h).clamp(1.1, 1.4);
-    // The case, its impost ledge and a cornice on top.
-    b.cuboid(Body, [-hw, -hd, 0.0], [hw, yc, h - 0.08]);
+    // The case (its back wall set in to leave room for the back's fittings), its impost ledge
+    // and a cornice on top.
+    let yr = -hd + (0.06 * b.d).clamp(0.04, 0.1);
+    b.cuboid(Body, [-hw, yr, 0.0], [hw, yc, h - 0.08]);
+    case_back(b, yr, zi);
     b.cuboid(Top, [-hw, -hd, h - 0.08], [hw, yc + 0.04, h]);
     b.cuboid(Top, [-hw, yc - 0.02, zi - 0.06], [hw, yc + 0.1, zi]);
     b.cuboid(
@@ -215,7 +268,7 @@ pub fn bowed_instrument(b: &mut Builder) {
         0.1 * bw,
     );
     for k in 0..4 {
-        let x = (k as f64 - 1.5) * 0.05 * bw;
+        let x = (k as f64 - 1.5) * 0.08 * bw;
         b.rod(
             Metal,
             [x, 1.02 * t, zw - 0.08 * h],
@@ -248,4 +301,18 @@ pub fn bowed_instrument(b: &mut Builder) {
         );
     }
     disc(b, Frame, [0.0, 0.0, 0.01], [0.0, 0.0, 1.0], 0.06, 0.02);
+    // The bow leaning on the stand at the left: a dark stick, its pale hair a finger's width
+    // in front of it, the frog at its foot.
+    let (foot, tip) = (
+        [-(hw - 0.04), ys + 0.04, 0.01],
+        [-0.15 * hw, ys + 0.04, 0.6 * h],
+    );
+    b.rod(Trunk, foot, tip, 0.006);
+    let hair = |p: [f64; 3]| [p[0] + 0.012, p[1] + 0.012, p[2]];
+    b.rod(Canvas, hair([foot[0], foot[1], 0.06]), hair(tip), 0.004);
+    b.cuboid(
+        BlackKeys,
+        [foot[0] - 0.012, foot[1] - 0.01, 0.04],
+        [foot[0] + 0.024, foot[1] + 0.024, 0.09],
+    );
 }

@@ -1,11 +1,14 @@
 //! Layouts of the chairs of a trade: a barber chair (a padded seat on a round chrome pedestal,
 //! arms, a back with a headrest on a stem and a chrome footrest in front), a dentist's chair (a
 //! reclined couch on a pedestal plate with an overhead lamp on an arm, an instrument tray and a
-//! rinsing bowl) and a pedicure chair (a throne-like padded seat raised on a plinth with a foot
-//! basin in front of it). The front faces +y; backs at -y.
+//! rinsing bowl; its couch is `pub(super)` for the recliners of `recliners.rs`), a pedicure
+//! chair (a throne-like padded seat raised on a plinth with a foot basin in front of it, and at
+//! the back of its plinth a grille and the basin's plumbing) and a hood dryer chair (an armchair
+//! under a domed hood on a stem). The front faces +y; backs at -y.
 use super::archetypes::Builder;
 use super::fittings::{band, disc, pad, pedestal};
 use super::materials::Role::*;
+use super::parts::rot_x;
 
 /// A barber chair: the pedestal, a seat box, the seat, padded arms on chrome supports, a
 /// slightly reclined back, a headrest above it on a stem, and a chrome footrest reaching out
@@ -102,22 +105,31 @@ pub fn barber_chair(b: &mut Builder) {
     );
 }
 
-/// A dentist's chair: a base plate and lift column, a couch reclined from the leg rest at the
-/// front to the headrest at the back, small armrests, a lamp on an arm from a post reaching over
-/// the couch, an instrument tray on a swing arm and a rinsing bowl on a column.
-pub fn dentist_chair(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+/// Where a treatment couch put its parts: the seat height, the seat's back edge, the top of the
+/// back rest (`[y, z]`) and the couch's half width.
+pub(super) struct Couch {
+    pub zs: f64,
+    pub ys0: f64,
+    pub top: [f64; 2],
+    pub cw: f64,
+}
+
+/// A treatment couch: a base plate and lift column, a seat, a back reclined `recline` degrees
+/// above level from the seat's back edge with a headrest beyond it, a leg rest falling to the
+/// front, and small armrests on posts at both sides of the seat.
+pub(super) fn couch(b: &mut Builder, recline: f64) -> Couch {
+    let (hd, h) = (b.d / 2.0, b.h);
     let zs = (0.4 * h).clamp(0.4, 0.5);
     b.cuboid(Body, [-0.25, -0.35, 0.0], [0.25, 0.4, 0.04]);
     b.cuboid(Body, [-0.12, -0.12, 0.04], [0.12, 0.12, zs - 0.1]);
     b.cuboid(Body, [-0.24, -0.3, zs - 0.1], [0.24, 0.3, zs - 0.04]);
     let cw = (0.35 * b.w).min(0.28);
     let t = 0.09;
-    // Seat, back (reclined to 25° above level) and headrest, and the leg rest falling forward.
+    // Seat, back and headrest, and the leg rest falling forward.
     let (ys0, ys1) = (-0.15, 0.25);
     pad(b, Upholstery, 0.0, [ys0, zs], [ys1, zs + 0.02], cw, t);
-    let a = 25f64.to_radians();
-    let back = (ys0 + hd - 0.25).max(0.2) / a.cos();
+    let a = recline.to_radians();
+    let back = ((ys0 + hd - 0.25).max(0.2) / a.cos()).min((h - zs - 0.1) / a.sin());
     let top = [ys0 - back * a.cos(), zs + back * a.sin()];
     pad(b, Upholstery, 0.0, [ys0, zs], top, cw, t);
     let head = [top[0] - 0.2, top[1] + 0.06];
@@ -152,6 +164,15 @@ pub fn dentist_chair(b: &mut Builder) {
             [x + 0.04, ys0 + 0.3, zs + 0.2],
         );
     }
+    Couch { zs, ys0, top, cw }
+}
+
+/// A dentist's chair: a base plate and lift column, a couch reclined from the leg rest at the
+/// front to the headrest at the back, small armrests, a lamp on an arm from a post reaching over
+/// the couch, an instrument tray on a swing arm and a rinsing bowl on a column.
+pub fn dentist_chair(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let Couch { zs, top, .. } = couch(b, 25.0);
     // The lamp: a post on its own foot behind the back right, an arm reaching over the couch
     // and a head facing down at the patient's chest.
     let (xp, yp) = (hw - 0.04, -hd + 0.08);
@@ -201,6 +222,43 @@ pub fn dentist_chair(b: &mut Builder) {
     disc(b, Water, [xb, yb, zs + 0.281], [0.0, 0.0, 1.0], 0.06, 0.004);
 }
 
+/// The back of a pedicure chair's plinth, `zp` high: a steel vent grille, the hot and cold
+/// supply pipes rising from the floor into it and the basin's drain hose leaving it, all in the
+/// 6 cm it is set in from the back of the size box.
+fn plumbing(b: &mut Builder, zp: f64) {
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
+    let yb = -hd + 0.06;
+    for k in 0..5 {
+        let z = 0.25 * zp + 0.1 * zp * k as f64;
+        b.cuboid(
+            Metal,
+            [-0.4 * hw, yb - 0.006, z],
+            [0.4 * hw, yb, z + 0.04 * zp],
+        );
+    }
+    for x in [-0.7 * hw, -0.55 * hw] {
+        b.polyline(
+            Metal,
+            &[
+                [x, -hd + 0.025, 0.0],
+                [x, -hd + 0.025, 0.7 * zp],
+                [x, yb, 0.7 * zp],
+            ],
+            0.012,
+        );
+    }
+    let x = 0.6 * hw;
+    b.polyline(
+        Frame,
+        &[
+            [x, yb, 0.5 * zp],
+            [x, -hd + 0.025, 0.45 * zp],
+            [x + 0.05, -hd + 0.025, 0.03],
+        ],
+        0.022,
+    );
+}
+
 /// A pedicure chair: a plinth that raises a throne-like seat (thick arms, a tall padded back)
 /// above the floor, and in front of it a low step carrying a foot basin with a tap.
 pub fn pedicure_chair(b: &mut Builder) {
@@ -208,8 +266,9 @@ pub fn pedicure_chair(b: &mut Builder) {
     let ys = (-hd + 0.8).min(0.15 * hd);
     let zp = (0.3 * h).min(0.35);
     let zs = zp + 0.18;
-    // The plinth and the seat on it, between thick arms.
-    b.cuboid(Body, [-hw, -hd, 0.0], [hw, ys, zp]);
+    // The plinth (set in at the back for the plumbing) and the seat on it, between thick arms.
+    b.cuboid(Body, [-hw, -hd + 0.06, 0.0], [hw, ys, zp]);
+    plumbing(b, zp);
     let arm = (0.17 * b.w).min(0.16);
     b.cuboid(
         Upholstery,
@@ -287,5 +346,47 @@ pub fn pedicure_chair(b: &mut Builder) {
             [0.0, yt + 0.12, zb + 0.12],
         ],
         0.015,
+    );
+}
+
+/// A hood dryer chair: an armchair as high as a seat, and behind it a stem on a round foot that
+/// rises past the back and leans a domed hood forward over the sitter's head, its dark mouth
+/// facing down and forward.
+pub fn hood_dryer_chair(b: &mut Builder) {
+    let (hd, h) = (b.d / 2.0, b.h);
+    let full = b.h;
+    b.h = (0.62 * h).clamp(0.6, 1.0);
+    super::furniture::armchair(b);
+    b.h = full;
+    let ys = -hd + 0.05;
+    disc(
+        b,
+        Metal,
+        [0.0, ys + 0.12, 0.01],
+        [0.0, 0.0, 1.0],
+        0.14,
+        0.02,
+    );
+    let r = (0.22 * b.w).clamp(0.12, 0.25);
+    let zh = h - r;
+    let yh = (-hd + 0.3 + 0.9 * r).min(0.05);
+    b.polyline(
+        Metal,
+        &[
+            [0.0, ys, 0.02],
+            [0.0, ys, zh + 0.1],
+            [0.0, yh - 0.5 * r, zh + 0.1],
+        ],
+        0.02,
+    );
+    let tilt = rot_x(-30f64.to_radians());
+    b.ellipsoid_rot(Body, 0, [0.0, yh, zh], [r, r, 0.8 * r], tilt);
+    disc(
+        b,
+        Interior,
+        [0.0, yh + 0.25 * r, zh - 0.45 * r],
+        [0.0, 0.5, -0.87],
+        0.85 * r,
+        0.01,
     );
 }
