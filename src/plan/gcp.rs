@@ -77,7 +77,7 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
     let room = spec.room.unwrap_or_else(|| {
         let mut r = choose_room(&inst, spec.scene_type);
         // rows asked: wide and deep enough for the block, its walkways and its front
-        let need = rows::room_for_rows(spec);
+        let need = rows::room_for_rows(spec, [r.size[0], r.size[1]]);
         for (v, n) in r.size.iter_mut().zip(need) {
             *v = v.max((n * 10.0).ceil() / 10.0);
         }

@@ -232,8 +232,8 @@ fn base(id: &str) -> &str {
 
 /// The smallest [w, d] that holds every block of `spec` facing +y (a room chosen by floor area
 /// alone can be too narrow for ten seats abreast) and every floor of tables.
-pub fn room_for_rows(spec: &SceneSpec) -> [f64; 2] {
-    let mut need = super::tables::room_for_tables(spec);
+pub fn room_for_rows(spec: &SceneSpec, base: [f64; 2]) -> [f64; 2] {
+    let mut need = super::tables::room_for_tables(spec, base);
     for cat in spec.objects.keys() {
         if let Some(b) = block(spec, cat) {
             let [a, l] = b.needs();

@@ -20,10 +20,11 @@ type Seating = Vec<(usize, usize, f64)>;
 /// Seats spread over a table's four sides: how many on each, and each seat's side in turn.
 type SideSeats = ([usize; 4], Vec<usize>);
 
-/// The smallest [w, d] whose floor holds the lattice of every floor of tables of `spec` (its
-/// cells in a near-square block, those a CENTER thing takes with them, the walls' middle band),
-/// [0, 0] when there is none.
-pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
+/// The [w, d] a room needs for the lattice of every floor of tables of `spec` (its cells,
+/// those a CENTER thing takes with them, the walls' middle band), [0, 0] when there is none:
+/// of the blocks that hold them, the one that grows a room of `base` ([w, d], what the rest of
+/// its furniture needs) least.
+pub fn room_for_tables(spec: &SceneSpec, room: [f64; 2]) -> [f64; 2] {
     let base = |id: &str| {
         id.trim_end_matches(|c: char| c.is_ascii_digit())
             .to_string()
@@ -109,23 +110,71 @@ pub fn room_for_tables(spec: &SceneSpec) -> [f64; 2] {
                     .product::<usize>()
             })
             .sum();
-        // the tables of every size in the largest one's cells, as many of those as their
-        // floor fills
-        let area: f64 = pitches
-            .iter()
-            .map(|(p, m)| p[0] * p[1] * *m as f64)
-            .sum::<f64>()
-            + middle as f64 * pitch[0] * pitch[1];
-        let cells = (area / (pitch[0] * pitch[1])).ceil().max(1.0) as usize;
-        let nx = (cells as f64).sqrt().ceil() as usize;
-        let ny = cells.div_ceil(nx);
-        let band = 2.0 * WALL_BANDS[1] - PASSAGE;
-        need = [
-            need[0].max(nx as f64 * pitch[0] + band),
-            need[1].max(ny as f64 * pitch[1] + band),
-        ];
+        let block = if middle > 0 || pitches.len() < 2 {
+            // tables of one size, or round a CENTER thing: the tables of every size in the
+            // largest one's cells, in a near-square block with the cells it takes in the middle
+            let area: f64 = pitches
+                .iter()
+                .map(|(p, m)| p[0] * p[1] * *m as f64)
+                .sum::<f64>()
+                + middle as f64 * pitch[0] * pitch[1];
+            let cells = (area / (pitch[0] * pitch[1])).ceil().max(1.0) as usize;
+            let nx = (cells as f64).sqrt().ceil() as usize;
+            let ny = cells.div_ceil(nx);
+            let band = 2.0 * WALL_BANDS[1] - PASSAGE;
+            [nx as f64 * pitch[0] + band, ny as f64 * pitch[1] + band]
+        } else {
+            block_for(&pitches, room)
+        };
+        need = [need[0].max(block[0]), need[1].max(block[1])];
     }
     need
+}
+
+/// The [w, d] of a room whose floor holds a block of table cells, `groups` of them at a pitch
+/// each (tables of one size make one lattice), with the walls' middle band: the cells of every
+/// group share the block's floor, each group's in whole rows of its own; of the blocks at least
+/// one cell of each wide, the one that grows a room of `room` least, in either turn (the
+/// lattice is laid in both).
+fn block_for(groups: &[([f64; 2], usize)], room: [f64; 2]) -> [f64; 2] {
+    let band = 2.0 * WALL_BANDS[1] - PASSAGE;
+    let grown = |b: [f64; 2]| [room[0].max(b[0] + band), room[1].max(b[1] + band)];
+    let mut best: Option<(f64, [f64; 2])> = None;
+    for turn in [false, true] {
+        let g: Vec<([f64; 2], usize)> = groups
+            .iter()
+            .map(|&(p, m)| (if turn { [p[1], p[0]] } else { p }, m))
+            .collect();
+        let widest = g.iter().map(|(p, _)| p[0]).fold(0.0, f64::max);
+        // block widths: whole columns of some group's cells, or as wide as the room already is
+        let widths = g
+            .iter()
+            .flat_map(|&(p, m)| (1..=m).map(move |k| k as f64 * p[0]))
+            .chain([room[0] - band])
+            .filter(|&bx| bx >= widest - 1e-9);
+        for bx in widths {
+            // the cells of every size share the block's rows; each size's lattice still needs
+            // its whole rows
+            // its whole rows; where sizes meet, the smaller keep half a passage more from the
+            // larger's seats
+            let meet = if g.len() > 1 { 0.5 * PASSAGE } else { 0.0 };
+            let shared: f64 =
+                g.iter().map(|&(p, m)| m as f64 * p[0] * p[1]).sum::<f64>() / bx + meet;
+            let by = g
+                .iter()
+                .map(|&(p, m)| {
+                    let across = ((bx + 1e-9) / p[0]).floor().max(1.0) as usize;
+                    m.div_ceil(across) as f64 * p[1]
+                })
+                .fold(shared, f64::max);
+            let r = grown([bx, by]);
+            let a = r[0] * r[1];
+            if best.is_none_or(|(b, _)| a < b - 1e-9) {
+                best = Some((a, r));
+            }
+        }
+    }
+    best.map_or([0.0, 0.0], |(_, r)| r)
 }
 
 /// How `n` seats `wide` wide spread over the sides of a table `size` ([width, depth]): the
@@ -215,24 +264,46 @@ impl Problem {
                 }
             }
             sizes.sort_by(|a, b| (b[0] * b[1]).total_cmp(&(a[0] * a[1])));
-            for size in sizes {
-                let alike: Vec<usize> = tables
-                    .iter()
-                    .copied()
-                    .filter(|&t| self.inst[t].size == size)
-                    .collect();
-                let Some(seatings) = alike
-                    .iter()
-                    .map(|&t| self.seating(t))
-                    .collect::<Option<Vec<Seating>>>()
-                else {
-                    continue;
-                };
-                if let Some(poses) = self.floor_poses(&alike, &seatings, placed) {
-                    for (i, p) in poses {
-                        placed[i] = Some(p);
+            // tables of several sizes: when the larger ones nearest the middle leave the smaller
+            // no lattice, the larger go to the edge of the floor instead
+            let mut first: Option<Vec<Option<Pose>>> = None;
+            for edge in [false, true] {
+                if edge && sizes.len() < 2 {
+                    break;
+                }
+                let mut trial = placed.to_vec();
+                let mut mates: Vec<usize> = vec![];
+                let mut all = true;
+                for &size in &sizes {
+                    let alike: Vec<usize> = tables
+                        .iter()
+                        .copied()
+                        .filter(|&t| self.inst[t].size == size)
+                        .collect();
+                    let seatings = alike
+                        .iter()
+                        .map(|&t| self.seating(t))
+                        .collect::<Option<Vec<Seating>>>();
+                    let poses =
+                        seatings.and_then(|s| self.floor_poses(&alike, &s, &trial, &mates, edge));
+                    match poses {
+                        Some(poses) => {
+                            for (i, p) in poses {
+                                trial[i] = Some(p);
+                                mates.push(i);
+                            }
+                        }
+                        None => all = false,
                     }
                 }
+                if all {
+                    first = Some(trial);
+                    break;
+                }
+                first.get_or_insert(trial);
+            }
+            if let Some(trial) = first {
+                placed.copy_from_slice(&trial);
             }
         }
     }
@@ -286,12 +357,16 @@ impl Problem {
         )
     }
 
-    /// Poses of the tables and their seats in a lattice, or `None` when no lattice holds them.
+    /// Poses of the tables and their seats in a lattice, or `None` when no lattice holds them:
+    /// the cells nearest the middle (`edge`: farthest from it), a passage from the `mates` (the
+    /// floor's tables and seats laid already).
     fn floor_poses(
         &self,
         tables: &[usize],
         seatings: &[Seating],
         placed: &[Option<Pose>],
+        mates: &[usize],
+        edge: bool,
     ) -> Option<Vec<(usize, Pose)>> {
         let [w, d, _] = self.room;
         let s = self.inst[tables[0]].size;
@@ -309,10 +384,18 @@ impl Problem {
         };
         let ring =
             [seated([2, 3]), seated([0, 1])].map(|on| if on { deep + SEAT_GAP } else { 0.0 });
+        // the tables and seats of this floor laid already (the larger tables) keep a passage
+        // from the new cells, as the cells of one lattice do from each other
         let others: Vec<Box2> = placed
             .iter()
             .enumerate()
-            .filter_map(|(j, p)| p.map(|p| self.boxed(j, &p)))
+            .filter_map(|(j, p)| {
+                let mut b = self.boxed(j, p.as_ref()?);
+                if mates.contains(&j) {
+                    b.half = b.half.map(|h| h + 0.5 * PASSAGE);
+                }
+                Some(b)
+            })
             .chain(self.middle_keep())
             .chain(
                 self.openings
@@ -350,7 +433,14 @@ impl Problem {
                             continue;
                         }
                         // the cells nearest the middle
-                        let r = |c: &[f64; 2]| (c[0] / w).hypot(c[1] / d);
+                        let r = |c: &[f64; 2]| {
+                            let r = (c[0] / w).hypot(c[1] / d);
+                            if edge {
+                                -r
+                            } else {
+                                r
+                            }
+                        };
                         cells.sort_by(|a, b| r(a).total_cmp(&r(b)).then(a[0].total_cmp(&b[0])));
                         cells.truncate(tables.len());
                         let spread: f64 = cells.iter().map(r).sum();

@@ -137,7 +137,7 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
                 }
             }
             // things asked in rows: wide and deep enough for the block and its front
-            let need = crate::plan::gcp::rows::room_for_rows(spec);
+            let need = crate::plan::gcp::rows::room_for_rows(spec, [room.size[0], room.size[1]]);
             for (v, n) in room.size.iter_mut().zip(need) {
                 *v = v.max((n * 10.0).ceil() / 10.0);
             }
