@@ -144,7 +144,13 @@ pub fn stove(b: &mut Builder) {
         );
     }
     // Oven door with its window, and a drawer below.
-    let (z0, z1) = (0.2 * h, zk - 0.05);
+    oven_door(b, face, 0.2 * h, zk - 0.05, 0.06);
+}
+
+/// An oven's door on the front face `face` (its y) from `z0` to `z1`: a dark window, a bar
+/// handle on stand-offs near its top, and a drawer front below it from `drawer_z0` up.
+pub(super) fn oven_door(b: &mut Builder, face: f64, z0: f64, z1: f64, drawer_z0: f64) {
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
     b.cuboid(Door, [-hw + 0.01, face, z0], [hw - 0.01, face + 0.02, z1]);
     b.cuboid(
         Screen,
@@ -163,7 +169,7 @@ pub fn stove(b: &mut Builder) {
     }
     b.cuboid(
         Door,
-        [-hw + 0.01, face, 0.06],
+        [-hw + 0.01, face, drawer_z0],
         [hw - 0.01, face + 0.02, z0 - 0.01],
     );
 }

@@ -91,28 +91,8 @@ pub fn wall_oven(b: &mut Builder) {
         [-0.08, face + 0.01, h - 0.65 * strip],
         [0.08, face + 0.013, h - 0.35 * strip],
     );
-    let (z0, z1) = (0.25 * h, h - strip - 0.02);
-    b.cuboid(Door, [-hw + 0.01, face, z0], [hw - 0.01, face + 0.02, z1]);
-    b.cuboid(
-        Screen,
-        [-hw + 0.07, face + 0.02, z0 + 0.06],
-        [hw - 0.07, face + 0.024, z1 - 0.12],
-    );
-    let zh = z1 - 0.05;
-    b.rod(
-        Handle,
-        [-hw + 0.06, hd - 0.006, zh],
-        [hw - 0.06, hd - 0.006, zh],
-        0.01,
-    );
-    for x in [-hw + 0.08, hw - 0.08] {
-        b.rod(Handle, [x, face + 0.02, zh], [x, hd - 0.006, zh], 0.006);
-    }
-    b.cuboid(
-        Door,
-        [-hw + 0.01, face, 0.03],
-        [hw - 0.01, face + 0.02, z0 - 0.02],
-    );
+    let z0 = 0.25 * h;
+    super::appliances::oven_door(b, face, z0, h - strip - 0.02, 0.03);
     b.rod(
         Handle,
         [-0.25 * b.w, hd - 0.006, z0 - 0.06],
