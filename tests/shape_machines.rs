@@ -613,3 +613,38 @@ fn a_pizza_oven_is_a_dome_with_an_arched_mouth_not_a_fireplace() {
         }
     }
 }
+
+#[test]
+fn a_sauna_stove_is_a_heap_of_stones_on_a_firebox_not_a_range() {
+    assert_ne!(archetype_of("sauna stove"), archetype_of("stove"));
+    for name in ["sauna stove", "sauna heater", "kiuas"] {
+        for size in sized(name, [1.3, 1.2, 1.25]) {
+            let s = at(name, size);
+            // Stones fill the upper part of the box, across most of its width.
+            let stones = of(&s, Role::Stone);
+            assert!(stones.len() > 200, "{name} {size:?}: no stones");
+            let (z0, z1) = range(&stones, 2);
+            assert!(z0 > 0.4 * size[2], "{name} {size:?}: stones from {z0:.2}");
+            assert!(z1 > 0.85 * size[2], "{name} {size:?}: stones up to {z1:.2}");
+            let (x0, x1) = range(&stones, 0);
+            assert!(
+                x1 - x0 > 0.6 * size[0],
+                "{name} {size:?}: heap {:.2}",
+                x1 - x0
+            );
+            // A glowing fire door on the front of the firebox, under the stones.
+            let glow = of(&s, Role::Light);
+            assert!(!glow.is_empty(), "{name}: no fire door");
+            assert!(
+                range(&glow, 2).1 < z0,
+                "{name}: the fire door is not under the stones"
+            );
+            assert!(
+                range(&glow, 1).0 > 0.4 * size[1],
+                "{name}: the fire door is not in front"
+            );
+        }
+    }
+    // A kitchen range has no stones.
+    assert!(of(&at("stove", sized("stove", [1.0; 3])[0]), Role::Stone).is_empty());
+}

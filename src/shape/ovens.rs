@@ -1,7 +1,10 @@
 //! Layouts of ovens that are built, not bought: a wood-fired pizza oven (a masonry stand with a
 //! log store under a stone hearth, a brick dome on the hearth, an entry vault in front of the dome
 //! with an arched dark mouth and the glow of a fire inside, a flue rising from the vault). Reads
-//! as a dome from every side, never as a fireplace's box. The front faces +y.
+//! as a dome from every side, never as a fireplace's box) and a sauna stove (a black steel
+//! firebox on short legs with a glass fire door, a cage of rails above it heaped with round grey
+//! stones, a flue at the back): a heap of stones on a box, never a kitchen range. The front faces
+//! +y.
 use super::archetypes::Builder;
 use super::fittings::{disc, Y};
 use super::materials::Role::*;
@@ -60,4 +63,83 @@ pub fn pizza_oven(b: &mut Builder) {
         rf,
         h - zh - vh,
     );
+}
+
+/// A sauna stove: a black steel firebox on short legs with a small glowing fire door, and above
+/// it an open cage of rails heaped with rounded stones, a flue pipe rising at the back.
+pub fn sauna_stove(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let legs = (0.08 * h).clamp(0.04, 0.1);
+    let zb = 0.55 * h;
+    b.legs(Metal, 0.02, 0.04, 0.0, legs);
+    b.cuboid(
+        Body,
+        [-hw + 0.02, -hd + 0.04, legs],
+        [hw - 0.02, hd - 0.02, zb],
+    );
+    // The fire door with its glow.
+    let (z0, z1) = (legs + 0.2 * (zb - legs), legs + 0.7 * (zb - legs));
+    b.cuboid(
+        Door,
+        [-0.45 * hw, hd - 0.02, z0],
+        [0.45 * hw, hd - 0.005, z1],
+    );
+    b.cuboid(
+        Light,
+        [-0.35 * hw, hd - 0.006, z0 + 0.03],
+        [0.35 * hw, hd - 0.002, z1 - 0.03],
+    );
+    // The cage: corner posts and two rails round it, the stones heaped inside and over it.
+    let top = h - 0.02;
+    let (cx, cy) = (hw - 0.03, hd - 0.03);
+    for (x, y) in [(-cx, -cy), (cx, -cy), (cx, cy), (-cx, cy)] {
+        b.rod(Metal, [x, y, zb], [x, y, 0.85 * top], 0.01);
+    }
+    for z in [zb + 0.35 * (top - zb), 0.85 * top] {
+        b.polyline(
+            Metal,
+            &[
+                [-cx, -cy, z],
+                [cx, -cy, z],
+                [cx, cy, z],
+                [-cx, cy, z],
+                [-cx, -cy, z],
+            ],
+            0.008,
+        );
+    }
+    let stone = (0.2 * hw.min(hd)).clamp(0.035, 0.07);
+    let (nx, ny) = (
+        ((2.0 * cx) / (1.7 * stone)).floor().max(2.0) as usize,
+        ((2.0 * cy) / (1.7 * stone)).floor().max(2.0) as usize,
+    );
+    let layers = (((top - zb) / (1.5 * stone)).floor() as usize).clamp(2, 6);
+    for l in 0..layers {
+        // Each layer a little narrower, so the heap crowns above the cage.
+        let shrink = 1.0 - 0.12 * l as f64;
+        for i in 0..nx {
+            for j in 0..ny {
+                let k = (l * nx * ny + i * ny + j) as u32;
+                let jitter = 0.25 * stone * (((k * 37 % 11) as f64 / 11.0) - 0.5);
+                let x = shrink
+                    * (-cx + stone + (i as f64 + 0.5) / nx as f64 * (2.0 * cx - 2.0 * stone));
+                let y = shrink
+                    * (-cy + stone + (j as f64 + 0.5) / ny as f64 * (2.0 * cy - 2.0 * stone));
+                let z = zb + stone + l as f64 * 1.4 * stone + jitter;
+                if z + stone > top {
+                    continue;
+                }
+                b.ellipsoid_rot(
+                    Stone,
+                    k % 3,
+                    [x + jitter, y - jitter, z],
+                    [1.1 * stone, stone, 0.8 * stone],
+                    super::parts::rot_z(0.7 * k as f64),
+                );
+            }
+        }
+    }
+    // The flue at the back.
+    let r = (0.12 * hw).clamp(0.04, 0.07);
+    b.rod(Metal, [0.0, -hd + r, zb], [0.0, -hd + r, h], r);
 }
