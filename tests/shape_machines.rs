@@ -648,3 +648,42 @@ fn a_sauna_stove_is_a_heap_of_stones_on_a_firebox_not_a_range() {
     // A kitchen range has no stones.
     assert!(of(&at("stove", sized("stove", [1.0; 3])[0]), Role::Stone).is_empty());
 }
+
+#[test]
+fn a_softbox_is_a_wide_diffuser_on_a_light_stand_not_a_lampshade() {
+    assert_ne!(archetype_of("softbox light"), archetype_of("floor lamp"));
+    for name in ["softbox light", "softbox", "studio light"] {
+        for size in sized(name, [1.2, 1.0, 1.2]) {
+            let s = at(name, size);
+            // The diffuser: one wide face high on the stand, facing the front.
+            let face = of(&s, Role::Light);
+            assert!(face.len() > 100, "{name} {size:?}: no diffuser");
+            let (x0, x1) = range(&face, 0);
+            assert!(
+                x1 - x0 > 0.6 * size[0],
+                "{name} {size:?}: face {:.2}",
+                x1 - x0
+            );
+            assert!(
+                range(&face, 2).0 > 0.5 * size[2],
+                "{name} {size:?}: face low"
+            );
+            assert!(
+                mean(&face, 1) > 0.0,
+                "{name} {size:?}: face not at the front"
+            );
+            // The cloth box behind it narrows to the back.
+            let body = of(&s, Role::Body);
+            let back: Vec<[f64; 3]> = body
+                .iter()
+                .filter(|p| p[1] < -0.15 * size[1])
+                .cloned()
+                .collect();
+            let (bx0, bx1) = range(&back, 0);
+            assert!(
+                bx1 - bx0 < 0.6 * (x1 - x0),
+                "{name} {size:?}: box does not narrow"
+            );
+        }
+    }
+}

@@ -1,7 +1,8 @@
 //! Layouts of scientific and stage instruments on stands: a microscope (a heavy foot, a curved arm at the back
 //! holding the stage, the turret of objectives over it and the eyepiece tube leaning back, with
-//! focus knobs and a lamp in the foot) and a stage spotlight (a can on a yoke, tilted forward,
-//! on a column over a tripod). The front faces +y.
+//! focus knobs and a lamp in the foot), a stage spotlight (a can on a yoke, tilted forward,
+//! on a column over a tripod) and a photographer's softbox (a wide octagonal diffuser box on the
+//! same light stand). The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
@@ -105,10 +106,9 @@ pub fn microscope(b: &mut Builder) {
     );
 }
 
-/// A stage spotlight: three splayed legs, a column rising from them, a U-shaped yoke at the
-/// top and between its arms a cylindrical can tilted a little down, with a lens at its front,
-/// cooling fins round its back and a handle on top.
-pub fn spotlight(b: &mut Builder) {
+/// A light stand: three splayed legs on rubber feet meeting a sleeve a quarter of the way up,
+/// a column rising from it to `top`, and the extension's lock handle.
+fn light_stand(b: &mut Builder, top: f64) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let s = hw.min(hd);
     let zc = 0.25 * h;
@@ -127,17 +127,58 @@ pub fn spotlight(b: &mut Builder) {
             0.015,
         );
     }
-    // The column, the sleeve of the extension and its lock.
     let r = (0.05 * s).max(0.015);
-    let zy = 0.72 * h;
     b.cylinder(Metal, [0.0, 0.0, zc - 0.05 * h], 1.2 * r, 0.35 * h);
-    b.cylinder(Metal, [0.0, 0.0, zc], r, zy - zc);
+    b.cylinder(Metal, [0.0, 0.0, zc], r, top - zc);
     b.rod(
         Handle,
         [0.0, 0.0, zc + 0.33 * h],
         [0.12 * s, 0.0, zc + 0.33 * h],
         0.6 * r,
     );
+}
+
+/// A photographer's softbox light: a light stand and on it a wide octagonal box of black
+/// cloth, narrow at its back where the lamp mounts, open to the front and a little down, its
+/// whole front face a white diffuser.
+pub fn softbox(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let rc = 0.95 * hw.min(0.5 * h);
+    let len = (0.9 * hd).min(1.2 * rc);
+    let zax = h - rc;
+    light_stand(b, zax);
+    let t = 0.15f64;
+    let rot = rot_x(-(FRAC_PI_2 + t));
+    let dir = [0.0, t.cos(), -t.sin()];
+    let back = [0.0, -0.5 * len * dir[1], zax - 0.5 * len * dir[2]];
+    // The lamp's housing behind the box, on a bracket from the column.
+    b.cuboid(
+        Frame,
+        [-0.04, -0.03, zax - 0.05],
+        [0.04, back[1] + 0.02, zax + 0.03],
+    );
+    let housing = [0.0, back[1] - 0.08 * dir[1], back[2] - 0.08 * dir[2]];
+    b.revolved(
+        Metal,
+        0,
+        housing,
+        rot,
+        1.0,
+        frustum_profile(0.08, 0.08, 0.1),
+    );
+    b.revolved(Body, 0, back, rot, 1.0, frustum_profile(0.2 * rc, rc, len));
+    let front = [0.0, back[1] + len * dir[1], back[2] + len * dir[2]];
+    b.revolved(Light, 0, front, rot, 1.0, vec![[0.0, 0.0], [rc, 0.0]]);
+}
+
+/// A stage spotlight: three splayed legs, a column rising from them, a U-shaped yoke at the
+/// top and between its arms a cylindrical can tilted a little down, with a lens at its front,
+/// cooling fins round its back and a handle on top.
+pub fn spotlight(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let s = hw.min(hd);
+    let zy = 0.72 * h;
+    light_stand(b, zy);
     // The yoke.
     let rc = 0.6 * s;
     let xa = rc + 0.15 * s;
