@@ -687,3 +687,38 @@ fn a_softbox_is_a_wide_diffuser_on_a_light_stand_not_a_lampshade() {
         }
     }
 }
+
+#[test]
+fn a_tea_set_is_a_teapot_and_cups_on_a_tray_not_a_kettle() {
+    assert_ne!(archetype_of("tea set"), archetype_of("kettle"));
+    for name in ["tea set", "tea service"] {
+        for size in sized(name, [1.3, 1.2, 1.0]) {
+            let s = at(name, size);
+            // A low tray under everything, over most of the footprint.
+            let tray = of(&s, Role::Top);
+            let (x0, x1) = range(&tray, 0);
+            assert!(
+                x1 - x0 > 0.9 * size[0],
+                "{name} {size:?}: tray {:.2}",
+                x1 - x0
+            );
+            assert!(
+                range(&tray, 2).1 < 0.15 * size[2],
+                "{name} {size:?}: tray high"
+            );
+            // Tea in at least two cups, apart from each other and from the pot.
+            let tea = of(&s, Role::Interior);
+            assert!(
+                runs(&tea, 1, 0.01) >= 2,
+                "{name} {size:?}: fewer than two cups"
+            );
+            // The pot stands far taller than the cups.
+            let porcelain = of(&s, Role::Body);
+            let (zc0, zc1) = range(&tea, 2);
+            assert!(
+                range(&porcelain, 2).1 > 2.0 * zc1.max(zc0),
+                "{name} {size:?}: no pot"
+            );
+        }
+    }
+}

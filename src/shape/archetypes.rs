@@ -272,6 +272,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cactus", ho::cactus, [Foliage], [Foliage => [0.30, 0.52, 0.26], Trunk => [0.20, 0.40, 0.18]]),
     arch!("teddy_bear", ho::teddy_bear, [Upholstery], [Upholstery => [0.62, 0.42, 0.24], Cushion => [0.85, 0.72, 0.55]]),
     arch!("candle", ho::candle, [Body], [Body => [0.95, 0.92, 0.82], Interior => BLACK, Metal => [0.70, 0.58, 0.32]]),
+    arch!("tea_set", ho::tea_set, [Body], [Body => [0.95, 0.94, 0.90], Handle => [0.80, 0.68, 0.35], Top => [0.55, 0.38, 0.22], Interior => [0.45, 0.25, 0.10]]),
     arch!("kettle", ho::kettle, [Body], [Body => STEEL, Handle => BLACK, Glass => [0.45, 0.62, 0.75]]),
     arch!("toaster", ho::toaster, [Body], [Body => STEEL, Handle => BLACK, Interior => BLACK]),
     arch!("glass_fridge", vi::glass_fridge, [Body, Door], [Body => [0.15, 0.15, 0.16], Door => [0.15, 0.15, 0.16], Interior => [0.30, 0.32, 0.34], Frame => [0.70, 0.71, 0.73], Light => [0.95, 0.96, 1.0], Handle => STEEL]),

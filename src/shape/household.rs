@@ -1,5 +1,6 @@
 //! Layouts of small things people name in a room: a cactus with its arms, a teddy bear, a lit
-//! pillar candle, an electric kettle, a toaster, a record player. The front faces +y.
+//! pillar candle, an electric kettle, a toaster, a record player, a tea set (a round-bellied
+//! teapot with spout and handle beside cups on saucers, on a tray). The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::frustum_profile;
@@ -212,4 +213,64 @@ pub fn record_player(b: &mut Builder) {
     );
     // The lid, open, leaning back along the rear edge.
     b.cuboid(Glass, [-hw, -hd, zp], [hw, -hd + 0.012, h]);
+}
+
+/// A tea set: a tray, a round-bellied teapot on its left with a spout to the right, a lid
+/// knob and a loop handle, and on its right cups of tea on saucers in a row front to back.
+pub fn tea_set(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let tray = (0.08 * h).min(0.015);
+    b.cuboid(Top, [-hw, -hd, 0.0], [hw, hd, tray]);
+    // The teapot, its belly filling most of the height.
+    let rp = (0.85 * h / 2.0).min(0.3 * hw).min(0.8 * hd);
+    let xc = -hw + 1.3 * rp;
+    let zc = tray + 0.9 * rp;
+    b.ellipsoid(Body, [xc, 0.0, zc], [rp, rp, 0.9 * rp]);
+    b.cylinder(Body, [xc, 0.0, zc + 0.8 * rp], 0.45 * rp, 0.12 * rp);
+    b.ellipsoid(
+        Handle,
+        [xc, 0.0, zc + 0.98 * rp],
+        [0.12 * rp, 0.12 * rp, 0.1 * rp],
+    );
+    b.rod(
+        Body,
+        [xc + 0.8 * rp, 0.0, zc - 0.1 * rp],
+        [xc + 1.35 * rp, 0.0, zc + 0.6 * rp],
+        0.1 * rp,
+    );
+    b.polyline(
+        Handle,
+        &[
+            [xc - 0.85 * rp, 0.0, zc + 0.5 * rp],
+            [xc - 1.25 * rp, 0.0, zc + 0.35 * rp],
+            [xc - 1.25 * rp, 0.0, zc - 0.2 * rp],
+            [xc - 0.9 * rp, 0.0, zc - 0.35 * rp],
+        ],
+        0.06 * rp,
+    );
+    // The cups on their saucers, as many as fit front to back on the tray's right.
+    let rs = (0.22 * hd).min(0.3 * (hw - 0.6 * rp)).clamp(0.02, 0.07);
+    let xs = hw - 1.2 * rs;
+    let n = ((2.0 * hd) / (2.3 * rs)).floor().clamp(1.0, 3.0) as usize;
+    let rc = 0.62 * rs;
+    let hc = (0.9 * rc).min(h - tray - 0.01);
+    for k in 0..n {
+        let y = -hd + (k as f64 + 0.5) * 2.0 * hd / n as f64;
+        b.cylinder(Body, [xs, y, tray], rs, 0.008);
+        b.revolved(
+            Body,
+            1,
+            [xs, y, tray + 0.008],
+            super::parts::IDENTITY,
+            1.0,
+            frustum_profile(0.7 * rc, rc, hc),
+        );
+        b.cylinder(Interior, [xs, y, tray + 0.008 + 0.8 * hc], 0.92 * rc, 0.002);
+        b.rod(
+            Handle,
+            [xs + rc, y, tray + 0.3 * hc],
+            [xs + 1.35 * rc, y, tray + 0.6 * hc],
+            0.12 * rc,
+        );
+    }
 }
