@@ -5,7 +5,7 @@
 //! tree bears fruit. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{of, range};
+use common::samples::{of, range, runs};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{archetype_of, build, parts, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
@@ -33,17 +33,6 @@ fn samples(category: &str) -> (Samples, [f64; 3]) {
 
 fn mean(pts: &[[f64; 3]], axis: usize) -> f64 {
     pts.iter().map(|p| p[axis]).sum::<f64>() / pts.len().max(1) as f64
-}
-
-/// Runs of occupied cells (of `cell` metres) along `axis`: separate panes, rods, wheels.
-fn runs(pts: &[[f64; 3]], axis: usize, cell: f64) -> usize {
-    let mut cells: Vec<i64> = pts
-        .iter()
-        .map(|p| (p[axis] / cell).floor() as i64)
-        .collect();
-    cells.sort_unstable();
-    cells.dedup();
-    1 + cells.windows(2).filter(|w| w[1] - w[0] > 1).count()
 }
 
 #[test]

@@ -5,7 +5,7 @@
 //! screen stands in a zigzag. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{of, range};
+use common::samples::{of, range, runs};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{parts, Role};
 use rand::SeedableRng;
@@ -414,17 +414,6 @@ fn an_organ_and_a_pedicure_chair_show_their_works_from_behind() {
             "pedicure chair {size:?}: no plumbing at the back"
         );
     }
-}
-
-/// Runs of occupied cells (of `cell` metres) along `axis`: separate pipes, rods.
-fn runs(pts: &[[f64; 3]], axis: usize, cell: f64) -> usize {
-    let mut cells: Vec<i64> = pts
-        .iter()
-        .map(|p| (p[axis] / cell).floor() as i64)
-        .collect();
-    cells.sort_unstable();
-    cells.dedup();
-    1 + cells.windows(2).filter(|w| w[1] - w[0] > 1).count()
 }
 
 #[test]

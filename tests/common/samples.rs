@@ -16,3 +16,14 @@ pub fn range(pts: &[[f64; 3]], axis: usize) -> (f64, f64) {
             (lo.min(p[axis]), hi.max(p[axis]))
         })
 }
+
+/// Runs of occupied cells (of `cell` metres) along `axis`: separate panes, pipes, rods, wheels.
+pub fn runs(pts: &[[f64; 3]], axis: usize, cell: f64) -> usize {
+    let mut cells: Vec<i64> = pts
+        .iter()
+        .map(|p| (p[axis] / cell).floor() as i64)
+        .collect();
+    cells.sort_unstable();
+    cells.dedup();
+    1 + cells.windows(2).filter(|w| w[1] - w[0] > 1).count()
+}
