@@ -4,6 +4,7 @@
 use super::appliances as a;
 use super::barriers as ba;
 use super::bins as bn;
+use super::booths as bo;
 pub use super::builder::{frame_along, Builder};
 use super::care as cw;
 use super::carts as ca;
@@ -14,6 +15,7 @@ use super::coast as co;
 use super::crafts as cr;
 use super::daily as d;
 use super::displays as dp;
+use super::drawers as dr;
 use super::fixtures as fx;
 use super::forms as fo;
 use super::frames as fr;
@@ -24,6 +26,7 @@ use super::garden as ga;
 use super::gizmos as gi;
 use super::glasshouse as gh;
 use super::glazed as gz;
+use super::grounds as gr;
 use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
@@ -40,6 +43,7 @@ use super::mirrors as mi;
 use super::more as m;
 use super::orchard as oc;
 use super::ovens as ov;
+use super::packs as pk;
 use super::parlour as pa;
 use super::partitions as pn;
 use super::parts::Part;
@@ -57,6 +61,7 @@ use super::seats as se;
 use super::sets as sx;
 use super::skeleton as sk;
 use super::sleepers as sl;
+use super::smithy as sm;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
@@ -66,6 +71,7 @@ use super::transit as tt;
 use super::utility as ut;
 use super::vehicles as ve;
 use super::vitrines as vi;
+use super::wards as wd;
 use super::washroom as wa;
 use super::workshop as ws;
 use super::yard as yd;
@@ -113,6 +119,36 @@ macro_rules! arch {
 /// Every archetype.
 pub const ARCHETYPES: &[Archetype] = &[
     arch!("box", m::solid_box, [Body], []),
+    arch!("backpack", pk::backpack, [Body, Top], [Body => [0.18, 0.33, 0.52], Top => [0.14, 0.26, 0.42], Cushion => [0.16, 0.30, 0.48], Handle => BLACK]),
+    arch!("bathroom_scale", pk::bathroom_scale, [Body], [Body => WHITE, Top => [0.80, 0.84, 0.86], Screen => [0.12, 0.12, 0.13], Canvas => WHITE, Handle => [0.85, 0.12, 0.10]]),
+    arch!("bread_bin", pk::bread_bin, [Body, Top], [Body => [0.90, 0.88, 0.80], Top => [0.90, 0.88, 0.80], Handle => [0.55, 0.38, 0.22]]),
+    arch!("litter_box", pk::litter_box, [Top, Body], [Body => [0.50, 0.52, 0.56], Top => [0.86, 0.86, 0.84], Interior => BLACK, Handle => [0.50, 0.52, 0.56]]),
+    arch!("magazines", pk::magazines, [Books], [Canvas => WHITE]),
+    arch!("shopping_basket", pk::shopping_basket, [Frame, Top, Body], [Frame => [0.80, 0.12, 0.12], Body => [0.80, 0.12, 0.12], Top => [0.80, 0.12, 0.12], Handle => BLACK]),
+    arch!("fitting_room", bo::fitting_room, [Upholstery], [Body => [0.88, 0.86, 0.82], Frame => [0.88, 0.86, 0.82], Upholstery => [0.48, 0.12, 0.16], Seat => [0.55, 0.38, 0.22], Interior => [0.55, 0.55, 0.56], Handle => STEEL, Metal => STEEL]),
+    arch!("photo_booth", bo::photo_booth, [Body], [Body => [0.72, 0.12, 0.12], Top => BLACK, Upholstery => [0.12, 0.12, 0.14], Light => [0.98, 0.96, 0.90], Seat => STEEL, Interior => BLACK, Handle => STEEL, Metal => STEEL]),
+    arch!("security_gate", bo::security_gate, [Body], [Body => [0.62, 0.64, 0.67], Top => [0.30, 0.30, 0.32], Frame => BLACK, Light => [0.35, 0.90, 0.40]]),
+    arch!("turnstile", bo::turnstile, [Body], [Body => STEEL, Top => BLACK, Metal => [0.82, 0.83, 0.85], Light => [0.35, 0.90, 0.40]]),
+    arch!("photo_backdrop", bo::photo_backdrop, [Canvas], [Metal => BLACK]),
+    arch!("dock", gr::dock, [Top], [Top => [0.58, 0.47, 0.34], Trunk => [0.33, 0.25, 0.17], Frame => [0.40, 0.30, 0.20]]),
+    arch!("firewood_pile", gr::firewood_pile, [Trunk], [Trunk => [0.36, 0.26, 0.17], Top => [0.82, 0.68, 0.48]]),
+    arch!("compost_bin", gr::compost_bin, [Body, Frame], [Body => [0.52, 0.38, 0.23], Frame => [0.42, 0.30, 0.18], Soil => [0.20, 0.14, 0.09]]),
+    arch!("sandbox", gr::sandbox, [Frame, Top], [Frame => [0.62, 0.46, 0.28], Top => [0.70, 0.54, 0.34], Soil => [0.88, 0.80, 0.60], Seat => [0.85, 0.20, 0.15]]),
+    arch!("obelisk", gr::obelisk, [Stone, Top, Frame], [Stone => STONE, Top => STONE, Frame => [0.58, 0.56, 0.52]]),
+    arch!("dog_crate", gr::dog_crate, [Metal], [Metal => [0.14, 0.14, 0.15], Body => [0.22, 0.22, 0.24], Handle => STEEL]),
+    arch!("forge", sm::forge, [Body], [Body => [0.56, 0.26, 0.18], Top => [0.32, 0.30, 0.28], Metal => [0.16, 0.16, 0.17], Interior => BLACK, Light => [1.0, 0.55, 0.15], Trunk => [0.45, 0.32, 0.20]]),
+    arch!("furnace", sm::furnace, [Body], [Body => [0.20, 0.20, 0.21], Frame => [0.35, 0.33, 0.30], Top => [0.26, 0.26, 0.27], Door => [0.14, 0.14, 0.15], Light => [1.0, 0.50, 0.12], Interior => BLACK, Handle => STEEL, Metal => [0.30, 0.30, 0.32]]),
+    arch!("camp_stove", sm::camp_stove, [Body], [Body => [0.20, 0.42, 0.25], Interior => BLACK, Metal => STEEL, Light => [0.35, 0.55, 1.0], Handle => BLACK]),
+    arch!("vise", sm::vise, [Body], [Body => [0.20, 0.35, 0.60], Metal => STEEL, Handle => STEEL]),
+    arch!("stage_monitor", sm::stage_monitor, [Body], [Body => BLACK, Screen => [0.18, 0.18, 0.19], Interior => BLACK]),
+    arch!("train_set", sm::train_set, [Top], [Top => [0.80, 0.64, 0.44], Metal => [0.58, 0.44, 0.30], Body => [0.80, 0.15, 0.12], Door => [0.20, 0.40, 0.75], Interior => BLACK, Tyre => BLACK]),
+    arch!("operating_table", wd::operating_table, [Upholstery], [Upholstery => [0.16, 0.19, 0.22], Frame => STEEL, Metal => [0.82, 0.83, 0.85]]),
+    arch!("theater_seat", wd::theater_seat, [Upholstery], [Upholstery => [0.60, 0.08, 0.10], Body => BLACK, Frame => [0.15, 0.15, 0.16], Top => DARK_WOOD, Metal => BLACK]),
+    arch!("nursing_chair", wd::nursing_chair, [Upholstery, Cushion], [Upholstery => [0.74, 0.70, 0.64], Cushion => [0.78, 0.74, 0.68], Frame => [0.60, 0.45, 0.30]]),
+    arch!("card_catalog", dr::card_catalog, [Body, Door, Top, Frame], [Body => [0.62, 0.44, 0.26], Door => [0.66, 0.48, 0.29], Top => [0.58, 0.41, 0.24], Frame => [0.58, 0.41, 0.24], Handle => BRASS]),
+    arch!("tool_chest", dr::tool_chest, [Body, Door], [Body => [0.76, 0.08, 0.08], Door => [0.76, 0.08, 0.08], Top => BLACK, Handle => STEEL, Metal => STEEL, Tyre => BLACK]),
+    arch!("medical_cart", dr::medical_cart, [Body], [Body => [0.88, 0.89, 0.90], Door => [0.50, 0.68, 0.84], Top => [0.55, 0.56, 0.58], Metal => STEEL, Handle => STEEL, Tyre => BLACK]),
+    arch!("changing_table", dr::changing_table, [Body, Door, Top, Frame], [Body => WHITE, Door => WHITE, Top => WHITE, Frame => WHITE, Cushion => [0.74, 0.85, 0.90], Handle => STEEL]),
     arch!("table", f::table, [Top, Frame], []),
     arch!("round_table", f::round_table, [Top, Frame], []),
     arch!("desk", f::desk, [Top, Body, Door, Frame], []),
