@@ -119,7 +119,7 @@ macro_rules! arch {
 /// Every archetype.
 pub const ARCHETYPES: &[Archetype] = &[
     arch!("box", m::solid_box, [Body], []),
-    arch!("backpack", pk::backpack, [Body, Top], [Body => [0.18, 0.33, 0.52], Top => [0.14, 0.26, 0.42], Cushion => [0.16, 0.30, 0.48], Handle => BLACK]),
+    arch!("backpack", pk::backpack, [Body, Top], [Body => [0.18, 0.33, 0.52], Top => [0.16, 0.17, 0.19], Cushion => [0.16, 0.17, 0.19], Handle => BLACK]),
     arch!("bathroom_scale", pk::bathroom_scale, [Body], [Body => WHITE, Top => [0.80, 0.84, 0.86], Screen => [0.12, 0.12, 0.13], Canvas => WHITE, Handle => [0.85, 0.12, 0.10]]),
     arch!("bread_bin", pk::bread_bin, [Body, Top], [Body => [0.90, 0.88, 0.80], Top => [0.90, 0.88, 0.80], Handle => [0.55, 0.38, 0.22]]),
     arch!("litter_box", pk::litter_box, [Top, Body], [Body => [0.50, 0.52, 0.56], Top => [0.86, 0.86, 0.84], Interior => BLACK, Handle => [0.50, 0.52, 0.56]]),

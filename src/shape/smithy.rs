@@ -266,7 +266,7 @@ pub fn train_set(b: &mut Builder) {
     }
     // The train on the front straight: an engine with a cab and a funnel, then two wagons.
     let car = (0.12 * b.w).min(0.15);
-    let (cw, ch) = (0.8 * g, (h - rail).min(0.6 * car));
+    let (cw, ch) = (0.8 * g, (h - rail).min(0.8 * car));
     let y = ry;
     let z = rail;
     let x0 = 0.2 * straight + car;
