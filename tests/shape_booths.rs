@@ -69,6 +69,10 @@ fn none_of_these_is_drawn_by_the_archetype_of_another_thing() {
         ("train set", "box"),
         ("turnstile", "box"),
         ("workbench vise", "box"),
+        ("cardboard box", "box"),
+        ("crate", "box"),
+        ("cargo container", "box"),
+        ("hay bale", "box"),
         ("forge", "fireplace"),
         ("furnace", "fireplace"),
         ("camping stove", "stove"),
@@ -87,16 +91,48 @@ fn none_of_these_is_drawn_by_the_archetype_of_another_thing() {
         .map(|(c, a)| format!("{c} is still a {a}"))
         .collect();
     assert!(wrong.is_empty(), "{wrong:#?}");
-    // Real boxes stay boxes.
-    for c in [
-        "cardboard box",
-        "crate",
-        "cargo container",
-        "stage",
-        "pedestal",
-    ] {
+}
+
+/// Real boxes keep a box's outline (their parts fill the size box's footprint at its foot and
+/// reach its top) and show what box they are: tape on cardboard, gaps between a crate's boards,
+/// ribs down a container's sides, twine round a bale.
+#[test]
+fn real_boxes_stay_boxes_with_the_marks_of_their_kind() {
+    for c in ["cardboard box", "crate", "cargo container", "hay bale"] {
+        for size in sized(c, [1.2, 0.9, 1.1]) {
+            let s = at(c, size);
+            let pts = all(&s);
+            let low = within(&pts, |p| p[2] < 0.05 * size[2]);
+            let (x0, x1) = range(&low, 0);
+            let (y0, y1) = range(&low, 1);
+            assert!(
+                x1 - x0 > 0.9 * size[0] && y1 - y0 > 0.9 * size[1],
+                "{c} {size:?}: its foot is not the box's"
+            );
+            assert!(range(&pts, 2).1 > 0.98 * size[2], "{c} {size:?}: low");
+        }
+    }
+    for c in ["stage", "pedestal"] {
         assert_eq!(archetype_of(c), "box", "{c}");
     }
+    let size = sized("cardboard box", [1.0; 3])[0];
+    let tape = of(&at("cardboard box", size), Role::Handle);
+    assert_eq!(runs(&tape, 2, 0.01), 2, "tape on two boxes' lids");
+    let size = sized("crate", [1.0; 3])[0];
+    let gaps = within(&of(&at("crate", size), Role::Interior), |p| {
+        p[1] < -0.45 * size[1]
+    });
+    assert!(!gaps.is_empty(), "no gaps between a crate's boards");
+    let size = sized("cargo container", [1.0; 3])[0];
+    let side = within(&all(&at("cargo container", size)), |p| {
+        p[0] > size[0] / 2.0 - 0.015 && (p[2] - 0.5 * size[2]).abs() < 0.05
+    });
+    assert!(runs(&side, 1, 0.04) >= 12, "{} ribs", runs(&side, 1, 0.04));
+    let size = sized("hay bale", [1.0; 3])[0];
+    let twine = within(&of(&at("hay bale", size), Role::Handle), |p| {
+        p[2] > 0.99 * size[2]
+    });
+    assert_eq!(runs(&twine, 0, 0.02), 2, "two twines");
 }
 
 #[test]

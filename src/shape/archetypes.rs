@@ -13,6 +13,7 @@ use super::clearglass as cg;
 use super::clocks as ck;
 use super::coast as co;
 use super::crafts as cr;
+use super::crates as cx;
 use super::daily as d;
 use super::displays as dp;
 use super::drawers as dr;
@@ -118,9 +119,13 @@ macro_rules! arch {
 
 /// Every archetype.
 pub const ARCHETYPES: &[Archetype] = &[
-    arch!("box", m::solid_box, [Body], []),
+    arch!("box", m::solid_box, [Body, Top], []),
+    arch!("cardboard_boxes", cx::cardboard_boxes, [Body], [Body => [0.70, 0.54, 0.36], Handle => [0.78, 0.66, 0.48]]),
+    arch!("crate", cx::crate_box, [Body, Top, Frame], [Body => [0.68, 0.52, 0.34], Top => [0.68, 0.52, 0.34], Frame => [0.60, 0.45, 0.28], Interior => [0.25, 0.18, 0.11]]),
+    arch!("cargo_container", cx::cargo_container, [Body, Door], [Body => [0.72, 0.22, 0.14], Door => [0.72, 0.22, 0.14], Frame => [0.62, 0.19, 0.12], Metal => [0.30, 0.30, 0.32], Handle => [0.55, 0.56, 0.58]]),
+    arch!("hay_bale", cx::hay_bale, [Body], [Body => [0.86, 0.74, 0.42], Handle => [0.55, 0.42, 0.25]]),
     arch!("backpack", pk::backpack, [Body, Top], [Body => [0.18, 0.33, 0.52], Top => [0.16, 0.17, 0.19], Cushion => [0.16, 0.17, 0.19], Handle => BLACK]),
-    arch!("bathroom_scale", pk::bathroom_scale, [Body], [Body => WHITE, Top => [0.80, 0.84, 0.86], Screen => [0.12, 0.12, 0.13], Canvas => WHITE, Handle => [0.85, 0.12, 0.10]]),
+    arch!("bathroom_scale", pk::bathroom_scale, [Body], [Body => WHITE, Glass => [0.80, 0.84, 0.86], Screen => [0.12, 0.12, 0.13], Canvas => WHITE, Handle => [0.85, 0.12, 0.10]]),
     arch!("bread_bin", pk::bread_bin, [Body, Top], [Body => [0.90, 0.88, 0.80], Top => [0.90, 0.88, 0.80], Handle => [0.55, 0.38, 0.22]]),
     arch!("litter_box", pk::litter_box, [Top, Body], [Body => [0.50, 0.52, 0.56], Top => [0.86, 0.86, 0.84], Interior => BLACK, Handle => [0.50, 0.52, 0.56]]),
     arch!("magazines", pk::magazines, [Books], [Canvas => WHITE]),

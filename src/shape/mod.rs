@@ -25,6 +25,7 @@ mod clearglass;
 mod clocks;
 mod coast;
 mod crafts;
+mod crates;
 mod daily;
 mod displays;
 mod drawers;

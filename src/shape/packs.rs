@@ -84,7 +84,7 @@ pub fn bathroom_scale(b: &mut Builder) {
     );
     b.frustum(Body, [0.0, 0.0, 0.0], hw, hd, 1.0, 0.85 * h);
     b.cuboid(
-        Top,
+        Glass,
         [-0.8 * hw, -0.85 * hd, 0.85 * h],
         [0.8 * hw, 0.45 * hd, h],
     );
