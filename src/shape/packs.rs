@@ -151,8 +151,8 @@ pub fn magazines(b: &mut Builder) {
     let n = ((h / 0.008).floor() as usize).clamp(1, 5);
     let t = h / n as f64;
     for k in 0..n {
-        let a = [0.0, 0.09, -0.06, 0.13, -0.1][k];
-        let (s, c) = (a as f64).sin_cos();
+        let a: f64 = [0.0, 0.09, -0.06, 0.13, -0.1][k];
+        let (s, c) = a.sin_cos();
         // Shrunk so the turned magazine stays inside the footprint.
         let (mx, my) = (
             (hw - s.abs() * hd) / c.max(0.5),
