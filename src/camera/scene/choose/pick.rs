@@ -20,6 +20,10 @@ const POOR: f64 = 6.0;
 /// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
 /// loses, so a poor view that frames well is still taken before one that does not.
 const GOOD: f64 = 24.0;
+/// A blocker at the lens (`faults.rs`) costs this many [`POOR`]: it hides the room behind it
+/// (a shelf's flank or a display case filling the frame's side), worse than a view that is a
+/// little bare, yet less than framing well gains.
+const BLOCKER_FAULTS: f64 = 2.0;
 /// What a near copy of a view already taken loses on top of [`POOR`]: together more than
 /// half of [`GOOD`], so a room with one spot to stand on turns to a new direction
 /// (`sweep.rs`) rather than repeating a well framed picture.
@@ -200,7 +204,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - back_penalty(&c.stats)
                 - 16.0 * (c.occluder - 0.05).max(0.0)
                 - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
-                - POOR * (bare + copy + blocker + grazing)
+                - POOR * (bare + copy + BLOCKER_FAULTS * blocker + grazing)
                 - COPY_MORE * copy
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
