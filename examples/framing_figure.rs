@@ -15,8 +15,8 @@
 //! (defaults: /work/shared/prompts/fidelity_dev.json, 30 prompts, 8 views of 512²; then the
 //! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
 use dreamscene::camera::scene::{
-    alike, bare_wall_share, blocker_share, explore_path, frame_share, grazing_share, render_views,
-    view_faults, view_stats, SceneBox,
+    alike, bare_wall_share, blocker_of, blocker_share, explore_path, frame_share, grazing_share,
+    render_views, view_faults, view_stats, SceneBox,
 };
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -191,8 +191,10 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
                         alike((c, &shares), (&cams[j], &other))
                     })
                     .fold(0.0, f64::max);
+                let by = blocker_of(&scene, c, &shares)
+                    .map_or(String::new(), |b| format!(" ({})", scene.objects[b].id));
                 println!(
-                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} nearest {:.2} blocker {:.2} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
+                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
                     k + 1,
                     s.in_view,
                     s.largest,

@@ -203,12 +203,20 @@ fn locked(
         eprintln!("--draft: a draft scene from the shape priors, without the diffusion models");
     }
     let renders = out.join("renders");
+    let mut rendered = 0;
     if a.renders > 0 {
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_chosen(&g, &layout, a.renders, a.resolution, &renders)?;
+        rendered = render_chosen(&g, &layout, a.renders, a.resolution, &renders)?;
         eprintln!(
-            "renders: {} views chosen by what they show; contact sheet {}/overview.png",
-            a.renders,
+            "renders: {rendered} views chosen by what they show{}; contact sheet {}/overview.png",
+            if rendered < a.renders {
+                format!(
+                    " (of {} asked: the room gives no more distinct good ones)",
+                    a.renders
+                )
+            } else {
+                String::new()
+            },
             renders.display()
         );
     }
@@ -221,7 +229,7 @@ fn locked(
         report.environment_gaussians,
         start.elapsed().as_secs_f64(),
         if a.renders > 0 {
-            format!("{} views in {}", a.renders, renders.display())
+            format!("{rendered} views in {}", renders.display())
         } else {
             "no renders".to_string()
         },

@@ -25,8 +25,8 @@ pub(super) fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<Option<St
         }
         let layout = Layout::read(&out.join("layout.json"))?;
         let g = dreamscene::splat::ply::read_ply(&out.join("scene.ply"))?;
-        render_chosen(&g, &layout, a.renders, a.resolution, &dir)?;
-        return Ok(Some(format!("the {} views", a.renders)));
+        let n = render_chosen(&g, &layout, a.renders, a.resolution, &dir)?;
+        return Ok(Some(format!("the {n} views")));
     }
     let cams = dreamscene::camera::read_cameras(&cams_path)?;
     let view = |c: &Camera| dir.join(format!("{}.png", c.img_name));
@@ -52,20 +52,22 @@ pub(super) fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<Option<St
 /// The contact sheet of the views in `renders/`.
 const SHEET: &str = "overview.png";
 
-/// Renders `count` views chosen by what they show (`camera::scene::render_views`) into `dir`,
-/// with `dir/cameras.json` and the contact sheet `dir/overview.png`.
+/// Renders up to `count` views chosen by what they show (`camera::scene::render_views`; a room
+/// that cannot give that many distinct good pictures gets fewer) into `dir`, with
+/// `dir/cameras.json` and the contact sheet `dir/overview.png`. Returns how many it rendered.
 pub(super) fn render_chosen(
     g: &Gaussians,
     layout: &Layout,
     count: usize,
     res: u32,
     dir: &Path,
-) -> Result<()> {
+) -> Result<usize> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;
-    render_views_to(g, &cams, dir, |_| true)
+    render_views_to(g, &cams, dir, |_| true)?;
+    Ok(cams.len())
 }
 
 /// Renders `cams` of `g`, writes the views `write` picks into `dir` and the contact sheet of all

@@ -15,7 +15,9 @@
 //! rather than its back, with no object close in the foreground (nor standing in the frame's
 //! middle like a pillar: a floor lamp before the sofa, nor cut by the frame's bottom: chair
 //! backs before the sideboard), and far (in place or direction) from the views already taken
-//! (a near copy costs more than framing well gains). Host-only.
+//! (a near copy costs more than framing well gains). Past the first few views only clean views
+//! that frame well are taken: a small room gets fewer pictures rather than near copies, views
+//! past a wardrobe at the lens or close-ups of a bed. Host-only.
 use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
 use super::views::FLAT;
 use super::views::{facing, hidden_share, in_frame, screen_box, view_stats, ViewStats};
@@ -223,8 +225,9 @@ struct Candidate {
     total: f64,
 }
 
-/// `count` render views of `scene` chosen by what they show (see the module doc), named
-/// `view_0000`…; every camera is a valid viewpoint. An empty scene gets views of the room from
+/// Up to `count` render views of `scene` chosen by what they show (see the module doc), named
+/// `view_0000`…; every camera is a valid viewpoint. Asked for more than four, a
+/// room that cannot give that many distinct, clean views that frame well gets fewer. An empty scene gets views of the room from
 /// its edge towards the centre.
 pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> Vec<Camera> {
     let eye = eye_height(scene);

@@ -129,6 +129,12 @@ fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
 /// given each object's share of the frame. What it stands before is the room: another object
 /// in frame, or the wall or ground edge the view looks at.
 pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
+    blocker_of(scene, cam, shares).map_or(0.0, |k| shares[k])
+}
+
+/// The index of the object that is the largest blocker of `cam`'s view (see
+/// [`blocker_share`]), given each object's share of the frame.
+pub fn blocker_of(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> Option<usize> {
     let dists: Vec<f64> = scene
         .objects
         .iter()
@@ -156,8 +162,7 @@ pub fn blocker_share(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> f64 {
                 && far > dists[k] + BLOCKER_BEHIND
                 && (dists[k] < near || column(o))
         })
-        .map(|k| shares[k])
-        .fold(0.0, f64::max)
+        .max_by(|a, b| shares[*a].total_cmp(&shares[*b]))
 }
 
 /// How much two views show the same: over the objects, the smaller of the shares of the frame

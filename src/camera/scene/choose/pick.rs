@@ -20,6 +20,10 @@ const POOR: f64 = 6.0;
 /// What a view gains for framing well ([`ViewStats::framed_well`]): more than any one fault
 /// loses, so a poor view that frames well is still taken before one that does not.
 const GOOD: f64 = 24.0;
+/// A blocker at the lens (`faults.rs`) costs this many [`POOR`]: it hides the room behind it
+/// (a shelf's flank or a display case filling the frame's side), worse than a view that is a
+/// little bare, yet less than framing well gains.
+const BLOCKER_FAULTS: f64 = 2.0;
 /// What a near copy of a view already taken loses on top of [`POOR`]: together more than
 /// half of [`GOOD`], so a room with one spot to stand on turns to a new direction
 /// (`sweep.rs`) rather than repeating a well framed picture.
@@ -32,6 +36,14 @@ const WALL_PER_SHARE: f64 = 12.0;
 /// The share of the views that see the focal object from its front, looking the way the room
 /// looks (3 of 8).
 const FOCAL_VIEWS: f64 = 0.375;
+
+/// Asked for more views than this, a room gets after its first view only views that frame
+/// well and are no near copy of a view taken, and past this many (a row of the contact sheet)
+/// only clean ones ([`ViewFaults`](super::super::ViewFaults): not mostly bare, no blocker at
+/// the lens, no panel edge-on). A room that cannot give the views asked for (a box room with one spot to stand
+/// on, a bedroom that is mostly bed) gets fewer distinct pictures rather than copies and
+/// close-ups. Asked for this many or fewer, a room gets them all.
+pub(in crate::camera::scene) const ALWAYS: usize = 4;
 
 /// How much two views show the same: over the objects, the shares of the frame both give an
 /// object (the smaller), summed, over the larger of the two views' sums; times how alike their
@@ -96,6 +108,8 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
     let mut taken: Vec<usize> = vec![];
     let mut walls: Vec<Option<f64>> = vec![None; cands.len()];
     for _ in 0..count.min(cands.len()) {
+        // Past [`ALWAYS`] views only clean ones are taken (see there).
+        let strict = count > ALWAYS && taken.len() >= ALWAYS;
         // Each candidate's score before the bare wall it shows (costly to measure, so measured
         // only for the candidates that could still win, best first).
         let mut scores: Vec<(usize, f64)> = vec![];
@@ -162,6 +176,11 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 flag(c.blocker > 0.0),
                 flag(c.grazing > 0.0),
             );
+            if (count > ALWAYS && !taken.is_empty() && (copy > 0.0 || good == 0.0))
+                || (strict && bare + blocker + grazing > 0.0)
+            {
+                continue;
+            }
             let largest = c.piece;
             let over = (largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
@@ -185,7 +204,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - back_penalty(&c.stats)
                 - 16.0 * (c.occluder - 0.05).max(0.0)
                 - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
-                - POOR * (bare + copy + blocker + grazing)
+                - POOR * (bare + copy + BLOCKER_FAULTS * blocker + grazing)
                 - COPY_MORE * copy
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
@@ -203,6 +222,9 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 break;
             }
             let wall = *walls[i].get_or_insert_with(|| bare_wall_share(scene, &cands[i].cam));
+            if strict && wall > BARE_WALL {
+                continue;
+            }
             let score = score - wall_penalty(wall);
             if best.is_none_or(|(_, s)| score > s) {
                 best = Some((i, score));

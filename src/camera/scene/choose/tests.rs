@@ -227,7 +227,11 @@ fn small_rooms_get_few_poor_views() {
     let (mut clean, mut bare, mut well, mut total) = (0, 0, 0, 0);
     for prompt in prompts {
         let (scene, cams) = eight_views(prompt);
-        assert_eq!(cams.len(), 8, "{prompt}: eight views");
+        assert!(
+            (pick::ALWAYS..=8).contains(&cams.len()),
+            "{prompt}: {} views",
+            cams.len()
+        );
         let faults = crate::camera::scene::view_faults(&scene, &cams);
         clean += faults.iter().filter(|f| f.clean()).count();
         bare += faults.iter().filter(|f| f.bare).count();
@@ -241,13 +245,12 @@ fn small_rooms_get_few_poor_views() {
     // by them the pick before the bare-wall rule gets 14 of 40 clean, the pick before views
     // stepped back to the wall 18, the pick before small rooms were looked down on and every
     // spot turned 18 to 20, this one 26.
-    assert!(clean * 40 >= total * 24, "{clean} of {total} views clean");
-    // Bare also counts views of mostly bare wall: 12 of 40 here before, 8 now.
-    assert!(bare * 5 <= total, "{bare} of {total} views mostly bare");
-    assert!(
-        well * 40 >= total * 39,
-        "{well} of {total} views framed well"
-    );
+    // Since a room asked for eight views takes past its fourth only clean views that frame
+    // well (and no near copy after its first), fewer where it runs short: 34 of 37.
+    assert!(clean * 10 >= total * 9, "{clean} of {total} views clean");
+    // Bare also counts views of mostly bare wall: 12 of 40 here before, 8, now 0.
+    assert!(bare * 20 <= total, "{bare} of {total} views mostly bare");
+    assert_eq!(well, total, "{well} of {total} views framed well");
 }
 
 #[test]
@@ -268,7 +271,11 @@ fn views_show_the_room_not_bare_wall() {
     let (mut clean, mut wall, mut total) = (0, 0, 0);
     for prompt in prompts {
         let (scene, cams) = eight_views(prompt);
-        assert_eq!(cams.len(), 8, "{prompt}: eight views");
+        assert!(
+            (pick::ALWAYS..=8).contains(&cams.len()),
+            "{prompt}: {} views",
+            cams.len()
+        );
         let faults = crate::camera::scene::view_faults(&scene, &cams);
         clean += faults.iter().filter(|f| f.clean()).count();
         wall += cams
@@ -277,9 +284,10 @@ fn views_show_the_room_not_bare_wall() {
             .count();
         total += cams.len();
     }
-    assert!(clean * 48 >= total * 40, "{clean} of {total} views clean");
+    // With fewer views where a room runs short of clean ones: 46 of 46 and none.
+    assert!(clean * 48 >= total * 46, "{clean} of {total} views clean");
     assert!(
-        wall * 24 <= total,
+        wall * 40 <= total,
         "{wall} of {total} views mostly bare wall"
     );
 }
@@ -372,9 +380,9 @@ fn near_identical(cams: &[Camera]) -> usize {
 fn views_of_a_room_with_few_spots_turn_rather_than_repeat() {
     // A box room has one or two spots to stand on: aimed only at its objects, 8 views from
     // there were near-identical pictures (the box room office: 16 pairs within 0.5 m and 20°,
-    // the box room with a bed 10, the small study 10). Now the spots turn to other
-    // directions and a near copy costs more than framing well gains: 9, 3 and 1 (42 pairs
-    // before in all five rooms, 13 now).
+    // the box room with a bed 10, the small study 10). Then the spots turned to other
+    // directions and a near copy cost more than framing well gains: 9, 3 and 1 (42 pairs
+    // before in all five rooms, 13 then); now a near copy is never taken: none.
     let prompts = [
         "a box room office with a desk, an office chair and a bookcase",
         "a box room with a single bed and a chest of drawers",
@@ -385,12 +393,17 @@ fn views_of_a_room_with_few_spots_turn_rather_than_repeat() {
     let mut pairs = vec![];
     for prompt in prompts {
         let (scene, cams) = eight_views(prompt);
-        assert_eq!(cams.len(), 8, "{prompt}: eight views");
+        assert!(
+            (1..=8).contains(&cams.len()),
+            "{prompt}: {} views",
+            cams.len()
+        );
         assert!(cams.iter().all(|c| valid_viewpoint(&scene, c.position)));
         pairs.push((prompt, near_identical(&cams)));
     }
     let total: usize = pairs.iter().map(|p| p.1).sum();
-    assert!(total <= 16, "near-identical pairs of views: {pairs:?}");
+    // Since a room asked for eight views gets no near copy (fewer views where it runs short): 0.
+    assert!(total <= 2, "near-identical pairs of views: {pairs:?}");
 }
 
 #[test]
@@ -422,4 +435,70 @@ fn views_of_a_dining_table_keep_chair_backs_out_of_the_frame_foot() {
         }
     }
     assert!(cut.len() <= 3, "chair backs at the frame's foot: {cut:?}");
+}
+
+#[test]
+fn a_room_short_of_good_views_gets_fewer_distinct_ones() {
+    // "a tiny study with a desk and a chair" (1.8 m square, one spot to stand on) got eight
+    // views that were four pictures twice over, and a tiny bedroom eight views of one bed, six
+    // of them near copies. Asked for eight, a room now gets after its first view only views
+    // that frame well and copy none taken, and past the fourth only clean ones: fewer pictures,
+    // each its own.
+    let short = [
+        "a tiny study with a desk and a chair",
+        "I want a bedroom that's tiny - just a single bed and a nightstand",
+        "a box room with a single bed and a lamp",
+        "a tiny office with a desk and an office chair",
+    ];
+    for prompt in short {
+        let (scene, cams) = eight_views(prompt);
+        assert!(
+            !cams.is_empty() && cams.len() < 8,
+            "{prompt}: {} views",
+            cams.len()
+        );
+        let faults = crate::camera::scene::view_faults(&scene, &cams);
+        for (v, (c, f)) in cams.iter().zip(&faults).enumerate().skip(1) {
+            assert!(
+                !f.copy && view_stats(&scene, c).framed_well(),
+                "{prompt}: view {v} {f:?}"
+            );
+            assert!(v < pick::ALWAYS || f.clean(), "{prompt}: view {v} {f:?}");
+        }
+    }
+    // A room with space to spare still gets all eight; asked for four or fewer, a room gets
+    // them all.
+    for prompt in [
+        "a cozy living room",
+        "a dining room for eight",
+        "a kitchen with an island and three bar stools",
+    ] {
+        assert_eq!(eight_views(prompt).1.len(), 8, "{prompt}");
+    }
+    let (scene, _) = eight_views(short[0]);
+    assert_eq!(
+        render_views(&scene, pick::ALWAYS, 64, 64).len(),
+        pick::ALWAYS
+    );
+}
+
+#[test]
+fn views_of_small_shops_keep_shelves_and_cases_off_the_lens() {
+    // "a small bakery" had a pastry case, a counter or a shelf's flank close before the lens in
+    // 7 of its 8 views; a small bookshop 6 of 8, a small dining room 5 of 8 (18 in all). A
+    // blocker now costs twice a bare view and a room short of clean views gets fewer: 2 of 6,
+    // 3 of 5 and 1 of 4.
+    let prompts = [
+        "a small bakery",
+        "a small bookshop with shelves and a reading chair",
+        "a small dining room with a round table and four chairs",
+    ];
+    let mut blockers = vec![];
+    for prompt in prompts {
+        let (scene, cams) = eight_views(prompt);
+        let faults = crate::camera::scene::view_faults(&scene, &cams);
+        blockers.push((prompt, faults.iter().filter(|f| f.blocker).count()));
+    }
+    let total: usize = blockers.iter().map(|b| b.1).sum();
+    assert!(total <= 7, "views with a blocker at the lens: {blockers:?}");
 }
