@@ -89,6 +89,9 @@ pub struct Reading {
     /// pirate ship's hold", "a space station galley"): the template lends only its generic
     /// furniture.
     pub not_literal: Option<String>,
+    /// "a reading nook by the window": where the text puts the place itself, said right after
+    /// its name (the planner gives it to the place's main piece, its seat).
+    pub place_anchor: Option<Anchor>,
 }
 
 fn re(p: &str) -> Regex {
