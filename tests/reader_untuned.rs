@@ -188,3 +188,28 @@ fn a_place_for_eight_that_seats_eight_has_no_other_default_seats() {
     let s = plan("an open-plan office with eight desks, each with an office chair");
     assert!(number(&s, "chair") > 8, "{:?}", keys(&s));
 }
+
+#[test]
+fn a_place_name_written_with_a_slip_is_that_place() {
+    for (prompt, thing) in [
+        (
+            "a dinning room with a tabel for six and a sidebaord",
+            "dining table",
+        ),
+        ("a livng room with a sofa", "tv"),
+        ("a dinign room with a sideboard", "dining chair"),
+    ] {
+        let s = plan(prompt);
+        assert!(number(&s, thing) >= 1, "{prompt}: {:?}", keys(&s));
+    }
+    let s = plan("a dinning room with a tabel for six and a sidebaord");
+    assert_eq!(number(&s, "dining chair"), 6, "{:?}", keys(&s));
+    // a letter changed for another makes another word: a glass room is no classroom
+    let s = plan("a glass room with two chairs");
+    assert_eq!(
+        number(&s, "desk") + number(&s, "board"),
+        0,
+        "{:?}",
+        keys(&s)
+    );
+}

@@ -15,6 +15,7 @@ mod place;
 mod placements;
 mod room;
 mod scene;
+mod spelling;
 mod words;
 use counts::read_counts;
 use placements::read_placements;
@@ -101,6 +102,7 @@ fn re(p: &str) -> Regex {
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let t = words::compound_numbers(&normalise(text));
+    let t = spelling::mend_place_names(kb, &t);
     let mut r = Reading {
         text: t.clone(),
         scale: 1.0,
