@@ -213,3 +213,18 @@ fn a_place_name_written_with_a_slip_is_that_place() {
         keys(&s)
     );
 }
+
+#[test]
+fn a_bedsit_is_one_small_room_and_its_kitchenette_the_kitchen_counter() {
+    for prompt in [
+        "a bedsit with a sofa bed, a kitchenette and a tiny table with two chairs",
+        "a bedsit with a single bed and a kitchenette",
+        "a student bedsit with a bed, a desk and a fridge",
+    ] {
+        let s = plan(prompt);
+        let area = s.room.map_or(f64::MAX, |r| r.size[0] * r.size[1]);
+        assert!(area <= 25.0, "{prompt}: a bedsit is small: {area} m²");
+        assert_eq!(number(&s, "kitchenette"), 0, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "bed"), 1, "{prompt}: {:?}", keys(&s));
+    }
+}
