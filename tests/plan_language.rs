@@ -440,7 +440,7 @@ fn a_classroom_faces_its_board_and_every_seat_is_reached() {
     for (p, seed) in [
         ("a classroom for 24 students", 0),
         ("a schoolroom with ten desks and a whiteboard", 1),
-        ("an exam hall for 30 students", 2),
+        ("a classroom for 30 pupils", 2),
     ] {
         let (_, l, by) = laid_out(p, seed);
         let of = |c: &str| -> Vec<&PlacedObject> {

@@ -15,6 +15,7 @@ mod place;
 mod placements;
 mod room;
 mod scene;
+mod spelling;
 mod words;
 use counts::read_counts;
 use placements::read_placements;
@@ -89,6 +90,9 @@ pub struct Reading {
     /// pirate ship's hold", "a space station galley"): the template lends only its generic
     /// furniture.
     pub not_literal: Option<String>,
+    /// "a reading nook by the window": where the text puts the place itself, said right after
+    /// its name (the planner gives it to the place's main piece, its seat).
+    pub place_anchor: Option<Anchor>,
 }
 
 fn re(p: &str) -> Regex {
@@ -98,6 +102,7 @@ fn re(p: &str) -> Regex {
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let t = words::compound_numbers(&normalise(text));
+    let t = spelling::mend_place_names(kb, &t);
     let mut r = Reading {
         text: t.clone(),
         scale: 1.0,

@@ -8,7 +8,8 @@
 //! Stages, in order (each a submodule working on one `Draft`): `roles` (the scene's defaults
 //! and the category each mention means), `sizing` (sizes the text gives), `counts` (counts),
 //! `seats` (seats at tables, "a table for six"), `companions` (what the counts set), `roles`
-//! again (what negation and named roles take away), `purpose` (seats for someone), `describe` (styles and descriptions),
+//! again (what negation and named roles take away), `purpose` (seats for someone; after `companions`, seats for the
+//! people the place is for), `describe` (styles and descriptions),
 //! `relations` (anchors and relations), `sizing` (the room), `describe` (what was understood).
 use super::capacity::fit;
 use super::kb::{KnowledgeBase, SceneKind};
@@ -199,6 +200,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     roles::take_away(&mut d);
     purpose::seats_for_someone(&mut d);
     companions::companions(&mut d, people);
+    purpose::seats_for_all(&mut d, people);
     supports::per_instance(&mut d);
     counts::clamp(&mut d);
     if d.counts.is_empty() {

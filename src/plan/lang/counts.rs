@@ -255,6 +255,9 @@ pub(super) fn read_counts(r: &mut Reading) {
                 let between = t[m.end..nm.start].trim_end();
                 if between.ends_with(word) && nm.reference {
                     Some(referent(r, k + 1))
+                } else if between.ends_with(word) && !nm.negated {
+                    // "a tea set on each table" of a tea room: the tables it has, named here
+                    Some(k + 1)
                 } else if each_of_the.is_match(between) {
                     // "a lamp on each of the two nightstands": the nightstands, named here
                     Some(if nm.reference {

@@ -135,6 +135,13 @@ pub(super) fn read_placements(r: &mut Reading) {
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
                 used.push((m.start(), m.end()));
+            } else if r
+                .scene
+                .is_some_and(|(_, _, end)| end <= m.start() && t[end..m.start()].trim().is_empty())
+            {
+                // "a reading nook by the window": said of the place, right after its name
+                r.place_anchor.get_or_insert(*a);
+                used.push((m.start(), m.end()));
             }
         }
     }

@@ -26,7 +26,7 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
 
     // "for 24 students", "for eight people", "a dining room seating ten"
     let people = re(
-        r"\b(?:for|seating|that seats|which seats|to seat) (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;!?]|$)",
+        r"\b(?:for|seating|that seats|which seats|to seat) (\d+|[a-z]+)(?: (?:students|pupils|kids|children|people|persons|guests|diners|seats|employees|workers|players|customers|visitors))?(?:[ ,.;:!?]|$)",
     );
     for c in people.captures_iter(t) {
         let w = &c[1];
@@ -92,10 +92,10 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
                 }
             })
             .unwrap_or(false);
-        if object {
+        // "a boxroom": the size word is the place's own name
+        if object && scene_start != Some(pos) {
             continue;
         }
-        let _ = pos;
         scale = if factor < 1.0 {
             scale.min(factor)
         } else {

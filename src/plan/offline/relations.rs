@@ -48,6 +48,26 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
         .filter(|(_, a)| *a == Anchor::FaceWindow)
         .map(|&(mi, _)| mi)
         .collect();
+    // "a reading nook by the window": the place's main piece (what it cannot do without, else
+    // its first default), or what the text names in that piece's role, is where the place is
+    if let (Some(a), Some(s)) = (r.place_anchor, scene) {
+        let main = s
+            .objects
+            .iter()
+            .find(|(c, _)| s.essential.contains(c))
+            .or(s.objects.first())
+            .map(|(c, _)| c.as_str());
+        let role = main.and_then(crate::plan::roles::role_of);
+        let piece = main.filter(|c| counts.contains_key(*c)).or_else(|| {
+            counts
+                .keys()
+                .find(|k| role.is_some() && crate::plan::roles::role_of(k) == role)
+                .map(|k| k.as_str())
+        });
+        if let Some(c) = piece {
+            anchors.insert(c.to_string(), a);
+        }
+    }
     for &(mi, a) in &r.anchors {
         let c = meant(d, mi);
         if counts.contains_key(c) && (a == Anchor::FaceWindow || !facing.contains(&mi)) {

@@ -114,10 +114,9 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             .relations
             .iter()
             .any(|&(s, k, o)| s == i && o == i - 1 && matches!(k, Around | At));
-        if cats[i] == m.category
-            || !(between.trim_start().starts_with("with ") || round_it)
-            || between.contains([',', ';', '.'])
-        {
+        // "a big table in the middle, six chairs around it": said around it, a comma apart
+        let with = between.trim_start().starts_with("with ") && !between.contains([',', ';', '.']);
+        if cats[i] == m.category || !(with || round_it) {
             continue;
         }
         let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
@@ -241,7 +240,7 @@ pub(super) fn mention_kinds(d: &mut Draft) {
     // "shelves on the wall above them", "two tapestries on the wall": a thing said to be on
     // a wall is the kind of its noun that hangs there (a wall shelf, not a storage shelf)
     let on_wall = regex::Regex::new(
-        r"^,? (?:(?:hung|hanging|mounted|fixed|high) )?on (?:the|a|one|each|every) walls?\b",
+        r"^(?: of [a-z]+(?: [a-z]+)?)?,? (?:(?:hung|hanging|mounted|fixed|high) )?on (?:the|a|one|each|every) walls?\b",
     )
     .expect("valid regex");
     let table = crate::plan::gcp::classes::Placements::builtin();
@@ -441,7 +440,12 @@ fn in_scene(
         }
         _ => head.clone(),
     };
-    if crate::plan::roles::is_generic(&said) {
+    // a synonym of a generic name says no more than it ("a front desk" is a reception desk)
+    let generic = crate::plan::roles::is_generic(&said)
+        || kb
+            .object(&said)
+            .is_some_and(|o| o.category != said && crate::plan::roles::is_generic(&o.category));
+    if generic {
         if let Some(role) = crate::plan::roles::role_of(&m.category) {
             let filled = s
                 .objects

@@ -51,6 +51,7 @@ pub(super) fn plural_supports(d: &mut Draft) {
 /// the tables of a place with tables to sit at (a cafe's, a classroom's: its meal tables or
 /// pupil places) stay tables.
 pub(super) fn work_tables(d: &mut Draft) {
+    own_supports(d);
     for &(si, rel, oi) in &d.r.relations {
         let Some(m) = d.r.mentions.get(oi) else {
             continue;
@@ -69,6 +70,30 @@ pub(super) fn work_tables(d: &mut Draft) {
             .filter(|c| crate::plan::roles::role_of(c) == Some("work table"));
         if let (Some(desk), Some(c)) = (desk, d.cats.get_mut(oi)) {
             *c = desk.to_string();
+        }
+    }
+}
+
+/// "a sewing machine on a table" in a sewing room: a bare "table" that something is said to be
+/// on is the scene's default table made for it (the first of its supports in
+/// `kb/placement.txt` that the scene holds), not another table beside that one.
+fn own_supports(d: &mut Draft) {
+    let table = Placements::builtin();
+    for &(si, rel, oi) in &d.r.relations {
+        let (Some(m), Some(held)) = (d.r.mentions.get(oi), d.cats.get(si)) else {
+            continue;
+        };
+        let head = crate::plan::lang::singular(&m.text);
+        if rel != RelationKind::Over || head != "table" || m.negated || m.reference {
+            continue;
+        }
+        let Some(p) = table.get(held) else { continue };
+        let own = p
+            .supports
+            .iter()
+            .find(|c| d.defaults.contains_key(*c) && c.rsplit(' ').next() == Some(head.as_str()));
+        if let (Some(own), Some(c)) = (own, d.cats.get_mut(oi)) {
+            *c = own.clone();
         }
     }
 }
