@@ -44,8 +44,8 @@ pub fn canoe_rack(b: &mut Builder) {
     }
     // The hulls: long pointed shells upside down over the arms.
     let hulls = [
-        (levels[0], Body, 0.85 * hd, 0.17 * h),
-        (levels[1], Upholstery, 0.6 * hd, 0.11 * h),
+        (levels[0], Body, 0.8 * hd, 0.1 * h),
+        (levels[1], Upholstery, 0.55 * hd, 0.07 * h),
     ];
     for (z, role, r, t) in hulls {
         let z = z + 0.02;
@@ -59,14 +59,14 @@ fn hull(b: &mut Builder, role: super::materials::Role, z: f64, hl: f64, r: f64, 
     let l = 2.0 * hl;
     let profile = [
         (0.0, 0.0),
-        (0.3, 0.03),
-        (0.62, 0.1),
-        (0.88, 0.22),
-        (1.0, 0.38),
-        (1.0, 0.62),
-        (0.88, 0.78),
-        (0.62, 0.9),
-        (0.3, 0.97),
+        (0.15, 0.03),
+        (0.42, 0.1),
+        (0.75, 0.22),
+        (1.0, 0.4),
+        (1.0, 0.6),
+        (0.75, 0.78),
+        (0.42, 0.9),
+        (0.15, 0.97),
         (0.0, 1.0),
     ]
     .map(|(p, a)| [p * r, a * l])

@@ -118,7 +118,7 @@ pub fn dryer(b: &mut Builder) {
         [hw - 0.02, face - 0.03, 0.03],
     );
     b.cuboid(Body, [-hw, -hd + DRYER_BACK, 0.03], [hw, face, h]);
-    let panel = (0.17 * h).clamp(0.1, 0.16);
+    let panel = (0.15 * h).clamp(0.08, 0.13);
     b.cuboid(
         Top,
         [-hw + 0.01, face, h - panel],
@@ -146,8 +146,8 @@ pub fn dryer(b: &mut Builder) {
         [0.4 * b.w, hd - 0.012, h - 0.35 * panel],
     );
     // The door: large and dark, set high, a thin chrome rim round a smoked window.
-    let r = (0.4 * b.w).min(0.3 * h);
-    let zc = h - panel - 0.03 - r;
+    let r = (0.36 * b.w).min(0.27 * h);
+    let zc = h - panel - 0.02 - r;
     disc(b, Door, [0.0, face + 0.012, zc], Y, r, 0.024);
     band(b, Metal, [0.0, face + 0.025, zc], Y, r, 0.06 * r, 0.006);
     disc(b, Screen, [0.0, face + 0.025, zc], Y, 0.62 * r, 0.006);

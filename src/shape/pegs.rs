@@ -83,7 +83,7 @@ pub fn coat_hooks(b: &mut Builder) {
         disc(b, Metal, [*x, yf + 0.002, zh], Y, 0.012, 0.004);
     }
     let t = (b.d - 0.04).clamp(0.05, 0.2);
-    let cw = (0.42 * b.w / n as f64 * 2.0).min(0.26);
+    let cw = (0.36 * b.w / n as f64 * 2.0).min(0.24);
     let len = h - rail - 0.02;
     // The longest coat hangs to the floor of the size box: the drawn object rests on its hem.
     coat(b, 0, xs[0], yf, zh, zh, cw / 2.0, t);
