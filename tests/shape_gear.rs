@@ -301,3 +301,40 @@ fn things_once_drawn_as_a_plain_tube_have_parts_of_their_own() {
         "silo: no conical roof"
     );
 }
+
+#[test]
+fn a_flower_bucket_stand_holds_buckets_of_blooms_on_tiers_rising_to_the_back() {
+    for name in ["flower bucket stand", "flower stand"] {
+        for size in sizes(name, [1.3, 1.0, 0.9]) {
+            let s = at(name, size);
+            let buckets = of(&s, Role::Metal);
+            let blooms = of(&s, Role::Books);
+            // Separate buckets along the front row, counted at their feet (their rims may touch).
+            let z0 = range(&buckets, 2).0;
+            let feet: Vec<_> = buckets
+                .iter()
+                .filter(|p| p[1] > 0.25 * size[1] && p[2] < z0 + 0.03)
+                .cloned()
+                .collect();
+            assert!(
+                runs(&feet, 0, 0.01) >= 3,
+                "{name} {size:?}: no row of buckets"
+            );
+            assert!(
+                range(&blooms, 2).1 > range(&buckets, 2).1,
+                "{name}: no flowers over the buckets"
+            );
+            // The back row stands higher than the front row.
+            let lowest = |pick: &dyn Fn(&[f64; 3]) -> bool| {
+                let row: Vec<_> = buckets.iter().filter(|p| pick(p)).cloned().collect();
+                range(&row, 2).0
+            };
+            let front = lowest(&|p| p[1] > 0.25 * size[1]);
+            let back = lowest(&|p| p[1] < -0.25 * size[1]);
+            assert!(
+                back > front + 0.2 * size[2],
+                "{name}: tiers do not rise to the back"
+            );
+        }
+    }
+}

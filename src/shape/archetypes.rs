@@ -19,6 +19,7 @@ use super::crafts as cr;
 use super::daily as d;
 use super::displays as dp;
 use super::fixtures as fx;
+use super::florist as fl;
 use super::forms as fo;
 use super::frames as fr;
 use super::furniture as f;
@@ -422,6 +423,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("pet_bowl", bw::pet_bowl, [Metal], [Metal => STEEL, Tyre => BLACK, Soil => [0.50, 0.30, 0.15]]),
     arch!("laundry_basket", bw::laundry_basket, [Body], [Body => [0.78, 0.66, 0.46], Frame => [0.62, 0.50, 0.32], Interior => [0.45, 0.36, 0.24]]),
     arch!("water_jug", bw::water_jug, [Glass], [Glass => [0.55, 0.75, 0.92], Handle => [0.15, 0.35, 0.80], Interior => [0.40, 0.60, 0.80]]),
+    arch!("flower_bucket_stand", fl::flower_bucket_stand, [Frame], [Frame => [0.40, 0.30, 0.20], Top => [0.48, 0.36, 0.24], Metal => [0.66, 0.68, 0.70], Foliage => [0.22, 0.45, 0.20]]),
     arch!("bollard", tk::bollard, [Body, Top], [Body => [0.25, 0.25, 0.27], Top => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Frame => [0.55, 0.56, 0.58], Canvas => [0.95, 0.78, 0.10]]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
 ];

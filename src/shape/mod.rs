@@ -32,6 +32,7 @@ mod daily;
 mod displays;
 mod fittings;
 mod fixtures;
+mod florist;
 mod forms;
 mod frames;
 pub mod functions;
