@@ -10,16 +10,14 @@ use std::f64::consts::TAU;
 
 const Z: [f64; 3] = [0.0, 0.0, 1.0];
 
-/// An open bowl standing at the origin: foot radius `rb`, rim radius `r` at height `h`, walls
-/// `t` thick, its depth scaled by `ay` (an oval basket). The inside is drawn in `inner`.
+/// An open bowl standing at the origin, `[rb, r, h, t]`: foot radius `rb`, rim radius `r` at
+/// height `h`, walls `t` thick; its depth scaled by `ay` (an oval basket). The inside is drawn
+/// in `inner`.
 pub(super) fn open_bowl(
     b: &mut Builder,
     role: Role,
     inner: Role,
-    rb: f64,
-    r: f64,
-    h: f64,
-    t: f64,
+    [rb, r, h, t]: [f64; 4],
     ay: f64,
 ) {
     b.revolved(
@@ -68,7 +66,7 @@ pub fn fruit_bowl(b: &mut Builder) {
     let hb = 0.55 * h;
     b.frustum(Body, [0.0, 0.0, 0.0], 0.35 * r, 0.35 * r, 1.1, 0.12 * hb);
     let first = b.parts.len();
-    open_bowl(b, Body, Top, 0.4 * r, r, 0.88 * hb, 0.03 * r, 1.0);
+    open_bowl(b, Body, Top, [0.4 * r, r, 0.88 * hb, 0.03 * r], 1.0);
     b.translate_from(first, [0.0, 0.0, 0.12 * hb]);
     let zf = 0.4 * hb;
     let rf = 0.3 * r;
@@ -139,7 +137,13 @@ pub fn pet_bowl(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let r = hw.min(hd);
     band(b, Tyre, [0.0, 0.0, 0.0075], Z, 0.98 * r, 0.08 * r, 0.015);
-    open_bowl(b, Metal, Metal, 0.98 * r, 0.62 * r, h - 0.02, 0.02 * r, 1.0);
+    open_bowl(
+        b,
+        Metal,
+        Metal,
+        [0.98 * r, 0.62 * r, h - 0.02, 0.02 * r],
+        1.0,
+    );
     // The bowl flares outwards at its foot: the wide base is at the floor, the mouth above.
     band(b, Metal, [0.0, 0.0, h - 0.022], Z, 0.64 * r, 0.06 * r, 0.01);
     disc(b, Soil, [0.0, 0.0, 0.6 * h], Z, 0.62 * r, 0.01);
@@ -161,7 +165,7 @@ pub fn laundry_basket(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let ay = hd / hw;
     let rim = 0.78 * h;
-    open_bowl(b, Body, Interior, 0.88 * hw, hw, rim, 0.03 * hw, ay);
+    open_bowl(b, Body, Interior, [0.88 * hw, hw, rim, 0.03 * hw], ay);
     for k in 1..6 {
         let z = k as f64 / 6.0 * rim;
         let rz = 0.88 * hw + 0.12 * hw * z / rim;

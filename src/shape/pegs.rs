@@ -26,9 +26,9 @@ pub(super) fn hook(b: &mut Builder, role: Role, x: f64, y: f64, z: f64, l: f64) 
     );
 }
 
-/// A coat hanging from a hook at (`x`, `z`) on the wall face `y0`, `l` long and up to `hw`
-/// half wide and `t` thick: shoulders, a body widening to its hem, sleeves at its sides.
-fn coat(b: &mut Builder, variant: u32, x: f64, y0: f64, z: f64, l: f64, hw: f64, t: f64) {
+/// A coat hanging from a hook at `[x, y0, z]` (`y0` the wall face), `[l, hw, t]`: `l` long, up
+/// to `hw` half wide and `t` thick; shoulders, a body widening to its hem, sleeves at its sides.
+fn coat(b: &mut Builder, variant: u32, [x, y0, z]: [f64; 3], [l, hw, t]: [f64; 3]) {
     let yc = y0 + t / 2.0 + 0.005;
     b.push(
         Books,
@@ -86,9 +86,9 @@ pub fn coat_hooks(b: &mut Builder) {
     let cw = (0.36 * b.w / n as f64 * 2.0).min(0.24);
     let len = h - rail - 0.02;
     // The longest coat hangs to the floor of the size box: the drawn object rests on its hem.
-    coat(b, 0, xs[0], yf, zh, zh, cw / 2.0, t);
-    coat(b, 3, xs[1], yf, zh, 0.8 * len, cw / 2.0, 0.9 * t);
-    coat(b, 5, xs[3], yf, zh, 0.9 * len, cw / 2.0, t);
+    coat(b, 0, [xs[0], yf, zh], [zh, cw / 2.0, t]);
+    coat(b, 3, [xs[1], yf, zh], [0.8 * len, cw / 2.0, 0.9 * t]);
+    coat(b, 5, [xs[3], yf, zh], [0.9 * len, cw / 2.0, t]);
     // A bag on a long strap from the fourth hook... the third holds a hat.
     let (xb, zb) = (xs[4], zh - 0.45 * len);
     b.polyline(
