@@ -2,9 +2,13 @@
 //! default colours, and the function that lays out its parts (with the [`Builder`] of
 //! `builder.rs`, re-exported here for the layout modules).
 use super::appliances as a;
+use super::audio as au;
 use super::barriers as ba;
+use super::bellhop as bh;
 use super::bins as bn;
+use super::boathouse as bt;
 use super::booths as bo;
+use super::bowls as bw;
 pub use super::builder::{frame_along, Builder};
 use super::care as cw;
 use super::carts as ca;
@@ -18,6 +22,7 @@ use super::daily as d;
 use super::displays as dp;
 use super::drawers as dr;
 use super::fixtures as fx;
+use super::florist as fl;
 use super::forms as fo;
 use super::frames as fr;
 use super::furniture as f;
@@ -43,11 +48,13 @@ use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
 use super::orchard as oc;
+use super::ornaments as or;
 use super::ovens as ov;
 use super::packs as pk;
 use super::parlour as pa;
 use super::partitions as pn;
 use super::parts::Part;
+use super::pegs as pg;
 use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
@@ -59,6 +66,7 @@ use super::salon as sa;
 use super::scopes as sco;
 use super::sculpted as sc;
 use super::seats as se;
+use super::servers as sv;
 use super::sets as sx;
 use super::skeleton as sk;
 use super::sleepers as sl;
@@ -66,6 +74,8 @@ use super::smithy as sm;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
+use super::tanks as tk;
+use super::taps as tp;
 use super::things as t;
 use super::training as tr;
 use super::transit as tt;
@@ -432,6 +442,31 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("mast", co::mast, [Canvas], [Trunk => [0.45, 0.30, 0.17], Canvas => [0.93, 0.90, 0.80], Frame => [0.40, 0.27, 0.15], BlackKeys => [0.15, 0.12, 0.10], Upholstery => [0.80, 0.12, 0.10]]),
     arch!("fruit_tree", oc::fruit_tree, [Skin], [Skin => [0.80, 0.10, 0.10], Foliage => [0.25, 0.50, 0.18], Trunk => [0.35, 0.24, 0.15]]),
     arch!("blossom_tree", oc::blossom_tree, [Foliage], [Foliage => [0.96, 0.70, 0.80], Cushion => [0.99, 0.90, 0.93], Trunk => [0.25, 0.16, 0.12]]),
+    arch!("speaker", au::speaker, [Body], [Body => DARK_WOOD, Interior => [0.06, 0.06, 0.07], Handle => [0.75, 0.12, 0.10]]),
+    arch!("amp_combo", au::amp_combo, [Body], [Body => [0.10, 0.10, 0.10], Upholstery => [0.46, 0.45, 0.43], Canvas => [0.85, 0.80, 0.65], Metal => [0.78, 0.78, 0.80], Handle => [0.08, 0.08, 0.08], Frame => [0.12, 0.10, 0.09], Light => [0.95, 0.15, 0.10]]),
+    arch!("server_rack", sv::server_rack, [Body, Frame], [Body => [0.07, 0.07, 0.08], Frame => [0.10, 0.10, 0.11], Metal => [0.22, 0.22, 0.24], Pane => [0.10, 0.10, 0.11], Light => [0.30, 0.95, 0.45], Handle => [0.30, 0.60, 1.00], Canvas => [0.15, 0.35, 0.75]]),
+    arch!("coat_hooks", pg::coat_hooks, [Top], [Top => DARK_WOOD, Metal => BRASS, Frame => [0.45, 0.28, 0.16], Cushion => [0.25, 0.22, 0.20]]),
+    arch!("pegboard", pg::pegboard, [Top], [Top => [0.66, 0.52, 0.36], Interior => [0.20, 0.15, 0.10], Metal => [0.60, 0.61, 0.63], Frame => [0.55, 0.36, 0.20], Handle => [0.80, 0.15, 0.10]]),
+    arch!("canoe_rack", bt::canoe_rack, [Frame], [Frame => [0.50, 0.36, 0.22], Cushion => [0.15, 0.15, 0.16], Body => [0.75, 0.16, 0.12], Upholstery => [0.95, 0.72, 0.10]]),
+    arch!("oar", bt::oar, [Frame, Top], [Frame => [0.70, 0.52, 0.30], Top => [0.70, 0.52, 0.30], Upholstery => [0.30, 0.20, 0.12], Handle => [0.60, 0.44, 0.26]]),
+    arch!("fishing_rod", bt::fishing_rod, [Frame], [Frame => [0.12, 0.14, 0.18], Cushion => [0.72, 0.56, 0.36], Metal => [0.70, 0.71, 0.73], Handle => [0.15, 0.15, 0.16], Canvas => [0.92, 0.92, 0.90]]),
+    arch!("luggage_cart", bh::luggage_cart, [Metal], [Metal => BRASS, Upholstery => [0.55, 0.12, 0.12], Tyre => BLACK]),
+    arch!("luggage_rack", bh::luggage_rack, [Frame], [Frame => DARK_WOOD, Upholstery => [0.12, 0.12, 0.13], Metal => BRASS]),
+    arch!("clothes_valet", bh::clothes_valet, [Frame], [Frame => DARK_WOOD, Top => DARK_WOOD, Canvas => WHITE]),
+    arch!("beer_tap", tp::beer_tap, [Metal], [Metal => [0.80, 0.80, 0.82], Interior => [0.25, 0.25, 0.27], Handle => [0.10, 0.10, 0.10], Canvas => [0.92, 0.92, 0.90]]),
+    arch!("compressor", tk::compressor, [Body], [Body => [0.78, 0.12, 0.10], Frame => [0.15, 0.15, 0.16], Metal => [0.62, 0.63, 0.65], Handle => [0.15, 0.15, 0.16], Tyre => BLACK]),
+    arch!("silo", tk::silo, [Body], [Body => [0.72, 0.74, 0.76], Metal => [0.58, 0.60, 0.62], Top => [0.62, 0.64, 0.66], Frame => [0.40, 0.41, 0.43], Stone => [0.62, 0.61, 0.58]]),
+    arch!("reactor_core", tk::reactor_core, [Light], [Light => [0.35, 0.85, 1.00], Metal => [0.55, 0.57, 0.60], Frame => [0.22, 0.23, 0.25], Handle => [0.80, 0.60, 0.15]]),
+    arch!("sundial", or::sundial, [Body], [Body => STONE, Stone => [0.60, 0.58, 0.54], Metal => [0.55, 0.42, 0.22], BlackKeys => [0.20, 0.15, 0.08]]),
+    arch!("totem_pole", or::totem_pole, [Body], [Body => [0.52, 0.34, 0.20], Door => [0.10, 0.45, 0.45], Handle => [0.70, 0.15, 0.10], Canvas => [0.92, 0.90, 0.85]]),
+    arch!("tree_stump", or::tree_stump, [Trunk], [Top => [0.78, 0.62, 0.42], Frame => [0.58, 0.42, 0.26], Interior => [0.25, 0.17, 0.10], Foliage => [0.30, 0.45, 0.18]]),
+    arch!("fruit_bowl", bw::fruit_bowl, [Body], [Body => WHITE, Top => [0.88, 0.88, 0.86], Trunk => [0.30, 0.22, 0.12]]),
+    arch!("pet_bowl", bw::pet_bowl, [Metal], [Metal => STEEL, Tyre => BLACK, Soil => [0.50, 0.30, 0.15]]),
+    arch!("laundry_basket", bw::laundry_basket, [Body], [Body => [0.78, 0.66, 0.46], Frame => [0.62, 0.50, 0.32], Interior => [0.45, 0.36, 0.24]]),
+    arch!("water_jug", bw::water_jug, [Glass], [Glass => [0.55, 0.75, 0.92], Handle => [0.15, 0.35, 0.80], Interior => [0.40, 0.60, 0.80]]),
+    arch!("flower_bucket_stand", fl::flower_bucket_stand, [Frame], [Frame => [0.40, 0.30, 0.20], Top => [0.48, 0.36, 0.24], Metal => [0.66, 0.68, 0.70], Foliage => [0.22, 0.45, 0.20]]),
+    arch!("bollard", tk::bollard, [Body, Top], [Body => [0.25, 0.25, 0.27], Top => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Frame => [0.55, 0.56, 0.58], Canvas => [0.95, 0.78, 0.10]]),
+    arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -3,6 +3,7 @@
 //! window door beside a keypad, an espresso machine's group head over a drip tray, a till's
 //! screen above its cash drawer, a printer's paper trays.
 use super::archetypes::Builder;
+use super::laundry::{service_back, BACK};
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
 use std::f64::consts::FRAC_PI_2;
@@ -37,6 +38,39 @@ fn keypad(b: &mut Builder, x: [f64; 2], z: [f64; 2], y: f64, cols: usize, rows: 
     }
 }
 
+/// A small appliance's back at `y` (its body above `z0`): a grid of vent slots, a rating
+/// plate and a power cord leaving it and falling to the floor behind.
+fn vented_back(b: &mut Builder, y: f64, z0: f64) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let (x0, x1) = (-0.35 * b.w, 0.1 * b.w);
+    for j in 0..4 {
+        let z = z0 + (0.45 + 0.1 * j as f64) * (h - z0);
+        let n = 8;
+        for i in 0..n {
+            let x = x0 + (i as f64 + 0.5) / n as f64 * (x1 - x0);
+            b.cuboid(
+                Interior,
+                [x - 0.004, y - 0.002, z - 0.015],
+                [x + 0.004, y, z + 0.015],
+            );
+        }
+    }
+    b.cuboid(
+        Canvas,
+        [0.18 * b.w, y - 0.002, 0.5 * h],
+        [0.36 * b.w, y, 0.75 * h],
+    );
+    b.polyline(
+        Frame,
+        &[
+            [0.3 * b.w, y, z0 + 0.2 * (h - z0)],
+            [0.3 * b.w, -hd + 0.005, z0 + 0.1 * (h - z0)],
+            [0.38 * b.w.min(hw), -hd + 0.005, 0.005],
+        ],
+        0.004,
+    );
+}
+
 /// A dishwasher: one full-height door with a dark control strip along its top, a bar handle
 /// under the strip and a recessed kick plate.
 pub fn dishwasher(b: &mut Builder) {
@@ -44,10 +78,10 @@ pub fn dishwasher(b: &mut Builder) {
     let face = hd - 0.045;
     b.cuboid(
         Interior,
-        [-hw + 0.02, -hd, 0.0],
+        [-hw + 0.02, -hd + BACK, 0.0],
         [hw - 0.02, face - 0.03, 0.1],
     );
-    b.cuboid(Body, [-hw, -hd, 0.1], [hw, face, h]);
+    b.cuboid(Body, [-hw, -hd + BACK, 0.1], [hw, face, h]);
     b.cuboid(
         Door,
         [-hw + 0.005, face, 0.1],
@@ -68,6 +102,8 @@ pub fn dishwasher(b: &mut Builder) {
         );
     }
     bar_handle(b, -0.32 * b.w, 0.32 * b.w, face + 0.02, h - strip - 0.05);
+    // The back: its inlet and drain hoses and power cord, as a washer's.
+    service_back(b, true);
 }
 
 /// A counter-top microwave: a window door on the left with a pull handle, a control column on
@@ -86,7 +122,9 @@ pub fn microwave(b: &mut Builder) {
         }
     }
     let face = hd - 0.03;
-    b.cuboid(Body, [-hw, -hd, feet], [hw, face, h]);
+    let back = -hd + 0.015;
+    b.cuboid(Body, [-hw, back, feet], [hw, face, h]);
+    vented_back(b, back, feet);
     let xd = hw - 0.27 * b.w;
     b.cuboid(
         Door,

@@ -1,0 +1,66 @@
+//! A florist's flower bucket stand: three tiers stepping up to the back on two side frames, each
+//! tier holding a row of zinc buckets with a bunch of stems and blooms in every one (the bloom
+//! colours are the goods palette's). The front faces +y.
+use super::archetypes::Builder;
+use super::materials::Role::*;
+
+/// A flower bucket stand (see the module docs).
+pub fn flower_bucket_stand(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let tiers = 3;
+    let bucket = (0.2 * h).min(0.25);
+    let bloom = (0.12 * h).min(0.15);
+    let depth = b.d / tiers as f64;
+    let rb = (0.35 * depth).min(0.12);
+    let n = ((b.w / (2.6 * rb)) as usize).max(2);
+    let s = 0.03;
+    // The side frames: a sloped rail from the front foot up to the back post.
+    let top = h - bucket - bloom;
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - s / 2.0);
+        b.rod(Frame, [x, hd - s, 0.0], [x, -hd + s, top], s / 2.0);
+        b.cuboid(Frame, [x - s / 2.0, -hd, 0.0], [x + s / 2.0, -hd + s, top]);
+        b.cuboid(Frame, [x - s / 2.0, -hd, 0.0], [x + s / 2.0, hd, s]);
+    }
+    for k in 0..tiers {
+        let yc = hd - (k as f64 + 0.5) * depth;
+        let z = top * (k as f64 + 1.0) / tiers as f64;
+        b.cuboid(
+            Top,
+            [-hw, yc - 0.45 * depth, z - 0.02],
+            [hw, yc + 0.45 * depth, z],
+        );
+        b.cuboid(
+            Frame,
+            [-hw + s, yc - 0.02, 0.0],
+            [-hw + s + 0.02, yc, z - 0.02],
+        );
+        b.cuboid(
+            Frame,
+            [hw - s - 0.02, yc - 0.02, 0.0],
+            [hw - s, yc, z - 0.02],
+        );
+        for i in 0..n {
+            let x = -hw + (i as f64 + 0.5) / n as f64 * b.w;
+            b.frustum(Metal, [x, yc, z], rb, rb, 1.25, bucket);
+            let zt = z + bucket;
+            b.ellipsoid(Foliage, [x, yc, zt], [1.1 * rb, 1.1 * rb, 0.5 * bloom]);
+            let v = [0u32, 1, 5, 6, 8, 4][(i + 2 * k) % 6];
+            for j in 0..5 {
+                let a = j as f64 * 1.3 + i as f64;
+                let (dx, dy) = (0.6 * rb * a.cos(), 0.6 * rb * a.sin());
+                let r = 0.45 * bloom.min(rb);
+                b.push(
+                    Books,
+                    v,
+                    super::parts::Primitive::Revolved {
+                        origin: [x + dx, yc + dy, zt + 0.5 * bloom - r],
+                        rot: super::parts::IDENTITY,
+                        ay: 1.0,
+                        profile: super::parts::ellipsoid_profile(r, r),
+                    },
+                );
+            }
+        }
+    }
+}
