@@ -3,7 +3,8 @@
 //! longer than its frame is deep, a speaker shows round cones on its front, a server rack is
 //! tall, dark and lit, a dryer's dark door sits higher than a washer's and it vents at the back,
 //! a dishwasher and a microwave are no blank boxes from behind, coat hooks hold coats, and
-//! categories once drawn as a plain tube have parts of their own. Host-only, well under a second.
+//! categories once drawn as a plain tube have parts of their own, and a bucket is an open pail
+//! under its bail. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
 use common::samples::{of, range, runs};
@@ -275,7 +276,7 @@ fn things_once_drawn_as_a_plain_tube_have_parts_of_their_own() {
     ];
     let kb = KnowledgeBase::builtin();
     for name in names {
-        assert_ne!(archetype_of(name), "cylinder", "{name}");
+        assert_ne!(archetype_of(name), "pail", "{name}");
         let size = kb.object(name).unwrap().size;
         let roles: std::collections::BTreeSet<String> = parts(name, size)
             .unwrap()
@@ -336,5 +337,39 @@ fn a_flower_bucket_stand_holds_buckets_of_blooms_on_tiers_rising_to_the_back() {
                 "{name}: tiers do not rise to the back"
             );
         }
+    }
+}
+
+#[test]
+fn a_bucket_is_an_open_pail_widening_to_its_rim_under_a_bail() {
+    for size in sizes("bucket", [1.4, 1.0, 0.8]) {
+        let s = at("bucket", size);
+        let body = of(&s, Role::Metal);
+        let rim = range(&body, 2).1;
+        // Open: the inside shows from above, below the rim.
+        let inside = of(&s, Role::Interior);
+        assert!(!inside.is_empty(), "{size:?}: no inside");
+        assert!(range(&inside, 2).1 <= rim + 1e-6, "{size:?}");
+        // Wider at the rim than at the foot.
+        let width_at = |z0: f64, z1: f64| {
+            let band: Vec<_> = body
+                .iter()
+                .filter(|p| (z0..z1).contains(&p[2]))
+                .cloned()
+                .collect();
+            range(&band, 0).1 - range(&band, 0).0
+        };
+        assert!(
+            width_at(0.0, 0.1 * rim) < 0.9 * width_at(0.8 * rim, 0.95 * rim),
+            "{size:?}: not widening to the rim"
+        );
+        // A bail arches over the mouth up to the top, reaching both sides.
+        let bail = of(&s, Role::Handle);
+        assert!(range(&bail, 2).1 > rim + 0.5 * (size[2] - rim), "{size:?}");
+        let (x0, x1) = range(&bail, 0);
+        assert!(
+            x1 - x0 > 0.8 * size[0].min(size[1]),
+            "{size:?}: bail too short"
+        );
     }
 }

@@ -208,7 +208,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
-    arch!("cylinder", m::cylinder, [Body], []),
+    arch!("pail", bw::pail, [Metal], [Metal => [0.74, 0.76, 0.78], Interior => [0.52, 0.54, 0.56], Glass => [0.45, 0.60, 0.70], Handle => [0.55, 0.56, 0.58], Trunk => [0.55, 0.38, 0.22]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
     arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
     arch!("boat", m::boat, [Body], [Body => [0.50, 0.33, 0.20], Frame => [0.62, 0.47, 0.30]]),

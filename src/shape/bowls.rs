@@ -245,3 +245,60 @@ pub fn water_jug(b: &mut Builder) {
         [0.7 * r, 0.15 * r, 0.72 * h],
     );
 }
+
+/// A pail: a galvanised body widening to a rolled rim, open at the top with its inside and a
+/// little water showing, two ears at the rim and a wire bail arching over the mouth (the
+/// bail's top is the object's top).
+pub fn pail(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = hw.min(hd);
+    let rim = 0.7 * h;
+    open_bowl(
+        b,
+        Metal,
+        Interior,
+        [0.74 * r, 0.96 * r, rim, 0.03 * r],
+        hd.min(hw) / r,
+    );
+    band(b, Metal, [0.0, 0.0, rim], Z, r, 0.06 * r, 0.03 * h);
+    // Ridges pressed round the body.
+    for f in [0.25, 0.5] {
+        let rz = (0.74 + 0.22 * f) * r;
+        band(
+            b,
+            Metal,
+            [0.0, 0.0, f * rim],
+            Z,
+            rz + 0.015 * r,
+            0.03 * r,
+            0.02 * h,
+        );
+    }
+    disc(b, Glass, [0.0, 0.0, 0.55 * rim], Z, 0.84 * r, 0.01);
+    // The bail: ears on either side, a wire arching over the mouth, a wooden grip at its top.
+    let n = 10;
+    let arc = |k: usize| {
+        let a = std::f64::consts::PI * k as f64 / n as f64;
+        [
+            -0.98 * r * a.cos(),
+            0.0,
+            rim + (h - rim - 0.02 * h) * a.sin(),
+        ]
+    };
+    for k in 0..n {
+        b.rod(Handle, arc(k), arc(k + 1), 0.012 * r);
+    }
+    for s in [-1.0, 1.0] {
+        b.ellipsoid(
+            Metal,
+            [s * 0.97 * r, 0.0, rim - 0.02 * h],
+            [0.04 * r, 0.03 * r, 0.05 * h],
+        );
+    }
+    b.rod(
+        Trunk,
+        [-0.25 * r, 0.0, h - 0.03 * h],
+        [0.25 * r, 0.0, h - 0.03 * h],
+        0.04 * r,
+    );
+}

@@ -219,13 +219,6 @@ pub fn mirror(b: &mut Builder) {
     b.cuboid(Frame, [-0.1 * b.w, -hd, 0.0], [0.1 * b.w, hd, 0.02]);
 }
 
-pub fn cylinder(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    b.frustum(Body, [0.0, 0.0, 0.0], 0.96 * hw, 0.96 * hd, 1.0, h - 0.03);
-    // A lip of the body's own colour (a lid, a candle's top, a lighthouse's gallery).
-    b.frustum(Body, [0.0, 0.0, h - 0.03], hw, hd, 0.97, 0.03);
-}
-
 pub fn cone(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     b.cuboid(Body, [-hw, -hd, 0.0], [hw, hd, 0.03]);
