@@ -30,6 +30,7 @@ mod walls;
 use attempt::attempt_layout;
 use fit::join_names;
 pub use fit::smallest_room;
+pub use pairs::viewing_side;
 use problem::{yaw_facing, Pose, Problem};
 pub use room::{choose_room, INDOOR_OCCUPANCY};
 use score::quality;
