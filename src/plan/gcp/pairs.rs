@@ -117,14 +117,10 @@ pub(super) fn face_screens(spec: &mut SceneSpec) {
 }
 
 /// The least room side that lets a seat of a `faces` line among `cats` face its screen (also
-/// among them) across the room at the nearest viewing distance, both against walls, whichever
-/// wall the door takes (the screen's wall holds it beside the door): 0 when `cats` hold no such
-/// pair (a loveseat and a TV: 1.6 m between centres and their half-depths; 1.3 m of TV, the
-/// door and a little).
+/// among them) across the room at the nearest viewing distance, both against walls: 0 when
+/// `cats` hold no such pair (a loveseat and a TV: 1.6 m between centres, and their half-depths).
 pub fn viewing_side(spec: &SceneSpec, cats: &std::collections::BTreeSet<String>) -> f64 {
-    let size = |c: &str| spec.objects.get(c).map(|o| o.size);
-    let depth = |c: &str| size(c).map(|s| s[1]);
-    let beside_door = |c: &str| size(c).map(|s| s[0] + super::openings::DOOR[0] + 0.3);
+    let depth = |c: &str| spec.objects.get(c).map(|o| o.size[1]);
     Placements::builtin()
         .faces
         .iter()
@@ -134,10 +130,7 @@ pub fn viewing_side(spec: &SceneSpec, cats: &std::collections::BTreeSet<String>)
                 .flat_map(move |s| targets.iter().map(move |t| (s, t)))
         })
         .filter(|(s, t)| cats.contains(*s) && cats.contains(*t))
-        .filter_map(|(s, t)| {
-            let view = VIEW_NEAR + 0.5 * (depth(s)? + depth(t)?) + 2.0 * WALL_MARGIN;
-            Some(view.max(beside_door(t)?))
-        })
+        .filter_map(|(s, t)| Some(VIEW_NEAR + 0.5 * (depth(s)? + depth(t)?) + 2.0 * WALL_MARGIN))
         .fold(0.0, f64::max)
 }
 
