@@ -41,19 +41,14 @@ pub const USE_MARGIN: f64 = 0.2;
 
 /// A room that fits the instances of `spec` in use: [`choose_room`] on footprints grown by
 /// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate). A seat
-/// at or around a table, desk or counter is pulled out into that piece's own room: its bare
-/// footprint is all it adds.
+/// round a table is pulled out into the table's own room: its bare footprint is all it adds (a
+/// stool at an island or a chair at a desk keeps its own, as the counter or desk has no room
+/// round it).
 pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
     let tucked: BTreeSet<&str> = spec
         .relations
         .iter()
-        .filter(|r| {
-            matches!(
-                r.relation,
-                RelationKind::Around | RelationKind::At | RelationKind::AtBack
-            )
-        })
-        .filter(|r| r.subject != r.object)
+        .filter(|r| r.relation == RelationKind::Around && r.subject != r.object)
         .map(|r| r.subject.as_str())
         .collect();
     let instances = spec.instances();

@@ -275,31 +275,10 @@ pub(super) fn fallback_pose(
                 .zones
                 .iter()
                 .map(|z| penetration(&b, z).max(0.0))
-                .sum::<f64>()
-            + keep_place(prob, i, &b);
+                .sum::<f64>();
         if cost < best.0 {
             best = (cost, p);
         }
     }
     best.1
-}
-
-/// Of the fallback poses that collide alike, the ones where a thing that belongs by a wall, in
-/// a corner or by a window keeps there (a plant not left mid-room): a cost too small to
-/// outweigh any collision.
-fn keep_place(prob: &Problem, i: usize, b: &Box2) -> f64 {
-    let anchor = prob.inst[i].anchor;
-    if !matches!(
-        anchor,
-        Anchor::Side | Anchor::Corner | Anchor::Window | Anchor::FaceWindow
-    ) {
-        return 0.0;
-    }
-    let holds =
-        crate::plan::check::anchor_holds_in(b, anchor, prob.scene, prob.room, &prob.openings);
-    let wall = wall_distances(b, prob.room)
-        .into_iter()
-        .fold(f64::INFINITY, f64::min)
-        .max(0.0);
-    1e-3 * (!holds) as u8 as f64 + 1e-4 * wall
 }
