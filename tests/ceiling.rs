@@ -208,3 +208,33 @@ fn over_before_a_count_is_more_than_not_above() {
         assert!(on.is_empty(), "{prompt}: {on:?}");
     }
 }
+
+#[test]
+fn a_light_hung_over_no_named_piece_leaves_head_room_below_it() {
+    // people walk under it: its bottom at 2 m or higher, still touching the ceiling
+    for prompt in [
+        "a bedroom with a pendant light",
+        "a hallway with two hanging lamps",
+        "a study with a desk and a pendant lamp",
+    ] {
+        for seed in 0..2 {
+            let l = lay(prompt, seed);
+            let lights = hung(&l);
+            assert!(!lights.is_empty(), "{prompt}: no hung light");
+            for o in lights {
+                let b = Box2::of(o);
+                assert!(
+                    b.z0 >= 2.0 - 1e-6,
+                    "{prompt}: {} hangs down to {:.2} m",
+                    o.id,
+                    b.z0
+                );
+                assert!(
+                    hangs_from_ceiling(&b, l.room.size),
+                    "{prompt}: {} off the ceiling",
+                    o.id
+                );
+            }
+        }
+    }
+}

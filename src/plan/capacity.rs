@@ -39,20 +39,32 @@ const DECOR: &[&str] = &[
 /// out, a walk past a desk), metres added to width and depth.
 pub const USE_MARGIN: f64 = 0.2;
 
-/// A room that fits the instances in use: [`choose_room`] on footprints grown by
-/// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate).
-pub fn room_for(instances: &[Instance], scene: SceneType) -> Room {
+/// A room that fits the instances of `spec` in use: [`choose_room`] on footprints grown by
+/// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate). A seat
+/// round a table is pulled out into the table's own room: its bare footprint is all it adds (a
+/// stool at an island or a chair at a desk keeps its own, as the counter or desk has no room
+/// round it).
+pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
+    let tucked: BTreeSet<&str> = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Around && r.subject != r.object)
+        .map(|r| r.subject.as_str())
+        .collect();
+    let instances = spec.instances();
     let grown: Vec<Instance> = instances
         .iter()
         .map(|i| {
             let mut g = i.clone();
-            g.size[0] += USE_MARGIN;
-            g.size[1] += USE_MARGIN;
+            if !tucked.contains(i.id.as_str()) {
+                g.size[0] += USE_MARGIN;
+                g.size[1] += USE_MARGIN;
+            }
             g
         })
         .collect();
     let mut room = choose_room(&grown, scene);
-    room.size[2] = choose_room(instances, scene).size[2];
+    room.size[2] = choose_room(&instances, scene).size[2];
     room
 }
 

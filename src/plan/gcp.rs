@@ -30,6 +30,7 @@ mod walls;
 use attempt::attempt_layout;
 use fit::join_names;
 pub use fit::smallest_room;
+pub use pairs::viewing_side;
 use problem::{yaw_facing, Pose, Problem};
 pub use room::{choose_room, INDOOR_OCCUPANCY};
 use score::quality;
@@ -64,6 +65,9 @@ impl Default for LayoutOptions {
 
 /// Gap kept from walls when placing against them.
 const WALL_MARGIN: f64 = 0.02;
+/// The least height (m) of the bottom of a thing hung from the ceiling over no piece it is
+/// said to hang over: people walk under it.
+const HANG_CLEAR: f64 = 2.0;
 /// Preferred free space around unrelated objects (a walkway).
 const WALKWAY: f64 = 0.6;
 
@@ -176,7 +180,16 @@ fn layout_in_pinned(
     let mounts = classes::apply(&mut work);
     pairs::float_seats(&mut work, room.size);
     let spec = &work;
-    let inst = spec.instances();
+    let mut inst = spec.instances();
+    // a light hung from the ceiling over no piece named below it keeps head room under it:
+    // its drop is shortened (a pendant's cord taken up)
+    for i in inst.iter_mut() {
+        if mounts.ceiling.contains(&i.id) && !mounts.hang_over.contains_key(&i.id) {
+            let drop = (((room.size[2] - HANG_CLEAR) * 100.0).round() / 100.0).max(0.1);
+            i.size[2] = i.size[2].min(drop);
+        }
+    }
+    let inst = inst;
     let hung: Vec<Option<f64>> = inst
         .iter()
         .map(|i| {

@@ -216,6 +216,7 @@ impl super::Problem {
         };
         let s = self.inst[i].size;
         let z = self.hung[i].unwrap_or(0.0);
+        let seated = self.seated_at(i);
         let mut out = vec![];
         for o in self.openings.iter().filter(|o| o.kind == kind) {
             let n = o.wall.inward();
@@ -231,13 +232,20 @@ impl super::Problem {
             };
             match anchor {
                 Anchor::Window => {
-                    for along in [0.0, -0.5 * o.width, 0.5 * o.width, -o.width, o.width] {
-                        for (yaw, depth) in [
+                    // a desk or table with a seat at it is used from its front: its back to
+                    // the window, so the seat faces the window across it
+                    let turns: &[(f64, f64)] = if seated {
+                        &[(into, s[1])]
+                    } else {
+                        &[
                             (into, s[1]),
                             (toward, s[1]),
                             (into + 90.0, s[0]),
                             (into - 90.0, s[0]),
-                        ] {
+                        ]
+                    };
+                    for along in [0.0, -0.5 * o.width, 0.5 * o.width, -o.width, o.width] {
+                        for &(yaw, depth) in turns {
                             // against the wall, a little off it, or just clear of the
                             // window's zone (a plant taller than the sill beneath it)
                             let clear = crate::plan::check::window_zone(o).half[1] * 2.0 + 0.02;

@@ -116,6 +116,24 @@ pub(super) fn face_screens(spec: &mut SceneSpec) {
     }
 }
 
+/// The least room side that lets a seat of a `faces` line among `cats` face its screen (also
+/// among them) across the room at the nearest viewing distance, both against walls: 0 when
+/// `cats` hold no such pair (a loveseat and a TV: 1.6 m between centres, and their half-depths).
+pub fn viewing_side(spec: &SceneSpec, cats: &std::collections::BTreeSet<String>) -> f64 {
+    let depth = |c: &str| spec.objects.get(c).map(|o| o.size[1]);
+    Placements::builtin()
+        .faces
+        .iter()
+        .flat_map(|(seats, targets)| {
+            seats
+                .iter()
+                .flat_map(move |s| targets.iter().map(move |t| (s, t)))
+        })
+        .filter(|(s, t)| cats.contains(*s) && cats.contains(*t))
+        .filter_map(|(s, t)| Some(VIEW_NEAR + 0.5 * (depth(s)? + depth(t)?) + 2.0 * WALL_MARGIN))
+        .fold(0.0, f64::max)
+}
+
 /// A seat of a `faces` line standing against a wall (SIDE) OPPOSITE a thing against a wall,
 /// in an indoor room where the two would stand further apart than [`VIEW_FAR`] across even its
 /// shorter side, leaves its wall (anchor OTHERS): it stands at a viewing distance from what it

@@ -61,6 +61,15 @@ const SIDE_DISTANCE: f64 = 0.3;
 /// A corner thing at least this wide on both sides (metres) stands square in its corner.
 const FLUSH_CORNER_SIDE: f64 = 0.8;
 
+impl Problem {
+    /// Whether instance `i` has a seat AT it (a desk with its chair): it is used from its front.
+    pub(super) fn seated_at(&self, i: usize) -> bool {
+        self.rels[i]
+            .iter()
+            .any(|&(k, _, subject)| k == RelationKind::At && !subject)
+    }
+}
+
 pub(super) fn yaw_facing(d: [f64; 2]) -> f64 {
     // facing (-sin yaw, cos yaw) = d / |d|
     (-d[0]).atan2(d[1]).to_degrees()
@@ -154,6 +163,9 @@ impl Problem {
             self.inst[i].anchor
         };
         match anchor {
+            // a desk or table at a window with a seat at it: only the poses before the window
+            // with its back to it (`opening_candidates`)
+            Anchor::Window if self.seated_at(i) => {}
             Anchor::Side => {
                 // Back to each wall, facing into the room, anywhere along it.
                 for (wall, yaw) in [(0usize, -90.0), (1, 90.0), (2, 0.0), (3, 180.0)] {

@@ -93,8 +93,8 @@ pub fn room_for_tables(spec: &SceneSpec, room: [f64; 2]) -> [f64; 2] {
         else {
             continue;
         };
-        // cells a lone CENTER thing (a dance floor) and its passage take
-        let middle: usize = spec
+        // the side of a lone CENTER thing (a dance floor) with its passage, in either turn
+        let middle: f64 = spec
             .objects
             .iter()
             .filter(|(c, _)| {
@@ -104,23 +104,17 @@ pub fn room_for_tables(spec: &SceneSpec, room: [f64; 2]) -> [f64; 2] {
                         .iter()
                         .any(|r| base(&r.subject) == **c || base(&r.object) == **c)
             })
-            .map(|(_, m)| {
-                (0..2)
-                    .map(|k| ((m.size[k] + 2.0 * PASSAGE) / pitch[k]).ceil() as usize)
-                    .product::<usize>()
-            })
-            .sum();
-        let block = if middle > 0 || pitches.len() < 2 {
+            .map(|(_, m)| m.size[0].max(m.size[1]) + 2.0 * PASSAGE)
+            .fold(0.0, f64::max);
+        let block = if middle > 0.0 || pitches.len() < 2 {
             // tables of one size, or round a CENTER thing: the tables of every size in the
-            // largest one's cells, in a near-square block with the cells it takes in the middle
+            // largest one's cells, in a near-square block round the cells it takes
             let area: f64 = pitches
                 .iter()
                 .map(|(p, m)| p[0] * p[1] * *m as f64)
-                .sum::<f64>()
-                + middle as f64 * pitch[0] * pitch[1];
+                .sum::<f64>();
             let cells = (area / (pitch[0] * pitch[1])).ceil().max(1.0) as usize;
-            let nx = (cells as f64).sqrt().ceil() as usize;
-            let ny = cells.div_ceil(nx);
+            let [nx, ny] = lattice_round(cells, pitch, middle);
             let band = 2.0 * WALL_BANDS[1] - PASSAGE;
             [nx as f64 * pitch[0] + band, ny as f64 * pitch[1] + band]
         } else {
@@ -129,6 +123,42 @@ pub fn room_for_tables(spec: &SceneSpec, room: [f64; 2]) -> [f64; 2] {
         need = [need[0].max(block[0]), need[1].max(block[1])];
     }
     need
+}
+
+/// The columns and rows of a centred lattice at `pitch` that hold `cells` tables round a thing
+/// `middle` wide in the room's middle (0: none): without one, the near-square block; with one,
+/// of the blocks whose cells clear of it (with their passage, as `place_tables` lays them)
+/// are enough, the one with the shortest longer side, then the smallest.
+fn lattice_round(cells: usize, pitch: [f64; 2], middle: f64) -> [usize; 2] {
+    if middle <= 0.0 {
+        let nx = (cells as f64).sqrt().ceil() as usize;
+        return [nx, cells.div_ceil(nx)];
+    }
+    // centred cells along an axis whose seat rings reach into the middle thing's passage
+    let blocked = |n: usize, p: f64| {
+        (0..n)
+            .filter(|&k| {
+                let c = (k as f64 - 0.5 * (n as f64 - 1.0)) * p;
+                c.abs() < 0.5 * middle + 0.5 * (p - PASSAGE) - 1e-9
+            })
+            .count()
+    };
+    let most = cells + 16;
+    let mut best: Option<(f64, f64, [usize; 2])> = None;
+    for nx in 1..=most {
+        for ny in 1..=most {
+            let free = nx * ny - blocked(nx, pitch[0]) * blocked(ny, pitch[1]);
+            if free < cells {
+                continue;
+            }
+            let (w, d) = (nx as f64 * pitch[0], ny as f64 * pitch[1]);
+            let key = (w.max(d), w * d);
+            if best.is_none_or(|(l, a, _)| key.0 < l - 1e-9 || (key.0 < l + 1e-9 && key.1 < a)) {
+                best = Some((key.0, key.1, [nx, ny]));
+            }
+        }
+    }
+    best.map_or([cells, 1], |(_, _, n)| n)
 }
 
 /// The [w, d] of a room whose floor holds a block of table cells, `groups` of them at a pitch
@@ -568,6 +598,25 @@ mod tests {
             assert!(
                 r <= most,
                 "{tables} tables: the dance floor is {r:.2} m off the middle"
+            );
+        }
+    }
+    #[test]
+    fn a_room_sized_for_its_tables_round_a_dance_floor_seats_every_table() {
+        // the room the estimate gives, no larger: every table and seat clear of the floor
+        for (tables, chairs) in [(8, 8), (6, 6), (12, 8)] {
+            let mut spec = hall(tables, [1.2, 1.2, 0.75], chairs);
+            let need = super::room_for_tables(&spec, [3.0, 3.0]);
+            let r = |v: f64| (v * 10.0).ceil() / 10.0;
+            spec.room = Some(crate::plan::spec::Room {
+                size: [r(need[0]), r(need[1]), 2.8],
+            });
+            let l = layout(&spec, LayoutOptions::seeded(0)).expect("laid out");
+            let left = relations_unsatisfied(&l.objects, &spec.relations);
+            assert!(
+                left.is_empty(),
+                "{tables} tables in {need:?}: {} seats left",
+                left.len()
             );
         }
     }

@@ -116,7 +116,7 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
             }
         }
         None => {
-            let mut room = room_for(&spec.instances(), scene_type);
+            let mut room = room_for(spec, scene_type);
             if r.scale < 1.0 {
                 // what the text names and what the place cannot do without (its bed) set it;
                 // with nothing named, the scene's furniture
@@ -205,7 +205,9 @@ fn small_room(
         SceneType::Indoor => 2.2,
         SceneType::Outdoor => 6.0,
     };
-    let min_side = base_side.max(longest + 0.4);
+    // a named seat and the screen it faces: across the room at a viewing distance
+    let view = crate::plan::gcp::viewing_side(spec, named);
+    let min_side = base_side.max(longest + 0.4).max(view);
     // What the text names sets the floor; with nothing named, the scene's furniture scaled.
     let area = if named_inst.is_empty() {
         full[0] * full[1] * scale
