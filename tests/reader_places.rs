@@ -5,16 +5,8 @@
 //! area words, removal verbs and the seats a table already has are read the way people mean them.
 //! Prompts of no corpus.
 mod reading;
-use dreamscene::plan::spec::{Anchor, RelationKind, SceneSpec, SceneType};
-use reading::plan;
-
-fn number(spec: &SceneSpec, word: &str) -> u32 {
-    spec.objects
-        .iter()
-        .filter(|(c, _)| c.contains(word))
-        .map(|(_, o)| o.number)
-        .sum()
-}
+use dreamscene::plan::spec::{Anchor, RelationKind, SceneType};
+use reading::{number, plan};
 
 #[test]
 fn a_fantastical_place_keeps_what_its_kind_owns() {

@@ -4,24 +4,8 @@
 //! knowledge base lacked (a reading nook, a sauna, a harbour) are read as those places.
 //! Prompts of no corpus.
 mod reading;
-use dreamscene::plan::spec::{SceneSpec, SceneType};
-use reading::plan;
-
-/// How many instances the plan holds of categories whose name contains `word`.
-fn number(spec: &SceneSpec, word: &str) -> u32 {
-    spec.objects
-        .iter()
-        .filter(|(c, _)| c.contains(word))
-        .map(|(_, o)| o.number)
-        .sum()
-}
-
-fn keys(s: &SceneSpec) -> Vec<String> {
-    s.objects
-        .iter()
-        .map(|(c, o)| format!("{c}:{}", o.number))
-        .collect()
-}
+use dreamscene::plan::spec::SceneType;
+use reading::{keys, number, plan};
 
 #[test]
 fn seats_for_visitors_take_the_place_of_the_visitor_chairs() {

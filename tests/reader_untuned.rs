@@ -5,24 +5,8 @@
 //! room is no sewing room, and a place "for eight" that seats eight has no other default seats.
 //! Prompts of no corpus.
 mod reading;
-use dreamscene::plan::spec::{Anchor, RelationKind, SceneSpec};
-use reading::plan;
-
-/// How many instances the plan holds of categories whose name contains `word`.
-fn number(spec: &SceneSpec, word: &str) -> u32 {
-    spec.objects
-        .iter()
-        .filter(|(c, _)| c.contains(word))
-        .map(|(_, o)| o.number)
-        .sum()
-}
-
-fn keys(s: &SceneSpec) -> Vec<String> {
-    s.objects
-        .iter()
-        .map(|(c, o)| format!("{c}:{}", o.number))
-        .collect()
-}
+use dreamscene::plan::spec::{Anchor, RelationKind};
+use reading::{keys, number, plan};
 
 #[test]
 fn a_front_desk_is_a_reception_desk() {

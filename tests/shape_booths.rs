@@ -6,37 +6,12 @@
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{of, range, runs};
-use dreamscene::plan::kb::KnowledgeBase;
-use dreamscene::shape::{archetype_of, parts, Role};
-use rand::SeedableRng;
+use common::samples::{drawn, of, range, runs, sized, Samples};
+use dreamscene::shape::{archetype_of, Role};
 
-type Samples = Vec<([f64; 3], Role)>;
-
-/// Surface samples of `category` at `size`, those outside the size box dropped as the shape
-/// prior drops them.
+/// Surface samples of `category` at `size`.
 fn at(category: &str, size: [f64; 3]) -> Samples {
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-    let spacing = 0.004 * size.iter().cloned().fold(0.0, f64::max);
-    let mut out = vec![];
-    for p in parts(category, size).unwrap() {
-        let mut s = vec![];
-        p.prim.sample(spacing, &mut rng, &mut s);
-        out.extend(s.iter().map(|s| (s.pos, p.role)));
-    }
-    let tol = 1e-6;
-    out.retain(|(p, _)| {
-        p[0].abs() <= size[0] / 2.0 + tol
-            && p[1].abs() <= size[1] / 2.0 + tol
-            && (-tol..=size[2] + tol).contains(&p[2])
-    });
-    out
-}
-
-/// `category`'s knowledge-base size and that size scaled by `k`.
-fn sized(category: &str, k: [f64; 3]) -> [[f64; 3]; 2] {
-    let s = KnowledgeBase::builtin().object(category).unwrap().size;
-    [s, [s[0] * k[0], s[1] * k[1], s[2] * k[2]]]
+    drawn(category, size, 3)
 }
 
 fn within(pts: &[[f64; 3]], keep: impl Fn(&[f64; 3]) -> bool) -> Vec<[f64; 3]> {

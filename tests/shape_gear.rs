@@ -7,31 +7,14 @@
 //! under its bail. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{of, range, runs};
+use common::samples::{drawn, of, range, round, runs, Samples};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{archetype_of, build, parts, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
-use rand::SeedableRng;
 
-type Samples = Vec<([f64; 3], Role)>;
-
-/// Surface samples of `category` drawn at `size`.
+/// Surface samples of `category` at `size`.
 fn at(category: &str, size: [f64; 3]) -> Samples {
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
-    let spacing = 0.004 * size.iter().cloned().fold(0.0, f64::max);
-    let mut out = vec![];
-    for p in parts(category, size).unwrap() {
-        let mut s = vec![];
-        p.prim.sample(spacing, &mut rng, &mut s);
-        out.extend(s.iter().map(|s| (s.pos, p.role)));
-    }
-    // What the drawn object keeps: samples inside its size box.
-    out.retain(|(p, _)| {
-        p[0].abs() <= size[0] / 2.0 + 1e-6
-            && p[1].abs() <= size[1] / 2.0 + 1e-6
-            && (-1e-6..=size[2] + 1e-6).contains(&p[2])
-    });
-    out
+    drawn(category, size, 5)
 }
 
 /// `category`'s knowledge-base size and that size scaled by `k` and by `1 / k`.
@@ -42,23 +25,6 @@ fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
         [s[0] * k[0], s[1] * k[1], s[2] * k[2]],
         [s[0] / k[0], s[1] / k[1], s[2] / k[2]],
     ]
-}
-
-/// Whether the samples `pts` of a face (x, z) are round: their bounding box's corners empty.
-fn round(pts: &[[f64; 3]]) -> bool {
-    let (x0, x1) = range(pts, 0);
-    let (z0, z1) = range(pts, 2);
-    let (xc, zc, rx, rz) = (
-        0.5 * (x0 + x1),
-        0.5 * (z0 + z1),
-        0.5 * (x1 - x0),
-        0.5 * (z1 - z0),
-    );
-    let corners = pts
-        .iter()
-        .filter(|p| (p[0] - xc).abs() > 0.8 * rx && (p[2] - zc).abs() > 0.8 * rz)
-        .count();
-    (rx / rz - 1.0).abs() < 0.15 && corners == 0
 }
 
 #[test]

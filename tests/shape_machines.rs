@@ -5,13 +5,11 @@
 //! tree bears fruit. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{of, range, runs};
+use common::samples::{of, range, round, runs, sized, Samples};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{archetype_of, build, parts, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
 use rand::SeedableRng;
-
-type Samples = Vec<([f64; 3], Role)>;
 
 /// Surface samples of `category` at `size` (its knowledge-base size when `None`).
 fn samples_at(category: &str, size: Option<[f64; 3]>) -> (Samples, [f64; 3]) {
@@ -417,12 +415,6 @@ fn at(category: &str, size: [f64; 3]) -> Samples {
     samples_at(category, Some(size)).0
 }
 
-/// `category`'s knowledge-base size and that size scaled by `k` (the sizes a plan may give).
-fn sized(category: &str, k: [f64; 3]) -> [[f64; 3]; 2] {
-    let s = KnowledgeBase::builtin().object(category).unwrap().size;
-    [s, [s[0] * k[0], s[1] * k[1], s[2] * k[2]]]
-}
-
 #[test]
 fn a_tram_carries_a_pantograph_over_its_roof_and_is_alike_at_both_ends() {
     for name in ["streetcar", "tram"] {
@@ -497,23 +489,6 @@ fn a_food_truck_opens_a_serving_hatch_under_an_awning_on_its_side() {
     }
     let (van, _) = samples("van");
     assert!(of(&van, Role::Canvas).is_empty(), "a van has an awning");
-}
-
-/// Whether the samples `pts` of a face (x, z) are round: their bounding box's corners empty.
-fn round(pts: &[[f64; 3]]) -> bool {
-    let (x0, x1) = range(pts, 0);
-    let (z0, z1) = range(pts, 2);
-    let (xc, zc, rx, rz) = (
-        0.5 * (x0 + x1),
-        0.5 * (z0 + z1),
-        0.5 * (x1 - x0),
-        0.5 * (z1 - z0),
-    );
-    let corners = pts
-        .iter()
-        .filter(|p| (p[0] - xc).abs() > 0.8 * rx && (p[2] - zc).abs() > 0.8 * rz)
-        .count();
-    (rx / rz - 1.0).abs() < 0.15 && corners == 0
 }
 
 #[test]
