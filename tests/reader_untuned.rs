@@ -212,3 +212,32 @@ fn a_bedsit_is_one_small_room_and_its_kitchenette_the_kitchen_counter() {
         assert_eq!(number(&s, "bed"), 1, "{prompt}: {:?}", keys(&s));
     }
 }
+
+#[test]
+fn a_place_named_in_words_of_no_object_is_read_as_english() {
+    // "a dental clinic" was refused as another language: neither word names an object, and a
+    // trigram model cannot place three short words. The words of place names are English.
+    for (prompt, thing) in [
+        ("a dental clinic", "dentist chair"),
+        ("a dental surgery", "dentist chair"),
+        ("an operating room", "operating table"),
+        ("a surgical theatre", "operating table"),
+    ] {
+        let spec = plan(prompt);
+        assert_eq!(number(&spec, thing), 1, "{prompt}: {:?}", keys(&spec));
+    }
+    // The operating room is no unknown box named after its first word.
+    let spec = plan("an operating room");
+    assert!(
+        !spec.objects.keys().any(|c| c == "operating"),
+        "{:?}",
+        keys(&spec)
+    );
+    // Requests in another language are still refused.
+    for prompt in ["una cocina con una mesa", "une chambre avec un lit"] {
+        assert!(
+            dreamscene::plan::offline::plan_prompt(prompt).is_err(),
+            "{prompt}"
+        );
+    }
+}

@@ -379,10 +379,18 @@ pub(super) fn not_english(kb: &KnowledgeBase, text: &str, t: &str) -> bool {
         .filter(|w| !w.is_empty())
         .collect();
     // Words an English reader knows: function words, request verbs, object and scene names,
-    // the words of `kb/words.txt` (size words, areas, arrangements) and the nouns of the
+    // the words of place names, the words of `kb/words.txt` (size words, areas, arrangements)
+    // and the nouns of the
     // lexicon (WordNet's physical things: "a huge zeppelin").
     let (_, objects_by_name) = object_matcher(kb);
     let (_, scenes_by_name) = scene_matcher(kb);
+    // The words of place names ("dental" and "clinic" of "a dental clinic").
+    let place_words: std::collections::BTreeSet<&str> = kb
+        .scenes
+        .iter()
+        .flat_map(|s| std::iter::once(&s.name).chain(&s.synonyms))
+        .flat_map(|n| n.split(' '))
+        .collect();
     let known = words
         .iter()
         .filter(|w| {
@@ -392,6 +400,7 @@ pub(super) fn not_english(kb: &KnowledgeBase, text: &str, t: &str) -> bool {
                 || number_of(w).is_some()
                 || objects_by_name.contains_key(**w)
                 || scenes_by_name.contains_key(**w)
+                || place_words.contains(**w)
                 || is_known_word(w)
                 || object_scale(w).is_some()
                 || object_footprint(w).is_some()
