@@ -135,3 +135,19 @@ pub(super) fn clock_face(b: &mut Builder, c: V3, r: f64) {
     );
     disc(b, BlackKeys, [c[0], y + 0.004, c[2]], Y, 0.06 * r, 0.006);
 }
+
+/// Four square posts of side `p` and height `h` standing in the corners of the builder's box
+/// (a crib's, a compost bin's).
+pub(super) fn corner_posts(b: &mut Builder, role: Role, p: f64, h: f64) {
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
+    for sx in [-1.0, 1.0] {
+        for sy in [-1.0, 1.0] {
+            let (x, y) = (sx * (hw - p / 2.0), sy * (hd - p / 2.0));
+            b.cuboid(
+                role,
+                [x - p / 2.0, y - p / 2.0, 0.0],
+                [x + p / 2.0, y + p / 2.0, h],
+            );
+        }
+    }
+}

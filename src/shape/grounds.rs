@@ -81,16 +81,7 @@ pub fn firewood_pile(b: &mut Builder) {
 pub fn compost_bin(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let p = 0.06;
-    for sx in [-1.0, 1.0] {
-        for sy in [-1.0, 1.0] {
-            let (x, y) = (sx * (hw - p / 2.0), sy * (hd - p / 2.0));
-            b.cuboid(
-                Frame,
-                [x - p / 2.0, y - p / 2.0, 0.0],
-                [x + p / 2.0, y + p / 2.0, h],
-            );
-        }
-    }
+    super::fittings::corner_posts(b, Frame, p, h);
     let n = ((h / 0.13).round() as usize).max(3);
     let pitch = h / n as f64;
     let t = 0.02;

@@ -72,16 +72,7 @@ pub fn rocking_chair(b: &mut Builder) {
 pub fn crib(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let p = 0.045;
-    for sx in [-1.0, 1.0] {
-        for sy in [-1.0, 1.0] {
-            let (x, y) = (sx * (hw - p / 2.0), sy * (hd - p / 2.0));
-            b.cuboid(
-                Frame,
-                [x - p / 2.0, y - p / 2.0, 0.0],
-                [x + p / 2.0, y + p / 2.0, h],
-            );
-        }
-    }
+    super::fittings::corner_posts(b, Frame, p, h);
     let zb = 0.25 * h;
     let zm = zb + 0.12;
     b.cuboid(Mattress, [-hw + p, -hd + p, zb], [hw - p, hd - p, zm]);
