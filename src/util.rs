@@ -4,8 +4,10 @@ use std::path::{Path, PathBuf};
 
 /// Writes `bytes` to `path` so that a crash or a full disk never leaves half a file:
 ///
-/// - a regular file (or a new path) is written through a temporary sibling `<name>.tmp` renamed
-///   into place; on failure the temporary file is removed;
+/// - a regular file (or a new path) is written through a temporary sibling
+///   `<name>.<process>-<n>.tmp` renamed into place, one of its own for each writer, so that two
+///   processes writing one file at once (shards of one scene) never rename each other's half
+///   file; on failure the temporary file is removed;
 /// - a symbolic link is followed, and the file it points to is replaced the same way (the link
 ///   stays a link);
 /// - anything else that exists (a device such as `/dev/stdout` or `/dev/null`, a pipe) is written
@@ -33,8 +35,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
             path,
         ));
     }
+    static WRITES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let mut tmp = target.as_os_str().to_owned();
-    tmp.push(".tmp");
+    tmp.push(format!(".{}-{n}.tmp", std::process::id()));
     let tmp = PathBuf::from(tmp);
     let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, &target));
     if let Err(e) = written {
@@ -260,7 +264,42 @@ pub fn convex_hull(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
 
 #[cfg(test)]
 mod tests {
-    use super::{convex_hull, env_choice};
+    use super::{convex_hull, env_choice, write_atomic};
+
+    #[test]
+    fn writers_at_once_never_leave_a_reader_half_a_file() {
+        // Two writers replace one file over and over (two shards writing the same plan) while
+        // a reader reads it: every read is one whole version, never empty or cut.
+        let dir = std::env::temp_dir().join(format!("ds-atomic-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("spec.json");
+        let (a, b) = (vec![b'a'; 200_000], vec![b'b'; 200_000]);
+        write_atomic(&path, &a).unwrap();
+        std::thread::scope(|s| {
+            for v in [&a, &b] {
+                let path = &path;
+                s.spawn(move || {
+                    for _ in 0..40 {
+                        write_atomic(path, v).unwrap();
+                    }
+                });
+            }
+            for _ in 0..200 {
+                let got = std::fs::read(&path).unwrap();
+                assert!(
+                    got == a || got == b,
+                    "a read of {} bytes is no whole version",
+                    got.len()
+                );
+            }
+        });
+        let left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(left.len(), 1, "no temporary file is left: {left:?}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     #[test]
     fn convex_hull_keeps_corners_counter_clockwise_only() {

@@ -39,9 +39,12 @@ pub(super) fn full_setup(
         for f in ["spec.json", "layout.json"] {
             let (from, to) = (dir.join(f), out.join(f));
             if !(resume && to.is_file()) {
-                std::fs::copy(&from, &to).with_context(|| {
-                    format!("the oracle's reference scene: copying {}", from.display())
+                // Read whole and written atomically: another shard may be reading `to`.
+                let bytes = std::fs::read(&from).with_context(|| {
+                    format!("the oracle's reference scene: reading {}", from.display())
                 })?;
+                dreamscene::util::write_atomic(&to, &bytes)
+                    .with_context(|| format!("writing {}", to.display()))?;
             }
         }
     }
