@@ -213,6 +213,41 @@ fn colours_follow_surface_words() {
     assert!(o("a park at sunset").sky[0] > o("a park").sky[0]);
 }
 
+/// A clinical place (named so by its kind or by the text) has a pale vinyl floor whatever its
+/// kind's own floor, unless the text names another; places that are not clinical keep theirs.
+#[test]
+fn clinical_places_have_vinyl_floors() {
+    let c = |t: &str| draft_colours(SceneType::Indoor, t);
+    for t in [
+        "an operating room",
+        "a surgical suite with two carts",
+        "a dental clinic",
+        "a hospital room with a window",
+        "a doctor's waiting room",
+        "a vet clinic with a scale",
+    ] {
+        let f = c(t);
+        assert_eq!(f.floor_pattern, Pattern::Speckled, "{t}");
+        assert!(
+            f.floor.iter().all(|&v| v > 0.7) && (f.floor[0] - f.floor[2]).abs() < 0.08,
+            "{t}: a pale grey floor, not wood: {:?}",
+            f.floor
+        );
+    }
+    assert_eq!(
+        c("an operating room with an oak floor").floor_pattern,
+        Pattern::Boards
+    );
+    for t in [
+        "a restaurant",
+        "an exam hall",
+        "a waiting room",
+        "a living room",
+    ] {
+        assert_ne!(c(t).floor, c("an operating room").floor, "{t}");
+    }
+}
+
 /// A door's leaf follows the scene: its kind, its style words, and what it says of its doors;
 /// a colour word of another noun leaves the door alone.
 #[test]

@@ -59,6 +59,11 @@ fn none_of_these_is_drawn_by_the_archetype_of_another_thing() {
         ("medical cart", "dresser"),
         ("tool cabinet", "dresser"),
         ("changing table", "dresser"),
+        ("stage", "box"),
+        ("pedestal", "box"),
+        ("hostess stand", "cabinet"),
+        ("jewelry armoire", "cabinet"),
+        ("examination lamp", "floor_lamp"),
     ];
     let wrong: Vec<String> = borrowed
         .iter()
@@ -86,9 +91,6 @@ fn real_boxes_stay_boxes_with_the_marks_of_their_kind() {
             );
             assert!(range(&pts, 2).1 > 0.98 * size[2], "{c} {size:?}: low");
         }
-    }
-    for c in ["stage", "pedestal"] {
-        assert_eq!(archetype_of(c), "box", "{c}");
     }
     let size = sized("cardboard box", [1.0; 3])[0];
     let tape = of(&at("cardboard box", size), Role::Handle);
@@ -338,7 +340,7 @@ fn an_operating_table_stands_on_one_column_under_a_long_pad() {
 }
 
 #[test]
-fn a_nursing_chair_is_low_and_armless_and_a_theatre_seat_folds_between_arms() {
+fn a_nursing_chair_is_low_under_a_high_back_and_a_theatre_seat_folds_between_arms() {
     for size in sized("nursing chair", [1.1, 1.0, 1.1]) {
         let s = at("nursing chair", size);
         let soft: Vec<[f64; 3]> = s
@@ -346,11 +348,15 @@ fn a_nursing_chair_is_low_and_armless_and_a_theatre_seat_folds_between_arms() {
             .filter(|(_, r)| matches!(r, Role::Upholstery | Role::Cushion))
             .map(|(p, _)| *p)
             .collect();
-        let seat = range(&within(&soft, |p| p[1] > 0.3 * size[1]), 2).1;
-        assert!(seat < 0.42 * size[2], "{size:?}: seat at {seat:.2}");
-        // Nothing rises beside the seat in front of the back: no arms.
-        let arms = within(&all(&s), |p| p[1] > -0.1 * size[1] && p[2] > seat + 0.05);
-        assert!(arms.is_empty(), "{size:?}: {} samples of arms", arms.len());
+        let seat = range(&of(&s, Role::Cushion), 2).1;
+        assert!(seat < 0.46 * size[2], "{size:?}: seat at {seat:.2}");
+        // Its arms (a glider's side frames) stay low beside the seat, well under the back.
+        let arms = within(&all(&s), |p| p[1] > -0.1 * size[1] && p[2] > seat + 0.25);
+        assert!(
+            arms.is_empty(),
+            "{size:?}: {} samples of high arms",
+            arms.len()
+        );
         assert!(range(&soft, 2).1 > 0.97 * size[2], "{size:?}: low back");
     }
     for name in ["theater seat", "cinema seat"] {

@@ -58,6 +58,7 @@ use super::pegs as pg;
 use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
+use super::podiums as pd;
 use super::racks as rk;
 use super::recliners as rc;
 use super::rigs;
@@ -466,6 +467,11 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("water_jug", bw::water_jug, [Glass], [Glass => [0.55, 0.75, 0.92], Handle => [0.15, 0.35, 0.80], Interior => [0.40, 0.60, 0.80]]),
     arch!("flower_bucket_stand", fl::flower_bucket_stand, [Frame], [Frame => [0.40, 0.30, 0.20], Top => [0.48, 0.36, 0.24], Metal => [0.66, 0.68, 0.70], Foliage => [0.22, 0.45, 0.20]]),
     arch!("bollard", tk::bollard, [Body, Top], [Body => [0.25, 0.25, 0.27], Top => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Frame => [0.55, 0.56, 0.58], Canvas => [0.95, 0.78, 0.10]]),
+    arch!("stage", pd::stage, [Top], [Top => [0.24, 0.21, 0.19], Body => [0.30, 0.29, 0.29], Frame => [0.55, 0.40, 0.26], Canvas => [0.06, 0.06, 0.07], Handle => [0.85, 0.75, 0.25]]),
+    arch!("pedestal", pd::pedestal, [Body, Top, Frame], [Body => WHITE, Top => WHITE, Frame => [0.84, 0.84, 0.83], Interior => [0.45, 0.45, 0.46]]),
+    arch!("hostess_stand", pd::hostess_stand, [Body, Top], [Body => DARK_WOOD, Top => [0.36, 0.23, 0.13], Door => [0.34, 0.21, 0.12], Frame => [0.18, 0.12, 0.08], Interior => [0.10, 0.07, 0.05], Metal => BRASS, Shade => [0.12, 0.30, 0.18], Canvas => [0.38, 0.10, 0.09]]),
+    arch!("jewelry_armoire", dr::jewelry_armoire, [Body, Top, Door], [Body => [0.42, 0.22, 0.14], Top => [0.42, 0.22, 0.14], Door => [0.46, 0.25, 0.16], Frame => [0.36, 0.19, 0.12], Handle => BRASS, Glass => [0.80, 0.86, 0.90]]),
+    arch!("examination_lamp", wd::examination_lamp, [Shade], [Shade => [0.90, 0.91, 0.92], Metal => [0.80, 0.81, 0.83], Frame => [0.55, 0.56, 0.58], Light => [1.0, 0.97, 0.88], Handle => [0.35, 0.55, 0.75], Tyre => BLACK]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
 ];
 

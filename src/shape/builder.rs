@@ -34,6 +34,19 @@ impl Builder {
         }
     }
 
+    /// Turns every part drawn since the first `first` parts by `m` about the origin (a part
+    /// drawn along one axis, then set along another).
+    pub fn turn_from(&mut self, first: usize, m: M3) {
+        for p in &mut self.parts[first..] {
+            let (c, r) = match &mut p.prim {
+                Primitive::Cuboid { centre, rot, .. } => (centre, rot),
+                Primitive::Revolved { origin, rot, .. } => (origin, rot),
+            };
+            *c = super::parts::mul(&m, *c);
+            *r = super::parts::mat_mul(&m, r);
+        }
+    }
+
     pub fn push(&mut self, role: Role, variant: u32, prim: Primitive) {
         self.parts.push(Part {
             prim,

@@ -1,8 +1,9 @@
 //! Layouts of drawer cases that are not bedroom dressers: a card catalogue (a grid of many small
 //! drawers on a stand), a tool chest (many shallow full-width drawers under a lidded top, on
 //! castors), a medical cart (a drawer trolley on castors with a rail round its top and a push
-//! handle) and a changing table (drawers under a padded top with raised edges and low guard
-//! rails). The front faces +y.
+//! handle), a changing table (drawers under a padded top with raised edges and low guard
+//! rails) and a jewellery armoire (a tall narrow chest of shallow drawers on legs, side doors
+//! and a mirrored lid standing open). The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 
@@ -198,4 +199,60 @@ pub fn changing_table(b: &mut Builder) {
         let y = if sy < 0.0 { -my + r } else { hd - 0.02 - r };
         b.rod(Cushion, [-mx, y, top + pad], [mx, y, top + pad], r);
     }
+}
+
+/// A jewellery armoire: a tall narrow chest on four slender legs, its front a column of many
+/// shallow drawers, a tall hinged door down each side (a necklace cabinet), and a lid on top
+/// standing open with a mirror inside it.
+pub fn jewelry_armoire(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let legs = 0.16 * h;
+    let lid = (0.04 * h).min(0.04);
+    // The lid stands open: it rises from the back edge, so the case ends below it by its
+    // height as an upright.
+    let top = h - 0.9 * b.d.min(0.35 * h);
+    let door = 0.018;
+    b.legs(Frame, 0.025, 0.02, 0.0, legs + 0.02);
+    b.cuboid(
+        Frame,
+        [-hw + 0.01, -hd + 0.01, legs],
+        [hw - 0.01, hd - 0.01, legs + 0.03],
+    );
+    let (cx, cy) = (hw - door, hd - 0.012);
+    b.cuboid(Body, [-cx, -hd, legs + 0.03], [cx, cy, top - lid]);
+    b.cuboid(Top, [-hw, -hd, top - lid], [hw, hd, top]);
+    let rows = (((top - lid - legs) / 0.07).round() as usize).max(6);
+    drawer_grid(
+        b,
+        [-cx + 0.02, cx - 0.02],
+        [legs + 0.05, top - lid - 0.02],
+        cy,
+        1,
+        rows,
+        0.25,
+    );
+    // The side doors: tall leaves over the upper two thirds, each with a knob.
+    let z0 = legs + 0.3 * (top - legs);
+    for sx in [-1.0, 1.0] {
+        let x = sx * cx;
+        b.cuboid(
+            Door,
+            [x.min(x + sx * door), -hd + 0.02, z0],
+            [x.max(x + sx * door), hd - 0.03, top - lid - 0.015],
+        );
+        let xk = sx * (hw + 0.008);
+        b.cuboid(
+            Handle,
+            [xk - 0.008, 0.5 * hd, 0.5 * (z0 + top) - 0.012],
+            [xk + 0.008, 0.5 * hd + 0.016, 0.5 * (z0 + top) + 0.012],
+        );
+    }
+    // The open lid: its frame upright along the back edge, the mirror on its front face.
+    let up = h - top;
+    b.cuboid(Top, [-hw, -hd, top], [hw, -hd + lid, h]);
+    b.cuboid(
+        Glass,
+        [-hw + 0.03, -hd + lid, top + 0.03],
+        [hw - 0.03, -hd + lid + 0.004, top + up - 0.03],
+    );
 }

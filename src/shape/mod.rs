@@ -73,6 +73,7 @@ mod pegs;
 mod picnic;
 mod plants;
 mod play;
+mod podiums;
 mod racks;
 mod recliners;
 mod rigs;

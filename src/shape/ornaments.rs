@@ -3,10 +3,10 @@
 //! pole (carved faces stacked up a pole, each with eyes, a beak or a nose and a mouth, spread
 //! wings at the top) and a tree stump (bark, flaring roots, a pale cut top with growth rings).
 //! The front faces +y.
-use super::archetypes::Builder;
+use super::archetypes::{frame_along, Builder};
 use super::fittings::{band, disc};
 use super::materials::Role::*;
-use super::parts::{rot_x, IDENTITY};
+use super::parts::{frustum_profile, rot_x, IDENTITY};
 use std::f64::consts::TAU;
 
 const Z: [f64; 3] = [0.0, 0.0, 1.0];
@@ -126,7 +126,8 @@ fn carved_face(b: &mut Builder, r: f64, z0: f64, z1: f64, beak: bool, variant: u
 /// thunderbird at the top with its wings spread.
 pub fn totem_pole(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let r = 0.8 * hw.min(hd);
+    // The pole is as thick as the size box is deep; the wings spread across its width.
+    let r = 0.8 * hd.min(0.45 * hw);
     let wings = 0.14 * h;
     let top = h - wings;
     let n = 4;
@@ -177,7 +178,7 @@ pub fn totem_pole(b: &mut Builder) {
 /// darker growth rings and a split.
 pub fn tree_stump(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let r = 0.7 * hw.min(hd);
+    let r = 0.6 * hw.min(hd);
     b.revolved(
         Trunk,
         0,
@@ -193,16 +194,23 @@ pub fn tree_stump(b: &mut Builder) {
             [0.0, h - 0.02],
         ],
     );
-    // Roots: lumps running out and down at the foot.
-    for k in 0..6 {
-        let a = k as f64 / 6.0 * TAU + 0.3;
+    // Roots: flattened cones flaring out of the trunk's foot and running down into the
+    // ground, thick where they leave the trunk and thin at their tips.
+    let l = hw.min(hd) - r;
+    for k in 0..7 {
+        let a = k as f64 / 7.0 * TAU + 0.3;
         let (c, s) = (a.cos(), a.sin());
-        let l = hw.min(hd) - r;
-        b.rod(
+        let from = [0.6 * r * c, 0.6 * r * s, 0.28 * h];
+        let to = [(r + 0.95 * l) * c, (r + 0.95 * l) * s, 0.0];
+        let d = [0, 1, 2].map(|i| to[i] - from[i]);
+        let len = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+        b.revolved(
             Trunk,
-            [0.9 * r * c, 0.9 * r * s, 0.18 * h],
-            [(r + 0.8 * l) * c, (r + 0.8 * l) * s, 0.04],
-            0.14 * r,
+            0,
+            from,
+            frame_along(d),
+            1.3,
+            frustum_profile(0.42 * r, 0.08 * r, len),
         );
     }
     disc(b, Top, [0.0, 0.0, h - 0.01], Z, 0.96 * r, 0.02);

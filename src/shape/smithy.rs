@@ -44,18 +44,21 @@ pub fn forge(b: &mut Builder) {
             0.015,
         );
     }
-    // The anvil on its stump beside the hearth, drawn by the anvil's own layout.
+    // The anvil on its stump beside the hearth, drawn by the anvil's own layout at its own
+    // proportions (a long face over a narrow waist), turned so its horn points forwards.
     let first = b.parts.len();
+    let ah = (0.7 * h).min(0.85);
     let mut anvil = Builder {
         parts: vec![],
-        w: hw - xa,
-        d: 0.5 * b.d,
-        h: (0.7 * h).min(0.85),
+        w: (0.8 * b.d).min(0.9 * ah),
+        d: (0.8 * (hw - xa)).min(0.45 * ah),
+        h: ah,
         goods: None,
     };
     super::workshop::anvil(&mut anvil);
     b.parts.extend(anvil.parts);
-    b.translate_from(first, [0.5 * (xa + hw), 0.2 * hd, 0.0]);
+    b.turn_from(first, rot_z(std::f64::consts::FRAC_PI_2));
+    b.translate_from(first, [0.5 * (xa + hw), 0.1 * hd, 0.0]);
 }
 
 /// A furnace: a squat metal box on a plinth, a firebox door glowing at its front, a flue

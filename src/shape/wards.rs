@@ -1,8 +1,9 @@
 //! Layouts of seats and tables for a purpose: an operating table (a narrow jointed pad on a
 //! single column over a base, arm boards out to the sides), a theatre seat (a folding
-//! upholstered seat between side standards that carry the arms) and a nursing chair (a low
-//! armless seat under a tall upholstered back, on short legs). Seats face +y; the operating
-//! table's length runs along its longer side.
+//! upholstered seat between side standards that carry the arms), a nursing chair (a glider: a
+//! low seat under a tall upholstered back, hung between padded side frames on floor runners)
+//! and an examination lamp (a wheeled pole with an arm out to a round flat head). Seats face
+//! +y; the operating table's length runs along its longer side.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::rot_x;
@@ -127,36 +128,121 @@ pub fn theater_seat(b: &mut Builder) {
     );
 }
 
-/// A nursing chair: a low upholstered seat on a plinth with short legs, no arms, and a tall
-/// back leaning a little, rounded at the top.
+/// A nursing chair: a glider. A low upholstered seat under a tall back leaning a little, its
+/// top rounded, hung between two side frames with padded arms that stand on floor runners, so
+/// the seat glides back and forth on the swing links between them.
 pub fn nursing_chair(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let legs = 0.12 * h;
-    let seat = (0.38 * h).min(0.4);
-    b.legs(Frame, 0.035, 0.05, 0.0, legs);
+    let base = 0.1 * h;
+    let seat = (0.42 * h).min(0.45);
+    let side = (0.1 * b.w).clamp(0.05, 0.09);
+    let arm = seat + 0.2;
+    let xi = hw - side;
+    // Floor runners, a cross bar between them, and the side frames: two posts and a padded arm.
+    for sx in [-1.0, 1.0] {
+        let x = sx * (hw - 0.5 * side);
+        b.cuboid(
+            Frame,
+            [x - 0.5 * side, -hd, 0.0],
+            [x + 0.5 * side, hd, 0.04],
+        );
+        for y in [-0.7 * hd, 0.75 * hd] {
+            b.cuboid(
+                Frame,
+                [x - 0.02, y - 0.025, 0.04],
+                [x + 0.02, y + 0.025, arm - 0.05],
+            );
+        }
+        b.cuboid(
+            Upholstery,
+            [x - 0.5 * side, -0.85 * hd, arm - 0.05],
+            [x + 0.5 * side, hd, arm],
+        );
+        // The swing links from under the arm down to the seat's rail.
+        for y in [-0.5 * hd, 0.5 * hd] {
+            let xs = sx * (xi - 0.01);
+            b.rod(Metal, [x, y, arm - 0.06], [xs, y - 0.05, base + 0.05], 0.01);
+        }
+    }
+    b.cuboid(Frame, [-xi, -0.1, 0.0], [xi, 0.1, 0.03]);
+    // The seat hangs between the side frames on its rail.
+    b.cuboid(
+        Frame,
+        [-xi + 0.01, -hd + 0.1, base + 0.03],
+        [xi - 0.01, hd - 0.05, base + 0.07],
+    );
     b.cuboid(
         Upholstery,
-        [-0.9 * hw, -hd + 0.12, legs],
-        [0.9 * hw, hd, seat - 0.08],
+        [-xi + 0.02, -hd + 0.12, base + 0.07],
+        [xi - 0.02, hd - 0.04, seat - 0.08],
     );
     b.cuboid(
         Cushion,
-        [-0.88 * hw, -hd + 0.18, seat - 0.08],
-        [0.88 * hw, hd - 0.02, seat],
+        [-xi + 0.03, -hd + 0.18, seat - 0.08],
+        [xi - 0.03, hd - 0.05, seat],
     );
     // The back: tall, slightly reclined, its top rounded.
     let lean = 0.14f64;
     let (s, c) = lean.sin_cos();
-    let bh = (h - legs - 0.08) / c;
+    let bh = (h - base - 0.08) / c;
     let th = 0.12;
-    let cb = [0.0, -hd + 0.5 * th + 0.5 * bh * s, legs + 0.5 * bh * c];
-    b.slab(Upholstery, cb, [0.85 * hw, 0.5 * th, 0.5 * bh], rot_x(lean));
+    let cb = [0.0, -hd + 0.5 * th + 0.5 * bh * s, base + 0.5 * bh * c];
+    b.slab(Upholstery, cb, [xi - 0.02, 0.5 * th, 0.5 * bh], rot_x(lean));
     let y_top = cb[1] - 0.5 * bh * s;
     b.ellipsoid_rot(
         Upholstery,
         0,
         [0.0, y_top, h - 0.1],
-        [0.85 * hw, 0.5 * th, 0.1],
+        [xi - 0.02, 0.5 * th, 0.1],
         rot_x(lean),
     );
+}
+
+/// An examination lamp: a five-spoke base on castors, a pole, and a jointed arm reaching out
+/// from its top to a round flat head facing down, its light on the underside.
+pub fn examination_lamp(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    // The base and pole stand at one side, so the arm reaches the head across the size box.
+    let r = 0.4 * hw.min(hd);
+    let xb = -hw + r + 0.03;
+    let wheel = 0.025;
+    for k in 0..5 {
+        let a = k as f64 / 5.0 * std::f64::consts::TAU;
+        let (c, s) = (a.cos(), a.sin());
+        let (x, y) = (xb + r * c, r * s);
+        b.rod(
+            Metal,
+            [xb, 0.0, 2.0 * wheel + 0.02],
+            [x, y, 2.0 * wheel + 0.01],
+            0.012,
+        );
+        b.rod(Tyre, [x - 0.012, y, wheel], [x + 0.012, y, wheel], wheel);
+    }
+    // The pole, its joint, and the arm up and out across the size box to the head.
+    let zp = 0.72 * h;
+    b.cylinder(Metal, [xb, 0.0, 2.0 * wheel], 0.018, zp - 2.0 * wheel);
+    b.ellipsoid(Frame, [xb, 0.0, zp], [0.03, 0.03, 0.03]);
+    let head_r = (0.6 * hw.min(hd)).min(0.25);
+    let head_h = (0.3 * head_r).min(0.07);
+    let hx = hw - head_r;
+    let elbow = [xb + 0.3 * hw, 0.0, h - 0.05];
+    b.polyline(Metal, &[[xb, 0.0, zp], elbow, [hx, 0.0, h - 0.01]], 0.012);
+    // The head: a shallow dish, its rim a little wider than its crown, the light beneath.
+    let zh = h - head_h - 0.02;
+    b.revolved(
+        Shade,
+        0,
+        [hx, 0.0, zh],
+        super::parts::IDENTITY,
+        1.0,
+        vec![
+            [0.0, 0.0],
+            [head_r, 0.0],
+            [0.85 * head_r, head_h],
+            [0.2 * head_r, head_h + 0.02],
+            [0.0, head_h + 0.02],
+        ],
+    );
+    b.cylinder(Light, [hx, 0.0, zh - 0.004], 0.7 * head_r, 0.004);
+    b.rod(Handle, [hx, 0.0, zh - 0.004], [hx, 0.0, zh - 0.05], 0.012);
 }

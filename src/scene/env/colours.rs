@@ -198,7 +198,6 @@ const KINDS: &[KindLook] = &[
     ("bar", [0.36, 0.22, 0.13], Boards, [0.55, 0.32, 0.24], Bricks, DARK_WOOD),
     ("gym", [0.25, 0.25, 0.27], Speckled, [0.90, 0.90, 0.90], Plain, METAL),
     ("garage", [0.60, 0.60, 0.58], Mottled, [0.80, 0.80, 0.78], Plain, METAL),
-    ("hospital room", [0.78, 0.82, 0.84], Speckled, [0.94, 0.95, 0.95], Plain, PAINTED),
     ("church", [0.66, 0.62, 0.55], Tiles, [0.80, 0.76, 0.68], Bricks, DARK_WOOD),
     ("museum", [0.90, 0.89, 0.86], Marble, [0.94, 0.94, 0.93], Plain, PAINTED),
     ("home theater", [0.35, 0.12, 0.12], Speckled, [0.22, 0.20, 0.22], Plain, DARK_WOOD),
@@ -213,6 +212,42 @@ const KINDS: &[KindLook] = &[
     ("campsite", [0.40, 0.38, 0.22], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
     ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
 ];
+
+/// Words that make a place clinical, in the scene kind's name or in the text ("an operating
+/// room", "a dental clinic", "a vet's surgery", "a doctor's waiting room"): its floor is sheet
+/// vinyl, easy to clean, whatever the kind's own floor, unless the text names another.
+const CLINICAL: &[&str] = &[
+    "hospital",
+    "clinic",
+    "clinical",
+    "surgery",
+    "surgical",
+    "operating",
+    "dental",
+    "dentist",
+    "doctor",
+    "medical",
+    "ward",
+    "infirmary",
+    "veterinary",
+    "vet",
+    "treatment",
+    "triage",
+];
+
+/// The clinical floor: pale sheet vinyl, its fine speckle; and the walls of a clinical place
+/// whose kind has no look of its own.
+const CLINICAL_FLOOR: [f32; 3] = [0.80, 0.83, 0.83];
+const CLINICAL_WALL: [f32; 3] = [0.93, 0.95, 0.95];
+
+/// Whether the scene kind's name or the text says the place is clinical.
+fn clinical(kind: Option<&str>, text_words: &[String]) -> bool {
+    let kind_words = kind.map(words).unwrap_or_default();
+    kind_words
+        .iter()
+        .chain(text_words)
+        .any(|w| CLINICAL.contains(&w.as_str()))
+}
 
 /// The longest scene-kind name or synonym of the knowledge base in `text` (whole words).
 fn scene_kind(text: &str) -> Option<&'static str> {
@@ -263,6 +298,12 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
     }
     let w = words(scene_text);
+    if scene_type == SceneType::Indoor && clinical(kind, &w) {
+        (c.floor, c.floor_pattern) = (CLINICAL_FLOOR, Speckled);
+        if !KINDS.iter().any(|x| Some(x.0) == kind) {
+            (c.wall, c.wall_pattern, c.door) = (CLINICAL_WALL, Plain, PAINTED);
+        }
+    }
     let mut one_ground = true;
     if scene_type == SceneType::Outdoor {
         let g = super::grounds::outdoor_ground(kind, &w);
