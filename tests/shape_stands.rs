@@ -2,8 +2,10 @@
 //! are and checked on their parts at their knowledge-base size and at a stretched size: a stage
 //! has steps up to its deck, a pedestal mouldings at its foot and top, a host stand a sloped top,
 //! a jewellery armoire many shallow drawers on legs under a mirrored lid, an examination lamp a
-//! round flat head out on an arm, a nursing chair a glider's runners; the goods of a fruit bowl,
-//! coat hooks and a florist's stand are in their own colours, not a shelf's grey and brown.
+//! round flat head out on an arm, a nursing chair a glider's runners; a totem pole's wings spread
+//! wide, a stump's roots flare into the ground, a forge's anvil is full size; the goods of a
+//! fruit bowl, coat hooks and a florist's stand are in their own colours, not a shelf's grey and
+//! brown.
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
@@ -274,5 +276,57 @@ fn fruit_coats_and_flowers_are_in_their_own_colours_not_a_shelfs_greys() {
             "{c} ({d}): {share:.3} of it in strong colours"
         );
         assert!(filled >= hues, "{c} ({d}): {filled} hues");
+    }
+}
+
+#[test]
+fn a_totem_spreads_its_wings_a_stump_flares_into_roots_and_a_forges_anvil_is_full_size() {
+    for size in sized("totem pole", [1.2, 1.0, 1.1]) {
+        let s = at("totem pole", size);
+        let h = size[2];
+        let pole = width(&of(&s, Role::Body), 0.4 * h, 0.6 * h);
+        let wings = width(&all(&s), 0.88 * h, h);
+        assert!(
+            wings > 2.5 * pole,
+            "totem {size:?}: wings {wings:.2} over a pole {pole:.2} wide"
+        );
+    }
+    for name in ["tree stump", "stump seat"] {
+        for size in sized("tree stump", [1.2, 1.0, 1.3]) {
+            let s = at(name, size);
+            let h = size[2];
+            let trunk = width(&of(&s, Role::Trunk), 0.5 * h, 0.6 * h);
+            let foot = width(&of(&s, Role::Trunk), 0.0, 0.01 * h);
+            assert!(
+                foot > 1.5 * trunk,
+                "{name} {size:?}: roots spread {foot:.2} under a trunk {trunk:.2} wide"
+            );
+            // The roots leave the trunk thick: just above the ground they still stand out of it
+            // all round, not as thin pegs.
+            let low = within(&of(&s, Role::Trunk), |p| {
+                (0.08 * h..0.12 * h).contains(&p[2]) && p[0].hypot(p[1]) > 0.6 * trunk
+            });
+            assert!(
+                low.len() > 200,
+                "{name} {size:?}: {} root samples low down",
+                low.len()
+            );
+        }
+    }
+    for size in sized("forge", [1.2, 1.0, 1.0]) {
+        let s = at("forge", size);
+        let anvil = at("anvil", sized("anvil", [1.0; 3])[0]);
+        // The anvil beside the hearth: its face is level and long, like the anvil's own.
+        let face = within(&of(&s, Role::Metal), |p| {
+            p[0] > 0.2 * size[0] && p[2] < 0.9 * size[2] && p[2] > 0.5 * size[2]
+        });
+        let (y0, y1) = range(&face, 1);
+        let (a0, a1) = range(&of(&anvil, Role::Metal), 0);
+        assert!(
+            y1 - y0 > 0.7 * (a1 - a0).min(size[1]),
+            "forge {size:?}: its anvil is {:.2} long, an anvil {:.2}",
+            y1 - y0,
+            a1 - a0
+        );
     }
 }
