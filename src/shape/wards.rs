@@ -198,10 +198,13 @@ pub fn nursing_chair(b: &mut Builder) {
     );
 }
 
-/// An examination lamp: a five-spoke base on castors, a pole, and a jointed arm reaching out
-/// from its top to a round flat head facing down, its light on the underside.
+/// An examination lamp: a five-spoke base on castors at its back, a pole, and a jointed arm
+/// reaching forwards from its top to a round flat head facing down, its light on the underside.
 pub fn examination_lamp(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    // Drawn reaching along x, then turned so the arm reaches forwards (+y), towards what the
+    // lamp is set beside: its half width along x is the size's half depth.
+    let first = b.parts.len();
+    let (hw, hd, h) = (b.d / 2.0, b.w / 2.0, b.h);
     // The base and pole stand at one side, so the arm reaches the head across the size box.
     let r = 0.4 * hw.min(hd);
     let xb = -hw + r + 0.03;
@@ -245,4 +248,5 @@ pub fn examination_lamp(b: &mut Builder) {
     );
     b.cylinder(Light, [hx, 0.0, zh - 0.004], 0.7 * head_r, 0.004);
     b.rod(Handle, [hx, 0.0, zh - 0.004], [hx, 0.0, zh - 0.05], 0.012);
+    b.turn_from(first, super::parts::rot_z(std::f64::consts::FRAC_PI_2));
 }
