@@ -3,7 +3,8 @@
 //! cutting table, a rack there only for magazines goes with "no magazines", a pile of books is
 //! one pile on a table, misspelt object words are mended as place names are (never one
 //! letter changed for another), a bare plural in N rows fills every row, and things said to
-//! hang on the wall (a map, a calendar) are things that hang. Prompts of no corpus.
+//! hang on the wall (a map, a calendar) are things that hang; recliners named in a home theatre
+//! are its seats. Prompts of no corpus.
 mod reading;
 use reading::{keys, number, plan};
 
@@ -31,6 +32,21 @@ fn a_nursery_seats_its_parent_in_one_chair() {
         assert_eq!(number(&s, seat), 1, "{prompt}: {:?}", keys(&s));
         assert_eq!(number(&s, not), 0, "{prompt}: {:?}", keys(&s));
     }
+}
+
+#[test]
+fn recliners_named_in_a_home_theatre_are_its_seats() {
+    for (prompt, n) in [
+        ("a home theatre with two rows of recliners", 4),
+        ("a home theatre with six recliners", 6),
+        ("a media room with three recliners facing the screen", 3),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "recliner"), n, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "theater seat"), 0, "{prompt}: {:?}", keys(&s));
+    }
+    let s = plan("a home theatre");
+    assert_eq!(number(&s, "theater seat"), 8, "{:?}", keys(&s));
 }
 
 #[test]
