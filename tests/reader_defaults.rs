@@ -4,7 +4,7 @@
 //! one pile on a table, misspelt object words are mended as place names are (never one
 //! letter changed for another), a bare plural in N rows fills every row, and things said to
 //! hang on the wall (a map, a calendar) are things that hang; recliners named in a home theatre
-//! are its seats. Prompts of no corpus.
+//! are its seats; a tea shop is a cafe. Prompts of no corpus.
 mod reading;
 use reading::{keys, number, plan};
 
@@ -176,5 +176,18 @@ fn things_said_to_hang_on_the_wall_are_things_that_hang() {
             matches!(class, dreamscene::plan::gcp::classes::Class::OnWall(_)),
             "{prompt}: {class:?}"
         );
+    }
+}
+
+#[test]
+fn a_tea_shop_is_a_cafe() {
+    for prompt in [
+        "a tea shop with four tables, each with a teapot",
+        "a little teashop with a counter",
+        "a tea shop",
+    ] {
+        let s = plan(prompt);
+        assert!(number(&s, "cafe") >= 1, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "display shelf"), 0, "{prompt}: {:?}", keys(&s));
     }
 }
