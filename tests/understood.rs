@@ -170,3 +170,34 @@ fn buckets_of_flowers_hold_flowers() {
     let p = plan("a utility room with a washing machine and a bucket");
     assert_eq!(why(&p, "bucket").count, 1, "a bucket alone");
 }
+
+#[test]
+fn a_room_for_so_many_people_is_told_without_the_next_words() {
+    for (prompt, said) in [
+        ("a dining room for eight", "inferred from \"for eight\""),
+        (
+            "a dining room for eight, a sideboard",
+            "inferred from \"for eight\"",
+        ),
+        (
+            "a dining room for ten and a rug",
+            "inferred from \"for ten\"",
+        ),
+        (
+            "a meeting room for 6 people",
+            "inferred from \"for 6 people\"",
+        ),
+    ] {
+        let p = plan(prompt);
+        let seats: Vec<&Because> = p
+            .understood
+            .objects
+            .iter()
+            .filter(|b| b.why.starts_with("inferred from"))
+            .collect();
+        assert!(!seats.is_empty(), "{prompt}: {:?}", p.understood);
+        for b in seats {
+            assert_eq!(b.why, said, "{prompt}: {b:?}");
+        }
+    }
+}

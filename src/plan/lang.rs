@@ -103,6 +103,7 @@ fn re(p: &str) -> Regex {
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let t = words::compound_numbers(&normalise(text));
     let t = spelling::mend_place_names(kb, &t);
+    let t = spelling::mend_object_words(kb, &t);
     let mut r = Reading {
         text: t.clone(),
         scale: 1.0,

@@ -1,7 +1,8 @@
 //! What WordNet says of a noun the knowledge base lacks: its kind (the category its nearest
 //! hypernym names, or a size class), whether a noun ending in "s" is singular ("dais"), and
 //! irregular plurals. Data: `kb/wordnet.txt`, generated from WordNet 3.0 by
-//! `scripts/wordnet_kinds.py`.
+//! `scripts/wordnet_kinds.py`; and the English words one slip away from an object word, which
+//! are never mended as slips (`kb/near_words.txt`, by `scripts/wordnet_near_words.py`).
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 
@@ -57,6 +58,21 @@ pub fn kind(noun: &str) -> Option<Kind<'static>> {
         Some(class) => Kind::Size(class),
         None => Kind::Category(k),
     })
+}
+
+/// Whether `w` is an English word (WordNet 3.0, any part of speech) one slip away from a word
+/// of the object names ("arced", "barrels", "orange"): a word said on purpose, not a slip.
+pub fn is_near_word(w: &str) -> bool {
+    static WORDS: OnceLock<BTreeSet<&'static str>> = OnceLock::new();
+    WORDS
+        .get_or_init(|| {
+            include_str!("kb/near_words.txt")
+                .lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty() && !l.starts_with('#'))
+                .collect()
+        })
+        .contains(w)
 }
 
 /// The singular WordNet knows for `w`: itself for a singular noun ending in "s" ("dais"), the

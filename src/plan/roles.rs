@@ -1,6 +1,7 @@
 //! Roles that furniture fills (`kb/roles.txt`): a named object that fills a role replaces the
 //! scene's default of that role instead of adding to it ("a single bed" in a bedroom is its bed),
-//! a default that serves only what is absent goes (no TV, no TV stand), and "nothing else" /
+//! a default that serves only what is absent goes (no TV, no TV stand), a default that holds only
+//! what the text says is not there goes with it (no magazines, no magazine rack), and "nothing else" /
 //! "just ..." keeps only what the text names.
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
@@ -9,6 +10,8 @@ use std::sync::OnceLock;
 struct Roles {
     roles: Vec<(String, Vec<String>)>,
     needs: Vec<(String, Vec<String>)>,
+    /// "holds" lines: a category to the things it is there to hold.
+    holds: Vec<(String, Vec<String>)>,
     /// Names that say only the role of what they name ("shelving units").
     generic: Vec<String>,
 }
@@ -30,6 +33,7 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
     let mut r = Roles {
         roles: vec![],
         needs: vec![],
+        holds: vec![],
         generic: vec![],
     };
     for (ln, line) in text.lines().enumerate() {
@@ -57,6 +61,12 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
                     .ok_or_else(|| err("needs a category".into()))?;
                 r.needs.push((cat, list(served)?));
             }
+            ["holds", cat, held] => {
+                let cat = list(cat)?
+                    .pop()
+                    .ok_or_else(|| err("holds a category".into()))?;
+                r.holds.push((cat, list(held)?));
+            }
             ["generic", names] => {
                 for n in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
                     if kb.object(n).is_none() {
@@ -65,10 +75,10 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
                     r.generic.push(n.to_string());
                 }
             }
-            [role, cats] if *role != "needs" => r.roles.push((role.to_string(), list(cats)?)),
+            [role, cats] if *role != "needs" && *role != "holds" => r.roles.push((role.to_string(), list(cats)?)),
             _ => {
                 return Err(err(
-                    "expected `role | categories`, `needs | category | categories` or `generic | names`"
+                    "expected `role | categories`, `needs | category | categories`, `holds | category | categories` or `generic | names`"
                         .into(),
                 ))
             }
@@ -95,6 +105,29 @@ pub fn role_of(category: &str) -> Option<&'static str> {
 /// (`kb/roles.txt`: generic): "a shelving unit" in a shop is its display shelf.
 pub fn is_generic(name: &str) -> bool {
     roles().generic.iter().any(|n| n == name)
+}
+
+/// Removes from `counts` the defaults (categories not in `named`) there only to hold what the
+/// text says is not there: every category a default holds is in `negated` ("no magazines": no
+/// magazine rack). One note per category removed.
+pub fn without_what_they_hold(
+    counts: &mut BTreeMap<String, u32>,
+    named: &BTreeSet<String>,
+    negated: &BTreeSet<String>,
+) -> Vec<String> {
+    let mut notes = vec![];
+    for (c, held) in &roles().holds {
+        if !named.contains(c)
+            && held.iter().all(|h| negated.contains(h))
+            && counts.remove(c).is_some()
+        {
+            notes.push(format!(
+                "default {c} left out: what it holds ({}) is not wanted",
+                held.join(", ")
+            ));
+        }
+    }
+    notes
 }
 
 /// Removes from `counts` the defaults (categories not in `named`) that a named object's role

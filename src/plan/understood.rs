@@ -169,17 +169,30 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
     out
 }
 
-/// "for 24 students": the words of the text that give `people`.
+/// "for 24 students": the words of the text that give `people`. The word after the number is
+/// kept only when it names who the seats are for ("students", "people"): a function word, a
+/// verb, a number or a word after a comma starts the next part of the request ("for eight, a
+/// sideboard", "for eight with a bench").
 pub fn people_phrase(text: &str, people: u32) -> String {
-    let words: Vec<&str> = text
-        .split(|c: char| c.is_whitespace() || ",.;:".contains(c))
-        .filter(|w| !w.is_empty())
-        .collect();
+    let words: Vec<&str> = text.split_whitespace().collect();
+    let bare = |w: &str| {
+        w.trim_matches(|c: char| !c.is_alphanumeric() && c != '\'' && c != '-')
+            .to_lowercase()
+    };
     for (k, w) in words.iter().enumerate() {
-        if *w == "for" && words.get(k + 1).and_then(|n| lang::number(n)) == Some(people) {
-            let tail = words.get(k + 2).copied().unwrap_or("");
-            return format!("for {} {tail}", words[k + 1]).trim().to_string();
+        let Some(n) = words.get(k + 1) else { break };
+        if bare(w) != "for" || lang::number(&bare(n)) != Some(people) {
+            continue;
         }
+        let number = bare(n);
+        let closed = n.ends_with([',', '.', ';', ':', '!', '?', ')']);
+        let tail = words.get(k + 2).map(|t| bare(t)).unwrap_or_default();
+        let noun = !closed && lang::is_adjective(&tail) && lang::number(&tail).is_none();
+        return if noun {
+            format!("for {number} {tail}")
+        } else {
+            format!("for {number}")
+        };
     }
     format!("for {people}")
 }

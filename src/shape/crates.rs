@@ -1,8 +1,9 @@
 //! Layouts of the real boxes, each still a box in outline but with the parts that say which
 //! box it is: cardboard boxes (a stack of two, taped along their lid seams), a wooden crate
 //! (boards with gaps between corner battens), a shipping container (a ribbed steel box with
-//! corner castings and locking bars on its end doors) and a hay bale (straw bound by two
-//! twines). The front faces +y.
+//! corner castings and locking bars on its end doors), a hay bale (straw bound by two
+//! twines) and a ballot box (see-through walls in a frame, slips inside, a slotted lid). The
+//! front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 
@@ -147,4 +148,57 @@ pub fn hay_bale(b: &mut Builder) {
         b.cuboid(Handle, [x - 0.008, hd - 1.5 * g, 0.0], [x + 0.008, hd, h]);
         b.cuboid(Handle, [x - 0.008, -hd, h - 1.5 * g], [x + 0.008, hd, h]);
     }
+}
+
+/// A ballot box: see-through walls in a dark frame, folded ballot papers lying inside, a lid
+/// with a slot across it, and a seal at the front.
+pub fn ballot_box(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let f = (0.06 * b.w.min(b.d)).clamp(0.008, 0.025);
+    let lid = 0.08 * h;
+    b.cuboid(Frame, [-hw, -hd, 0.0], [hw, hd, f]);
+    for sx in [-1.0, 1.0] {
+        for sy in [-1.0, 1.0] {
+            let (x, y) = (sx * (hw - f / 2.0), sy * (hd - f / 2.0));
+            b.cuboid(
+                Frame,
+                [x - f / 2.0, y - f / 2.0, 0.0],
+                [x + f / 2.0, y + f / 2.0, h - lid],
+            );
+        }
+    }
+    b.cuboid(Pane, [-hw + f, -hd, f], [hw - f, -hd + 0.003, h - lid]);
+    b.cuboid(Pane, [-hw + f, hd - 0.003, f], [hw - f, hd, h - lid]);
+    b.cuboid(Pane, [-hw, -hd + f, f], [-hw + 0.003, hd - f, h - lid]);
+    b.cuboid(Pane, [hw - 0.003, -hd + f, f], [hw, hd - f, h - lid]);
+    // Ballot papers, a loose heap of folded slips on the floor of the box.
+    for (k, (x, y, a)) in [
+        (-0.4, -0.3, 0.3),
+        (0.3, -0.2, -0.5),
+        (-0.1, 0.35, 0.9),
+        (0.45, 0.4, 0.1),
+        (0.0, 0.0, -0.2),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let z = f + 0.012 * (k % 3) as f64;
+        let (sw, sd) = (0.3 * hw, 0.2 * hd);
+        let first = b.parts.len();
+        b.cuboid_v(Books, k as u32, [-sw, -sd, z], [sw, sd, z + 0.008]);
+        b.turn_from(first, super::parts::rot_z(a));
+        b.translate_from(first, [x * (hw - f - sw), y * (hd - f - sd), 0.0]);
+    }
+    // The lid, its slot and the seal.
+    b.cuboid(Top, [-hw, -hd, h - lid], [hw, hd, h]);
+    b.cuboid(
+        Interior,
+        [-0.5 * hw, -0.08 * hd, h - 0.002],
+        [0.5 * hw, 0.08 * hd, h + 0.001],
+    );
+    b.cuboid(
+        Handle,
+        [-0.08 * hw, -hd - 0.004, h - lid - 0.06 * h],
+        [0.08 * hw, -hd, h - 0.2 * lid],
+    );
 }

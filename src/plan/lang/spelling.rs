@@ -2,7 +2,10 @@
 //! of which one word is one edit away from the scene name's word (a letter left out, added,
 //! or two swapped) is that name. Only words of five letters or more are mended, never a letter
 //! changed for another (that makes other words: "a glass room" is no classroom), and only words
-//! no table and no lexicon knows, so that what the text says on purpose stays.
+//! no table and no lexicon knows, so that what the text says on purpose stays. Object words are
+//! mended by the same rules ("a tabel for six", "a cofee table"): a word one such edit away from
+//! one word of the object names, and from no other, is that word, unless the edit is a letter
+//! more or less at its end ("barre" is no barrel). An English word WordNet knows is never a slip.
 use crate::plan::kb::KnowledgeBase;
 
 /// `t` (normalised, single spaces) with each misspelt word of a scene name of several words
@@ -52,6 +55,75 @@ pub(super) fn mend_place_names(kb: &KnowledgeBase, t: &str) -> String {
     out.join(" ")
 }
 
+/// `t` (normalised, single spaces) with each misspelt object word written as the knowledge
+/// base's object names write it: "a tabel for six" is a table for six, "a cofee table" a coffee
+/// table. A word is mended only when exactly one word of the names (or its plural) is a slip
+/// away from it.
+pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
+    let mut vocabulary: Vec<&str> = kb
+        .objects
+        .iter()
+        .flat_map(|o| std::iter::once(&o.category).chain(&o.synonyms))
+        .flat_map(|n| n.split(' '))
+        .filter(|w| w.chars().count() >= 5 && w.chars().all(char::is_alphabetic))
+        .collect();
+    vocabulary.sort_unstable();
+    vocabulary.dedup();
+    t.split(' ')
+        .map(|raw| {
+            let start = raw.len() - raw.trim_start_matches(|c: char| !c.is_alphanumeric()).len();
+            let end = raw
+                .trim_end_matches(|c: char| !c.is_alphanumeric())
+                .len()
+                .max(start);
+            let w = &raw[start..end];
+            if w.chars().count() < 5
+                || vocabulary.binary_search(&w).is_ok()
+                || vocabulary
+                    .binary_search(&super::singular(w).as_str())
+                    .is_ok()
+                || super::words::is_verb(w)
+            {
+                return raw.to_string();
+            }
+            let mut near = vocabulary.iter().flat_map(|n| {
+                let plural = super::words::plurals(n);
+                std::iter::once(n.to_string())
+                    .chain(plural)
+                    .filter(|form| {
+                        mendable(kb, w, form) && !inflected(w, form) && !end_slip(w, form)
+                    })
+                    .take(1)
+            });
+            let Some(first) = near.next() else {
+                return raw.to_string();
+            };
+            if near.any(|other| other != first) {
+                return raw.to_string();
+            }
+            format!("{}{first}{}", &raw[..start], &raw[end..])
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Whether `w` is a word of English grammar made from something like `n` ("shaded" from
+/// "shade", "angled" from "angle"): it ends as a verb or an adverb does and `n` does not. A
+/// slip keeps the word's ending.
+fn inflected(w: &str, n: &str) -> bool {
+    ["ed", "ing", "ly", "est"]
+        .iter()
+        .any(|e| w.ends_with(e) && !n.ends_with(e))
+}
+
+/// Whether `w` is `n` with a letter more or less at its end: that makes other words ("barre"
+/// is no barrel, "plaint" no plain), so only a slip inside a word or two letters swapped is
+/// mended.
+fn end_slip(w: &str, n: &str) -> bool {
+    let (a, b) = if w.len() > n.len() { (w, n) } else { (n, w) };
+    a.len() == b.len() + 1 && a.starts_with(b)
+}
+
 /// Whether `w` is `n` with one letter changed for another (same length, not two swapped).
 fn substituted(w: &str, n: &str) -> bool {
     let (mut a, mut b): (Vec<char>, Vec<char>) = (w.chars().collect(), n.chars().collect());
@@ -71,6 +143,7 @@ fn mendable(kb: &KnowledgeBase, w: &str, n: &str) -> bool {
         && !substituted(w, n)
         && kb.object(w).is_none()
         && crate::plan::lexicon::kind(w).is_none()
+        && !crate::plan::lexicon::is_near_word(w)
         && crate::plan::lexicon::kind(&super::singular(w)).is_none()
         && !super::words::is_known_word(w)
         && crate::plan::offline::style_word(w).is_none()

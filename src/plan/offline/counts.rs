@@ -61,7 +61,13 @@ pub(super) fn mention_counts(d: &mut Draft) {
             }
             None if m.plural => {
                 if !explicit.contains_key(cat) {
-                    let d = defaults.get(cat).copied().unwrap_or(0).max(2);
+                    // "three rows of benches": a row is two or more things side by side
+                    let d = defaults
+                        .get(cat)
+                        .copied()
+                        .unwrap_or(0)
+                        .max(2)
+                        .max(2 * m.rows);
                     counts.insert(cat.clone(), d);
                 }
             }

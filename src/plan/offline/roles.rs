@@ -304,6 +304,9 @@ pub(super) fn take_away(d: &mut Draft) {
         counts.remove(c);
         named.remove(c);
     }
+    notes.extend(crate::plan::roles::without_what_they_hold(
+        counts, named, negated,
+    ));
     // Named objects fill the roles of the defaults they replace.
     notes.extend(crate::plan::roles::apply(counts, named, r.exclusive));
     // "the invigilator's desk": a particular one takes the place of the scene's single
