@@ -247,7 +247,8 @@ fn small_rooms_get_few_poor_views() {
     // spot turned 18 to 20, this one 26.
     // Since a room asked for eight views takes past its fourth only clean views that frame
     // well (and no near copy after its first), fewer where it runs short: 34 of 37.
-    assert!(clean * 10 >= total * 9, "{clean} of {total} views clean");
+    // Since a piece cut in half by the frame's side counts as no second piece: 35 of 37.
+    assert!(clean + 2 >= total, "{clean} of {total} views clean");
     // Bare also counts views of mostly bare wall: 12 of 40 here before, 8, now 0.
     assert!(bare * 20 <= total, "{bare} of {total} views mostly bare");
     assert_eq!(well, total, "{well} of {total} views framed well");
@@ -502,7 +503,8 @@ fn views_of_small_shops_keep_shelves_and_cases_off_the_lens() {
         blockers.push((prompt, faults.iter().filter(|f| f.blocker).count()));
     }
     let total: usize = blockers.iter().map(|b| b.1).sum();
-    assert!(total <= 7, "views with a blocker at the lens: {blockers:?}");
+    // Since a piece cut in half by the frame's side counts as no second piece: 1, 1 and 2.
+    assert!(total <= 4, "views with a blocker at the lens: {blockers:?}");
 }
 
 #[test]
