@@ -9,7 +9,9 @@
 //! directions (`sweep.rs`), so a room with one spot to stand on still has several pictures. Each candidate is measured from the
 //! layout boxes alone (occlusion ignored, see [`view_stats`]); the views are then picked
 //! greedily: first those that frame well ([`ViewStats::framed_well`], counting an object and
-//! what rests on it as one piece, so a TV on its stand is no wide view), each adding the most
+//! what rests on it as one piece, so a TV on its stand is no wide view, and a piece cut in half
+//! by the frame's side as none, so a floor lamp at the edge of a TV stand's picture is no
+//! second piece), each adding the most
 //! objects not yet shown (an object seen from its front counts more than one seen from behind),
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground (nor standing in the frame's
