@@ -9,7 +9,9 @@
 //! directions (`sweep.rs`), so a room with one spot to stand on still has several pictures. Each candidate is measured from the
 //! layout boxes alone (occlusion ignored, see [`view_stats`]); the views are then picked
 //! greedily: first those that frame well ([`ViewStats::framed_well`], counting an object and
-//! what rests on it as one piece, so a TV on its stand is no wide view), each adding the most
+//! what rests on it as one piece, so a TV on its stand is no wide view, and a piece cut in half
+//! by the frame's side as none, so a floor lamp at the edge of a TV stand's picture is no
+//! second piece), each adding the most
 //! objects not yet shown (an object seen from its front counts more than one seen from behind),
 //! with a subject no other view has had (nor, less so, another of its kind), seen from its front
 //! rather than its back, with no object close in the foreground (nor standing in the frame's
@@ -20,7 +22,9 @@
 //! past a wardrobe at the lens or close-ups of a bed. Host-only.
 use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
 use super::views::FLAT;
-use super::views::{facing, hidden_share, in_frame, screen_box, view_stats, ViewStats};
+use super::views::{
+    facing, hidden_share, in_frame, in_frame_within, screen_box, view_stats, ViewStats,
+};
 use super::{camera, kind, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
 use crate::camera::Camera;
 use crate::plan::spec::SceneType;
@@ -342,7 +346,10 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 {
                     pillar = pillar.max(share);
                 }
-                if dist < fg && !looked_at.contains(&k) && cut_at_foot(&cam, o, boxes[k].1) {
+                // Aimed at as one of a pair yet with its centre out of frame, it is no part
+                // of the picture: a sliver of a shelf's flank at the frame's side.
+                let aimed_at = looked_at.contains(&k);
+                if dist < fg && !aimed_at && cut_at_foot(&cam, o, boxes[k].1) {
                     cut = cut.max(share);
                 }
                 // What is looked at hides nothing, unless it is the near one of a pair, or it
@@ -368,7 +375,11 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 }
             }
             let total = shares.iter().sum();
-            let shown: Vec<bool> = scene.objects.iter().map(|o| in_frame(&cam, o)).collect();
+            let shown: Vec<bool> = scene
+                .objects
+                .iter()
+                .map(|o| in_frame_within(&cam, o, pieces::SIDE_INSET))
+                .collect();
             let (pieces, piece_share) = pieces::pieces_in_view(scene, &piece, &shown, &shares);
             let (blocker, grazing) = (
                 blocker_share(scene, &cam, &shares),

@@ -17,7 +17,8 @@ pub const BARE_WALL: f64 = 0.45;
 /// A blocker: an object covering more than `BLOCKER_SHARE` of the frame whose footprint stands
 /// nearer the camera than `BLOCKER_PER_SIZE` of its largest side (so it spans a wide angle),
 /// and within `BLOCKER_NEAR` metres, with the room at least `BLOCKER_BEHIND` metres further
-/// behind it (a lampshade before the sofa).
+/// behind it (a lampshade before the sofa); unless it is seen whole (its silhouette inside the
+/// frame) with its top below the eye: the eye looks over it (a bed seen whole from its foot).
 pub const BLOCKER_SHARE: f64 = 0.05;
 pub const BLOCKER_PER_SIZE: f64 = 0.9;
 pub const BLOCKER_NEAR: f64 = 1.5;
@@ -153,6 +154,15 @@ pub fn blocker_of(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> Option<usiz
             (r[0] <= 1.0 || r[2] >= w - 1.0) && r[3] >= h - 1.0 && r[1] <= (1.0 - COLUMN_HEIGHT) * h
         })
     };
+    // Seen whole and low: its silhouette inside the frame and its top below the eye. The eye
+    // looks over it at the room (a bed seen whole from its foot), and the picture shows it
+    // entire: it is the foreground of the picture, not something in its way.
+    let whole_below_eye = |o: &ObjectBox| {
+        o.position[2] + o.size[2] < cam.position[2]
+            && screen_box(cam, o)
+                .1
+                .is_some_and(|r| r[0] > 1.0 && r[1] > 1.0 && r[2] < w - 1.0 && r[3] < h - 1.0)
+    };
     (0..scene.objects.len())
         .filter(|&k| {
             let o = &scene.objects[k];
@@ -161,6 +171,7 @@ pub fn blocker_of(scene: &SceneBox, cam: &Camera, shares: &[f64]) -> Option<usiz
                 && shares[k] > BLOCKER_SHARE
                 && far > dists[k] + BLOCKER_BEHIND
                 && (dists[k] < near || column(o))
+                && !whole_below_eye(o)
         })
         .max_by(|a, b| shares[*a].total_cmp(&shares[*b]))
 }
@@ -205,7 +216,42 @@ pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::camera::scene::views::frame_share;
     use crate::camera::scene::views::tests::boxed;
+
+    #[test]
+    fn a_low_bed_seen_whole_is_no_blocker_and_cut_by_the_frame_it_is() {
+        // "a tiny bedroom": its views from the bed's foot counted as blocked, the bed within
+        // 1.5 m of the lens, though the picture shows the bed whole with the room over it.
+        let scene = SceneBox {
+            scene_type: crate::plan::spec::SceneType::Indoor,
+            room: [4.0, 3.6, 2.8],
+            objects: vec![boxed("bed1", 0.0, -0.5, [1.6, 2.1, 0.6])],
+            openings: vec![],
+        };
+        let eye = [0.0, 1.4, 1.5];
+        let look = |target: [f64; 3]| {
+            let cam = crate::camera::scene::camera(eye, target, [0.0, 0.0, 1.0], 64, 64, 1.35);
+            let shares: Vec<f64> = scene.objects.iter().map(|o| frame_share(&cam, o)).collect();
+            assert!(shares[0] > BLOCKER_SHARE, "the bed fills {}", shares[0]);
+            blocker_of(&scene, &cam, &shares)
+        };
+        // 0.85 m from its foot, looking down at its middle: seen whole, its top below the eye.
+        assert_eq!(look([0.0, -0.5, 0.3]), None, "a bed seen whole");
+        // Turned aside, the frame cuts the bed at its side: a mass at the lens.
+        assert_eq!(look([-1.6, 0.2, 0.3]), Some(0), "a bed cut by the frame");
+        // A bunk bed as tall as the eye at the same spot rises into the room behind it.
+        let mut bunk = scene.clone();
+        bunk.objects[0].size[2] = 1.6;
+        let cam =
+            crate::camera::scene::camera(eye, [0.0, -1.5, 0.8], [0.0, 0.0, 1.0], 64, 64, 1.35);
+        let shares: Vec<f64> = bunk.objects.iter().map(|o| frame_share(&cam, o)).collect();
+        assert_eq!(
+            blocker_of(&bunk, &cam, &shares),
+            Some(0),
+            "a bunk bed at the lens"
+        );
+    }
 
     #[test]
     fn mirrors_are_known_by_their_name_word() {

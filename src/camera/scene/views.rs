@@ -132,6 +132,12 @@ pub(crate) fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
 
 /// True when `o`'s box centre is in front of `cam` and inside its frame.
 pub fn in_frame(cam: &Camera, o: &ObjectBox) -> bool {
+    in_frame_within(cam, o, 0.0)
+}
+
+/// True when `o`'s box centre is in front of `cam` and inside its frame narrowed by `inset`
+/// of its width at each side.
+pub(crate) fn in_frame_within(cam: &Camera, o: &ObjectBox, inset: f64) -> bool {
     let c = to_cam(
         cam,
         [
@@ -148,7 +154,7 @@ pub fn in_frame(cam: &Camera, o: &ObjectBox) -> bool {
         cam.fx * c[0] / c[2] + 0.5 * w,
         cam.fy * c[1] / c[2] + 0.5 * h,
     );
-    (0.0..=w).contains(&u) && (0.0..=h).contains(&v)
+    (inset * w..=(1.0 - inset) * w).contains(&u) && (0.0..=h).contains(&v)
 }
 
 /// Statistics of one view of `scene` (see [`ViewStats`]).

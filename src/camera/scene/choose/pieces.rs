@@ -5,6 +5,10 @@
 use super::super::views::FLAT;
 use super::super::{ObjectBox, SceneBox};
 
+/// A piece counts as in a view when the centre of one of its objects stands inside the frame
+/// narrowed by this share of its width at each side: a plant or a floor lamp cut in half by
+/// the frame's side beside a TV on its stand is no second piece, the picture is of the TV.
+pub(super) const SIDE_INSET: f64 = 0.05;
 /// How far (metres) an object's bottom may stand from a support's top and still rest on it.
 const REST: f64 = 0.05;
 

@@ -247,7 +247,8 @@ fn small_rooms_get_few_poor_views() {
     // spot turned 18 to 20, this one 26.
     // Since a room asked for eight views takes past its fourth only clean views that frame
     // well (and no near copy after its first), fewer where it runs short: 34 of 37.
-    assert!(clean * 10 >= total * 9, "{clean} of {total} views clean");
+    // Since a piece cut in half by the frame's side counts as no second piece: 35 of 37.
+    assert!(clean + 2 >= total, "{clean} of {total} views clean");
     // Bare also counts views of mostly bare wall: 12 of 40 here before, 8, now 0.
     assert!(bare * 20 <= total, "{bare} of {total} views mostly bare");
     assert_eq!(well, total, "{well} of {total} views framed well");
@@ -502,5 +503,64 @@ fn views_of_small_shops_keep_shelves_and_cases_off_the_lens() {
         blockers.push((prompt, faults.iter().filter(|f| f.blocker).count()));
     }
     let total: usize = blockers.iter().map(|b| b.1).sum();
-    assert!(total <= 7, "views with a blocker at the lens: {blockers:?}");
+    // Since a piece cut in half by the frame's side counts as no second piece: 1, 1 and 2.
+    assert!(total <= 4, "views with a blocker at the lens: {blockers:?}");
+}
+
+#[test]
+fn views_of_a_living_room_frame_two_pieces_well_inside_the_frame() {
+    // "a cozy living room" gave two pictures of its TV stand against the wall, each framing a
+    // second piece only by a plant or a floor lamp cut in half at the frame's side. A piece now
+    // counts as in view only with its centre inside the frame's inner part (`SIDE_INSET`).
+    let mut lone = vec![];
+    for prompt in [
+        "a cozy living room",
+        "a family room with a sofa, two armchairs, a tv stand and a plant",
+        "a lounge with a sofa, a tv on a stand, a floor lamp and a bookshelf",
+    ] {
+        let (scene, cams) = eight_views(prompt);
+        let piece = pieces::piece_of(&scene);
+        for (v, c) in cams.iter().enumerate().skip(1) {
+            let shares: Vec<f64> = scene.objects.iter().map(|o| frame_share(c, o)).collect();
+            let shown: Vec<bool> = scene
+                .objects
+                .iter()
+                .map(|o| in_frame_within(c, o, pieces::SIDE_INSET))
+                .collect();
+            let (n, _) = pieces::pieces_in_view(&scene, &piece, &shown, &shares);
+            if n < 2 {
+                lone.push(format!("{prompt}: view {v}"));
+            }
+        }
+    }
+    assert!(
+        lone.is_empty(),
+        "views of one piece well inside the frame: {lone:?}"
+    );
+}
+
+#[test]
+fn views_from_a_low_beds_foot_are_not_blocked() {
+    // "a tiny bedroom": all four views counted a blocker, the bed within 1.5 m of the lens,
+    // though three of them show it whole and low with the room over it (`faults.rs`: a low
+    // object seen whole is no blocker). Its views and two rooms of our own.
+    let mut blocked = vec![];
+    let mut total = 0;
+    for prompt in [
+        "a tiny bedroom",
+        "a tiny bedroom with a double bed and a dresser",
+        "a small guest room with a bed and two nightstands",
+    ] {
+        let (scene, cams) = eight_views(prompt);
+        let faults = crate::camera::scene::view_faults(&scene, &cams);
+        total += cams.len();
+        for (v, f) in faults.iter().enumerate() {
+            if f.blocker {
+                blocked.push(format!("{prompt}: view {v}"));
+            }
+        }
+    }
+    // Before: 11 of 11 views blocked; now the views where the frame cuts a bed or a dresser at
+    // the lens: 6.
+    assert!(blocked.len() <= 6, "{total} views, blocked: {blocked:?}");
 }
