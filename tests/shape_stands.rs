@@ -5,7 +5,7 @@
 //! round flat head out on an arm, a nursing chair a glider's runners; a totem pole's wings spread
 //! wide, a stump's roots flare into the ground, a forge's anvil is full size; the goods of a
 //! fruit bowl, coat hooks and a florist's stand are in their own colours, not a shelf's grey and
-//! brown.
+//! brown; a ballot box has clear walls, slips inside and a slot in its lid.
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
@@ -329,5 +329,39 @@ fn a_totem_spreads_its_wings_a_stump_flares_into_roots_and_a_forges_anvil_is_ful
             y1 - y0,
             a1 - a0
         );
+    }
+}
+
+#[test]
+fn a_ballot_box_is_see_through_with_slips_inside_and_a_slot_in_its_lid() {
+    for name in ["ballot box", "voting box"] {
+        for size in sized("ballot box", [1.0, 1.0, 1.0])
+            .into_iter()
+            .chain([[0.6, 0.4, 0.5]])
+        {
+            let s = at(name, size);
+            let h = size[2];
+            let panes = of(&s, Role::Pane);
+            // Clear walls on all four sides.
+            let (x0, x1) = range(&panes, 0);
+            let (y0, y1) = range(&panes, 1);
+            assert!(
+                x1 - x0 > 0.9 * size[0] && y1 - y0 > 0.9 * size[1],
+                "{name} {size:?}: its walls are not clear"
+            );
+            // Slips lie low inside.
+            let slips = of(&s, Role::Books);
+            assert!(
+                !slips.is_empty() && range(&slips, 2).1 < 0.25 * h,
+                "{name} {size:?}: no ballot papers lie inside"
+            );
+            // A dark slot on the lid's top, narrower than the lid.
+            let slot = within(&of(&s, Role::Interior), |p| p[2] > h - 0.01);
+            let (sx0, sx1) = range(&slot, 0);
+            assert!(
+                !slot.is_empty() && sx1 - sx0 < 0.8 * size[0] && sx1 - sx0 > 0.3 * size[0],
+                "{name} {size:?}: no slot in the lid"
+            );
+        }
     }
 }

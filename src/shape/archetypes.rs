@@ -132,7 +132,7 @@ macro_rules! arch {
 pub const ARCHETYPES: &[Archetype] = &[
     arch!("box", m::solid_box, [Body, Top], []),
     arch!("cardboard_boxes", cx::cardboard_boxes, [Body], [Body => [0.70, 0.54, 0.36], Handle => [0.78, 0.66, 0.48]]),
-    arch!("ballot_box", cx::ballot_box, [Frame, Top], [Frame => [0.12, 0.13, 0.16], Top => [0.14, 0.20, 0.42], Pane => [0.78, 0.86, 0.90], Books => [0.95, 0.94, 0.90], Handle => [0.80, 0.12, 0.10], Interior => [0.03, 0.03, 0.04]]),
+    arch!("ballot_box", cx::ballot_box, [Frame, Top], [Frame => [0.12, 0.13, 0.16], Top => [0.14, 0.20, 0.42], Pane => [0.78, 0.86, 0.90], Books => [0.95, 0.94, 0.90], Handle => [0.80, 0.12, 0.10], Door => [0.93, 0.93, 0.95], Interior => [0.03, 0.03, 0.04]]),
     arch!("crate", cx::crate_box, [Body, Top, Frame], [Body => [0.68, 0.52, 0.34], Top => [0.68, 0.52, 0.34], Frame => [0.60, 0.45, 0.28], Interior => [0.25, 0.18, 0.11]]),
     arch!("cargo_container", cx::cargo_container, [Body, Door], [Body => [0.72, 0.22, 0.14], Door => [0.72, 0.22, 0.14], Frame => [0.62, 0.19, 0.12], Metal => [0.30, 0.30, 0.32], Handle => [0.55, 0.56, 0.58]]),
     arch!("hay_bale", cx::hay_bale, [Body], [Body => [0.86, 0.74, 0.42], Handle => [0.55, 0.42, 0.25]]),

@@ -150,12 +150,12 @@ pub fn hay_bale(b: &mut Builder) {
     }
 }
 
-/// A ballot box: see-through walls in a dark frame, folded ballot papers lying inside, a lid
-/// with a slot across it, and a seal at the front.
+/// A ballot box: see-through walls in a dark frame, folded ballot papers lying inside, a white
+/// label across front and back, a lid with a slot across it, and a seal at the front.
 pub fn ballot_box(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let f = (0.06 * b.w.min(b.d)).clamp(0.008, 0.025);
-    let lid = 0.08 * h;
+    let lid = 0.12 * h;
     b.cuboid(Frame, [-hw, -hd, 0.0], [hw, hd, f]);
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
@@ -167,8 +167,16 @@ pub fn ballot_box(b: &mut Builder) {
             );
         }
     }
-    b.cuboid(Pane, [-hw + f, -hd, f], [hw - f, -hd + 0.003, h - lid]);
-    b.cuboid(Pane, [-hw + f, hd - 0.003, f], [hw - f, hd, h - lid]);
+    b.cuboid(
+        Pane,
+        [-hw + f, -hd + 0.004, f],
+        [hw - f, -hd + 0.007, h - lid],
+    );
+    b.cuboid(
+        Pane,
+        [-hw + f, hd - 0.007, f],
+        [hw - f, hd - 0.004, h - lid],
+    );
     b.cuboid(Pane, [-hw, -hd + f, f], [-hw + 0.003, hd - f, h - lid]);
     b.cuboid(Pane, [hw - 0.003, -hd + f, f], [hw, hd - f, h - lid]);
     // Ballot papers, a loose heap of folded slips on the floor of the box.
@@ -189,7 +197,14 @@ pub fn ballot_box(b: &mut Builder) {
         b.turn_from(first, super::parts::rot_z(a));
         b.translate_from(first, [x * (hw - f - sw), y * (hd - f - sd), 0.0]);
     }
-    // The lid, its slot and the seal.
+    // A printed label across the front and back, the lid, its slot and the seal.
+    for y in [-hd, hd - 0.003] {
+        b.cuboid(
+            Door,
+            [-0.75 * hw, y, 0.3 * h],
+            [0.75 * hw, y + 0.003, 0.72 * h],
+        );
+    }
     b.cuboid(Top, [-hw, -hd, h - lid], [hw, hd, h]);
     b.cuboid(
         Interior,
@@ -198,7 +213,7 @@ pub fn ballot_box(b: &mut Builder) {
     );
     b.cuboid(
         Handle,
-        [-0.08 * hw, -hd - 0.004, h - lid - 0.06 * h],
-        [0.08 * hw, -hd, h - 0.2 * lid],
+        [-0.08 * hw, hd - 0.004, 0.74 * h],
+        [0.08 * hw, hd, h - 0.3 * lid],
     );
 }
