@@ -15,6 +15,7 @@
 mod appliances;
 mod archetypes;
 mod audio;
+mod backs;
 mod barriers;
 mod bellhop;
 mod bins;
