@@ -2,7 +2,7 @@
 //! round, so they never read as a plain box from behind: a fridge's condenser (a black coil of
 //! tube zigzagging over wire fins across most of its back) and its compressor dome at the foot,
 //! (a glass-door drinks fridge has the same), a dishwasher's tub wrapped in a dark insulating
-//! blanket, its hoses and cord along the floor, and a standing machine's (an arcade cabinet's,
+//! blanket, its drain hose looped high up its back, its hoses and cord along the floor, and a standing machine's (an arcade cabinet's,
 //! a jukebox's) rear service door with vent slots, a lock and a power cord. Both draw behind a body that ends at `-hd + BACK` (`laundry.rs`).
 use super::archetypes::Builder;
 use super::laundry::BACK;
@@ -58,25 +58,25 @@ pub(super) fn fridge_back(b: &mut Builder) {
 pub(super) fn dishwasher_back(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let yb = -hd + BACK;
-    // The blanket wraps the tub: over the back and round the top, short of the base.
-    b.cuboid(
-        Interior,
-        [-hw + 0.03, yb - 0.012, 0.2 * h],
-        [hw - 0.03, yb, h - 0.03],
-    );
-    b.cuboid(
-        Interior,
-        [-hw + 0.03, yb, h - 0.012],
-        [hw - 0.03, 0.4 * hd, h - 0.004],
-    );
-    // Straps holding the blanket.
-    for z in [0.45 * h, 0.75 * h] {
-        b.cuboid(
-            Metal,
-            [-hw + 0.03, yb - 0.016, z],
-            [hw - 0.03, yb - 0.012, z + 0.02],
-        );
+    // The blanket wraps the tub in two panels over the back and round the top, short of the
+    // base, either side of the drain hose's high loop; straps hold each panel.
+    let g = 0.06_f64.min(0.1 * b.w);
+    for (x0, x1) in [(-hw + 0.03, -g), (g, hw - 0.03)] {
+        b.cuboid(Interior, [x0, yb - 0.012, 0.2 * h], [x1, yb, h - 0.03]);
+        b.cuboid(Interior, [x0, yb, h - 0.012], [x1, 0.4 * hd, h - 0.004]);
+        for z in [0.45 * h, 0.75 * h] {
+            b.cuboid(Metal, [x0, yb - 0.016, z], [x1, yb - 0.012, z + 0.02]);
+        }
     }
+    b.polyline(
+        Handle,
+        &[
+            [0.0, yb - 0.012, 0.15 * h],
+            [0.0, yb - 0.014, 0.85 * h],
+            [0.0, yb - 0.02, 0.9 * h],
+        ],
+        0.012,
+    );
     // Hoses and cord along the floor to the left.
     let yc = -hd + 0.015;
     for (k, role) in [(0.0, Frame), (0.05, Handle), (0.1, Frame)] {
@@ -99,7 +99,7 @@ pub(super) fn machine_back(b: &mut Builder) {
     let yb = -hd + BACK;
     let (x0, x1) = (-hw + 0.12 * b.w, hw - 0.12 * b.w);
     let (z0, z1) = (0.12 * h, 0.78 * h);
-    b.cuboid(Door, [x0, yb - 0.012, z0], [x1, yb, z1]);
+    b.cuboid(Frame, [x0, yb - 0.012, z0], [x1, yb, z1]);
     for zc in [z1 - 0.1 * h, z0 + 0.04 * h] {
         for k in 0..4 {
             let z = zc + k as f64 * 0.012 * h;

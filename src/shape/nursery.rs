@@ -153,14 +153,21 @@ pub fn rocking_horse(b: &mut Builder) {
     let along_x = b.w > b.d;
     let rock = 0.2 * h;
     let first = b.parts.len();
+    // A slimmer animal than the generic one: a toy horse is narrow across its back.
+    let (w, d) = (b.w, b.d);
+    if along_x {
+        b.d = 0.6 * d;
+    } else {
+        b.w = 0.6 * w;
+    }
     b.h = h - rock;
     super::things::quadruped(b);
-    b.h = h;
+    (b.w, b.d, b.h) = (w, d, h);
     b.translate_from(first, [0.0, 0.0, rock]);
     let (half_len, half_across) = if along_x { (hw, hd) } else { (hd, hw) };
     let r = 0.025_f64.min(0.1 * half_across);
     for s in [-1.0, 1.0] {
-        let c = s * 0.5 * half_across;
+        let c = s * 0.3 * half_across;
         if along_x {
             let n = 14;
             let pts: Vec<[f64; 3]> = (0..=n)
@@ -178,13 +185,13 @@ pub fn rocking_horse(b: &mut Builder) {
     for t in [-0.6, 0.55] {
         let (a, c) = if along_x {
             (
-                [t * half_len, -0.5 * half_across, 0.3 * rock],
-                [t * half_len, 0.5 * half_across, 0.3 * rock],
+                [t * half_len, -0.3 * half_across, 0.3 * rock],
+                [t * half_len, 0.3 * half_across, 0.3 * rock],
             )
         } else {
             (
-                [-0.5 * half_across, t * half_len, 0.3 * rock],
-                [0.5 * half_across, t * half_len, 0.3 * rock],
+                [-0.3 * half_across, t * half_len, 0.3 * rock],
+                [0.3 * half_across, t * half_len, 0.3 * rock],
             )
         };
         b.rod(Frame, a, c, 0.8 * r);
@@ -192,9 +199,9 @@ pub fn rocking_horse(b: &mut Builder) {
     // A saddle over the middle of the back.
     let zb = rock + 0.66 * (h - rock) + 0.2 * (h - rock) * 0.9;
     let (sx, sy) = if along_x {
-        (0.18 * half_len, 0.95 * half_across)
+        (0.18 * half_len, 0.6 * half_across)
     } else {
-        (0.95 * half_across, 0.18 * half_len)
+        (0.6 * half_across, 0.18 * half_len)
     };
     b.ellipsoid(Seat, [0.0, 0.0, zb], [sx, sy, 0.04 * h]);
 }

@@ -37,8 +37,8 @@ pub fn dog_bed(b: &mut Builder) {
             let a = TAU * i as f64 / n as f64;
             let (s, c) = a.sin_cos();
             // s = 1 at the front (+y): the bolster sinks there to an entrance.
-            let dip = (s.max(0.0)).powi(4);
-            let z = (h - r) * (1.0 - 0.55 * dip) + 0.02 * h;
+            let dip = ((s - 0.1) / 0.7).clamp(0.0, 1.0);
+            let z = (h - r) * (1.0 - 0.65 * dip) + 0.02 * h;
             [c * (hw - r), s * (hd - r), z.max(r * 0.6)]
         })
         .collect();
