@@ -340,3 +340,42 @@ fn a_fridge_shows_its_condenser_coil_from_behind() {
         }
     }
 }
+
+#[test]
+fn a_chess_table_has_a_board_of_squares_and_an_air_hockey_table_a_railed_field() {
+    for size in sizes("chess table", [1.2, 1.2, 1.0]) {
+        let s = at("chess table", size);
+        let dark = of(&s, Role::Interior);
+        let z0 = range(&of(&s, Role::Canvas), 2).0;
+        // The third rank from one side holds no pieces: four dark squares across it.
+        let side = 0.8 * size[0].min(size[1]);
+        let y = -side / 2.0 + 2.5 * side / 8.0;
+        let rank = within(
+            &within(&dark, 1, y - 0.01, y + 0.01),
+            2,
+            z0 - 1e-3,
+            z0 + 0.004,
+        );
+        assert_eq!(
+            runs(&rank, 0, 0.005),
+            4,
+            "chess table {size:?}: no board of squares"
+        );
+        assert!(
+            range(&dark, 2).1 > z0 + 0.02,
+            "chess table {size:?}: no pieces"
+        );
+    }
+    for size in sizes("air hockey table", [1.1, 1.1, 1.0]) {
+        let s = at("air hockey table", size);
+        let field = range(&of(&s, Role::Canvas), 2).1;
+        assert!(
+            range(&of(&s, Role::Frame), 2).1 > field + 0.02,
+            "air hockey {size:?}: no rails"
+        );
+        let hw = size[0] / 2.0;
+        let goals = within(&of(&s, Role::Interior), 2, field - 0.05, field + 0.01);
+        let ends = goals.iter().filter(|p| p[0].abs() > 0.9 * hw).count();
+        assert!(ends > 20, "air hockey {size:?}: no goal slots at the ends");
+    }
+}

@@ -6,6 +6,7 @@ use super::audio as au;
 use super::barriers as ba;
 use super::bellhop as bh;
 use super::bins as bn;
+use super::boards as bd;
 use super::boathouse as bt;
 use super::booths as bo;
 use super::bowls as bw;
@@ -489,6 +490,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("shower_post", po::shower_post, [Metal], [Metal => [0.78, 0.79, 0.81], Top => [0.62, 0.46, 0.30], Handle => [0.70, 0.71, 0.73]]),
     arch!("sewing_machine", sw::sewing_machine, [Body], [Body => [0.93, 0.93, 0.91], Metal => [0.70, 0.71, 0.73], Handle => [0.55, 0.56, 0.58], Books => [0.80, 0.15, 0.25]]),
     arch!("sewing_table", sw::sewing_table, [Top, Body, Door, Frame], [Handle => [0.55, 0.56, 0.58], Books => [0.80, 0.15, 0.25]]),
+    arch!("chess_table", bd::chess_table, [Top, Frame], [Canvas => [0.90, 0.84, 0.70], Interior => [0.28, 0.17, 0.10]]),
+    arch!("air_hockey_table", bd::air_hockey_table, [Body, Frame], [Body => [0.12, 0.20, 0.45], Frame => [0.12, 0.20, 0.45], Canvas => [0.96, 0.96, 0.96], Handle => [0.85, 0.15, 0.12], Interior => BLACK]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
 ];
 

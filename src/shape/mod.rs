@@ -19,6 +19,7 @@ mod backs;
 mod barriers;
 mod bellhop;
 mod bins;
+mod boards;
 mod boathouse;
 mod booths;
 mod bowls;
