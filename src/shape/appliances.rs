@@ -25,10 +25,11 @@ pub fn fridge(b: &mut Builder) {
     let face = hd - 0.06;
     b.cuboid(
         Interior,
-        [-hw + 0.02, -hd, 0.0],
+        [-hw + 0.02, -hd + BACK, 0.0],
         [hw - 0.02, face - 0.03, 0.05],
     );
-    b.cuboid(Body, [-hw, -hd, 0.05], [hw, face, h]);
+    b.cuboid(Body, [-hw, -hd + BACK, 0.05], [hw, face, h]);
+    super::backs::fridge_back(b);
     let door = |b: &mut Builder, x0: f64, x1: f64, z0: f64, z1: f64| {
         b.cuboid(
             Door,
@@ -219,6 +220,7 @@ pub fn appliance(b: &mut Builder) {
             [0.3 * b.w, hd - 0.008, 0.38 * h],
             0.008,
         );
+        super::backs::machine_back(b);
     } else {
         b.cuboid(
             Door,

@@ -6,10 +6,12 @@ use super::audio as au;
 use super::barriers as ba;
 use super::bellhop as bh;
 use super::bins as bn;
+use super::boards as bd;
 use super::boathouse as bt;
 use super::booths as bo;
 use super::bowls as bw;
 pub use super::builder::{frame_along, Builder};
+use super::canopy as cb;
 use super::care as cw;
 use super::carts as ca;
 use super::cases as c;
@@ -40,6 +42,7 @@ use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
 use super::laundry as la;
+use super::lockers as lk;
 use super::lounge as lo;
 use super::machines as ma;
 use super::markers as mr;
@@ -47,6 +50,7 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
+use super::nursery as nu;
 use super::orchard as oc;
 use super::ornaments as or;
 use super::ovens as ov;
@@ -55,10 +59,12 @@ use super::parlour as pa;
 use super::partitions as pn;
 use super::parts::Part;
 use super::pegs as pg;
+use super::pets as pe;
 use super::picnic as pc;
 use super::plants as pt;
 use super::play as pl;
 use super::podiums as pd;
+use super::poles as po;
 use super::racks as rk;
 use super::recliners as rc;
 use super::rigs;
@@ -69,6 +75,7 @@ use super::sculpted as sc;
 use super::seats as se;
 use super::servers as sv;
 use super::sets as sx;
+use super::sewing as sw;
 use super::skeleton as sk;
 use super::sleepers as sl;
 use super::smithy as sm;
@@ -86,6 +93,7 @@ use super::vitrines as vi;
 use super::wards as wd;
 use super::washroom as wa;
 use super::workshop as ws;
+use super::worktops as wt;
 use super::yard as yd;
 
 /// One archetype.
@@ -132,7 +140,7 @@ macro_rules! arch {
 pub const ARCHETYPES: &[Archetype] = &[
     arch!("box", m::solid_box, [Body, Top], []),
     arch!("cardboard_boxes", cx::cardboard_boxes, [Body], [Body => [0.70, 0.54, 0.36], Handle => [0.78, 0.66, 0.48]]),
-    arch!("ballot_box", cx::ballot_box, [Frame, Top], [Frame => [0.12, 0.13, 0.16], Top => [0.14, 0.20, 0.42], Pane => [0.78, 0.86, 0.90], Books => [0.95, 0.94, 0.90], Handle => [0.80, 0.12, 0.10], Door => [0.93, 0.93, 0.95], Interior => [0.03, 0.03, 0.04]]),
+    arch!("ballot_box", cx::ballot_box, [Frame, Top], [Frame => [0.12, 0.13, 0.16], Top => [0.14, 0.20, 0.42], Pane => [0.78, 0.86, 0.90], Books => [0.95, 0.94, 0.90], Handle => [0.80, 0.12, 0.10], Canvas => [0.93, 0.93, 0.95], Interior => [0.03, 0.03, 0.04]]),
     arch!("crate", cx::crate_box, [Body, Top, Frame], [Body => [0.68, 0.52, 0.34], Top => [0.68, 0.52, 0.34], Frame => [0.60, 0.45, 0.28], Interior => [0.25, 0.18, 0.11]]),
     arch!("cargo_container", cx::cargo_container, [Body, Door], [Body => [0.72, 0.22, 0.14], Door => [0.72, 0.22, 0.14], Frame => [0.62, 0.19, 0.12], Metal => [0.30, 0.30, 0.32], Handle => [0.55, 0.56, 0.58]]),
     arch!("hay_bale", cx::hay_bale, [Body], [Body => [0.86, 0.74, 0.42], Handle => [0.55, 0.42, 0.25]]),
@@ -191,7 +199,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sink", c::sink, [Body, Door], [Top => [0.82, 0.80, 0.76], Canvas => WHITE, Metal => STEEL]),
     arch!("fireplace", c::fireplace, [Body], [Body => STONE, Top => DARK_WOOD]),
     arch!("piano", c::piano, [Body], [Body => BLACK, Frame => BLACK]),
-    arch!("grand_piano", c::grand_piano, [Body], [Body => BLACK, Frame => BLACK]),
+    arch!("grand_piano", c::grand_piano, [Body, Top], [Body => BLACK, Top => BLACK, Frame => BLACK]),
     arch!("bathtub", c::bathtub, [Body], [Body => WHITE, Canvas => [0.86, 0.88, 0.90]]),
     arch!("toilet", c::toilet, [Body], [Body => WHITE, Top => WHITE]),
     arch!("plant", m::plant, [Foliage], []),
@@ -473,6 +481,24 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("hostess_stand", pd::hostess_stand, [Body, Top], [Body => DARK_WOOD, Top => [0.36, 0.23, 0.13], Door => [0.34, 0.21, 0.12], Frame => [0.18, 0.12, 0.08], Interior => [0.10, 0.07, 0.05], Metal => BRASS, Shade => [0.12, 0.30, 0.18], Canvas => [0.38, 0.10, 0.09]]),
     arch!("jewelry_armoire", dr::jewelry_armoire, [Body, Top, Door], [Body => [0.42, 0.22, 0.14], Top => [0.42, 0.22, 0.14], Door => [0.46, 0.25, 0.16], Frame => [0.36, 0.19, 0.12], Handle => BRASS, Glass => [0.80, 0.86, 0.90]]),
     arch!("examination_lamp", wd::examination_lamp, [Shade], [Shade => [0.90, 0.91, 0.92], Metal => [0.80, 0.81, 0.83], Frame => [0.55, 0.56, 0.58], Light => [1.0, 0.97, 0.88], Handle => [0.35, 0.55, 0.75], Tyre => BLACK]),
+    arch!("dog_bed", pe::dog_bed, [Upholstery], [Upholstery => [0.55, 0.42, 0.32], Cushion => [0.90, 0.85, 0.76]]),
+    arch!("cat_tree", pe::cat_tree, [Upholstery], [Upholstery => [0.72, 0.68, 0.62], Frame => [0.80, 0.68, 0.46], Trunk => [0.66, 0.54, 0.34], Interior => [0.12, 0.11, 0.10], Handle => [0.85, 0.20, 0.15], Metal => [0.30, 0.30, 0.30]]),
+    arch!("workbench", wt::workbench, [Top, Frame], [Top => [0.72, 0.55, 0.34], Frame => [0.50, 0.36, 0.22], Body => [0.80, 0.12, 0.10], Handle => BLACK, Metal => [0.35, 0.36, 0.38]]),
+    arch!("drafting_table", wt::drafting_table, [Top], [Top => [0.88, 0.86, 0.80], Frame => [0.55, 0.40, 0.26], Canvas => [0.97, 0.97, 0.95], Metal => [0.65, 0.66, 0.68]]),
+    arch!("ironing_board", wt::ironing_board, [Canvas], [Canvas => [0.55, 0.70, 0.85], Frame => [0.80, 0.80, 0.82], Metal => [0.75, 0.76, 0.78], Tyre => BLACK, Body => [0.90, 0.90, 0.92], Handle => [0.20, 0.45, 0.80]]),
+    arch!("lockers", lk::lockers, [Body, Door], [Body => [0.28, 0.42, 0.60], Door => [0.30, 0.45, 0.64], Interior => [0.10, 0.11, 0.13], Handle => [0.80, 0.80, 0.82], Canvas => [0.92, 0.92, 0.90]]),
+    arch!("canopy_bed", cb::canopy_bed, [Duvet], [Duvet => [0.86, 0.82, 0.74], Canvas => [0.95, 0.93, 0.88], Frame => DARK_WOOD]),
+    arch!("bassinet", nu::bassinet, [Body, Shade], [Body => [0.93, 0.92, 0.90], Shade => [0.93, 0.92, 0.90], Mattress => [0.98, 0.97, 0.95], Pillow => [0.80, 0.88, 0.95], Frame => [0.75, 0.62, 0.45]]),
+    arch!("cradle", nu::cradle, [Frame, Top], [Frame => [0.66, 0.48, 0.30], Top => [0.66, 0.48, 0.30], Mattress => [0.96, 0.95, 0.92], Pillow => [0.95, 0.90, 0.80]]),
+    arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK]),
+    arch!("birdhouse", po::birdhouse, [Body], [Body => [0.62, 0.45, 0.28], Top => [0.45, 0.22, 0.16], Trunk => [0.40, 0.30, 0.20], Metal => [0.30, 0.30, 0.32], Interior => BLACK]),
+    arch!("bird_feeder", po::bird_feeder, [Top], [Top => [0.25, 0.40, 0.25], Frame => [0.25, 0.25, 0.27], Metal => [0.25, 0.25, 0.27], Soil => [0.78, 0.66, 0.42], Pane => [0.85, 0.90, 0.92]]),
+    arch!("patio_heater", po::patio_heater, [Body, Shade], [Body => [0.22, 0.22, 0.24], Shade => [0.72, 0.73, 0.75], Metal => [0.35, 0.35, 0.37], Light => [1.0, 0.45, 0.12]]),
+    arch!("shower_post", po::shower_post, [Metal], [Metal => [0.78, 0.79, 0.81], Top => [0.62, 0.46, 0.30], Handle => [0.70, 0.71, 0.73]]),
+    arch!("sewing_machine", sw::sewing_machine, [Body], [Body => [0.93, 0.93, 0.91], Metal => [0.70, 0.71, 0.73], Handle => [0.55, 0.56, 0.58], Books => [0.80, 0.15, 0.25]]),
+    arch!("sewing_table", sw::sewing_table, [Top, Body, Door, Frame], [Handle => [0.55, 0.56, 0.58], Books => [0.80, 0.15, 0.25]]),
+    arch!("chess_table", bd::chess_table, [Top, Frame], [Canvas => [0.90, 0.84, 0.70], Interior => [0.28, 0.17, 0.10]]),
+    arch!("air_hockey_table", bd::air_hockey_table, [Body, Frame], [Body => [0.12, 0.20, 0.45], Frame => [0.12, 0.20, 0.45], Canvas => [0.96, 0.96, 0.96], Handle => [0.85, 0.15, 0.12], Interior => BLACK]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
 ];
 

@@ -316,20 +316,42 @@ pub fn grand_piano(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let zb = 0.6 * h;
     let kd = 0.25;
-    // Curved case behind the keyboard (keyboard at +y).
-    let (rx, ry) = (hw, (b.d - kd) / 2.0);
-    let yc = hd - kd - ry;
-    b.frustum(Body, [0.0, yc, zb], rx, ry, 1.0, h - zb);
+    // The case: a wing, straight along the bass side (+x, the player's left), its bentside
+    // curving in from the treble side (-x) to a narrow tail at the back (-y). Drawn as slices
+    // across its length so its outline (a grand's mark from above and behind) is the wing's.
+    let (y0, y1) = (-hd, hd - kd);
+    let ht = h - 0.1_f64.min(0.25 * (h - zb));
+    let n = 28;
+    for i in 0..n {
+        let (ta, tb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+        let (ya, yb) = (y1 - ta * (y1 - y0), y1 - tb * (y1 - y0));
+        // From the keyboard end the bentside keeps the full width, then sweeps in to the tail.
+        let t = tb.max(ta);
+        let inward = if t < 0.3 {
+            0.0
+        } else {
+            ((t - 0.3) / 0.7).powf(1.6)
+        };
+        let left = -hw + inward * 1.55 * hw;
+        b.cuboid(Body, [left, yb, zb], [hw, ya + 0.001, ht - 0.03]);
+        b.cuboid(Top, [left, yb, ht - 0.03], [hw, ya + 0.001, ht]);
+    }
+    // The key bed, the keys and the music desk standing behind them.
     b.cuboid(Body, [-hw, hd - kd - 0.1, zb], [hw, hd - 0.05, zb + 0.12]);
     b.cuboid(
         Keys,
         [-hw + 0.1, hd - kd, zb + 0.1],
         [hw - 0.1, hd - 0.03, zb + 0.12],
     );
+    b.cuboid(
+        Body,
+        [-0.55 * hw, hd - kd - 0.06, ht],
+        [0.55 * hw, hd - kd - 0.03, h],
+    );
     for (x, y) in [
         (-hw + 0.08, hd - kd),
         (hw - 0.08, hd - kd),
-        (0.0, -hd + 0.1),
+        (0.78 * hw, -hd + 0.15),
     ] {
         b.cylinder(Frame, [x, y, 0.0], 0.05, zb);
     }

@@ -200,7 +200,7 @@ pub fn ballot_box(b: &mut Builder) {
     // A printed label across the front and back, the lid, its slot and the seal.
     for y in [-hd, hd - 0.003] {
         b.cuboid(
-            Door,
+            Canvas,
             [-0.75 * hw, y, 0.3 * h],
             [0.75 * hw, y + 0.003, 0.72 * h],
         );

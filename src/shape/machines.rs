@@ -3,7 +3,7 @@
 //! window door beside a keypad, an espresso machine's group head over a drip tray, a till's
 //! screen above its cash drawer, a printer's paper trays.
 use super::archetypes::Builder;
-use super::laundry::{service_back, BACK};
+use super::laundry::BACK;
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
 use std::f64::consts::FRAC_PI_2;
@@ -102,8 +102,8 @@ pub fn dishwasher(b: &mut Builder) {
         );
     }
     bar_handle(b, -0.32 * b.w, 0.32 * b.w, face + 0.02, h - strip - 0.05);
-    // The back: its inlet and drain hoses and power cord, as a washer's.
-    service_back(b, true);
+    // The back: the tub in its insulating blanket, hoses and cord along the floor.
+    super::backs::dishwasher_back(b);
 }
 
 /// A counter-top microwave: a window door on the left with a pull handle, a control column on

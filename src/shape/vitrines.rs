@@ -277,16 +277,18 @@ pub fn glass_fridge(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let face = hd - 0.03;
     let header = if h > 1.2 { 0.12 * h } else { 0.0 };
+    // The body stops short of the back for the condenser coil (`backs.rs`).
+    let back = -hd + super::laundry::BACK;
     b.cuboid(
         Interior,
-        [-hw + 0.02, -hd, 0.0],
+        [-hw + 0.02, back, 0.0],
         [hw - 0.02, face - 0.03, 0.06],
     );
-    b.cuboid(Body, [-hw, -hd, 0.06], [-hw + 0.04, face, h]);
-    b.cuboid(Body, [hw - 0.04, -hd, 0.06], [hw, face, h]);
-    b.cuboid(Body, [-hw, -hd, 0.06], [hw, -hd + 0.04, h]);
-    b.cuboid(Body, [-hw, -hd, 0.06], [hw, face, 0.12]);
-    b.cuboid(Body, [-hw, -hd, h - header - 0.04], [hw, face, h]);
+    b.cuboid(Body, [-hw, back, 0.06], [-hw + 0.04, face, h]);
+    b.cuboid(Body, [hw - 0.04, back, 0.06], [hw, face, h]);
+    b.cuboid(Body, [-hw, back, 0.06], [hw, back + 0.04, h]);
+    b.cuboid(Body, [-hw, back, 0.06], [hw, face, 0.12]);
+    b.cuboid(Body, [-hw, back, h - header - 0.04], [hw, face, h]);
     if header > 0.0 {
         b.cuboid(
             Light,
@@ -296,8 +298,8 @@ pub fn glass_fridge(b: &mut Builder) {
     }
     b.cuboid(
         Interior,
-        [-hw + 0.04, -hd + 0.04, 0.12],
-        [hw - 0.04, -hd + 0.05, h - header - 0.04],
+        [-hw + 0.04, back + 0.04, 0.12],
+        [hw - 0.04, back + 0.05, h - header - 0.04],
     );
     let mut v = 0;
     bottle_shelves(
@@ -322,6 +324,7 @@ pub fn glass_fridge(b: &mut Builder) {
         [x, hd - 0.01, 0.4 * h + 0.35 * (z1 - z0)],
         0.012,
     );
+    super::backs::fridge_back(b);
 }
 
 /// A door frame on the front plane `y`: four bars of width `t` round `[x0, z0]..[x1, z1]`.
