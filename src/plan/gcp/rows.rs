@@ -18,6 +18,10 @@ use crate::plan::spec::{Anchor, OpeningKind, RelationKind, SceneSpec, Wall};
 const FRONT: f64 = 1.8;
 /// The least front depth a tight room may keep.
 const FRONT_MIN: f64 = 1.0;
+/// The front depth of a row asked by a window with nothing at its front (a row of flower
+/// buckets by the window): close to the wall, well inside the window anchor's reach
+/// (`check::WINDOW_DISTANCE`, 1 m), rather than the board's band a front keeps.
+const BY_WINDOW: f64 = 0.3;
 /// Things at least this long (m) stand in rows of two, split by the aisle, when the rows are
 /// not asked (pews, benches).
 const LONG: f64 = 1.5;
@@ -338,6 +342,12 @@ impl Problem {
             self.inst[ids[0]].anchor,
             Anchor::Window | Anchor::FaceWindow
         );
+        // by a window (not facing one) with nothing at the front: against that wall
+        let least = if self.inst[ids[0]].anchor == Anchor::Window && b.at_front.is_empty() {
+            BY_WINDOW
+        } else {
+            FRONT_MIN
+        };
         let mut tries: Vec<([f64; 2], bool, bool, bool, f64)> = vec![];
         for (f, wall) in [
             ([0.0, 1.0], Wall::North),
@@ -372,8 +382,8 @@ impl Problem {
                 continue;
             }
             let (across, along) = if f[0] == 0.0 { (w, d) } else { (d, w) };
-            let want = if window { FRONT_MIN } else { b.front };
-            let front = (along - b.depth() - PASSAGE).min(want).max(FRONT_MIN);
+            let want = if window { least } else { b.front };
+            let front = (along - b.depth() - PASSAGE).min(want).max(least);
             let rest = if window {
                 0.0
             } else {
