@@ -15,6 +15,8 @@ import os
 import re
 import sys
 
+from wordnet_licence import licence
+
 WN = sys.argv[1] if len(sys.argv) > 1 else "/usr/share/wordnet"
 OUT = "src/plan/kb/wordnet.txt"
 MAX_UP = 4
@@ -120,23 +122,7 @@ def physical(off, syn):
     return ok
 
 
-LICENCE = "/usr/share/doc/wordnet-base/copyright"
 
-
-def licence():
-    """The WordNet licence paragraph of Debian's copyright file, as lines."""
-    out, inside = [], False
-    for line in open(LICENCE):
-        if "provided to you, the LICENSEE" in line:
-            inside = True
-        if inside:
-            if not line.strip():
-                break
-            t = line.strip()
-            out.append("" if t == "." else t)
-    if not out:
-        sys.exit(f"no WordNet licence found in {LICENCE}")
-    return out
 
 
 def main():

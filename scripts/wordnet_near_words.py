@@ -15,10 +15,11 @@ import os
 import re
 import sys
 
+from wordnet_licence import licence
+
 WN = sys.argv[1] if len(sys.argv) > 1 else "/usr/share/wordnet"
 OUT = "src/plan/kb/near_words.txt"
 LETTERS = "abcdefghijklmnopqrstuvwxyz"
-LICENCE = "/usr/share/doc/wordnet-base/copyright"
 
 
 def object_words():
@@ -67,21 +68,6 @@ def lemmas():
                 out.add(w)
     return out
 
-
-def licence():
-    """The WordNet licence paragraph of Debian's copyright file, as lines."""
-    out, inside = [], False
-    for line in open(LICENCE):
-        if "provided to you, the LICENSEE" in line:
-            inside = True
-        if inside:
-            if not line.strip():
-                break
-            t = line.strip()
-            out.append("" if t == "." else t)
-    if not out:
-        sys.exit(f"no WordNet licence found in {LICENCE}")
-    return out
 
 
 def main():

@@ -9,21 +9,13 @@
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{drawn, of, range, runs, sized, Samples};
+use common::samples::{all, drawn, of, range, runs, sized, within, Samples};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{build, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
 
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 5)
-}
-
-fn within(pts: &[[f64; 3]], keep: impl Fn(&[f64; 3]) -> bool) -> Vec<[f64; 3]> {
-    pts.iter().filter(|p| keep(p)).copied().collect()
-}
-
-fn all(s: &Samples) -> Vec<[f64; 3]> {
-    s.iter().map(|(p, _)| *p).collect()
 }
 
 #[test]

@@ -57,6 +57,16 @@ pub fn of(s: &[([f64; 3], Role)], role: Role) -> Vec<[f64; 3]> {
         .collect()
 }
 
+/// The points of `pts` that `keep` keeps.
+pub fn within(pts: &[[f64; 3]], keep: impl Fn(&[f64; 3]) -> bool) -> Vec<[f64; 3]> {
+    pts.iter().filter(|p| keep(p)).copied().collect()
+}
+
+/// Every sample's position.
+pub fn all(s: &[([f64; 3], Role)]) -> Vec<[f64; 3]> {
+    s.iter().map(|(p, _)| *p).collect()
+}
+
 /// The lowest and highest coordinate of `pts` along `axis`.
 pub fn range(pts: &[[f64; 3]], axis: usize) -> (f64, f64) {
     pts.iter()
