@@ -5,7 +5,8 @@
 //! round flat head out on an arm, a nursing chair a glider's runners; a totem pole's wings spread
 //! wide, a stump's roots flare into the ground, a forge's anvil is full size; the goods of a
 //! fruit bowl, coat hooks and a florist's stand are in their own colours, not a shelf's grey and
-//! brown; a ballot box has clear walls, slips inside and a slot in its lid.
+//! brown; a ballot box has clear walls, slips inside and a slot in its lid; a wall map land
+//! on a sea, a calendar a grid of days.
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
@@ -355,5 +356,41 @@ fn a_ballot_box_is_see_through_with_slips_inside_and_a_slot_in_its_lid() {
                 "{name} {size:?}: no slot in the lid"
             );
         }
+    }
+}
+
+#[test]
+fn a_wall_map_shows_land_on_sea_and_a_calendar_a_grid_of_days() {
+    for size in sized("wall map", [1.0, 1.0, 1.0]) {
+        let s = at("world map", size);
+        let (sea, green, sand) = (
+            of(&s, Role::Water),
+            of(&s, Role::Foliage),
+            of(&s, Role::Soil),
+        );
+        assert!(
+            !sea.is_empty() && !green.is_empty() && !sand.is_empty(),
+            "{size:?}: no sea with land on it"
+        );
+        // Land lies in several separate masses across the sea.
+        assert!(
+            runs(&green, 0, 0.02) + runs(&sand, 0, 0.02) >= 3,
+            "{size:?}: one land mass"
+        );
+    }
+    for size in sized("calendar", [1.0, 1.0, 1.0]) {
+        let s = at("wall calendar", size);
+        let days = within(&of(&s, Role::Frame), |p| p[2] < 0.45 * size[2]);
+        // Six weekday columns of boxes (Sundays in their own colour) in five rows.
+        assert!(
+            runs(&days, 0, 0.003) == 6 && runs(&days, 2, 0.003) == 5,
+            "{size:?}: {} columns and {} rows of day boxes",
+            runs(&days, 0, 0.003),
+            runs(&days, 2, 0.003)
+        );
+        assert!(
+            !of(&s, Role::Handle).is_empty(),
+            "{size:?}: no Sunday column"
+        );
     }
 }

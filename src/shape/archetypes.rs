@@ -65,6 +65,7 @@ use super::plants as pt;
 use super::play as pl;
 use super::podiums as pd;
 use super::poles as po;
+use super::prints as pr;
 use super::racks as rk;
 use super::recliners as rc;
 use super::rigs;
@@ -211,6 +212,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("chalkboard", m::chalkboard, [Canvas], [Canvas => [0.15, 0.25, 0.20]]),
     arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
     arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("wall_map", pr::wall_map, [Water], [Frame => [0.30, 0.20, 0.12], Water => [0.40, 0.62, 0.82], Foliage => [0.30, 0.62, 0.22], Soil => [0.90, 0.72, 0.35], Canvas => [0.85, 0.88, 0.92]]),
+    arch!("calendar", pr::calendar, [Canvas], [Canvas => WHITE, Body => [0.55, 0.75, 0.92], Foliage => [0.35, 0.62, 0.30], Top => [0.80, 0.14, 0.12], Frame => [0.72, 0.72, 0.75], Handle => [0.90, 0.55, 0.55], Metal => [0.55, 0.55, 0.57]]),
     arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
     arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => [0.78, 0.84, 0.88], Metal => [0.74, 0.75, 0.77]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),

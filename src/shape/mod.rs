@@ -81,6 +81,7 @@ mod plants;
 mod play;
 mod podiums;
 mod poles;
+mod prints;
 mod racks;
 mod recliners;
 mod rigs;
