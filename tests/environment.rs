@@ -213,8 +213,9 @@ fn colours_follow_surface_words() {
     assert!(o("a park at sunset").sky[0] > o("a park").sky[0]);
 }
 
-/// A clinical place (named so by its kind or by the text) has a pale vinyl floor whatever its
-/// kind's own floor, unless the text names another; places that are not clinical keep theirs.
+/// A clinical place (named so by its kind or by the words naming the place) has a pale vinyl
+/// floor whatever its kind's own floor, unless the text names another; places that are not
+/// clinical keep theirs, even when they hold something medical.
 #[test]
 fn clinical_places_have_vinyl_floors() {
     let c = |t: &str| draft_colours(SceneType::Indoor, t);
@@ -243,6 +244,8 @@ fn clinical_places_have_vinyl_floors() {
         "an exam hall",
         "a waiting room",
         "a living room",
+        "a garage with a medical cart",
+        "a kid's bedroom with a toy doctor kit and a bunk bed",
     ] {
         assert_ne!(c(t).floor, c("an operating room").floor, "{t}");
     }

@@ -240,12 +240,19 @@ const CLINICAL: &[&str] = &[
 const CLINICAL_FLOOR: [f32; 3] = [0.80, 0.83, 0.83];
 const CLINICAL_WALL: [f32; 3] = [0.93, 0.95, 0.95];
 
-/// Whether the scene kind's name or the text says the place is clinical.
-fn clinical(kind: Option<&str>, text_words: &[String]) -> bool {
-    let kind_words = kind.map(words).unwrap_or_default();
-    kind_words
+/// Whether the scene kind's name or the words naming the place say it is clinical. The place
+/// is named before the first clause or "with"/"and" ("a dental clinic with a chair"); what it
+/// holds ("a garage with a medical cart", "a toy doctor kit") does not make it clinical.
+fn clinical(kind: Option<&str>, text: &str) -> bool {
+    let head = text.split([',', ';', '.', ':']).next().unwrap_or("");
+    let place: Vec<String> = words(head)
+        .into_iter()
+        .take_while(|w| !matches!(w.as_str(), "with" | "and" | "where" | "that" | "which"))
+        .collect();
+    kind.map(words)
+        .unwrap_or_default()
         .iter()
-        .chain(text_words)
+        .chain(&place)
         .any(|w| CLINICAL.contains(&w.as_str()))
 }
 
@@ -298,7 +305,7 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
     }
     let w = words(scene_text);
-    if scene_type == SceneType::Indoor && clinical(kind, &w) {
+    if scene_type == SceneType::Indoor && clinical(kind, scene_text) {
         (c.floor, c.floor_pattern) = (CLINICAL_FLOOR, Speckled);
         if !KINDS.iter().any(|x| Some(x.0) == kind) {
             (c.wall, c.wall_pattern, c.door) = (CLINICAL_WALL, Plain, PAINTED);
