@@ -217,6 +217,12 @@ pub fn relative_error(got: &[f32], want: &[f32]) -> f32 {
         / scale
 }
 
+/// Whether a small graph (the fp32 Conv) loads on `provider`: its library, the libraries it
+/// needs and a device are found. The error is ONNX Runtime's, which names what is missing.
+pub fn loads(provider: Provider) -> Result<(), String> {
+    pair("probe conv", CONV_FP32, provider, 3).map(|_| ())
+}
+
 /// Runs the probe for `provider` at `sizes`. `tamper` (tests only) changes the provider's outputs.
 pub fn probe(
     provider: Provider,

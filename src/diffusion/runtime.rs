@@ -32,7 +32,8 @@ pub enum Provider {
 pub struct GpuFacts {
     /// Linux shows a GPU (a DRM card under /sys/class/drm, or NVIDIA's /dev/nvidiactl).
     pub real_gpu: bool,
-    /// The loaded ONNX Runtime library has the CUDA provider.
+    /// The loaded ONNX Runtime library has the CUDA provider, and a graph loads on it (its CUDA
+    /// and cuDNN libraries and a device are found).
     pub cuda: bool,
     /// The WebGPU plugin library is installed beside ONNX Runtime.
     pub webgpu: bool,
@@ -51,7 +52,7 @@ pub fn choose_auto(f: GpuFacts) -> (Provider, &'static str) {
         ),
         GpuFacts { cuda: true, .. } => (
             Provider::Cuda,
-            "a GPU, and the ONNX Runtime library has the CUDA provider",
+            "a GPU, and the CUDA provider of the ONNX Runtime library loads",
         ),
         GpuFacts { webgpu: true, .. } => (
             Provider::Webgpu,
@@ -71,10 +72,18 @@ pub fn gpu_facts() -> GpuFacts {
     let lib = loaded().ok();
     GpuFacts {
         real_gpu,
-        cuda: lib.is_some() && ort::ep::CUDA::is_available().unwrap_or(false),
+        cuda: real_gpu && lib.is_some() && cuda_loads(),
         webgpu: lib
             .is_some_and(|l| super::webgpu::library(&l.library).is_some_and(|p| p.is_file())),
     }
+}
+
+/// Whether the CUDA provider loads here, asked once per process (it loads CUDA itself).
+fn cuda_loads() -> bool {
+    static LOADS: OnceLock<bool> = OnceLock::new();
+    *LOADS.get_or_init(|| {
+        ort::ep::CUDA::is_available().unwrap_or(false) && check_provider(Provider::Cuda).is_ok()
+    })
 }
 
 impl Provider {
@@ -238,8 +247,14 @@ pub fn available_providers() -> Result<Vec<String>, String> {
 }
 
 /// Whether the loaded ONNX Runtime library can run `p`; the error says why not and what to do.
+/// The CUDA provider is a library of its own, loaded with its CUDA and cuDNN libraries only when
+/// a session asks for it: it counts as runnable once a small graph loads on it.
 pub fn check_provider(p: Provider) -> Result<(), String> {
-    provider_dispatch(p).map(|_| ())
+    provider_dispatch(p)?;
+    if p.resolved() == Provider::Cuda {
+        super::probe::loads(p)?;
+    }
+    Ok(())
 }
 
 fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, String> {
