@@ -43,7 +43,7 @@ fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
-/// Times `runs` formation iterations (after two warm-ups) with the sd prior of `models` on
+/// Times `runs` formation iterations (after `warmups` untimed ones) with the sd prior of `models` on
 /// `provider`: `views` views of `size`² a step, a random cloud of `n` Gaussians. With
 /// `per_view`, every UNet run holds one view's prompts (the iteration before batching).
 #[allow(clippy::too_many_arguments, reason = "what one measurement varies")]
@@ -55,6 +55,7 @@ pub fn bench_generate_sd(
     views: usize,
     size: u32,
     runs: usize,
+    warmups: usize,
     per_view: bool,
 ) -> Result<SdIterationFigures, GenError> {
     let (frame, cfg) = crate::bench::bench_object(views, size);
@@ -71,12 +72,12 @@ pub fn bench_generate_sd(
     let mut guide = formation_guide(&cfg);
     let ranges = OrbitRanges::default();
     let mut rows: Vec<[f64; 9]> = vec![];
-    for i in 0..runs.max(1) + 2 {
+    for i in 0..runs.max(1) + warmups {
         let r = formation_iteration(
             &mut t, &mut prior, &mut guide, &mut rng, &frame, &ranges, &cfg,
         )?;
         let m = prior.sd.take_times();
-        if i < 2 {
+        if i < warmups {
             continue;
         }
         let models_ms = (m.text_encoder + m.unet + m.autoencoder) * 1e3;

@@ -47,13 +47,17 @@ pub struct Args {
     /// Timed runs per figure (median reported).
     #[arg(long, default_value_t = 5)]
     pub runs: usize,
+    /// Untimed iterations before the timed ones of --generate --prior sd (a GPU provider may
+    /// tune its kernels to each new shape in the first runs).
+    #[arg(long, default_value_t = 2)]
+    pub warmups: usize,
 }
 
 pub fn run(a: Args) -> Result<()> {
     if a.unet {
         bench_unet(a.json, a.models, a.provider, a.latent, a.runs)
     } else if a.generate && a.prior == "sd" {
-        bench_generate_sd(a.json, a.models, a.provider, a.runs, &a.modes)
+        bench_generate_sd(a.json, a.models, a.provider, a.runs, a.warmups, &a.modes)
     } else if a.generate {
         bench_generate(a.json, a.runs)
     } else {
@@ -109,6 +113,7 @@ fn bench_generate_sd(
     models: Option<PathBuf>,
     provider: Provider,
     runs: usize,
+    warmups: usize,
     modes: &str,
 ) -> Result<()> {
     let per_view_modes: &[bool] = match modes {
@@ -124,7 +129,7 @@ fn bench_generate_sd(
     for size in SD_SIZES {
         for &per_view in per_view_modes {
             let f = dreamscene::bench_sd::bench_generate_sd(
-                &ctx, &dir, provider, 20_000, 4, size, runs, per_view,
+                &ctx, &dir, provider, 20_000, 4, size, runs, warmups, per_view,
             )?;
             if !json {
                 println!(

@@ -355,7 +355,8 @@ impl StableDiffusion {
             super::probe::Verdict::Trust => {}
             super::probe::Verdict::Split { max_batch } => {
                 eprintln!(
-                    "warning: provider {name}: a {batch}-item UNet run is wrong on this device;                      running at most {max_batch} items at a time"
+                    "warning: provider {name}: a {batch}-item UNet run is wrong on this device; \
+                     running at most {max_batch} items at a time"
                 );
                 self.max_batch = Some(self.max_batch.map_or(max_batch, |m| m.min(max_batch)));
                 self.probed.push((hw, max_batch));

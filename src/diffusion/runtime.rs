@@ -280,9 +280,43 @@ fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, Stri
                     available_providers()?.join(", ")
                 ));
             }
-            Ok(vec![ort::ep::CUDA::default().build().error_on_failure()])
+            Ok(vec![cuda_ep().build().error_on_failure()])
         }
     }
+}
+
+/// The `KEY=VALUE` pairs of a comma-separated option string (`DREAMSCENE_WEBGPU_OPTIONS`,
+/// `DREAMSCENE_CUDA_OPTIONS`), trimmed, and the parts that are not such a pair.
+pub(crate) fn option_pairs(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
+    let mut pairs = vec![];
+    let mut bad = vec![];
+    for pair in extra.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        match pair.split_once('=') {
+            Some((k, v)) if !k.trim().is_empty() => {
+                pairs.push((k.trim().to_string(), v.trim().to_string()))
+            }
+            _ => bad.push(pair.to_string()),
+        }
+    }
+    (pairs, bad)
+}
+
+/// The CUDA provider with ONNX Runtime's defaults and the `KEY=VALUE` pairs of
+/// `$DREAMSCENE_CUDA_OPTIONS` (the provider's own option names, e.g.
+/// `cudnn_conv_algo_search=HEURISTIC,prefer_nhwc=1`): its settings can be measured without a
+/// rebuild.
+fn cuda_ep() -> ort::ep::CUDA {
+    use ort::ep::ArbitrarilyConfigurableExecutionProvider as _;
+    let extra = std::env::var("DREAMSCENE_CUDA_OPTIONS").unwrap_or_default();
+    let (pairs, bad) = option_pairs(&extra);
+    for b in bad {
+        eprintln!("warning: DREAMSCENE_CUDA_OPTIONS: `{b}` is not KEY=VALUE; ignored");
+    }
+    pairs
+        .into_iter()
+        .fold(ort::ep::CUDA::default(), |ep, (k, v)| {
+            ep.with_arbitrary_config(k, v)
+        })
 }
 
 /// A session builder on `provider` with `threads` intra-op threads; errors name `shown`.
@@ -614,6 +648,23 @@ fn check_ports(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn option_pairs_are_trimmed_and_bad_parts_reported() {
+        let (pairs, bad) = option_pairs(" cudnn_conv_algo_search = HEURISTIC ,prefer_nhwc=1,x,,=2");
+        assert_eq!(
+            pairs,
+            vec![
+                (
+                    "cudnn_conv_algo_search".to_string(),
+                    "HEURISTIC".to_string()
+                ),
+                ("prefer_nhwc".to_string(), "1".to_string()),
+            ]
+        );
+        assert_eq!(bad, vec!["x".to_string(), "=2".to_string()]);
+        assert_eq!(option_pairs(""), (vec![], vec![]));
+    }
 
     #[test]
     fn auto_takes_a_gpu_provider_only_on_a_real_gpu() {

@@ -89,17 +89,11 @@ pub fn options() -> Vec<(String, String)> {
 /// and the pairs that are not `KEY=VALUE`.
 fn with_overrides(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
     let mut options = vec![("dawnBackendType".to_string(), "Vulkan".to_string())];
-    let mut bad = vec![];
-    for pair in extra.split(',').map(str::trim).filter(|p| !p.is_empty()) {
-        match pair.split_once('=') {
-            Some((k, v)) if !k.trim().is_empty() => {
-                let (k, v) = (k.trim().to_string(), v.trim().to_string());
-                match options.iter_mut().find(|(key, _)| *key == k) {
-                    Some(o) => o.1 = v,
-                    None => options.push((k, v)),
-                }
-            }
-            _ => bad.push(pair.to_string()),
+    let (pairs, bad) = super::runtime::option_pairs(extra);
+    for (k, v) in pairs {
+        match options.iter_mut().find(|(key, _)| *key == k) {
+            Some(o) => o.1 = v,
+            None => options.push((k, v)),
         }
     }
     let options = options
