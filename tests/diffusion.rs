@@ -705,3 +705,55 @@ fn fp16_export_loads_and_matches_the_goldens() {
     check_unet_golden(&mut sd, &emb[0], &emb[1], 1e-2);
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `bench --generate --prior sd` splits an iteration of the tiny models at both sizes: 36 UNet
+/// items in 5 runs (the null prompt's run, then 4 chain points of 4 views × 2 prompts), the parts
+/// never more than the whole; `--warmups` and `--runs` are taken.
+#[test]
+fn cli_sd_iteration_split() {
+    let tiny = data("tiny-sd");
+    let (ok, out) = cli(
+        &[
+            "bench",
+            "--generate",
+            "--prior",
+            "sd",
+            "--models",
+            tiny.to_str().unwrap(),
+            "--provider",
+            "cpu",
+            "--modes",
+            "batched",
+            "--runs",
+            "1",
+            "--warmups",
+            "1",
+            "--json",
+        ],
+        &[],
+    );
+    assert!(ok, "{out}");
+    let v: Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+    let figs = v["sd_iteration"].as_array().unwrap();
+    let sizes: Vec<u64> = figs.iter().map(|f| f["size"].as_u64().unwrap()).collect();
+    assert_eq!(sizes, vec![256, 512], "{out}");
+    for f in figs {
+        assert_eq!(f["mode"], "batched", "{out}");
+        assert_eq!(f["provider"], "cpu", "{out}");
+        assert_eq!(f["unet_items"].as_f64(), Some(36.0), "{out}");
+        assert_eq!(f["unet_runs"].as_f64(), Some(5.0), "{out}");
+        let ms = |k: &str| f[k].as_f64().unwrap();
+        let parts = ms("text_encoder_ms") + ms("unet_ms") + ms("vae_ms") + ms("kernels_ms");
+        assert!(
+            ms("unet_ms") > 0.0 && parts <= ms("wall_ms") * 1.001,
+            "{out}"
+        );
+        let share = ms("host_share");
+        assert!((0.0..1.0).contains(&share), "{out}");
+    }
+    let (ok, out) = cli(
+        &["bench", "--generate", "--prior", "sd", "--warmups", "x"],
+        &[],
+    );
+    assert!(!ok && out.contains("--warmups"), "{out}");
+}
