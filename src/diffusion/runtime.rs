@@ -285,30 +285,48 @@ fn provider_dispatch(p: Provider) -> Result<Vec<ExecutionProviderDispatch>, Stri
     }
 }
 
-/// The `KEY=VALUE` pairs of a comma-separated option string (`DREAMSCENE_WEBGPU_OPTIONS`,
-/// `DREAMSCENE_CUDA_OPTIONS`), trimmed, and the parts that are not such a pair.
-pub(crate) fn option_pairs(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
-    let mut pairs = vec![];
+/// `defaults` with the `KEY=VALUE` pairs of a comma-separated option string over them (a pair
+/// replaces the default of its key, or is added), and the parts that are not such a pair. The
+/// strings are `DREAMSCENE_WEBGPU_OPTIONS` and `DREAMSCENE_CUDA_OPTIONS`.
+pub(crate) fn merge_options(
+    defaults: &[(&str, &str)],
+    extra: &str,
+) -> (Vec<(String, String)>, Vec<String>) {
+    let mut options: Vec<(String, String)> = defaults
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.to_string()))
+        .collect();
     let mut bad = vec![];
     for pair in extra.split(',').map(str::trim).filter(|p| !p.is_empty()) {
         match pair.split_once('=') {
             Some((k, v)) if !k.trim().is_empty() => {
-                pairs.push((k.trim().to_string(), v.trim().to_string()))
+                let (k, v) = (k.trim().to_string(), v.trim().to_string());
+                match options.iter_mut().find(|(key, _)| *key == k) {
+                    Some(o) => o.1 = v,
+                    None => options.push((k, v)),
+                }
             }
             _ => bad.push(pair.to_string()),
         }
     }
-    (pairs, bad)
+    (options, bad)
 }
 
-/// The CUDA provider with ONNX Runtime's defaults and the `KEY=VALUE` pairs of
-/// `$DREAMSCENE_CUDA_OPTIONS` (the provider's own option names, e.g.
-/// `cudnn_conv_algo_search=HEURISTIC,prefer_nhwc=1`): its settings can be measured without a
+/// The CUDA provider's settings that differ from ONNX Runtime's defaults: cuDNN's heuristic
+/// choice of convolution algorithm. The default, an exhaustive benchmark of every algorithm, runs
+/// again for each new input shape, and the UNet's runs change shape within every iteration (the
+/// null prompt's run, then the chain points'); ONNX Runtime's issue tracker reports 0.3–1.3 s per
+/// new shape for it and no loss in steady state for the heuristic.
+const CUDA_DEFAULTS: [(&str, &str); 1] = [("cudnn_conv_algo_search", "HEURISTIC")];
+
+/// The CUDA provider with [`CUDA_DEFAULTS`] and the `KEY=VALUE` pairs of
+/// `$DREAMSCENE_CUDA_OPTIONS` over them (the provider's own option names, e.g.
+/// `cudnn_conv_algo_search=EXHAUSTIVE,prefer_nhwc=1`): its settings can be measured without a
 /// rebuild.
 fn cuda_ep() -> ort::ep::CUDA {
     use ort::ep::ArbitrarilyConfigurableExecutionProvider as _;
     let extra = std::env::var("DREAMSCENE_CUDA_OPTIONS").unwrap_or_default();
-    let (pairs, bad) = option_pairs(&extra);
+    let (pairs, bad) = merge_options(&CUDA_DEFAULTS, &extra);
     for b in bad {
         eprintln!("warning: DREAMSCENE_CUDA_OPTIONS: `{b}` is not KEY=VALUE; ignored");
     }
@@ -650,20 +668,31 @@ mod tests {
     use super::*;
 
     #[test]
-    fn option_pairs_are_trimmed_and_bad_parts_reported() {
-        let (pairs, bad) = option_pairs(" cudnn_conv_algo_search = HEURISTIC ,prefer_nhwc=1,x,,=2");
+    fn cuda_options_override_the_heuristic_default() {
+        let (o, bad) = merge_options(
+            &CUDA_DEFAULTS,
+            " cudnn_conv_algo_search = EXHAUSTIVE ,prefer_nhwc=1,x,,=2",
+        );
         assert_eq!(
-            pairs,
+            o,
             vec![
                 (
                     "cudnn_conv_algo_search".to_string(),
-                    "HEURISTIC".to_string()
+                    "EXHAUSTIVE".to_string()
                 ),
                 ("prefer_nhwc".to_string(), "1".to_string()),
             ]
         );
         assert_eq!(bad, vec!["x".to_string(), "=2".to_string()]);
-        assert_eq!(option_pairs(""), (vec![], vec![]));
+        let (o, bad) = merge_options(&CUDA_DEFAULTS, "");
+        assert_eq!(
+            o,
+            vec![(
+                "cudnn_conv_algo_search".to_string(),
+                "HEURISTIC".to_string()
+            )]
+        );
+        assert!(bad.is_empty());
     }
 
     #[test]

@@ -88,14 +88,7 @@ pub fn options() -> Vec<(String, String)> {
 /// The default options with `extra`'s pairs over them, each key prefixed by the EP's name,
 /// and the pairs that are not `KEY=VALUE`.
 fn with_overrides(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
-    let mut options = vec![("dawnBackendType".to_string(), "Vulkan".to_string())];
-    let (pairs, bad) = super::runtime::option_pairs(extra);
-    for (k, v) in pairs {
-        match options.iter_mut().find(|(key, _)| *key == k) {
-            Some(o) => o.1 = v,
-            None => options.push((k, v)),
-        }
-    }
+    let (options, bad) = super::runtime::merge_options(&[("dawnBackendType", "Vulkan")], extra);
     let options = options
         .into_iter()
         .map(|(k, v)| (format!("{EP}.{k}"), v))
