@@ -509,7 +509,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
     arch!("vanity", va::vanity, [Top, Body, Door], [Top => [0.93, 0.91, 0.87], Body => [0.93, 0.91, 0.87], Door => [0.95, 0.93, 0.89], Frame => [0.78, 0.66, 0.42], Canvas => [0.78, 0.84, 0.88], Handle => BRASS]),
     arch!("salon_station", va::salon_station, [Body, Door], [Body => [0.12, 0.12, 0.13], Door => [0.16, 0.16, 0.17], Top => WHITE, Frame => [0.20, 0.20, 0.21], Canvas => [0.78, 0.84, 0.88], Light => [1.0, 0.90, 0.65], Interior => BLACK, Metal => STEEL, Handle => STEEL]),
-    arch!("footstool", va::footstool, [Upholstery], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.40, 0.32, 0.26], Frame => DARK_WOOD]),
+    arch!("footstool", va::footstool, [Upholstery], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.30, 0.24, 0.19], Frame => DARK_WOOD]),
     arch!("poker_table", jt::poker_table, [Upholstery], [Upholstery => [0.08, 0.42, 0.20], Cushion => [0.10, 0.09, 0.09], Frame => [0.36, 0.20, 0.10], Interior => BLACK]),
     arch!("cutting_table", jt::cutting_table, [Top, Body], [Top => [0.90, 0.88, 0.84], Body => WHITE, Frame => [0.85, 0.85, 0.84], Canvas => [0.15, 0.45, 0.32], Handle => [0.80, 0.88, 0.82], Metal => STEEL]),
     arch!("grooming_table", jt::grooming_table, [Upholstery], [Upholstery => [0.14, 0.14, 0.15], Cushion => [0.22, 0.22, 0.24], Metal => STEEL, Canvas => [0.75, 0.12, 0.12], Tyre => BLACK, Handle => BLACK]),

@@ -266,6 +266,18 @@ pub fn produce_stand(b: &mut Builder) {
         [-hw + 0.03, -hd + 0.08, 0.0],
         [hw - 0.03, 0.0, z_back],
     );
+    // Plank seams across the fronts of both steps.
+    for (y, z0, z1) in [(hd - 0.05, 0.0, z_front), (0.0, z_front, z_back)] {
+        let seams = ((z1 - z0) / 0.12).floor() as usize;
+        for k in 1..=seams {
+            let z = z0 + k as f64 * (z1 - z0) / (seams + 1) as f64;
+            b.cuboid(
+                Frame,
+                [-hw + 0.03, y, z - 0.006],
+                [hw - 0.03, y + 0.006, z + 0.006],
+            );
+        }
+    }
     let n = ((b.w / 0.45).floor() as usize).clamp(2, 5);
     let cw = (b.w - 0.06) / n as f64;
     let tilt = 20f64.to_radians();

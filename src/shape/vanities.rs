@@ -226,7 +226,7 @@ pub fn footstool(b: &mut Builder) {
         .collect();
     b.polyline(Cushion, &ring, 0.008);
     // Buttons: a diamond grid on the top.
-    let r = 0.016;
+    let r = (0.05 * b.w.min(b.d)).clamp(0.014, 0.024);
     for (fx, fy) in [
         (0.0, 0.0),
         (-0.45, 0.0),
