@@ -41,6 +41,7 @@ use super::heritage as he;
 use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
+use super::jobtables as jt;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -51,6 +52,7 @@ use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
 use super::nursery as nu;
+use super::officefit as of;
 use super::orchard as oc;
 use super::ornaments as or;
 use super::ovens as ov;
@@ -83,12 +85,14 @@ use super::smithy as sm;
 use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
+use super::sundries as su;
 use super::tanks as tk;
 use super::taps as tp;
 use super::things as t;
 use super::training as tr;
 use super::transit as tt;
 use super::utility as ut;
+use super::vanities as va;
 use super::vehicles as ve;
 use super::vitrines as vi;
 use super::wards as wd;
@@ -200,7 +204,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sink", c::sink, [Body, Door], [Top => [0.82, 0.80, 0.76], Canvas => WHITE, Metal => STEEL]),
     arch!("fireplace", c::fireplace, [Body], [Body => STONE, Top => DARK_WOOD]),
     arch!("piano", c::piano, [Body], [Body => BLACK, Frame => BLACK]),
-    arch!("grand_piano", c::grand_piano, [Body, Top], [Body => BLACK, Top => BLACK, Frame => BLACK]),
+    arch!("grand_piano", c::grand_piano, [Body, Top], [Body => BLACK, Top => BLACK, Frame => BLACK, Metal => [0.78, 0.62, 0.30]]),
     arch!("bathtub", c::bathtub, [Body], [Body => WHITE, Canvas => [0.86, 0.88, 0.90]]),
     arch!("toilet", c::toilet, [Body], [Body => WHITE, Top => WHITE]),
     arch!("plant", m::plant, [Foliage], []),
@@ -503,6 +507,18 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("chess_table", bd::chess_table, [Top, Frame], [Canvas => [0.90, 0.84, 0.70], Interior => [0.28, 0.17, 0.10]]),
     arch!("air_hockey_table", bd::air_hockey_table, [Body, Frame], [Body => [0.12, 0.20, 0.45], Frame => [0.12, 0.20, 0.45], Canvas => [0.96, 0.96, 0.96], Handle => [0.85, 0.15, 0.12], Interior => BLACK]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
+    arch!("vanity", va::vanity, [Top, Body, Door], [Top => [0.93, 0.91, 0.87], Body => [0.93, 0.91, 0.87], Door => [0.95, 0.93, 0.89], Frame => [0.78, 0.66, 0.42], Canvas => [0.78, 0.84, 0.88], Handle => BRASS]),
+    arch!("salon_station", va::salon_station, [Body, Door], [Body => [0.12, 0.12, 0.13], Door => [0.16, 0.16, 0.17], Top => WHITE, Frame => [0.20, 0.20, 0.21], Canvas => [0.78, 0.84, 0.88], Light => [1.0, 0.90, 0.65], Interior => BLACK, Metal => STEEL, Handle => STEEL]),
+    arch!("footstool", va::footstool, [Upholstery], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.30, 0.24, 0.19], Frame => DARK_WOOD]),
+    arch!("poker_table", jt::poker_table, [Upholstery], [Upholstery => [0.08, 0.42, 0.20], Cushion => [0.10, 0.09, 0.09], Frame => [0.36, 0.20, 0.10], Interior => BLACK]),
+    arch!("cutting_table", jt::cutting_table, [Top, Body], [Top => [0.90, 0.88, 0.84], Body => WHITE, Frame => [0.85, 0.85, 0.84], Canvas => [0.15, 0.45, 0.32], Handle => [0.80, 0.88, 0.82], Metal => STEEL]),
+    arch!("grooming_table", jt::grooming_table, [Upholstery], [Upholstery => [0.14, 0.14, 0.15], Cushion => [0.22, 0.22, 0.24], Metal => STEEL, Canvas => [0.75, 0.12, 0.12], Tyre => BLACK, Handle => BLACK]),
+    arch!("produce_stand", jt::produce_stand, [Body, Frame], [Body => [0.50, 0.34, 0.20], Frame => [0.72, 0.56, 0.36], Canvas => [0.12, 0.16, 0.14], Handle => [0.92, 0.92, 0.88]]),
+    arch!("cubicle", of::cubicle, [Upholstery], [Upholstery => [0.45, 0.50, 0.56], Metal => [0.70, 0.71, 0.73], Top => [0.80, 0.78, 0.74], Body => [0.28, 0.28, 0.30], Door => [0.34, 0.34, 0.36], Interior => BLACK, Canvas => [0.96, 0.92, 0.55], Handle => STEEL]),
+    arch!("corkboard", of::corkboard, [Canvas], [Canvas => [0.72, 0.55, 0.36], Frame => [0.50, 0.34, 0.20], Handle => [0.80, 0.12, 0.10]]),
+    arch!("ladder_shelf", of::ladder_shelf, [Frame, Top], [Frame => [0.55, 0.40, 0.25], Top => [0.55, 0.40, 0.25]]),
+    arch!("kitchen_cart", su::kitchen_cart, [Frame, Body, Door], [Top => [0.72, 0.52, 0.32], Frame => [0.92, 0.92, 0.90], Body => [0.92, 0.92, 0.90], Door => [0.94, 0.94, 0.92], Handle => STEEL, Tyre => BLACK, Canvas => [0.70, 0.55, 0.33], Interior => [0.35, 0.25, 0.15], Metal => STEEL, Cushion => [0.80, 0.30, 0.25]]),
+    arch!("candelabra", su::candelabra, [Metal], [Metal => [0.12, 0.12, 0.13], Body => [0.95, 0.92, 0.82], Light => [1.0, 0.80, 0.40]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -3,7 +3,7 @@
 use super::archetypes::Builder;
 use super::goods::{fill, Bay, Draws};
 use super::materials::Role::*;
-use super::parts::{frustum_profile, IDENTITY};
+use super::parts::{frustum_profile, rot_y, IDENTITY};
 
 /// A case (cabinet, dresser, wardrobe): carcass on a plinth or legs, top, fronts with handles.
 /// `drawers` rows of drawers above `doors` doors (side by side); `legs` lifts it on legs.
@@ -314,14 +314,22 @@ pub fn piano(b: &mut Builder) {
 
 pub fn grand_piano(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let zb = 0.6 * h;
+    // The case stands about a metre tall; what the size box has above it is the open lid's.
+    let hc = h.min(1.0);
+    let zb = 0.6 * hc;
     let kd = 0.25;
     // The case: a wing, straight along the bass side (+x, the player's left), its bentside
     // curving in from the treble side (-x) to a narrow tail at the back (-y). Drawn as slices
     // across its length so its outline (a grand's mark from above and behind) is the wing's.
     let (y0, y1) = (-hd, hd - kd);
-    let ht = h - 0.1_f64.min(0.25 * (h - zb));
+    let ht = hc - 0.1_f64.min(0.25 * (hc - zb));
+    // The lid, hinged along the straight side, propped open on its stick as far as the box
+    // allows (at most 40°); shut where the box has no room above the case.
+    let sin_lid = ((h - ht - 0.03) / (2.0 * hw)).clamp(0.0, 40f64.to_radians().sin());
+    let lid = sin_lid.asin();
     let n = 28;
+    let rim = 0.04;
+    let mut stick = None;
     for i in 0..n {
         let (ta, tb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
         let (ya, yb) = (y1 - ta * (y1 - y0), y1 - tb * (y1 - y0));
@@ -334,7 +342,37 @@ pub fn grand_piano(b: &mut Builder) {
         };
         let left = -hw + inward * 1.55 * hw;
         b.cuboid(Body, [left, yb, zb], [hw, ya + 0.001, ht - 0.03]);
-        b.cuboid(Top, [left, yb, ht - 0.03], [hw, ya + 0.001, ht]);
+        if lid < 0.05 {
+            b.cuboid(Top, [left, yb, ht - 0.03], [hw, ya + 0.001, ht]);
+            continue;
+        }
+        // Open: the case's rim, the golden plate and strings inside it, and the lid above.
+        b.cuboid(Top, [left, yb, ht - 0.03], [left + rim, ya + 0.001, ht]);
+        b.cuboid(Top, [hw - rim, yb, ht - 0.03], [hw, ya + 0.001, ht]);
+        b.cuboid(
+            Metal,
+            [left + rim, yb, ht - 0.06],
+            [hw - rim, ya + 0.001, ht - 0.045],
+        );
+        let dx = 0.5 * (hw - left);
+        b.slab(
+            Top,
+            [
+                hw - dx * lid.cos(),
+                0.5 * (ya + yb),
+                ht + 0.012 + dx * lid.sin(),
+            ],
+            [dx, 0.5 * (ya - yb) + 0.0005, 0.012],
+            rot_y(lid),
+        );
+        if stick.is_none() && t > 0.35 {
+            stick = Some((left + 0.08, 0.5 * (ya + yb)));
+        }
+    }
+    // The stick, from the treble rim up to the lid's underside.
+    if let Some((x, y)) = stick {
+        let top = ht + (hw - x) * lid.tan();
+        b.rod(Frame, [x, y, ht], [x, y, top], 0.012);
     }
     // The key bed, the keys and the music desk standing behind them.
     b.cuboid(Body, [-hw, hd - kd - 0.1, zb], [hw, hd - 0.05, zb + 0.12]);
@@ -346,7 +384,7 @@ pub fn grand_piano(b: &mut Builder) {
     b.cuboid(
         Body,
         [-0.55 * hw, hd - kd - 0.06, ht],
-        [0.55 * hw, hd - kd - 0.03, h],
+        [0.55 * hw, hd - kd - 0.03, (ht + 0.25).min(h)],
     );
     for (x, y) in [
         (-hw + 0.08, hd - kd),

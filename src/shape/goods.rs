@@ -23,11 +23,13 @@ pub enum Goods {
     Baskets,
     Balls,
     Magazines,
+    /// Fruit and vegetables: round things in the colours of produce.
+    Produce,
 }
 
 impl Goods {
     /// Every kind, in table order.
-    pub const ALL: [Goods; 11] = [
+    pub const ALL: [Goods; 12] = [
         Goods::Books,
         Goods::Loaves,
         Goods::Groceries,
@@ -39,6 +41,7 @@ impl Goods {
         Goods::Baskets,
         Goods::Balls,
         Goods::Magazines,
+        Goods::Produce,
     ];
 
     /// The table's name of the kind.
@@ -55,6 +58,7 @@ impl Goods {
             Goods::Baskets => "baskets",
             Goods::Balls => "balls",
             Goods::Magazines => "magazines",
+            Goods::Produce => "produce",
         }
     }
 
@@ -79,6 +83,7 @@ impl Goods {
             Goods::Baskets => BASKETS,
             Goods::Balls => BALLS,
             Goods::Magazines => MAGAZINES,
+            Goods::Produce => PRODUCE,
         }
     }
 
@@ -203,6 +208,18 @@ const BALLS: &[Rgb] = &[
     [0.45, 0.15, 0.55],
     [0.10, 0.10, 0.11],
     [0.85, 0.50, 0.10],
+];
+
+/// Apples, oranges, lemons, limes, aubergines, tomatoes, cabbages, onions.
+const PRODUCE: &[Rgb] = &[
+    [0.78, 0.12, 0.10],
+    [0.95, 0.55, 0.08],
+    [0.96, 0.85, 0.20],
+    [0.45, 0.70, 0.20],
+    [0.30, 0.12, 0.32],
+    [0.88, 0.22, 0.12],
+    [0.55, 0.75, 0.45],
+    [0.80, 0.62, 0.40],
 ];
 
 /// Glossy covers and their pictures.
@@ -376,13 +393,17 @@ pub fn fill(b: &mut Builder, goods: Goods, bay: Bay, r: &mut Draws) {
                 super::displays::magazine(b, v, [x + 0.5 * w, front - 0.05, z], w, h);
                 w + 0.02
             }
-            Goods::Balls => {
+            Goods::Balls | Goods::Produce => {
                 let rad = (0.45 * room).min(0.11).min(0.45 * (front - y0));
                 if 2.0 * rad > x1 - x {
                     break;
                 }
                 let c = [x + rad, 0.5 * (y0 + front), z + rad];
                 b.ellipsoid_rot(Books, goods.accent(r.next()), c, [rad; 3], IDENTITY);
+                if goods == Goods::Produce {
+                    x += 2.0 * rad + 0.02;
+                    continue;
+                }
                 // Three finger holes on the front, near the top.
                 for (dx, dz) in [(-0.3, 0.45), (0.3, 0.45), (0.0, 0.1)] {
                     let h = [c[0] + dx * rad, c[1] + 0.8 * rad, c[2] + dz * rad];
