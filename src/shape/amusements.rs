@@ -226,11 +226,17 @@ pub fn slot_machine(b: &mut Builder) {
     // The reel window: three reels (drums turning about x) with a symbol each, in a frame.
     let (zr0, zr1) = (0.6 * h, 0.78 * h);
     let yw = hd - 0.05 * b.d;
-    b.cuboid(
-        Metal,
-        [x0 + 0.04, yw, zr0 - 0.02],
-        [x0 + 2.0 * cw - 0.04, yw + g, zr1 + 0.02],
-    );
+    // A dark recess behind the reels and a chrome bezel round it, proud of the reels' faces.
+    let (xa0, xa1) = (x0 + 0.04, x0 + 2.0 * cw - 0.04);
+    b.cuboid(Interior, [xa0, yw, zr0], [xa1, yw + 0.003, zr1]);
+    for (lo, hi) in [
+        ([xa0, yw, zr0 - 0.025], [xa1, yw + 2.5 * g, zr0]),
+        ([xa0, yw, zr1], [xa1, yw + 2.5 * g, zr1 + 0.025]),
+        ([xa0, yw, zr0], [xa0 + 0.04, yw + 2.5 * g, zr1]),
+        ([xa1 - 0.04, yw, zr0], [xa1, yw + 2.5 * g, zr1]),
+    ] {
+        b.cuboid(Metal, lo, hi);
+    }
     let rw = (2.0 * cw - 0.16) / 3.0;
     let rr = 0.5 * (zr1 - zr0);
     for i in 0..3 {
