@@ -4,7 +4,8 @@
 //! legs, a slot machine three reels and a lever, a popcorn machine popcorn behind glass on a
 //! wheeled cart; a scarecrow is a dressed cross of poles bare below, a statue a figure of one
 //! stone on a plinth; a pergola has open rafters, a mailbox a flag, a hot tub water in its rim,
-//! a fire engine a ladder and lockers, a surgical light lamp heads hanging from the ceiling.
+//! a fire engine a ladder and lockers, a surgical light lamp heads hanging from the ceiling,
+//! a windmill a stout tower under a cap.
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
@@ -367,6 +368,36 @@ fn a_surgical_light_hangs_lamp_heads_down_from_the_ceiling() {
             );
             let mount = within(&of(&s, Role::Metal), |p| p[2] > 0.98 * h);
             assert!(!mount.is_empty(), "{name}: not hung from the ceiling");
+        }
+    }
+}
+
+#[test]
+fn a_windmill_is_a_stout_tower_under_a_cap_with_sails_wider_than_it() {
+    for name in ["windmill", "wind mill"] {
+        for size in sized("windmill", [1.0, 1.0, 1.2]) {
+            let s = at(name, size);
+            let h = size[2];
+            let tower = of(&s, Role::Body);
+            let foot = width(&tower, 0.0, 0.1 * h);
+            // Stout: its foot about half the sails' reach, not a post.
+            assert!(
+                foot > 0.35 * size[0],
+                "{name} {size:?}: a post {foot:.2} wide"
+            );
+            let sails = of(&s, Role::Canvas);
+            let reach = range(&sails, 0).1 - range(&sails, 0).0;
+            assert!(
+                reach > 1.5 * foot,
+                "{name} {size:?}: sails {reach:.2} by a {foot:.2} tower"
+            );
+            // A cap over the tower, narrowing to its point.
+            let cap = of(&s, Role::Top);
+            assert!(
+                width(&cap, 0.95 * range(&cap, 2).1, h)
+                    < 0.5 * width(&cap, 0.0, range(&cap, 2).0 + 0.05),
+                "{name} {size:?}: no conical cap"
+            );
         }
     }
 }
