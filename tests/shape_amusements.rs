@@ -401,3 +401,22 @@ fn a_windmill_is_a_stout_tower_under_a_cap_with_sails_wider_than_it() {
         }
     }
 }
+
+#[test]
+fn a_rocking_horse_has_a_mane_down_its_neck() {
+    for name in ["rocking horse", "hobby horse"] {
+        for size in sized("rocking horse", [1.2, 1.0, 1.0]) {
+            let s = at(name, size);
+            let h = size[2];
+            let mane = of(&s, Role::Cushion);
+            assert!(!mane.is_empty(), "{name}: no mane");
+            // Over the front half, high up between the back and the ears.
+            let (x0, x1) = range(&mane, 0);
+            assert!(
+                x0 > 0.1 * size[0] && x1 < 0.5 * size[0],
+                "{name} {size:?}: mane at {x0:.2}..{x1:.2}"
+            );
+            assert!(range(&mane, 2).0 > 0.6 * h, "{name} {size:?}: mane low");
+        }
+    }
+}

@@ -497,7 +497,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("canopy_bed", cb::canopy_bed, [Duvet], [Duvet => [0.86, 0.82, 0.74], Canvas => [0.95, 0.93, 0.88], Frame => DARK_WOOD]),
     arch!("bassinet", nu::bassinet, [Body, Shade], [Body => [0.93, 0.92, 0.90], Shade => [0.93, 0.92, 0.90], Mattress => [0.98, 0.97, 0.95], Pillow => [0.80, 0.88, 0.95], Frame => [0.75, 0.62, 0.45]]),
     arch!("cradle", nu::cradle, [Frame, Top], [Frame => [0.66, 0.48, 0.30], Top => [0.66, 0.48, 0.30], Mattress => [0.96, 0.95, 0.92], Pillow => [0.95, 0.90, 0.80]]),
-    arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK]),
+    arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK, Cushion => [0.16, 0.11, 0.07]]),
     arch!("birdhouse", po::birdhouse, [Body], [Body => [0.62, 0.45, 0.28], Top => [0.45, 0.22, 0.16], Trunk => [0.40, 0.30, 0.20], Metal => [0.30, 0.30, 0.32], Interior => BLACK]),
     arch!("bird_feeder", po::bird_feeder, [Top], [Top => [0.25, 0.40, 0.25], Frame => [0.25, 0.25, 0.27], Metal => [0.25, 0.25, 0.27], Soil => [0.78, 0.66, 0.42], Pane => [0.85, 0.90, 0.92]]),
     arch!("patio_heater", po::patio_heater, [Body, Shade], [Body => [0.22, 0.22, 0.24], Shade => [0.72, 0.73, 0.75], Metal => [0.35, 0.35, 0.37], Light => [1.0, 0.45, 0.12]]),
