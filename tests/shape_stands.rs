@@ -161,7 +161,7 @@ fn a_jewellery_armoire_is_many_shallow_drawers_on_legs_under_a_mirrored_lid() {
 
 #[test]
 fn an_examination_lamp_has_a_round_flat_head_out_on_an_arm_over_castors() {
-    for name in ["examination lamp", "surgical light", "surgical lamp"] {
+    for name in ["examination lamp", "exam lamp", "examination light"] {
         for size in sized("examination lamp", [1.3, 1.0, 1.2]) {
             let s = at(name, size);
             let head = of(&s, Role::Shade);

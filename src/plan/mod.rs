@@ -5,6 +5,7 @@ pub mod check;
 pub mod conform;
 pub mod dialogue;
 pub mod draw;
+pub mod finish;
 pub mod gcp;
 pub mod groups;
 pub mod kb;

@@ -87,7 +87,7 @@ fn generic_room(prompt: &str) -> SceneSpec {
             ObjectSpec {
                 number: n,
                 size: o.size,
-                description: describe(o, &[], &[]),
+                description: describe(o, &[], &[], None),
                 rows: 0,
                 sizes: vec![],
             },

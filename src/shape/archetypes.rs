@@ -1,8 +1,10 @@
 //! The archetype table: each archetype's name, the roles its first colour word paints, its
 //! default colours, and the function that lays out its parts (with the [`Builder`] of
 //! `builder.rs`, re-exported here for the layout modules).
+use super::amusements as am;
 use super::appliances as a;
 use super::audio as au;
+use super::backyard as by;
 use super::barriers as ba;
 use super::bellhop as bh;
 use super::bins as bn;
@@ -23,6 +25,8 @@ use super::crates as cx;
 use super::daily as d;
 use super::displays as dp;
 use super::drawers as dr;
+use super::effigies as ef;
+use super::engines as en;
 use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
@@ -86,6 +90,7 @@ use super::sport as sp;
 use super::stands as sd;
 use super::structures as st;
 use super::sundries as su;
+use super::surgical as sg;
 use super::tanks as tk;
 use super::taps as tp;
 use super::things as t;
@@ -251,7 +256,6 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
     arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
-    arch!("post", st::post, [Frame], [Frame => [0.25, 0.25, 0.27], Metal => [0.22, 0.22, 0.24], Body => [0.40, 0.40, 0.42]]),
     arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
     arch!("treadmill", t::treadmill, [Body], [Body => [0.15, 0.15, 0.16], Interior => [0.05, 0.05, 0.05], Metal => [0.60, 0.61, 0.63], Screen => [0.10, 0.25, 0.35]]),
     arch!("swing", fr::swing, [Frame], [Frame => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Seat => [0.80, 0.20, 0.15], Metal => [0.55, 0.55, 0.57]]),
@@ -497,7 +501,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("canopy_bed", cb::canopy_bed, [Duvet], [Duvet => [0.86, 0.82, 0.74], Canvas => [0.95, 0.93, 0.88], Frame => DARK_WOOD]),
     arch!("bassinet", nu::bassinet, [Body, Shade], [Body => [0.93, 0.92, 0.90], Shade => [0.93, 0.92, 0.90], Mattress => [0.98, 0.97, 0.95], Pillow => [0.80, 0.88, 0.95], Frame => [0.75, 0.62, 0.45]]),
     arch!("cradle", nu::cradle, [Frame, Top], [Frame => [0.66, 0.48, 0.30], Top => [0.66, 0.48, 0.30], Mattress => [0.96, 0.95, 0.92], Pillow => [0.95, 0.90, 0.80]]),
-    arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK]),
+    arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK, Cushion => [0.16, 0.11, 0.07]]),
     arch!("birdhouse", po::birdhouse, [Body], [Body => [0.62, 0.45, 0.28], Top => [0.45, 0.22, 0.16], Trunk => [0.40, 0.30, 0.20], Metal => [0.30, 0.30, 0.32], Interior => BLACK]),
     arch!("bird_feeder", po::bird_feeder, [Top], [Top => [0.25, 0.40, 0.25], Frame => [0.25, 0.25, 0.27], Metal => [0.25, 0.25, 0.27], Soil => [0.78, 0.66, 0.42], Pane => [0.85, 0.90, 0.92]]),
     arch!("patio_heater", po::patio_heater, [Body, Shade], [Body => [0.22, 0.22, 0.24], Shade => [0.72, 0.73, 0.75], Metal => [0.35, 0.35, 0.37], Light => [1.0, 0.45, 0.12]]),
@@ -519,6 +523,17 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("ladder_shelf", of::ladder_shelf, [Frame, Top], [Frame => [0.55, 0.40, 0.25], Top => [0.55, 0.40, 0.25]]),
     arch!("kitchen_cart", su::kitchen_cart, [Frame, Body, Door], [Top => [0.72, 0.52, 0.32], Frame => [0.92, 0.92, 0.90], Body => [0.92, 0.92, 0.90], Door => [0.94, 0.94, 0.92], Handle => STEEL, Tyre => BLACK, Canvas => [0.70, 0.55, 0.33], Interior => [0.35, 0.25, 0.15], Metal => STEEL, Cushion => [0.80, 0.30, 0.25]]),
     arch!("candelabra", su::candelabra, [Metal], [Metal => [0.12, 0.12, 0.13], Body => [0.95, 0.92, 0.82], Light => [1.0, 0.80, 0.40]]),
+    arch!("jukebox", am::jukebox, [Body], [Body => [0.45, 0.25, 0.12], Frame => [0.20, 0.12, 0.07], Upholstery => [0.95, 0.20, 0.15], Light => [1.0, 0.72, 0.20], Seat => [0.25, 0.55, 1.0], Interior => [0.06, 0.05, 0.05], BlackKeys => BLACK, Cushion => [0.90, 0.75, 0.20], Metal => [0.82, 0.82, 0.84], Keys => [0.95, 0.93, 0.88]]),
+    arch!("pinball", am::pinball, [Body], [Body => [0.12, 0.12, 0.14], Top => BLACK, Canvas => [0.20, 0.45, 0.85], Upholstery => [0.90, 0.15, 0.15], Light => [1.0, 0.60, 0.15], Pane => [0.80, 0.86, 0.90], Metal => [0.82, 0.82, 0.84], Handle => [0.95, 0.85, 0.20], Interior => BLACK]),
+    arch!("slot_machine", am::slot_machine, [Body], [Body => [0.65, 0.08, 0.10], Frame => BLACK, Light => [1.0, 0.78, 0.25], Metal => [0.82, 0.82, 0.84], Canvas => WHITE, Upholstery => [0.85, 0.10, 0.12], Top => BLACK, Keys => [0.95, 0.70, 0.15], Handle => [0.85, 0.10, 0.10], Interior => BLACK]),
+    arch!("popcorn_machine", am::popcorn_machine, [Body, Door], [Body => [0.78, 0.10, 0.10], Door => [0.72, 0.09, 0.09], Frame => [0.20, 0.20, 0.21], Tyre => BLACK, Metal => STEEL, Top => STEEL, Pane => [0.85, 0.90, 0.90], Cushion => [0.98, 0.88, 0.50], Light => [1.0, 0.85, 0.30], Interior => BLACK]),
+    arch!("scarecrow", ef::scarecrow, [Duvet], [Duvet => [0.62, 0.20, 0.16], Trunk => [0.45, 0.32, 0.20], Cushion => [0.86, 0.74, 0.42], Canvas => [0.78, 0.66, 0.48], Top => [0.55, 0.40, 0.22], Interior => BLACK]),
+    arch!("statue", ef::statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.86, 0.85, 0.82]]),
+    arch!("pergola", by::pergola, [Frame, Top], [Frame => [0.62, 0.47, 0.32], Top => [0.58, 0.43, 0.28], Trunk => [0.35, 0.25, 0.15], Foliage => [0.25, 0.50, 0.20]]),
+    arch!("mailbox", by::mailbox, [Body, Door], [Body => [0.20, 0.22, 0.24], Door => [0.20, 0.22, 0.24], Frame => [0.55, 0.42, 0.28], Handle => [0.85, 0.12, 0.10], Metal => STEEL]),
+    arch!("hot_tub", by::hot_tub, [Body], [Body => [0.40, 0.30, 0.22], Frame => [0.34, 0.25, 0.18], Top => [0.55, 0.55, 0.57], Water => [0.30, 0.70, 0.82], Interior => [0.15, 0.35, 0.45], Cushion => [0.25, 0.25, 0.27], Canvas => WHITE]),
+    arch!("fire_engine", en::fire_engine, [Body], [Body => [0.78, 0.08, 0.08], Canvas => WHITE, Top => [0.80, 0.81, 0.83], Frame => [0.55, 0.56, 0.58], Glass => [0.22, 0.27, 0.32], Interior => [0.10, 0.10, 0.11], Metal => [0.75, 0.76, 0.78], Light => [1.0, 0.95, 0.80], Seat => [0.20, 0.35, 1.0]]),
+    arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -172,15 +172,23 @@ pub fn well(b: &mut Builder) {
     }
 }
 
-/// A windmill: a tapering tower with a door and a window, a cap, and four lattice sails on a
-/// hub at the front.
+/// A windmill: a stout tapering tower with a door and a window, a conical cap, and four lattice
+/// sails on a hub at the front.
 pub fn windmill(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let hub_z = 0.72 * h;
-    let r0 = 0.32 * hw.min(hd);
-    let r1 = 0.65 * r0;
+    // A stout tower, about half as wide as the sails reach, tapering to a conical cap.
+    let r0 = 0.45 * hw.min(hd);
+    let r1 = 0.6 * r0;
     b.frustum(Body, [0.0, 0.0, 0.0], r0, r0, r1 / r0, hub_z);
-    b.ellipsoid(Top, [0.0, 0.0, hub_z], [1.15 * r1, 1.15 * r1, 0.1 * h]);
+    b.frustum(
+        Top,
+        [0.0, 0.0, hub_z - 0.02 * h],
+        1.12 * r1,
+        1.12 * r1,
+        0.15,
+        0.16 * h,
+    );
     b.cuboid(
         Door,
         [-0.25 * r0, r0 - 0.02, 0.0],

@@ -12,10 +12,12 @@
 //! (0.7 spacing) overlap; the count is then clamped to [`MIN_GAUSSIANS`, `MAX_GAUSSIANS`]
 //! (a 2.1 m sofa gets the 60 000 cap, a rug ~45 000). [`ShapeOptions::gaussians`] overrides it;
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
+mod amusements;
 mod appliances;
 mod archetypes;
 mod audio;
 mod backs;
+mod backyard;
 mod barriers;
 mod bellhop;
 mod bins;
@@ -36,6 +38,8 @@ mod crates;
 mod daily;
 mod displays;
 mod drawers;
+mod effigies;
+mod engines;
 mod fittings;
 mod fixtures;
 mod florist;
@@ -102,6 +106,7 @@ mod sport;
 mod stands;
 mod structures;
 mod sundries;
+mod surgical;
 mod tanks;
 mod taps;
 mod things;

@@ -146,8 +146,8 @@ fn rocker_along_y_x(b: &mut Builder, y: f64, hw: f64, rise: f64, r: f64) {
     b.polyline(Frame, &pts, r);
 }
 
-/// A rocking horse: a horse on two bow rockers along its length, a saddle on its back and a
-/// handle through its head.
+/// A rocking horse: a horse on two bow rockers along its length, a mane down its neck, a saddle
+/// on its back.
 pub fn rocking_horse(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let along_x = b.w > b.d;
@@ -165,6 +165,26 @@ pub fn rocking_horse(b: &mut Builder) {
     (b.w, b.d, b.h) = (w, d, h);
     b.translate_from(first, [0.0, 0.0, rock]);
     let (half_len, half_across) = if along_x { (hw, hd) } else { (hd, hw) };
+    // A mane along the top of the neck, from the withers to behind the ears (the neck and
+    // head as the quadruped draws them, in its along/across measures).
+    let (ha, hh) = (0.6 * half_across, h - rock);
+    let map = |along: f64, z: f64| {
+        if along_x {
+            [along, 0.0, z]
+        } else {
+            [0.0, along, z]
+        }
+    };
+    let (a0, z0) = (0.55 * half_len, 0.71 * hh);
+    let (a1, z1) = (0.82 * half_len, 0.86 * hh);
+    for k in 0..7 {
+        let t = k as f64 / 6.0;
+        let along = a0 + t * (a1 - a0) - 0.35 * ha;
+        let z = rock + z0 + t * (z1 - z0) + 0.35 * ha;
+        let r = [0.3 * ha, 0.07 * half_len, 0.07 * hh];
+        let r = if along_x { [r[1], r[0], r[2]] } else { r };
+        b.ellipsoid(Cushion, map(along, z), r);
+    }
     let r = 0.025_f64.min(0.1 * half_across);
     for s in [-1.0, 1.0] {
         let c = s * 0.3 * half_across;

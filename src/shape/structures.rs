@@ -332,33 +332,3 @@ pub fn palm(b: &mut Builder) {
     }
     b.ellipsoid(Trunk, crown, [1.6 * r, 1.6 * r, 1.4 * r]);
 }
-
-/// A post: a round base, a pole and a head at the top (stands for microphones, music, IV bags
-/// and coats; flag poles, traffic lights, mailboxes, bird houses and feeders, wind turbines).
-pub fn post(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let m = hw.min(hd);
-    let r = (0.012 * h).clamp(0.012, 0.25).min(0.3 * m);
-    b.frustum(
-        Metal,
-        [0.0, 0.0, 0.0],
-        0.8 * m,
-        0.8 * m,
-        0.5,
-        0.03 + 0.01 * h,
-    );
-    let head_h = (0.12 * h).clamp(0.08, 0.5);
-    b.cylinder(Frame, [0.0, 0.0, 0.0], r, h - 0.6 * head_h);
-    let s = (0.45 * m).min(2.0 * head_h).max(2.0 * r);
-    b.cuboid(Body, [-s, -s, h - head_h], [s, s, h]);
-    b.cuboid(
-        Top,
-        [-1.1 * s, -1.1 * s, h - 0.1 * head_h],
-        [1.1 * s, 1.1 * s, h],
-    );
-    b.cuboid(
-        Interior,
-        [-0.4 * s, s, h - 0.7 * head_h],
-        [0.4 * s, s + 0.004, h - 0.3 * head_h],
-    );
-}

@@ -2,6 +2,7 @@
 //! description and size in the spec, and what the planner understood (each object's count and
 //! why, the words not used).
 use super::Draft;
+use crate::plan::finish::{place_finish, refinish, Finish};
 use crate::plan::kb::ObjectKind;
 use crate::plan::spec::{ObjectSpec, SceneSpec};
 use std::collections::BTreeMap;
@@ -70,10 +71,21 @@ pub(super) fn article(s: &str) -> &'static str {
     }
 }
 
-pub(super) fn describe(o: &ObjectKind, adjectives: &[String], styles: &[String]) -> String {
+/// The description of `o` with the text's `adjectives` for it and the scene's `styles`; an
+/// object the text does not describe takes the knowledge base's description, in the place's
+/// `finish` where it has one (a clinic's cabinet is white steel).
+pub(super) fn describe(
+    o: &ObjectKind,
+    adjectives: &[String],
+    styles: &[String],
+    finish: Option<&Finish>,
+) -> String {
     let mut words: Vec<String> = styles.to_vec();
     if adjectives.is_empty() {
-        words.push(o.description.clone());
+        words.push(match finish {
+            Some(f) => refinish(&o.description, f),
+            None => o.description.clone(),
+        });
     } else {
         // an adjective the name already says ("a potted plant" said as "a potted palm") once
         let named: Vec<&str> = o.category.split_whitespace().collect();
@@ -130,6 +142,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
             *e = (*e).max(m.rows);
         }
     }
+    let finish = place_finish(d.scene.map(|s| s.name.as_str()), &r.text);
     let mut objects = BTreeMap::new();
     for (c, n) in counts.iter() {
         let (size, description) = match kb.object(c) {
@@ -139,6 +152,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
                     o,
                     adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]),
                     styles,
+                    finish.as_ref(),
                 ),
             ),
             None => {

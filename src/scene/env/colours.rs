@@ -213,47 +213,17 @@ const KINDS: &[KindLook] = &[
     ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
 ];
 
-/// Words that make a place clinical, in the scene kind's name or in the text ("an operating
-/// room", "a dental clinic", "a vet's surgery", "a doctor's waiting room"): its floor is sheet
-/// vinyl, easy to clean, whatever the kind's own floor, unless the text names another.
-const CLINICAL: &[&str] = &[
-    "hospital",
-    "clinic",
-    "clinical",
-    "surgery",
-    "surgical",
-    "operating",
-    "dental",
-    "dentist",
-    "doctor",
-    "medical",
-    "ward",
-    "infirmary",
-    "veterinary",
-    "vet",
-    "treatment",
-    "triage",
-];
-
 /// The clinical floor: pale sheet vinyl, its fine speckle; and the walls of a clinical place
 /// whose kind has no look of its own.
 const CLINICAL_FLOOR: [f32; 3] = [0.80, 0.83, 0.83];
 const CLINICAL_WALL: [f32; 3] = [0.93, 0.95, 0.95];
 
-/// Whether the scene kind's name or the words naming the place say it is clinical. The place
-/// is named before the first clause or "with"/"and" ("a dental clinic with a chair"); what it
-/// holds ("a garage with a medical cart", "a toy doctor kit") does not make it clinical.
+/// Whether the scene kind's name or the words naming the place say it is clinical (the words
+/// of `plan/kb/finishes.txt`: "an operating room", "a dental clinic", "a vet's surgery"). What
+/// the place holds ("a garage with a medical cart", "a toy doctor kit") does not make it
+/// clinical.
 fn clinical(kind: Option<&str>, text: &str) -> bool {
-    let head = text.split([',', ';', '.', ':']).next().unwrap_or("");
-    let place: Vec<String> = words(head)
-        .into_iter()
-        .take_while(|w| !matches!(w.as_str(), "with" | "and" | "where" | "that" | "which"))
-        .collect();
-    kind.map(words)
-        .unwrap_or_default()
-        .iter()
-        .chain(&place)
-        .any(|w| CLINICAL.contains(&w.as_str()))
+    crate::plan::finish::clinical(kind, text)
 }
 
 /// The longest scene-kind name or synonym of the knowledge base in `text` (whole words).
