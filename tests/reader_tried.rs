@@ -165,3 +165,19 @@ fn an_opticians_display_cabinets_are_display_cases() {
     assert_eq!(number(&s, "china cabinet"), 1, "{:?}", keys(&s));
     assert_eq!(number(&s, "display case"), 0, "{:?}", keys(&s));
 }
+
+#[test]
+fn a_handful_is_five_and_no_object() {
+    for (prompt, category) in [
+        (
+            "a handful of stools around a high table in a wine bar",
+            "stool",
+        ),
+        ("a teenager's den with a handful of beanbags", "bean bag"),
+        ("a bedroom with a handful of cushions on the bed", "cushion"),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, category), 5, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "handful"), 0, "{prompt}: {:?}", keys(&s));
+    }
+}

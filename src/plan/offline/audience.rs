@@ -41,7 +41,7 @@ pub(super) fn named_audience(d: &mut Draft) {
         for g in gone {
             if counts.remove(&g).is_some() {
                 notes.push(format!(
-                    "default {g} left out: the named {seat} facing the {target} are its audience"
+                    "default {g} left out: the named {seat} turned to the {target} takes its place"
                 ));
             }
         }
