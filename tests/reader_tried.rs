@@ -34,6 +34,13 @@ fn named_seats_facing_the_screen_or_stage_are_its_audience() {
             30,
             "stacking chair",
         ),
+        // seats in rows are the audience whatever they are said to face
+        (
+            "a lecture hall with five rows of eight chairs",
+            "chair",
+            40,
+            "theater seat",
+        ),
     ] {
         let s = plan(prompt);
         assert_eq!(number(&s, seat), n, "{prompt}: {:?}", keys(&s));
