@@ -29,6 +29,11 @@ SIZE_CLASSES = {
     "furniture": "medium", "equipment": "medium", "tree": "large", "shrub": "medium",
     "flower": "small", "rock": "medium", "book": "small", "weapon": "small",
 }
+# hypernym lemma -> knowledge-base category that stands for any kind of it, for nouns no
+# nearer category covers (checked on the same way up as SIZE_CLASSES, before them): a giraffe
+# or a deer is drawn and sized as a hoofed animal, not as a box (smaller mammals, people
+# among them, keep their size class)
+BROAD_CATEGORIES = {"ungulate": "hoofed animal"}
 
 
 def kb_names():
@@ -94,6 +99,8 @@ def kind_of(off, syn, names):
         for o in level:
             lemmas, ups = syn[o]
             for lm in lemmas:
+                if lm in BROAD_CATEGORIES and BROAD_CATEGORIES[lm] in names:
+                    return names[BROAD_CATEGORIES[lm]]
                 if lm in SIZE_CLASSES:
                     return "size " + SIZE_CLASSES[lm]
             nxt += ups

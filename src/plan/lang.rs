@@ -8,6 +8,7 @@ use super::kb::KnowledgeBase;
 use super::spec::{Anchor, RelationKind};
 use super::units::{find_dims, Dims};
 
+mod contents;
 mod counts;
 mod mentions;
 mod objects;
@@ -93,6 +94,8 @@ pub struct Reading {
     /// "a reading nook by the window": where the text puts the place itself, said right after
     /// its name (the planner gives it to the place's main piece, its seat).
     pub place_anchor: Option<Anchor>,
+    /// "a bookcase full of books": (mention index, what it holds as said, the span of those words).
+    pub contents: Vec<(usize, String, usize, usize)>,
 }
 
 fn re(p: &str) -> Regex {
@@ -123,6 +126,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     read_placements(&mut r);
     placements::supports_hold(kb, &mut r);
     placements::surface_kinds(kb, &mut r);
+    contents::read_contents(&mut r);
     r.not_english = words::not_english(kb, text, &t);
     r
 }

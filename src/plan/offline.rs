@@ -17,6 +17,7 @@ use super::lang::{self, Reading};
 use super::spec::{ObjectSpec, SceneSpec, SceneType};
 use std::collections::{BTreeMap, BTreeSet};
 
+mod audience;
 mod companions;
 mod counts;
 mod describe;
@@ -198,7 +199,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     supports::plural_supports(&mut d);
     let people = seats::seats_for(&mut d);
     roles::take_away(&mut d);
+    audience::named_audience(&mut d);
     purpose::seats_for_someone(&mut d);
+    seats::people_at_the_table(&mut d, people);
     companions::companions(&mut d, people);
     purpose::seats_for_all(&mut d, people);
     supports::per_instance(&mut d);

@@ -141,6 +141,7 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
     if let Some((_, s, e)) = r.scene {
         spans.push((s, e));
     }
+    spans.extend(r.contents.iter().map(|&(_, _, s, e)| (s, e)));
     let adjectives: Vec<&str> = r
         .mentions
         .iter()

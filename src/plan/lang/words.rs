@@ -63,6 +63,8 @@ pub(super) const NUMBERS: &[(&str, u32)] = &[
     ("pair", 2),
     ("pairs", 2),
     ("several", 3),
+    // "a handful of stools": a few more than "a few"
+    ("handful", 5),
     ("few", 3),
     ("some", 2),
     ("many", 6),

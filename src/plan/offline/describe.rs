@@ -101,6 +101,37 @@ pub(super) fn describe(
     format!("A DSLR photo of {} {body}", article(&body))
 }
 
+/// "a bookcase full of books": what the text says a category holds ends its description,
+/// unless the description already says it (a bookshelf is drawn filled with books); "a fridge
+/// of drinks" is a fridge full of drinks.
+fn with_contents(d: &Draft, category: &str, description: String) -> String {
+    let said =
+        d.r.contents
+            .iter()
+            .find(|(i, ..)| d.cats.get(*i).is_some_and(|c| c == category));
+    match said {
+        Some((_, what, ..))
+            if !what
+                .rsplit(' ')
+                .next()
+                .is_some_and(|w| description.contains(w)) =>
+        {
+            // one filling: what the drawn one holds ("filled with books", "with boxes") gives
+            // way to what the text says
+            let body = [" filled with ", " full of ", " with "]
+                .iter()
+                .filter_map(|f| description.find(f))
+                .min()
+                .map_or(description.as_str(), |i| &description[..i]);
+            match what.strip_prefix("of ") {
+                Some(x) => format!("{body} full of {x}"),
+                None => format!("{body} {what}"),
+            }
+        }
+        _ => description,
+    }
+}
+
 /// Style words describe the whole scene unless they are one object's adjectives.
 pub(super) fn styles(d: &Draft) -> Vec<String> {
     let Draft { r, adjectives, .. } = d;
@@ -168,6 +199,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
                 (size, format!("A DSLR photo of {} {body}", article(&body)))
             }
         };
+        let description = with_contents(d, c, description);
         objects.insert(
             c.clone(),
             ObjectSpec {

@@ -193,6 +193,66 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
     }
 }
 
+/// "A garden party for ten with a long table": the people a place is for, in a plan with no
+/// seats at anything, sit at the table the text names (laid for them when it is the only one);
+/// a plan that already seats someone keeps its seats, which `companions` scales.
+pub(super) fn people_at_the_table(d: &mut Draft, people: Option<u32>) {
+    use crate::plan::spec::RelationKind::{Around, At, AtBack, Circle};
+    let Some(p) = people else { return };
+    let kb = d.kb;
+    let Draft {
+        r,
+        cats,
+        counts,
+        sizes,
+        inferred,
+        adjectives,
+        ..
+    } = d;
+    let probe = bare_spec(
+        counts
+            .keys()
+            .map(|c| {
+                let o = ObjectSpec {
+                    number: 1,
+                    size: [1.0, 1.0, 1.0],
+                    description: String::new(),
+                    rows: 0,
+                    sizes: vec![],
+                };
+                (c.clone(), o)
+            })
+            .collect(),
+    );
+    let seated = counts.keys().any(|c| {
+        crate::plan::groups::group_of(&probe, c)
+            .is_some_and(|(k, _)| matches!(k, Around | At | AtBack | Circle))
+    });
+    if seated {
+        return;
+    }
+    let table = r
+        .mentions
+        .iter()
+        .zip(cats.iter())
+        .filter(|(m, c)| !m.negated && !m.reference && counts.contains_key(*c))
+        .find_map(|(_, t)| {
+            let seat = seat_for(t, counts)?;
+            let around = crate::plan::groups::relation_between(&seat, t) == Some(Around);
+            around.then(|| (t.clone(), seat))
+        });
+    let Some((table, seat)) = table else { return };
+    if counts[&table] == 1 && !sizes.contains_key(&table) {
+        if let Some(size) = table_laid(kb, &table, adjectives, p) {
+            sizes.insert(table.clone(), size);
+        }
+    }
+    counts.insert(seat.clone(), p);
+    inferred
+        .entry(seat)
+        .or_insert_with(|| crate::plan::understood::people_phrase(&r.text, p));
+}
+
 /// Companions follow what the text sets: "12 desks" get 12 chairs, "for 24 students" (`people`)
 /// 24 seats, "20 chairs" the tables they need.
 /// A spec of just these objects, with no room, anchors or relations: what the group rules
