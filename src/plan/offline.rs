@@ -24,9 +24,11 @@ mod outdoors;
 mod purpose;
 mod relations;
 mod roles;
+mod rowed;
 mod seats;
 mod sizing;
 mod supports;
+mod tighten;
 use describe::describe;
 pub use describe::style_word;
 
@@ -198,6 +200,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     supports::plural_supports(&mut d);
     let people = seats::seats_for(&mut d);
     roles::take_away(&mut d);
+    rowed::seats_in_rows_leave_their_tables(&mut d);
     purpose::seats_for_someone(&mut d);
     companions::companions(&mut d, people);
     purpose::seats_for_all(&mut d, people);
@@ -228,7 +231,14 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         .scene
         .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
+    let unfitted = spec.clone();
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
+    // a chosen room's sides were rounded up: one a step shorter when the furniture fits as well
+    let (spec, fitted) = if d.r.room.is_none() {
+        tighten::tighten(&unfitted, spec, fitted, &d.named, &essential, trim)?
+    } else {
+        (spec, fitted)
+    };
     d.notes.extend(fitted);
     let understood = describe::understood(&d, &spec, &styles);
     Ok(Plan {
