@@ -70,8 +70,6 @@ const WALL_MARGIN: f64 = 0.02;
 const HANG_CLEAR: f64 = 2.0;
 /// Preferred free space around unrelated objects (a walkway).
 const WALKWAY: f64 = 0.6;
-/// How many times its restarts a layout with a piece placed by fallback may take.
-const FALLBACK_RESTARTS: u32 = 3;
 
 /// Lays out `spec` (validated first). Deterministic for a given seed. A spec with an object
 /// larger than its room, or whose objects cannot all be placed without interpenetrating, is
@@ -298,17 +296,7 @@ fn layout_in_pinned(
         })
         .collect();
     let mut best: Option<(f64, Layout)> = None;
-    // A layout that still relaxes a piece after the restarts keeps trying new doors and
-    // windows, up to [`FALLBACK_RESTARTS`] times as many: in a small room a door where the only
-    // wall a TV fits leaves the sofa no wall to face it from, where another door leaves both.
-    let budget = opts.restarts.max(1);
-    for attempt in 0..budget * FALLBACK_RESTARTS {
-        let relaxed = best
-            .as_ref()
-            .is_some_and(|(_, l)| l.objects.iter().any(|o| o.placed_by == PlacedBy::Fallback));
-        if attempt >= budget && !relaxed {
-            break;
-        }
+    for attempt in 0..opts.restarts.max(1) {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(
             opts.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ attempt as u64,
         );

@@ -233,8 +233,9 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
     let unfitted = spec.clone();
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
-    // a chosen room's sides were rounded up: one a step shorter when the furniture fits as well
-    let (spec, fitted) = if d.r.room.is_none() {
+    // a room chosen small: its sides were rounded up, one a step shorter when the furniture
+    // fits as well
+    let (spec, fitted) = if d.r.room.is_none() && d.r.scale < 1.0 {
         tighten::tighten(&unfitted, spec, fitted, &d.named, &essential, trim)?
     } else {
         (spec, fitted)

@@ -65,14 +65,15 @@ pub(super) fn seats_in_rows_leave_their_tables(d: &mut Draft) {
     };
     let mut gone = BTreeSet::new();
     for seat in rowed {
-        use RelationKind::{Around, At, AtBack};
+        // (seats round a table, a banquet's, are the table's whatever their arrangement)
+        use RelationKind::{At, AtBack};
         let Some((kind, table)) = crate::plan::groups::group_of(&probe, seat) else {
             continue;
         };
         let default_table = defaults.contains_key(&table)
             && !named.contains(&table)
             && !explicit.contains_key(&table);
-        if matches!(kind, Around | At | AtBack) && default_table {
+        if matches!(kind, At | AtBack) && default_table {
             gone.insert(table);
         }
     }

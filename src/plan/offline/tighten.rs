@@ -1,8 +1,9 @@
-//! An indoor room the planner chooses has both sides rounded up to the 10 cm, which can add most of a
-//! 10 cm strip along each: a cramped 11.9 m² galley came out 3.9 x 3.1 = 12.1 m². The floor
-//! with one side a step shorter is taken instead when the furniture still lays out as well in
-//! it (as valid, no piece more placed by fallback, no relation more unsatisfied, on each of a
-//! few seeds), so a room never loses the room its furniture needs to round a figure down.
+//! An indoor room the planner chooses small ("a tiny kitchen", "quite cramped") has both sides
+//! rounded up to the 10 cm, which can add most of a 10 cm strip along each: a cramped 11.9 m²
+//! galley came out 3.9 x 3.1 = 12.1 m². The floor with one side a step shorter is taken instead
+//! when the furniture still lays out as well in it (laid out, no piece more placed by fallback,
+//! no relation more unsatisfied, on each of a few seeds), so a room never loses the room its
+//! furniture needs to round a figure down.
 use crate::plan::capacity::fit;
 use crate::plan::gcp::{layout, LayoutOptions};
 use crate::plan::spec::{Room, SceneSpec, SceneType, SpecError};
