@@ -64,6 +64,11 @@ pub(super) fn tighten(
         if size[0].min(size[1]) < SHORT_SIDE - 1e-9 {
             continue;
         }
+        // rows asked keep the width and depth their block needs (three rows of benches)
+        let need = crate::plan::gcp::rows::room_for_rows(unfitted, [size[0], size[1]]);
+        if need[0] > size[0] + 1e-9 || need[1] > size[1] + 1e-9 {
+            continue;
+        }
         let mut s = unfitted.clone();
         s.room = Some(Room { size });
         if s.objects
