@@ -28,7 +28,6 @@ mod rowed;
 mod seats;
 mod sizing;
 mod supports;
-mod tighten;
 use describe::describe;
 pub use describe::style_word;
 
@@ -231,15 +230,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         .scene
         .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
-    let unfitted = spec.clone();
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
-    // a room chosen small: its sides were rounded up, one a step shorter when the furniture
-    // fits as well
-    let (spec, fitted) = if d.r.room.is_none() && d.r.scale < 1.0 {
-        tighten::tighten(&unfitted, spec, fitted, &d.named, &essential, trim)?
-    } else {
-        (spec, fitted)
-    };
     d.notes.extend(fitted);
     let understood = describe::understood(&d, &spec, &styles);
     Ok(Plan {
