@@ -25,6 +25,7 @@ mod outdoors;
 mod purpose;
 mod relations;
 mod roles;
+mod rowed;
 mod seats;
 mod sizing;
 mod supports;
@@ -200,6 +201,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let people = seats::seats_for(&mut d);
     roles::take_away(&mut d);
     audience::named_audience(&mut d);
+    rowed::seats_in_rows_leave_their_tables(&mut d);
     purpose::seats_for_someone(&mut d);
     seats::people_at_the_table(&mut d, people);
     companions::companions(&mut d, people);

@@ -36,6 +36,8 @@ pub struct Placements {
     by_category: BTreeMap<String, Placement>,
     /// (seats, screens) pairs of `faces` lines: what a seat of the list is turned toward.
     pub faces: Vec<(Vec<String>, Vec<String>)>,
+    /// `indoors` lines: the size of a thing of outdoor scale when it stands in a room.
+    indoors: BTreeMap<String, [f64; 3]>,
 }
 
 impl Placements {
@@ -43,6 +45,7 @@ impl Placements {
     pub fn parse(text: &str) -> Result<Placements, String> {
         let mut by_category = BTreeMap::new();
         let mut faces = vec![];
+        let mut indoors = BTreeMap::new();
         let list =
             |v: &str| -> Vec<String> { v.split(',').map(|s| s.trim().to_string()).collect() };
         for (n, line) in text.lines().enumerate() {
@@ -57,6 +60,23 @@ impl Placements {
                     return Err(err("needs 3 fields: faces | seats | screens"));
                 }
                 faces.push((list(f[1]), list(f[2])));
+                continue;
+            }
+            if f[0] == "indoors" {
+                let size: Vec<f64> = f
+                    .get(2)
+                    .map(|v| {
+                        v.split_whitespace()
+                            .filter_map(|x| x.parse().ok())
+                            .collect()
+                    })
+                    .unwrap_or_default();
+                if f.len() != 3 || size.len() != 3 || size.iter().any(|v| !(*v > 0.0 && *v < 2.8)) {
+                    return Err(err(
+                        "needs 3 fields: indoors | category | W D H (under 2.8 m)",
+                    ));
+                }
+                indoors.insert(f[1].to_string(), [size[0], size[1], size[2]]);
                 continue;
             }
             if f.len() != 4 && f.len() != 5 {
@@ -108,7 +128,18 @@ impl Placements {
                 return Err(err(&format!("`{}` listed twice", f[0])));
             }
         }
-        Ok(Placements { by_category, faces })
+        Ok(Placements {
+            by_category,
+            faces,
+            indoors,
+        })
+    }
+
+    /// The size `category` has standing in a room, when the table gives one (a flagpole is an
+    /// indoor flag stand, a tree a tree in a tub): things of outdoor scale never set a room's
+    /// ceiling.
+    pub fn indoor_size(&self, category: &str) -> Option<[f64; 3]> {
+        self.indoors.get(category).copied()
     }
 
     /// The built-in table.

@@ -162,9 +162,12 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
                 .map(str::to_string)
         });
     // what else stands at the front with it: the fronts.txt categories the scene holds that
-    // are more telling than it (a stage below a screen), the most telling first
+    // are more telling than it (a stage below a screen), the most telling first; a target
+    // fronts.txt does not list (a piano the chairs face) is the front alone, and the scene's
+    // board hangs elsewhere
+    let listed = target.as_deref().is_none_or(|t| fronts().any(|f| f == t));
     let mut at_front: Vec<String> = fronts()
-        .filter(|f| *f != cat && spec.objects.contains_key(*f))
+        .filter(|f| listed && *f != cat && spec.objects.contains_key(*f))
         .take_while(|f| Some(*f) != target.as_deref())
         .map(str::to_string)
         .collect();

@@ -3,8 +3,9 @@
 //! why, the words not used).
 use super::Draft;
 use crate::plan::finish::{place_finish, refinish, Finish};
+use crate::plan::gcp::classes::Placements;
 use crate::plan::kb::ObjectKind;
-use crate::plan::spec::{ObjectSpec, SceneSpec};
+use crate::plan::spec::{ObjectSpec, SceneSpec, SceneType};
 use std::collections::BTreeMap;
 
 /// Style words carried into every description when the prompt uses them.
@@ -178,7 +179,13 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
     for (c, n) in counts.iter() {
         let (size, description) = match kb.object(c) {
             Some(o) => (
-                sizes.get(c).copied().unwrap_or(o.size),
+                sizes.get(c).copied().unwrap_or_else(|| {
+                    // a thing of outdoor scale takes its indoor size in a room
+                    let indoor = (d.scene_type == SceneType::Indoor)
+                        .then(|| Placements::builtin().indoor_size(c))
+                        .flatten();
+                    indoor.unwrap_or(o.size)
+                }),
                 describe(
                     o,
                     adjectives.get(c).map(Vec::as_slice).unwrap_or(&[]),

@@ -11,7 +11,7 @@ use std::collections::BTreeSet;
 /// The sizes the mentions give: an unknown object's (with a note), a stated one, or one scaled
 /// by size words; records what the text names and its adjectives.
 pub(super) fn mention_sizes(d: &mut Draft) {
-    let (kb, scene) = (d.kb, d.scene);
+    let (kb, scene, scene_type) = (d.kb, d.scene, d.scene_type);
     let Draft {
         r,
         cats,
@@ -44,7 +44,13 @@ pub(super) fn mention_sizes(d: &mut Draft) {
         if !m.adjectives.is_empty() {
             adjectives.insert(cat.clone(), m.adjectives.clone());
         }
-        let base = kb.object(cat).map(|o| o.size).or(unknown.get(cat).copied());
+        // a thing of outdoor scale in a room: its indoor size, scaled from there
+        let indoor = (scene_type == SceneType::Indoor)
+            .then(|| crate::plan::gcp::classes::Placements::builtin().indoor_size(cat))
+            .flatten();
+        let base = indoor
+            .or(kb.object(cat).map(|o| o.size))
+            .or(unknown.get(cat).copied());
         if let Some(mut size) = base {
             if m.size != [0.0; 3] {
                 // A stated width keeps the shape's proportions in depth only when both are given.
