@@ -9,19 +9,8 @@
 //! stand candles on arms, and a grand piano its lid propped open. Host-only.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{drawn, of, range, runs, within, Samples};
-use dreamscene::plan::kb::KnowledgeBase;
+use common::samples::{drawn, of, range, runs, sizes, within, Samples};
 use dreamscene::shape::{goods_of, Goods, Role};
-
-/// `category`'s knowledge-base size and that size scaled by `k` and by `1 / k`.
-fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
-    let s = KnowledgeBase::builtin().object(category).unwrap().size;
-    [
-        s,
-        [s[0] * k[0], s[1] * k[1], s[2] * k[2]],
-        [s[0] / k[0], s[1] / k[1], s[2] / k[2]],
-    ]
-}
 
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 3)

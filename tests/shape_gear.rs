@@ -7,7 +7,7 @@
 //! under its bail. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{drawn, of, range, round, runs, Samples};
+use common::samples::{drawn, of, range, round, runs, sizes, Samples};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::{archetype_of, build, parts, Role, ShapeOptions};
 use dreamscene::splat::cloud::SH_C0;
@@ -15,16 +15,6 @@ use dreamscene::splat::cloud::SH_C0;
 /// Surface samples of `category` at `size`.
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 5)
-}
-
-/// `category`'s knowledge-base size and that size scaled by `k` and by `1 / k`.
-fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
-    let s = KnowledgeBase::builtin().object(category).unwrap().size;
-    [
-        s,
-        [s[0] * k[0], s[1] * k[1], s[2] * k[2]],
-        [s[0] / k[0], s[1] / k[1], s[2] / k[2]],
-    ]
 }
 
 #[test]

@@ -9,19 +9,9 @@
 //! sewing table a machine on its top, and a fridge shows its coil from behind. Host-only.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
-use common::samples::{drawn, of, range, runs, Samples};
+use common::samples::{drawn, of, range, runs, sizes, Samples};
 use dreamscene::plan::kb::KnowledgeBase;
 use dreamscene::shape::Role;
-
-/// `category`'s knowledge-base size and that size scaled by `k` and by `1 / k`.
-fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
-    let s = KnowledgeBase::builtin().object(category).unwrap().size;
-    [
-        s,
-        [s[0] * k[0], s[1] * k[1], s[2] * k[2]],
-        [s[0] / k[0], s[1] / k[1], s[2] / k[2]],
-    ]
-}
 
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 3)

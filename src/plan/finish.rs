@@ -38,8 +38,9 @@ pub fn finishes() -> Vec<Finish> {
         .collect()
 }
 
-/// Lower-case words of `text`; a possessive names its noun ("a vet's surgery").
-fn words(text: &str) -> Vec<String> {
+/// Lower-case words of `text`; a possessive names its noun ("a vet's surgery", "a pirate
+/// ship's deck").
+pub(crate) fn words(text: &str) -> Vec<String> {
     text.to_lowercase()
         .split(|c: char| !(c.is_alphanumeric() || c == '-' || c == '\''))
         .map(|w| w.strip_suffix("'s").unwrap_or(w).trim_matches('\''))

@@ -6,6 +6,17 @@ use rand::SeedableRng;
 /// Surface samples with the role of the part each lies on.
 pub type Samples = Vec<([f64; 3], Role)>;
 
+/// `category`'s knowledge-base size and that size scaled by `k` and by `1 / k`: the three sizes
+/// a shape test checks a drawing at.
+pub fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
+    let s = KnowledgeBase::builtin().object(category).unwrap().size;
+    [
+        s,
+        [s[0] * k[0], s[1] * k[1], s[2] * k[2]],
+        [s[0] / k[0], s[1] / k[1], s[2] / k[2]],
+    ]
+}
+
 /// Surface samples of `category` drawn at `size` (sampling seed `seed`), those outside the size
 /// box dropped as the shape prior drops them.
 pub fn drawn(category: &str, size: [f64; 3], seed: u64) -> Samples {

@@ -1,6 +1,7 @@
 //! Draft colours and surface patterns of the environment, read from the scene text: a small
 //! table of surface words ("oak floor", "brick walls", "sandy ground", "sunset sky") over
 //! defaults per scene kind of the knowledge base. Host-only and deterministic.
+use crate::plan::finish::words;
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::spec::SceneType;
 
@@ -239,16 +240,6 @@ fn scene_kind(text: &str) -> Option<&'static str> {
         }
     }
     best.map(|(n, _)| n)
-}
-
-fn words(text: &str) -> Vec<String> {
-    text.to_lowercase()
-        .split(|c: char| !(c.is_alphanumeric() || c == '-' || c == '\''))
-        // a possessive names its noun: "a pirate ship's deck" is a pirate ship's scene
-        .map(|w| w.strip_suffix("'s").unwrap_or(w).trim_matches('\''))
-        .filter(|w| !w.is_empty())
-        .map(str::to_string)
-        .collect()
 }
 
 /// The draft colours of a scene: the scene kind's defaults, then what the text says of its
