@@ -5,7 +5,7 @@
 //! size box.
 use super::archetypes::Builder;
 use super::materials::Role::*;
-use super::vehicles::{axle, bumper, chassis, front_face, rear_lamps, side_windows};
+use super::vehicles::{axle, bumper, chassis, flat_cab, rear_lamps};
 
 /// A fire engine: a crew cab with a windscreen, two rows of side windows and a blue light bar
 /// on its roof; behind it a red body with three roller-shutter lockers on each side over a
@@ -18,21 +18,7 @@ pub fn fire_engine(b: &mut Builder) {
     let ycab = hd - 0.3 * b.d;
     // The crew cab.
     let zc = 0.74 * h;
-    b.cuboid(Body, [-hw + 0.02, ycab, zf], [hw - 0.02, hd, zc]);
-    b.cuboid(
-        Glass,
-        [-0.85 * hw, hd, 0.5 * zc],
-        [0.85 * hw, hd + g, 0.9 * zc],
-    );
-    side_windows(
-        b,
-        hw - 0.02,
-        (ycab + 0.1 * (hd - ycab), hd - 0.08),
-        (0.55 * zc, 0.9 * zc),
-        2,
-    );
-    front_face(b, hd, 0.72 * hw, 0.2 * h, 0.1 * hw);
-    bumper(b, hd, 1.0, zf, 0.06 * h);
+    flat_cab(b, &c, ycab, zc, 0.02, 0.1, 2, 0.2 * h);
     // The light bar across the cab roof.
     b.cuboid(
         Seat,

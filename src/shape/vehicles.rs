@@ -128,6 +128,38 @@ pub(super) fn side_windows(
     }
 }
 
+/// A flat-faced cab from `ycab` to the front, `zc` high and inset `inset` from the sides: a
+/// windscreen, `panes` side windows from `from` of its length on to the front, headlights and a
+/// grille at height `lamps`, and the front bumper (a lorry's, a fire engine's).
+#[allow(clippy::too_many_arguments, reason = "what one cab differs in")]
+pub(super) fn flat_cab(
+    b: &mut Builder,
+    c: &Chassis,
+    ycab: f64,
+    zc: f64,
+    inset: f64,
+    from: f64,
+    panes: usize,
+    lamps: f64,
+) {
+    let (hw, hd) = (c.hw, c.hd);
+    b.cuboid(Body, [-hw + inset, ycab, c.zf], [hw - inset, hd, zc]);
+    b.cuboid(
+        Glass,
+        [-0.85 * hw, hd, 0.5 * zc],
+        [0.85 * hw, hd + c.g, 0.9 * zc],
+    );
+    side_windows(
+        b,
+        hw - inset,
+        (ycab + from * (hd - ycab), hd - 0.08),
+        (0.55 * zc, 0.9 * zc),
+        panes,
+    );
+    front_face(b, hd, 0.72 * hw, lamps, 0.1 * hw);
+    bumper(b, hd, 1.0, c.zf, 0.06 * c.h);
+}
+
 /// A van: one tall box body over most of its length with a short sloping bonnet in front,
 /// a windscreen and cab windows, a panel side with a sliding door's seams, rear doors with
 /// windows.
@@ -324,21 +356,7 @@ pub fn lorry(b: &mut Builder) {
     let ycab = hd - 0.24 * b.d;
     // The cab.
     let zc = 0.78 * h;
-    b.cuboid(Body, [-hw + 0.04, ycab, zf], [hw - 0.04, hd, zc]);
-    b.cuboid(
-        Glass,
-        [-0.85 * hw, hd, 0.5 * zc],
-        [0.85 * hw, hd + g, 0.9 * zc],
-    );
-    side_windows(
-        b,
-        hw - 0.04,
-        (ycab + 0.35 * (hd - ycab), hd - 0.08),
-        (0.55 * zc, 0.9 * zc),
-        1,
-    );
-    front_face(b, hd, 0.72 * hw, 0.22 * h, 0.1 * hw);
-    bumper(b, hd, 1.0, zf, 0.06 * h);
+    flat_cab(b, &c, ycab, zc, 0.04, 0.35, 1, 0.22 * h);
     // The chassis rails, and the cargo box on them.
     let yx = ycab - 0.02 * b.d;
     for sx in [-1.0, 1.0] {
