@@ -99,3 +99,46 @@ fn a_split_unet_batch_equals_the_whole_batch() {
     assert_eq!(split.unet_max_batch(), Some(2));
     assert_eq!(whole.unet_max_batch(), None);
 }
+
+/// The probe runs once per latent size and growing batch: a provider right at a batch is right at
+/// every smaller batch of that size, so the runs of a whole object (the null prompt's, the chain
+/// points', the pseudo-ground truth's) and of later objects share it; a larger batch or another
+/// latent size is probed again, and a split batch keeps its cap.
+#[test]
+fn a_probed_batch_covers_the_smaller_ones() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tiny-sd");
+    let opts = ModelOptions {
+        threads: Some(1),
+        ..Default::default()
+    };
+    let mut sd = StableDiffusion::open(&dir, &opts).unwrap();
+    let honest = |_: Op, _: usize, _: &mut [f32]| {};
+    let mut probe_at = |sd: &mut StableDiffusion, hw, b| {
+        sd.probe_provider_with(hw, b, Some(&honest)).unwrap();
+        sd.probes_run()
+    };
+    assert_eq!(probe_at(&mut sd, (8, 8), 6), 1);
+    for b in [1, 3, 6] {
+        assert_eq!(probe_at(&mut sd, (8, 8), b), 1, "batch {b}");
+    }
+    assert_eq!(probe_at(&mut sd, (8, 8), 12), 2);
+    assert_eq!(probe_at(&mut sd, (8, 8), 8), 2);
+    assert_eq!(probe_at(&mut sd, (4, 4), 2), 3);
+    assert_eq!(sd.unet_max_batch(), None);
+
+    // Wrong above two items at six: split to two, and a later batch of four keeps the cap.
+    let mut split = StableDiffusion::open(&dir, &opts).unwrap();
+    let wrong_above_two = |op: Op, b: usize, y: &mut [f32]| {
+        if op == Op::Softmax && b > 2 {
+            y[0] += 0.45;
+        }
+    };
+    split
+        .probe_provider_with((8, 8), 6, Some(&wrong_above_two))
+        .unwrap();
+    split
+        .probe_provider_with((8, 8), 4, Some(&wrong_above_two))
+        .unwrap();
+    assert_eq!(split.probes_run(), 1);
+    assert_eq!(split.unet_max_batch(), Some(2));
+}

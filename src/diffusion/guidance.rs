@@ -232,9 +232,9 @@ fn predict_eps(
         ));
     }
     Ok(out
-        .into_iter()
+        .into_par_iter()
         .zip(xs)
-        .map(|(p, x)| p.into_iter().map(|e| sched.to_eps(&e, x, ab)).collect())
+        .map(|(p, x)| p.into_iter().map(|e| sched.into_eps(e, x, ab)).collect())
         .collect())
 }
 

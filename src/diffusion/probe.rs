@@ -11,6 +11,7 @@
 use super::runtime::{Data, OnnxModel, PortSpec, Provider};
 use ort::value::TensorElementType as T;
 use rand::{Rng, SeedableRng};
+use rayon::prelude::*;
 use std::path::Path;
 
 const SOFTMAX_FP32: &[u8] = include_bytes!("probe/softmax_fp32.onnx");
@@ -193,8 +194,18 @@ fn pair(name: &str, bytes: &[u8], provider: Provider, inputs: usize) -> Result<P
     })
 }
 
-fn uniform(rng: &mut rand_chacha::ChaCha8Rng, n: usize, amp: f32) -> Vec<f32> {
-    (0..n).map(|_| rng.gen_range(-amp..amp)).collect()
+/// `n` values uniform in (−amp, amp) from `seed`, drawn in parallel (one ChaCha stream per chunk
+/// of 2^16): an attention-sized Softmax at 512² holds ~10^9 of them.
+fn uniform(seed: u64, n: usize, amp: f32) -> Vec<f32> {
+    let mut v = vec![0.0f32; n];
+    v.par_chunks_mut(1 << 16).enumerate().for_each(|(k, c)| {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        rng.set_stream(k as u64);
+        for x in c {
+            *x = rng.gen_range(-amp..amp);
+        }
+    });
+    v
 }
 
 /// Largest difference relative to the reference's largest magnitude (at least 1).
@@ -202,8 +213,8 @@ pub fn relative_error(got: &[f32], want: &[f32]) -> f32 {
     if got.len() != want.len() {
         return f32::INFINITY;
     }
-    let scale = want.iter().fold(1.0f32, |m, v| m.max(v.abs()));
-    got.iter()
+    let scale = want.par_iter().map(|v| v.abs()).reduce(|| 1.0f32, f32::max);
+    got.par_iter()
         .zip(want)
         .map(|(a, b)| {
             let d = (a - b).abs();
@@ -213,7 +224,7 @@ pub fn relative_error(got: &[f32], want: &[f32]) -> f32 {
                 d
             }
         })
-        .fold(0.0, f32::max)
+        .reduce(|| 0.0, f32::max)
         / scale
 }
 
@@ -240,19 +251,24 @@ pub fn probe(
     let (h, w) = sizes.hw;
     let tokens = h * w;
     let c = sizes.channels;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(25);
+    // A fresh seed for every tensor drawn.
+    let mut drawn = 25u64 << 32;
+    let mut seed = || {
+        drawn += 1;
+        drawn
+    };
     decide(sizes.batch, |op, b| {
         let (cpu, gpu) = match op {
             Op::Softmax => {
                 let shape = vec![b as i64, sizes.heads as i64, tokens as i64, tokens as i64];
-                let x = uniform(&mut rng, b * sizes.heads * tokens * tokens, 4.0);
+                let x = uniform(seed(), b * sizes.heads * tokens * tokens, 4.0);
                 let inputs = [(shape, Data::F32(&x))];
                 (sm.cpu.run(&inputs)?, sm.gpu.run(&inputs)?)
             }
             Op::Conv => {
-                let x = uniform(&mut rng, b * c * tokens, 1.0);
-                let wt = uniform(&mut rng, c * c * 9, (3.0 / (9 * c) as f32).sqrt());
-                let bias = uniform(&mut rng, c, 0.1);
+                let x = uniform(seed(), b * c * tokens, 1.0);
+                let wt = uniform(seed(), c * c * 9, (3.0 / (9 * c) as f32).sqrt());
+                let bias = uniform(seed(), c, 0.1);
                 let (c64, h64, w64) = (c as i64, h as i64, w as i64);
                 let inputs = [
                     (vec![b as i64, c64, h64, w64], Data::F32(&x)),

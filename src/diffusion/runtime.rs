@@ -6,7 +6,7 @@
 //! `onnxruntime` wheel), and beside the executable (`./` and `lib/`).
 use ort::ep::{ExecutionProvider as _, ExecutionProviderDispatch};
 use ort::session::{Session, SessionInputValue};
-use ort::value::{PrimitiveTensorElementType, Tensor, TensorElementType, ValueType};
+use ort::value::{PrimitiveTensorElementType, Tensor, TensorElementType, TensorRef, ValueType};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -418,9 +418,37 @@ fn type_name(t: TensorElementType) -> &'static str {
 /// A host tensor of `shape` from `values`, as a session input.
 fn tensor<T: PrimitiveTensorElementType + std::fmt::Debug + Clone + 'static>(
     shape: Vec<i64>,
-    values: impl Iterator<Item = T>,
+    values: Vec<T>,
 ) -> ort::Result<SessionInputValue<'static>> {
-    Ok(Tensor::from_array((shape, values.collect::<Vec<T>>()))?.into())
+    Ok(Tensor::from_array((shape, values))?.into())
+}
+
+/// `data` as a session input of element type `ty`, converted once and straight to it: f32
+/// latents and images are lent to ONNX Runtime as they are for an f32 model, rounded to f16
+/// in one pass for an f16 one. Every value the pipeline feeds (latents, timesteps, token ids
+/// < 2^24) converts exactly, or rounds as its one conversion would. `None` for a type
+/// dreamscene cannot feed.
+fn input_value<'a>(
+    shape: Vec<i64>,
+    data: &Data<'a>,
+    ty: TensorElementType,
+) -> ort::Result<Option<SessionInputValue<'a>>> {
+    use TensorElementType as E;
+    let v = match (data, ty) {
+        (Data::F32(d), E::Float32) => TensorRef::from_array_view((shape, *d))?.into(),
+        (Data::F32(d), E::Float16) => tensor(shape, super::convert::f32_to_f16(d))?,
+        (Data::F32(d), E::Int64) => tensor(shape, d.iter().map(|v| v.round() as i64).collect())?,
+        (Data::F32(d), E::Int32) => tensor(shape, d.iter().map(|v| v.round() as i32).collect())?,
+        (Data::I64(d), E::Int64) => TensorRef::from_array_view((shape, *d))?.into(),
+        (Data::I64(d), E::Int32) => tensor(shape, d.iter().map(|v| *v as i32).collect())?,
+        (Data::I64(d), E::Float32) => tensor(shape, d.iter().map(|v| *v as f32).collect())?,
+        (Data::I64(d), E::Float16) => tensor(
+            shape,
+            d.iter().map(|v| half::f16::from_f64(*v as f64)).collect(),
+        )?,
+        _ => return Ok(None),
+    };
+    Ok(Some(v))
 }
 
 /// One output tensor: its shape and its values as f32.
@@ -547,29 +575,15 @@ impl OnnxModel {
                 ));
             }
             let err = |e: ort::Error| format!("{shown}: input {:?}: {e}", p.name);
-            let shape = shape.clone();
-            // Every value the pipeline feeds (latents, timesteps, token ids < 2^24) is exact in
-            // f64; convert once to the element type the model declares.
-            let vals: Vec<f64> = match data {
-                Data::F32(d) => d.iter().map(|v| *v as f64).collect(),
-                Data::I64(d) => d.iter().map(|v| *v as f64).collect(),
-            };
-            let v = match p.ty {
-                TensorElementType::Float32 => tensor(shape, vals.iter().map(|v| *v as f32)),
-                TensorElementType::Float16 => {
-                    tensor(shape, vals.iter().map(|v| half::f16::from_f64(*v)))
-                }
-                TensorElementType::Int64 => tensor(shape, vals.iter().map(|v| v.round() as i64)),
-                TensorElementType::Int32 => tensor(shape, vals.iter().map(|v| v.round() as i32)),
-                t => {
-                    return Err(format!(
+            let v = input_value(shape.clone(), data, p.ty)
+                .map_err(err)?
+                .ok_or_else(|| {
+                    format!(
                         "{shown}: input {:?} is {}, which dreamscene cannot feed",
                         p.name,
-                        type_name(t)
-                    ))
-                }
-            }
-            .map_err(err)?;
+                        type_name(p.ty)
+                    )
+                })?;
             values.push((p.name.clone(), v));
         }
         let outputs = self
@@ -582,13 +596,13 @@ impl OnnxModel {
             let r = match p.ty {
                 TensorElementType::Float16 => v
                     .try_extract_tensor::<half::f16>()
-                    .map(|(s, d)| (s.to_vec(), d.iter().map(|x| x.to_f32()).collect())),
+                    .map(|(s, d)| (s.to_vec(), super::convert::f16_to_f32(d))),
                 _ => v
                     .try_extract_tensor::<f32>()
                     .map(|(s, d)| (s.to_vec(), d.to_vec())),
             };
             let (shape, data) = r.map_err(|e| format!("{shown}: output {:?}: {e}", p.name))?;
-            if data.iter().any(|x| !x.is_finite()) {
+            if !super::convert::all_finite(&data) {
                 return Err(format!(
                     "{shown}: output {:?} has non-finite values (NaN/Inf)",
                     p.name

@@ -203,16 +203,19 @@ impl Schedule {
 
     /// The UNet's output as ε (converts v-prediction).
     pub fn to_eps(&self, out: &[f32], x_t: &[f32], ab: f64) -> Vec<f32> {
-        match self.prediction {
-            Prediction::Epsilon => out.to_vec(),
-            Prediction::V => {
-                let (sa, sb) = (ab.sqrt(), (1.0 - ab).sqrt());
-                out.iter()
-                    .zip(x_t)
-                    .map(|(v, x)| (sa * *v as f64 + sb * *x as f64) as f32)
-                    .collect()
+        self.into_eps(out.to_vec(), x_t, ab)
+    }
+
+    /// [`Schedule::to_eps`] in place: an ε prediction is returned as it is, a v prediction is
+    /// converted in its own buffer.
+    pub fn into_eps(&self, mut out: Vec<f32>, x_t: &[f32], ab: f64) -> Vec<f32> {
+        if self.prediction == Prediction::V {
+            let (sa, sb) = (ab.sqrt(), (1.0 - ab).sqrt());
+            for (v, x) in out.iter_mut().zip(x_t) {
+                *v = (sa * *v as f64 + sb * *x as f64) as f32;
             }
         }
+        out
     }
 }
 

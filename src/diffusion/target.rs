@@ -11,18 +11,18 @@
 //! vanish exactly where g does, so the fixed points of the guidance are kept. The target is
 //! recomputed every iteration, as the authors' pseudo-ground-truth views are; a small autoencoder
 //! (TAESD, `Codec::Fast`) keeps the per-iteration encode/decode cheap.
+use super::convert::hwc01_to_chw11_into;
 use super::guidance::{
     code_schedule, dreamtime_t, edit_gradients, ism_gradients, mts_gradients, paper_schedule,
     pseudo_gts, sds_gradients, EachView, MtsRange, MtsRule, MtsSettings, NoisePredictor,
     ViewsPredictor,
 };
-use super::model::{
-    chw11_to_hwc01, hwc01_to_chw11, Codec, Conditioning, StableDiffusion, UnetViews,
-};
+use super::model::{chw11_to_hwc01, Codec, Conditioning, StableDiffusion, UnetViews};
 use super::schedule::Schedule;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
+use rayon::prelude::*;
 
 /// LucidDreamer's ISM settings (t in [20, 500), t − s = 80, x_s by 5 inversion steps of 200).
 pub const ISM_DEFAULT: Rule = Rule::Ism {
@@ -188,7 +188,7 @@ impl Guide {
             }
         };
         Ok(zs
-            .iter()
+            .par_iter()
             .zip(g)
             .map(|(z, g)| {
                 let rms = (g.iter().map(|v| (*v as f64).powi(2)).sum::<f64>()
@@ -238,16 +238,18 @@ impl Guide {
         if conds.len() != n {
             return Err(format!("{n} renders and {} conditionings", conds.len()));
         }
-        let mut x = Vec::with_capacity(n * width * height * 3);
-        for r in renders {
-            if r.len() != width * height * 3 {
-                return Err(format!(
-                    "render has {} values, expected {width}×{height}×3",
-                    r.len()
-                ));
-            }
-            x.extend(hwc01_to_chw11(r, width, height));
+        let per = width * height * 3;
+        if let Some(r) = renders.iter().find(|r| r.len() != per) {
+            return Err(format!(
+                "render has {} values, expected {width}×{height}×3",
+                r.len()
+            ));
         }
+        // One batch buffer written in place, the views in parallel.
+        let mut x = vec![0.0f32; n * per];
+        x.par_chunks_mut(per.max(1))
+            .zip(renders.par_iter())
+            .for_each(|(out, r)| hwc01_to_chw11_into(r, width, height, out));
         let (z, hw) = sd.encode(&x, n, (height, width), self.codec)?;
         let per = z.len() / n;
         let sched = sd.schedule.clone();
@@ -267,7 +269,7 @@ impl Guide {
         let (img, (h, w)) = sd.decode(&guided, n, hw, self.codec)?;
         let per = img.len() / n;
         Ok(img
-            .chunks_exact(per)
+            .par_chunks_exact(per.max(1))
             .zip(meta)
             .map(|(im, (timesteps, latent_rms))| ImageTarget {
                 image: chw11_to_hwc01(im, w, h),

@@ -11,4 +11,5 @@ pub mod progress;
 pub mod scene;
 pub mod scene_objects;
 pub mod scene_stages;
+pub mod sd_pool;
 pub mod stage;

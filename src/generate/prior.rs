@@ -24,7 +24,9 @@ use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
 use crate::splat::Gaussians;
+use rayon::prelude::*;
 use std::collections::HashMap;
+use std::mem::ManuallyDrop;
 use std::sync::Mutex;
 
 /// The authors' negative prompt for objects.
@@ -67,10 +69,6 @@ pub trait Prior {
             .pop()
             .ok_or_else(|| Error::Run("the prior returned no target".into()).into())
     }
-}
-
-fn flat(img: &[[f32; 3]]) -> Vec<f32> {
-    img.iter().flat_map(|p| p.iter().copied()).collect()
 }
 
 fn unflat(v: &[f32]) -> Vec<[f32; 3]> {
@@ -161,7 +159,10 @@ impl OraclePrior {
 
 /// `2x − 1`, the oracle's latent of an image.
 pub(crate) fn to_latent(img: &[[f32; 3]]) -> Vec<f32> {
-    flat(img).iter().map(|v| 2.0 * v - 1.0).collect()
+    bytemuck::cast_slice::<[f32; 3], f32>(img)
+        .iter()
+        .map(|v| 2.0 * v - 1.0)
+        .collect()
 }
 
 pub(crate) fn from_latent(z: &[f32], clamp: bool) -> Vec<[f32; 3]> {
@@ -244,21 +245,41 @@ pub(crate) fn oracle_targets(
 
 /// Stable Diffusion with the authors' view-dependent prompts (embeddings cached per direction).
 pub struct SdPrior {
-    pub sd: StableDiffusion,
+    /// The pipeline (given back to [`super::sd_pool`] on drop when it came from there).
+    pub sd: ManuallyDrop<StableDiffusion>,
     prompt: String,
     negative: String,
     edit: Option<String>,
     cache: HashMap<String, Conditioning>,
+    pool: Option<super::sd_pool::PoolKey>,
 }
 
 impl SdPrior {
     pub fn new(sd: StableDiffusion, prompt: &str, edit: Option<&str>) -> SdPrior {
         SdPrior {
-            sd,
+            sd: ManuallyDrop::new(sd),
             prompt: prompt.to_string(),
             negative: NEGATIVE.to_string(),
             edit: edit.map(str::to_string),
             cache: HashMap::new(),
+            pool: None,
+        }
+    }
+
+    /// Gives the pipeline back to the pool under `key` when the prior is dropped.
+    pub fn pooled(mut self, key: super::sd_pool::PoolKey) -> SdPrior {
+        self.pool = Some(key);
+        self
+    }
+}
+
+impl Drop for SdPrior {
+    fn drop(&mut self) {
+        // SAFETY: `self.sd` is taken (or dropped) exactly once, here, and never used after.
+        let sd = unsafe { ManuallyDrop::take(&mut self.sd) };
+        match self.pool.take() {
+            Some(key) => super::sd_pool::give_back(key, sd),
+            None => drop(sd),
         }
     }
 }
@@ -318,14 +339,17 @@ impl Prior for SdPrior {
             .map(|v| self.conditioning(v))
             .collect::<Result<Vec<_>, _>>()?;
         let conds: Vec<&Conditioning> = keys.iter().map(|k| &self.cache[k]).collect();
-        let flats: Vec<Vec<f32>> = views.iter().map(|v| flat(v.render)).collect();
-        let renders: Vec<&[f32]> = flats.iter().map(Vec::as_slice).collect();
+        // The renders as they are, `h × w × 3` values each (no copy).
+        let renders: Vec<&[f32]> = views
+            .iter()
+            .map(|v| bytemuck::cast_slice::<[f32; 3], f32>(v.render))
+            .collect();
         let targets = guide
             .image_targets(&mut self.sd, &conds, &renders, w, h, step)
             .map_err(Error::Run)?;
-        let clamp = is_pseudo_gt(guide);
+        // The decoded targets are already in [0, 1] (pseudo-ground truth needs no further clamp).
         targets
-            .into_iter()
+            .into_par_iter()
             .map(|t| {
                 if (t.width, t.height) != (w, h) {
                     return Err(Error::Input(format!(
@@ -334,13 +358,7 @@ impl Prior for SdPrior {
                     ))
                     .into());
                 }
-                let mut img = unflat(&t.image);
-                if clamp {
-                    for p in &mut img {
-                        *p = p.map(|v| v.clamp(0.0, 1.0));
-                    }
-                }
-                Ok(img)
+                Ok(bytemuck::cast_slice::<f32, [f32; 3]>(&t.image).to_vec())
             })
             .collect()
     }

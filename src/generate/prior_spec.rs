@@ -97,24 +97,33 @@ impl PriorSpec {
 
 /// The Stable Diffusion prior on the models in `models`, run by `provider` (`--provider`; `auto`
 /// resolves for this machine): every command that makes an sd prior (`object`, `generate`,
-/// `edit`, `bench`) opens it here, so the provider reaches the model sessions.
+/// `edit`, `bench`) opens it here, so the provider reaches the model sessions. A pipeline an
+/// earlier prior of the same directory and provider gave back is reused ([`super::sd_pool`]).
 pub fn open_sd(
     models: &Path,
     provider: Provider,
     prompt: &str,
     edit: Option<&str>,
 ) -> Result<SdPrior, GenError> {
-    let opts = ModelOptions {
-        provider,
-        threads: None,
+    let key = super::sd_pool::key(models, provider);
+    let sd = match super::sd_pool::take(&key) {
+        Some(sd) => sd,
+        None => {
+            let opts = ModelOptions {
+                provider,
+                threads: None,
+            };
+            let sd = StableDiffusion::open(models, &opts).map_err(|msg| {
+                GenError::Prior(Error::Model {
+                    path: models.to_path_buf(),
+                    msg,
+                })
+            })?;
+            super::sd_pool::opened();
+            sd
+        }
     };
-    let sd = StableDiffusion::open(models, &opts).map_err(|msg| {
-        GenError::Prior(Error::Model {
-            path: models.to_path_buf(),
-            msg,
-        })
-    })?;
-    Ok(SdPrior::new(sd, prompt, edit))
+    Ok(SdPrior::new(sd, prompt, edit).pooled(key))
 }
 
 impl std::str::FromStr for PriorSpec {

@@ -16,6 +16,7 @@ use crate::splat::guided::BatchView;
 use crate::splat::train::{FitConfig, StepReport, Trainer, View};
 use crate::splat::Gaussians;
 use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
 use std::ops::Range;
 use std::time::Instant;
 
@@ -153,9 +154,16 @@ pub fn guided_iteration(
         &mut report.kernels,
         &mut report.prior_seconds,
     )?;
+    // The views' losses in parallel, summed in view order.
+    let lambda = guide.settings.lambda;
+    let renders: Vec<&[[f32; 3]]> = batch.iter().map(|bv| bv.color.as_slice()).collect();
+    let losses: Vec<(f64, Vec<[f32; 3]>)> = renders
+        .par_iter()
+        .zip(targets.par_iter())
+        .map(|(render, target)| image_loss(render, target, lambda))
+        .collect();
     let mut grads = Vec::with_capacity(views.len());
-    for (bv, target) in batch.iter().zip(&targets) {
-        let (l, g) = image_loss(&bv.color, target, guide.settings.lambda);
+    for (l, g) in losses {
         report.loss += l / views.len() as f64;
         grads.push(g);
     }
