@@ -113,7 +113,7 @@ fn a_probed_batch_covers_the_smaller_ones() {
     };
     let mut sd = StableDiffusion::open(&dir, &opts).unwrap();
     let honest = |_: Op, _: usize, _: &mut [f32]| {};
-    let mut probe_at = |sd: &mut StableDiffusion, hw, b| {
+    let probe_at = |sd: &mut StableDiffusion, hw, b| {
         sd.probe_provider_with(hw, b, Some(&honest)).unwrap();
         sd.probes_run()
     };
