@@ -1,4 +1,4 @@
-//! One loaded Stable Diffusion pipeline per process: the priors a scene, an `edit` or a restyle
+//! One loaded Stable Diffusion pipeline per process: the priors an `edit` (or any caller)
 //! make one after another share the pipeline (its ONNX Runtime sessions and what its provider
 //! probe learned) instead of opening the models again. Needs the ONNX Runtime library
 //! (scripts/setup.sh installs it). One test in this binary: the counter is the process's.

@@ -12,26 +12,41 @@ use rayon::prelude::*;
 /// enough that a 512² batch (3 MB a view) spreads over the cores.
 const CHUNK: usize = 1 << 16;
 
+/// Below this many elements a conversion runs on the calling thread: a UNet run's latents or
+/// outputs (≤ 0.2 M values at 512²) take well under a millisecond, less than waking the pool costs
+/// on a loaded machine.
+const PARALLEL_FROM: usize = 1 << 18;
+
+/// `f` over matching chunks of `out` and `src`, in parallel when the tensor is large.
+fn chunked<A: Send, B: Sync>(out: &mut [A], src: &[B], f: impl Fn(&mut [A], &[B]) + Sync) {
+    if src.len() < PARALLEL_FROM {
+        f(out, src);
+    } else {
+        out.par_chunks_mut(CHUNK)
+            .zip(src.par_chunks(CHUNK))
+            .for_each(|(o, s)| f(o, s));
+    }
+}
+
 /// `src` rounded to f16 (round to nearest even, as `f16::from_f32`).
 pub fn f32_to_f16(src: &[f32]) -> Vec<f16> {
     let mut out = vec![f16::ZERO; src.len()];
-    out.par_chunks_mut(CHUNK)
-        .zip(src.par_chunks(CHUNK))
-        .for_each(|(o, s)| o.convert_from_f32_slice(s));
+    chunked(&mut out, src, |o, s| o.convert_from_f32_slice(s));
     out
 }
 
 /// `src` widened to f32.
 pub fn f16_to_f32(src: &[f16]) -> Vec<f32> {
     let mut out = vec![0.0f32; src.len()];
-    out.par_chunks_mut(CHUNK)
-        .zip(src.par_chunks(CHUNK))
-        .for_each(|(o, s)| s.convert_to_f32_slice(o));
+    chunked(&mut out, src, |o, s| s.convert_to_f32_slice(o));
     out
 }
 
 /// Whether every value is finite.
 pub fn all_finite(v: &[f32]) -> bool {
+    if v.len() < PARALLEL_FROM {
+        return v.iter().all(|x| x.is_finite());
+    }
     v.par_chunks(CHUNK).all(|c| c.iter().all(|x| x.is_finite()))
 }
 
@@ -88,7 +103,7 @@ mod tests {
     #[test]
     fn conversions_match_the_element_wise_definitions() {
         // Past several chunks, with values that round differently in f16 and the edges.
-        let n = 3 * CHUNK + 17;
+        let n = PARALLEL_FROM + 3 * CHUNK + 17;
         let v: Vec<f32> = (0..n)
             .map(|i| ((i as f32) * 0.7311).sin() * 70_000.0 / (1.0 + (i % 97) as f32))
             .chain([f32::MAX, f32::MIN_POSITIVE, -0.0, 1e-8])
@@ -109,6 +124,11 @@ mod tests {
         assert!(!all_finite(&bad));
         assert!(!all_finite(&back), "f32::MAX overflows f16 to infinity");
         assert!(all_finite(&[]));
+        // The calling thread's path for small tensors gives the same bits.
+        let small = &v[..1000];
+        assert_eq!(f32_to_f16(small), h[..1000].to_vec());
+        assert_eq!(f16_to_f32(&h[..1000]), back[..1000].to_vec());
+        assert!(!all_finite(&[1.0, f32::INFINITY]));
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! One loaded Stable Diffusion pipeline per model directory and provider for the whole process.
 //! Opening a pipeline builds an ONNX Runtime session per model (and, on a GPU provider, probes
-//! it); a scene, an `edit` that adds an object and then re-optimises the environment around it,
-//! or a restyle of several objects would otherwise pay that again for every prior they make.
+//! it); an `edit` that adds an object and then re-optimises the environment around it would
+//! otherwise pay that again for every prior it makes, as would any caller making priors in turn.
 //! [`super::prior_spec::open_sd`] takes a pipeline from here when one was given back, and an
 //! [`super::prior::SdPrior`] gives its pipeline back when it is dropped. Nothing else is shared:
 //! prompts and their embeddings stay with each prior.
