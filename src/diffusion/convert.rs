@@ -17,9 +17,15 @@ const CHUNK: usize = 1 << 16;
 /// on a loaded machine.
 const PARALLEL_FROM: usize = 1 << 18;
 
+/// Whether work over `elements` values is worth the thread pool (a 512² view is; a UNet run's
+/// latents or a 16² test render are not).
+pub fn worth_parallel(elements: usize) -> bool {
+    elements >= PARALLEL_FROM
+}
+
 /// `f` over matching chunks of `out` and `src`, in parallel when the tensor is large.
 fn chunked<A: Send, B: Sync>(out: &mut [A], src: &[B], f: impl Fn(&mut [A], &[B]) + Sync) {
-    if src.len() < PARALLEL_FROM {
+    if !worth_parallel(src.len()) {
         f(out, src);
     } else {
         out.par_chunks_mut(CHUNK)
@@ -44,7 +50,7 @@ pub fn f16_to_f32(src: &[f16]) -> Vec<f32> {
 
 /// Whether every value is finite.
 pub fn all_finite(v: &[f32]) -> bool {
-    if v.len() < PARALLEL_FROM {
+    if !worth_parallel(v.len()) {
         return v.iter().all(|x| x.is_finite());
     }
     v.par_chunks(CHUNK).all(|c| c.iter().all(|x| x.is_finite()))
@@ -54,6 +60,14 @@ pub fn all_finite(v: &[f32]) -> bool {
 /// (`3 w h` values), bands of each colour plane in parallel.
 pub fn hwc01_to_chw11_into(rgb: &[f32], w: usize, h: usize, out: &mut [f32]) {
     let np = (w * h).max(1);
+    if !worth_parallel(3 * np) {
+        for (c, plane) in out.chunks_mut(np).take(3).enumerate() {
+            for (o, px) in plane.iter_mut().zip(rgb.chunks_exact(3)) {
+                *o = 2.0 * px[c] - 1.0;
+            }
+        }
+        return;
+    }
     let band = CHUNK / 4;
     out.par_chunks_mut(np)
         .take(3)
@@ -82,17 +96,20 @@ pub fn chw11_to_hwc01(img: &[f32], w: usize, h: usize) -> Vec<f32> {
     let (r, rest) = img.split_at(np);
     let (g, b) = rest.split_at(np);
     let band = w.max(1) * 16;
-    out.par_chunks_mut(3 * band)
-        .enumerate()
-        .for_each(|(k, px)| {
-            let at = k * band;
-            for (i, p) in px.chunks_exact_mut(3).enumerate() {
-                let j = at + i;
-                for (o, v) in p.iter_mut().zip([r[j], g[j], b[j]]) {
-                    *o = ((v + 1.0) * 0.5).clamp(0.0, 1.0);
-                }
+    let convert = |(k, px): (usize, &mut [f32])| {
+        let at = k * band;
+        for (i, p) in px.chunks_exact_mut(3).enumerate() {
+            let j = at + i;
+            for (o, v) in p.iter_mut().zip([r[j], g[j], b[j]]) {
+                *o = ((v + 1.0) * 0.5).clamp(0.0, 1.0);
             }
-        });
+        }
+    };
+    if worth_parallel(3 * np) {
+        out.par_chunks_mut(3 * band).enumerate().for_each(convert);
+    } else {
+        out.chunks_mut(3 * band).enumerate().for_each(convert);
+    }
     out
 }
 

@@ -232,7 +232,7 @@ fn predict_eps(
         ));
     }
     Ok(out
-        .into_par_iter()
+        .into_iter()
         .zip(xs)
         .map(|(p, x)| p.into_iter().map(|e| sched.into_eps(e, x, ab)).collect())
         .collect())

@@ -11,7 +11,7 @@
 //! vanish exactly where g does, so the fixed points of the guidance are kept. The target is
 //! recomputed every iteration, as the authors' pseudo-ground-truth views are; a small autoencoder
 //! (TAESD, `Codec::Fast`) keeps the per-iteration encode/decode cheap.
-use super::convert::hwc01_to_chw11_into;
+use super::convert::{hwc01_to_chw11_into, worth_parallel};
 use super::guidance::{
     code_schedule, dreamtime_t, edit_gradients, ism_gradients, mts_gradients, paper_schedule,
     pseudo_gts, sds_gradients, EachView, MtsRange, MtsRule, MtsSettings, NoisePredictor,
@@ -188,7 +188,7 @@ impl Guide {
             }
         };
         Ok(zs
-            .par_iter()
+            .iter()
             .zip(g)
             .map(|(z, g)| {
                 let rms = (g.iter().map(|v| (*v as f64).powi(2)).sum::<f64>()
@@ -247,9 +247,14 @@ impl Guide {
         }
         // One batch buffer written in place, the views in parallel.
         let mut x = vec![0.0f32; n * per];
-        x.par_chunks_mut(per.max(1))
-            .zip(renders.par_iter())
-            .for_each(|(out, r)| hwc01_to_chw11_into(r, width, height, out));
+        let to_model = |(out, r): (&mut [f32], &&[f32])| hwc01_to_chw11_into(r, width, height, out);
+        if worth_parallel(n * per) {
+            x.par_chunks_mut(per.max(1))
+                .zip(renders.par_iter())
+                .for_each(to_model);
+        } else {
+            x.chunks_mut(per.max(1)).zip(renders).for_each(to_model);
+        }
         let (z, hw) = sd.encode(&x, n, (height, width), self.codec)?;
         let per = z.len() / n;
         let sched = sd.schedule.clone();
@@ -268,17 +273,24 @@ impl Guide {
         }
         let (img, (h, w)) = sd.decode(&guided, n, hw, self.codec)?;
         let per = img.len() / n;
-        Ok(img
-            .par_chunks_exact(per.max(1))
-            .zip(meta)
-            .map(|(im, (timesteps, latent_rms))| ImageTarget {
-                image: chw11_to_hwc01(im, w, h),
-                width: w,
-                height: h,
-                timesteps,
-                latent_rms,
-            })
-            .collect())
+        let to_target = |(im, (timesteps, latent_rms)): (&[f32], (Vec<u32>, f64))| ImageTarget {
+            image: chw11_to_hwc01(im, w, h),
+            width: w,
+            height: h,
+            timesteps,
+            latent_rms,
+        };
+        Ok(if worth_parallel(img.len()) {
+            img.par_chunks_exact(per.max(1))
+                .zip(meta)
+                .map(to_target)
+                .collect()
+        } else {
+            img.chunks_exact(per.max(1))
+                .zip(meta)
+                .map(to_target)
+                .collect()
+        })
     }
 }
 

@@ -16,10 +16,11 @@
 //! The `shape` prior has no targets (the object is its shape prior), so it is not a [`Prior`].
 use super::object::GenError;
 use crate::camera::Camera;
+use crate::diffusion::convert::worth_parallel;
 use crate::diffusion::guidance::{view_prompts, Cond, NoisePredictor, PerView};
 use crate::diffusion::model::{Conditioning, StableDiffusion};
 use crate::diffusion::schedule::{Schedule, SchedulerConfig};
-use crate::diffusion::target::Guide;
+use crate::diffusion::target::{Guide, ImageTarget};
 use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::splat::raster::{Frame, GpuGaussians, Rasterizer};
@@ -348,18 +349,20 @@ impl Prior for SdPrior {
             .image_targets(&mut self.sd, &conds, &renders, w, h, step)
             .map_err(Error::Run)?;
         // The decoded targets are already in [0, 1] (pseudo-ground truth needs no further clamp).
-        targets
-            .into_par_iter()
-            .map(|t| {
-                if (t.width, t.height) != (w, h) {
-                    return Err(Error::Input(format!(
-                        "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
-                        t.width, t.height
-                    ))
-                    .into());
-                }
-                Ok(bytemuck::cast_slice::<f32, [f32; 3]>(&t.image).to_vec())
-            })
-            .collect()
+        let to_pixels = |t: ImageTarget| -> Result<Vec<[f32; 3]>, GenError> {
+            if (t.width, t.height) != (w, h) {
+                return Err(Error::Input(format!(
+                    "the autoencoder returned {}x{} for a {w}x{h} render (sizes must be multiples of 8)",
+                    t.width, t.height
+                ))
+                .into());
+            }
+            Ok(bytemuck::cast_slice::<f32, [f32; 3]>(&t.image).to_vec())
+        };
+        if worth_parallel(3 * w * h * targets.len()) {
+            targets.into_par_iter().map(to_pixels).collect()
+        } else {
+            targets.into_iter().map(to_pixels).collect()
+        }
     }
 }

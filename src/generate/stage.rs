@@ -9,6 +9,7 @@
 use super::object::GenError;
 use super::prior::{Prior, PriorView};
 use crate::camera::Camera;
+use crate::diffusion::convert::worth_parallel;
 use crate::diffusion::target::Guide;
 use crate::diffusion::Error;
 use crate::gpu::{Context, Timings};
@@ -157,11 +158,17 @@ pub fn guided_iteration(
     // The views' losses in parallel, summed in view order.
     let lambda = guide.settings.lambda;
     let renders: Vec<&[[f32; 3]]> = batch.iter().map(|bv| bv.color.as_slice()).collect();
-    let losses: Vec<(f64, Vec<[f32; 3]>)> = renders
-        .par_iter()
-        .zip(targets.par_iter())
-        .map(|(render, target)| image_loss(render, target, lambda))
-        .collect();
+    let loss = |(render, target): (&&[[f32; 3]], &Target)| image_loss(render, target, lambda);
+    let pixels: usize = renders.iter().map(|r| 3 * r.len()).sum();
+    let losses: Vec<(f64, Vec<[f32; 3]>)> = if worth_parallel(pixels) {
+        renders
+            .par_iter()
+            .zip(targets.par_iter())
+            .map(loss)
+            .collect()
+    } else {
+        renders.iter().zip(&targets).map(loss).collect()
+    };
     let mut grads = Vec::with_capacity(views.len());
     for (l, g) in losses {
         report.loss += l / views.len() as f64;
