@@ -156,3 +156,27 @@ fn a_tiny_room_keeps_floor_free_and_what_the_place_cannot_do_without() {
         }
     }
 }
+
+#[test]
+fn a_shop_named_by_its_owner_is_that_shop_with_its_own_furniture() {
+    for (prompt, own, n) in [
+        ("a barber's with two barber chairs", "barber chair", 2),
+        (
+            "we need a barber's with four chairs facing mirrors and a coat stand by the door",
+            "salon station",
+            3,
+        ),
+        ("a florist's with a counter", "flower", 1),
+    ] {
+        let s = plan(prompt);
+        assert!(number(&s, own) >= n, "{prompt}: {:?}", keys(&s));
+    }
+    // an owner's name before another noun still qualifies it: a pirate ship's hold is indoors
+    let s = plan("a pirate ship's hold with barrels");
+    assert_eq!(
+        s.scene_type,
+        dreamscene::plan::spec::SceneType::Indoor,
+        "{:?}",
+        keys(&s)
+    );
+}
