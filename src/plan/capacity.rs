@@ -10,6 +10,11 @@ use std::collections::BTreeSet;
 /// Holodeck's floor capacity ratio (0.4) plus a little, as named pieces may exceed it.
 pub const TRIM_OCCUPANCY: f64 = 0.45;
 
+/// Floor a trimmed indoor room keeps free whatever its size, m²: room to stand at each piece
+/// and a path from the door (a 0.8 m path across a 2.5 m room, and as much again to stand and
+/// turn). In a tiny room this, not [`TRIM_OCCUPANCY`], decides how much furniture stays.
+pub const FREE_FLOOR: f64 = 3.0;
+
 /// Objects that decorate rather than furnish: trimmed first.
 const DECOR: &[&str] = &[
     "potted plant",
@@ -118,9 +123,9 @@ fn remove_one(spec: &mut SceneSpec, cat: &str) -> Vec<String> {
         .collect()
 }
 
-/// Trims default furniture of `spec` (its room set) to fit; `trim` also to the occupancy (a
-/// room the user stated or asked small), the `essential` defaults (what the place cannot do
-/// without) last. Returns one note per trimmed category; an error when a named object is larger
+/// Trims default furniture of `spec` (its room set) to fit; `trim` also to the occupancy and the
+/// free floor (a room the user stated or asked small), the `essential` defaults (what the place
+/// cannot do without) last and only to the occupancy. Returns one note per trimmed category; an error when a named object is larger
 /// than the room.
 pub fn fit(
     spec: &mut SceneSpec,
@@ -158,11 +163,18 @@ pub fn fit(
     }
     if trim {
         let floor = room.size[0] * room.size[1];
-        let limit = match spec.scene_type {
+        let share = match spec.scene_type {
             SceneType::Indoor => TRIM_OCCUPANCY,
             SceneType::Outdoor => 0.3,
         };
-        while floor_area(spec) > limit * floor {
+        // a room the text names nothing for is the place's furniture room shrunk: its
+        // defaults thin to leave floor free (a room sized for named things was sized for them)
+        let nothing_named = !spec.objects.keys().any(|c| named.contains(c));
+        let most = match spec.scene_type {
+            SceneType::Indoor if nothing_named => (share * floor).min(floor - FREE_FLOOR),
+            _ => share * floor,
+        };
+        while floor_area(spec) > most {
             // The default category to thin: what the place can do without before what it
             // cannot, decoration first, then furniture in no group, then the one whose
             // instances cover the most floor; multiples lose one at a time.
@@ -175,10 +187,21 @@ pub fn fit(
                 .iter()
                 .flat_map(|r| [base(&r.subject), base(&r.object)])
                 .collect();
+            // floor kept free takes only what the place can do without (a tiny office keeps
+            // its desk); the occupancy what it cannot as well, last
+            let crowded = floor_area(spec) > share * floor;
+            // what stands on others or lies flat frees no floor to keep free
+            let on_top: BTreeSet<String> = spec
+                .relations
+                .iter()
+                .filter(|r| r.relation == RelationKind::Over)
+                .map(|r| base(&r.subject))
+                .collect();
             let pick = spec
                 .objects
                 .iter()
-                .filter(|(c, _)| !named.contains(*c))
+                .filter(|(c, _)| !named.contains(*c) && (crowded || !essential.contains(*c)))
+                .filter(|(c, o)| crowded || !on_top.contains(c.as_str()) && o.size[2] >= 0.05)
                 .max_by(|(ca, a), (cb, b)| {
                     let key = |c: &str, o: &super::spec::ObjectSpec| {
                         let decor = DECOR.contains(&c) as u8;

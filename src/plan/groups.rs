@@ -196,6 +196,21 @@ pub fn seats_per(spec: &SceneSpec, subject: &str, object: &str) -> Option<u32> {
     Some(capacity(rule, size))
 }
 
+/// [`seats_per`] once a counter has grown to seat more along its front: a counter (seats AT it
+/// by its width, a bar's stools) is built as long as its stools need, up to twice its own width,
+/// before a second one is wanted.
+pub fn seats_per_grown(spec: &SceneSpec, subject: &str, object: &str) -> Option<u32> {
+    let rule = rules()
+        .iter()
+        .find(|r| r.has_subject(subject) && r.has_object(object))?;
+    let mut size = spec.objects.get(object)?.size;
+    if rule.per_object.is_none() && matches!(rule.relation, RelationKind::At | RelationKind::AtBack)
+    {
+        size[0] *= 2.0;
+    }
+    Some(capacity(rule, size))
+}
+
 /// Whether things "around" `category` stand in a ring round it, facing it (a fire): the objects
 /// of the CIRCLE rules.
 pub fn ring_centre(category: &str) -> bool {

@@ -56,6 +56,8 @@ pub struct Mention {
     pub parts: u32,
     /// "in four rows of six": the number of rows (0 when not in rows).
     pub rows: u32,
+    /// "rows of chairs": set out in rows the text does not count (`rows` stays 0).
+    pub in_rows: bool,
     /// "the invigilator's desk": the owner a particular object is named after.
     pub owner: Option<String>,
 }

@@ -464,6 +464,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("fruit_tree", oc::fruit_tree, [Skin], [Skin => [0.80, 0.10, 0.10], Foliage => [0.25, 0.50, 0.18], Trunk => [0.35, 0.24, 0.15]]),
     arch!("blossom_tree", oc::blossom_tree, [Foliage], [Foliage => [0.96, 0.70, 0.80], Cushion => [0.99, 0.90, 0.93], Trunk => [0.25, 0.16, 0.12]]),
     arch!("speaker", au::speaker, [Body], [Body => DARK_WOOD, Interior => [0.06, 0.06, 0.07], Handle => [0.75, 0.12, 0.10]]),
+    arch!("headphones", au::headphones, [Frame, Body], [Frame => [0.10, 0.10, 0.11], Body => [0.12, 0.12, 0.13], Cushion => [0.20, 0.20, 0.21], Metal => [0.70, 0.71, 0.73]]),
     arch!("amp_combo", au::amp_combo, [Body], [Body => [0.10, 0.10, 0.10], Upholstery => [0.46, 0.45, 0.43], Canvas => [0.85, 0.80, 0.65], Metal => [0.78, 0.78, 0.80], Handle => [0.08, 0.08, 0.08], Frame => [0.12, 0.10, 0.09], Light => [0.95, 0.15, 0.10]]),
     arch!("server_rack", sv::server_rack, [Body, Frame], [Body => [0.07, 0.07, 0.08], Frame => [0.10, 0.10, 0.11], Metal => [0.22, 0.22, 0.24], Pane => [0.10, 0.10, 0.11], Light => [0.30, 0.95, 0.45], Handle => [0.30, 0.60, 1.00], Canvas => [0.15, 0.35, 0.75]]),
     arch!("coat_hooks", pg::coat_hooks, [Top], [Top => DARK_WOOD, Metal => BRASS, Frame => [0.45, 0.28, 0.16], Cushion => [0.25, 0.22, 0.20]]),

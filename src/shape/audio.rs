@@ -1,9 +1,11 @@
 //! Layouts of sound gear, drawn by what a person sees of it: a loudspeaker's round cones on a
 //! dark front baffle (a port below them, terminals and a rear port at the back) and a guitar
 //! combo amplifier (grille cloth under a control strip of knobs, a carrying handle on top,
-//! metal corners, an open back showing the speaker's magnet). The front faces +y.
+//! metal corners, an open back showing the speaker's magnet) and a pair of over-ear headphones
+//! standing on their cups (a padded headband arching over two round cups with soft cushions
+//! facing each other). The front faces +y.
 use super::archetypes::Builder;
-use super::fittings::{band, disc, Y};
+use super::fittings::{band, disc, X, Y};
 use super::materials::Role::*;
 
 /// A speaker cone of outer radius `r` at (`x`, `z`) on the front face `y`: a dark cone in a
@@ -183,4 +185,48 @@ pub fn amp_combo(b: &mut Builder) {
         [-hw + t, yb - 0.01, z0 + t],
         [hw - t, yb, z0 + t + 0.06],
     );
+}
+
+/// A pair of over-ear headphones set down upright, seen from the front: two round ear cups on
+/// the sides of the box (their soft cushions facing inwards, a metal ring round each cup),
+/// joined by a headband that arches over the top from one cup's yoke to the other, padded
+/// under its crown.
+pub fn headphones(b: &mut Builder) {
+    let (hw, h) = (b.w / 2.0, b.h);
+    let r_cup = (0.5 * b.d).min(0.3 * h).max(0.01);
+    let t_cup = (0.22 * b.w).max(0.01);
+    let zc = r_cup;
+    for s in [-1.0, 1.0] {
+        let xo = s * (hw - 0.5 * t_cup);
+        disc(b, Body, [xo, 0.0, zc], X, r_cup, t_cup);
+        band(
+            b,
+            Metal,
+            [xo, 0.0, zc],
+            X,
+            0.8 * r_cup,
+            0.12 * r_cup,
+            0.25 * t_cup,
+        );
+        let xi = s * (hw - t_cup - 0.12 * t_cup);
+        disc(b, Cushion, [xi, 0.0, zc], X, 0.9 * r_cup, 0.25 * t_cup);
+    }
+    // The headband: a half ellipse from the top of one cup's yoke to the other.
+    let (ax, z0) = (hw - 0.5 * t_cup, zc + 0.6 * r_cup);
+    let az = (h - z0 - 0.015).max(0.01);
+    let rb = (0.08 * b.d).clamp(0.004, 0.012);
+    let n = 16;
+    let arc: Vec<[f64; 3]> = (0..=n)
+        .map(|i| {
+            let a = std::f64::consts::PI * i as f64 / n as f64;
+            [ax * a.cos(), 0.0, z0 + az * a.sin()]
+        })
+        .collect();
+    b.polyline(Frame, &arc, rb);
+    for s in [-1.0, 1.0] {
+        b.rod(Metal, [s * ax, 0.0, zc], [s * ax, 0.0, z0], 0.8 * rb);
+    }
+    let pad: Vec<[f64; 3]> = (n / 2 - 3..=n / 2 + 3).map(|i| arc[i]).collect();
+    let pad: Vec<[f64; 3]> = pad.iter().map(|p| [p[0], p[1], p[2] - 1.2 * rb]).collect();
+    b.polyline(Cushion, &pad, 1.4 * rb);
 }

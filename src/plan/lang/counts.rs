@@ -388,6 +388,29 @@ pub(super) fn read_counts(r: &mut Reading) {
             }
         }
     }
+    // Rows the text does not count: "rows of chairs", "chairs in rows".
+    let rows_unsaid = re(r"\b(rows|lines) of\b|\bin (rows|lines)\b");
+    for c in rows_unsaid.captures_iter(&t) {
+        let (start, end) = c.get(0).map(|g| (g.start(), g.end())).unwrap_or((0, 0));
+        let before = t[..start].split_whitespace().last().unwrap_or("");
+        if number_of(before).is_some() || ["in", "into"].contains(&before) {
+            continue;
+        }
+        let i = if c.get(1).is_some() {
+            r.mentions
+                .iter()
+                .position(|m| m.start >= end && t[end..m.start].split_whitespace().count() <= 2)
+        } else {
+            r.mentions
+                .iter()
+                .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
+        };
+        if let Some(m) = i.map(|i| &mut r.mentions[i]) {
+            if m.rows == 0 && !m.negated {
+                m.in_rows = true;
+            }
+        }
+    }
     // Rows without a count of their own: "Y in N rows", "Y, two rows", "a row of Y", "Y in a row".
     let rows_only = re(r"\b(a|one|[0-9]+|[a-z]+) (?:single )?(?:rows?|lines?)\b( of)?");
     for c in rows_only.captures_iter(&t) {

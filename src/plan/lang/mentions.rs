@@ -150,7 +150,13 @@ pub(super) fn read_mentions(
             }
             Some("of") => {
                 // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
-                if let Some(n) = prev2.and_then(number_of) {
+                let head = t[start..end].rsplit(' ').next().unwrap_or("");
+                if prev2.is_some_and(|p| p == "pair" || p == "pairs")
+                    && word_list("pair_nouns").contains(&head)
+                {
+                    // "two pairs of headphones": a pair is one thing
+                    count = Some(prev3.and_then(number_of).unwrap_or(1).max(1));
+                } else if let Some(n) = prev2.and_then(number_of) {
                     count = Some(n);
                     if let Some(m) = prev3.and_then(number_of) {
                         if m > 1
@@ -286,6 +292,7 @@ pub(super) fn read_mentions(
             each_of: None,
             parts: 1,
             rows: 0,
+            in_rows: false,
             owner,
         });
         prev_end = end;

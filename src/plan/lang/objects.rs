@@ -3,7 +3,7 @@
 //! object (adjectives, size, count, negation, owner) is read in `mentions`.
 use super::{
     alternation, is_adjective, is_verb, not_objects, number_of, plurals, quantities, singular,
-    words_in,
+    word_list, words_in,
 };
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::units::Dims;
@@ -80,7 +80,14 @@ pub(super) fn object_spans(
             if t[last.1..m.start()].trim().is_empty() && (last.2 == cat || !last.3) {
                 let one_role = crate::plan::roles::role_of(&last.2)
                     .is_some_and(|role| crate::plan::roles::role_of(&cat) == Some(role));
-                if !one_role {
+                // "a bench seat": a seat's name then a word as general as any seat
+                let generic = word_list("generic_seats").contains(&m.as_str())
+                    && last
+                        .2
+                        .rsplit(' ')
+                        .next()
+                        .is_some_and(|h| word_list("seats").contains(&h));
+                if !one_role && !generic {
                     last.2 = cat;
                 }
                 last.1 = m.end();

@@ -174,7 +174,8 @@ fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
         // "a pirate ship's deck": the template's own place
         return None;
     }
-    let head = rest.starts_with("'s ")
+    // "a barber's with four chairs": the owner's name with nothing after it is the shop
+    let head = rest.starts_with("'s ") && !is_function_word(next)
         || (ends
             && !(is_function_word(next)
                 || is_known_word(next)

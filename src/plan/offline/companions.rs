@@ -195,7 +195,9 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                     .or_insert_with(|| crate::plan::understood::phrase(r, i));
             }
         } else if seat_named && !table_named && per < 12 {
-            let need = counts[seat].div_ceil(per.max(1));
+            // six bar stools want a longer bar, not a second one
+            let grown = crate::plan::groups::seats_per_grown(&probe, seat, &table).unwrap_or(per);
+            let need = counts[seat].div_ceil(grown.max(1));
             let t = counts.get(&table).copied().unwrap_or(1);
             // "two barber chairs" in a salon whose defaults give each chair its station: the
             // stations, still as many as the defaults, follow the chairs the text counts, fewer

@@ -6,6 +6,11 @@ use crate::plan::lang;
 use crate::plan::spec::MAX_NUMBER;
 use std::collections::BTreeMap;
 
+/// Things a place sets out in "rows of chairs" when neither the text nor the place's defaults
+/// count them (a waiting room's rows are its eight default chairs): three rows of four, the
+/// smallest block that reads as rows facing something.
+const SEATS_IN_ROWS: u32 = 12;
+
 /// The counts the mentions give: negated and "no other" categories, counts distributed over the
 /// instances of another object ("two chairs at each table"), a bare plural's default count.
 pub(super) fn mention_counts(d: &mut Draft) {
@@ -67,7 +72,11 @@ pub(super) fn mention_counts(d: &mut Draft) {
                         .copied()
                         .unwrap_or(0)
                         .max(2)
-                        .max(2 * m.rows);
+                        .max(2 * m.rows)
+                        .max(match m.in_rows && !defaults.contains_key(cat) {
+                            true => SEATS_IN_ROWS,
+                            false => 0,
+                        });
                     counts.insert(cat.clone(), d);
                 }
             }
@@ -78,6 +87,15 @@ pub(super) fn mention_counts(d: &mut Draft) {
     }
     for (c, n) in explicit.iter() {
         counts.insert(c.clone(), *n);
+    }
+    // "rows of chairs": as many rows as make a block a little wider than deep
+    for (m, cat) in r.mentions.iter_mut().zip(cats.iter()) {
+        if m.in_rows && m.rows == 0 && !m.negated {
+            let n = counts.get(cat).copied().unwrap_or(0);
+            if n >= 4 {
+                m.rows = ((n as f64 / 1.5).sqrt().round() as u32).clamp(2, n / 2);
+            }
+        }
     }
     // Distributive counts multiply by the instances of what they distribute over.
     let mut spread: BTreeMap<String, u32> = BTreeMap::new();
