@@ -78,8 +78,8 @@ const FEW_PIECES: usize = 8;
 /// A thing hung lower than this over a door's clear zone is in the way (metres).
 const DOOR_HEAD: f64 = 1.9;
 
-/// Pieces of `l` placed by fallback, and again those standing (or hung below head height) in
-/// a door's clear zone.
+/// Pieces of `l` placed by fallback (flat things aside), and again those standing (or hung
+/// below head height) in a door's clear zone.
 fn relaxed_or_blocking(l: &Layout) -> usize {
     let doors: Vec<_> = l
         .openings
@@ -93,7 +93,10 @@ fn relaxed_or_blocking(l: &Layout) -> usize {
             let b = super::check::Box2::of(o);
             let blocks = o.position[2] < DOOR_HEAD
                 && doors.iter().any(|z| super::check::penetration(&b, z) > 0.0);
-            usize::from(o.placed_by == PlacedBy::Fallback) + usize::from(blocks)
+            // (a flat thing, a mat or a rug, lies wherever it is put: not a relaxed piece)
+            let relaxed =
+                o.placed_by == PlacedBy::Fallback && o.size[2] >= super::check::fronts::FLAT;
+            usize::from(relaxed) + usize::from(blocks)
         })
         .sum()
 }
@@ -335,7 +338,7 @@ fn layout_in_pinned(
     for attempt in 0..budget * more {
         let relaxed = best
             .as_ref()
-            .is_some_and(|(_, l)| l.objects.iter().any(|o| o.placed_by == PlacedBy::Fallback));
+            .is_some_and(|(_, l)| relaxed_or_blocking(l) > 0);
         if attempt >= budget && !relaxed {
             break;
         }
