@@ -80,6 +80,10 @@ fn judge(r: &Value, l: &Layout) -> Vec<(bool, String)> {
                 .map_or(n >= 1, |k| n as u64 == k);
             out.push((ok, format!("{}: {n}", w[0])));
         }
+        "absent" => {
+            let found: Vec<&str> = subjects.iter().map(|o| o.id.as_str()).collect();
+            out.push((found.is_empty(), format!("{:?} absent: found {found:?}", w)));
+        }
         "on" => {
             let sups = pick(l, &words(r, "support"), &[]);
             for s in subjects {

@@ -123,6 +123,81 @@ fn remove_one(spec: &mut SceneSpec, cat: &str) -> Vec<String> {
         .collect()
 }
 
+/// The default category to thin next: what the place can do without before what it cannot,
+/// decoration first, then furniture in no group, then the one whose instances cover the most
+/// floor; multiples lose one at a time. `None` when only named objects are left. Unless the room
+/// is `crowded` (over its occupancy), only what the place can do without and what frees floor
+/// (nothing standing on another piece or lying flat) is thinned: floor kept free for a room
+/// the text names nothing for never costs a tiny office its desk.
+pub(crate) fn next_to_trim(
+    spec: &SceneSpec,
+    named: &BTreeSet<String>,
+    essential: &BTreeSet<String>,
+    crowded: bool,
+) -> Option<String> {
+    let grouped: BTreeSet<String> = spec
+        .relations
+        .iter()
+        .flat_map(|r| [base(&r.subject), base(&r.object)])
+        .collect();
+    let on_top: BTreeSet<String> = spec
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Over)
+        .map(|r| base(&r.subject))
+        .collect();
+    let key = |c: &str, o: &super::spec::ObjectSpec| {
+        (
+            !essential.contains(c) as u8,
+            DECOR.contains(&c) as u8,
+            !grouped.contains(c) as u8,
+            (o.number > 1) as u8,
+            o.number as f64 * o.size[0] * o.size[1],
+        )
+    };
+    spec.objects
+        .iter()
+        .filter(|(c, _)| !named.contains(*c) && (crowded || !essential.contains(*c)))
+        .filter(|(c, o)| crowded || !on_top.contains(c.as_str()) && o.size[2] >= 0.05)
+        .max_by(|(ca, a), (cb, b)| {
+            let (ka, kb) = (key(ca, a), key(cb, b));
+            ka.0.cmp(&kb.0)
+                .then(ka.1.cmp(&kb.1))
+                .then(ka.2.cmp(&kb.2))
+                .then(ka.3.cmp(&kb.3))
+                .then(ka.4.total_cmp(&kb.4))
+        })
+        .map(|(c, _)| c.clone())
+}
+
+/// An instance id's category ("bar stool3" → "bar stool").
+fn base(id: &str) -> String {
+    id.trim_end_matches(|c: char| c.is_ascii_digit())
+        .to_string()
+}
+
+/// Removes one instance of the default `c`, and with it every default (not essential) left
+/// relating to nothing (the bar stools of an island that went); counts them in `dropped`.
+pub(crate) fn trim_one(
+    spec: &mut SceneSpec,
+    c: &str,
+    named: &BTreeSet<String>,
+    essential: &BTreeSet<String>,
+    dropped: &mut std::collections::BTreeMap<String, u32>,
+) {
+    let mut gone = vec![c.to_string()];
+    while let Some(c) = gone.pop() {
+        let orphans = remove_one(spec, &c);
+        *dropped.entry(c).or_default() += 1;
+        gone.extend(
+            orphans
+                .iter()
+                .map(|id| base(id))
+                .filter(|o| !named.contains(o) && !essential.contains(o)),
+        );
+    }
+}
+
 /// Trims default furniture of `spec` (its room set) to fit; `trim` also to the occupancy and the
 /// free floor (a room the user stated or asked small), the `essential` defaults (what the place
 /// cannot do without) last and only to the occupancy. Returns one note per trimmed category; an error when a named object is larger
@@ -175,66 +250,11 @@ pub fn fit(
             _ => share * floor,
         };
         while floor_area(spec) > most {
-            // The default category to thin: what the place can do without before what it
-            // cannot, decoration first, then furniture in no group, then the one whose
-            // instances cover the most floor; multiples lose one at a time.
-            let base = |id: &str| {
-                id.trim_end_matches(|c: char| c.is_ascii_digit())
-                    .to_string()
-            };
-            let grouped: BTreeSet<String> = spec
-                .relations
-                .iter()
-                .flat_map(|r| [base(&r.subject), base(&r.object)])
-                .collect();
-            // floor kept free takes only what the place can do without (a tiny office keeps
-            // its desk); the occupancy what it cannot as well, last
             let crowded = floor_area(spec) > share * floor;
-            // what stands on others or lies flat frees no floor to keep free
-            let on_top: BTreeSet<String> = spec
-                .relations
-                .iter()
-                .filter(|r| r.relation == RelationKind::Over)
-                .map(|r| base(&r.subject))
-                .collect();
-            let pick = spec
-                .objects
-                .iter()
-                .filter(|(c, _)| !named.contains(*c) && (crowded || !essential.contains(*c)))
-                .filter(|(c, o)| crowded || !on_top.contains(c.as_str()) && o.size[2] >= 0.05)
-                .max_by(|(ca, a), (cb, b)| {
-                    let key = |c: &str, o: &super::spec::ObjectSpec| {
-                        let decor = DECOR.contains(&c) as u8;
-                        let loose = !grouped.contains(c) as u8;
-                        (
-                            !essential.contains(c) as u8,
-                            decor,
-                            loose,
-                            (o.number > 1) as u8,
-                            o.number as f64 * o.size[0] * o.size[1],
-                        )
-                    };
-                    let (ka, kb) = (key(ca, a), key(cb, b));
-                    ka.0.cmp(&kb.0)
-                        .then(ka.1.cmp(&kb.1))
-                        .then(ka.2.cmp(&kb.2))
-                        .then(ka.3.cmp(&kb.3))
-                        .then(ka.4.total_cmp(&kb.4))
-                })
-                .map(|(c, _)| c.clone());
-            let Some(c) = pick else { break };
-            let mut gone = vec![c];
-            while let Some(c) = gone.pop() {
-                // a default left relating to nothing goes with what it served
-                let orphans = remove_one(spec, &c);
-                *dropped.entry(c).or_default() += 1;
-                gone.extend(
-                    orphans
-                        .iter()
-                        .map(|id| base(id))
-                        .filter(|o| !named.contains(o) && !essential.contains(o)),
-                );
-            }
+            let Some(c) = next_to_trim(spec, named, essential, crowded) else {
+                break;
+            };
+            trim_one(spec, &c, named, essential, &mut dropped);
         }
     }
     for (c, n) in dropped {

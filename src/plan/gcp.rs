@@ -70,6 +70,36 @@ const WALL_MARGIN: f64 = 0.02;
 const HANG_CLEAR: f64 = 2.0;
 /// Preferred free space around unrelated objects (a walkway).
 const WALKWAY: f64 = 0.6;
+/// How many times its restarts a layout of at most [`FEW_PIECES`] with a piece placed by
+/// fallback may take.
+const FALLBACK_RESTARTS: u32 = 4;
+/// Pieces a layout may have for [`FALLBACK_RESTARTS`] (a small room's furniture).
+const FEW_PIECES: usize = 8;
+/// A thing hung lower than this over a door's clear zone is in the way (metres).
+const DOOR_HEAD: f64 = 1.9;
+
+/// Pieces of `l` placed by fallback (flat things aside), and again those standing (or hung
+/// below head height) in a door's clear zone.
+fn relaxed_or_blocking(l: &Layout) -> usize {
+    let doors: Vec<_> = l
+        .openings
+        .iter()
+        .filter(|o| o.kind == super::spec::OpeningKind::Door)
+        .map(super::check::door_zone)
+        .collect();
+    l.objects
+        .iter()
+        .map(|o| {
+            let b = super::check::Box2::of(o);
+            let blocks = o.position[2] < DOOR_HEAD
+                && doors.iter().any(|z| super::check::penetration(&b, z) > 0.0);
+            // (a flat thing, a mat or a rug, lies wherever it is put: not a relaxed piece)
+            let relaxed =
+                o.placed_by == PlacedBy::Fallback && o.size[2] >= super::check::fronts::FLAT;
+            usize::from(relaxed) + usize::from(blocks)
+        })
+        .sum()
+}
 
 /// Lays out `spec` (validated first). Deterministic for a given seed. A spec with an object
 /// larger than its room, or whose objects cannot all be placed without interpenetrating, is
@@ -296,7 +326,22 @@ fn layout_in_pinned(
         })
         .collect();
     let mut best: Option<(f64, Layout)> = None;
-    for attempt in 0..opts.restarts.max(1) {
+    // A few pieces that still relax one after the restarts try more doors and windows: in a
+    // small room a door where the only free wall a TV fits leaves the loveseat no wall to face
+    // it from, where another door leaves both (cheap for a few pieces; a hall keeps its count).
+    let budget = opts.restarts.max(1);
+    let more = if prob.inst.len() <= FEW_PIECES {
+        FALLBACK_RESTARTS
+    } else {
+        1
+    };
+    for attempt in 0..budget * more {
+        let relaxed = best
+            .as_ref()
+            .is_some_and(|(_, l)| relaxed_or_blocking(l) > 0);
+        if attempt >= budget && !relaxed {
+            break;
+        }
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(
             opts.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ attempt as u64,
         );
@@ -316,7 +361,12 @@ fn layout_in_pinned(
         l.openings = prob.openings.clone();
         let q =
             quality(&prob, &l) - 3.0 * super::check::fronts::fronts_blocked(&l, spec).len() as f64;
-        if best.as_ref().is_none_or(|b| q > b.0) {
+        // (an extra attempt is taken only for fewer relaxed pieces and doors blocked, not a
+        // higher score alone)
+        let better = best.as_ref().is_none_or(|b| {
+            q > b.0 && (attempt < budget || relaxed_or_blocking(&l) < relaxed_or_blocking(&b.1))
+        });
+        if better {
             best = Some((q, l));
         }
     }

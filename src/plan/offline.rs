@@ -22,6 +22,7 @@ mod companions;
 mod counts;
 mod describe;
 mod outdoors;
+mod placeable;
 mod purpose;
 mod relations;
 mod roles;
@@ -235,6 +236,11 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
     d.notes.extend(fitted);
+    // a room the text calls tiny (no stated size): defaults its walls cannot take go too
+    if d.r.scale < sizing::TINY_SCALE && d.r.room.is_none() {
+        let gone = placeable::trim_unplaceable(&mut spec, &d.named, &essential);
+        d.notes.extend(gone);
+    }
     let understood = describe::understood(&d, &spec, &styles);
     Ok(Plan {
         spec,

@@ -159,6 +159,9 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
     room
 }
 
+/// Scale below which the text called the room tiny, not just small ("tiny", "cramped").
+pub(super) const TINY_SCALE: f64 = 0.45;
+
 /// Height below which a thing is at floor level (metres): see [`small_room`].
 const LOW: f64 = 0.3;
 
@@ -180,7 +183,7 @@ fn small_room(
         .collect();
     let margin = crate::plan::capacity::USE_MARGIN;
     // The share of the floor the named furniture may take: more in a room called tiny.
-    let occupancy = if scale < 0.45 { 0.6 } else { 0.5 };
+    let occupancy = if scale < TINY_SCALE { 0.6 } else { 0.5 };
     // Only what stands on the floor takes floor (a mirror on the wall, a lamp on a table no).
     let on_floor = |c: &str| {
         use crate::plan::gcp::classes::{effective_class, Class};
@@ -207,7 +210,7 @@ fn small_room(
         .map(|i| i.size[0].max(i.size[1]))
         .fold(0.0, f64::max);
     let base_side: f64 = match scene_type {
-        SceneType::Indoor if scale < 0.45 => 1.8,
+        SceneType::Indoor if scale < TINY_SCALE => 1.8,
         SceneType::Indoor => 2.2,
         SceneType::Outdoor => 6.0,
     };
