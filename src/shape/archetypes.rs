@@ -6,6 +6,7 @@ use super::appliances as a;
 use super::audio as au;
 use super::backyard as by;
 use super::barriers as ba;
+use super::beasts as bs;
 use super::bellhop as bh;
 use super::bins as bn;
 use super::boards as bd;
@@ -30,6 +31,7 @@ use super::engines as en;
 use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
+use super::fossils as fos;
 use super::frames as fr;
 use super::furniture as f;
 use super::gadgets as gd;
@@ -74,6 +76,7 @@ use super::poles as po;
 use super::prints as pr;
 use super::racks as rk;
 use super::recliners as rc;
+use super::riders as rd;
 use super::rigs;
 use super::rocks;
 use super::salon as sa;
@@ -117,14 +120,20 @@ pub struct Archetype {
 }
 
 impl Archetype {
-    /// The parts at `size`, shelves holding `goods`.
-    pub fn parts_holding(&self, size: [f64; 3], goods: Option<super::goods::Goods>) -> Vec<Part> {
+    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`.
+    pub fn parts_holding(
+        &self,
+        size: [f64; 3],
+        goods: Option<super::goods::Goods>,
+        animal: Option<&'static super::animals::Animal>,
+    ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
             w: size[0],
             d: size[1],
             h: size[2],
             goods,
+            animal,
         };
         (self.layout)(&mut b);
         b.parts
@@ -252,7 +261,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("robot", t::robot, [Body], [Body => [0.78, 0.80, 0.83], Metal => [0.35, 0.36, 0.38], Light => [0.35, 0.80, 0.95]]),
     arch!("lounger", t::lounger, [Upholstery], [Upholstery => [0.92, 0.90, 0.85], Frame => [0.55, 0.40, 0.26]]),
     arch!("dispenser", t::dispenser, [Body], [Body => WHITE, Glass => [0.55, 0.72, 0.88], Handle => [0.25, 0.40, 0.80]]),
-    arch!("quadruped", t::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
+    arch!("quadruped", bs::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
     arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
     arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
@@ -502,6 +511,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("bassinet", nu::bassinet, [Body, Shade], [Body => [0.93, 0.92, 0.90], Shade => [0.93, 0.92, 0.90], Mattress => [0.98, 0.97, 0.95], Pillow => [0.80, 0.88, 0.95], Frame => [0.75, 0.62, 0.45]]),
     arch!("cradle", nu::cradle, [Frame, Top], [Frame => [0.66, 0.48, 0.30], Top => [0.66, 0.48, 0.30], Mattress => [0.96, 0.95, 0.92], Pillow => [0.95, 0.90, 0.80]]),
     arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK, Cushion => [0.16, 0.11, 0.07]]),
+    arch!("spring_rider", rd::spring_rider, [Body], [Body => [0.85, 0.20, 0.15], Metal => [0.95, 0.78, 0.12], Frame => [0.35, 0.36, 0.38], Handle => [0.12, 0.12, 0.13], Interior => BLACK, Cushion => [0.95, 0.85, 0.30]]),
+    arch!("fossil", fos::dinosaur_skeleton, [Body], [Body => [0.80, 0.72, 0.58], Metal => [0.25, 0.26, 0.28], Stone => [0.22, 0.22, 0.23], Interior => [0.20, 0.16, 0.12]]),
     arch!("birdhouse", po::birdhouse, [Body], [Body => [0.62, 0.45, 0.28], Top => [0.45, 0.22, 0.16], Trunk => [0.40, 0.30, 0.20], Metal => [0.30, 0.30, 0.32], Interior => BLACK]),
     arch!("bird_feeder", po::bird_feeder, [Top], [Top => [0.25, 0.40, 0.25], Frame => [0.25, 0.25, 0.27], Metal => [0.25, 0.25, 0.27], Soil => [0.78, 0.66, 0.42], Pane => [0.85, 0.90, 0.92]]),
     arch!("patio_heater", po::patio_heater, [Body, Shade], [Body => [0.22, 0.22, 0.24], Shade => [0.72, 0.73, 0.75], Metal => [0.35, 0.35, 0.37], Light => [1.0, 0.45, 0.12]]),
