@@ -13,6 +13,7 @@ use super::boards as bd;
 use super::boathouse as bt;
 use super::booths as bo;
 use super::bowls as bw;
+use super::braziers as bz;
 pub use super::builder::{frame_along, Builder};
 use super::canopy as cb;
 use super::care as cw;
@@ -48,6 +49,7 @@ use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
 use super::jobtables as jt;
+use super::kiosks as ks;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -239,6 +241,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
+    arch!("arcade", ks::arcade, [Canvas], [Body => [0.09, 0.09, 0.11], Screen => [0.22, 0.45, 0.72], Canvas => [0.20, 0.35, 0.90], Top => [0.14, 0.14, 0.17], Door => [0.30, 0.30, 0.33], Light => [1.0, 0.85, 0.35], Handle => [0.90, 0.12, 0.10], Metal => STEEL, Frame => [0.16, 0.16, 0.18], Interior => BLACK]),
+    arch!("atm", ks::atm, [Canvas], [Body => [0.70, 0.71, 0.73], Canvas => [0.10, 0.32, 0.65], Top => [0.22, 0.23, 0.26], Keys => [0.82, 0.82, 0.84], Door => [0.60, 0.61, 0.64], Light => [0.35, 0.90, 0.45], Metal => STEEL, Handle => STEEL, Interior => BLACK]),
     arch!("pail", bw::pail, [Metal], [Metal => [0.74, 0.76, 0.78], Interior => [0.52, 0.54, 0.56], Glass => [0.45, 0.60, 0.70], Handle => [0.55, 0.56, 0.58], Trunk => [0.55, 0.38, 0.22]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
     arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
@@ -255,6 +259,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("tower", st::tower, [Body], [Frame => [0.85, 0.84, 0.80], Body => [0.85, 0.20, 0.15], Shade => [0.90, 0.88, 0.84], Metal => [0.60, 0.60, 0.62]]),
     arch!("castle", st::castle, [Body], [Body => [0.84, 0.74, 0.55], Top => [0.78, 0.66, 0.46]]),
     arch!("lantern", st::lantern, [Body, Top], [Body => STONE, Top => [0.58, 0.56, 0.52], Light => [1.0, 0.86, 0.55]]),
+    arch!("brazier", bz::brazier, [Metal], [Metal => [0.17, 0.16, 0.15], Top => [0.95, 0.32, 0.08], Interior => [0.10, 0.09, 0.08], Light => [1.0, 0.72, 0.25]]),
     arch!("palm", st::palm, [Foliage], [Trunk => [0.52, 0.40, 0.28], Foliage => [0.22, 0.50, 0.18]]),
     arch!("tripod", t::tripod, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.20, 0.20, 0.21], Glass => [0.25, 0.35, 0.45]]),
     arch!("console", t::console, [Body, Top], [Body => [0.30, 0.32, 0.36], Top => [0.45, 0.47, 0.50]]),

@@ -19,7 +19,7 @@ pub fn pattern(b: &mut Builder, a: &Animal, plan: &Plan) {
                 let t = -0.9 + 1.8 * (k as f64 + 0.5) / n as f64;
                 let s = (1.0 - t * t).sqrt();
                 let c = [0.0, yc + ry * t, zc];
-                b.ellipsoid(Top, c, [1.02 * ra * s, 0.035 * ry, 1.02 * rz * s]);
+                b.ellipsoid(Top, c, [1.02 * ra * s, 0.06 * ry, 1.02 * rz * s]);
             }
             if let Some((p0, p1, r0, r1)) = plan.neck {
                 for k in 1..6 {
@@ -35,7 +35,7 @@ pub fn pattern(b: &mut Builder, a: &Animal, plan: &Plan) {
                 for k in 1..5 {
                     let z = plan.leg_top * (0.15 + 0.2 * k as f64);
                     let r = 0.85 * lr * (1.0 + 0.35 * z / plan.leg_top) * 1.08;
-                    b.ellipsoid(Top, [f[0], f[1], z], [r, r, 0.025 * plan.leg_top]);
+                    b.ellipsoid(Top, [f[0], f[1], z], [r, r, 0.04 * plan.leg_top]);
                 }
             }
         }
