@@ -83,3 +83,60 @@ fn a_brazier_is_fire_in_a_bowl_on_splayed_legs() {
         assert!(solid.is_empty(), "{size:?}: a post, not legs");
     }
 }
+
+#[test]
+fn a_food_cart_has_wheels_a_push_bar_and_an_umbrella() {
+    for c in ["hot dog cart", "ice cream cart"] {
+        for size in sized(c, [1.2, 1.1, 0.9]) {
+            let s = drawn(c, size, 5);
+            let h = size[2];
+            let wheels = of(&s, Role::Tyre);
+            assert!(!wheels.is_empty(), "{c} {size:?}: no wheels");
+            assert!(
+                range(&wheels, 2).0 < 0.01 * h,
+                "{c} {size:?}: wheels off the ground"
+            );
+            let umbrella = of(&s, Role::Shade);
+            let (x0, x1) = range(&umbrella, 0);
+            assert!(
+                range(&umbrella, 2).0 > 0.7 * h,
+                "{c} {size:?}: umbrella low"
+            );
+            assert!(
+                x1 - x0 > 0.8 * size[0],
+                "{c} {size:?}: umbrella {:.2}",
+                x1 - x0
+            );
+            // The push bar sticks out past the end of the body.
+            let body = of(&s, Role::Body);
+            let bar = of(&s, Role::Handle);
+            assert!(
+                range(&bar, 0).0 < range(&body, 0).0 - 0.05 * size[0],
+                "{c} {size:?}: no push bar"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_ticket_booth_is_a_closed_cabin_with_a_window_over_a_counter() {
+    for size in sized("ticket booth", [1.2, 1.1, 0.9]) {
+        let s = drawn("ticket booth", size, 5);
+        let (d, h) = (size[1], size[2]);
+        let window = of(&s, Role::Glass);
+        assert!(!window.is_empty(), "{size:?}: no window");
+        assert!(
+            range(&window, 1).0 > 0.3 * d,
+            "{size:?}: window not at the front"
+        );
+        let (z0, z1) = range(&window, 2);
+        assert!(
+            z0 > 0.3 * h && z1 < 0.8 * h,
+            "{size:?}: window {z0:.2}..{z1:.2}"
+        );
+        // Walls all round: the back wall reaches up to the roof.
+        let back = within(&of(&s, Role::Body), |p| p[1] < -0.4 * d);
+        assert!(range(&back, 2).1 > 0.75 * h, "{size:?}: open at the back");
+        assert!(of(&s, Role::Tyre).is_empty(), "{size:?}: wheels");
+    }
+}

@@ -104,6 +104,7 @@ use super::transit as tt;
 use super::utility as ut;
 use super::vanities as va;
 use super::vehicles as ve;
+use super::vendors as vd;
 use super::vitrines as vi;
 use super::wards as wd;
 use super::washroom as wa;
@@ -297,6 +298,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
     arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
     arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
+    arch!("food_cart", vd::food_cart, [Body], [Body => [0.85, 0.86, 0.88], Metal => STEEL, Handle => [0.15, 0.15, 0.16], Tyre => [0.10, 0.10, 0.10], Frame => [0.80, 0.80, 0.82], Shade => [0.85, 0.20, 0.15], Canvas => [0.95, 0.85, 0.25]]),
+    arch!("ticket_booth", vd::ticket_booth, [Body], [Body => [0.78, 0.18, 0.15], Top => [0.93, 0.92, 0.88], Glass => [0.55, 0.70, 0.78], Interior => BLACK, Canvas => [0.98, 0.85, 0.30], Frame => [0.60, 0.14, 0.12], Handle => BRASS, Shade => [0.20, 0.22, 0.30]]),
     arch!("shelter", mk::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
     arch!("armour", mk::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
     arch!("barrel", mk::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),

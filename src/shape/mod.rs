@@ -122,6 +122,7 @@ mod transit;
 mod utility;
 mod vanities;
 mod vehicles;
+mod vendors;
 mod vitrines;
 mod wards;
 mod washroom;
