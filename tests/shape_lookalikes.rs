@@ -140,3 +140,27 @@ fn a_ticket_booth_is_a_closed_cabin_with_a_window_over_a_counter() {
         assert!(of(&s, Role::Tyre).is_empty(), "{size:?}: wheels");
     }
 }
+
+#[test]
+fn a_pergolas_climber_is_leaves_along_a_post_and_the_rafters_not_balls() {
+    for size in sized("pergola structure", [1.3, 1.4, 1.0]) {
+        let ps = dreamscene::shape::parts("pergola structure", size).unwrap();
+        let leaves: Vec<_> = ps.iter().filter(|p| p.role == Role::Foliage).collect();
+        assert!(leaves.len() > 40, "{size:?}: {} leaves", leaves.len());
+        for p in &leaves {
+            let pts = p.prim.hull_points();
+            let ext = (0..3)
+                .map(|a| range(&pts, a))
+                .map(|(lo, hi)| hi - lo)
+                .fold(0.0, f64::max);
+            assert!(ext < 0.2, "{size:?}: a leaf {ext:.2} m across");
+        }
+        let s = drawn("pergola structure", size, 5);
+        let green = of(&s, Role::Foliage);
+        let (z0, z1) = range(&green, 2);
+        assert!(
+            z0 < 0.2 * size[2] && z1 > 0.9 * size[2],
+            "{size:?}: leaves {z0:.2}..{z1:.2}"
+        );
+    }
+}
