@@ -62,7 +62,7 @@ pub fn pergola(b: &mut Builder) {
     let mut path = pts.clone();
     path.push(rafter);
     path.push([x + 0.6 * hw, y - 0.2, h + 0.01]);
-    let leaf = 0.07 * (h / 2.6).min(1.0).max(0.5);
+    let leaf = 0.07 * (h / 2.6).clamp(0.5, 1.0);
     let mut k = 0u32;
     for w in path.windows(2) {
         let d: f64 = (0..3)

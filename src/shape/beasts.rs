@@ -262,7 +262,7 @@ fn horns(b: &mut Builder, a: &Animal, on_head: &dyn Fn(V3) -> V3, hrz: f64) {
                     p,
                     add(p, [sx * 0.05 * l, -0.25 * l, 0.55 * l]),
                     add(p, [sx * 0.12 * l, -0.7 * l, 0.7 * l]),
-                    add(p, [sx * 0.15 * l, -1.0 * l, 0.45 * l]),
+                    add(p, [sx * 0.15 * l, -l, 0.45 * l]),
                 ];
                 for (i, w) in pts.windows(2).enumerate() {
                     let r = 0.12 * l * (1.0 - 0.3 * i as f64);

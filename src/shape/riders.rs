@@ -9,7 +9,7 @@ use super::parts::{rot_z, V3};
 pub fn spring_rider(b: &mut Builder) {
     let first = b.parts.len();
     let along_x = b.w > b.d;
-    let (w, d, h) = (b.w, b.d, b.h);
+    let (w, d) = (b.w, b.d);
     if along_x {
         (b.w, b.d) = (d, w);
     }
@@ -18,7 +18,6 @@ pub fn spring_rider(b: &mut Builder) {
         (b.w, b.d) = (w, d);
         b.turn_from(first, rot_z(-std::f64::consts::FRAC_PI_2));
     }
-    debug_assert_eq!(b.h, h);
 }
 
 fn draw_along_y(b: &mut Builder) {
