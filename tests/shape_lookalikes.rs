@@ -164,3 +164,28 @@ fn a_pergolas_climber_is_leaves_along_a_post_and_the_rafters_not_balls() {
         );
     }
 }
+
+#[test]
+fn a_surgical_lights_heads_are_deep_domes_over_their_lit_faces() {
+    for size in sized("surgical light", [1.2, 1.1, 1.2]) {
+        let s = drawn("surgical light", size, 5);
+        let shade = of(&s, Role::Shade);
+        for side in [-1.0, 1.0] {
+            let dome = within(&shade, |p| p[0] * side > 0.0);
+            let (z0, z1) = range(&dome, 2);
+            let (d0, d1) = range(&dome, 0);
+            assert!(
+                z1 - z0 > 0.25 * (d1 - d0),
+                "{size:?}: a flat plate, not a dome"
+            );
+            // Highest at its middle, down to a rim round the lit face.
+            let mid = 0.5 * (d0 + d1);
+            let crown = within(&dome, |p| (p[0] - mid).abs() < 0.1 * (d1 - d0));
+            let rim = within(&dome, |p| (p[0] - mid).abs() > 0.4 * (d1 - d0));
+            assert!(
+                range(&crown, 2).1 > range(&rim, 2).1 + 0.2 * (z1 - z0),
+                "{size:?}: no crown"
+            );
+        }
+    }
+}
