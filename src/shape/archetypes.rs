@@ -6,12 +6,14 @@ use super::appliances as a;
 use super::audio as au;
 use super::backyard as by;
 use super::barriers as ba;
+use super::beasts as bs;
 use super::bellhop as bh;
 use super::bins as bn;
 use super::boards as bd;
 use super::boathouse as bt;
 use super::booths as bo;
 use super::bowls as bw;
+use super::braziers as bz;
 pub use super::builder::{frame_along, Builder};
 use super::canopy as cb;
 use super::care as cw;
@@ -30,6 +32,7 @@ use super::engines as en;
 use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
+use super::fossils as fos;
 use super::frames as fr;
 use super::furniture as f;
 use super::gadgets as gd;
@@ -46,6 +49,7 @@ use super::holders as hr;
 use super::household as ho;
 use super::instruments as ins;
 use super::jobtables as jt;
+use super::kiosks as ks;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -74,6 +78,7 @@ use super::poles as po;
 use super::prints as pr;
 use super::racks as rk;
 use super::recliners as rc;
+use super::riders as rd;
 use super::rigs;
 use super::rocks;
 use super::salon as sa;
@@ -99,6 +104,7 @@ use super::transit as tt;
 use super::utility as ut;
 use super::vanities as va;
 use super::vehicles as ve;
+use super::vendors as vd;
 use super::vitrines as vi;
 use super::wards as wd;
 use super::washroom as wa;
@@ -117,14 +123,20 @@ pub struct Archetype {
 }
 
 impl Archetype {
-    /// The parts at `size`, shelves holding `goods`.
-    pub fn parts_holding(&self, size: [f64; 3], goods: Option<super::goods::Goods>) -> Vec<Part> {
+    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`.
+    pub fn parts_holding(
+        &self,
+        size: [f64; 3],
+        goods: Option<super::goods::Goods>,
+        animal: Option<&'static super::animals::Animal>,
+    ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
             w: size[0],
             d: size[1],
             h: size[2],
             goods,
+            animal,
         };
         (self.layout)(&mut b);
         b.parts
@@ -230,6 +242,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
     arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
+    arch!("arcade", ks::arcade, [Canvas], [Body => [0.09, 0.09, 0.11], Screen => [0.22, 0.45, 0.72], Canvas => [0.20, 0.35, 0.90], Top => [0.14, 0.14, 0.17], Door => [0.30, 0.30, 0.33], Light => [1.0, 0.85, 0.35], Handle => [0.90, 0.12, 0.10], Metal => STEEL, Frame => [0.16, 0.16, 0.18], Interior => BLACK]),
+    arch!("atm", ks::atm, [Canvas], [Body => [0.70, 0.71, 0.73], Canvas => [0.10, 0.32, 0.65], Top => [0.22, 0.23, 0.26], Keys => [0.82, 0.82, 0.84], Door => [0.60, 0.61, 0.64], Light => [0.35, 0.90, 0.45], Metal => STEEL, Handle => STEEL, Interior => BLACK]),
     arch!("pail", bw::pail, [Metal], [Metal => [0.74, 0.76, 0.78], Interior => [0.52, 0.54, 0.56], Glass => [0.45, 0.60, 0.70], Handle => [0.55, 0.56, 0.58], Trunk => [0.55, 0.38, 0.22]]),
     arch!("cone", m::cone, [Body], [Body => [0.95, 0.45, 0.10]]),
     arch!("vehicle", m::vehicle, [Body], [Body => [0.70, 0.12, 0.10], Glass => [0.22, 0.27, 0.32]]),
@@ -246,13 +260,14 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("tower", st::tower, [Body], [Frame => [0.85, 0.84, 0.80], Body => [0.85, 0.20, 0.15], Shade => [0.90, 0.88, 0.84], Metal => [0.60, 0.60, 0.62]]),
     arch!("castle", st::castle, [Body], [Body => [0.84, 0.74, 0.55], Top => [0.78, 0.66, 0.46]]),
     arch!("lantern", st::lantern, [Body, Top], [Body => STONE, Top => [0.58, 0.56, 0.52], Light => [1.0, 0.86, 0.55]]),
+    arch!("brazier", bz::brazier, [Metal], [Metal => [0.17, 0.16, 0.15], Top => [0.95, 0.32, 0.08], Interior => [0.10, 0.09, 0.08], Light => [1.0, 0.72, 0.25]]),
     arch!("palm", st::palm, [Foliage], [Trunk => [0.52, 0.40, 0.28], Foliage => [0.22, 0.50, 0.18]]),
     arch!("tripod", t::tripod, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.20, 0.20, 0.21], Glass => [0.25, 0.35, 0.45]]),
     arch!("console", t::console, [Body, Top], [Body => [0.30, 0.32, 0.36], Top => [0.45, 0.47, 0.50]]),
     arch!("robot", t::robot, [Body], [Body => [0.78, 0.80, 0.83], Metal => [0.35, 0.36, 0.38], Light => [0.35, 0.80, 0.95]]),
     arch!("lounger", t::lounger, [Upholstery], [Upholstery => [0.92, 0.90, 0.85], Frame => [0.55, 0.40, 0.26]]),
     arch!("dispenser", t::dispenser, [Body], [Body => WHITE, Glass => [0.55, 0.72, 0.88], Handle => [0.25, 0.40, 0.80]]),
-    arch!("quadruped", t::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
+    arch!("quadruped", bs::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
     arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
     arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
@@ -283,6 +298,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
     arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
     arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
+    arch!("food_cart", vd::food_cart, [Body], [Body => [0.85, 0.86, 0.88], Metal => STEEL, Handle => [0.15, 0.15, 0.16], Tyre => [0.10, 0.10, 0.10], Frame => [0.80, 0.80, 0.82], Shade => [0.85, 0.20, 0.15], Canvas => [0.95, 0.85, 0.25]]),
+    arch!("ticket_booth", vd::ticket_booth, [Body], [Body => [0.78, 0.18, 0.15], Top => [0.93, 0.92, 0.88], Glass => [0.55, 0.70, 0.78], Interior => BLACK, Canvas => [0.98, 0.85, 0.30], Frame => [0.60, 0.14, 0.12], Handle => BRASS, Shade => [0.20, 0.22, 0.30]]),
     arch!("shelter", mk::shelter, [Metal, Top], [Metal => [0.35, 0.37, 0.40], Glass => [0.62, 0.75, 0.82], Top => [0.30, 0.32, 0.35], Seat => [0.55, 0.40, 0.26], Body => [0.15, 0.35, 0.65]]),
     arch!("armour", mk::armour, [Body], [Body => STEEL, Metal => [0.55, 0.56, 0.58], Frame => DARK_WOOD, Interior => BLACK]),
     arch!("barrel", mk::barrel, [Body], [Body => [0.55, 0.38, 0.22], Top => [0.50, 0.34, 0.20], Metal => [0.25, 0.25, 0.27]]),
@@ -503,6 +520,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("bassinet", nu::bassinet, [Body, Shade], [Body => [0.93, 0.92, 0.90], Shade => [0.93, 0.92, 0.90], Mattress => [0.98, 0.97, 0.95], Pillow => [0.80, 0.88, 0.95], Frame => [0.75, 0.62, 0.45]]),
     arch!("cradle", nu::cradle, [Frame, Top], [Frame => [0.66, 0.48, 0.30], Top => [0.66, 0.48, 0.30], Mattress => [0.96, 0.95, 0.92], Pillow => [0.95, 0.90, 0.80]]),
     arch!("rocking_horse", nu::rocking_horse, [Body], [Body => [0.72, 0.52, 0.32], Frame => [0.50, 0.34, 0.20], Seat => [0.75, 0.12, 0.12], Interior => BLACK, Cushion => [0.16, 0.11, 0.07]]),
+    arch!("spring_rider", rd::spring_rider, [Body], [Body => [0.85, 0.20, 0.15], Metal => [0.95, 0.78, 0.12], Frame => [0.35, 0.36, 0.38], Handle => [0.12, 0.12, 0.13], Interior => BLACK, Cushion => [0.95, 0.85, 0.30]]),
+    arch!("fossil", fos::dinosaur_skeleton, [Body], [Body => [0.80, 0.72, 0.58], Metal => [0.25, 0.26, 0.28], Stone => [0.22, 0.22, 0.23], Interior => [0.20, 0.16, 0.12]]),
     arch!("birdhouse", po::birdhouse, [Body], [Body => [0.62, 0.45, 0.28], Top => [0.45, 0.22, 0.16], Trunk => [0.40, 0.30, 0.20], Metal => [0.30, 0.30, 0.32], Interior => BLACK]),
     arch!("bird_feeder", po::bird_feeder, [Top], [Top => [0.25, 0.40, 0.25], Frame => [0.25, 0.25, 0.27], Metal => [0.25, 0.25, 0.27], Soil => [0.78, 0.66, 0.42], Pane => [0.85, 0.90, 0.92]]),
     arch!("patio_heater", po::patio_heater, [Body, Shade], [Body => [0.22, 0.22, 0.24], Shade => [0.72, 0.73, 0.75], Metal => [0.35, 0.35, 0.37], Light => [1.0, 0.45, 0.12]]),

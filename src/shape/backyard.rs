@@ -40,7 +40,8 @@ pub fn pergola(b: &mut Builder) {
         let y = -hd + 0.1 + i as f64 * (b.d - 0.2) / (n - 1) as f64;
         b.cuboid(Frame, [-hw, y - t, zb + bh], [hw, y + t, h]);
     }
-    // A vine up the left front post and along its beam.
+    // A vine up the left front post, along its beam and out over the front rafters: a stem
+    // with leaves along it, each a small flat blade at its own angle.
     let (x, y) = (-(px - s / 2.0), py - s / 2.0);
     let mut pts = vec![];
     for k in 0..8 {
@@ -48,16 +49,44 @@ pub fn pergola(b: &mut Builder) {
         let a = k as f64 * 1.7;
         pts.push([x + 0.6 * s * a.cos(), y + 0.6 * s * a.sin(), z]);
     }
+    let top = zb + bh + 0.02;
+    pts.push([x, y, top]);
+    pts.push([x, -py + s, top]);
     b.polyline(Trunk, &pts, 0.015);
-    for k in 0..10 {
-        let f = k as f64 / 9.0;
-        let (vy, vz) = if k < 4 {
-            (y, (0.3 + 0.6 * f * 2.2) * zb)
-        } else {
-            (y - (f - 0.4) * 1.5 * hd, zb + 0.5 * bh)
-        };
-        let r = (0.2 + 0.06 * (k % 3) as f64) * (h / 2.6).min(1.0);
-        b.ellipsoid(Foliage, [x, vy, vz], [r.min(overhang + 0.1), r, 0.7 * r]);
+    let rafter = [x, y - 0.2, h + 0.01];
+    b.polyline(
+        Trunk,
+        &[[x, y - 0.2, top], rafter, [x + 0.6 * hw, y - 0.2, h + 0.01]],
+        0.01,
+    );
+    let mut path = pts.clone();
+    path.push(rafter);
+    path.push([x + 0.6 * hw, y - 0.2, h + 0.01]);
+    let leaf = 0.07 * (h / 2.6).clamp(0.5, 1.0);
+    let mut k = 0u32;
+    for w in path.windows(2) {
+        let d: f64 = (0..3)
+            .map(|i| (w[1][i] - w[0][i]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        let n = (d / (0.8 * leaf)).ceil() as usize;
+        for j in 0..n {
+            let t = j as f64 / n as f64;
+            let c = [0, 1, 2].map(|i| w[0][i] + t * (w[1][i] - w[0][i]));
+            k += 1;
+            let a = k as f64 * 2.4;
+            let off = [
+                0.6 * leaf * a.cos(),
+                0.6 * leaf * a.sin(),
+                0.3 * leaf * (1.3 * a).sin(),
+            ];
+            let c = [c[0] + off[0], c[1] + off[1], (c[2] + off[2]).min(h - 0.01)];
+            let rot = super::parts::mat_mul(
+                &super::parts::rot_z(a),
+                &super::parts::rot_x(0.6 * (0.7 * a).sin()),
+            );
+            b.ellipsoid_rot(Foliage, k % 5, c, [leaf, 0.6 * leaf, 0.12 * leaf], rot);
+        }
     }
 }
 

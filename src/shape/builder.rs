@@ -12,6 +12,8 @@ pub struct Builder {
     pub h: f64,
     /// What the category's shelves hold (`kb/shelf_goods.txt`); `None` where it has no row.
     pub goods: Option<super::goods::Goods>,
+    /// The animal a quadruped is drawn as (`kb/animals.txt`); `None` for other categories.
+    pub animal: Option<&'static super::animals::Animal>,
 }
 
 impl Builder {

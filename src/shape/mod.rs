@@ -13,18 +13,21 @@
 //! (a 2.1 m sofa gets the 60 000 cap, a rug ~45 000). [`ShapeOptions::gaussians`] overrides it;
 //! the result has that many Gaussians to within a few percent (rounding of the sample grids).
 mod amusements;
+mod animals;
 mod appliances;
 mod archetypes;
 mod audio;
 mod backs;
 mod backyard;
 mod barriers;
+mod beasts;
 mod bellhop;
 mod bins;
 mod boards;
 mod boathouse;
 mod booths;
 mod bowls;
+mod braziers;
 mod builder;
 mod canopy;
 mod care;
@@ -33,6 +36,7 @@ mod cases;
 mod clearglass;
 mod clocks;
 mod coast;
+mod coats;
 mod crafts;
 mod crates;
 mod daily;
@@ -44,6 +48,7 @@ mod fittings;
 mod fixtures;
 mod florist;
 mod forms;
+mod fossils;
 mod frames;
 pub mod functions;
 mod furniture;
@@ -62,6 +67,7 @@ mod holders;
 mod household;
 mod instruments;
 mod jobtables;
+mod kiosks;
 mod laundry;
 mod lockers;
 mod lounge;
@@ -90,6 +96,7 @@ mod poles;
 mod prints;
 mod racks;
 mod recliners;
+mod riders;
 mod rigs;
 mod rocks;
 mod salon;
@@ -115,6 +122,7 @@ mod transit;
 mod utility;
 mod vanities;
 mod vehicles;
+mod vendors;
 mod vitrines;
 mod wards;
 mod washroom;
@@ -282,7 +290,27 @@ pub fn parts_described(
 ) -> Result<Vec<Part>, ShapeError> {
     check_size(size)?;
     let arch = archetypes::get(archetype_described(category, description));
-    Ok(arch.parts_holding(size, goods::goods_of(category, arch.name)))
+    Ok(arch.parts_holding(
+        size,
+        goods::goods_of(category, arch.name),
+        animal_for(category, arch.name),
+    ))
+}
+
+/// The animal row a category is drawn as: its own, or the table's `default` for a quadruped
+/// the table does not list; `None` for archetypes that draw no animal.
+fn animal_for(category: &str, archetype: &str) -> Option<&'static animals::Animal> {
+    (archetype == "quadruped")
+        .then(|| animals::animal_of(category).unwrap_or_else(animals::default_animal))
+}
+
+/// The rows of the animal table (`kb/animals.txt`) as (category, features known), and the
+/// lines of it that do not parse, with why.
+pub fn animal_rows() -> (Vec<&'static str>, Vec<String>) {
+    (
+        animals::rows().into_iter().map(|(n, _)| n).collect(),
+        animals::bad_lines(),
+    )
 }
 
 /// What a category's shelves hold (`kb/shelf_goods.txt`): its row, else its archetype's;
@@ -318,9 +346,13 @@ pub fn build(
     }
     let arch = archetypes::get(archetype_described(category, description));
     let goods = goods::goods_of(category, arch.name);
-    let parts = arch.parts_holding(size, goods);
-    let palette = materials::Palette::new(description, arch.main, arch.defaults)
-        .holding(goods.unwrap_or_default().palette());
+    let animal = animal_for(category, arch.name);
+    let parts = arch.parts_holding(size, goods, animal);
+    let palette = match animal {
+        Some(a) => animal_palette(description, arch.main, arch.defaults, a),
+        None => materials::Palette::new(description, arch.main, arch.defaults),
+    }
+    .holding(goods.unwrap_or_default().palette());
     let area: f64 = parts.iter().map(|p| p.prim.area()).sum();
     let n = opts
         .gaussians
@@ -340,6 +372,39 @@ pub fn build(
         }
     }
     Ok(g)
+}
+
+/// An animal's colours: its row's over the archetype's defaults, the description's colour word
+/// on its coat; where that word makes the coat the colour of the pattern ("a black and white
+/// cow"), the pattern takes the row's coat colour so it still shows.
+fn animal_palette(
+    description: &str,
+    main: &[Role],
+    defaults: &[(Role, materials::Rgb)],
+    a: &animals::Animal,
+) -> materials::Palette {
+    let mut colours: Vec<(Role, materials::Rgb)> = defaults.to_vec();
+    for (role, rgb) in a.colours() {
+        colours.retain(|c| c.0 != role);
+        colours.push((role, rgb));
+    }
+    let p = materials::Palette::new(description, main, &colours);
+    let (coat, marks) = (p.colour(Role::Body, 0), p.colour(Role::Top, 0));
+    let apart: f32 = (0..3).map(|i| (coat[i] - marks[i]).abs()).sum();
+    if apart > 0.3 {
+        return p;
+    }
+    colours.retain(|c| c.0 != Role::Top);
+    let light = coat.iter().sum::<f32>() > 1.5;
+    let row = a.coat;
+    let far = (0..3).map(|i| (coat[i] - row[i]).abs()).sum::<f32>() > 0.3;
+    let other = match (far, light) {
+        (true, _) => row,
+        (false, true) => [0.08, 0.08, 0.09],
+        (false, false) => [0.92, 0.91, 0.88],
+    };
+    colours.push((Role::Top, other));
+    materials::Palette::new(description, main, &colours)
 }
 
 /// Surface Gaussians of `parts` about `spacing` apart, coloured by `palette`; samples outside the
@@ -446,7 +511,11 @@ mod kb_tests {
             let palette = materials::Palette::new("", arch.main, arch.defaults);
             let [hw, hd, h] = [o.size[0] / 2.0, o.size[1] / 2.0, o.size[2]];
             let spacing = 0.03;
-            for part in arch.parts_holding(o.size, goods::goods_of(&o.category, arch.name)) {
+            for part in arch.parts_holding(
+                o.size,
+                goods::goods_of(&o.category, arch.name),
+                animal_for(&o.category, arch.name),
+            ) {
                 let mut raw = vec![];
                 part.prim.sample(
                     spacing,

@@ -54,6 +54,7 @@ pub fn forge(b: &mut Builder) {
         d: (0.8 * (hw - xa)).min(0.45 * ah),
         h: ah,
         goods: None,
+        animal: None,
     };
     super::workshop::anvil(&mut anvil);
     b.parts.extend(anvil.parts);

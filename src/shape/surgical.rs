@@ -10,7 +10,7 @@ use super::parts::IDENTITY;
 pub fn surgical_light(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let head_r = (0.45 * hd).min(0.5 * hw).min(0.35);
-    let head_h = (0.35 * head_r).min(0.1);
+    let head_h = (0.55 * head_r).min(0.16);
     // The ceiling plate and the drop tube down to the hub.
     b.cylinder(Metal, [0.0, 0.0, h - 0.03], 0.15 * hd.min(hw) + 0.05, 0.03);
     let zh = 0.55 * h;
@@ -27,27 +27,31 @@ pub fn surgical_light(b: &mut Builder) {
             &[[x, y, zh - 0.12], [x, y, zhead + head_h + 0.02]],
             0.02,
         );
-        // The head: a shallow dome, its lit face down, a handle out of its centre.
+        // The head: a deep dome over a rim, its lit face down with a ring of lamps in it;
+        // drawn about its own centre, then set at the arm's end.
+        let first = b.parts.len();
         b.revolved(
             Shade,
             0,
-            [x, y, zhead],
+            [0.0, 0.0, 0.0],
             IDENTITY,
             1.0,
             vec![
                 [0.0, 0.0],
                 [head_r, 0.0],
-                [0.9 * head_r, 0.6 * head_h],
-                [0.4 * head_r, head_h],
+                [head_r, 0.15 * head_h],
+                [0.85 * head_r, 0.6 * head_h],
+                [0.45 * head_r, head_h],
                 [0.0, head_h + 0.02],
             ],
         );
-        b.cylinder(Light, [x, y, zhead - 0.004], 0.85 * head_r, 0.004);
+        b.cylinder(Light, [0.0, 0.0, -0.004], 0.85 * head_r, 0.004);
         for k in 0..6 {
             let a = k as f64 / 6.0 * std::f64::consts::TAU;
-            let (lx, ly) = (x + 0.55 * head_r * a.cos(), y + 0.55 * head_r * a.sin());
-            b.cylinder(Metal, [lx, ly, zhead - 0.008], 0.12 * head_r, 0.004);
+            let (lx, ly) = (0.55 * head_r * a.cos(), 0.55 * head_r * a.sin());
+            b.cylinder(Metal, [lx, ly, -0.008], 0.12 * head_r, 0.004);
         }
+        b.translate_from(first, [x, y, zhead]);
         b.rod(Handle, [x, y, zhead - 0.004], [x, y, 0.0], 0.015);
     }
 }
