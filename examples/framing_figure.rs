@@ -7,7 +7,9 @@
 //! - objects in view, on average;
 //! - what a person calls poor ([`view_faults`]): views of mostly bare wall or floor, with a
 //!   blocker close to the lens, with a mirror, painting, TV or whiteboard seen edge-on, and near
-//!   copies of an earlier view; "clean" views have none of these.
+//!   copies of an earlier view; "clean" views have none of these;
+//! - close-ups of a wall ([`looks_at_wall`]): one piece against a near wall, not a view into
+//!   the room (counted apart from the poor views).
 //!
 //! Also compares the chosen views (`render_views`, what `generate` writes) with the exploring path.
 //!
@@ -16,7 +18,7 @@
 //! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
 use dreamscene::camera::scene::{
     alike, bare_wall_share, blocker_of, blocker_share, explore_path, frame_share, grazing_share,
-    render_views, view_faults, view_stats, SceneBox,
+    looks_at_wall, render_views, view_faults, view_stats, SceneBox,
 };
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -121,6 +123,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
     let (mut good, mut good_old, mut total) = (0usize, 0usize, 0usize);
     let (mut repeats, mut back, mut fore, mut shown) = (0usize, 0usize, 0usize, 0usize);
     let [mut bare, mut blocker, mut grazing, mut copy, mut clean] = [0usize; 5];
+    let mut close = 0usize;
     for prompt in prompts {
         let spec = match plan_prompt(prompt) {
             Ok(p) => p.spec,
@@ -142,6 +145,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         let stats: Vec<_> = cams.iter().map(|c| view_stats(&scene, c)).collect();
         let faults = view_faults(&scene, &cams);
         let g = stats.iter().filter(|s| s.framed_well()).count();
+        let cl = cams.iter().filter(|c| looks_at_wall(&scene, c)).count();
         let go = old
             .iter()
             .filter(|c| view_stats(&scene, c).framed_well())
@@ -165,7 +169,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
             count(|v| v.clean()),
         ];
         println!(
-            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} clean {} | {} objects: {:.50}",
+            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} clean {} close-up {cl} | {} objects: {:.50}",
             cams.len(),
             old.len(),
             iv as f64 / cams.len().max(1) as f64,
@@ -194,12 +198,13 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
                 let by = blocker_of(&scene, c, &shares)
                     .map_or(String::new(), |b| format!(" ({})", scene.objects[b].id));
                 println!(
-                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
+                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} close-up {} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
                     k + 1,
                     s.in_view,
                     s.largest,
                     s.covered,
                     bare_wall_share(&scene, c),
+                    looks_at_wall(&scene, c),
                     nearest(&scene, c),
                     blocker_share(&scene, c, &shares),
                     grazing_share(&scene, c, &shares),
@@ -221,6 +226,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         grazing += fl[2];
         copy += fl[3];
         clean += fl[4];
+        close += cl;
     }
     println!(
         "framing: {good}/{total} views framed well ({:.1}%); the exploring path: {good_old}/{total} ({:.1}%)",
@@ -234,6 +240,9 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
     println!(
         "poor views: bare {bare}, blocker {blocker}, edge-on {grazing}, near copy {copy}; clean {clean}/{total} ({:.1}%)",
         100.0 * clean as f64 / total.max(1) as f64
+    );
+    println!(
+        "close-ups of a wall (a piece against a near wall, not counted poor): {close}/{total}"
     );
     Ok(())
 }

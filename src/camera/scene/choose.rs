@@ -20,7 +20,7 @@
 //! (a near copy costs more than framing well gains). Past the first few views only clean views
 //! that frame well are taken: a small room gets fewer pictures rather than near copies, views
 //! past a wardrobe at the lens or close-ups of a bed. Host-only.
-use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
+use super::faults::{blocker_share, depth, footprint_distance, grazing_share, BARE_COVER};
 use super::views::FLAT;
 use super::views::{
     facing, hidden_share, in_frame, in_frame_within, screen_box, view_stats, ViewStats,
@@ -208,6 +208,9 @@ struct Candidate {
     occluder: f64,
     /// Horizontal distance from the camera to the spot it looks at (metres).
     reach: f64,
+    /// Horizontal distance from the camera along its axis to the wall (ground's edge) it
+    /// looks at (metres, [`depth`]): short in a view of the wall behind one piece.
+    depth: f64,
     /// The share of the frame of a blocker close to the lens and of panels seen edge-on
     /// ([`blocker_share`], [`grazing_share`]).
     blocker: f64,
@@ -400,6 +403,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 total,
                 occluder,
                 reach: d,
+                depth: depth(scene, &cam),
                 near,
                 cam,
                 stats,

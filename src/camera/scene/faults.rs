@@ -40,6 +40,13 @@ const FLAT_DEPTH: f64 = 0.15;
 const FLAT_RATIO: f64 = 0.25;
 /// A flat piece counts when it covers more than this share of the frame.
 const GRAZING_SHARE: f64 = 0.02;
+/// A close-up of a wall: a view whose axis meets a wall (the ground's edge) within
+/// `CLOSE_DEPTH` of the room's diagonal and more than `CLOSE_WALL` of whose frame is bare wall
+/// (see [`looks_at_wall`]): one piece against the wall behind it, not a view into the room.
+/// Counted by the framing figure beside the faults (not one of them: such a view still shows
+/// what it frames).
+pub const CLOSE_DEPTH: f64 = 0.4;
+pub const CLOSE_WALL: f64 = 0.35;
 /// Two views are near copies when they show this much the same (see [`alike`]).
 pub const COPY: f64 = 0.6;
 
@@ -111,7 +118,7 @@ fn is_mirror(o: &ObjectBox) -> bool {
 }
 
 /// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
-fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
+pub(crate) fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     let [hx, hy] = scene.half();
     let (fx, fy) = (cam.rotation[0][2], cam.rotation[1][2]);
     let n = fx.hypot(fy).max(1e-9);
@@ -124,6 +131,13 @@ fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     };
     let (dx, dy) = (fx / n, fy / n);
     reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
+}
+
+/// True when `cam` looks at a near wall with little before it (see `CLOSE_DEPTH`): a close-up
+/// of one piece against its wall rather than a view into the room.
+pub fn looks_at_wall(scene: &SceneBox, cam: &Camera) -> bool {
+    let diagonal = scene.room[0].hypot(scene.room[1]);
+    depth(scene, cam) < CLOSE_DEPTH * diagonal && bare_wall_share(scene, cam) > CLOSE_WALL
 }
 
 /// The largest share of the frame a blocker covers (see `BLOCKER_SHARE`, `COLUMN_HEIGHT`), 0 without one,

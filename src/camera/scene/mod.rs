@@ -26,8 +26,8 @@ mod wall;
 
 pub use choose::{eye_height, render_views, view_fov};
 pub use faults::{
-    alike, blocker_of, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER,
-    BARE_WALL, COPY,
+    alike, blocker_of, blocker_share, grazing_share, is_panel, looks_at_wall, view_faults,
+    ViewFaults, BARE_COVER, BARE_WALL, CLOSE_DEPTH, CLOSE_WALL, COPY,
 };
 pub use paths::{explore_path, inference_circle, orbit};
 pub use views::{
