@@ -51,7 +51,7 @@ const FOREGROUND_PER_SIDE: f64 = 0.4;
 /// angle), used in a room [`SMALL_ROOM`] metres or less across; from [`LARGE_ROOM`] on the lens
 /// is the scene cameras' [`SCENE_FOV_X`] (55°), and between the two it widens linearly.
 const WIDE_FOV_X: f64 = 1.35;
-const SMALL_ROOM: f64 = 3.0;
+pub(super) const SMALL_ROOM: f64 = 3.0;
 /// The lens of the views from a room's corners to its centre (horizontal, radians; 90°).
 const FILL_FOV_X: f64 = std::f64::consts::FRAC_PI_2;
 const LARGE_ROOM: f64 = 5.0;
@@ -458,6 +458,8 @@ const PILLAR_FOOT: f64 = 0.75;
 /// How much further (metres) the room behind a pillar must stand.
 const PILLAR_BEHIND: f64 = 1.0;
 
+#[cfg(test)]
+mod look_in_tests;
 mod pick;
 mod pieces;
 mod sweep;

@@ -268,6 +268,35 @@ mod tests {
     }
 
     #[test]
+    fn a_view_from_close_at_an_empty_wall_looks_at_it_and_one_across_the_room_does_not() {
+        let scene = SceneBox {
+            scene_type: crate::plan::spec::SceneType::Indoor,
+            room: [5.0, 4.0, 2.8],
+            objects: vec![boxed("tv stand1", 0.0, 1.75, [1.6, 0.45, 0.5])],
+            openings: vec![],
+        };
+        let look = |eye: [f64; 3], at: [f64; 3]| {
+            let cam = crate::camera::scene::camera(eye, at, [0.0, 0.0, 1.0], 64, 64, 0.96);
+            looks_at_wall(&scene, &cam)
+        };
+        // 1.5 m from the north wall, at the stand before it: the wall fills the frame.
+        assert!(
+            look([0.0, 0.5, 1.5], [0.0, 1.75, 1.0]),
+            "a close-up of the stand"
+        );
+        // From the south wall across the room at the same stand: it looks into the room.
+        assert!(
+            !look([0.0, -1.7, 1.5], [0.0, 1.75, 1.0]),
+            "a view across the room"
+        );
+        // Close, but at the floor before the stand: little bare wall.
+        assert!(
+            !look([0.0, 0.5, 1.5], [0.0, 1.2, 0.0]),
+            "a view down at the floor is no wall close-up"
+        );
+    }
+
+    #[test]
     fn mirrors_are_known_by_their_name_word() {
         for id in [
             "mirror1",

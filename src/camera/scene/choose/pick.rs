@@ -32,17 +32,15 @@ const BLOCKER_FAULTS: f64 = 2.0;
 const COPY_MORE: f64 = 9.0;
 /// Up to this share of the frame bare wall costs a view nothing (a room's walls show above its
 /// furniture in every picture taken at eye height); beyond it each share costs
-/// [`WALL_PER_SHARE`]. Measured on the framing figure: from 0.3 at 12 a share, 31 of 211
-/// corpus views showed more than 0.4 bare wall (the cozy living room's TV stand against its
-/// wall at 0.44); from 0.25 at 20, with [`LOOK_IN`], 22.
-const WALL_FREE: f64 = 0.25;
-const WALL_PER_SHARE: f64 = 20.0;
+/// [`WALL_PER_SHARE`].
+const WALL_FREE: f64 = 0.3;
+const WALL_PER_SHARE: f64 = 12.0;
 /// A view looks into the room when its axis runs at least this share of the room's diagonal
 /// before it meets a wall (the ground's edge); shorter, each share costs
 /// [`LOOK_IN_PER_SHARE`]: a view of one piece against the wall behind it (a TV stand, a
-/// bookcase and a plant, a cabinet beside the door) loses to one across the room. Measured on
-/// the framing figure: the views a person calls close-ups of a wall ([`looks_at_wall`]) went
-/// from 13 of 211 corpus views to 3, and from 7 of 129 in the small rooms to 5.
+/// bookcase and a plant, a cabinet beside the door) loses to one across the room. Less so in a
+/// smaller room, nothing in a room [`SMALL_ROOM`](super::SMALL_ROOM) across, where everything
+/// stands near a wall (weighed there too, it traded close-ups for shelves at the lens).
 const LOOK_IN: f64 = 0.5;
 const LOOK_IN_PER_SHARE: f64 = 20.0;
 /// The share of the views that see the focal object from its front, looking the way the room
@@ -115,6 +113,9 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
             .is_some_and(|(f, _)| c.shows[*f].is_some_and(|s| s > 0.5))
     };
     let focal_target = (FOCAL_VIEWS * count as f64).round() as usize;
+    // In a small room everything stands near a wall: there only the close-ups past the
+    // fourth view are left out.
+    let look_per = LOOK_IN_PER_SHARE * (1.0 - super::smallness(scene));
     let mut focal_taken = 0;
     let mut seen = vec![0usize; n];
     let mut taken: Vec<usize> = vec![];
@@ -193,6 +194,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
             {
                 continue;
             }
+            let look_in = look_per * (LOOK_IN - c.depth / diagonal).max(0.0);
             let largest = c.piece;
             let over = (largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
@@ -220,7 +222,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - COPY_MORE * copy
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
-                - LOOK_IN_PER_SHARE * (LOOK_IN - c.depth / diagonal).max(0.0)
+                - look_in
                 + if focal_taken < focal_target && looks_ahead(c) {
                     3.0
                 } else {

@@ -96,7 +96,7 @@ fn a_small_room_gets_a_wider_lens() {
 }
 
 /// The offline plan of `prompt`, laid out at seed 0, and the eight render views chosen for it.
-fn eight_views(prompt: &str) -> (SceneBox, Vec<Camera>) {
+pub(super) fn eight_views(prompt: &str) -> (SceneBox, Vec<Camera>) {
     let spec = crate::plan::offline::plan_prompt(prompt)
         .expect("plans")
         .spec;
