@@ -20,7 +20,7 @@
 //! (a near copy costs more than framing well gains). Past the first few views only clean views
 //! that frame well are taken: a small room gets fewer pictures rather than near copies, views
 //! past a wardrobe at the lens or close-ups of a bed. Host-only.
-use super::faults::{blocker_share, depth, footprint_distance, grazing_share, BARE_COVER};
+use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
 use super::views::FLAT;
 use super::views::{
     facing, hidden_share, in_frame, in_frame_within, screen_box, view_stats, ViewStats,
@@ -51,7 +51,7 @@ const FOREGROUND_PER_SIDE: f64 = 0.4;
 /// angle), used in a room [`SMALL_ROOM`] metres or less across; from [`LARGE_ROOM`] on the lens
 /// is the scene cameras' [`SCENE_FOV_X`] (55°), and between the two it widens linearly.
 const WIDE_FOV_X: f64 = 1.35;
-pub(super) const SMALL_ROOM: f64 = 3.0;
+const SMALL_ROOM: f64 = 3.0;
 /// The lens of the views from a room's corners to its centre (horizontal, radians; 90°).
 const FILL_FOV_X: f64 = std::f64::consts::FRAC_PI_2;
 const LARGE_ROOM: f64 = 5.0;
@@ -208,9 +208,6 @@ struct Candidate {
     occluder: f64,
     /// Horizontal distance from the camera to the spot it looks at (metres).
     reach: f64,
-    /// Horizontal distance from the camera along its axis to the wall (ground's edge) it
-    /// looks at (metres, [`depth`]): short in a view of the wall behind one piece.
-    depth: f64,
     /// The share of the frame of a blocker close to the lens and of panels seen edge-on
     /// ([`blocker_share`], [`grazing_share`]).
     blocker: f64,
@@ -403,7 +400,6 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 total,
                 occluder,
                 reach: d,
-                depth: depth(scene, &cam),
                 near,
                 cam,
                 stats,
@@ -458,8 +454,6 @@ const PILLAR_FOOT: f64 = 0.75;
 /// How much further (metres) the room behind a pillar must stand.
 const PILLAR_BEHIND: f64 = 1.0;
 
-#[cfg(test)]
-mod look_in_tests;
 mod pick;
 mod pieces;
 mod sweep;

@@ -1,8 +1,10 @@
 //! What a person calls a poor picture, measured from a view's camera and the layout boxes
 //! (occlusion ignored): mostly bare wall or floor, a blocker close to the lens, a flat piece (a
-//! mirror, painting, TV or whiteboard) seen edge-on, and a near copy of an earlier view. The
+//! mirror, painting, TV or whiteboard) seen edge-on, a near copy of an earlier view, and a
+//! repeat of one (`repeat.rs`: the same things the same way, nothing new). The
 //! render views are scored against these (`choose.rs`) and the framing figure counts them.
 //! Host-only.
+use super::repeat::{backdrop, heading, repeats, sparse, Look};
 use super::views::{facing, frame_share, screen_box, FLAT};
 use super::wall::bare_wall_share;
 use super::{kind, ObjectBox, SceneBox};
@@ -58,12 +60,21 @@ pub struct ViewFaults {
     pub grazing: bool,
     /// A near copy of an earlier view of the list.
     pub copy: bool,
+    /// A repeat of an earlier view of the list ([`repeats`]): looking the same way, it shows
+    /// little the earlier one did not.
+    pub repeat: bool,
 }
 
 impl ViewFaults {
     /// True when the view has no fault.
     pub fn clean(&self) -> bool {
-        !(self.bare || self.blocker || self.grazing || self.copy)
+        !(self.poor() || self.repeat)
+    }
+
+    /// True when the picture itself is poor: mostly bare, a blocker at the lens, a panel
+    /// edge-on, or a near copy (a repeat is no poor picture, only one too many).
+    pub fn poor(&self) -> bool {
+        self.bare || self.blocker || self.grazing || self.copy
     }
 }
 
@@ -206,22 +217,31 @@ pub fn alike(a: (&Camera, &[f64]), b: (&Camera, &[f64])) -> f64 {
     both / ta.max(tb).max(1e-9) * cos
 }
 
-/// The faults of each of `cams` (a near copy is judged against the views before it).
+/// The faults of each of `cams` (a near copy and a repeat are judged against the views before
+/// it).
 pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
     let shares: Vec<Vec<f64>> = cams
         .iter()
         .map(|c| scene.objects.iter().map(|o| frame_share(c, o)).collect())
         .collect();
+    let shown: Vec<Vec<(usize, f64)>> = shares.iter().map(|s| sparse(s)).collect();
+    let focal = super::choose::focal(scene).map(|f| f.0);
     cams.iter()
         .enumerate()
         .map(|(i, c)| {
             let s = &shares[i];
+            let look = |j: usize| Look {
+                dir: heading(&cams[j]),
+                shows: &shown[j],
+                backdrop: backdrop(scene, &cams[j], &shown[j], focal),
+            };
             let covered: f64 = s.iter().sum();
             ViewFaults {
                 bare: covered < BARE_COVER || bare_wall_share(scene, c) > BARE_WALL,
                 blocker: blocker_share(scene, c, s) > 0.0,
                 grazing: grazing_share(scene, c, s) > 0.0,
                 copy: (0..i).any(|j| alike((c, s), (&cams[j], &shares[j])) > COPY),
+                repeat: (0..i).any(|j| repeats(look(i), look(j))),
             }
         })
         .collect()

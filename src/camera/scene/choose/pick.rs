@@ -1,9 +1,7 @@
 //! The greedy pick of the render views among the scored candidates (see the parent module's
 //! doc): what a view gains for the objects it newly shows and for framing well, and what it
 //! loses for each fault a person sees in it. Host-only.
-#[cfg(doc)]
-use super::super::faults::looks_at_wall;
-use super::super::faults::{BARE_COVER, BARE_WALL, CLOSE_DEPTH, CLOSE_WALL, COPY};
+use super::super::faults::{BARE_COVER, BARE_WALL, COPY};
 use super::super::views::MAX_OBJECT_SHARE;
 use super::super::wall::bare_wall_share;
 use super::super::{kind, SceneBox};
@@ -35,14 +33,6 @@ const COPY_MORE: f64 = 9.0;
 /// [`WALL_PER_SHARE`].
 const WALL_FREE: f64 = 0.3;
 const WALL_PER_SHARE: f64 = 12.0;
-/// A view looks into the room when its axis runs at least this share of the room's diagonal
-/// before it meets a wall (the ground's edge); shorter, each share costs
-/// [`LOOK_IN_PER_SHARE`]: a view of one piece against the wall behind it (a TV stand, a
-/// bookcase and a plant, a cabinet beside the door) loses to one across the room. Less so in a
-/// smaller room, nothing in a room [`SMALL_ROOM`](super::SMALL_ROOM) across, where everything
-/// stands near a wall (weighed there too, it traded close-ups for shelves at the lens).
-const LOOK_IN: f64 = 0.5;
-const LOOK_IN_PER_SHARE: f64 = 20.0;
 /// The share of the views that see the focal object from its front, looking the way the room
 /// looks (3 of 8).
 const FOCAL_VIEWS: f64 = 0.375;
@@ -113,9 +103,6 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
             .is_some_and(|(f, _)| c.shows[*f].is_some_and(|s| s > 0.5))
     };
     let focal_target = (FOCAL_VIEWS * count as f64).round() as usize;
-    // In a small room everything stands near a wall: there only the close-ups past the
-    // fourth view are left out.
-    let look_per = LOOK_IN_PER_SHARE * (1.0 - super::smallness(scene));
     let mut focal_taken = 0;
     let mut seen = vec![0usize; n];
     let mut taken: Vec<usize> = vec![];
@@ -194,7 +181,6 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
             {
                 continue;
             }
-            let look_in = look_per * (LOOK_IN - c.depth / diagonal).max(0.0);
             let largest = c.piece;
             let over = (largest - MAX_OBJECT_SHARE).max(0.0);
             let score = good + fresh + 0.2 * c.stats.in_view.min(8) as f64 + 2.0 * c.stats.covered
@@ -222,7 +208,6 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - COPY_MORE * copy
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
-                - look_in
                 + if focal_taken < focal_target && looks_ahead(c) {
                     3.0
                 } else {
@@ -237,10 +222,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 break;
             }
             let wall = *walls[i].get_or_insert_with(|| bare_wall_share(scene, &cands[i].cam));
-            // Past the first views, no view of mostly bare wall nor a close-up of a wall
-            // ([`looks_at_wall`]).
-            let close = cands[i].depth < CLOSE_DEPTH * diagonal && wall > CLOSE_WALL;
-            if strict && (wall > BARE_WALL || close) {
+            if strict && wall > BARE_WALL {
                 continue;
             }
             let score = score - wall_penalty(wall);
