@@ -7,7 +7,10 @@
 //! - objects in view, on average;
 //! - what a person calls poor ([`view_faults`]): views of mostly bare wall or floor, with a
 //!   blocker close to the lens, with a mirror, painting, TV or whiteboard seen edge-on, and near
-//!   copies of an earlier view; "clean" views have none of these.
+//!   copies and repeats of an earlier view (the same things the same way, little new);
+//!   "clean" views have none of these;
+//! - close-ups of a wall ([`looks_at_wall`]): one piece against a near wall, not a view into
+//!   the room (counted apart from the poor views).
 //!
 //! Also compares the chosen views (`render_views`, what `generate` writes) with the exploring path.
 //!
@@ -16,7 +19,7 @@
 //! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
 use dreamscene::camera::scene::{
     alike, bare_wall_share, blocker_of, blocker_share, explore_path, frame_share, grazing_share,
-    render_views, view_faults, view_stats, SceneBox,
+    heading, looks_at_wall, new_share, render_views, view_faults, view_stats, SceneBox,
 };
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -120,7 +123,9 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
     let verbose = std::env::var("DREAMSCENE_VIEWS").is_ok_and(|v| v == "1");
     let (mut good, mut good_old, mut total) = (0usize, 0usize, 0usize);
     let (mut repeats, mut back, mut fore, mut shown) = (0usize, 0usize, 0usize, 0usize);
-    let [mut bare, mut blocker, mut grazing, mut copy, mut clean] = [0usize; 5];
+    let [mut bare, mut blocker, mut grazing, mut copy, mut repeat, mut clean] = [0usize; 6];
+    let mut fine = 0usize;
+    let mut close = 0usize;
     for prompt in prompts {
         let spec = match plan_prompt(prompt) {
             Ok(p) => p.spec,
@@ -142,6 +147,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         let stats: Vec<_> = cams.iter().map(|c| view_stats(&scene, c)).collect();
         let faults = view_faults(&scene, &cams);
         let g = stats.iter().filter(|s| s.framed_well()).count();
+        let cl = cams.iter().filter(|c| looks_at_wall(&scene, c)).count();
         let go = old
             .iter()
             .filter(|c| view_stats(&scene, c).framed_well())
@@ -162,10 +168,11 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
             count(|v| v.blocker),
             count(|v| v.grazing),
             count(|v| v.copy),
+            count(|v| v.repeat),
             count(|v| v.clean()),
         ];
         println!(
-            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} clean {} | {} objects: {:.50}",
+            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} repeat {} clean {} close-up {cl} | {} objects: {:.50}",
             cams.len(),
             old.len(),
             iv as f64 / cams.len().max(1) as f64,
@@ -174,6 +181,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
             fl[2],
             fl[3],
             fl[4],
+            fl[5],
             l.objects.len(),
             prompt
         );
@@ -191,15 +199,34 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
                         alike((c, &shares), (&cams[j], &other))
                     })
                     .fold(0.0, f64::max);
+                // The earlier view this one adds least to, looking within 90° of it.
+                let mine: Vec<(usize, f64)> = shares.iter().copied().enumerate().collect();
+                let least = (0..k)
+                    .filter_map(|j| {
+                        let other: Vec<(usize, f64)> = scene
+                            .objects
+                            .iter()
+                            .map(|o| frame_share(&cams[j], o))
+                            .enumerate()
+                            .collect();
+                        let cos = heading(c)[0] * heading(&cams[j])[0]
+                            + heading(c)[1] * heading(&cams[j])[1];
+                        (cos > 0.0).then(|| (j + 1, cos, new_share(&mine, &other)))
+                    })
+                    .min_by(|a, b| a.2.total_cmp(&b.2))
+                    .map_or(String::new(), |(j, cos, new)| {
+                        format!(" new {new:.2} of view {j} (cos {cos:.2})")
+                    });
                 let by = blocker_of(&scene, c, &shares)
                     .map_or(String::new(), |b| format!(" ({})", scene.objects[b].id));
                 println!(
-                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2} {:?} at [{:.1}, {:.1}]",
+                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} close-up {} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2}{least} {:?} at [{:.1}, {:.1}]",
                     k + 1,
                     s.in_view,
                     s.largest,
                     s.covered,
                     bare_wall_share(&scene, c),
+                    looks_at_wall(&scene, c),
                     nearest(&scene, c),
                     blocker_share(&scene, c, &shares),
                     grazing_share(&scene, c, &shares),
@@ -220,7 +247,10 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         blocker += fl[1];
         grazing += fl[2];
         copy += fl[3];
-        clean += fl[4];
+        repeat += fl[4];
+        clean += fl[5];
+        fine += count(|v| !v.poor());
+        close += cl;
     }
     println!(
         "framing: {good}/{total} views framed well ({:.1}%); the exploring path: {good_old}/{total} ({:.1}%)",
@@ -232,8 +262,11 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         shown as f64 / total.max(1) as f64
     );
     println!(
-        "poor views: bare {bare}, blocker {blocker}, edge-on {grazing}, near copy {copy}; clean {clean}/{total} ({:.1}%)",
+        "poor views: bare {bare}, blocker {blocker}, edge-on {grazing}, near copy {copy}; repeats {repeat}; clean {clean}/{total} ({:.1}%), not poor {fine}",
         100.0 * clean as f64 / total.max(1) as f64
+    );
+    println!(
+        "close-ups of a wall (a piece against a near wall, not counted poor): {close}/{total}"
     );
     Ok(())
 }

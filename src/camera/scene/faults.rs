@@ -1,8 +1,10 @@
 //! What a person calls a poor picture, measured from a view's camera and the layout boxes
 //! (occlusion ignored): mostly bare wall or floor, a blocker close to the lens, a flat piece (a
-//! mirror, painting, TV or whiteboard) seen edge-on, and a near copy of an earlier view. The
+//! mirror, painting, TV or whiteboard) seen edge-on, a near copy of an earlier view, and a
+//! repeat of one (`repeat.rs`: the same things the same way, nothing new). The
 //! render views are scored against these (`choose.rs`) and the framing figure counts them.
 //! Host-only.
+use super::repeat::{backdrop, heading, repeats, sparse, Look};
 use super::views::{facing, frame_share, screen_box, FLAT};
 use super::wall::bare_wall_share;
 use super::{kind, ObjectBox, SceneBox};
@@ -40,6 +42,13 @@ const FLAT_DEPTH: f64 = 0.15;
 const FLAT_RATIO: f64 = 0.25;
 /// A flat piece counts when it covers more than this share of the frame.
 const GRAZING_SHARE: f64 = 0.02;
+/// A close-up of a wall: a view whose axis meets a wall (the ground's edge) within
+/// `CLOSE_DEPTH` of the room's diagonal and more than `CLOSE_WALL` of whose frame is bare wall
+/// (see [`looks_at_wall`]): one piece against the wall behind it, not a view into the room.
+/// Counted by the framing figure beside the faults (not one of them: such a view still shows
+/// what it frames).
+pub const CLOSE_DEPTH: f64 = 0.4;
+pub const CLOSE_WALL: f64 = 0.35;
 /// Two views are near copies when they show this much the same (see [`alike`]).
 pub const COPY: f64 = 0.6;
 
@@ -51,12 +60,21 @@ pub struct ViewFaults {
     pub grazing: bool,
     /// A near copy of an earlier view of the list.
     pub copy: bool,
+    /// A repeat of an earlier view of the list ([`repeats`]): looking the same way, it shows
+    /// little the earlier one did not.
+    pub repeat: bool,
 }
 
 impl ViewFaults {
     /// True when the view has no fault.
     pub fn clean(&self) -> bool {
-        !(self.bare || self.blocker || self.grazing || self.copy)
+        !(self.poor() || self.repeat)
+    }
+
+    /// True when the picture itself is poor: mostly bare, a blocker at the lens, a panel
+    /// edge-on, or a near copy (a repeat is no poor picture, only one too many).
+    pub fn poor(&self) -> bool {
+        self.bare || self.blocker || self.grazing || self.copy
     }
 }
 
@@ -111,7 +129,7 @@ fn is_mirror(o: &ObjectBox) -> bool {
 }
 
 /// Horizontal distance from `cam` along its view direction to the room's (ground's) edge.
-fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
+pub(crate) fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     let [hx, hy] = scene.half();
     let (fx, fy) = (cam.rotation[0][2], cam.rotation[1][2]);
     let n = fx.hypot(fy).max(1e-9);
@@ -124,6 +142,13 @@ fn depth(scene: &SceneBox, cam: &Camera) -> f64 {
     };
     let (dx, dy) = (fx / n, fy / n);
     reach(cam.position[0], dx, hx).min(reach(cam.position[1], dy, hy))
+}
+
+/// True when `cam` looks at a near wall with little before it (see `CLOSE_DEPTH`): a close-up
+/// of one piece against its wall rather than a view into the room.
+pub fn looks_at_wall(scene: &SceneBox, cam: &Camera) -> bool {
+    let diagonal = scene.room[0].hypot(scene.room[1]);
+    depth(scene, cam) < CLOSE_DEPTH * diagonal && bare_wall_share(scene, cam) > CLOSE_WALL
 }
 
 /// The largest share of the frame a blocker covers (see `BLOCKER_SHARE`, `COLUMN_HEIGHT`), 0 without one,
@@ -192,22 +217,31 @@ pub fn alike(a: (&Camera, &[f64]), b: (&Camera, &[f64])) -> f64 {
     both / ta.max(tb).max(1e-9) * cos
 }
 
-/// The faults of each of `cams` (a near copy is judged against the views before it).
+/// The faults of each of `cams` (a near copy and a repeat are judged against the views before
+/// it).
 pub fn view_faults(scene: &SceneBox, cams: &[Camera]) -> Vec<ViewFaults> {
     let shares: Vec<Vec<f64>> = cams
         .iter()
         .map(|c| scene.objects.iter().map(|o| frame_share(c, o)).collect())
         .collect();
+    let shown: Vec<Vec<(usize, f64)>> = shares.iter().map(|s| sparse(s)).collect();
+    let focal = super::choose::focal(scene).map(|f| f.0);
     cams.iter()
         .enumerate()
         .map(|(i, c)| {
             let s = &shares[i];
+            let look = |j: usize| Look {
+                dir: heading(&cams[j]),
+                shows: &shown[j],
+                backdrop: backdrop(scene, &cams[j], &shown[j], focal),
+            };
             let covered: f64 = s.iter().sum();
             ViewFaults {
                 bare: covered < BARE_COVER || bare_wall_share(scene, c) > BARE_WALL,
                 blocker: blocker_share(scene, c, s) > 0.0,
                 grazing: grazing_share(scene, c, s) > 0.0,
                 copy: (0..i).any(|j| alike((c, s), (&cams[j], &shares[j])) > COPY),
+                repeat: (0..i).any(|j| repeats(look(i), look(j))),
             }
         })
         .collect()
@@ -250,6 +284,35 @@ mod tests {
             blocker_of(&bunk, &cam, &shares),
             Some(0),
             "a bunk bed at the lens"
+        );
+    }
+
+    #[test]
+    fn a_view_from_close_at_an_empty_wall_looks_at_it_and_one_across_the_room_does_not() {
+        let scene = SceneBox {
+            scene_type: crate::plan::spec::SceneType::Indoor,
+            room: [5.0, 4.0, 2.8],
+            objects: vec![boxed("tv stand1", 0.0, 1.75, [1.6, 0.45, 0.5])],
+            openings: vec![],
+        };
+        let look = |eye: [f64; 3], at: [f64; 3]| {
+            let cam = crate::camera::scene::camera(eye, at, [0.0, 0.0, 1.0], 64, 64, 0.96);
+            looks_at_wall(&scene, &cam)
+        };
+        // 1.5 m from the north wall, at the stand before it: the wall fills the frame.
+        assert!(
+            look([0.0, 0.5, 1.5], [0.0, 1.75, 1.0]),
+            "a close-up of the stand"
+        );
+        // From the south wall across the room at the same stand: it looks into the room.
+        assert!(
+            !look([0.0, -1.7, 1.5], [0.0, 1.75, 1.0]),
+            "a view across the room"
+        );
+        // Close, but at the floor before the stand: little bare wall.
+        assert!(
+            !look([0.0, 0.5, 1.5], [0.0, 1.2, 0.0]),
+            "a view down at the floor is no wall close-up"
         );
     }
 

@@ -21,15 +21,20 @@
 mod choose;
 mod faults;
 mod paths;
+mod repeat;
 mod views;
 mod wall;
 
 pub use choose::{eye_height, render_views, view_fov};
 pub use faults::{
-    alike, blocker_of, blocker_share, grazing_share, is_panel, view_faults, ViewFaults, BARE_COVER,
-    BARE_WALL, COPY,
+    alike, blocker_of, blocker_share, grazing_share, is_panel, looks_at_wall, view_faults,
+    ViewFaults, BARE_COVER, BARE_WALL, CLOSE_DEPTH, CLOSE_WALL, COPY,
 };
 pub use paths::{explore_path, inference_circle, orbit};
+pub use repeat::{
+    backdrop, heading, new_share, repeats, Look, BACKDROP_COS, BACKDROP_FAR, REPEAT_COS,
+    REPEAT_NEW, REPEAT_SEEN,
+};
 pub use views::{
     facing, frame_share, framing_score, in_frame, overview_camera, screen_box, view_stats,
     ViewStats, MAX_OBJECT_SHARE,

@@ -233,7 +233,7 @@ fn small_rooms_get_few_poor_views() {
             cams.len()
         );
         let faults = crate::camera::scene::view_faults(&scene, &cams);
-        clean += faults.iter().filter(|f| f.clean()).count();
+        clean += faults.iter().filter(|f| !f.poor()).count();
         bare += faults.iter().filter(|f| f.bare).count();
         well += cams
             .iter()
@@ -278,7 +278,7 @@ fn views_show_the_room_not_bare_wall() {
             cams.len()
         );
         let faults = crate::camera::scene::view_faults(&scene, &cams);
-        clean += faults.iter().filter(|f| f.clean()).count();
+        clean += faults.iter().filter(|f| !f.poor()).count();
         wall += cams
             .iter()
             .filter(|c| crate::camera::scene::bare_wall_share(&scene, c) > BARE_WALL)
