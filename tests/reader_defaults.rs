@@ -133,6 +133,26 @@ fn a_misspelt_object_word_is_the_word_it_misses() {
 }
 
 #[test]
+fn a_known_short_object_word_is_never_mended_into_a_longer_one() {
+    // "carts" is a cart's plural, not a slip for "charts" (a flip chart's word)
+    // (prompt, category, exact count or None for at least one)
+    for (prompt, want, n) in [
+        ("a night market with food carts", "hot dog cart", None),
+        (
+            "a street food court with three food carts",
+            "hot dog cart",
+            Some(3),
+        ),
+        ("a farmyard with two carts and a haystack", "cart", Some(2)),
+    ] {
+        let s = plan(prompt);
+        let got = number(&s, want);
+        assert!(n.map_or(got >= 1, |n| got == n), "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "flip chart"), 0, "{prompt}: {:?}", keys(&s));
+    }
+}
+
+#[test]
 fn a_bare_plural_in_rows_fills_every_row() {
     for (prompt, word, rows) in [
         (
