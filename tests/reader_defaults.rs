@@ -218,7 +218,7 @@ fn a_bare_noun_in_a_place_is_the_place_own_kind_of_it() {
     // a barber's has as many barber chairs as waiting chairs: "chairs" there are its barber chairs
     for (prompt, n) in [
         ("a barber's with four chairs facing mirrors", 4),
-        ("a hair salon with two chairs", 2),
+        ("a barbershop with two chairs and a sink", 2),
         ("a barbershop with five chairs in a row", 5),
     ] {
         let s = plan(prompt);

@@ -436,7 +436,7 @@ fn in_scene(
     let same_head = |c: &&(String, u32)| c.0.rsplit(' ').next() == Some(head.as_str());
     if !m.known {
         // "three sonar consoles" on a bridge: its consoles, described by the text's words
-        return most_its_own(kb, s, s.objects.iter().filter(same_head))
+        return most_its_own(s, s.objects.iter().filter(same_head))
             .unwrap_or_else(|| m.category.clone());
     }
     // "shelving units" in a shop: a thing said by a name that says only its role (`kb/roles.txt`:
@@ -480,25 +480,18 @@ fn in_scene(
         c.rsplit(' ').next() == Some(head.as_str())
             || kb.object(&head).is_some_and(|o| o.category == **c)
     });
-    most_its_own(kb, s, sharing).unwrap_or_else(|| m.category.clone())
+    most_its_own(s, sharing).unwrap_or_else(|| m.category.clone())
 }
 
 /// Of the scene's defaults `candidates`, the one a bare noun means: the most numerous; of as
-/// many, the place's own kind (`+` in `kb/scenes.txt`), then the kind fewest places have
-/// ("chairs" in a barber's are its barber chairs, not its waiting chairs).
+/// many, the place's own kind (`+` in `kb/scenes.txt`): "chairs" in a barber's are its barber
+/// chairs, not its waiting chairs.
 fn most_its_own<'a>(
-    kb: &KnowledgeBase,
     scene: &crate::plan::kb::SceneKind,
     candidates: impl Iterator<Item = &'a (String, u32)>,
 ) -> Option<String> {
     candidates
-        .max_by_key(|(c, n)| {
-            (
-                *n,
-                scene.own.contains(c),
-                std::cmp::Reverse(scenes_with(kb, c)),
-            )
-        })
+        .max_by_key(|(c, n)| (*n, scene.own.contains(c)))
         .map(|(c, _)| c.clone())
 }
 
