@@ -4,7 +4,8 @@
 //! one pile on a table, misspelt object words are mended as place names are (never one
 //! letter changed for another), a bare plural in N rows fills every row, and things said to
 //! hang on the wall (a map, a calendar) are things that hang; recliners named in a home theatre
-//! are its seats; a tea shop is a cafe. Prompts of no corpus.
+//! are its seats, as chairs in rows in a church are its congregation's; "chairs" in a barber's are its
+//! barber chairs; a reading lamp on a desk is the room's lamp; a tea shop is a cafe. Prompts of no corpus.
 mod reading;
 use reading::{keys, number, plan};
 
@@ -133,6 +134,26 @@ fn a_misspelt_object_word_is_the_word_it_misses() {
 }
 
 #[test]
+fn a_known_short_object_word_is_never_mended_into_a_longer_one() {
+    // "carts" is a cart's plural, not a slip for "charts" (a flip chart's word)
+    // (prompt, category, exact count or None for at least one)
+    for (prompt, want, n) in [
+        ("a night market with food carts", "hot dog cart", None),
+        (
+            "a street food court with three food carts",
+            "hot dog cart",
+            Some(3),
+        ),
+        ("a farmyard with two carts and a haystack", "cart", Some(2)),
+    ] {
+        let s = plan(prompt);
+        let got = number(&s, want);
+        assert!(n.map_or(got >= 1, |n| got == n), "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "flip chart"), 0, "{prompt}: {:?}", keys(&s));
+    }
+}
+
+#[test]
 fn a_bare_plural_in_rows_fills_every_row() {
     for (prompt, word, rows) in [
         (
@@ -190,4 +211,51 @@ fn a_tea_shop_is_a_cafe() {
         assert!(number(&s, "cafe") >= 1, "{prompt}: {:?}", keys(&s));
         assert_eq!(number(&s, "display shelf"), 0, "{prompt}: {:?}", keys(&s));
     }
+}
+
+#[test]
+fn a_bare_noun_in_a_place_is_the_place_own_kind_of_it() {
+    // a barber's has as many barber chairs as waiting chairs: "chairs" there are its barber chairs
+    for (prompt, n) in [
+        ("a barber's with four chairs facing mirrors", 4),
+        ("a barbershop with two chairs and a sink", 2),
+        ("a barbershop with five chairs in a row", 5),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "barber chair"), n, "{prompt}: {:?}", keys(&s));
+        assert_ne!(number(&s, "waiting chair"), n, "{prompt}: {:?}", keys(&s));
+    }
+}
+
+#[test]
+fn a_lamp_named_on_a_table_is_the_room_lamp_of_its_kind() {
+    // a reading lamp on a support is a table lamp, and still the room's standing lamp
+    for prompt in [
+        "a study with a reading lamp on the desk",
+        "a living room with a reading lamp on the side table",
+        "a home office with a desk and a reading lamp on the desk",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "table lamp"), 1, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "floor lamp"), 0, "{prompt}: {:?}", keys(&s));
+    }
+    // a floor lamp named beside it stays
+    let s = plan("a living room with a floor lamp and a reading lamp on the side table");
+    assert_eq!(number(&s, "floor lamp"), 1, "{:?}", keys(&s));
+}
+
+#[test]
+fn seats_named_in_rows_are_the_congregation_in_place_of_the_pews() {
+    for prompt in [
+        "a church with rows of chairs",
+        "a chapel with chairs in rows",
+        "a cathedral with four rows of chairs facing the altar",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "pew"), 0, "{prompt}: {:?}", keys(&s));
+        assert!(number(&s, "dining chair") >= 8, "{prompt}: {:?}", keys(&s));
+    }
+    // seats not in rows are not the congregation: the pews stay
+    let s = plan("a church with two benches");
+    assert_eq!(number(&s, "pew"), 6, "{:?}", keys(&s));
 }

@@ -60,6 +60,9 @@ pub struct Mention {
     pub in_rows: bool,
     /// "the invigilator's desk": the owner a particular object is named after.
     pub owner: Option<String>,
+    /// The kind the text named when the reading put another kind of it in its place ("a reading
+    /// lamp on the desk" is a table lamp, said as a reading lamp): it fills that kind's role too.
+    pub said_as: Option<String>,
 }
 
 /// What a request says.

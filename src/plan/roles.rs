@@ -101,6 +101,10 @@ pub fn role_of(category: &str) -> Option<&'static str> {
     listed(category).or_else(|| listed(super::lexicon::kind_category(category)?))
 }
 
+/// The role of the seats an audience sits on (a cinema's theater seats, a church's pews): seats
+/// the text sets out in rows are that audience, in place of the defaults of this role.
+pub const AUDIENCE: &str = "audience seating";
+
 /// Whether `name` (an object name, singular) says only the role of what it names
 /// (`kb/roles.txt`: generic): "a shelving unit" in a shop is its display shelf.
 pub fn is_generic(name: &str) -> bool {

@@ -294,6 +294,7 @@ pub(super) fn read_mentions(
             rows: 0,
             in_rows: false,
             owner,
+            said_as: None,
         });
         prev_end = end;
     }

@@ -282,7 +282,10 @@ pub(super) fn surface_kinds(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
             })
             .map(|k| k.category.clone());
         if let Some(c) = kind {
-            r.mentions[si].category = c;
+            let m = &mut r.mentions[si];
+            if c != m.category {
+                m.said_as = Some(std::mem::replace(&mut m.category, c));
+            }
         }
     }
 }

@@ -60,15 +60,20 @@ pub(super) fn mend_place_names(kb: &KnowledgeBase, t: &str) -> String {
 /// table. A word is mended only when exactly one word of the names (or its plural) is a slip
 /// away from it.
 pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
-    let mut vocabulary: Vec<&str> = kb
+    // every word of the names, short ones too: "carts" is carts (a cart), not a slip for "charts"
+    let mut known: Vec<&str> = kb
         .objects
         .iter()
         .flat_map(|o| std::iter::once(&o.category).chain(&o.synonyms))
         .flat_map(|n| n.split(' '))
+        .collect();
+    known.sort_unstable();
+    known.dedup();
+    let vocabulary: Vec<&str> = known
+        .iter()
+        .copied()
         .filter(|w| w.chars().count() >= 5 && w.chars().all(char::is_alphabetic))
         .collect();
-    vocabulary.sort_unstable();
-    vocabulary.dedup();
     t.split(' ')
         .map(|raw| {
             let start = raw.len() - raw.trim_start_matches(|c: char| !c.is_alphanumeric()).len();
@@ -78,10 +83,8 @@ pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
                 .max(start);
             let w = &raw[start..end];
             if w.chars().count() < 5
-                || vocabulary.binary_search(&w).is_ok()
-                || vocabulary
-                    .binary_search(&super::singular(w).as_str())
-                    .is_ok()
+                || known.binary_search(&w).is_ok()
+                || known.binary_search(&super::singular(w).as_str()).is_ok()
                 || super::words::is_verb(w)
             {
                 return raw.to_string();
@@ -142,6 +145,7 @@ fn mendable(kb: &KnowledgeBase, w: &str, n: &str) -> bool {
         && strsim::damerau_levenshtein(w, n) == 1
         && !substituted(w, n)
         && kb.object(w).is_none()
+        && kb.object(&super::singular(w)).is_none()
         && crate::plan::lexicon::kind(w).is_none()
         && !crate::plan::lexicon::is_near_word(w)
         && crate::plan::lexicon::kind(&super::singular(w)).is_none()

@@ -2,7 +2,8 @@
 //! a big screen", "four rows of folding chairs facing the stage". The scene's default seats set
 //! facing that same thing (a home theater's theater seats OPPOSITE its screen, a hall's stacking
 //! chairs in ROWs before its stage) are the audience the named seats already are, so they go
-//! instead of adding to them; named seats in rows are the audience whatever they face. Named
+//! instead of adding to them; named seats in rows ("rows of chairs" in a church) are the
+//! audience whatever they face, in place of the defaults of the audience's role (its pews). Named
 //! seats are never removed, nor defaults facing anything else.
 use super::Draft;
 use crate::plan::lang;
@@ -37,7 +38,7 @@ pub(super) fn named_audience(d: &mut Draft) {
             .collect();
         // seats in rows are an audience whatever they face ("rows of benches facing a
         // whiteboard" in a lecture hall whose seats face its screen)
-        let rows = m.rows > 0 || said.iter().any(|(k, _)| *k == Row);
+        let rows = m.rows > 0 || m.in_rows || said.iter().any(|(k, _)| *k == Row);
         let gone: Vec<(String, String)> = scene
             .relations
             .iter()
@@ -45,7 +46,10 @@ pub(super) fn named_audience(d: &mut Draft) {
             .filter(|k| lang::is_seat(&k.subject) && !named.contains(&k.subject))
             .filter(|k| {
                 said.iter().any(|(_, t)| **t == k.object)
-                    || (rows && matches!(k.relation, Row | Opposite))
+                    || (rows
+                        && (matches!(k.relation, Row | Opposite)
+                            || crate::plan::roles::role_of(&k.subject)
+                                == Some(crate::plan::roles::AUDIENCE)))
             })
             .map(|k| (k.subject.clone(), k.object.clone()))
             .collect();

@@ -307,8 +307,19 @@ pub(super) fn take_away(d: &mut Draft) {
     notes.extend(crate::plan::roles::without_what_they_hold(
         counts, named, negated,
     ));
-    // Named objects fill the roles of the defaults they replace.
-    notes.extend(crate::plan::roles::apply(counts, named, r.exclusive));
+    // Named objects fill the roles of the defaults they replace, and so does the kind a named
+    // thing was said as ("a reading lamp on the desk", a table lamp, is the room's standing lamp).
+    let filling: std::collections::BTreeSet<String> = named
+        .iter()
+        .cloned()
+        .chain(
+            r.mentions
+                .iter()
+                .filter(|m| !m.negated && !m.reference)
+                .filter_map(|m| m.said_as.clone()),
+        )
+        .collect();
+    notes.extend(crate::plan::roles::apply(counts, &filling, r.exclusive));
     // "the invigilator's desk": a particular one takes the place of the scene's single
     // default of its kind (the teacher's desk).
     for (m, cat) in r.mentions.iter().zip(cats.iter()) {
@@ -425,12 +436,7 @@ fn in_scene(
     let same_head = |c: &&(String, u32)| c.0.rsplit(' ').next() == Some(head.as_str());
     if !m.known {
         // "three sonar consoles" on a bridge: its consoles, described by the text's words
-        return s
-            .objects
-            .iter()
-            .filter(same_head)
-            .max_by_key(|(_, n)| *n)
-            .map(|(c, _)| c.clone())
+        return most_its_own(s, s.objects.iter().filter(same_head))
             .unwrap_or_else(|| m.category.clone());
     }
     // "shelving units" in a shop: a thing said by a name that says only its role (`kb/roles.txt`:
@@ -470,15 +476,23 @@ fn in_scene(
     if !bare {
         return m.category.clone();
     }
-    s.objects
-        .iter()
-        .filter(|(c, _)| {
-            c.rsplit(' ').next() == Some(head.as_str())
-                || kb.object(&head).is_some_and(|o| o.category == **c)
-        })
-        .max_by_key(|(_, n)| *n)
+    let sharing = s.objects.iter().filter(|(c, _)| {
+        c.rsplit(' ').next() == Some(head.as_str())
+            || kb.object(&head).is_some_and(|o| o.category == **c)
+    });
+    most_its_own(s, sharing).unwrap_or_else(|| m.category.clone())
+}
+
+/// Of the scene's defaults `candidates`, the one a bare noun means: the most numerous; of as
+/// many, the place's own kind (`+` in `kb/scenes.txt`): "chairs" in a barber's are its barber
+/// chairs, not its waiting chairs.
+fn most_its_own<'a>(
+    scene: &crate::plan::kb::SceneKind,
+    candidates: impl Iterator<Item = &'a (String, u32)>,
+) -> Option<String> {
+    candidates
+        .max_by_key(|(c, n)| (*n, scene.own.contains(c)))
         .map(|(c, _)| c.clone())
-        .unwrap_or_else(|| m.category.clone())
 }
 
 /// How many scene types a category is a default of: furniture of at least
