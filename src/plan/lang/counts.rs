@@ -3,7 +3,7 @@
 //! each side"), seats of a table ("a table for six", "eight tables, each laid for four") and rows
 //! ("six rows of ten seats", "two rows of recliners, three in each row"). A mention after
 //! "each" or "every" refers back to an object already named, never a new one.
-use super::{number_of, re, Reading};
+use super::{number_of, re, Mention, Reading};
 use crate::plan::spec::Anchor;
 
 /// Placement words that put a thing said of each window at that window ("beneath each one").
@@ -120,6 +120,29 @@ fn definite_references(r: &mut Reading) {
 }
 
 /// Reads the distributive counts, seats and rows of `r` (after its mentions).
+/// The mention a rows phrase at `start..end` of `t` sets out: the one just after it ("rows of
+/// chairs", `after`) or just before it ("chairs in rows"); none when it is negated or already
+/// has its rows.
+fn rowed_mention<'a>(
+    r: &'a mut Reading,
+    t: &str,
+    start: usize,
+    end: usize,
+    after: bool,
+) -> Option<&'a mut Mention> {
+    let i = if after {
+        r.mentions
+            .iter()
+            .position(|m| m.start >= end && t[end..m.start].split_whitespace().count() <= 2)
+    } else {
+        r.mentions
+            .iter()
+            .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
+    }?;
+    let m = &mut r.mentions[i];
+    (m.rows == 0 && !m.negated).then_some(m)
+}
+
 pub(super) fn read_counts(r: &mut Reading) {
     definite_references(r);
     let t = r.text.clone();
@@ -396,19 +419,8 @@ pub(super) fn read_counts(r: &mut Reading) {
         if number_of(before).is_some() || ["in", "into"].contains(&before) {
             continue;
         }
-        let i = if c.get(1).is_some() {
-            r.mentions
-                .iter()
-                .position(|m| m.start >= end && t[end..m.start].split_whitespace().count() <= 2)
-        } else {
-            r.mentions
-                .iter()
-                .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
-        };
-        if let Some(m) = i.map(|i| &mut r.mentions[i]) {
-            if m.rows == 0 && !m.negated {
-                m.in_rows = true;
-            }
+        if let Some(m) = rowed_mention(r, &t, start, end, c.get(1).is_some()) {
+            m.in_rows = true;
         }
     }
     // Rows without a count of their own: "Y in N rows", "Y, two rows", "a row of Y", "Y in a row".
@@ -420,19 +432,8 @@ pub(super) fn read_counts(r: &mut Reading) {
         };
         let Some(n) = n else { continue };
         let (start, end) = c.get(0).map(|g| (g.start(), g.end())).unwrap_or((0, 0));
-        let i = if c.get(2).is_some() {
-            r.mentions
-                .iter()
-                .position(|m| m.start >= end && t[end..m.start].split_whitespace().count() <= 2)
-        } else {
-            r.mentions
-                .iter()
-                .rposition(|m| m.end <= start && t[m.end..start].split_whitespace().count() <= 3)
-        };
-        if let Some(m) = i.map(|i| &mut r.mentions[i]) {
-            if m.rows == 0 && !m.negated {
-                m.rows = n;
-            }
+        if let Some(m) = rowed_mention(r, &t, start, end, c.get(2).is_some()) {
+            m.rows = n;
         }
     }
 }
