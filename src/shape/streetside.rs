@@ -92,12 +92,13 @@ pub fn tiki_bar(b: &mut Builder) {
     let (cy0, cy1) = (-0.25 * hd, 0.15 * hd); // the counter's depth
     let eave = 0.72 * h;
     let p = 0.05_f64.min(0.05 * hw);
+    // The posts stand inside the thatch's oval so none pokes out at a corner.
     for sx in [-1.0, 1.0] {
-        for y in [-hd + p, cy1] {
+        for y in [-0.6 * hd, cy1] {
             b.rod(
                 Frame,
-                [sx * (hw - 0.2), y, 0.0],
-                [sx * (hw - 0.2), y, eave],
+                [sx * 0.65 * hw, y, 0.0],
+                [sx * 0.65 * hw, y, eave],
                 p,
             );
         }
