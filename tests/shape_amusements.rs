@@ -248,7 +248,7 @@ fn left_profile(pts: &[[f64; 3]], h: f64) -> Vec<f64> {
 }
 
 #[test]
-fn a_statues_head_stands_on_a_neck_between_square_shoulders() {
+fn a_statues_head_stands_on_a_neck_between_square_shoulders_and_it_holds_up_a_torch() {
     for name in ["statue", "sculpture"] {
         for size in sized("statue", [1.2, 1.0, 1.2]) {
             let s = at(name, size);
@@ -268,6 +268,13 @@ fn a_statues_head_stands_on_a_neck_between_square_shoulders() {
             }
             assert!(neck.is_some(), "{name} {size:?}: no neck under the head");
             assert!(shoulders, "{name} {size:?}: no shoulders ({prof:.2?})");
+            // The raised hand holds a torch (in the lighter stone) above the head, to one side.
+            let torch = within(&of(&s, Role::Top), |p| p[2] > 0.98 * size[2]);
+            assert!(!torch.is_empty(), "{name} {size:?}: no torch held up");
+            assert!(
+                range(&torch, 0).0 > 0.0,
+                "{name} {size:?}: torch over the head"
+            );
         }
     }
 }
