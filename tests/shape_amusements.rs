@@ -235,6 +235,50 @@ fn a_statue_is_a_figure_of_one_stone_on_a_plinth() {
     }
 }
 
+/// Half-widths of the figure's left side (x < 0, away from a raised right arm) in slices from
+/// the top down: the profile a head, a neck and shoulders make.
+fn left_profile(pts: &[[f64; 3]], h: f64) -> Vec<f64> {
+    (0..50)
+        .map(|k| {
+            let z1 = h - k as f64 * 0.01 * h;
+            let band = within(pts, |p| p[0] <= 0.0 && p[2] > z1 - 0.01 * h && p[2] <= z1);
+            band.iter().map(|p| -p[0]).fold(0.0, f64::max)
+        })
+        .collect()
+}
+
+#[test]
+fn a_statues_head_stands_on_a_neck_between_square_shoulders_and_it_holds_up_a_torch() {
+    for name in ["statue", "sculpture"] {
+        for size in sized("statue", [1.2, 1.0, 1.2]) {
+            let s = at(name, size);
+            let prof = left_profile(&all(&s), size[2]);
+            // From the top: the head, then a neck narrower than it, then shoulders (with the
+            // arm hanging from them) over twice its width.
+            let mut head: f64 = 0.0;
+            let mut neck = None;
+            let mut shoulders = false;
+            for &w in &prof {
+                match neck {
+                    None if head > 0.0 && w < 0.75 * head => neck = Some(w),
+                    None => head = head.max(w),
+                    Some(_) if w > 2.0 * head => shoulders = true,
+                    Some(_) => {}
+                }
+            }
+            assert!(neck.is_some(), "{name} {size:?}: no neck under the head");
+            assert!(shoulders, "{name} {size:?}: no shoulders ({prof:.2?})");
+            // The raised hand holds a torch (in the lighter stone) above the head, to one side.
+            let torch = within(&of(&s, Role::Top), |p| p[2] > 0.98 * size[2]);
+            assert!(!torch.is_empty(), "{name} {size:?}: no torch held up");
+            assert!(
+                range(&torch, 0).0 > 0.0,
+                "{name} {size:?}: torch over the head"
+            );
+        }
+    }
+}
+
 #[test]
 fn a_pergola_is_open_rafters_on_posts_with_no_roof() {
     for name in ["pergola structure", "pergola"] {

@@ -167,6 +167,26 @@ fn striped_and_patched_coats_show_two_colours_whatever_the_colour_word() {
 }
 
 #[test]
+fn two_coat_colours_go_on_in_the_animals_own_order() {
+    // A zebra is white with black stripes whichever colour is named first; a cow's coat stays
+    // white under its brown patches.
+    for (c, d) in [
+        ("zebra", "a black and white striped zebra"),
+        ("zebra", "a white and black zebra"),
+        ("zebra", "black-and-white striped zebra"),
+        ("cow", "a brown and white spotted cow"),
+    ] {
+        // The light share is the row's own (white coat), not the pattern's.
+        let (_, light) = dark_and_light(c, d);
+        let (_, row) = dark_and_light(c, c);
+        assert!(
+            (light - row).abs() < 0.05,
+            "`{d}`: coat not the light colour (light {light:.2}, the row's {row:.2})"
+        );
+    }
+}
+
+#[test]
 fn a_sheep_is_a_round_fleece_with_a_dark_face_and_legs() {
     for size in sized("sheep", [1.2, 1.1, 0.9]) {
         let s = along_y("sheep", size);

@@ -93,6 +93,7 @@ use super::sleepers as sl;
 use super::smithy as sm;
 use super::sport as sp;
 use super::stands as sd;
+use super::streetside as ss;
 use super::structures as st;
 use super::sundries as su;
 use super::surgical as sg;
@@ -297,6 +298,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cannon", he::cannon, [Metal], [Metal => [0.12, 0.12, 0.13], Trunk => [0.45, 0.30, 0.18], Tyre => [0.30, 0.20, 0.12], Interior => BLACK]),
     arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
     arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
+    arch!("newsstand", ss::newsstand, [Body], [Body => [0.18, 0.36, 0.26], Top => [0.14, 0.26, 0.20], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.56, 0.58], Interior => [0.10, 0.10, 0.11]]),
+    arch!("tiki_bar", ss::tiki_bar, [Shade], [Shade => [0.72, 0.58, 0.32], Frame => [0.78, 0.66, 0.40], Body => [0.45, 0.30, 0.17], Top => [0.50, 0.33, 0.18], Glass => [0.45, 0.60, 0.42], Metal => [0.30, 0.22, 0.14], Seat => [0.55, 0.38, 0.20]]),
+    arch!("street_lamp", ss::street_lamp, [Metal], [Metal => [0.12, 0.13, 0.14], Light => [1.0, 0.90, 0.62]]),
     arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
     arch!("food_cart", vd::food_cart, [Body], [Body => [0.85, 0.86, 0.88], Metal => STEEL, Handle => [0.15, 0.15, 0.16], Tyre => [0.10, 0.10, 0.10], Frame => [0.80, 0.80, 0.82], Shade => [0.85, 0.20, 0.15], Canvas => [0.95, 0.85, 0.25]]),
     arch!("ticket_booth", vd::ticket_booth, [Body], [Body => [0.78, 0.18, 0.15], Top => [0.93, 0.92, 0.88], Glass => [0.55, 0.70, 0.78], Interior => BLACK, Canvas => [0.98, 0.85, 0.30], Frame => [0.60, 0.14, 0.12], Handle => BRASS, Shade => [0.20, 0.22, 0.30]]),

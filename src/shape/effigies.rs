@@ -104,55 +104,105 @@ pub fn statue(b: &mut Builder) {
         [-0.95 * hw, -0.95 * hd, zp - 0.03 * h],
         [0.95 * hw, 0.95 * hd, zp],
     );
-    // The figure, in proportion to the height left: legs, a draped body, a head.
+    // The figure, in proportion to the height left: a long robe to the plinth, a torso widening
+    // to square shoulders, a neck, a head; one arm hanging at its side, the other raised.
     let fh = h - zp;
-    let (fw, fd) = (0.6 * hw, 0.6 * hd);
-    let lr = (0.07 * fh).min(0.35 * fw);
-    for sx in [-1.0, 1.0] {
-        b.frustum(Body, [sx * 0.4 * fw, 0.0, zp], lr, lr, 0.8, 0.47 * fh);
+    let (fw, fd) = (0.75 * hw, 0.6 * hd);
+    let at = |t: f64| zp + t * fh;
+    let waist = at(0.5);
+    let shoulder = at(0.79);
+    // The robe: a skirt widening to its hem, folds running down it, toes under the hem.
+    let skirt = (0.62 * fw).min(1.1 * fd);
+    b.frustum(Body, [0.0, 0.0, zp], skirt, 0.8 * skirt, 0.72, waist - zp);
+    for k in 0..7 {
+        let a = -0.9 + 1.8 * k as f64 / 6.0;
+        let (c, sn) = (a.sin(), a.cos());
+        b.rod(
+            Body,
+            [c * skirt, sn * 0.8 * skirt, zp + 0.01],
+            [c * 0.72 * skirt, sn * 0.58 * skirt, waist - 0.02 * fh],
+            0.05 * skirt,
+        );
     }
-    // A robe: a skirt widening to the knees, a torso over it.
+    for sx in [-1.0, 1.0] {
+        b.ellipsoid(
+            Body,
+            [sx * 0.3 * skirt, 0.8 * skirt, zp + 0.02 * fh],
+            [0.22 * skirt, 0.3 * skirt, 0.025 * fh],
+        );
+    }
+    // The torso: from the waist up to the shoulders, a sash across it.
+    let sh = 0.62 * fw; // half the shoulders' width, to the arms' sockets
     b.frustum(
         Body,
-        [0.0, 0.0, zp + 0.2 * fh],
-        0.95 * fw,
-        fd.min(0.95 * fw),
-        0.75,
-        0.35 * fh,
+        [0.0, 0.0, waist - 0.02 * fh],
+        0.5 * fw,
+        (0.42 * fw).min(0.8 * fd),
+        1.3,
+        shoulder - waist + 0.02 * fh,
     );
+    b.rod(
+        Top,
+        [-0.5 * fw, 0.3 * fw, waist + 0.05 * fh],
+        [0.55 * fw, 0.3 * fw, shoulder - 0.04 * fh],
+        0.04 * fw,
+    );
+    let ar = (0.045 * fh).min(0.14 * fw);
     b.ellipsoid(
         Body,
-        [0.0, 0.0, zp + 0.66 * fh],
-        [0.75 * fw, fd.min(0.7 * fw), 0.2 * fh],
+        [0.0, 0.0, shoulder - 0.01 * fh],
+        [sh + 0.5 * ar, (0.5 * fw).min(fd), 0.03 * fh],
     );
-    let ar = 0.7 * lr;
-    let shoulder = zp + 0.78 * fh;
-    // One arm down at the side, the other raised overhead.
-    b.rod(
-        Body,
-        [-0.7 * fw, 0.0, shoulder],
-        [-0.95 * fw, 0.1 * fd, zp + 0.5 * fh],
-        ar,
-    );
-    b.polyline(
-        Body,
-        &[
-            [0.7 * fw, 0.0, shoulder],
-            [0.95 * fw, 0.0, shoulder + 0.1 * fh],
-            [0.9 * fw, 0.0, h - 0.02],
-        ],
-        ar,
-    );
-    let hr = (0.075 * fh).min(0.5 * fw);
-    b.rod(
-        Body,
-        [0.0, 0.0, shoulder],
-        [0.0, 0.0, shoulder + 0.06 * fh],
-        0.4 * lr + 0.02,
-    );
+    for sx in [-1.0, 1.0] {
+        b.ellipsoid(
+            Body,
+            [sx * sh, 0.0, shoulder - ar],
+            [1.4 * ar, 1.3 * ar, 1.2 * ar],
+        );
+    }
+    // One arm hangs at the side, a hand at the hip.
+    let elbow = [-sh - 0.7 * ar, 0.0, at(0.6)];
+    b.rod(Body, [-sh, 0.0, shoulder - ar], elbow, ar);
+    b.rod(Body, elbow, [-sh - 0.5 * ar, 0.25 * fw, at(0.46)], 0.9 * ar);
     b.ellipsoid(
         Body,
-        [0.0, 0.0, shoulder + 0.06 * fh + hr],
-        [hr, hr.min(fd), 1.15 * hr],
+        [-sh - 0.5 * ar, 0.25 * fw, at(0.43)],
+        [0.9 * ar, 0.9 * ar, 1.3 * ar],
     );
+    // The other raised overhead, holding a torch.
+    let up_elbow = [sh + 1.5 * ar, 0.0, shoulder + 0.1 * fh];
+    b.rod(Body, [sh, 0.0, shoulder - ar], up_elbow, ar);
+    let hand = [sh + 1.2 * ar, 0.0, h - 0.12 * fh];
+    b.rod(Body, up_elbow, hand, 0.9 * ar);
+    b.ellipsoid(Body, hand, [1.1 * ar, 1.1 * ar, 1.2 * ar]);
+    b.frustum(
+        Top,
+        [hand[0], 0.0, hand[2]],
+        0.9 * ar,
+        0.9 * ar,
+        1.8,
+        0.07 * fh,
+    );
+    b.ellipsoid(
+        Top,
+        [hand[0], 0.0, h - 0.035 * fh],
+        [1.5 * ar, 1.5 * ar, 0.035 * fh],
+    );
+    // The neck and the head, with hair gathered at the back and a nose to the front.
+    let hr = (0.05 * fh).min(0.38 * fw);
+    let neck = shoulder + 0.05 * fh;
+    b.rod(
+        Body,
+        [0.0, 0.0, shoulder - 0.02 * fh],
+        [0.0, 0.0, neck],
+        0.55 * hr,
+    );
+    let zh = neck + 1.1 * hr;
+    b.ellipsoid(Body, [0.0, 0.0, zh], [hr, 1.1 * hr, 1.3 * hr]);
+    b.ellipsoid(
+        Top,
+        [0.0, -0.25 * hr, zh + 0.2 * hr],
+        [1.08 * hr, 1.0 * hr, 1.2 * hr],
+    );
+    b.ellipsoid(Body, [0.0, 1.05 * hr, zh], [0.2 * hr, 0.2 * hr, 0.3 * hr]);
 }

@@ -442,6 +442,13 @@ impl Palette {
         }
     }
 
+    /// This palette with `rgb` on `role`.
+    pub fn with(mut self, role: Role, rgb: Rgb) -> Palette {
+        self.colours.retain(|c| c.0 != role);
+        self.colours.push((role, rgb));
+        self
+    }
+
     /// This palette with `goods` as the colours of its [`Role::Books`] parts (what a shelf
     /// holds: loaves, packs, toys…), chosen by variant.
     pub fn holding(self, goods: &'static [Rgb]) -> Palette {

@@ -111,6 +111,7 @@ mod sleepers;
 mod smithy;
 mod sport;
 mod stands;
+mod streetside;
 mod structures;
 mod sundries;
 mod surgical;
@@ -389,6 +390,9 @@ fn animal_palette(
         colours.push((role, rgb));
     }
     let p = materials::Palette::new(description, main, &colours);
+    if let Some([coat, marks]) = coat_pair(description, a) {
+        return p.with(Role::Body, coat).with(Role::Top, marks);
+    }
     let (coat, marks) = (p.colour(Role::Body, 0), p.colour(Role::Top, 0));
     let apart: f32 = (0..3).map(|i| (coat[i] - marks[i]).abs()).sum();
     if apart > 0.3 {
@@ -405,6 +409,24 @@ fn animal_palette(
     };
     colours.push((Role::Top, other));
     materials::Palette::new(description, main, &colours)
+}
+
+/// The coat and pattern colours of a patterned animal whose description names two free colours
+/// ("a black and white striped zebra", "a brown and white cow"): the one nearer the row's coat
+/// colour is the coat, the other the pattern, whatever order the words come in.
+fn coat_pair(description: &str, a: &animals::Animal) -> Option<[materials::Rgb; 2]> {
+    a.pattern?;
+    let free: Vec<materials::Rgb> = materials::colour_words(description)
+        .into_iter()
+        .filter(|w| w.part.is_none() && w.kind == materials::WordKind::Colour)
+        .map(|w| w.rgb)
+        .collect();
+    let (&x, &y) = (free.first()?, free.get(1)?);
+    let dist = |c: materials::Rgb| (0..3).map(|i| (c[i] - a.coat[i]).abs()).sum::<f32>();
+    if (0..3).map(|i| (x[i] - y[i]).abs()).sum::<f32>() < 0.3 {
+        return None;
+    }
+    Some(if dist(y) < dist(x) { [y, x] } else { [x, y] })
 }
 
 /// Surface Gaussians of `parts` about `spacing` apart, coloured by `palette`; samples outside the
