@@ -21,6 +21,7 @@ mod audience;
 mod companions;
 mod counts;
 mod describe;
+mod goods;
 mod outdoors;
 mod placeable;
 mod purpose;
@@ -194,6 +195,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         laid: BTreeMap::new(),
     };
     roles::scene_defaults(&mut d);
+    goods::goods_on_show(&mut d);
     roles::mention_kinds(&mut d);
     supports::work_tables(&mut d);
     sizing::mention_sizes(&mut d);

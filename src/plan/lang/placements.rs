@@ -274,8 +274,17 @@ pub(super) fn surface_kinds(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
                 .get(c)
                 .is_some_and(|p| p.supports.contains(&o.category))
         };
+        // "flower pots": a kind named by the noun only in another compound (a "tea pot") is
+        // another thing; one the bare noun names ("lamp": a table lamp) is the same thing
+        let compound = s.text.contains(' ');
+        let same_thing = |k: &crate::plan::kb::ObjectKind| {
+            !compound
+                || std::iter::once(&k.category)
+                    .chain(&k.synonyms)
+                    .any(|n| n == &head || n.ends_with(&format!(" {}", s.text)))
+        };
         let kind = kinds_named_by(kb, &head)
-            .filter(|k| stands_on_surfaces(&k.category))
+            .filter(|k| stands_on_surfaces(&k.category) && same_thing(k))
             .min_by_key(|k| {
                 let own = k.category.rsplit(' ').next() == Some(head.as_str());
                 (!on(&k.category), !own)

@@ -4,7 +4,7 @@
 use super::Draft;
 use crate::plan::lang;
 use crate::plan::spec::MAX_NUMBER;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Things a place sets out in "rows of chairs" when neither the text nor the place's defaults
 /// count them (a waiting room's rows are its eight default chairs): three rows of four, the
@@ -15,6 +15,7 @@ const SEATS_IN_ROWS: u32 = 12;
 /// instances of another object ("two chairs at each table"), a bare plural's default count.
 pub(super) fn mention_counts(d: &mut Draft) {
     let kb = d.kb;
+    let one_of_few = references_to_defaults(d);
     let Draft {
         r,
         sizes,
@@ -55,6 +56,14 @@ pub(super) fn mention_counts(d: &mut Draft) {
             Some(n) => {
                 *explicit.entry(cat.clone()).or_default() += n;
             }
+            // "a small office with a lamp on the desk": the one desk of a room the text sizes
+            // small is the desk it refers to (the place's several desks are a bigger room's)
+            None if m.definite
+                && one_of_few.contains(cat)
+                && (r.room.is_some() || r.scale < 1.0) =>
+            {
+                counts.insert(cat.clone(), 1);
+            }
             None if m.definite => {
                 counts.entry(cat.clone()).or_insert(1);
             }
@@ -64,7 +73,9 @@ pub(super) fn mention_counts(d: &mut Draft) {
                 let n = r.people.map_or(1, |p| p.div_ceil(holds).max(1));
                 *explicit.entry(cat.clone()).or_default() += n;
             }
-            None if m.plural => {
+            // "two rows of lockers": rows said of a name that is singular in the knowledge base
+            // (a "lockers" unit) are rows of several all the same; "a row of lockers" is the one
+            None if m.plural || m.rows > 1 => {
                 if !explicit.contains_key(cat) {
                     // "three rows of benches": a row is two or more things side by side
                     let d = defaults
@@ -138,6 +149,26 @@ pub(super) fn mention_counts(d: &mut Draft) {
             ));
         }
     }
+}
+
+/// Categories the text names only by a definite singular ("a lamp on the desk") where the
+/// place has several of them by default (an office's desks).
+fn references_to_defaults(d: &Draft) -> BTreeSet<String> {
+    let said_otherwise = |cat: &String| {
+        d.r.mentions
+            .iter()
+            .zip(d.cats.iter())
+            .any(|(m, c)| c == cat && !m.negated && !m.reference && !m.definite)
+    };
+    d.r.mentions
+        .iter()
+        .zip(d.cats.iter())
+        .filter(|(m, _)| m.definite && !m.plural && m.count.is_none() && !m.negated)
+        .map(|(_, c)| c)
+        .filter(|c| d.defaults.get(*c).is_some_and(|n| *n > 1))
+        .filter(|c| !said_otherwise(c))
+        .cloned()
+        .collect()
 }
 
 /// Clamps counts (a note names each) and drops what has none.

@@ -210,11 +210,17 @@ pub(super) fn mention_kinds(d: &mut Draft) {
     }
     // "a chair either side of the fireplace" in a living room: a bare noun the scene has no
     // default of is the default that is a kind of it by another name (its armchairs), unless a
-    // table the text names seats it ("a dining table and four chairs").
+    // table the text names seats it ("a dining table and four chairs"). Seats set out in rows
+    // ("chairs in rows") are an audience's, never the room's easy chairs.
     for i in 0..r.mentions.len() {
         let m = &r.mentions[i];
         let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
-        if cats[i] != m.category || m.owner.is_some() || m.text.split(' ').count() != 1 {
+        if cats[i] != m.category
+            || m.owner.is_some()
+            || m.text.split(' ').count() != 1
+            || m.in_rows
+            || m.rows > 0
+        {
             continue;
         }
         let Some(s) = scene else { continue };
