@@ -137,3 +137,16 @@ fn a_water_bowl_at_the_vets_is_a_pet_bowl() {
         assert_eq!(number(&s, "pet bowl"), 1, "{prompt}: {:?}", keys(&s));
     }
 }
+
+#[test]
+fn a_treatment_room_is_a_place_not_a_thing() {
+    for prompt in [
+        "a treatment room at the physio's with a massage table, a pair of stools and a skeleton model in the corner",
+        "a physiotherapy room with a massage table and wall bars",
+        "a massage room with two massage tables and a plant",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "treatment"), 0, "{prompt}: {:?}", keys(&s));
+        assert!(number(&s, "massage table") >= 1, "{prompt}: {:?}", keys(&s));
+    }
+}
