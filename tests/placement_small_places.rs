@@ -53,7 +53,10 @@ fn a_small_place_keeps_fewer_default_seats_and_a_smaller_floor() {
         for (prompt, spec) in [(small, &s), (tiny, &t)] {
             for seed in 0..3 {
                 let l = layout(spec, LayoutOptions::seeded(seed)).expect("laid out");
-                assert!(validity_problems(&l, spec).is_empty(), "{prompt} seed {seed}");
+                assert!(
+                    validity_problems(&l, spec).is_empty(),
+                    "{prompt} seed {seed}"
+                );
             }
         }
     }
