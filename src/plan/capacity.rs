@@ -6,6 +6,9 @@ use super::gcp::{choose_room, smallest_room};
 use super::spec::{Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
 use std::collections::BTreeSet;
 
+mod blocks;
+pub(crate) use blocks::scale_blocks;
+
 /// Largest share of the floor that footprints may cover once default furniture is trimmed:
 /// Holodeck's floor capacity ratio (0.4) plus a little, as named pieces may exceed it.
 pub const TRIM_OCCUPANCY: f64 = 0.45;

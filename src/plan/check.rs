@@ -245,7 +245,13 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
         RelationKind::Next => gap(sb, ob) <= NEXT_GAP,
         RelationKind::Opposite => {
             let d = ((sb.c[0] - ob.c[0]).powi(2) + (sb.c[1] - ob.c[1]).powi(2)).sqrt();
-            l[1] > hd && band(0, hw) && (1.0..=5.0).contains(&d) && facing_error(sb, ob) <= 30.0
+            // facing it: its centre, and the nearest point of its footprint (a sofa beside a
+            // screen's end, turned to its centre, sees the screen's edge)
+            l[1] > hd
+                && band(0, hw)
+                && (1.0..=5.0).contains(&d)
+                && facing_error(sb, ob) <= 30.0
+                && facing_footprint_error(sb, ob) <= 30.0
         }
         RelationKind::Over => ob.contains(sb.c) && (sb.z0 - top).abs() <= 0.05,
         RelationKind::Under => ob.contains(sb.c) && sb.z1 <= top + 1e-6,

@@ -231,10 +231,16 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
     }
     relations::relations(&d, &mut spec);
-    spec.room = Some(sizing::room(&mut d, &spec));
     let essential: BTreeSet<String> = d
         .scene
         .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());
+    // a room called small or tiny (no stated size) seats fewer: its default rows and tables
+    // shrink with its floor before the room is sized for them
+    if d.r.scale < 1.0 && d.r.room.is_none() {
+        let cut = crate::plan::capacity::scale_blocks(&mut spec, &d.named, &essential, d.r.scale);
+        d.notes.extend(cut);
+    }
+    spec.room = Some(sizing::room(&mut d, &spec));
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
     d.notes.extend(fitted);

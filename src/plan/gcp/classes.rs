@@ -7,6 +7,9 @@ use crate::plan::spec::{Anchor, Relation, RelationKind, SceneSpec, SceneType};
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
+mod flank;
+use flank::flank_with_support;
+
 /// Where a category stands.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Class {
@@ -252,6 +255,8 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     let mut added = vec![];
+    // (thing, the support it rests on)
+    let mut carried: Vec<(String, String)> = vec![];
     let mut unstack: Vec<String> = vec![];
     let cats: Vec<(String, u32, [f64; 3])> = spec
         .objects
@@ -291,6 +296,13 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                     if has_own {
                         // a thing on a support keeps no anchor of its own
                         spec.anchors.remove(&id);
+                        if let Some(r) = spec
+                            .relations
+                            .iter()
+                            .find(|r| r.subject == id && r.relation == RelationKind::Over)
+                        {
+                            carried.push((id.clone(), r.object.clone()));
+                        }
                         continue;
                     }
                     let Some(p) = Placements::builtin().get(&cat) else {
@@ -312,6 +324,7 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                         *load.entry(oid.clone()).or_default() += size[0] * size[1];
                         // a thing on a support keeps no anchor of its own
                         spec.anchors.remove(&id);
+                        carried.push((id.clone(), oid.clone()));
                         added.push(Relation {
                             subject: id,
                             relation: RelationKind::Over,
@@ -366,6 +379,7 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
         }
     }
     spec.relations.extend(added);
+    flank_with_support(spec, &carried);
     for (id, target) in over.into_iter().chain(under) {
         if let Some(below) = footprint_below(spec, &target) {
             let to = if mounts.ceiling.contains(&id) {
