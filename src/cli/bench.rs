@@ -133,10 +133,10 @@ fn bench_generate_sd(
             )?;
             if !json {
                 println!(
-                    "sd {} {}² {:<8} {:>8.1} ms/it: text {:>6.1}  unet {:>8.1} ({:.0} runs, {:.0} items)  vae {:>7.1}  kernels {:>6.1}  guidance {:>6.1}  host {:>6.1} ms ({:.1}% host)",
+                    "sd {} {}² {:<8} {:>8.1} ms/it: text {:>6.1}  unet {:>8.1} ({:.0} runs, {:.0} items)  vae {:>7.1}  kernels {:>6.1}  conversions {:>6.1}  guidance {:>6.1}  host {:>6.1} ms ({:.1}% host)",
                     f.precision, f.size, f.mode, f.wall_ms, f.text_encoder_ms, f.unet_ms,
-                    f.unet_runs, f.unet_items, f.vae_ms, f.kernels_ms, f.prior_host_ms,
-                    f.host_ms, 100.0 * f.host_share
+                    f.unet_runs, f.unet_items, f.vae_ms, f.kernels_ms, f.conversions_ms,
+                    f.prior_host_ms, f.host_ms, 100.0 * f.host_share
                 );
             }
             figures.push(f);
