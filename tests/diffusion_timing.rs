@@ -47,7 +47,7 @@ fn one_iteration(sd: &mut StableDiffusion) -> (ModelTimes, usize, f64) {
         .image_targets(sd, &[&cond, &cond], &[&render, &render], 64, 64, 100)
         .unwrap();
     let wall = t0.elapsed().as_secs_f64();
-    assert_eq!(targets.len(), 2);
+    assert_eq!(targets.len(), 2, "one target a view");
     let m = sd.take_times();
     // Text encoder, VAE encode and decode, and the UNet's runs.
     (m, 3 + m.unet_runs, wall)
@@ -66,7 +66,10 @@ fn conversions_are_booked_outside_the_models_time() {
     one_iteration(&mut sd); // warm-up: first runs allocate
     let (plain, runs, wall) = one_iteration(&mut sd);
     assert!(runs >= 4 && plain.unet_runs >= 1, "{plain:?}");
-    assert!(plain.unet > 0.0 && plain.autoencoder > 0.0 && plain.text_encoder > 0.0);
+    assert!(
+        plain.unet > 0.0 && plain.autoencoder > 0.0 && plain.text_encoder > 0.0,
+        "every model timed: {plain:?}"
+    );
     assert!(plain.conversions > 0.0, "{plain:?}");
     assert!(
         models(&plain) + plain.conversions <= wall * 1.001 + 1e-4,

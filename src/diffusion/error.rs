@@ -37,6 +37,9 @@ fn named(path: &Path, msg: &str) -> String {
     }
 }
 
+/// Result alias of the diffusion layer.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -62,6 +65,3 @@ mod tests {
         assert_eq!(e("/mx: gone"), "/m: /mx: gone", "another path is no prefix");
     }
 }
-
-/// Result alias of the diffusion layer.
-pub type Result<T, E = Error> = std::result::Result<T, E>;

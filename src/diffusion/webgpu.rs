@@ -101,10 +101,12 @@ pub fn quiet_adapter_search<T>(f: impl FnOnce() -> Result<T, String>) -> Result<
         return f();
     };
     let _ = std::io::stderr().flush();
-    // SAFETY: dup and dup2 on descriptor 2 and on a file this function owns; the saved
-    // descriptor is restored and closed before returning, whatever `f` does short of aborting.
+    // SAFETY: dup of descriptor 2, which is open for the whole process; the copy is restored
+    // and closed before returning, whatever `f` does short of aborting.
     let saved = unsafe { libc::dup(2) };
-    if saved < 0 || unsafe { libc::dup2(file.as_raw_fd(), 2) } < 0 {
+    // SAFETY: dup2 of a file this function owns onto descriptor 2, which the saved copy restores.
+    let moved = saved >= 0 && unsafe { libc::dup2(file.as_raw_fd(), 2) } >= 0;
+    if !moved {
         if saved >= 0 {
             // SAFETY: closing the descriptor dup returned above, used nowhere else.
             unsafe { libc::close(saved) };
