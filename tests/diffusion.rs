@@ -667,6 +667,20 @@ fn cli_doctor_and_unet_bench() {
 
     let (ok, out) = cli(&["bench", "--unet"], &[]);
     assert!(!ok && out.contains("--models"), "{out}");
+    // The help of the sd path reads as text: no rustdoc links, the conversions named.
+    for cmd in ["bench", "doctor"] {
+        let (ok, out) = cli(&[cmd, "--help"], &[]);
+        assert!(ok && out.contains("--provider"), "{out}");
+        assert!(
+            !out.contains("[`"),
+            "a rustdoc link in `{cmd} --help`: {out}"
+        );
+    }
+    let (_, out) = cli(&["bench", "--help"], &[]);
+    assert!(
+        out.contains("conversions") && out.contains("--generate --prior sd"),
+        "{out}"
+    );
     let (ok, out) = cli(&["doctor", "--models", "/nonexistent/models"], &[]);
     assert!(
         !ok && out.contains("/nonexistent/models: model directory not found"),

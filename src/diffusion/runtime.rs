@@ -23,7 +23,7 @@ pub enum Provider {
     Cuda,
     /// WebGPU on Vulkan (the `onnxruntime-ep-webgpu` plugin library beside ONNX Runtime).
     Webgpu,
-    /// A GPU provider on a real GPU, else the CPU (see [`choose_auto`]).
+    /// A GPU provider on a real GPU, else the CPU (`doctor` says which and why).
     Auto,
 }
 
