@@ -1,5 +1,6 @@
 //! `dreamscene bench --generate --prior sd`: one formation iteration of object generation with
-//! the Stable Diffusion prior, split into the text encoder, the UNet, the autoencoder, the
+//! the Stable Diffusion prior, split into the text encoder, the UNet and the autoencoder (each
+//! ONNX Runtime's `session.run` alone), the conversions of the models' inputs and outputs, the
 //! guidance maths on the host, the kernels and the rest, with the views of an iteration in one
 //! UNet run per guidance step (batched) and one view at a time (per view), measured in one run.
 use crate::camera::object::OrbitRanges;
@@ -23,17 +24,22 @@ pub struct SdIterationFigures {
     pub size: u32,
     pub gaussians: u32,
     pub wall_ms: f64,
+    /// ONNX Runtime's `session.run` of the text encoder.
     pub text_encoder_ms: f64,
+    /// ONNX Runtime's `session.run` of the UNet.
     pub unet_ms: f64,
-    /// The autoencoder's encode and decode.
+    /// ONNX Runtime's `session.run` of the autoencoder's encode and decode.
     pub vae_ms: f64,
+    /// The host's preparation of the models' inputs and outputs: f32 ↔ f16, batching, latent
+    /// scaling, image layout changes, the finiteness check.
+    pub conversions_ms: f64,
     /// GPU time from timestamps: renders, backward passes and Adam.
     pub kernels_ms: f64,
-    /// The prior's own host work: guidance maths, layout conversions, batching.
+    /// The rest of the prior's host work: guidance maths, noise, the schedule.
     pub prior_host_ms: f64,
     /// wall − prior − kernels: readbacks, submissions, the loss, bookkeeping.
     pub host_ms: f64,
-    /// (prior host + host) / wall: the share outside ONNX Runtime and the kernels.
+    /// (conversions + prior host + host) / wall: the share outside ONNX Runtime and the kernels.
     pub host_share: f64,
     pub unet_runs: f64,
     pub unet_items: f64,
@@ -71,7 +77,7 @@ pub fn bench_generate_sd(
     t.set_timed(true);
     let mut guide = formation_guide(&cfg);
     let ranges = OrbitRanges::default();
-    let mut rows: Vec<[f64; 9]> = vec![];
+    let mut rows: Vec<[f64; 10]> = vec![];
     for i in 0..runs.max(1) + warmups {
         let r = formation_iteration(
             &mut t, &mut prior, &mut guide, &mut rng, &frame, &ranges, &cfg,
@@ -80,7 +86,7 @@ pub fn bench_generate_sd(
         if i < warmups {
             continue;
         }
-        let models_ms = (m.text_encoder + m.unet + m.autoencoder) * 1e3;
+        let models_ms = (m.text_encoder + m.unet + m.autoencoder + m.conversions) * 1e3;
         let prior_ms = r.prior_seconds * 1e3;
         let kernels = r.kernels.total_ms();
         let wall = r.seconds * 1e3;
@@ -94,6 +100,7 @@ pub fn bench_generate_sd(
             wall - prior_ms - kernels,
             m.unet_runs as f64,
             m.unet_items as f64,
+            m.conversions * 1e3,
         ]);
     }
     let col = |k: usize| mean(&rows.iter().map(|r| r[k]).collect::<Vec<_>>());
@@ -108,10 +115,11 @@ pub fn bench_generate_sd(
         text_encoder_ms: col(1),
         unet_ms: col(2),
         vae_ms: col(3),
+        conversions_ms: col(9),
         kernels_ms: col(4),
         prior_host_ms: col(5),
         host_ms: col(6),
-        host_share: (col(5) + col(6)) / col(0).max(1e-9),
+        host_share: (col(9) + col(5) + col(6)) / col(0).max(1e-9),
         unet_runs: col(7),
         unet_items: col(8),
     })

@@ -900,19 +900,7 @@ fn an_animated_scene_plays_in_export_render_and_video() {
         glb.to_str().unwrap(),
     ]));
     let bytes = std::fs::read(&glb).unwrap();
-    let renamed = dir.join("anim-renamed.glb");
-    std::fs::write(
-        &renamed,
-        export_support::rename_extension_attributes(&bytes),
-    )
-    .unwrap();
-    let report = export_support::reader_json("validate", &renamed);
-    assert_eq!(report["issues"]["numErrors"].as_u64(), Some(0), "{report}");
-    assert_eq!(
-        report["issues"]["numWarnings"].as_u64(),
-        Some(0),
-        "{report}"
-    );
+    export_support::assert_renamed_validates_clean(&bytes, &dir.join("anim-renamed.glb"));
     let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
     let doc: serde_json::Value = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
     let nodes = doc["nodes"].as_array().unwrap();

@@ -48,12 +48,20 @@ fn draft(out: &Path, renders: &str, extra: &[&str]) -> Output {
     run(&args, &[])
 }
 
-#[test]
-fn generate_refuses_an_existing_scene_force_replaces_it_whole_and_failures_leave_nothing() {
-    let root = tmp("overwrite");
+/// A fresh temporary directory `name` with a draft scene (no renders) in `scene/`: the directory,
+/// the scene's path, and that path as an argument.
+fn drafted(name: &str) -> (PathBuf, PathBuf, String) {
+    let root = tmp(name);
     let out = root.join("scene");
     let o = draft(&out, "0", &[]);
     assert!(o.status.success(), "{}", stderr(&o));
+    let d = out.to_string_lossy().to_string();
+    (root, out, d)
+}
+
+#[test]
+fn generate_refuses_an_existing_scene_force_replaces_it_whole_and_failures_leave_nothing() {
+    let (root, out, _) = drafted("overwrite");
     let before = std::fs::read(out.join("scene.json")).expect("scene.json");
     std::fs::write(out.join("notes.txt"), "mine").expect("a stray file");
     let o = draft(&out, "0", &[]);
@@ -125,12 +133,8 @@ fn resume_renders_the_views_cameras_json_lists_that_are_missing() {
 
 #[test]
 fn a_second_writer_waits_or_with_no_wait_names_the_holder() {
-    let root = tmp("busy");
-    let out = root.join("scene");
-    let o = draft(&out, "0", &[]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let (root, out, d) = drafted("busy");
     let held = SceneLock::acquire(&out, Wait::NoWait, "a test holding the scene").expect("lock");
-    let d = out.to_string_lossy().to_string();
     let o = run(
         &["edit", &d, "move", "bed1", "--by", "0.1,0", "--no-wait"],
         &[],
@@ -202,11 +206,7 @@ fn empty_environment_variables_mean_unset() {
 
 #[test]
 fn out_of_bounds_values_are_refused_in_one_line_and_messages_say_each_path_once() {
-    let root = tmp("bounds");
-    let out = root.join("scene");
-    let o = draft(&out, "0", &[]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let d = out.to_string_lossy().to_string();
+    let (root, out, d) = drafted("bounds");
     // A move that would put the bed 150 m outside the room is refused even with --force.
     let o = run(
         &[
@@ -274,11 +274,7 @@ fn out_of_bounds_values_are_refused_in_one_line_and_messages_say_each_path_once(
 
 #[test]
 fn video_and_render_check_their_output_before_rendering() {
-    let root = tmp("early");
-    let out = root.join("scene");
-    let o = draft(&out, "0", &[]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let d = out.to_string_lossy().to_string();
+    let (root, _, d) = drafted("early");
     // A regular file where the output's directory should be: nothing can be written under it
     // (even as root, unlike a read-only mode bit).
     let blocker = root.join("blocker");

@@ -171,26 +171,32 @@ fn mean_abs_diff(a: &[u8], b: &[u8]) -> f64 {
         / a.len() as f64
 }
 
-#[test]
-fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
-    let d = tmp("mp4");
+/// A fresh temporary directory `name` holding the two clusters' PLY and its orbit video `file`
+/// made with the options `extra`: the directory, the PLY and the video.
+fn orbit_video(name: &str, file: &str, extra: &[&str]) -> (PathBuf, PathBuf, PathBuf) {
+    let d = tmp(name);
     let ply = d.join("clusters.ply");
     common::two_clusters(&ply, 2000, 0.12, 3);
-    let out = d.join("orbit.mp4");
-    let o = run(&[
+    let out = d.join(file);
+    let mut args = vec![
         "video",
         ply.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
-        "--seconds",
-        "1",
-        "--fps",
-        "8",
-        "--size",
-        "96x64",
-        "--depth",
-    ]);
+    ];
+    args.extend_from_slice(extra);
+    let o = run(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    (d, ply, out)
+}
+
+#[test]
+fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
+    let (d, ply, out) = orbit_video(
+        "mp4",
+        "orbit.mp4",
+        &["--seconds", "1", "--fps", "8", "--size", "96x64", "--depth"],
+    );
     assert_eq!(probe(&out), (8, 96, 64));
     let depth = d.join("orbit.depth.mp4");
     assert_eq!(probe(&depth), (8, 96, 64));
@@ -244,25 +250,20 @@ fn mp4_decodes_to_the_frames_rendered_along_the_orbit() {
 
 #[test]
 fn gif_holds_every_frame_and_bad_requests_fail_in_one_line() {
-    let d = tmp("gif");
-    let ply = d.join("clusters.ply");
-    common::two_clusters(&ply, 2000, 0.12, 3);
-    let out = d.join("orbit.gif");
-    let o = run(&[
-        "video",
-        ply.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--seconds",
-        "0.5",
-        "--fps",
-        "10",
-        "--size",
-        "64x48",
-        "--background",
-        "1,1,1",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (d, ply, out) = orbit_video(
+        "gif",
+        "orbit.gif",
+        &[
+            "--seconds",
+            "0.5",
+            "--fps",
+            "10",
+            "--size",
+            "64x48",
+            "--background",
+            "1,1,1",
+        ],
+    );
     assert_eq!(probe(&out), (5, 64, 48));
     let frames = decode(&out, 64, 48);
     assert_eq!(frames.len(), 5);

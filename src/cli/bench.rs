@@ -17,15 +17,17 @@ pub struct Args {
     #[arg(long, conflicts_with = "unet")]
     pub generate: bool,
     /// The prior of --generate: oracle (a random reference cloud), or sd (the models of
-    /// --models: the iteration split into text encoder, UNet, autoencoder, guidance maths,
-    /// kernels and host, batched and per view).
+    /// --models: the iteration split into text encoder, UNet and autoencoder (ONNX Runtime's
+    /// runs alone), conversions of their inputs and outputs, guidance maths, kernels and host,
+    /// batched and per view).
     #[arg(long, default_value = "oracle", value_parser = ["oracle", "sd"], requires = "generate")]
     pub prior: String,
     /// Which sd iterations --generate --prior sd times: both (batched and per view), batched
     /// or per-view.
     #[arg(long, default_value = "both", value_parser = ["both", "batched", "per-view"])]
     pub modes: String,
-    /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet.
+    /// Stable Diffusion ONNX model directory (Optimum's layout) for --unet and --generate --prior
+    /// sd.
     #[arg(long, env = "DREAMSCENE_MODELS")]
     pub models: Option<PathBuf>,
     /// ONNX Runtime execution provider for --unet and --generate --prior sd (auto: a GPU
@@ -133,10 +135,10 @@ fn bench_generate_sd(
             )?;
             if !json {
                 println!(
-                    "sd {} {}² {:<8} {:>8.1} ms/it: text {:>6.1}  unet {:>8.1} ({:.0} runs, {:.0} items)  vae {:>7.1}  kernels {:>6.1}  guidance {:>6.1}  host {:>6.1} ms ({:.1}% host)",
+                    "sd {} {}² {:<8} {:>8.1} ms/it: text {:>6.1}  unet {:>8.1} ({:.0} runs, {:.0} items)  vae {:>7.1}  kernels {:>6.1}  conversions {:>6.1}  guidance {:>6.1}  host {:>6.1} ms ({:.1}% host)",
                     f.precision, f.size, f.mode, f.wall_ms, f.text_encoder_ms, f.unet_ms,
-                    f.unet_runs, f.unet_items, f.vae_ms, f.kernels_ms, f.prior_host_ms,
-                    f.host_ms, 100.0 * f.host_share
+                    f.unet_runs, f.unet_items, f.vae_ms, f.kernels_ms, f.conversions_ms,
+                    f.prior_host_ms, f.host_ms, 100.0 * f.host_share
                 );
             }
             figures.push(f);

@@ -20,6 +20,7 @@ use super::schedule::{Schedule, SchedulerConfig};
 use super::tokenizer::ClipTokenizer;
 use ort::value::TensorElementType as T;
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 const FLOAT: &[T] = &[T::Float32, T::Float16];
 
@@ -55,14 +56,22 @@ pub struct Embedding {
     pub hidden: usize,
 }
 
-/// Wall time spent running each model (seconds) and the UNet's runs and items, since the last
+/// Wall time spent inside ONNX Runtime running each model (seconds), the host's conversions
+/// around those runs, and the UNet's runs and items, since the last
 /// [`StableDiffusion::take_times`]: the split of a prior's time that `bench --generate` reports.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct ModelTimes {
+    /// ONNX Runtime's `session.run` of the text encoder.
     pub text_encoder: f64,
+    /// ONNX Runtime's `session.run` of the UNet.
     pub unet: f64,
-    /// Encoder and decoder of the autoencoder (the VAE or the tiny one).
+    /// ONNX Runtime's `session.run` of the autoencoder's encoder and decoder (the VAE or the
+    /// tiny one).
     pub autoencoder: f64,
+    /// Host work preparing the models' inputs and reading their outputs: f32 ↔ f16, batching
+    /// the UNet's inputs, scaling latents, the image layout changes around the autoencoder and
+    /// the finiteness check of outputs.
+    pub conversions: f64,
     pub unet_runs: usize,
     pub unet_items: usize,
 }
@@ -342,6 +351,36 @@ impl StableDiffusion {
         std::mem::take(&mut self.times)
     }
 
+    /// Adds host conversion time spent outside this pipeline's calls (a caller's layout changes
+    /// of the images it encodes or decodes) to [`ModelTimes::conversions`].
+    pub fn add_conversion_seconds(&mut self, seconds: f64) {
+        self.times.conversions += seconds;
+    }
+
+    /// Makes every model's input conversion take `delay` longer
+    /// ([`OnnxModel::plant_slow_conversion`]): a test hook for the timings' split.
+    pub fn plant_slow_conversion(&mut self, delay: std::time::Duration) {
+        let ae = |a: &mut Autoencoder| {
+            a.decoder.plant_slow_conversion(delay);
+            if let Some(e) = a.encoder.as_mut() {
+                e.plant_slow_conversion(delay);
+            }
+        };
+        ae(&mut self.vae);
+        if let Some(f) = self.fast.as_mut() {
+            ae(f);
+        }
+        self.text_encoder.plant_slow_conversion(delay);
+        self.unet.plant_slow_conversion(delay);
+    }
+
+    /// Books one model call begun at `t0` whose ONNX Runtime part took `session` seconds: that
+    /// part to the model's time, the rest to the conversions.
+    fn book(&mut self, t0: Instant, session: f64, model: fn(&mut ModelTimes) -> &mut f64) {
+        *model(&mut self.times) += session;
+        self.times.conversions += (t0.elapsed().as_secs_f64() - session).max(0.0);
+    }
+
     /// Probes a GPU provider at a UNet run of `batch` items at latent size `hw` (once per size)
     /// and acts on the verdict: splits later runs, or reloads every model on the CPU provider
     /// with a warning. The CPU provider is not probed.
@@ -432,12 +471,13 @@ impl StableDiffusion {
         if ids.iter().any(|v| v.len() != seq) {
             return Err("token id rows differ in length".into());
         }
+        let t0 = Instant::now();
         let flat: Vec<i64> = ids.concat();
-        let t0 = std::time::Instant::now();
         let out = self
             .text_encoder
             .run(&[(vec![ids.len() as i64, seq as i64], Data::I64(&flat))]);
-        self.times.text_encoder += t0.elapsed().as_secs_f64();
+        let session = self.text_encoder.last_session_seconds();
+        self.book(t0, session, |m| &mut m.text_encoder);
         out
     }
 
@@ -495,6 +535,7 @@ impl StableDiffusion {
             }
             return Ok(out);
         }
+        let t0 = Instant::now();
         let (seq, hidden) = (conds[0].seq, conds[0].hidden);
         let sample: Vec<f32> = samples.concat();
         let mut ehs: Vec<f32> = Vec::with_capacity(b * seq * hidden);
@@ -507,7 +548,6 @@ impl StableDiffusion {
             [1] => (vec![1], vec![t as f32]),
             _ => (vec![b as i64], vec![t as f32; b]),
         };
-        let t0 = std::time::Instant::now();
         let out = self.unet.run(&[
             (
                 vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
@@ -516,7 +556,7 @@ impl StableDiffusion {
             (t_shape, Data::F32(&t_vals)),
             (vec![b as i64, seq as i64, hidden as i64], Data::F32(&ehs)),
         ]);
-        self.times.unet += t0.elapsed().as_secs_f64();
+        let session = self.unet.last_session_seconds();
         self.times.unet_runs += 1;
         self.times.unet_items += b;
         let out = out?;
@@ -529,7 +569,9 @@ impl StableDiffusion {
                 hw.1
             ));
         }
-        Ok(data.chunks(n).map(<[f32]>::to_vec).collect())
+        let out = data.chunks(n).map(<[f32]>::to_vec).collect();
+        self.book(t0, session, |m| &mut m.unet);
+        Ok(out)
     }
 
     fn codec(&mut self, which: Codec) -> &mut Autoencoder {
@@ -548,22 +590,23 @@ impl StableDiffusion {
         hw: (usize, usize),
         which: Codec,
     ) -> Result<(Vec<f32>, (usize, usize)), String> {
+        let t0 = Instant::now();
         let c = self.latent_channels;
         let ae = self.codec(which);
         let inv = (1.0 / ae.scaling) as f32;
         let scaled: Vec<f32> = z.iter().map(|v| v * inv).collect();
-        let t0 = std::time::Instant::now();
         let out = ae.decoder.run(&[(
             vec![b as i64, c as i64, hw.0 as i64, hw.1 as i64],
             Data::F32(&scaled),
         )]);
-        self.times.autoencoder += t0.elapsed().as_secs_f64();
-        let ae = self.codec(which);
+        let session = ae.decoder.last_session_seconds();
+        let path = ae.decoder.path.clone();
+        self.book(t0, session, |m| &mut m.autoencoder);
         let (shape, data) = out?.remove(0);
         if shape.len() != 4 || shape[0] != b as i64 || shape[1] != 3 {
             return Err(format!(
                 "{}: decoded shape {shape:?}, expected [{b}, 3, H, W]",
-                ae.decoder.path.display()
+                path.display()
             ));
         }
         Ok((data, (shape[2] as usize, shape[3] as usize)))
@@ -587,12 +630,12 @@ impl StableDiffusion {
                 "{dir}: no encoder for this autoencoder (vae_encoder/ or taesd_encoder/ missing)"
             )
         })?;
-        let t0 = std::time::Instant::now();
+        let t0 = Instant::now();
         let out = enc.run(&[(
             vec![b as i64, 3, hw.0 as i64, hw.1 as i64],
             Data::F32(image),
         )]);
-        let took = t0.elapsed().as_secs_f64();
+        let session = enc.last_session_seconds();
         let (shape, data) = out?.remove(0);
         let ch = shape.get(1).copied().unwrap_or(0) as usize;
         if shape.len() != 4 || (ch != c && ch != 2 * c) {
@@ -608,7 +651,7 @@ impl StableDiffusion {
         for item in data.chunks(ch * h * w) {
             z.extend(item[..c * h * w].iter().map(|v| v * scaling));
         }
-        self.times.autoencoder += took;
+        self.book(t0, session, |m| &mut m.autoencoder);
         Ok((z, (h, w)))
     }
 }

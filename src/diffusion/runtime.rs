@@ -23,7 +23,7 @@ pub enum Provider {
     Cuda,
     /// WebGPU on Vulkan (the `onnxruntime-ep-webgpu` plugin library beside ONNX Runtime).
     Webgpu,
-    /// A GPU provider on a real GPU, else the CPU (see [`choose_auto`]).
+    /// A GPU provider on a real GPU, else the CPU (`doctor` says which and why).
     Auto,
 }
 
@@ -248,11 +248,14 @@ pub fn available_providers() -> Result<Vec<String>, String> {
 
 /// Whether the loaded ONNX Runtime library can run `p`; the error says why not and what to do.
 /// The CUDA provider is a library of its own, loaded with its CUDA and cuDNN libraries only when
-/// a session asks for it: it counts as runnable once a small graph loads on it.
+/// a session asks for it, and the WebGPU provider asks Dawn for an adapter only then: each counts
+/// as runnable once a small graph loads on it.
 pub fn check_provider(p: Provider) -> Result<(), String> {
     provider_dispatch(p)?;
-    if p.resolved() == Provider::Cuda {
-        super::probe::loads(p)?;
+    match p.resolved() {
+        Provider::Cuda => super::probe::loads(p)?,
+        Provider::Webgpu => super::webgpu::quiet_adapter_search(|| super::probe::loads(p))?,
+        _ => {}
     }
     Ok(())
 }
@@ -390,6 +393,12 @@ pub struct OnnxModel {
     session: Session,
     pub inputs: Vec<Port>,
     pub outputs: Vec<Port>,
+    /// Seconds the last [`Self::run`] spent inside ONNX Runtime's `session.run` (the rest of
+    /// the call is the host's conversion of inputs and outputs).
+    last_session: f64,
+    /// A delay added to every run's input conversion (a test hook: see
+    /// [`Self::plant_slow_conversion`]).
+    slow_conversion: std::time::Duration,
 }
 
 fn port(name: &str, t: &ValueType) -> Option<Port> {
@@ -476,7 +485,7 @@ impl OnnxModel {
         }
         let session = builder(provider, threads, &shown)?
             .commit_from_file(path)
-            .map_err(|e| format!("{shown}: ONNX Runtime cannot load the model: {e}"))?;
+            .map_err(|e| super::webgpu::load_error(&shown, &e.to_string()))?;
         Self::checked(path, session, inputs, outputs)
     }
 
@@ -491,7 +500,7 @@ impl OnnxModel {
     ) -> Result<OnnxModel, String> {
         let session = builder(provider, threads, name)?
             .commit_from_memory(bytes)
-            .map_err(|e| format!("{name}: ONNX Runtime cannot load the model: {e}"))?;
+            .map_err(|e| super::webgpu::load_error(name, &e.to_string()))?;
         Self::checked(Path::new(name), session, inputs, outputs)
     }
 
@@ -515,11 +524,25 @@ impl OnnxModel {
             outputs: collect(session.outputs(), "output")?,
             path: path.to_path_buf(),
             session,
+            last_session: 0.0,
+            slow_conversion: std::time::Duration::ZERO,
         };
         // Every input must be fed; extra outputs (e.g. pooler_output) are allowed.
         check_ports(&shown, "input", &model.inputs, inputs, true)?;
         check_ports(&shown, "output", &model.outputs, outputs, false)?;
         Ok(model)
+    }
+
+    /// Seconds the last [`Self::run`] spent in ONNX Runtime's `session.run`, without the
+    /// conversion of its inputs and outputs.
+    pub fn last_session_seconds(&self) -> f64 {
+        self.last_session
+    }
+
+    /// Makes every later run's input conversion take `delay` longer: a test hook that shows
+    /// where timings count the conversions (never inside the model's own time).
+    pub fn plant_slow_conversion(&mut self, delay: std::time::Duration) {
+        self.slow_conversion = delay;
     }
 
     /// Checks a declared dimension where it is static: `axis` of input (or output) `port` must be
@@ -555,6 +578,8 @@ impl OnnxModel {
 
     /// Runs the model on `inputs` (one per declared input, in order) and returns every output as
     /// f32 with its shape.
+    ///
+    /// [`Self::last_session_seconds`] tells afterwards how much of the call ONNX Runtime took.
     pub fn run(&mut self, inputs: &[(Vec<i64>, Data)]) -> Result<Vec<Output>, String> {
         let shown = self.path.display().to_string();
         if inputs.len() != self.inputs.len() {
@@ -586,10 +611,11 @@ impl OnnxModel {
                 })?;
             values.push((p.name.clone(), v));
         }
-        let outputs = self
-            .session
-            .run(values)
-            .map_err(|e| format!("{shown}: run failed: {e}"))?;
+        std::thread::sleep(self.slow_conversion);
+        let t0 = std::time::Instant::now();
+        let outputs = self.session.run(values);
+        self.last_session = t0.elapsed().as_secs_f64();
+        let outputs = outputs.map_err(|e| format!("{shown}: run failed: {e}"))?;
         let mut out = vec![];
         for p in &self.outputs {
             let v = &outputs[p.name.as_str()];

@@ -246,6 +246,7 @@ impl Guide {
             ));
         }
         // One batch buffer written in place, the views in parallel.
+        let t0 = std::time::Instant::now();
         let mut x = vec![0.0f32; n * per];
         let to_model = |(out, r): (&mut [f32], &&[f32])| hwc01_to_chw11_into(r, width, height, out);
         if worth_parallel(n * per) {
@@ -255,6 +256,7 @@ impl Guide {
         } else {
             x.chunks_mut(per.max(1)).zip(renders).for_each(to_model);
         }
+        sd.add_conversion_seconds(t0.elapsed().as_secs_f64());
         let (z, hw) = sd.encode(&x, n, (height, width), self.codec)?;
         let per = z.len() / n;
         let sched = sd.schedule.clone();
@@ -272,6 +274,7 @@ impl Guide {
             meta.push((timesteps, latent_rms));
         }
         let (img, (h, w)) = sd.decode(&guided, n, hw, self.codec)?;
+        let t0 = std::time::Instant::now();
         let per = img.len() / n;
         let to_target = |(im, (timesteps, latent_rms)): (&[f32], (Vec<u32>, f64))| ImageTarget {
             image: chw11_to_hwc01(im, w, h),
@@ -280,7 +283,7 @@ impl Guide {
             timesteps,
             latent_rms,
         };
-        Ok(if worth_parallel(img.len()) {
+        let targets = if worth_parallel(img.len()) {
             img.par_chunks_exact(per.max(1))
                 .zip(meta)
                 .map(to_target)
@@ -290,7 +293,9 @@ impl Guide {
                 .zip(meta)
                 .map(to_target)
                 .collect()
-        })
+        };
+        sd.add_conversion_seconds(t0.elapsed().as_secs_f64());
+        Ok(targets)
     }
 }
 

@@ -73,6 +73,72 @@ pub fn devices(env: &Environment) -> Result<Vec<ort::device::Device<'_>>, String
     Ok(devs)
 }
 
+const NO_ADAPTER: &str = "--provider webgpu: Dawn accepts no Vulkan adapter here (on lavapipe \
+     it needs Mesa 25, which scripts/setup.sh installs; --provider cpu runs everywhere)";
+
+fn refused_adapter(e: &str) -> bool {
+    e.contains("Failed to get a WebGPU adapter") || e.starts_with(NO_ADAPTER)
+}
+
+/// Runs `f` (a first WebGPU session: Dawn asks the Vulkan drivers for adapters) with the
+/// process's native standard error sent to a file, and writes what it caught back to standard
+/// error unless `f` failed only because no adapter was accepted: that failure is then the one
+/// line of [`load_error`], without Dawn's and the Vulkan loader's warnings around it. Called
+/// before any other thread of the program writes.
+pub fn quiet_adapter_search<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+    use std::io::{Read as _, Seek as _, Write as _};
+    use std::os::fd::AsRawFd as _;
+    let path = std::env::temp_dir().join(format!("dreamscene-stderr-{}", std::process::id()));
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(&path);
+    // Unlinked at once: the descriptor keeps it until dropped.
+    let _ = std::fs::remove_file(&path);
+    let Ok(mut file) = file else {
+        return f();
+    };
+    let _ = std::io::stderr().flush();
+    // SAFETY: dup of descriptor 2, which is open for the whole process; the copy is restored
+    // and closed before returning, whatever `f` does short of aborting.
+    let saved = unsafe { libc::dup(2) };
+    // SAFETY: dup2 of a file this function owns onto descriptor 2, which the saved copy restores.
+    let moved = saved >= 0 && unsafe { libc::dup2(file.as_raw_fd(), 2) } >= 0;
+    if !moved {
+        if saved >= 0 {
+            // SAFETY: closing the descriptor dup returned above, used nowhere else.
+            unsafe { libc::close(saved) };
+        }
+        return f();
+    }
+    let r = f();
+    let _ = std::io::stderr().flush();
+    // SAFETY: putting back the descriptor saved above, then closing the copy.
+    unsafe {
+        libc::dup2(saved, 2);
+        libc::close(saved);
+    }
+    let mut caught = String::new();
+    let _ = file.rewind().and_then(|_| file.read_to_string(&mut caught));
+    if !matches!(&r, Err(e) if refused_adapter(e)) {
+        eprint!("{caught}");
+    }
+    r
+}
+
+/// `shown`'s load error `e` in one line a user can act on: Dawn's refusal of every Vulkan
+/// adapter (a driver without `shaderUniform*ArrayDynamicIndexing`, such as Debian 12's Mesa 22.3
+/// lavapipe) says so and what to do instead of ONNX Runtime's stack of source locations.
+pub fn load_error(shown: &str, e: &str) -> String {
+    if refused_adapter(e) {
+        NO_ADAPTER.to_string()
+    } else {
+        format!("{shown}: ONNX Runtime cannot load the model: {e}")
+    }
+}
+
 /// The session options of the provider: Dawn on Vulkan, then the `KEY=VALUE` pairs of
 /// `$DREAMSCENE_WEBGPU_OPTIONS` (comma-separated, e.g. `validationMode=disabled,preferredLayout=NCHW`),
 /// which override the defaults: the provider's settings can be measured without a rebuild.
@@ -99,6 +165,29 @@ fn with_overrides(extra: &str) -> (Vec<(String, String)>, Vec<String>) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_refused_adapter_is_one_line_with_what_to_do() {
+        let ort = "/onnxruntime_src/x.cc:71 CreateProvider Error creating execution provider: \
+                   [ONNXRuntimeError] : 11 : EP_FAIL : /onnxruntime_src/webgpu_context.cc:136 \
+                   adapter_result.status == wgpu::RequestAdapterStatus::Success was false. \
+                   Failed to get a WebGPU adapter: No supported adapters";
+        let m = load_error("unet/model.onnx", ort);
+        assert!(
+            m.starts_with("--provider webgpu: Dawn accepts no Vulkan adapter")
+                && m.contains("Mesa 25")
+                && m.contains("--provider cpu")
+                && !m.contains("onnxruntime_src")
+                && !m.contains('\n'),
+            "{m}"
+        );
+        assert!(refused_adapter(&m), "its own line is recognised again");
+        let other = load_error("vae/model.onnx", "Protobuf parsing failed");
+        assert_eq!(
+            other,
+            "vae/model.onnx: ONNX Runtime cannot load the model: Protobuf parsing failed"
+        );
+    }
 
     #[test]
     fn overrides_replace_defaults_and_add_keys() {

@@ -1,6 +1,7 @@
 //! The fused Adam optimiser over a cloud's parameter buffers (one dispatch per array).
 use super::backward::GpuGrads;
 use super::raster::GpuGaussians;
+use crate::gpu::push_matches;
 use crate::gpu::{groups_for, kernels, Buffer, Context, Kernel, Result, Stream};
 use bytemuck::{Pod, Zeroable};
 
@@ -20,10 +21,7 @@ struct AdamPush {
     bc1: f32,
     bc2: f32,
 }
-const _: () = assert!(
-    std::mem::size_of::<AdamPush>() == kernels::ADAM.push_size as usize,
-    "the Rust push constants differ in size from adam.comp's"
-);
+push_matches!(AdamPush, ADAM);
 
 /// Adam hyper-parameters shared by all arrays (3DGS uses these).
 #[derive(Debug, Clone, Copy)]

@@ -2,6 +2,7 @@
 //! then projection backward (raw parameter gradients and densification statistics).
 use super::raster::{BlendWidth, CameraData, Frame, GpuGaussians};
 use crate::camera::Camera;
+use crate::gpu::push_matches;
 use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings,
 };
@@ -30,14 +31,8 @@ struct ProjectBackwardPush {
     sh_degree: u32,
     pad: [u32; 2],
 }
-const _: () = assert!(
-    std::mem::size_of::<BlendBackwardPush>() == kernels::BLEND_BACKWARD.push_size as usize,
-    "the Rust push constants differ in size from blend_backward.comp's"
-);
-const _: () = assert!(
-    std::mem::size_of::<ProjectBackwardPush>() == kernels::PROJECT_BACKWARD.push_size as usize,
-    "the Rust push constants differ in size from project_backward.comp's"
-);
+push_matches!(BlendBackwardPush, BLEND_BACKWARD);
+push_matches!(ProjectBackwardPush, PROJECT_BACKWARD);
 
 /// Gradient buffers for a cloud, laid out as [`GpuGaussians`], plus the screen-space gradients
 /// and the densification statistics. Gradients accumulate over backward calls until cleared

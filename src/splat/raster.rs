@@ -5,6 +5,7 @@ use super::cloud::Gaussians;
 use super::scan::ScanScratch;
 use super::sort::{RadixSort, SortScratch};
 use crate::camera::Camera;
+use crate::gpu::push_matches;
 use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream, Timings,
 };
@@ -71,26 +72,11 @@ struct BlendPush {
     seg_begin: u32,
     first: u32,
 }
-const _: () = assert!(
-    std::mem::size_of::<ProjectPush>() == kernels::PROJECT.push_size as usize,
-    "the Rust push constants differ in size from project.comp's"
-);
-const _: () = assert!(
-    std::mem::size_of::<EmitPush>() == kernels::EMIT.push_size as usize,
-    "the Rust push constants differ in size from emit.comp's"
-);
-const _: () = assert!(
-    std::mem::size_of::<BlendPush>() == kernels::BLEND.push_size as usize,
-    "the Rust push constants differ in size from blend.comp's"
-);
-const _: () = assert!(
-    8 == kernels::TILE_RANGES.push_size as usize,
-    "the Rust push constants differ in size from tile_ranges.comp's"
-);
-const _: () = assert!(
-    4 == kernels::GATHER_COUNTS.push_size as usize,
-    "the Rust push constants differ in size from gather_counts.comp's"
-);
+push_matches!(ProjectPush, PROJECT);
+push_matches!(EmitPush, EMIT);
+push_matches!(BlendPush, BLEND);
+push_matches!(bytes 8, TILE_RANGES);
+push_matches!(bytes 4, GATHER_COUNTS);
 
 /// Gaussian parameters on the device.
 pub struct GpuGaussians {

@@ -1,5 +1,6 @@
 //! The 3D Gaussian filtering score of the DreamScene method, accumulated on the GPU per view.
 use super::raster::{Frame, GpuGaussians};
+use crate::gpu::push_matches;
 use crate::gpu::{
     groups_for, kernels, Buffer, BufferUsage, Context, GpuError, Kernel, Result, Stream,
 };
@@ -25,10 +26,7 @@ struct ScorePush {
     first: u32,
     mode: u32,
 }
-const _: () = assert!(
-    std::mem::size_of::<ScorePush>() == kernels::SCORE.push_size as usize,
-    "the Rust push constants differ in size from score.comp's"
-);
+push_matches!(ScorePush, SCORE);
 
 /// The score kernel (native float atomics, or the compare-and-swap variant).
 pub struct Scorer {

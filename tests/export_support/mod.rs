@@ -360,6 +360,21 @@ pub fn sh_frame_diff(
     worst
 }
 
+/// Writes `glb` to `renamed` with its extension attributes renamed to application-specific
+/// semantics ([`rename_extension_attributes`], which the core specification allows) and checks
+/// that the reference validator finds no error and no warning in it: accessors, bounds, views,
+/// alignment and the GLB container are all valid glTF 2.0.
+pub fn assert_renamed_validates_clean(glb: &[u8], renamed: &Path) {
+    std::fs::write(renamed, rename_extension_attributes(glb)).unwrap();
+    let report = reader_json("validate", renamed);
+    assert_eq!(report["issues"]["numErrors"].as_u64(), Some(0), "{report}");
+    assert_eq!(
+        report["issues"]["numWarnings"].as_u64(),
+        Some(0),
+        "{report}"
+    );
+}
+
 /// The GLB with every `KHR_gaussian_splatting:NAME` attribute renamed `_KHR_gaussian_splatting_NAME`
 /// (JSON chunk re-padded, lengths rewritten).
 pub fn rename_extension_attributes(glb: &[u8]) -> Vec<u8> {
