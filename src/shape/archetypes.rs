@@ -33,6 +33,7 @@ use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
 use super::fossils as fos;
+use super::fowl as fw;
 use super::frames as fr;
 use super::furniture as f;
 use super::gadgets as gd;
@@ -124,12 +125,14 @@ pub struct Archetype {
 }
 
 impl Archetype {
-    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`.
+    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`, a bird as
+    /// `bird`.
     pub fn parts_holding(
         &self,
         size: [f64; 3],
         goods: Option<super::goods::Goods>,
         animal: Option<&'static super::animals::Animal>,
+        bird: Option<&'static super::birds::Bird>,
     ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
@@ -138,6 +141,7 @@ impl Archetype {
             h: size[2],
             goods,
             animal,
+            bird,
         };
         (self.layout)(&mut b);
         b.parts
@@ -269,7 +273,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("lounger", t::lounger, [Upholstery], [Upholstery => [0.92, 0.90, 0.85], Frame => [0.55, 0.40, 0.26]]),
     arch!("dispenser", t::dispenser, [Body], [Body => WHITE, Glass => [0.55, 0.72, 0.88], Handle => [0.25, 0.40, 0.80]]),
     arch!("quadruped", bs::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
-    arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
+    arch!("bird", fw::bird, [Body, Frame, Top, Cushion], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
     arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
     arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
