@@ -54,7 +54,7 @@ fn a_newsstands_back_shows_a_door_and_a_poster_not_a_blank_wall() {
             })
             .len()
         };
-        let shown: Vec<Role> = [Role::Top, Role::Frame, Role::Door, Role::Canvas]
+        let shown: Vec<Role> = [Role::Top, Role::Frame, Role::Cushion, Role::Canvas]
             .into_iter()
             .filter(|r| near(*r) > 20)
             .collect();

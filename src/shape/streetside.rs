@@ -107,7 +107,7 @@ fn newsstand_back(b: &mut Builder, back: f64, eave: f64) {
     b.cuboid(Frame, [px0, y0 + 0.012, z0], [px1, back, z1]);
     let m = 0.04;
     b.cuboid(
-        Door,
+        Cushion,
         [px0 + m, y0 + 0.004, z0 + m],
         [px1 - m, y0 + 0.012, z1 - m],
     );
