@@ -464,3 +464,36 @@ fn a_rocking_horse_has_a_mane_down_its_neck() {
         }
     }
 }
+
+#[test]
+fn a_seated_statue_sits_with_its_knees_forward_and_a_standing_one_does_not() {
+    use dreamscene::shape::{archetype_described, parts_described};
+    for d in [
+        "a seated statue",
+        "a seated marble statue",
+        "an enthroned statue",
+    ] {
+        assert_eq!(archetype_described("statue", d), "seated_statue", "{d}");
+    }
+    assert_eq!(archetype_described("statue", "a marble statue"), "statue");
+    // Front reach of the figure at seat height (40–55% of the height) over the depth.
+    let reach = |d: &str, size: [f64; 3]| {
+        let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(3);
+        let mut pts = vec![];
+        for p in parts_described("statue", size, d).unwrap() {
+            let mut s = vec![];
+            p.prim.sample(0.004 * size[2], &mut rng, &mut s);
+            pts.extend(s.iter().map(|s| s.pos));
+        }
+        let band = within(&pts, |p| p[2] > 0.4 * size[2] && p[2] < 0.55 * size[2]);
+        range(&band, 1).1 / size[1]
+    };
+    for size in sized("statue", [1.2, 1.0, 1.2]) {
+        let seated = reach("a seated statue", size);
+        let standing = reach("a statue", size);
+        assert!(
+            seated > 0.25 && seated > standing + 0.08,
+            "{size:?}: seated knees reach {seated:.2}, a standing figure {standing:.2}"
+        );
+    }
+}

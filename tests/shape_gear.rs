@@ -3,8 +3,8 @@
 //! longer than its frame is deep, a speaker shows round cones on its front, a server rack is
 //! tall, dark and lit, a dryer's dark door sits higher than a washer's and it vents at the back,
 //! a dishwasher and a microwave are no blank boxes from behind, coat hooks hold coats, and
-//! categories once drawn as a plain tube have parts of their own, and a bucket is an open pail
-//! under its bail. Host-only, well under a second.
+//! categories once drawn as a plain tube have parts of their own, a bucket is an open pail
+//! under its bail, and a headset carries a boom microphone to the front where headphones have none. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
 use common::samples::{drawn, of, range, round, runs, sizes, Samples};
@@ -328,4 +328,29 @@ fn a_bucket_is_an_open_pail_widening_to_its_rim_under_a_bail() {
             "{size:?}: bail too short"
         );
     }
+}
+
+#[test]
+fn a_headset_has_a_boom_microphone_in_front_and_headphones_none() {
+    // The boom reaches well ahead of the ear cups, below the headband.
+    let tip = |c: &str, size: [f64; 3]| {
+        let s = at(c, size);
+        let cups = range(&of(&s, Role::Body), 1).1;
+        of(&s, Role::Cushion)
+            .into_iter()
+            .chain(of(&s, Role::Frame))
+            .filter(|p| p[1] > cups + 0.2 * size[1] && p[2] < 0.5 * size[2])
+            .count()
+    };
+    for size in sizes("headset", [1.2, 1.3, 0.9]) {
+        assert!(
+            tip("headset", size) > 20,
+            "headset {size:?}: no boom microphone"
+        );
+    }
+    for c in ["headset", "telephone headset", "call center headset"] {
+        assert_eq!(archetype_of(c), "headset", "{c}");
+    }
+    let size = KnowledgeBase::builtin().object("headphones").unwrap().size;
+    assert_eq!(tip("headphones", size), 0, "headphones with a microphone");
 }

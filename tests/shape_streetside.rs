@@ -1,6 +1,7 @@
 //! A newsstand, a tiki bar and a street lamp drawn as what they are (once a market stall, a
 //! market stall and a stone garden lantern), checked on their parts at their knowledge-base size
-//! and a stretched one: a newsstand shows magazines standing face-out on its front under a roof,
+//! and a stretched one: a newsstand shows magazines standing face-out on its front under a roof
+//! and a door and a poster on its back,
 //! a tiki bar a thatch over its whole footprint and stools in front of its counter, a street lamp
 //! a lit head at the top of a slender post. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
@@ -39,6 +40,25 @@ fn a_newsstand_shows_magazines_face_out_on_its_front_under_a_roof() {
         let roof = within(&of(&s, Role::Top), |p| p[2] > 0.85 * size[2]);
         let (y0, y1) = range(&roof, 1);
         assert!(y1 - y0 > 0.9 * size[1], "{size:?}: roof {y0:.2}..{y1:.2}");
+    }
+}
+
+#[test]
+fn a_newsstands_back_shows_a_door_and_a_poster_not_a_blank_wall() {
+    for size in sized("newspaper stand", [1.3, 0.8, 1.1]) {
+        let s = drawn("newspaper stand", size, 3);
+        // Under the roof, within a few centimetres of the back face.
+        let near = |r: Role| {
+            within(&of(&s, r), |p| {
+                p[1] < -size[1] / 2.0 + 0.02 && p[2] < 0.8 * size[2]
+            })
+            .len()
+        };
+        let shown: Vec<Role> = [Role::Top, Role::Frame, Role::Cushion, Role::Canvas]
+            .into_iter()
+            .filter(|r| near(*r) > 20)
+            .collect();
+        assert_eq!(shown.len(), 4, "{size:?}: the back shows only {shown:?}");
     }
 }
 

@@ -33,6 +33,7 @@ use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
 use super::fossils as fos;
+use super::fowl as fw;
 use super::frames as fr;
 use super::furniture as f;
 use super::gadgets as gd;
@@ -124,12 +125,14 @@ pub struct Archetype {
 }
 
 impl Archetype {
-    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`.
+    /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`, a bird as
+    /// `bird`.
     pub fn parts_holding(
         &self,
         size: [f64; 3],
         goods: Option<super::goods::Goods>,
         animal: Option<&'static super::animals::Animal>,
+        bird: Option<&'static super::birds::Bird>,
     ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
@@ -138,6 +141,7 @@ impl Archetype {
             h: size[2],
             goods,
             animal,
+            bird,
         };
         (self.layout)(&mut b);
         b.parts
@@ -269,7 +273,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("lounger", t::lounger, [Upholstery], [Upholstery => [0.92, 0.90, 0.85], Frame => [0.55, 0.40, 0.26]]),
     arch!("dispenser", t::dispenser, [Body], [Body => WHITE, Glass => [0.55, 0.72, 0.88], Handle => [0.25, 0.40, 0.80]]),
     arch!("quadruped", bs::quadruped, [Body], [Body => [0.50, 0.36, 0.24], Interior => BLACK]),
-    arch!("bird", t::bird, [Body], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
+    arch!("bird", fw::bird, [Body, Frame, Top, Cushion], [Body => [0.50, 0.40, 0.30], Cushion => [0.75, 0.66, 0.52], Frame => [0.38, 0.29, 0.21], Light => [0.95, 0.75, 0.15], Handle => [0.25, 0.22, 0.20], Metal => [0.45, 0.40, 0.30]]),
     arch!("cauldron", t::cauldron, [Body], [Body => [0.16, 0.16, 0.17], Metal => [0.16, 0.16, 0.17], Water => [0.30, 0.62, 0.25]]),
     arch!("easel", t::easel, [Frame], [Frame => [0.62, 0.45, 0.28], Canvas => [0.95, 0.94, 0.90]]),
     arch!("string_instrument", t::string_instrument, [Body], [Body => [0.62, 0.36, 0.16], Frame => [0.25, 0.16, 0.10], Interior => BLACK, Metal => [0.80, 0.80, 0.78]]),
@@ -298,7 +302,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("cannon", he::cannon, [Metal], [Metal => [0.12, 0.12, 0.13], Trunk => [0.45, 0.30, 0.18], Tyre => [0.30, 0.20, 0.12], Interior => BLACK]),
     arch!("helm", he::helm, [Frame], [Frame => [0.50, 0.33, 0.18], Metal => [0.62, 0.50, 0.25]]),
     arch!("spinning_wheel", he::spinning_wheel, [Frame], [Frame => [0.55, 0.38, 0.22], Cushion => [0.92, 0.90, 0.84]]),
-    arch!("newsstand", ss::newsstand, [Body], [Body => [0.18, 0.36, 0.26], Top => [0.14, 0.26, 0.20], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.56, 0.58], Interior => [0.10, 0.10, 0.11]]),
+    arch!("newsstand", ss::newsstand, [Body], [Body => [0.18, 0.36, 0.26], Top => [0.14, 0.26, 0.20], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.56, 0.58], Interior => [0.10, 0.10, 0.11], Cushion => [0.82, 0.22, 0.14]]),
     arch!("tiki_bar", ss::tiki_bar, [Shade], [Shade => [0.72, 0.58, 0.32], Frame => [0.78, 0.66, 0.40], Body => [0.45, 0.30, 0.17], Top => [0.50, 0.33, 0.18], Glass => [0.45, 0.60, 0.42], Metal => [0.30, 0.22, 0.14], Seat => [0.55, 0.38, 0.20]]),
     arch!("street_lamp", ss::street_lamp, [Metal], [Metal => [0.12, 0.13, 0.14], Light => [1.0, 0.90, 0.62]]),
     arch!("stall", mk::stall, [Shade], [Shade => [0.80, 0.18, 0.16], Canvas => [0.95, 0.94, 0.90], Frame => [0.55, 0.40, 0.26], Body => [0.50, 0.35, 0.22], Top => [0.60, 0.44, 0.28]]),
@@ -486,6 +490,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("blossom_tree", oc::blossom_tree, [Foliage], [Foliage => [0.96, 0.70, 0.80], Cushion => [0.99, 0.90, 0.93], Trunk => [0.25, 0.16, 0.12]]),
     arch!("speaker", au::speaker, [Body], [Body => DARK_WOOD, Interior => [0.06, 0.06, 0.07], Handle => [0.75, 0.12, 0.10]]),
     arch!("headphones", au::headphones, [Frame, Body], [Frame => [0.10, 0.10, 0.11], Body => [0.12, 0.12, 0.13], Cushion => [0.20, 0.20, 0.21], Metal => [0.70, 0.71, 0.73]]),
+    arch!("headset", au::headset, [Frame, Body], [Frame => [0.10, 0.10, 0.11], Body => [0.12, 0.12, 0.13], Cushion => [0.20, 0.20, 0.21], Metal => [0.70, 0.71, 0.73]]),
     arch!("amp_combo", au::amp_combo, [Body], [Body => [0.10, 0.10, 0.10], Upholstery => [0.46, 0.45, 0.43], Canvas => [0.85, 0.80, 0.65], Metal => [0.78, 0.78, 0.80], Handle => [0.08, 0.08, 0.08], Frame => [0.12, 0.10, 0.09], Light => [0.95, 0.15, 0.10]]),
     arch!("server_rack", sv::server_rack, [Body, Frame], [Body => [0.07, 0.07, 0.08], Frame => [0.10, 0.10, 0.11], Metal => [0.22, 0.22, 0.24], Pane => [0.10, 0.10, 0.11], Light => [0.30, 0.95, 0.45], Handle => [0.30, 0.60, 1.00], Canvas => [0.15, 0.35, 0.75]]),
     arch!("coat_hooks", pg::coat_hooks, [Top], [Top => DARK_WOOD, Metal => BRASS, Frame => [0.45, 0.28, 0.16], Cushion => [0.25, 0.22, 0.20]]),
@@ -553,6 +558,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("popcorn_machine", am::popcorn_machine, [Body, Door], [Body => [0.78, 0.10, 0.10], Door => [0.72, 0.09, 0.09], Frame => [0.20, 0.20, 0.21], Tyre => BLACK, Metal => STEEL, Top => STEEL, Pane => [0.85, 0.90, 0.90], Cushion => [0.98, 0.88, 0.50], Light => [1.0, 0.85, 0.30], Interior => BLACK]),
     arch!("scarecrow", ef::scarecrow, [Duvet], [Duvet => [0.62, 0.20, 0.16], Trunk => [0.45, 0.32, 0.20], Cushion => [0.86, 0.74, 0.42], Canvas => [0.78, 0.66, 0.48], Top => [0.55, 0.40, 0.22], Interior => BLACK]),
     arch!("statue", ef::statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.86, 0.85, 0.82]]),
+    arch!("seated_statue", ef::seated_statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.80, 0.79, 0.76]]),
     arch!("pergola", by::pergola, [Frame, Top], [Frame => [0.62, 0.47, 0.32], Top => [0.58, 0.43, 0.28], Trunk => [0.35, 0.25, 0.15], Foliage => [0.25, 0.50, 0.20]]),
     arch!("mailbox", by::mailbox, [Body, Door], [Body => [0.20, 0.22, 0.24], Door => [0.20, 0.22, 0.24], Frame => [0.55, 0.42, 0.28], Handle => [0.85, 0.12, 0.10], Metal => STEEL]),
     arch!("hot_tub", by::hot_tub, [Body], [Body => [0.40, 0.30, 0.22], Frame => [0.34, 0.25, 0.18], Top => [0.55, 0.55, 0.57], Water => [0.30, 0.70, 0.82], Interior => [0.15, 0.35, 0.45], Cushion => [0.25, 0.25, 0.27], Canvas => WHITE]),

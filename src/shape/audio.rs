@@ -230,3 +230,27 @@ pub fn headphones(b: &mut Builder) {
     let pad: Vec<[f64; 3]> = pad.iter().map(|p| [p[0], p[1], p[2] - 1.2 * rb]).collect();
     b.polyline(Cushion, &pad, 1.4 * rb);
 }
+
+/// A telephone headset: headphones at the back of its box and, from the left cup, a boom
+/// microphone curving forwards and down to a foam tip in front of the mouth.
+pub fn headset(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let (first, d) = (b.parts.len(), b.d);
+    b.d = 0.45 * d;
+    headphones(b);
+    b.d = d;
+    let back = -hd + 0.45 * hd;
+    b.translate_from(first, [0.0, back, 0.0]);
+    let zc = (0.225 * d).min(0.3 * h).max(0.01);
+    let x = -(hw - 0.05 * b.w);
+    let r = (0.04 * hd).clamp(0.002, 0.005);
+    let tip = [-0.35 * hw, hd - 0.012, 0.55 * zc];
+    let boom = [
+        [x, back, zc],
+        [x, back + 0.6 * (tip[1] - back), 0.8 * zc],
+        [0.5 * (x + tip[0]), tip[1] - 0.1 * hd, 0.62 * zc],
+        tip,
+    ];
+    b.polyline(Frame, &boom, r);
+    b.ellipsoid(Cushion, tip, [0.012, 0.012, 0.012]);
+}

@@ -14,6 +14,8 @@ pub struct Builder {
     pub goods: Option<super::goods::Goods>,
     /// The animal a quadruped is drawn as (`kb/animals.txt`); `None` for other categories.
     pub animal: Option<&'static super::animals::Animal>,
+    /// The bird a bird is drawn as (`kb/birds.txt`); `None` for other categories.
+    pub bird: Option<&'static super::birds::Bird>,
 }
 
 impl Builder {

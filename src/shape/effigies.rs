@@ -206,3 +206,81 @@ pub fn statue(b: &mut Builder) {
     );
     b.ellipsoid(Body, [0.0, 1.05 * hr, zh], [0.2 * hr, 0.2 * hr, 0.3 * hr]);
 }
+
+/// A seated statue on a plinth: a block throne, the figure sitting upright on it, its thighs
+/// level and shins down to the plinth, hands resting on its knees, its head over square
+/// shoulders ("a seated statue", "an enthroned figure").
+pub fn seated_statue(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zp = 0.2 * h; // the plinth's top
+    b.cuboid(Top, [-hw, -hd, 0.0], [hw, hd, 0.04 * h]);
+    b.cuboid(
+        Body,
+        [-0.85 * hw, -0.85 * hd, 0.0],
+        [0.85 * hw, 0.85 * hd, zp],
+    );
+    let fh = h - zp;
+    let at = |t: f64| zp + t * fh;
+    let (fw, fd) = (0.7 * hw, 0.85 * hd);
+    // The throne: a block seat at the back half, a back rising behind the figure.
+    let seat = at(0.34);
+    let back = -0.8 * fd;
+    b.cuboid(Top, [-0.8 * fw, back, zp], [0.8 * fw, 0.05 * fd, seat]);
+    b.cuboid(
+        Top,
+        [-0.8 * fw, back, seat],
+        [0.8 * fw, back + 0.18 * fd, at(0.72)],
+    );
+    // Thighs forward from the hips, shins down to the plinth, feet on it.
+    let lr = (0.16 * fw).min(0.09 * fh);
+    let knee_y = 0.65 * fd;
+    for sx in [-1.0, 1.0] {
+        let x = sx * 0.3 * fw;
+        let hip = [x, -0.25 * fd, seat + lr];
+        let knee = [x, knee_y, seat + lr];
+        b.rod(Body, hip, knee, lr);
+        b.ellipsoid(Body, knee, [lr, lr, lr]);
+        b.rod(Body, knee, [x, knee_y, zp + 0.5 * lr], 0.85 * lr);
+        b.ellipsoid(
+            Body,
+            [x, knee_y + 0.5 * lr, zp + 0.4 * lr],
+            [0.8 * lr, 1.6 * lr, 0.4 * lr],
+        );
+    }
+    // The torso upright over the hips, shoulders, arms down to the hands on the knees.
+    let shoulder = at(0.8);
+    b.frustum(
+        Body,
+        [0.0, -0.3 * fd, seat],
+        0.5 * fw,
+        0.35 * fd,
+        1.15,
+        shoulder - seat,
+    );
+    let sh = 0.62 * fw;
+    let ar = 0.75 * lr;
+    for sx in [-1.0, 1.0] {
+        let top = [sx * sh, -0.3 * fd, shoulder - ar];
+        let elbow = [sx * (sh + 0.3 * ar), -0.1 * fd, at(0.52)];
+        let hand = [sx * 0.32 * fw, 0.6 * knee_y, seat + 2.2 * lr];
+        b.ellipsoid(Body, top, [1.4 * ar, 1.3 * ar, 1.2 * ar]);
+        b.rod(Body, top, elbow, ar);
+        b.rod(Body, elbow, hand, 0.9 * ar);
+        b.ellipsoid(Body, hand, [ar, 1.2 * ar, 0.8 * ar]);
+    }
+    let hr = (0.075 * fh).min(0.4 * fw);
+    let neck = shoulder + 0.05 * fh;
+    b.rod(
+        Body,
+        [0.0, -0.3 * fd, shoulder - 0.03 * fh],
+        [0.0, -0.3 * fd, neck],
+        0.55 * hr,
+    );
+    let zh = (neck + 1.1 * hr).min(h - 1.3 * hr);
+    b.ellipsoid(Body, [0.0, -0.3 * fd, zh], [hr, 1.1 * hr, 1.3 * hr]);
+    b.ellipsoid(
+        Body,
+        [0.0, -0.3 * fd + 1.05 * hr, zh],
+        [0.2 * hr, 0.2 * hr, 0.3 * hr],
+    );
+}

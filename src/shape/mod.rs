@@ -23,6 +23,7 @@ mod barriers;
 mod beasts;
 mod bellhop;
 mod bins;
+mod birds;
 mod boards;
 mod boathouse;
 mod booths;
@@ -49,6 +50,7 @@ mod fixtures;
 mod florist;
 mod forms;
 mod fossils;
+mod fowl;
 mod frames;
 pub mod functions;
 mod furniture;
@@ -295,6 +297,7 @@ pub fn parts_described(
         size,
         goods::goods_of(category, arch.name),
         animal_for(category, arch.name),
+        bird_for(category, arch.name),
     ))
 }
 
@@ -303,6 +306,21 @@ pub fn parts_described(
 fn animal_for(category: &str, archetype: &str) -> Option<&'static animals::Animal> {
     (archetype == "quadruped")
         .then(|| animals::animal_of(category).unwrap_or_else(animals::default_animal))
+}
+
+/// The bird row a category is drawn as: its own, or the table's `default` for a bird the
+/// table does not list; `None` for archetypes that draw no bird.
+fn bird_for(category: &str, archetype: &str) -> Option<&'static birds::Bird> {
+    (archetype == "bird").then(|| birds::bird_of(category).unwrap_or_else(birds::default_bird))
+}
+
+/// The rows of the bird table (`kb/birds.txt`) as (category, features known), and the lines
+/// of it that do not parse, with why.
+pub fn bird_rows() -> (Vec<&'static str>, Vec<String>) {
+    (
+        birds::rows().into_iter().map(|(n, _)| n).collect(),
+        birds::bad_lines(),
+    )
 }
 
 /// The rows of the animal table (`kb/animals.txt`) as (category, features known), and the
@@ -348,10 +366,19 @@ pub fn build(
     let arch = archetypes::get(archetype_described(category, description));
     let goods = goods::goods_of(category, arch.name);
     let animal = animal_for(category, arch.name);
-    let parts = arch.parts_holding(size, goods, animal);
-    let palette = match animal {
-        Some(a) => animal_palette(description, arch.main, arch.defaults, a),
-        None => materials::Palette::new(description, arch.main, arch.defaults),
+    let bird = bird_for(category, arch.name);
+    let parts = arch.parts_holding(size, goods, animal, bird);
+    let palette = match (animal, bird) {
+        (Some(a), _) => animal_palette(description, arch.main, arch.defaults, a),
+        (None, Some(f)) => {
+            let mut colours: Vec<(Role, materials::Rgb)> = arch.defaults.to_vec();
+            for (role, rgb) in f.colours() {
+                colours.retain(|c| c.0 != role);
+                colours.push((role, rgb));
+            }
+            bird_palette(description, arch.main, &colours)
+        }
+        (None, None) => materials::Palette::new(description, arch.main, arch.defaults),
     }
     .holding(goods.unwrap_or_default().palette());
     let area: f64 = parts.iter().map(|p| p.prim.area()).sum();
@@ -373,6 +400,24 @@ pub fn build(
         }
     }
     Ok(g)
+}
+
+/// A bird's colours: its row's over the archetype's defaults, the description's first colour
+/// word on its whole plumage and a second one on its breast ("a black and white penguin").
+fn bird_palette(
+    description: &str,
+    main: &[Role],
+    colours: &[(Role, materials::Rgb)],
+) -> materials::Palette {
+    let p = materials::Palette::new(description, main, colours);
+    let second = materials::colour_words(description)
+        .into_iter()
+        .filter(|w| w.part.is_none() && w.kind == materials::WordKind::Colour)
+        .nth(1);
+    match second {
+        Some(w) => p.with(Role::Cushion, w.rgb),
+        None => p,
+    }
 }
 
 /// An animal's colours: its row's over the archetype's defaults, the description's colour word
@@ -537,6 +582,7 @@ mod kb_tests {
                 o.size,
                 goods::goods_of(&o.category, arch.name),
                 animal_for(&o.category, arch.name),
+                bird_for(&o.category, arch.name),
             ) {
                 let mut raw = vec![];
                 part.prim.sample(

@@ -55,6 +55,7 @@ pub fn forge(b: &mut Builder) {
         h: ah,
         goods: None,
         animal: None,
+        bird: None,
     };
     super::workshop::anvil(&mut anvil);
     b.parts.extend(anvil.parts);

@@ -13,7 +13,9 @@ pub fn newsstand(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let front = 0.55 * hd; // the kiosk's front wall; the roof and ledge reach on to hd
     let eave = 0.86 * h;
-    b.cuboid(Body, [-hw + 0.05, -hd, 0.0], [hw - 0.05, front, eave]);
+    let back = -hd + 0.03; // the back wall, its door and poster standing proud of it
+    b.cuboid(Body, [-hw + 0.05, back, 0.0], [hw - 0.05, front, eave]);
+    newsstand_back(b, back, eave);
     // The roof: a slab overhanging the front, sloping down to it, and a sign band under it.
     let run = 2.0 * hd;
     let rise = h - eave - 0.06;
@@ -82,6 +84,38 @@ pub fn newsstand(b: &mut Builder) {
             [sx * 0.6 * hw + 0.12, hd - 0.03, w0 + 0.06],
         );
     }
+}
+
+/// A newsstand's back: a service door with a handle on one side and, on the other, a framed
+/// advertising poster with a headline band, so the kiosk is no blank box from behind.
+fn newsstand_back(b: &mut Builder, back: f64, eave: f64) {
+    let hw = b.w / 2.0;
+    let y0 = -b.d / 2.0;
+    let dw = (0.8 * hw).min(0.8);
+    let (dx0, dx1) = (-hw + 0.15, -hw + 0.15 + dw);
+    b.cuboid(Top, [dx0, y0 + 0.01, 0.02], [dx1, back, 0.85 * eave]);
+    b.ellipsoid(
+        Frame,
+        [dx1 - 0.08, y0 + 0.008, 0.45 * eave],
+        [0.03, 0.01, 0.03],
+    );
+    let (px0, px1) = ((dx1 + 0.1).min(hw - 0.3), hw - 0.15);
+    if px1 - px0 < 0.15 {
+        return;
+    }
+    let (z0, z1) = (0.3 * eave, 0.85 * eave);
+    b.cuboid(Frame, [px0, y0 + 0.012, z0], [px1, back, z1]);
+    let m = 0.04;
+    b.cuboid(
+        Cushion,
+        [px0 + m, y0 + 0.004, z0 + m],
+        [px1 - m, y0 + 0.012, z1 - m],
+    );
+    b.cuboid(
+        Canvas,
+        [px0 + 2.0 * m, y0, z1 - 0.3 * (z1 - z0)],
+        [px1 - 2.0 * m, y0 + 0.004, z1 - 2.0 * m],
+    );
 }
 
 /// A tiki bar: a shaggy thatched roof on four bamboo posts, a bamboo-fronted counter under it

@@ -3,7 +3,6 @@
 //! The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
-use super::parts::IDENTITY;
 use std::f64::consts::TAU;
 
 /// Three splayed legs from a head at `head` to the floor within the footprint.
@@ -285,61 +284,6 @@ pub fn quadruped(b: &mut Builder) {
         map([0.0, -0.75 * hl, bz + 0.05 * h]),
         map([0.0, -0.97 * hl, bz - 0.2 * h]),
         0.12 * ha,
-    );
-}
-
-/// A perched bird facing +y: an upright egg body, a round head with a beak and eyes, folded
-/// wings, a tail and two legs (owls, parrots, pigeons and stuffed birds).
-pub fn bird(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let leg = 0.1 * h;
-    for sx in [-1.0, 1.0] {
-        b.rod(
-            Metal,
-            [sx * 0.2 * hw, 0.1 * hd, 0.0],
-            [sx * 0.2 * hw, 0.0, leg + 0.02],
-            0.02 * h + 0.002,
-        );
-    }
-    let body = [0.0, 0.0, leg + 0.3 * h];
-    b.ellipsoid(Body, body, [0.8 * hw, 0.7 * hd, 0.3 * h]);
-    b.ellipsoid(
-        Cushion,
-        [0.0, 0.25 * hd, leg + 0.28 * h],
-        [0.55 * hw, 0.45 * hd, 0.22 * h],
-    );
-    for sx in [-1.0, 1.0] {
-        b.ellipsoid(
-            Frame,
-            [sx * 0.75 * hw, -0.1 * hd, leg + 0.32 * h],
-            [0.2 * hw, 0.6 * hd, 0.22 * h],
-        );
-    }
-    b.ellipsoid(
-        Frame,
-        [0.0, -0.8 * hd, leg + 0.12 * h],
-        [0.3 * hw, 0.2 * hd, 0.1 * h],
-    );
-    let r = 0.22 * h;
-    let head = [0.0, 0.1 * hd, h - r];
-    b.ellipsoid(Body, head, [r.min(0.75 * hw), r.min(0.7 * hd), r]);
-    for sx in [-1.0, 1.0] {
-        b.ellipsoid(
-            Light,
-            [
-                sx * 0.35 * r,
-                head[1] + 0.8 * r.min(0.7 * hd),
-                head[2] + 0.15 * r,
-            ],
-            [0.14 * r, 0.06 * r, 0.14 * r],
-        );
-    }
-    b.ellipsoid_rot(
-        Handle,
-        0,
-        [0.0, head[1] + 0.95 * r.min(0.7 * hd), head[2] - 0.2 * r],
-        [0.1 * r, 0.15 * r, 0.12 * r],
-        IDENTITY,
     );
 }
 
