@@ -129,8 +129,16 @@ pub(super) fn read_mentions(
             back(at + 1) == Some("instead") && back(at) == Some("of")
                 || back(at + 1) == Some("rather") && back(at) == Some("than")
         };
-        let replaced =
-            instead(1) || instead(2) && matches!(back(1), Some("a" | "an" | "the" | "any"));
+        // what comes between is a determiner or a count ("instead of the two single beds")
+        let filler = |w: Option<&str>| {
+            w.is_some_and(|w| {
+                matches!(
+                    w,
+                    "a" | "an" | "the" | "any" | "my" | "our" | "its" | "their"
+                ) || number_of(w).is_some()
+            })
+        };
+        let replaced = (1..=3).any(|k| instead(k) && (1..k).all(|i| filler(back(i))));
         match last {
             _ if replaced => {
                 negated = true;

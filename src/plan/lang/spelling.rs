@@ -5,7 +5,8 @@
 //! no table and no lexicon knows, so that what the text says on purpose stays. Object words are
 //! mended by the same rules ("a tabel for six", "a cofee table"): a word one such edit away from
 //! one word of the object names, and from no other, is that word, unless the edit is a letter
-//! more or less at its end ("barre" is no barrel). An English word WordNet knows is never a slip.
+//! more or less at its end ("barre" is no barrel) and the next word does not complete an object's
+//! name with it ("a coffe table" is a coffee table). An English word WordNet knows is never a slip.
 use crate::plan::kb::KnowledgeBase;
 
 /// `t` (normalised, single spaces) with each misspelt word of a scene name of several words
@@ -58,7 +59,8 @@ pub(super) fn mend_place_names(kb: &KnowledgeBase, t: &str) -> String {
 /// `t` (normalised, single spaces) with each misspelt object word written as the knowledge
 /// base's object names write it: "a tabel for six" is a table for six, "a cofee table" a coffee
 /// table. A word is mended only when exactly one word of the names (or its plural) is a slip
-/// away from it.
+/// away from it; a letter more or less at its end only when the word after it completes an
+/// object's name with it ("a coffe table").
 pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
     // every word of the names, short ones too: "carts" is carts (a cart), not a slip for "charts"
     let mut known: Vec<&str> = kb
@@ -74,8 +76,31 @@ pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
         .copied()
         .filter(|w| w.chars().count() >= 5 && w.chars().all(char::is_alphabetic))
         .collect();
-    t.split(' ')
-        .map(|raw| {
+    let names: Vec<&str> = kb
+        .objects
+        .iter()
+        .flat_map(|o| std::iter::once(&o.category).chain(&o.synonyms))
+        .map(String::as_str)
+        .collect();
+    let words: Vec<&str> = t.split(' ').collect();
+    words
+        .iter()
+        .enumerate()
+        .map(|(k, &raw)| {
+            // the next word, when the two may be one object's name ("a coffe table")
+            let next = words
+                .get(k + 1)
+                .map(|n| n.trim_matches(|c: char| !c.is_alphanumeric()))
+                .filter(|_| !raw.ends_with(|c: char| !c.is_alphanumeric()));
+            let names_with = |form: &str| {
+                next.is_some_and(|n| {
+                    let two = [
+                        format!("{form} {n}"),
+                        format!("{form} {}", super::singular(n)),
+                    ];
+                    names.iter().any(|x| two.iter().any(|t| t == x))
+                })
+            };
             let start = raw.len() - raw.trim_start_matches(|c: char| !c.is_alphanumeric()).len();
             let end = raw
                 .trim_end_matches(|c: char| !c.is_alphanumeric())
@@ -94,7 +119,9 @@ pub(super) fn mend_object_words(kb: &KnowledgeBase, t: &str) -> String {
                 std::iter::once(n.to_string())
                     .chain(plural)
                     .filter(|form| {
-                        mendable(kb, w, form) && !inflected(w, form) && !end_slip(w, form)
+                        mendable(kb, w, form)
+                            && !inflected(w, form)
+                            && (!end_slip(w, form) || names_with(form))
                     })
                     .take(1)
             });

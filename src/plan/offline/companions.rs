@@ -188,11 +188,17 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 .filter(|c| *c != seat && takes(c))
                 .map(|c| counts.get(c).copied().unwrap_or(0))
                 .sum();
-            counts.insert(seat.clone(), (counts[&table] * each).saturating_sub(taken));
+            let n = (counts[&table] * each).saturating_sub(taken);
+            counts.insert(seat.clone(), n);
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred
                     .entry(seat.clone())
                     .or_insert_with(|| crate::plan::understood::phrase(r, i));
+            }
+            // a desk one person works at is named with its chair: a small room trims the
+            // place's defaults, never the seat of a desk the text asks for
+            if n > 0 && per == 1 && matches!(kind, At | AtBack) {
+                named.insert(seat.clone());
             }
         } else if seat_named && !table_named && per < 12 {
             // six bar stools want a longer bar, not a second one
