@@ -18,13 +18,13 @@
 //! middle like a pillar: a floor lamp before the sofa, nor cut by the frame's bottom: chair
 //! backs before the sideboard), and far (in place or direction) from the views already taken
 //! (a near copy costs more than framing well gains). Past the first few views only clean views
-//! that frame well are taken: a small room gets fewer pictures rather than near copies, views
-//! past a wardrobe at the lens or close-ups of a bed. Host-only.
+//! that frame well are taken: a small room gets fewer pictures rather than near copies, repeats
+//! of a corner already shown (`repeat.rs`), views past a wardrobe at the lens or close-ups of a
+//! bed. Host-only.
 use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
+use super::repeat::{backdrop, sparse};
 use super::views::FLAT;
-use super::views::{
-    facing, hidden_share, in_frame, in_frame_within, screen_box, view_stats, ViewStats,
-};
+use super::views::{facing, hidden_share, in_frame, in_frame_within, view_stats, ViewStats};
 use super::{camera, kind, valid_viewpoint, ObjectBox, SceneBox, ROOM_MARGIN, SCENE_FOV_X};
 use crate::camera::Camera;
 use crate::plan::spec::SceneType;
@@ -201,7 +201,8 @@ struct Candidate {
     /// view sees ([`facing`]).
     shows: Vec<Option<f64>>,
     dir: [f64; 2],
-    /// Horizontal distance to the nearest object covering part of the frame (metres).
+    /// Horizontal distance to the nearest object covering part of the frame (metres,
+    /// [`fore::nearest`]).
     near: f64,
     /// The largest share of the frame an object that is not looked at covers from in front of
     /// what is (a bush before the fountain, a lampshade before the sofa).
@@ -219,10 +220,12 @@ struct Candidate {
     /// room ([`stands_mid_frame`]): a floor lamp splitting the picture. Its box's share is
     /// small (a pole and a shade), what it does to the picture is not.
     pillar: f64,
-    /// The share of the frame of a foreground object not looked at that the frame's bottom
-    /// edge cuts ([`cut_at_foot`]): the backs of the chairs at a dining table across the bottom
-    /// of a view of the sideboard.
+    /// The largest share of the frame of a foreground object other than the subject that the
+    /// frame's bottom edge cuts ([`fore::cut_at_foot_objects`]): the backs of the chairs at a
+    /// dining table across the bottom of a view of the sideboard.
     cut: f64,
+    /// What the view is named by, for telling repeats ([`backdrop`]).
+    backdrop: Option<usize>,
     /// The objects in frame (index, share of the frame it covers), in index order, and the sum
     /// of their shares.
     shares: Vec<(usize, f64)>,
@@ -298,7 +301,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
         }
     }
     let piece = pieces::piece_of(scene);
-    let fg = foreground(scene);
+    let focal_object = focal(scene).map(|f| f.0);
     let mut cands = vec![];
     for (p, t, ti, fov, turned) in shots {
         let (t, looked_at) = (&t, &targets[ti].1);
@@ -324,33 +327,19 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             let dir = [(t[0] - p[0]) / d, (t[1] - p[1]) / d];
             // How close the nearest object in the frame stands: a foreground lampshade or chair
             // back hides the room even under the share limit.
-            let (mut near, mut occluder, mut pillar, mut cut) =
-                (f64::INFINITY, 0.0f64, 0.0f64, 0.0f64);
-            let boxes: Vec<(f64, Option<[f64; 4]>)> =
-                scene.objects.iter().map(|o| screen_box(&cam, o)).collect();
+            let (mut occluder, mut pillar) = (0.0f64, 0.0f64);
+            let (boxes, dists) = fore::seen(scene, &cam);
             let shares: Vec<f64> = boxes.iter().map(|b| b.0).collect();
-            let dists: Vec<f64> = scene
-                .objects
-                .iter()
-                .map(|o| footprint_distance(o, *p))
-                .collect();
             for (k, o) in scene.objects.iter().enumerate() {
                 let share = shares[k];
                 if share <= 0.03 {
                     continue;
                 }
                 let dist = dists[k];
-                near = near.min(dist);
                 if dist < PILLAR_NEAR
                     && stands_mid_frame(&cam, o, boxes[k].1, dist, &dists, &shares)
                 {
                     pillar = pillar.max(share);
-                }
-                // Aimed at as one of a pair yet with its centre out of frame, it is no part
-                // of the picture: a sliver of a shelf's flank at the frame's side.
-                let aimed_at = looked_at.contains(&k);
-                if dist < fg && !aimed_at && cut_at_foot(&cam, o, boxes[k].1) {
-                    cut = cut.max(share);
                 }
                 // What is looked at hides nothing, unless it is the near one of a pair, or it
                 // stands before a larger object and hides much of it (a bush before the
@@ -374,6 +363,11 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                     occluder = occluder.max(share);
                 }
             }
+            let near = fore::nearest(&shares, &dists);
+            let cut = fore::cut_at_foot_objects(scene, &cam, &boxes, &dists, stats.subject)
+                .into_iter()
+                .map(|k| shares[k])
+                .fold(0.0, f64::max);
             let total = shares.iter().sum();
             let shown: Vec<bool> = scene
                 .objects
@@ -385,7 +379,9 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 blocker_share(scene, &cam, &shares),
                 grazing_share(scene, &cam, &shares),
             );
+            let backdrop = backdrop(scene, &cam, &sparse(&shares), focal_object);
             cands.push(Candidate {
+                backdrop,
                 pillar,
                 cut,
                 pieces,
@@ -438,14 +434,6 @@ fn stands_mid_frame(
             .any(|(d, s)| *s > 0.03 && *d > dist + PILLAR_BEHIND)
 }
 
-/// True when `o` (its silhouette's box `rect`) stands upright in `cam`'s frame with its foot cut
-/// by the frame's bottom edge: seen from so near that only its top half is in the picture,
-/// before what the view is of. The caller asks this of objects nearer than the foreground
-/// distance ([`foreground`]) that the view does not aim at.
-fn cut_at_foot(cam: &Camera, o: &ObjectBox, rect: Option<[f64; 4]>) -> bool {
-    o.size[2] > FLAT && rect.is_some_and(|r| r[3] >= cam.height as f64 - 1.0)
-}
-
 /// How near (metres) a pillar stands: a floor lamp 2 m off still splits the picture it stands
 /// in the middle of, past the foreground distance.
 const PILLAR_NEAR: f64 = 2.5;
@@ -454,6 +442,7 @@ const PILLAR_FOOT: f64 = 0.75;
 /// How much further (metres) the room behind a pillar must stand.
 const PILLAR_BEHIND: f64 = 1.0;
 
+mod fore;
 mod pick;
 mod pieces;
 mod sweep;

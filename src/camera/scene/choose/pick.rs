@@ -2,6 +2,7 @@
 //! doc): what a view gains for the objects it newly shows and for framing well, and what it
 //! loses for each fault a person sees in it. Host-only.
 use super::super::faults::{BARE_COVER, BARE_WALL, COPY};
+use super::super::repeat::{repeats, Look};
 use super::super::views::MAX_OBJECT_SHARE;
 use super::super::wall::bare_wall_share;
 use super::super::{kind, SceneBox};
@@ -40,9 +41,11 @@ const FOCAL_VIEWS: f64 = 0.375;
 /// Asked for more views than this, a room gets after its first view only views that frame
 /// well and are no near copy of a view taken, and past this many (a row of the contact sheet)
 /// only clean ones ([`ViewFaults`](super::super::ViewFaults): not mostly bare, no blocker at
-/// the lens, no panel edge-on). A room that cannot give the views asked for (a box room with one spot to stand
-/// on, a bedroom that is mostly bed) gets fewer distinct pictures rather than copies and
-/// close-ups. Asked for this many or fewer, a room gets them all.
+/// the lens, no panel edge-on, no repeat of a view taken (`repeat.rs`: the door and bookcase
+/// corner of a living room seen again from a step aside), and no pillar in mid-frame). A room
+/// that cannot give the views asked for (a box room with one spot to stand on, a bedroom that
+/// is mostly bed, a living room of one sofa group) gets fewer distinct pictures rather than
+/// copies, repeats and close-ups. Asked for this many or fewer, a room gets them all.
 pub(in crate::camera::scene) const ALWAYS: usize = 4;
 
 /// How much two views show the same: over the objects, the shares of the frame both give an
@@ -78,6 +81,15 @@ fn back_penalty(stats: &ViewStats) -> f64 {
 /// [`WALL_FREE`] on, steeply, and [`POOR`] on top past [`BARE_WALL`] (a fault).
 fn wall_penalty(wall: f64) -> f64 {
     WALL_PER_SHARE * (wall - WALL_FREE).max(0.0) + if wall > BARE_WALL { POOR } else { 0.0 }
+}
+
+/// What `c` is, for telling repeats (`repeat.rs`).
+fn look(c: &Candidate) -> Look<'_> {
+    Look {
+        dir: c.dir,
+        shows: &c.shares,
+        backdrop: c.backdrop,
+    }
 }
 
 /// Greedy choice of `count` candidates (see the module doc).
@@ -176,8 +188,12 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 flag(c.blocker > 0.0),
                 flag(c.grazing > 0.0),
             );
+            // A repeat of a view taken (`repeat.rs`: the same things, or the same corner, the
+            // same way) and a pillar in mid-frame are faults a person sees in a set of views.
+            let repeat = taken.iter().any(|&j| repeats(look(c), look(&cands[j])));
+            let pillar = flag(c.pillar > 0.0);
             if (count > ALWAYS && !taken.is_empty() && (copy > 0.0 || good == 0.0))
-                || (strict && bare + blocker + grazing > 0.0)
+                || (strict && (bare + blocker + grazing + pillar > 0.0 || repeat))
             {
                 continue;
             }

@@ -1,5 +1,6 @@
 //! Tests of the render-view choice.
 use super::*;
+use crate::camera::scene::views::screen_box;
 use crate::camera::scene::views::tests::boxed;
 use crate::camera::scene::{
     frame_share, framing_score, overview_camera, BARE_WALL, MAX_OBJECT_SHARE,
@@ -21,7 +22,8 @@ fn views_of_a_furnished_room_frame_several_objects() {
         ],
     };
     let cams = render_views(&scene, 8, 64, 64);
-    assert_eq!(cams.len(), 8);
+    // Eight asked for, more than the four always given: past them no repeat (`repeat.rs`).
+    assert!(cams.len() > pick::ALWAYS, "{} views", cams.len());
     assert!(cams.iter().all(|c| valid_viewpoint(&scene, c.position)));
     let score = framing_score(&scene, &cams);
     assert!(score >= 0.75, "{score}");
@@ -41,16 +43,9 @@ fn views_of_a_furnished_room_frame_several_objects() {
     }
 }
 
-/// How many of `cams` have an object in frame standing nearer than `d` metres (horizontal).
-fn foreground_views(scene: &SceneBox, cams: &[Camera], d: f64) -> usize {
-    cams.iter()
-        .filter(|c| {
-            scene
-                .objects
-                .iter()
-                .any(|o| frame_share(c, o) > 0.03 && footprint_distance(o, c.position) < d)
-        })
-        .count()
+/// How many of `cams` stand close to an object in their frame (`fore::stands_close`).
+fn foreground_views(scene: &SceneBox, cams: &[Camera]) -> usize {
+    cams.iter().filter(|c| fore::stands_close(scene, c)).count()
 }
 
 #[test]
@@ -66,7 +61,7 @@ fn views_of_the_living_room_keep_clear_of_foreground_objects() {
             .expect("lays out");
         let scene = SceneBox::from_layout(&l);
         let cams = render_views(&scene, 8, 64, 48);
-        close += foreground_views(&scene, &cams, 1.4);
+        close += foreground_views(&scene, &cams);
     }
     // The bare-wall rule trades some distance for views that show more than wall: 4 before it,
     // 7 since.
@@ -421,17 +416,12 @@ fn views_of_a_dining_table_keep_chair_backs_out_of_the_frame_foot() {
         "a dining room with a long table, ten chairs and a china cabinet",
     ] {
         let (scene, cams) = eight_views(prompt);
-        let fg = foreground(&scene);
         for (v, c) in cams.iter().enumerate() {
-            let stats = view_stats(&scene, c);
-            let chair = scene.objects.iter().enumerate().any(|(k, o)| {
-                let (share, rect) = screen_box(c, o);
-                Some(k) != stats.subject
-                    && kind(o).ends_with("chair")
-                    && share > 0.03
-                    && footprint_distance(o, c.position) < fg
-                    && cut_at_foot(c, o, rect)
-            });
+            let (boxes, dists) = fore::seen(&scene, c);
+            let subject = view_stats(&scene, c).subject;
+            let chair = fore::cut_at_foot_objects(&scene, c, &boxes, &dists, subject)
+                .into_iter()
+                .any(|k| kind(&scene.objects[k]).ends_with("chair"));
             if chair {
                 cut.push(format!("{prompt}: view {v}"));
             }
@@ -469,14 +459,15 @@ fn a_room_short_of_good_views_gets_fewer_distinct_ones() {
             assert!(v < pick::ALWAYS || f.clean(), "{prompt}: view {v} {f:?}");
         }
     }
-    // A room with space to spare still gets all eight; asked for four or fewer, a room gets
-    // them all.
+    // A room with space to spare still gets more than four (six to eight: past the fourth no
+    // repeat of a corner already shown); asked for four or fewer, a room gets them all.
     for prompt in [
         "a cozy living room",
         "a dining room for eight",
         "a kitchen with an island and three bar stools",
     ] {
-        assert_eq!(eight_views(prompt).1.len(), 8, "{prompt}");
+        let n = eight_views(prompt).1.len();
+        assert!(n > pick::ALWAYS + 1, "{prompt}: {n} views");
     }
     let (scene, _) = eight_views(short[0]);
     assert_eq!(
@@ -567,4 +558,40 @@ fn views_from_a_low_beds_foot_are_not_blocked() {
     // Before: 11 of 11 views blocked; now the views where the frame cuts a bed or a dresser at
     // the lens: 6.
     assert!(blocked.len() <= 6, "{total} views, blocked: {blocked:?}");
+}
+
+#[test]
+fn views_past_the_fourth_never_repeat_an_earlier_one() {
+    // "a cozy living room" showed its door and bookcase corner in three of eight views, a
+    // garden patio and an operating room repeated an earlier view four and five times: a
+    // person flicking through sees the same corner again (`repeat.rs`). Past the fourth view
+    // a repeat is no longer taken; a room short of other pictures gets fewer. The README's
+    // prompt and rooms of our own, indoor and out.
+    let prompts = [
+        "a cozy living room",
+        "an operating room",
+        "a garden patio",
+        "a gym",
+        "a clinic waiting room",
+        "a small bakery",
+        "a classroom",
+        "a hotel lobby with a reception desk, two sofas and a plant",
+    ];
+    let (mut late, mut repeats, mut total) = (vec![], 0, 0);
+    for prompt in prompts {
+        let (scene, cams) = eight_views(prompt);
+        let faults = crate::camera::scene::view_faults(&scene, &cams);
+        for (v, f) in faults.iter().enumerate() {
+            if f.repeat && v >= pick::ALWAYS {
+                late.push(format!("{prompt}: view {v}"));
+            }
+        }
+        repeats += faults.iter().filter(|f| f.repeat).count();
+        total += cams.len();
+    }
+    assert!(late.is_empty(), "repeats past the fourth view: {late:?}");
+    assert!(
+        repeats * 8 <= total,
+        "{repeats} of {total} views repeat an earlier one"
+    );
 }
