@@ -213,6 +213,29 @@ fn colours_follow_surface_words() {
     assert!(o("a park at sunset").sky[0] > o("a park").sky[0]);
 }
 
+/// A material word that is part of an object's name names the object, not the floor: a lawn
+/// mower in a garage leaves its floor as it was, while the word alone still sets the ground.
+#[test]
+fn a_material_word_inside_an_object_name_leaves_the_floor_alone() {
+    let c = |t: &str| draft_colours(SceneType::Indoor, t);
+    let garage = c("a garage with a car");
+    for t in [
+        "a garage with a car and a lawn mower",
+        "a garage with two lawn mowers and a workbench",
+        "a teh garage with a car, a lawn mower and shelvs full of boxes",
+    ] {
+        let f = c(t);
+        assert_eq!(
+            (f.floor, f.floor_pattern),
+            (garage.floor, garage.floor_pattern),
+            "{t}"
+        );
+    }
+    // the word on its own still speaks of the ground
+    assert_eq!(c("a sunroom with a lawn").floor_pattern, Pattern::Mottled);
+    assert!(c("a sunroom with a lawn").floor[1] > c("a sunroom with a lawn").floor[0]);
+}
+
 /// A clinical place (named so by its kind or by the words naming the place) has a pale vinyl
 /// floor whatever its kind's own floor, unless the text names another; places that are not
 /// clinical keep theirs, even when they hold something medical.

@@ -242,6 +242,31 @@ fn scene_kind(text: &str) -> Option<&'static str> {
     best.map(|(n, _)| n)
 }
 
+/// Whether word `i` of `w` is part of an object's name of two words or more in the knowledge
+/// base ("lawn" in "a garage with a lawn mower", "snow" in "snow globes"): such a word names the
+/// object, not the ground.
+fn in_object_name(w: &[String], i: usize) -> bool {
+    let kb = KnowledgeBase::builtin();
+    let same = |name: &str, said: &str, last: bool| {
+        name == said
+            || (last
+                && (said.strip_suffix('s') == Some(name) || said.strip_suffix("es") == Some(name)))
+    };
+    kb.objects.iter().any(|o| {
+        std::iter::once(&o.category).chain(&o.synonyms).any(|name| {
+            let n = words(name);
+            n.len() >= 2
+                && (0..n.len()).any(|k| {
+                    i >= k
+                        && i - k + n.len() <= w.len()
+                        && n.iter()
+                            .enumerate()
+                            .all(|(j, x)| same(x, &w[i - k + j], j + 1 == n.len()))
+                })
+        })
+    })
+}
+
 /// The draft colours of a scene: the scene kind's defaults, then what the text says of its
 /// surfaces. A surface noun takes the material, colour and tone words just before it ("dark oak
 /// floor", "white brick walls"); an unambiguous material word alone sets its own surface
@@ -321,7 +346,9 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         }
     }
     for (i, s) in w.iter().enumerate() {
-        if let Some(mat) = material(s).filter(|m| m.alone && !explicit.contains(&m.target)) {
+        if let Some(mat) = material(s)
+            .filter(|m| m.alone && !explicit.contains(&m.target) && !in_object_name(&w, i))
+        {
             let (_, col, ton) = modifiers(i);
             apply(&mut c, mat.target, Some(mat), col, ton);
         }
