@@ -93,6 +93,24 @@ fn what_is_said_instead_of_is_not_wanted_whatever_its_count() {
     }
 }
 
+/// When what replaces is the same kind as what is replaced ("a rug instead of a carpet": both
+/// are rugs to the knowledge base), the words choose which one: the kind is wanted, once.
+#[test]
+fn a_thing_said_instead_of_one_of_its_own_kind_stays() {
+    for prompt in [
+        "a kids bedroom with bunk beds, a toy chest and a rug instead of a carpet",
+        "a bedroom with a wool rug rather than a carpet",
+        "a study where, instead of a carpet, a round rug",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "rug"), 1, "{prompt}: {:?}", keys(&s));
+    }
+    // another kind said instead is still not wanted
+    let s = plan("a living room with a sofa bed instead of a sofa");
+    assert!(!s.objects.contains_key("sofa"), "{:?}", keys(&s));
+    assert_eq!(number(&s, "sofa bed"), 1, "{:?}", keys(&s));
+}
+
 #[test]
 fn a_slip_at_a_words_end_is_mended_when_the_next_word_completes_a_name() {
     for prompt in [

@@ -250,6 +250,7 @@ pub(super) fn read_mentions(
         if negated {
             count = Some(0);
         }
+        let after_replaced = prev_replaced;
         prev_replaced = replaced;
         let head_text = t[start..end].to_string();
         let (category, known) = if cat.is_empty() {
@@ -284,6 +285,26 @@ pub(super) fn read_mentions(
             }
             None => (category, known),
         };
+        // "a rug instead of a carpet", "instead of a carpet, a rug": what replaces is the same
+        // kind as what is replaced, so the words choose which one (its make or material); the
+        // kind is wanted, once.
+        let mut reference = false;
+        if replaced
+            && r.mentions
+                .last()
+                .is_some_and(|p| !p.negated && p.category == category)
+        {
+            (negated, count, reference) = (false, None, true);
+        }
+        if !negated && after_replaced {
+            if let Some(p) = r
+                .mentions
+                .last_mut()
+                .filter(|p| p.negated && p.category == category)
+            {
+                (p.negated, p.count, p.reference) = (false, None, true);
+            }
+        }
         r.mentions.push(Mention {
             start,
             end,
@@ -296,7 +317,7 @@ pub(super) fn read_mentions(
             definite,
             negated,
             size,
-            reference: false,
+            reference,
             each_of: None,
             parts: 1,
             rows: 0,
