@@ -378,3 +378,33 @@ fn each_edit_operation_lists_only_its_flags_each_described() {
         }
     }
 }
+
+/// An `--out` that names a file is refused in one line that says it is a file, and the file is
+/// left as it was.
+#[test]
+fn an_out_that_is_a_file_is_refused_in_one_line_and_kept() {
+    let root = tmp("outfile");
+    let f = root.join("afile");
+    std::fs::write(&f, "mine").expect("a file");
+    let fs = f.to_string_lossy().to_string();
+    for args in [
+        vec!["generate", PROMPT, "--out", &fs, "--renders", "0"],
+        vec!["plan", PROMPT, "--out", &fs],
+        vec!["object", "a chair", "--out", &fs],
+    ] {
+        let o = run(&args, &[]);
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{args:?}: refused");
+        assert!(
+            err.contains("is a file, not a folder")
+                && err.lines().filter(|l| l.starts_with("error")).count() == 1,
+            "{args:?}: one line saying it is a file: {err}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&f).expect("kept"),
+            "mine",
+            "{args:?}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&root);
+}

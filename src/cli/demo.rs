@@ -27,7 +27,7 @@ fn demo(out: &Path, n: usize, seed: u64) -> Result<()> {
     if n == 0 {
         bail!("--gaussians must be at least 1");
     }
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    super::create_dir(out)?;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let g = Gaussians::random(&mut rng, n, [-1.0; 3], [1.0; 3], 0.03, 1);
     let cams: Vec<Camera> = (0..8)

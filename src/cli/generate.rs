@@ -69,7 +69,7 @@ pub fn run_timed(a: GenerateArgs) -> Result<Vec<StageTime>> {
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
     let out = &a.out;
     let created = !out.exists();
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    super::create_dir(out)?;
     let result = locked(&a, &text, draft, models.as_deref(), start);
     if result.is_err() && created {
         // A run that failed before writing anything leaves no empty directory behind.

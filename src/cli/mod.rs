@@ -136,9 +136,21 @@ pub fn check_writable(file: &Path) -> Result<()> {
     check_writable_dir(&dir).with_context(|| format!("cannot write {}", file.display()))
 }
 
+/// Creates the folder `dir` (and its parents); a path that is a file is refused in one line
+/// that says so, not with the system's "File exists".
+pub fn create_dir(dir: &Path) -> Result<()> {
+    if dir.is_file() {
+        anyhow::bail!(
+            "{} is a file, not a folder: give a folder for the outputs",
+            dir.display()
+        );
+    }
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
+}
+
 /// Checks that files can be created in `dir` (created if missing), before any long work.
 pub fn check_writable_dir(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    create_dir(dir)?;
     let probe = dir.join(format!(".dreamscene-write-check-{}", std::process::id()));
     std::fs::write(&probe, b"").map_err(|e| anyhow::anyhow!("{}: {e}", dir.display()))?;
     let _ = std::fs::remove_file(&probe);
@@ -148,9 +160,7 @@ pub fn check_writable_dir(dir: &Path) -> Result<()> {
 /// Creates the directory that will hold `file`.
 pub fn create_parent(file: &Path) -> Result<()> {
     match file.parent().filter(|d| !d.as_os_str().is_empty()) {
-        Some(dir) => {
-            std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
-        }
+        Some(dir) => create_dir(dir),
         None => Ok(()),
     }
 }

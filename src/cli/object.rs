@@ -144,7 +144,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
         }
         (p, _) => p.clone(),
     };
-    std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    super::create_dir(&a.out)?;
     if found.is_none() {
         eprintln!(
             "note: no known category in \"{}\"; using a generic {:.2} x {:.2} x {:.2} m box shape",
@@ -294,7 +294,7 @@ pub fn write_turntable(
     if count == 0 {
         return Ok(());
     }
-    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    super::create_dir(dir)?;
     let r = Rasterizer::new(ctx)?;
     let gg = GpuGaussians::upload(ctx, g)?;
     for cam in turntable(frame, count, 75.0, res) {

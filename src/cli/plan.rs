@@ -206,7 +206,7 @@ pub fn plan_to_dir(
         println!("  {line}");
     }
     let l = layout(&spec, LayoutOptions::seeded(seed))?;
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    super::create_dir(out)?;
     // spec.json records what was understood and what the layout could not satisfy (added keys).
     let mut json = serde_json::to_value(&spec)?;
     if let Some(map) = json.as_object_mut() {

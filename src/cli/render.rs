@@ -103,7 +103,7 @@ pub fn read_splats(path: &Path, drop_invalid: bool) -> Result<Gaussians> {
 /// Renders every camera into `<out>/<img_name>.png` (sub-directories of `img_name` created) and
 /// says what it wrote.
 pub fn render_all(g: &Gaussians, cams: &[Camera], out: &Path, background: [f32; 3]) -> Result<()> {
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    super::create_dir(out)?;
     let ctx = open_device()?;
     let r = Rasterizer::new(&ctx)?;
     let mut source = ViewSource::new(&ctx, g);

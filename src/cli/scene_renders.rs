@@ -62,7 +62,7 @@ pub(super) fn render_chosen(
     res: u32,
     dir: &Path,
 ) -> Result<usize> {
-    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    super::create_dir(dir)?;
     let cams = render_views(&SceneBox::from_layout(layout), count, res, res);
     write_cameras(&dir.join("cameras.json"), &cams)
         .with_context(|| format!("writing {}/cameras.json", dir.display()))?;

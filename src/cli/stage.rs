@@ -30,7 +30,7 @@ pub enum Stage {
 pub fn run(a: &GenerateArgs, stage: Stage, shard: Option<Shard>) -> Result<()> {
     let models = models_dir(a.models.as_deref());
     let text = super::plan::plan_text(a.prompt.clone(), a.dialogue.clone(), false)?;
-    std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    super::create_dir(&a.out)?;
     if !draft_mode(a, models.as_deref())? {
         return super::stage_prior::run(a, &text, models.as_deref(), stage, shard);
     }
@@ -112,7 +112,7 @@ pub fn draft_timed(a: &GenerateArgs) -> Result<(Vec<StageTime>, usize)> {
         // A scene of another prompt or seed is refused, never overwritten.
         check_resume(&read_scene(&a.out)?, &text, a.seed)?;
     }
-    std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    super::create_dir(&a.out)?;
     let mut times = vec![];
     let mut timed = |name: &str, t: Instant| {
         times.push(StageTime {
