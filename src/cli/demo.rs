@@ -1,5 +1,5 @@
 //! `dreamscene demo`: a random scene, its orbit cameras and their renders.
-use anyhow::{bail, Context as _, Result};
+use anyhow::{bail, Result};
 use dreamscene::camera::{write_cameras, Camera};
 use dreamscene::splat::ply::write_ply;
 use dreamscene::splat::Gaussians;

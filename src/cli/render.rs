@@ -1,7 +1,7 @@
 //! `dreamscene render`: a splat PLY (or a scene directory) seen from every camera of a
 //! cameras.json, or along a camera path as `video` draws it.
 use super::{open_device, save_png};
-use anyhow::{bail, Context as _, Result};
+use anyhow::{bail, Result};
 use dreamscene::camera::Camera;
 use dreamscene::export::trajectory::{cameras, open_input_at, Input, Size, Subject, Trajectory};
 use dreamscene::generate::progress::Progress;

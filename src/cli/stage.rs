@@ -8,7 +8,7 @@
 use super::generate::{draft_mode, plan_or_reuse, GenerateArgs};
 use super::object::models_dir;
 use super::scene_renders::render_chosen;
-use anyhow::{bail, Context as _, Result};
+use anyhow::{bail, Result};
 use dreamscene::batch::index::StageTime;
 use dreamscene::batch::shard::{self, Shard};
 use dreamscene::generate::object_shard::{build_draft_objects, missing_objects};
