@@ -214,30 +214,11 @@ pub fn parse(features: &str) -> Result<Animal, String> {
     Ok(a)
 }
 
-struct Table {
-    rows: Vec<(String, Animal)>,
-    bad: Vec<String>,
-}
+type Table = super::rows::RowTable<Animal>;
 
 fn table() -> &'static Table {
     static T: OnceLock<Table> = OnceLock::new();
-    T.get_or_init(|| {
-        let mut t = Table {
-            rows: vec![],
-            bad: vec![],
-        };
-        for line in include_str!("kb/animals.txt").lines().map(str::trim) {
-            if line.is_empty() || line.starts_with('#') {
-                continue;
-            }
-            match line.split_once('|').map(|(n, f)| (n.trim(), parse(f))) {
-                Some((name, Ok(a))) => t.rows.push((name.to_string(), a)),
-                Some((_, Err(e))) => t.bad.push(format!("{line}: {e}")),
-                None => t.bad.push(format!("{line}: no `|`")),
-            }
-        }
-        t
-    })
+    T.get_or_init(|| super::rows::read(include_str!("kb/animals.txt"), parse))
 }
 
 /// The table's rows (the `default` row among them).

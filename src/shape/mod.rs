@@ -101,6 +101,7 @@ mod recliners;
 mod riders;
 mod rigs;
 mod rocks;
+mod rows;
 mod salon;
 mod scopes;
 mod sculpted;
