@@ -109,7 +109,7 @@ fn re(p: &str) -> Regex {
 
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
-    let t = words::compound_numbers(&normalise(text));
+    let t = words::spelled_sizes(&words::compound_numbers(&normalise(text)));
     let t = spelling::mend_place_names(kb, &t);
     let t = spelling::mend_object_words(kb, &t);
     let mut r = Reading {

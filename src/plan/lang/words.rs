@@ -259,6 +259,50 @@ pub(super) fn compound_numbers(t: &str) -> String {
     .into_owned()
 }
 
+/// Numbers written as words inside a size ("five metres by four", "twelve feet by ten", "four
+/// by three meters", "about ten square metres") as digits, so that the size reader takes them as
+/// it takes "5 m by 4". A number word becomes digits only next to a length unit, or beside "by"/"x"
+/// across from digits: "a table for six by the window" keeps its six.
+pub(super) fn spelled_sizes(t: &str) -> String {
+    static UNIT: OnceLock<Regex> = OnceLock::new();
+    static AFTER: OnceLock<Regex> = OnceLock::new();
+    static BEFORE: OnceLock<Regex> = OnceLock::new();
+    let unit = UNIT.get_or_init(|| {
+        Regex::new(r"\b([a-z]+)(\s+(?:square\s+|sq\.?\s*)?(?:met(?:er|re)s?|m|cm|centimet(?:er|re)s?|mm|millimet(?:er|re)s?|ft|feet|foot|inch|inches)\b)")
+            .expect("valid regex")
+    });
+    let after = AFTER.get_or_init(|| {
+        Regex::new(r"(\d(?:\.\d+)?\s*(?:[a-z]+\s+)?(?:by|x)\s+)([a-z]+)\b").expect("valid regex")
+    });
+    let before =
+        BEFORE.get_or_init(|| Regex::new(r"\b([a-z]+)(\s+(?:by|x)\s+\d)").expect("valid regex"));
+    let swap = |w: &str| numeral(w).map(|n| n.to_string());
+    let t = unit.replace_all(t, |c: &regex::Captures| {
+        swap(&c[1]).map_or_else(|| c[0].to_string(), |n| format!("{n}{}", &c[2]))
+    });
+    let t = before.replace_all(&t, |c: &regex::Captures| {
+        swap(&c[1]).map_or_else(|| c[0].to_string(), |n| format!("{n}{}", &c[2]))
+    });
+    after
+        .replace_all(&t, |c: &regex::Captures| {
+            swap(&c[2]).map_or_else(|| c[0].to_string(), |n| format!("{}{n}", &c[1]))
+        })
+        .into_owned()
+}
+
+/// The number a numeral word says ("five", "twenty"): not the articles and quantifiers that
+/// also count ("a", "several", "a pair").
+fn numeral(w: &str) -> Option<u32> {
+    const NOT_NUMERALS: &[&str] = &[
+        "no", "a", "an", "single", "both", "couple", "pair", "pairs", "several", "handful", "few",
+        "some", "many",
+    ];
+    if NOT_NUMERALS.contains(&w) || w.chars().any(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    number_of(w)
+}
+
 /// The knowledge base's category a misspelt noun means ("a wardobe" is a wardrobe): the one
 /// category with a name of one word one edit away (a letter left out, added, changed, or two
 /// swapped), when the word is long enough to tell ("shell" is no shelf, "broom" no brook) and is

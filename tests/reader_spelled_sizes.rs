@@ -1,0 +1,88 @@
+//! Sizes said in words: "five metres by four", "twelve feet by ten", "four by three meters",
+//! "about ten square metres" are the room's size, never things called "meter" or "foot"; a
+//! length said of a distance ("one metre from the wall") places nothing; a number beside "by"
+//! that is no size ("a table for six by the window") still counts. Prompts of no corpus.
+mod reading;
+use dreamscene::plan::offline::plan_prompt;
+use reading::{keys, number};
+
+fn room_of(prompt: &str) -> ([f64; 2], Vec<String>, Vec<String>) {
+    let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+    let size = p.spec.room.as_ref().expect("a room").size;
+    (
+        [size[0], size[1]],
+        keys(&p.spec),
+        p.understood.unused.clone(),
+    )
+}
+
+#[test]
+fn a_room_size_in_words_is_the_room_and_no_object() {
+    for (prompt, w, d) in [
+        (
+            "a studio apartment five metres by four with a double bed",
+            5.0,
+            4.0,
+        ),
+        ("a bedroom twelve feet by ten with a bed", 3.66, 3.05),
+        ("an office four by three meters with a desk", 4.0, 3.0),
+        (
+            "a hall twenty-four metres by eighteen with a stage",
+            24.0,
+            18.0,
+        ),
+        ("a kitchen six by five metres with an island", 6.0, 5.0),
+    ] {
+        let (room, keys, unused) = room_of(prompt);
+        assert!(
+            (room[0] - w).abs() < 0.05 && (room[1] - d).abs() < 0.05,
+            "{prompt}: {room:?}"
+        );
+        assert!(
+            !keys
+                .iter()
+                .any(|k| k.contains("meter") || k.contains("metre") || k.contains("foot")),
+            "{prompt}: {keys:?}"
+        );
+        assert!(unused.is_empty(), "{prompt}: {unused:?}");
+    }
+}
+
+#[test]
+fn an_area_in_words_sizes_the_floor() {
+    for (prompt, area) in [
+        ("a bathroom of about ten square metres with a bathtub", 10.0),
+        ("a bedroom of roughly twelve square meters with a bed", 12.0),
+        (
+            "an office of approximately twenty square metres with two desks",
+            20.0,
+        ),
+    ] {
+        let (room, keys, unused) = room_of(prompt);
+        assert!((room[0] * room[1] - area).abs() < 0.6, "{prompt}: {room:?}");
+        assert!(
+            !keys.iter().any(|k| k.contains("meter")),
+            "{prompt}: {keys:?}"
+        );
+        assert!(unused.is_empty(), "{prompt}: {unused:?}");
+    }
+}
+
+#[test]
+fn a_distance_places_nothing_and_a_count_beside_by_still_counts() {
+    for prompt in [
+        "two chairs one metre from the wall",
+        "two chairs 1 metre from the wall",
+        "a rug half a metre from the bed",
+    ] {
+        let (_, keys, _) = room_of(prompt);
+        assert!(
+            !keys
+                .iter()
+                .any(|k| k.contains("metre") || k.contains("meter")),
+            "{prompt}: {keys:?}"
+        );
+    }
+    let s = reading::plan("a dining room with a table for six by the window");
+    assert_eq!(number(&s, "dining chair"), 6, "{:?}", keys(&s));
+}
