@@ -10,6 +10,7 @@ pub mod ops;
 pub mod parse;
 pub mod reopt;
 pub mod restyle;
+pub mod riders;
 pub mod state;
 pub mod txn;
 

@@ -189,7 +189,23 @@ pub fn move_object(
             return Err(EditError::Collision(problems.join("; ")));
         }
     }
+    if same_pose(Pose::of(&before), pose) {
+        return Err(if problems.is_empty() {
+            EditError::Bad(format!("{id} already stands there: nothing to move"))
+        } else {
+            EditError::Collision(format!(
+                "{}; no free pose within {NEAREST_REACH} m but where {id} stands",
+                problems.join("; ")
+            ))
+        });
+    }
+    let (carried, riding) = super::riders::carry_riders(state, next, id, Pose::of(&before))?;
+    next = carried;
     let mut footprints = vec![state.box_of(&before), next.box_of(next.object(id)?)];
+    for r in &riding {
+        footprints.push(state.box_of(state.object(r)?));
+        footprints.push(next.box_of(next.object(r)?));
+    }
     notes.insert(
         0,
         format!(
@@ -212,6 +228,12 @@ pub fn move_object(
     ];
     if shift[0].hypot(shift[1]) >= 0.005 {
         notes.insert(1, format!("{id} -> {}", world_words(shift)));
+    }
+    if !riding.is_empty() {
+        notes.push(format!(
+            "{} move with {id}: they rest on it",
+            riding.join(", ")
+        ));
     }
     let broken: Vec<&Relation> = state
         .relations
@@ -262,6 +284,14 @@ pub fn move_object(
     edit.layout = state.layout.as_ref().map(|_| next.current_layout());
     edit.notes = notes;
     Ok((edit, footprints))
+}
+
+/// Whether two poses are the same to a user: under 5 mm apart, under 0.1° turned, the same scale.
+fn same_pose(a: Pose, b: Pose) -> bool {
+    dist2(a.position, b.position) < 0.005
+        && (a.position[2] - b.position[2]).abs() < 0.005
+        && wrap_yaw(a.yaw - b.yaw).abs() < 0.1
+        && (0..3).all(|k| (a.scale[k] - b.scale[k]).abs() < 1e-6)
 }
 
 /// Most a colliding move is shifted to find a free pose (metres).
