@@ -1,7 +1,10 @@
 //! `dreamscene edit move` carries what rests on the moved object: a printer and a lamp on a desk
 //! move and turn with it (a lamp on a book on the desk too), a chair beside it stays, and a rug
 //! carries nothing (the armchair on it stays). A move that would end where the object already
-//! stands is refused in one line and changes nothing, history included.
+//! stands is refused in one line and changes nothing, history included. `edit add` reads where
+//! the description puts the new thing: "a potted plant next to the armchair" adds a plant by the
+//! armchair (not a second armchair), "a laptop on the desk" a laptop on the desk's top, and a
+//! partner the scene lacks is refused in one line.
 #![allow(
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
@@ -28,7 +31,7 @@ fn draft(name: &str) -> PathBuf {
         r#"{"scene_type": "indoor", "scene_text": "a study",
             "room": {"size": [4.0, 3.5, 2.5]},
             "objects": {
-              "desk": {"number": 1, "size": [1.2, 0.6, 0.75], "description": "a desk"},
+              "desk": {"number": 1, "size": [1.6, 0.7, 0.75], "description": "a desk"},
               "printer": {"number": 1, "size": [0.4, 0.35, 0.25], "description": "a printer"},
               "book": {"number": 1, "size": [0.2, 0.15, 0.04], "description": "a book"},
               "table lamp": {"number": 1, "size": [0.25, 0.25, 0.45], "description": "a lamp"},
@@ -42,7 +45,7 @@ fn draft(name: &str) -> PathBuf {
     for o in &mut l.objects {
         let (p, yaw) = match o.id.as_str() {
             "desk1" => ([0.0, 0.3, 0.0], 0.0),
-            "printer1" => ([0.35, 0.3, 0.75], 0.0),
+            "printer1" => ([0.55, 0.3, 0.75], 0.0),
             "book1" => ([-0.3, 0.35, 0.75], 0.0),
             "table lamp1" => ([-0.3, 0.35, 0.79], 0.0),
             "chair1" => ([0.0, -0.35, 0.0], 180.0),
@@ -101,7 +104,7 @@ fn what_rests_on_a_desk_moves_and_turns_with_it_and_a_rug_carries_nothing() {
     assert!(o.status.success(), "{err}");
     let shift = [0.4, 0.2, 0.0];
     for (id, was) in [
-        ("printer1", [0.35, 0.3, 0.75]),
+        ("printer1", [0.55, 0.3, 0.75]),
         ("book1", [-0.3, 0.35, 0.75]),
         ("table lamp1", [-0.3, 0.35, 0.79]),
     ] {
@@ -110,12 +113,12 @@ fn what_rests_on_a_desk_moves_and_turns_with_it_and_a_rug_carries_nothing() {
     }
     assert!(near(pose(&d, "chair1").0, [0.0, -0.35, 0.0]), "{err}");
     assert!(err.contains("rest on it"), "{err}");
-    // a quarter turn about the desk's centre (0.4, 0.5): the printer 0.35 m to its right goes
-    // 0.35 m in front (+y), turned with it
+    // a quarter turn about the desk's centre (0.4, 0.5): the printer 0.55 m to its right goes
+    // 0.55 m in front (+y), turned with it
     let o = edit(&d, &["move", "desk1", "--rotate", "90", "--force"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (p, yaw) = pose(&d, "printer1");
-    assert!(near(p, [0.4, 0.85, 0.75]), "{p:?}");
+    assert!(near(p, [0.4, 1.05, 0.75]), "{p:?}");
     assert!((yaw - 90.0).abs() < 1e-6, "{yaw}");
     // the rug moves alone
     let o = edit(&d, &["move", "rug1", "--by", "-0.3,0", "--force"]);
@@ -150,4 +153,44 @@ fn a_move_that_ends_where_the_object_stands_is_refused_and_changes_nothing() {
     let h = edit(&d, &["history"]);
     let out = String::from_utf8_lossy(&h.stdout).to_string() + &String::from_utf8_lossy(&h.stderr);
     assert_eq!(out.matches("move").count(), 1, "{out}");
+}
+
+fn category_count(dir: &Path, cat: &str) -> usize {
+    read_scene(dir)
+        .unwrap()
+        .objects
+        .iter()
+        .filter(|o| o.category == cat)
+        .count()
+}
+
+#[test]
+fn add_reads_where_the_description_puts_the_new_thing() {
+    let d = draft("add");
+    let o = edit(&d, &["add", "a potted plant next to the armchair"]);
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success(), "{err}");
+    assert_eq!(category_count(&d, "armchair"), 1, "{err}");
+    assert_eq!(category_count(&d, "potted plant"), 1, "{err}");
+    let (plant, _) = pose(&d, "potted plant1");
+    let (arm, _) = pose(&d, "armchair1");
+    let gap = (plant[0] - arm[0]).hypot(plant[1] - arm[1]);
+    assert!(gap < 1.3, "plant {plant:?} armchair {arm:?}");
+    let o = edit(&d, &["add", "a laptop on the desk"]);
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success(), "{err}");
+    assert_eq!(category_count(&d, "desk"), 1, "{err}");
+    let (laptop, _) = pose(&d, "laptop1");
+    assert!((laptop[2] - 0.75).abs() < 0.02, "{laptop:?}");
+    assert!(
+        laptop[0].abs() < 0.8 && (laptop[1] - 0.3).abs() < 0.3,
+        "{laptop:?}"
+    );
+    let before = std::fs::read(d.join("scene.json")).unwrap();
+    let o = edit(&d, &["add", "a floor lamp next to the sofa"]);
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(!o.status.success(), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains("sofa"), "{err}");
+    assert_eq!(std::fs::read(d.join("scene.json")).unwrap(), before);
 }

@@ -347,6 +347,20 @@ pub fn run(a: Args) -> Result<()> {
             if n > MAX_ADD {
                 bail!("add \"{description}\": at most {MAX_ADD} objects at once");
             }
+            // "a green armchair next to the bookshelf": an armchair, next to the scene's one
+            let wanted = dreamscene::edit::wanted::read(&what, &state.id_categories());
+            let anchor = anchor.or(wanted.anchor);
+            let near: Option<(String, Option<dreamscene::plan::spec::RelationKind>)> =
+                match (near, &wanted.partner) {
+                    (Some(id), said) => Some((id, said.as_ref().map(|p| p.1))),
+                    (None, Some((said, kind))) => Some((
+                        resolve_id(&state, said)
+                            .with_context(|| format!("add \"{description}\": where it goes"))?,
+                        Some(*kind),
+                    )),
+                    (None, None) => None,
+                };
+            let what = wanted.what;
             let needs_gpu = state.scene.prior.kind != "shape";
             let c = if needs_gpu { Some(device()?) } else { None };
             let mut k = 1;
@@ -355,7 +369,7 @@ pub fn run(a: Args) -> Result<()> {
                     c.as_ref(),
                     &state,
                     &what,
-                    near.as_deref(),
+                    near.as_ref().map(|(id, said)| (id.as_str(), *said)),
                     anchor,
                     object_iterations,
                     &cfg,

@@ -13,6 +13,7 @@ pub mod restyle;
 pub mod riders;
 pub mod state;
 pub mod txn;
+pub mod wanted;
 
 pub use commit::{apply_edit, undo, Applied, Edit};
 pub use state::SceneState;

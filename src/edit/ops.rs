@@ -555,9 +555,11 @@ pub fn place_new(
     state: &SceneState,
     planned: &Planned,
     near: Option<&str>,
+    said: Option<RelationKind>,
     anchor: Option<Anchor>,
 ) -> Result<(String, Pose, bool)> {
-    // near a partner it forms a group with: the group's relation (a chair at a table faces it)
+    // near a partner it forms a group with: the group's relation (a chair at a table faces it),
+    // unless the request said another ("on the desk")
     let mut relation = RelationKind::Next;
     if let Some(n) = near {
         let partner = state.object(n)?;
@@ -565,6 +567,9 @@ pub fn place_new(
         {
             relation = r;
         }
+    }
+    if let Some(r) = said.filter(|&r| r != RelationKind::Next || relation == RelationKind::Next) {
+        relation = r;
     }
     let id = next_id(state, &planned.category);
     let rels: Vec<Relation> = near

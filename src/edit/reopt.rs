@@ -366,13 +366,15 @@ pub fn add_object(
     ctx: Option<&Context>,
     state: &SceneState,
     text: &str,
-    near: Option<&str>,
+    near: Option<(&str, Option<crate::plan::spec::RelationKind>)>,
     anchor: Option<Anchor>,
     object_iterations: u32,
     cfg: &ReoptConfig,
 ) -> Result<(Edit, Box2)> {
     let planned = plan_object(text)?;
-    let (id, pose, all_ok) = place_new(state, &planned, near, anchor)?;
+    let said = near.and_then(|n| n.1);
+    let near = near.map(|n| n.0);
+    let (id, pose, all_ok) = place_new(state, &planned, near, said, anchor)?;
     // The new instance in a state of its own, for the collision check and the layout.
     let mut next = state.clone();
     let mut rel = object_ply(&planned.category);
@@ -396,7 +398,7 @@ pub fn add_object(
     if let Some(n) = near {
         next.relations.push(crate::plan::spec::Relation {
             subject: id.clone(),
-            relation: crate::plan::spec::RelationKind::Next,
+            relation: said.unwrap_or(crate::plan::spec::RelationKind::Next),
             object: n.to_string(),
         });
     }
