@@ -203,3 +203,32 @@ fn naming_a_laundromats_washers_leaves_its_dryers_unless_taken_away() {
         keys(&s)
     );
 }
+
+#[test]
+fn long_and_tall_scale_an_objects_length_and_height() {
+    let size = |p: &str, c: &str| {
+        let s = plan(p);
+        s.objects
+            .get(c)
+            .unwrap_or_else(|| panic!("{p}: {:?}", keys(&s)))
+            .size
+    };
+    let plain = size("a dining room with a table", "dining table");
+    let long = size("a dining room with a long table", "dining table");
+    assert!(
+        long[0].max(long[1]) > 1.3 * plain[0].max(plain[1]),
+        "{long:?}"
+    );
+    assert_eq!(long[2], plain[2]);
+    let bench = size("a hallway with a bench", "bench");
+    let long_bench = size("a hallway with a long bench", "bench");
+    assert!(long_bench[0] > bench[0], "{long_bench:?}");
+    let plant = size("an office with a potted plant", "potted plant");
+    let tall = size("an office with a tall potted plant", "potted plant");
+    assert!(tall[2] > plant[2] && tall[0] == plant[0], "{tall:?}");
+    // the seats a table is laid for set its length
+    assert_eq!(
+        size("a diner with a long table for eight", "dining table"),
+        size("a diner with a table for eight", "dining table")
+    );
+}

@@ -22,7 +22,7 @@ pub(super) fn mention_sizes(d: &mut Draft) {
         notes,
         ..
     } = d;
-    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+    for (i, (m, cat)) in r.mentions.iter().zip(cats.iter()).enumerate() {
         if m.negated || m.reference {
             continue;
         }
@@ -84,7 +84,14 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                         .filter_map(|a| by(a))
                         .product()
                 };
-                let (l, h) = (said(lang::object_length), said(lang::object_height));
+                // "a long table for eight": the seats it is laid for set its length
+                let laid_for = r.seats_for.iter().any(|&(t, _)| t == i);
+                let l = if laid_for {
+                    1.0
+                } else {
+                    said(lang::object_length)
+                };
+                let h = said(lang::object_height);
                 if f != 1.0 || g != 1.0 || l != 1.0 || h != 1.0 {
                     let longer = if size[0] >= size[1] { 0 } else { 1 };
                     for (k, v) in size.iter_mut().enumerate() {
