@@ -403,3 +403,39 @@ fn outdoor_grounds_have_an_area_a_surround_and_a_roof_parapet() {
     let total = e.env.len() + e.floor.len();
     assert!(total <= EnvOptions::default().cap, "{total} over the cap");
 }
+
+/// A floor material the text says is not there sets nothing: "a rug instead of a carpet" in a
+/// kids room (whose floor is carpet by default) gives it plain boards; "no carpet", "without
+/// tiles" likewise, while the word said plainly still sets the floor.
+#[test]
+fn a_floor_material_said_not_to_be_there_is_not_the_floor() {
+    let c = |t: &str| draft_colours(SceneType::Indoor, t);
+    for t in [
+        "a kids room with a rug instead of a carpet",
+        "a nursery with no carpet",
+        "a kids room without wall-to-wall carpet",
+    ] {
+        assert_ne!(c(t).floor_pattern, Pattern::Speckled, "{t}");
+    }
+    assert_ne!(
+        c("a kitchen with wood rather than tiles").floor_pattern,
+        Pattern::Tiles
+    );
+    assert_eq!(
+        c("a bedroom with a thick carpet").floor_pattern,
+        Pattern::Speckled
+    );
+    assert_eq!(
+        c("a kids room with a rug instead of a carpet").floor_pattern,
+        Pattern::Boards
+    );
+}
+
+/// A balcony is up on a building: a parapet round it, as round a rooftop.
+#[test]
+fn a_balcony_has_a_parapet() {
+    let o = |t: &str| draft_colours(SceneType::Outdoor, t);
+    assert!(o("a small balcony").parapet.is_some());
+    assert!(o("a balcony with two chairs").parapet.is_some());
+    assert!(o("a garden").parapet.is_none());
+}

@@ -45,6 +45,9 @@ pub struct SceneKind {
     pub essential: Vec<String>,
     pub anchors: BTreeMap<String, Anchor>,
     pub relations: Vec<KbRelation>,
+    /// The floor a place of this kind has when the text gives none (an optional seventh field
+    /// of `kb/scenes.txt`, "W D" in metres): a balcony is a narrow strip, whatever its furniture.
+    pub floor: Option<[f64; 2]>,
 }
 
 /// Categories and scene types.
@@ -170,9 +173,22 @@ impl KnowledgeBase {
             }
             let err = |m: &str| format!("scenes.txt line {}: {m}", ln + 1);
             let f: Vec<&str> = line.split('|').map(str::trim).collect();
-            if f.len() != 6 {
-                return Err(err("expected 6 fields"));
+            if f.len() != 6 && f.len() != 7 {
+                return Err(err("expected 6 or 7 fields"));
             }
+            let floor = match f.get(6) {
+                None => None,
+                Some(x) => {
+                    let v: Vec<f64> = x
+                        .split_whitespace()
+                        .filter_map(|n| n.parse().ok())
+                        .collect();
+                    match v[..] {
+                        [w, d] if w > 0.0 && d > 0.0 => Some([w, d]),
+                        _ => return Err(err("floor must be `W D` in metres")),
+                    }
+                }
+            };
             let scene_type = match f[1] {
                 "indoor" => SceneType::Indoor,
                 "outdoor" => SceneType::Outdoor,
@@ -250,6 +266,7 @@ impl KnowledgeBase {
                 essential,
                 anchors,
                 relations,
+                floor,
             });
         }
         Ok(kb)

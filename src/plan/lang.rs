@@ -16,6 +16,7 @@ mod place;
 mod placements;
 mod room;
 mod scene;
+mod setting;
 mod spelling;
 mod words;
 use counts::read_counts;
@@ -25,7 +26,8 @@ use words::not_objects;
 pub use words::{
     alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
     is_outdoor_place, is_seat, is_specialised, is_verb, kind_of_compound, normalise, number,
-    object_footprint, object_scale, part_owners, plural_means_one, plurals, potted, singular,
+    object_footprint, object_height, object_length, object_scale, part_owners, plural_means_one,
+    plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
 
@@ -101,6 +103,8 @@ pub struct Reading {
     pub place_anchor: Option<Anchor>,
     /// "a bookcase full of books": (mention index, what it holds as said, the span of those words).
     pub contents: Vec<(usize, String, usize, usize)>,
+    /// "a picnic spot in a park": spans naming the place the scene is in (no object of it).
+    pub settings: Vec<(usize, usize)>,
 }
 
 fn re(p: &str) -> Regex {
@@ -122,6 +126,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let mut masked: Vec<(usize, usize)> = vec![];
     let dims: Vec<Dims> = find_dims(&t);
     scene::read_scene(kb, &t, &mut r, &mut masked);
+    setting::read_settings(kb, &t, &mut r, &mut masked);
     let raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
     mentions::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
     mentions::place_names(&mut r);

@@ -187,6 +187,13 @@ pub(super) fn object_spans(
     raw
 }
 
+/// Whether a name "X of Y" is said in the plural of its head X ("buckets of flowers" is several
+/// flower buckets, where "a chest of drawers" is one).
+fn plural_head(name: &str) -> bool {
+    name.split_once(" of ")
+        .is_some_and(|(h, _)| !h.contains(' ') && singular(h) != h)
+}
+
 /// A regex over names and what each name means: (category, is plural).
 type NameMatcher = (Regex, BTreeMap<String, (String, bool)>);
 
@@ -196,7 +203,7 @@ pub(super) fn object_matcher(kb: &KnowledgeBase) -> &'static NameMatcher {
     M.get_or_init(|| {
         let mut table = BTreeMap::new();
         for (name, o) in kb.names() {
-            table.insert(name.to_string(), (o.category.clone(), false));
+            table.insert(name.to_string(), (o.category.clone(), plural_head(name)));
         }
         for (name, o) in kb.names() {
             for p in plurals(name) {

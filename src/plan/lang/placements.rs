@@ -13,13 +13,22 @@ pub(super) fn read_placements(r: &mut Reading) {
             .map(|i| i + 1)
             .unwrap_or(0)
     };
-    let subject_before = |ms: &[Mention], pos: usize| -> Option<usize> {
-        let cs = clause_start(pos);
+    let last_in = |ms: &[Mention], from: usize, to: usize| -> Option<usize> {
         ms.iter()
             .enumerate()
             .rev()
-            .find(|(_, m)| m.end <= pos && m.start >= cs && !m.negated)
+            .find(|(_, m)| m.end <= to && m.start >= from && !m.negated)
             .map(|(i, _)| i)
+    };
+    // "Where do I put the piano? By the window, next to the bookshelf.": an answer that names
+    // nothing before its placement phrase is said of the thing its question asked about
+    let asked_about = |ms: &[Mention], cs: usize| -> Option<usize> {
+        let q = cs.checked_sub(1).filter(|&q| t[q..].starts_with('?'))?;
+        last_in(ms, clause_start(q), q)
+    };
+    let subject_before = |ms: &[Mention], pos: usize| -> Option<usize> {
+        let cs = clause_start(pos);
+        last_in(ms, cs, pos).or_else(|| asked_about(ms, cs))
     };
     let named_after = |ms: &[Mention], pos: usize| -> Option<usize> {
         ms.iter()

@@ -68,6 +68,10 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
         } else {
             continue;
         };
+        // "a garden with a treehouse": a word of an object's own name is that object's
+        if mentions.iter().any(|m| m.start <= pos && pos < m.end) && scene_start != Some(pos) {
+            continue;
+        }
         // The noun this word describes: the next mention or scene name before punctuation.
         let rest: Vec<&(usize, &str)> = words[k + 1..]
             .iter()

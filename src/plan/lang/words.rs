@@ -152,11 +152,13 @@ pub fn is_outdoor_place(w: &str) -> bool {
 }
 
 /// A word the reader knows as something other than an object: a part of the room, an area,
-/// an arrangement, people, a room size word or a common English word of requests.
+/// an arrangement, people, a room size word, the weather or mood of the scene or a common
+/// English word of requests.
 pub fn is_known_word(w: &str) -> bool {
     let sg = singular(w);
     [
         "not_objects",
+        "weather",
         "room_tiny",
         "room_small",
         "room_large",
@@ -176,6 +178,18 @@ pub fn object_scale(w: &str) -> Option<f64> {
 /// table" is narrower, not lower: `kb/words.txt`, object_footprint), if it is one.
 pub fn object_footprint(w: &str) -> Option<f64> {
     factor("object_footprint", w)
+}
+
+/// The factor a length word scales an object's longer side by ("a long table" 1.5:
+/// `kb/words.txt`, object_length), if it is one.
+pub fn object_length(w: &str) -> Option<f64> {
+    factor("object_length", w)
+}
+
+/// The factor a height word scales an object's height by ("a tall bookcase" 1.3, "a low
+/// table" 0.75: `kb/words.txt`, object_height), if it is one.
+pub fn object_height(w: &str) -> Option<f64> {
+    factor("object_height", w)
 }
 
 pub(super) fn factor(list: &str, w: &str) -> Option<f64> {

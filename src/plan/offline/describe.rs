@@ -240,6 +240,12 @@ pub(super) fn understood(
         inferred,
         ..
     } = d;
+    // "a dentist waiting room": the words naming the place's finish are used (its furniture is
+    // described in that finish)
+    let mut used = styles.to_vec();
+    if let Some(f) = place_finish(scene.map(|s| s.name.as_str()), &r.text) {
+        used.extend(f.words.iter().map(|w| w.to_string()));
+    }
     crate::plan::understood::Understood {
         objects: spec
             .objects
@@ -256,6 +262,6 @@ pub(super) fn understood(
                 ),
             })
             .collect(),
-        unused: crate::plan::understood::unused_words(r, styles),
+        unused: crate::plan::understood::unused_words(r, &used),
     }
 }

@@ -22,7 +22,7 @@ pub(super) fn mention_sizes(d: &mut Draft) {
         notes,
         ..
     } = d;
-    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+    for (i, (m, cat)) in r.mentions.iter().zip(cats.iter()).enumerate() {
         if m.negated || m.reference {
             continue;
         }
@@ -76,9 +76,30 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                     .filter(|a| !described.split(' ').any(|w| w == a.as_str()))
                     .filter_map(|a| lang::object_footprint(a))
                     .product();
-                if f != 1.0 || g != 1.0 {
+                // "a long table", "a tall bookcase": its longer side, its height
+                let said = |by: fn(&str) -> Option<f64>| -> f64 {
+                    m.adjectives
+                        .iter()
+                        .filter(|a| !described.split(' ').any(|w| w == a.as_str()))
+                        .filter_map(|a| by(a))
+                        .product()
+                };
+                // "a long table for eight": the seats it is laid for set its length
+                let laid_for = r.seats_for.iter().any(|&(t, _)| t == i);
+                let l = if laid_for {
+                    1.0
+                } else {
+                    said(lang::object_length)
+                };
+                let h = said(lang::object_height);
+                if f != 1.0 || g != 1.0 || l != 1.0 || h != 1.0 {
+                    let longer = if size[0] >= size[1] { 0 } else { 1 };
                     for (k, v) in size.iter_mut().enumerate() {
-                        let s = if k < 2 { f * g } else { f };
+                        let s = match k {
+                            2 => f * h,
+                            _ if k == longer => f * g * l,
+                            _ => f * g,
+                        };
                         *v = (*v * s * 100.0).round() / 100.0;
                     }
                     sizes.insert(cat.clone(), size);
@@ -123,7 +144,9 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         }
         None => {
             let mut room = room_for(spec, scene_type);
-            if r.scale < 1.0 {
+            if let Some(floor) = scene.and_then(|s| s.floor) {
+                room.size = kind_floor(spec, named, floor, r.scale, room.size);
+            } else if r.scale < 1.0 {
                 // what the text names and what the place cannot do without (its bed) set it;
                 // with nothing named, the scene's furniture
                 let essential = scene
@@ -225,6 +248,43 @@ fn small_room(
     };
     let [w, d] = sides_within(area, min_side);
     [w, d, full[2]]
+}
+
+/// The floor of a place whose kind fixes it (`kb/scenes.txt`, seventh field: a balcony is
+/// 3.6 x 1.8 m): scaled up by "large" (never down: the kind is already small), grown to what the
+/// named objects need in use, its longest side never shorter than the longest of them with a
+/// walkway. The defaults are then trimmed to fit by `capacity::fit`.
+fn kind_floor(
+    spec: &SceneSpec,
+    named: &BTreeSet<String>,
+    floor: [f64; 2],
+    scale: f64,
+    full: [f64; 3],
+) -> [f64; 3] {
+    let s = scale.max(1.0).sqrt();
+    let [mut w, mut d] = floor.map(|v| v * s);
+    let margin = crate::plan::capacity::USE_MARGIN;
+    let named_inst: Vec<_> = spec
+        .instances()
+        .into_iter()
+        .filter(|i| named.contains(&i.category) && i.size[2] >= 0.05)
+        .collect();
+    let need: f64 = named_inst
+        .iter()
+        .map(|i| (i.size[0] + margin) * (i.size[1] + margin))
+        .sum::<f64>()
+        / 0.5;
+    if need > w * d {
+        let k = (need / (w * d)).sqrt();
+        (w, d) = (w * k, d * k);
+    }
+    let longest = named_inst
+        .iter()
+        .map(|i| i.size[0].max(i.size[1]))
+        .fold(0.0, f64::max);
+    w = w.max(longest + 0.4);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    [r(w), r(d), full[2]]
 }
 
 /// Sides of a floor of `area` (a little longer than deep), each rounded up to the 10 cm and

@@ -334,9 +334,15 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         }
         (mat, col, ton)
     };
+    // "a rug instead of a carpet", "no tiles": a surface word said not to be there sets nothing
+    let describing = |s: &str| material(s).is_some() || colour(s).is_some() || tone(s).is_some();
+    let not = |i: usize| super::said_not::negated(&w, i, describing);
     let mut explicit: Vec<Target> = vec![];
     // Surface nouns first: they are explicit about which surface they mean.
     for (i, s) in w.iter().enumerate() {
+        if not(i) {
+            continue;
+        }
         if let Some(&(_, target)) = NOUNS.iter().find(|n| n.0 == s) {
             let (mat, col, ton) = modifiers(i);
             if mat.is_some() || col.is_some() || ton.is_some() {
@@ -346,12 +352,23 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         }
     }
     for (i, s) in w.iter().enumerate() {
-        if let Some(mat) = material(s)
-            .filter(|m| m.alone && !explicit.contains(&m.target) && !in_object_name(&w, i))
-        {
+        if let Some(mat) = material(s).filter(|m| {
+            m.alone && !explicit.contains(&m.target) && !in_object_name(&w, i) && !not(i)
+        }) {
             let (_, col, ton) = modifiers(i);
             apply(&mut c, mat.target, Some(mat), col, ton);
         }
+    }
+    // "a kids room with a rug instead of a carpet": an indoor floor the text says is not of the
+    // kind's own material is plain boards
+    let denied = w
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| not(i) && !in_object_name(&w, i))
+        .filter_map(|(_, s)| material(s))
+        .any(|m| m.target == Floor && m.pattern == c.floor_pattern);
+    if scene_type == SceneType::Indoor && denied && !explicit.contains(&Floor) {
+        (c.floor, c.floor_pattern) = (WOOD, Boards);
     }
     // "a beach with white sand": the one ground all round follows the text
     if one_ground {

@@ -47,8 +47,17 @@ const GROUNDS: &[KindGround] = &[
     ("pirate ship deck", DECK, Boards, SEA, Mottled),
 ];
 
-/// Words that put a scene on a roof: paving inside a parapet, roofs around.
-const ROOF_WORDS: &[&str] = &["rooftop", "roof", "roof-top", "roofs", "rooftops"];
+/// Words that put a scene up on a building, on a roof or a balcony: paving inside a parapet,
+/// roofs around.
+const ROOF_WORDS: &[&str] = &[
+    "rooftop",
+    "roof",
+    "roof-top",
+    "roofs",
+    "rooftops",
+    "balcony",
+    "balconies",
+];
 
 /// Height of a rooftop's parapet (metres): a guard-rail height.
 pub const PARAPET_HEIGHT: f64 = 1.05;

@@ -14,6 +14,7 @@ mod colours;
 mod grounds;
 mod light;
 mod openings;
+mod said_not;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
 pub use grounds::PARAPET_HEIGHT;

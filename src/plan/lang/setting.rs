@@ -1,0 +1,65 @@
+//! The place a scene is in, said after a locative ("a picnic spot in a park", "a tent at the
+//! edge of a forest", "a café on a rooftop"): a place word there (`kb/words.txt`: outdoors and
+//! indoors, or a one-word scene name or synonym of the knowledge base) names where the scene is,
+//! never an object of it. Its words are read (the reader uses them) and masked, so that the place
+//! becomes no unknown box. A word that is also an object's name ("a lamp in a tent") stays the
+//! object.
+use super::objects::inside;
+use super::{is_adjective, is_function_word, word_list, words_in, Reading};
+use crate::plan::kb::KnowledgeBase;
+
+/// Prepositions that put the scene inside or at a place.
+const LOCATIVES: &[&str] = &[
+    "in", "at", "inside", "within", "on", "outside", "by", "near",
+];
+const DETERMINERS: &[&str] = &["a", "an", "the", "some", "my", "our", "your", "their"];
+
+/// Whether `w` names a place rather than a thing.
+fn names_place(kb: &KnowledgeBase, w: &str) -> bool {
+    if kb.object(w).is_some() || kb.names().any(|(n, _)| n == w) {
+        return false;
+    }
+    word_list("outdoors").contains(&w)
+        || word_list("indoors").contains(&w)
+        || kb
+            .scenes
+            .iter()
+            .any(|s| s.name == w || s.synonyms.iter().any(|x| x == w))
+}
+
+/// Spans "in a park", "at the beach" of `t` outside `masked`: the locative, its determiner, the
+/// words describing the place and the place word.
+pub(super) fn read_settings(
+    kb: &KnowledgeBase,
+    t: &str,
+    r: &mut Reading,
+    masked: &mut Vec<(usize, usize)>,
+) {
+    let all = words_in(t, 0, t.len());
+    for k in 0..all.len().saturating_sub(2) {
+        let (start, w) = all[k];
+        if !LOCATIVES.contains(&w) || !DETERMINERS.contains(&all[k + 1].1) {
+            continue;
+        }
+        // describing words ("a quiet city park") up to the head
+        let mut j = k + 2;
+        while j + 1 < all.len()
+            && is_adjective(all[j + 1].1)
+            && !is_function_word(all[j + 1].1)
+            && !inside(all[j + 1].0, masked)
+            && j < k + 5
+        {
+            j += 1;
+        }
+        // the head is the last describing word before a function word or the end
+        let (pos, head) = all[j];
+        let ends = all
+            .get(j + 1)
+            .is_none_or(|x| is_function_word(x.1) || !is_adjective(x.1));
+        if ends && !inside(pos, masked) && names_place(kb, head) {
+            let span = (start, pos + head.len());
+            r.settings.push(span);
+            masked.push(span);
+        }
+    }
+}
