@@ -9,6 +9,9 @@
 //!   blocker close to the lens, with a mirror, painting, TV or whiteboard seen edge-on, and near
 //!   copies and repeats of an earlier view (the same things the same way, little new);
 //!   "clean" views have none of these;
+//! - masses at the frame's foot ([`foot_mass_share`]): an upright object cut by the frame's
+//!   bottom edge covering more than [`MASS_SHARE`] of it before the room (an armchair's back at
+//!   the lens), and how many of them and of the back views come past the fourth view;
 //! - close-ups of a wall ([`looks_at_wall`]): one piece against a near wall, not a view into
 //!   the room (counted apart from the poor views).
 //!
@@ -18,8 +21,9 @@
 //! (defaults: /work/shared/prompts/fidelity_dev.json, 30 prompts, 8 views of 512²; then the
 //! small rooms of [`SMALL_ROOMS`]). With `DREAMSCENE_VIEWS=1` each view's figures are printed.
 use dreamscene::camera::scene::{
-    alike, bare_wall_share, blocker_of, blocker_share, explore_path, frame_share, grazing_share,
-    heading, looks_at_wall, new_share, render_views, view_faults, view_stats, SceneBox,
+    alike, bare_wall_share, blocker_of, blocker_share, explore_path, foot_mass_share, frame_share,
+    grazing_share, heading, looks_at_wall, new_share, render_views, view_faults, view_stats,
+    SceneBox, MASS_SHARE,
 };
 use dreamscene::camera::Camera;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -126,6 +130,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
     let [mut bare, mut blocker, mut grazing, mut copy, mut repeat, mut clean] = [0usize; 6];
     let mut fine = 0usize;
     let mut close = 0usize;
+    let (mut mass, mut late_mass, mut late_back) = (0usize, 0usize, 0usize);
     for prompt in prompts {
         let spec = match plan_prompt(prompt) {
             Ok(p) => p.spec,
@@ -159,6 +164,18 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
             .unwrap_or(0);
         let b = subjects.iter().filter(|s| s.1 < -0.5).count();
         let f = cams.iter().filter(|c| nearest(&scene, c) < 1.2).count();
+        let masses: Vec<bool> = cams
+            .iter()
+            .map(|c| foot_mass_share(&scene, c) > MASS_SHARE)
+            .collect();
+        let m = masses.iter().filter(|m| **m).count();
+        let lm = masses.iter().skip(4).filter(|m| **m).count();
+        let lb = cams
+            .iter()
+            .skip(4)
+            .filter_map(|c| subject(&scene, c))
+            .filter(|s| s.1 < -0.5)
+            .count();
         let iv: usize = stats.iter().map(|s| s.in_view).sum();
         let count = |p: fn(&dreamscene::camera::scene::ViewFaults) -> bool| {
             faults.iter().filter(|v| p(v)).count()
@@ -172,7 +189,7 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
             count(|v| v.clean()),
         ];
         println!(
-            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} repeat {} clean {} close-up {cl} | {} objects: {:.50}",
+            "{g}/{} (path {go}/{}) repeats {rep} back {b} fore {f} in view {:.1} | bare {} blocker {} edge-on {} copy {} repeat {} clean {} close-up {cl} mass {m} (late {lm}, late back {lb}) | {} objects: {:.50}",
             cams.len(),
             old.len(),
             iv as f64 / cams.len().max(1) as f64,
@@ -220,9 +237,11 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
                 let by = blocker_of(&scene, c, &shares)
                     .map_or(String::new(), |b| format!(" ({})", scene.objects[b].id));
                 println!(
-                    "  view {}: in view {} largest {:.2} covered {:.2} bare wall {:.2} close-up {} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2}{least} {:?} at [{:.1}, {:.1}]",
+                    "  view {}: in view {} mass {:.2} back {:.2} largest {:.2} covered {:.2} bare wall {:.2} close-up {} nearest {:.2} blocker {:.2}{by} edge-on {:.2} copy {copy:.2}{least} {:?} at [{:.1}, {:.1}]",
                     k + 1,
                     s.in_view,
+                    foot_mass_share(&scene, c),
+                    subject(&scene, c).map_or(0.0, |s| s.1),
                     s.largest,
                     s.covered,
                     bare_wall_share(&scene, c),
@@ -251,6 +270,9 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
         clean += fl[5];
         fine += count(|v| !v.poor());
         close += cl;
+        mass += m;
+        late_mass += lm;
+        late_back += lb;
     }
     println!(
         "framing: {good}/{total} views framed well ({:.1}%); the exploring path: {good_old}/{total} ({:.1}%)",
@@ -267,6 +289,9 @@ fn figure(name: &str, prompts: &[String], views: usize) -> anyhow::Result<()> {
     );
     println!(
         "close-ups of a wall (a piece against a near wall, not counted poor): {close}/{total}"
+    );
+    println!(
+        "masses at the frame's foot: {mass}/{total} (past the fourth view {late_mass}); back views past the fourth {late_back}"
     );
     Ok(())
 }

@@ -20,7 +20,8 @@
 //! (a near copy costs more than framing well gains). Past the first few views only clean views
 //! that frame well are taken: a small room gets fewer pictures rather than near copies, repeats
 //! of a corner already shown (`repeat.rs`), views past a wardrobe at the lens or close-ups of a
-//! bed. Host-only.
+//! bed; and among them first those that see their subject from the front with no mass at the
+//! frame's foot (`fore.rs`: an armchair's back across a hotel lobby's view). Host-only.
 use super::faults::{blocker_share, footprint_distance, grazing_share, BARE_COVER};
 use super::repeat::{backdrop, sparse};
 use super::views::FLAT;
@@ -224,6 +225,9 @@ struct Candidate {
     /// frame's bottom edge cuts ([`fore::cut_at_foot_objects`]): the backs of the chairs at a
     /// dining table across the bottom of a view of the sideboard.
     cut: f64,
+    /// The share of the frame of a mass at its foot ([`fore::foot_mass`]): an armchair's back
+    /// or a cart cut by the frame's bottom edge before the room.
+    mass: f64,
     /// What the view is named by, for telling repeats ([`backdrop`]).
     backdrop: Option<usize>,
     /// The objects in frame (index, share of the frame it covers), in index order, and the sum
@@ -368,6 +372,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 .into_iter()
                 .map(|k| shares[k])
                 .fold(0.0, f64::max);
+            let mass = fore::foot_mass(scene, &cam, &boxes, &dists);
             let total = shares.iter().sum();
             let shown: Vec<bool> = scene
                 .objects
@@ -384,6 +389,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 backdrop,
                 pillar,
                 cut,
+                mass,
                 pieces,
                 piece: piece_share,
                 blocker,
@@ -443,6 +449,7 @@ const PILLAR_FOOT: f64 = 0.75;
 const PILLAR_BEHIND: f64 = 1.0;
 
 mod fore;
+pub use fore::{foot_mass_share, MASS_SHARE};
 mod pick;
 mod pieces;
 mod sweep;

@@ -25,7 +25,7 @@ mod repeat;
 mod views;
 mod wall;
 
-pub use choose::{eye_height, render_views, view_fov};
+pub use choose::{eye_height, foot_mass_share, render_views, view_fov, MASS_SHARE};
 pub use faults::{
     alike, blocker_of, blocker_share, grazing_share, is_panel, looks_at_wall, view_faults,
     ViewFaults, BARE_COVER, BARE_WALL, CLOSE_DEPTH, CLOSE_WALL, COPY,

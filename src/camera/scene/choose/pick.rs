@@ -6,7 +6,7 @@ use super::super::repeat::{repeats, Look};
 use super::super::views::MAX_OBJECT_SHARE;
 use super::super::wall::bare_wall_share;
 use super::super::{kind, SceneBox};
-use super::{focal, foreground, Candidate};
+use super::{focal, foreground, Candidate, MASS_SHARE};
 use crate::camera::scene::ViewStats;
 use crate::camera::Camera;
 
@@ -42,7 +42,9 @@ const FOCAL_VIEWS: f64 = 0.375;
 /// well and are no near copy of a view taken, and past this many (a row of the contact sheet)
 /// only clean ones ([`ViewFaults`](super::super::ViewFaults): not mostly bare, no blocker at
 /// the lens, no panel edge-on, no repeat of a view taken (`repeat.rs`: the door and bookcase
-/// corner of a living room seen again from a step aside), and no pillar in mid-frame). A room
+/// corner of a living room seen again from a step aside) and no pillar in mid-frame; among
+/// those, views seeing their subject from behind, with a mass at the frame's foot (an
+/// armchair's back), standing close or with chair backs cut by its foot come last. A room
 /// that cannot give the views asked for (a box room with one spot to stand on, a bedroom that
 /// is mostly bed, a living room of one sofa group) gets fewer distinct pictures rather than
 /// copies, repeats and close-ups. Asked for this many or fewer, a room gets them all.
@@ -83,6 +85,12 @@ fn wall_penalty(wall: f64) -> f64 {
     WALL_PER_SHARE * (wall - WALL_FREE).max(0.0) + if wall > BARE_WALL { POOR } else { 0.0 }
 }
 
+/// True when a view sees its subject from behind (its facing cosine below −0.5, as the framing
+/// figure counts back views).
+fn is_back(stats: &ViewStats) -> bool {
+    stats.facing < -0.5
+}
+
 /// What `c` is, for telling repeats (`repeat.rs`).
 fn look(c: &Candidate) -> Look<'_> {
     Look {
@@ -106,6 +114,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
         })
         .collect();
     let fg = foreground(scene);
+    let close = super::fore::close(scene);
     let diagonal = scene.room[0].hypot(scene.room[1]);
     let focal = focal(scene);
     // Views that look the way the room looks: the focal object in frame, seen from its front.
@@ -124,7 +133,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
         let strict = count > ALWAYS && taken.len() >= ALWAYS;
         // Each candidate's score before the bare wall it shows (costly to measure, so measured
         // only for the candidates that could still win, best first).
-        let mut scores: Vec<(usize, f64)> = vec![];
+        let mut scores: Vec<(usize, f64, usize)> = vec![];
         for (i, c) in cands.iter().enumerate() {
             if taken.contains(&i) {
                 continue;
@@ -192,9 +201,9 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
             // same way) and a pillar in mid-frame are faults a person sees in a set of views.
             let repeat = taken.iter().any(|&j| repeats(look(c), look(&cands[j])));
             let pillar = flag(c.pillar > 0.0);
-            if (count > ALWAYS && !taken.is_empty() && (copy > 0.0 || good == 0.0))
-                || (strict && (bare + blocker + grazing + pillar > 0.0 || repeat))
-            {
+            let refused = (count > ALWAYS && !taken.is_empty() && (copy > 0.0 || good == 0.0))
+                || (strict && (bare + blocker + grazing + pillar > 0.0 || repeat));
+            if refused {
                 continue;
             }
             let largest = c.piece;
@@ -229,21 +238,36 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 } else {
                     0.0
                 };
-            scores.push((i, score));
+            // Past [`ALWAYS`] a view seeing its subject from behind or with a mass at its foot
+            // (`fore.rs`) is taken only where no view without them is left, one standing close
+            // to what it frames only after those, and one with chair backs cut by the frame's
+            // foot last.
+            let tier = if strict {
+                let soft = is_back(&c.stats) || c.mass > MASS_SHARE;
+                4 * usize::from(c.cut > 0.0) + 2 * usize::from(c.near < close) + usize::from(soft)
+            } else {
+                0
+            };
+            scores.push((i, score, tier));
         }
         scores.sort_by(|a, b| b.1.total_cmp(&a.1));
         let mut best: Option<(usize, f64)> = None;
-        for (i, score) in scores {
-            if best.is_some_and(|(_, s)| s >= score) {
+        for tier in 0..8 {
+            for &(i, score, _) in scores.iter().filter(|s| s.2 == tier) {
+                if best.is_some_and(|(_, s)| s >= score) {
+                    break;
+                }
+                let wall = *walls[i].get_or_insert_with(|| bare_wall_share(scene, &cands[i].cam));
+                if strict && wall > BARE_WALL {
+                    continue;
+                }
+                let score = score - wall_penalty(wall);
+                if best.is_none_or(|(_, s)| score > s) {
+                    best = Some((i, score));
+                }
+            }
+            if best.is_some() {
                 break;
-            }
-            let wall = *walls[i].get_or_insert_with(|| bare_wall_share(scene, &cands[i].cam));
-            if strict && wall > BARE_WALL {
-                continue;
-            }
-            let score = score - wall_penalty(wall);
-            if best.is_none_or(|(_, s)| score > s) {
-                best = Some((i, score));
             }
         }
         let Some((i, _)) = best else { break };
