@@ -408,3 +408,29 @@ fn an_out_that_is_a_file_is_refused_in_one_line_and_kept() {
     }
     let _ = std::fs::remove_dir_all(&root);
 }
+
+#[test]
+fn an_export_whose_extension_and_format_disagree_is_refused_and_a_replaced_file_is_named() {
+    let (root, out, _) = drafted("ext");
+    let ply = out.join("scene.ply").to_string_lossy().to_string();
+    let x = root.join("x.spz");
+    let xs = x.to_string_lossy().to_string();
+    let o = run(&["export", &ply, "--format", "ply", "--out", &xs], &[]);
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused: {err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains("spz") && err.contains("ply"), "{err}");
+    assert!(!x.exists(), "nothing written");
+    // the first export says nothing of replacing; the second names the file it replaces
+    let o = run(&["export", &ply, "--out", &xs], &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("replaced"), "{}", stderr(&o));
+    let o = run(&["export", &ply, "--format", "spz", "--out", &xs], &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&xs) && stderr(&o).contains("replaced"),
+        "{}",
+        stderr(&o)
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -102,7 +102,25 @@ pub fn run(a: Args) -> Result<()> {
             a.out.display()
         );
     };
+    if let (Some(asked), Some(named)) = (a.format, format_of(&a.out)) {
+        if asked != named {
+            bail!(
+                "{}: its extension names {} but --format says {}: give an --out ending .{} or leave --format out",
+                a.out.display(),
+                Format::from(named).name(),
+                Format::from(asked).name(),
+                Format::from(asked).name()
+            );
+        }
+    }
     let format = Format::from(format);
+    if a.out.is_dir() {
+        bail!(
+            "{} is a folder: give a file for the export",
+            a.out.display()
+        );
+    }
+    super::say_if_replacing(&a.out);
     if a.compat && format != Format::Ply {
         bail!("--compat applies to --format ply only");
     }

@@ -136,6 +136,14 @@ pub fn check_writable(file: &Path) -> Result<()> {
     check_writable_dir(&dir).with_context(|| format!("cannot write {}", file.display()))
 }
 
+/// Says in one line that the output file `file` already exists and is being replaced (an
+/// export or a video written again over the last one), so nothing is overwritten unsaid.
+pub fn say_if_replacing(file: &Path) {
+    if file.is_file() {
+        eprintln!("note: {} exists: it is replaced", file.display());
+    }
+}
+
 /// Creates the folder `dir` (and its parents); a path that is a file is refused in one line
 /// that says so, not with the system's "File exists".
 pub fn create_dir(dir: &Path) -> Result<()> {
