@@ -59,7 +59,8 @@ pub fn draft_variants(
         let rel = variant_ply(&o.category, v);
         let path = out.join(&rel);
         let usable = |p: &Path| read_ply(p).is_ok_and(|g| g.check().is_ok() && !g.is_empty());
-        if !built.contains(&rel) && !(keep && path.is_file() && usable(&path)) {
+        let kept = keep && path.is_file() && usable(&path);
+        if !kept && !built.contains(&rel) {
             let size = sizes.get(&o.category).copied().unwrap_or([1.0, 1.0, 1.0]);
             let description = spec
                 .objects

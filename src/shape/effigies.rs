@@ -91,7 +91,7 @@ pub fn scarecrow(b: &mut Builder) {
 /// A statue: a plinth with a moulded base and cap, and on it a standing figure with one arm
 /// raised, every part in the stone's colour; its variant 1 stands at rest, arms at its sides.
 pub fn statue(b: &mut Builder) {
-    figure_on_plinth(b, b.variant % 2 == 0);
+    figure_on_plinth(b, b.variant.is_multiple_of(2));
 }
 
 /// A standing statue at rest: the figure of [`statue`] with both arms hanging at its sides
