@@ -381,3 +381,71 @@ fn a_standing_desk_stands_on_two_columns_with_no_drawers() {
         assert!(x1 - x0 > 0.6 * w, "{size:?}: columns not at the ends");
     }
 }
+
+#[test]
+fn a_beach_towel_is_striped_and_a_picnic_blanket_checked_not_a_bordered_rug() {
+    for (name, arch) in [
+        ("beach towel", "striped_towel"),
+        ("picnic blanket", "checked_blanket"),
+        ("play mat", "tiled_mat"),
+    ] {
+        assert_eq!(archetype_of(name), arch, "{name}");
+        assert_ne!(archetype_of(name), archetype_of("rug"), "{name}");
+    }
+    for size in sized("beach towel", [1.3, 0.8, 1.0]) {
+        let s = at("beach towel", size);
+        // Stripes across the length: the main colour comes back again and again along y.
+        let n = common::samples::runs(&of(&s, Role::Body), 1, 0.02);
+        assert!(n >= 3, "{size:?}: {n} stripes of its colour");
+        assert_eq!(common::samples::runs(&of(&s, Role::Body), 0, 0.02), 1);
+    }
+    for size in sized("picnic blanket", [1.3, 0.8, 1.0]) {
+        let s = at("picnic blanket", size);
+        // A check: its colour's squares repeat along both sides.
+        let body = of(&s, Role::Body);
+        for axis in [0, 1] {
+            let n = common::samples::runs(&body, axis, 0.02);
+            assert!(n >= 3, "{size:?}: {n} squares along axis {axis}");
+        }
+        assert!(
+            !of(&s, Role::Canvas).is_empty(),
+            "{size:?}: no white squares"
+        );
+    }
+    for size in sized("play mat", [1.3, 0.8, 1.0]) {
+        let s = at("play mat", size);
+        let tiles = of(&s, Role::Books);
+        assert_eq!(tiles.len(), s.len(), "{size:?}: something else than tiles");
+        assert!(
+            common::samples::runs(&tiles, 0, 0.004) >= 3,
+            "{size:?}: one tile"
+        );
+    }
+}
+
+#[test]
+fn a_paper_lantern_is_a_round_ribbed_globe_not_a_lamp_with_a_shade() {
+    assert_eq!(archetype_of("paper lantern"), "paper_lantern");
+    for size in sized("paper lantern", [1.2, 1.2, 1.3]) {
+        let s = at("paper lantern", size);
+        let (w, h) = (size[0].min(size[1]), size[2]);
+        let globe = of(&s, Role::Shade);
+        let (x0, x1) = range(&globe, 0);
+        let (z0, z1) = range(&globe, 2);
+        assert!(
+            x1 - x0 > 0.8 * w.min(0.9 * h),
+            "{size:?}: globe {:.2} wide",
+            x1 - x0
+        );
+        assert!(
+            ((x1 - x0) / (z1 - z0) - 1.0).abs() < 0.15,
+            "{size:?}: not round"
+        );
+        assert!(z1 > 0.95 * h, "{size:?}: the globe is not on top");
+        let ribs = of(&s, Role::Metal);
+        assert!(
+            common::samples::runs(&ribs, 2, 0.004) >= 5,
+            "{size:?}: no ribs"
+        );
+    }
+}

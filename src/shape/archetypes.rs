@@ -101,6 +101,7 @@ use super::sundries as su;
 use super::surgical as sg;
 use super::tanks as tk;
 use super::taps as tp;
+use super::textiles as tx;
 use super::things as t;
 use super::training as tr;
 use super::transit as tt;
@@ -574,6 +575,10 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("stepping_stones", rw::stepping_stones, [Stone], [Stone => [0.58, 0.56, 0.52]]),
     arch!("cooler", rw::cooler, [Body], [Body => [0.16, 0.36, 0.70], Top => WHITE, Interior => [0.10, 0.10, 0.12], Canvas => WHITE, Handle => [0.20, 0.20, 0.22]]),
     arch!("standing_desk", rw::standing_desk, [Top], [Top => [0.80, 0.66, 0.46], Metal => [0.15, 0.15, 0.16], Handle => [0.12, 0.12, 0.13]]),
+    arch!("striped_towel", tx::striped_towel, [Body], [Body => [0.12, 0.42, 0.78], Canvas => WHITE, Cushion => [0.95, 0.72, 0.15]]),
+    arch!("checked_blanket", tx::checked_blanket, [Body], [Body => [0.78, 0.12, 0.12], Canvas => WHITE, Cushion => [0.90, 0.60, 0.58]]),
+    arch!("tiled_mat", tx::tiled_mat, [], []),
+    arch!("paper_lantern", tx::paper_lantern, [Shade], [Shade => [0.98, 0.95, 0.86], Frame => [0.12, 0.12, 0.13], Metal => [0.85, 0.82, 0.74]]),
     arch!("potted_palm", pt::potted_palm, [Foliage], [Foliage => [0.26, 0.52, 0.20], Trunk => [0.42, 0.48, 0.26], Pot => [0.86, 0.85, 0.82]]),
     arch!("standing_statue", ef::standing_statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.86, 0.85, 0.82]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),

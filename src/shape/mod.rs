@@ -121,6 +121,7 @@ mod sundries;
 mod surgical;
 mod tanks;
 mod taps;
+mod textiles;
 mod things;
 mod training;
 mod transit;
