@@ -348,7 +348,7 @@ fn stepping_stones_are_separate_stones_along_the_path() {
 }
 
 #[test]
-fn a_cooler_has_a_lid_and_end_handles_and_no_straps() {
+fn a_cooler_has_a_lid_under_a_swing_handle_and_no_straps() {
     assert_eq!(archetype_of("cooler"), "cooler");
     assert_eq!(archetype_of("ice chest"), "cooler");
     for size in sized("cooler", [1.4, 1.2, 1.0]) {
@@ -356,13 +356,17 @@ fn a_cooler_has_a_lid_and_end_handles_and_no_straps() {
         let (hw, h) = (size[0] / 2.0, size[2]);
         assert!(of(&s, Role::Metal).is_empty(), "{size:?}: metal straps");
         let lid = of(&s, Role::Top);
-        assert!(range(&lid, 2).0 > 0.75 * h, "{size:?}: lid low");
+        assert!(range(&lid, 2).0 > 0.55 * h, "{size:?}: lid low");
+        // A swing handle from end to end, arching over the lid.
         let handles = of(&s, Role::Handle);
         let (x0, x1) = range(&handles, 0);
         assert!(
             x0 < -0.9 * hw && x1 > 0.9 * hw,
             "{size:?}: no handle at each end"
         );
+        let grip = within(&handles, |p| p[2] > range(&lid, 2).1 + 0.02);
+        let (g0, g1) = range(&grip, 0);
+        assert!(g1 - g0 > 1.5 * hw, "{size:?}: no grip over the lid");
     }
 }
 

@@ -304,11 +304,13 @@ pub fn stepping_stones(b: &mut Builder) {
 }
 
 /// A cooler: a moulded box, a white lid a little proud of it with a hinge line at its back and
-/// a latch at the front, a folding handle at each end and a drain plug low on the front.
+/// a latch at the front, a swing handle from end to end arching over the lid, and a drain plug
+/// low on the front.
 pub fn cooler(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let lid = (0.18 * h).clamp(0.04, 0.1);
-    let zl = h - lid;
+    let top = 0.78 * h;
+    let lid = (0.18 * top).clamp(0.04, 0.1);
+    let zl = top - lid;
     b.cuboid(
         Body,
         [-hw + 0.03, -hd + 0.01, 0.0],
@@ -317,7 +319,7 @@ pub fn cooler(b: &mut Builder) {
     b.cuboid(
         Top,
         [-hw + 0.025, -hd + 0.005, zl],
-        [hw - 0.025, hd - 0.005, h],
+        [hw - 0.025, hd - 0.005, top],
     );
     b.cuboid(
         Interior,
@@ -329,23 +331,20 @@ pub fn cooler(b: &mut Builder) {
         [-0.08, hd - 0.006, zl - 0.05],
         [0.08, hd, zl + 0.01],
     );
+    // The swing handle: a pivot at each end, arms up past the lid, a grip along the top.
+    let r = 0.012;
+    let zp = zl - 0.03;
     for sx in [-1.0, 1.0] {
-        let x = sx * (hw - 0.015);
-        b.rod(
-            Handle,
-            [x, -0.5 * hd, zl - 0.03],
-            [x, 0.5 * hd, zl - 0.03],
-            0.012,
-        );
-        for sy in [-1.0, 1.0] {
-            b.rod(
-                Handle,
-                [x, sy * 0.5 * hd, zl - 0.03],
-                [sx * (hw - 0.03), sy * 0.5 * hd, zl - 0.03],
-                0.01,
-            );
-        }
+        let x = sx * (hw - r);
+        b.rod(Handle, [sx * (hw - 0.03), 0.0, zp], [x, 0.0, zp], 0.02);
+        b.rod(Handle, [x, 0.0, zp], [x, 0.0, h - r], r);
     }
+    b.rod(
+        Handle,
+        [-(hw - r), 0.0, h - r],
+        [hw - r, 0.0, h - r],
+        1.3 * r,
+    );
     b.rod(
         Canvas,
         [0.6 * hw, hd - 0.01, 0.05],
