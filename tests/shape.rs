@@ -105,6 +105,7 @@ fn every_builtin_category_builds_inside_its_box_and_covers_its_silhouette() {
     let opts = ShapeOptions {
         gaussians: None,
         seed: 1,
+        variant: 0,
     };
     let mut holes: Vec<String> = vec![];
     for o in &kb.objects {
@@ -166,6 +167,7 @@ fn default_count_follows_area_and_option_overrides_it() {
     let opts = ShapeOptions {
         gaussians: Some(12_000),
         seed: 0,
+        variant: 0,
     };
     let n = build("sofa", [2.1, 0.95, 0.85], "", &opts).unwrap().len();
     assert!((10_800..=13_200).contains(&n), "{n}");
@@ -299,10 +301,12 @@ fn deterministic_per_seed_and_seeds_differ() {
     let a = ShapeOptions {
         gaussians: None,
         seed: 7,
+        variant: 0,
     };
     let b = ShapeOptions {
         gaussians: None,
         seed: 8,
+        variant: 0,
     };
     let g1 = build("chair", size, "oak chair", &a).unwrap();
     let g2 = build("chair", size, "oak chair", &a).unwrap();
@@ -329,6 +333,7 @@ fn bad_sizes_and_counts_are_errors() {
     let few = ShapeOptions {
         gaussians: Some(5),
         seed: 0,
+        variant: 0,
     };
     assert!(matches!(
         build("sofa", [1.0, 1.0, 1.0], "", &few),

@@ -42,6 +42,7 @@ fn blue_share(category: &str, description: &str) -> f64 {
         &ShapeOptions {
             gaussians: Some(20_000),
             seed: 3,
+            variant: 0,
         },
     )
     .unwrap();

@@ -160,6 +160,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
             &ShapeOptions {
                 gaussians: None,
                 seed: cfg.seed,
+                variant: 0,
             },
         )?)
     };

@@ -421,6 +421,7 @@ pub fn add_object(
         &ShapeOptions {
             gaussians: None,
             seed: state.scene.seed,
+            variant: 0,
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;

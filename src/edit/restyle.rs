@@ -303,6 +303,7 @@ fn recolour_object(
         &ShapeOptions {
             gaussians: None,
             seed,
+            variant: 0,
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;

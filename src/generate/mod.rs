@@ -13,3 +13,4 @@ pub mod scene_objects;
 pub mod scene_stages;
 pub mod sd_pool;
 pub mod stage;
+pub mod variants;

@@ -195,6 +195,7 @@ pub fn draft_object(
         &ShapeOptions {
             gaussians: None,
             seed,
+            variant: 0,
         },
     )
     .with_context(|| format!("building the shape prior of `{cat}`"))?;
@@ -220,7 +221,7 @@ pub fn write_draft_scene(
     let checkpoints = out.join("checkpoints");
     std::fs::create_dir_all(&checkpoints)
         .with_context(|| format!("creating {}", checkpoints.display()))?;
-    let scene = scene_file(
+    let mut scene = scene_file(
         prompt,
         seed,
         spec,
@@ -250,6 +251,17 @@ pub fn write_draft_scene(
             }
         ));
         object_gaussians.insert(cat, g.len());
+    }
+    let variants = super::variants::draft_variants(
+        out,
+        spec,
+        &mut scene,
+        &category_sizes(spec, layout),
+        seed,
+        keep_objects,
+    )?;
+    if !variants.is_empty() {
+        progress(&format!("variants: {}", variants.join(", ")));
     }
     let colours = draft_colours(layout.scene_type, prompt);
     let env = init_environment(

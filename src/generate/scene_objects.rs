@@ -102,6 +102,7 @@ pub fn generate_objects(
             &ShapeOptions {
                 gaussians: cfg.object_gaussians,
                 seed: cfg.seed,
+                variant: 0,
             },
         )
         .map_err(|e| GenError::Prior(Error::Input(e.to_string())))?;

@@ -79,6 +79,7 @@ use super::poles as po;
 use super::prints as pr;
 use super::racks as rk;
 use super::recliners as rc;
+use super::redrawn as rw;
 use super::riders as rd;
 use super::rigs;
 use super::rocks;
@@ -100,6 +101,7 @@ use super::sundries as su;
 use super::surgical as sg;
 use super::tanks as tk;
 use super::taps as tp;
+use super::textiles as tx;
 use super::things as t;
 use super::training as tr;
 use super::transit as tt;
@@ -133,6 +135,7 @@ impl Archetype {
         goods: Option<super::goods::Goods>,
         animal: Option<&'static super::animals::Animal>,
         bird: Option<&'static super::birds::Bird>,
+        variant: u32,
     ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
@@ -142,6 +145,7 @@ impl Archetype {
             goods,
             animal,
             bird,
+            variant: variant % super::variants::count(self.name),
         };
         (self.layout)(&mut b);
         b.parts
@@ -563,6 +567,20 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("mailbox", by::mailbox, [Body, Door], [Body => [0.20, 0.22, 0.24], Door => [0.20, 0.22, 0.24], Frame => [0.55, 0.42, 0.28], Handle => [0.85, 0.12, 0.10], Metal => STEEL]),
     arch!("hot_tub", by::hot_tub, [Body], [Body => [0.40, 0.30, 0.22], Frame => [0.34, 0.25, 0.18], Top => [0.55, 0.55, 0.57], Water => [0.30, 0.70, 0.82], Interior => [0.15, 0.35, 0.45], Cushion => [0.25, 0.25, 0.27], Canvas => WHITE]),
     arch!("fire_engine", en::fire_engine, [Body], [Body => [0.78, 0.08, 0.08], Canvas => WHITE, Top => [0.80, 0.81, 0.83], Frame => [0.55, 0.56, 0.58], Glass => [0.22, 0.27, 0.32], Interior => [0.10, 0.10, 0.11], Metal => [0.75, 0.76, 0.78], Light => [1.0, 0.95, 0.80], Seat => [0.20, 0.35, 1.0]]),
+    arch!("repair_stand", rw::repair_stand, [Frame], [Frame => [0.13, 0.32, 0.66], Metal => STEEL, Handle => [0.80, 0.12, 0.10], Top => [0.16, 0.16, 0.17], Tyre => BLACK, Body => [0.16, 0.16, 0.17]]),
+    arch!("school_desk", rw::school_desk, [Top], [Top => [0.80, 0.66, 0.46], Metal => [0.26, 0.27, 0.29], Body => [0.32, 0.33, 0.35]]),
+    arch!("boxing_ring", rw::boxing_ring, [Frame], [Body => [0.10, 0.14, 0.35], Canvas => [0.90, 0.90, 0.87], Metal => STEEL, Handle => [0.80, 0.10, 0.10], Cushion => [0.12, 0.25, 0.70], Frame => [0.82, 0.10, 0.10], Top => [0.20, 0.20, 0.22]]),
+    arch!("chest_freezer", rw::chest_freezer, [Body, Top], [Body => WHITE, Top => WHITE, Interior => [0.20, 0.20, 0.22], Handle => [0.30, 0.30, 0.32], Metal => STEEL, Light => [0.30, 0.90, 0.40]]),
+    arch!("dartboard", rw::dartboard, [Frame], [Frame => [0.24, 0.15, 0.09], Interior => [0.06, 0.06, 0.07], Body => [0.07, 0.07, 0.08], Canvas => [0.92, 0.86, 0.68], Handle => [0.78, 0.12, 0.10], Top => [0.10, 0.50, 0.24]]),
+    arch!("stepping_stones", rw::stepping_stones, [Stone], [Stone => [0.58, 0.56, 0.52]]),
+    arch!("cooler", rw::cooler, [Body], [Body => [0.16, 0.36, 0.70], Top => WHITE, Interior => [0.10, 0.10, 0.12], Canvas => WHITE, Handle => [0.20, 0.20, 0.22]]),
+    arch!("standing_desk", rw::standing_desk, [Top], [Top => [0.80, 0.66, 0.46], Metal => [0.15, 0.15, 0.16], Handle => [0.12, 0.12, 0.13]]),
+    arch!("striped_towel", tx::striped_towel, [Body], [Body => [0.12, 0.42, 0.78], Canvas => WHITE, Cushion => [0.95, 0.72, 0.15]]),
+    arch!("checked_blanket", tx::checked_blanket, [Body], [Body => [0.78, 0.12, 0.12], Canvas => WHITE, Cushion => [0.90, 0.60, 0.58]]),
+    arch!("tiled_mat", tx::tiled_mat, [], []),
+    arch!("paper_lantern", tx::paper_lantern, [Shade], [Shade => [0.98, 0.95, 0.86], Frame => [0.12, 0.12, 0.13], Metal => [0.85, 0.82, 0.74]]),
+    arch!("potted_palm", pt::potted_palm, [Foliage], [Foliage => [0.26, 0.52, 0.20], Trunk => [0.42, 0.48, 0.26], Pot => [0.86, 0.85, 0.82]]),
+    arch!("standing_statue", ef::standing_statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.86, 0.85, 0.82]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

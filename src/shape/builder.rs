@@ -16,6 +16,9 @@ pub struct Builder {
     pub animal: Option<&'static super::animals::Animal>,
     /// The bird a bird is drawn as (`kb/birds.txt`); `None` for other categories.
     pub bird: Option<&'static super::birds::Bird>,
+    /// Which of its archetype's variants to draw (`kb/variants.txt`: a poster's print, a
+    /// statue's pose), below the archetype's count; 0 is its usual drawing.
+    pub variant: u32,
 }
 
 impl Builder {

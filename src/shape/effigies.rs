@@ -89,8 +89,20 @@ pub fn scarecrow(b: &mut Builder) {
 }
 
 /// A statue: a plinth with a moulded base and cap, and on it a standing figure with one arm
-/// raised, every part in the stone's colour.
+/// raised, every part in the stone's colour; its variant 1 stands at rest, arms at its sides.
 pub fn statue(b: &mut Builder) {
+    figure_on_plinth(b, b.variant.is_multiple_of(2));
+}
+
+/// A standing statue at rest: the figure of [`statue`] with both arms hanging at its sides
+/// ("a standing statue").
+pub fn standing_statue(b: &mut Builder) {
+    figure_on_plinth(b, false);
+}
+
+/// A plinth and a robed figure standing on it, its left arm hanging, its right one raised with
+/// a torch when `raised`, else hanging as the left.
+fn figure_on_plinth(b: &mut Builder, raised: bool) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let zp = 0.22 * h; // the plinth's top
     b.cuboid(Top, [-hw, -hd, 0.0], [hw, hd, 0.04 * h]);
@@ -160,16 +172,49 @@ pub fn statue(b: &mut Builder) {
             [1.4 * ar, 1.3 * ar, 1.2 * ar],
         );
     }
-    // One arm hangs at the side, a hand at the hip.
-    let elbow = [-sh - 0.7 * ar, 0.0, at(0.6)];
-    b.rod(Body, [-sh, 0.0, shoulder - ar], elbow, ar);
-    b.rod(Body, elbow, [-sh - 0.5 * ar, 0.25 * fw, at(0.46)], 0.9 * ar);
-    b.ellipsoid(
+    // One arm hangs at the side, a hand at the hip; the other too when it is not raised.
+    let sides: &[f64] = if raised { &[-1.0] } else { &[-1.0, 1.0] };
+    for &sx in sides {
+        let elbow = [sx * (sh + 0.7 * ar), 0.0, at(0.6)];
+        b.rod(Body, [sx * sh, 0.0, shoulder - ar], elbow, ar);
+        b.rod(
+            Body,
+            elbow,
+            [sx * (sh + 0.5 * ar), 0.25 * fw, at(0.46)],
+            0.9 * ar,
+        );
+        b.ellipsoid(
+            Body,
+            [sx * (sh + 0.5 * ar), 0.25 * fw, at(0.43)],
+            [0.9 * ar, 0.9 * ar, 1.3 * ar],
+        );
+    }
+    if raised {
+        raised_arm(b, sh, ar, shoulder, fh);
+    }
+    // The neck and the head, with hair gathered at the back and a nose to the front.
+    let hr = (0.05 * fh).min(0.38 * fw);
+    let neck = shoulder + 0.05 * fh;
+    b.rod(
         Body,
-        [-sh - 0.5 * ar, 0.25 * fw, at(0.43)],
-        [0.9 * ar, 0.9 * ar, 1.3 * ar],
+        [0.0, 0.0, shoulder - 0.02 * fh],
+        [0.0, 0.0, neck],
+        0.55 * hr,
     );
-    // The other raised overhead, holding a torch.
+    let zh = neck + 1.1 * hr;
+    b.ellipsoid(Body, [0.0, 0.0, zh], [hr, 1.1 * hr, 1.3 * hr]);
+    b.ellipsoid(
+        Top,
+        [0.0, -0.25 * hr, zh + 0.2 * hr],
+        [1.08 * hr, 1.0 * hr, 1.2 * hr],
+    );
+    b.ellipsoid(Body, [0.0, 1.05 * hr, zh], [0.2 * hr, 0.2 * hr, 0.3 * hr]);
+}
+
+/// The right arm raised overhead from the shoulder at `shoulder`, holding a torch whose flame
+/// reaches the top.
+fn raised_arm(b: &mut Builder, sh: f64, ar: f64, shoulder: f64, fh: f64) {
+    let h = b.h;
     let up_elbow = [sh + 1.5 * ar, 0.0, shoulder + 0.1 * fh];
     b.rod(Body, [sh, 0.0, shoulder - ar], up_elbow, ar);
     let hand = [sh + 1.2 * ar, 0.0, h - 0.12 * fh];
@@ -188,23 +233,6 @@ pub fn statue(b: &mut Builder) {
         [hand[0], 0.0, h - 0.035 * fh],
         [1.5 * ar, 1.5 * ar, 0.035 * fh],
     );
-    // The neck and the head, with hair gathered at the back and a nose to the front.
-    let hr = (0.05 * fh).min(0.38 * fw);
-    let neck = shoulder + 0.05 * fh;
-    b.rod(
-        Body,
-        [0.0, 0.0, shoulder - 0.02 * fh],
-        [0.0, 0.0, neck],
-        0.55 * hr,
-    );
-    let zh = neck + 1.1 * hr;
-    b.ellipsoid(Body, [0.0, 0.0, zh], [hr, 1.1 * hr, 1.3 * hr]);
-    b.ellipsoid(
-        Top,
-        [0.0, -0.25 * hr, zh + 0.2 * hr],
-        [1.08 * hr, 1.0 * hr, 1.2 * hr],
-    );
-    b.ellipsoid(Body, [0.0, 1.05 * hr, zh], [0.2 * hr, 0.2 * hr, 0.3 * hr]);
 }
 
 /// A seated statue on a plinth: a block throne, the figure sitting upright on it, its thighs

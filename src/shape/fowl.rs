@@ -23,6 +23,7 @@ pub fn bird(b: &mut Builder) {
         goods: None,
         animal: None,
         bird: None,
+        variant: 0,
     };
     draw(&mut own, row);
     fit(&mut own.parts, [w, d, b.h]);
@@ -294,6 +295,7 @@ mod tests {
                 goods: None,
                 animal: None,
                 bird: None,
+                variant: 0,
             };
             draw(&mut b, a);
             let (lo, hi) = bounds(&b.parts);

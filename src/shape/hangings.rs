@@ -185,10 +185,70 @@ pub fn poster(b: &mut Builder) {
     let m = (0.05 * b.w.min(h)).clamp(0.01, 0.04);
     let (x0, x1, z0, z1) = (-hw + m, hw - m, m, h - m);
     let (pw, ph) = (x1 - x0, z1 - z0);
-    // The printed field, then the motif over it, nearer the viewer.
-    b.cuboid(Body, [x0, y, z0 + 0.18 * ph], [x1, y + 0.002, z1]);
+    // The printed field, then the motif over it, nearer the viewer: a disc (variant 0), a
+    // bold diagonal band, two offset blocks, or a low disc over stripes (variants 1-3), the
+    // later ones in colours of their own.
+    let v = b.variant;
+    let (field, motif) = if v == 0 {
+        ((Body, 0), (Cushion, 0))
+    } else {
+        ((Books, 2 * v + 1), (Books, 3 * v + 4))
+    };
+    b.cuboid_v(
+        field.0,
+        field.1,
+        [x0, y, z0 + 0.18 * ph],
+        [x1, y + 0.002, z1],
+    );
     let r = 0.32 * pw.min(ph);
-    b.ellipsoid(Cushion, [0.0, y + 0.004, z0 + 0.52 * ph], [r, 0.001, r]);
+    match v {
+        1 => {
+            let a = (ph / pw).atan();
+            b.slab_v(
+                motif.0,
+                motif.1,
+                [0.0, y + 0.004, z0 + 0.55 * ph],
+                [
+                    0.55 * (pw * pw + ph * ph).sqrt().min(1.6 * ph),
+                    0.001,
+                    0.09 * ph,
+                ],
+                rot_y(-a),
+            );
+        }
+        2 => {
+            for (k, (u0, v0, u1, v1)) in [(0.1, 0.55, 0.6, 0.8), (0.4, 0.3, 0.9, 0.58)]
+                .iter()
+                .enumerate()
+            {
+                b.cuboid_v(
+                    motif.0,
+                    motif.1 + 2 * k as u32,
+                    [x0 + u0 * pw, y + 0.004 + 0.001 * k as f64, z0 + v0 * ph],
+                    [x0 + u1 * pw, y + 0.005 + 0.001 * k as f64, z0 + v1 * ph],
+                );
+            }
+        }
+        3 => {
+            for k in 0..4 {
+                let z = z0 + (0.22 + 0.07 * k as f64) * ph;
+                b.cuboid_v(
+                    motif.0,
+                    motif.1 + k,
+                    [x0, y + 0.003, z],
+                    [x1, y + 0.004, z + 0.035 * ph],
+                );
+            }
+            b.ellipsoid_rot(
+                Cushion,
+                0,
+                [0.0, y + 0.005, z0 + 0.62 * ph],
+                [0.8 * r, 0.001, 0.8 * r],
+                IDENTITY,
+            );
+        }
+        _ => b.ellipsoid(motif.0, [0.0, y + 0.004, z0 + 0.52 * ph], [r, 0.001, r]),
+    }
     b.cuboid(
         Canvas,
         [x0 + 0.1 * pw, y + 0.004, z0 + 0.84 * ph],

@@ -98,6 +98,7 @@ mod poles;
 mod prints;
 mod racks;
 mod recliners;
+mod redrawn;
 mod riders;
 mod rigs;
 mod rocks;
@@ -120,11 +121,13 @@ mod sundries;
 mod surgical;
 mod tanks;
 mod taps;
+mod textiles;
 mod things;
 mod training;
 mod transit;
 mod utility;
 mod vanities;
+pub mod variants;
 mod vehicles;
 mod vendors;
 mod vitrines;
@@ -170,6 +173,9 @@ pub struct ShapeOptions {
     pub gaussians: Option<usize>,
     /// Seed of the sample jitter and colour variation.
     pub seed: u64,
+    /// Which variant of its archetype to draw (`kb/variants.txt`: a poster's print, a statue's
+    /// pose), taken modulo the archetype's count; 0 is its usual drawing.
+    pub variant: u32,
 }
 
 /// Errors of [`build`].
@@ -299,6 +305,25 @@ pub fn parts_described(
         goods::goods_of(category, arch.name),
         animal_for(category, arch.name),
         bird_for(category, arch.name),
+        0,
+    ))
+}
+
+/// The parts of variant `variant` of a category's archetype (see [`ShapeOptions::variant`]),
+/// in the object frame.
+pub fn parts_variant(
+    category: &str,
+    size: [f64; 3],
+    variant: u32,
+) -> Result<Vec<Part>, ShapeError> {
+    check_size(size)?;
+    let arch = archetypes::get(archetype_of(category));
+    Ok(arch.parts_holding(
+        size,
+        goods::goods_of(category, arch.name),
+        animal_for(category, arch.name),
+        bird_for(category, arch.name),
+        variant,
     ))
 }
 
@@ -368,7 +393,7 @@ pub fn build(
     let goods = goods::goods_of(category, arch.name);
     let animal = animal_for(category, arch.name);
     let bird = bird_for(category, arch.name);
-    let parts = arch.parts_holding(size, goods, animal, bird);
+    let parts = arch.parts_holding(size, goods, animal, bird, opts.variant);
     let palette = match (animal, bird) {
         (Some(a), _) => animal_palette(description, arch.main, arch.defaults, a),
         (None, Some(f)) => {
@@ -584,6 +609,7 @@ mod kb_tests {
                 goods::goods_of(&o.category, arch.name),
                 animal_for(&o.category, arch.name),
                 bird_for(&o.category, arch.name),
+                0,
             ) {
                 let mut raw = vec![];
                 part.prim.sample(

@@ -186,21 +186,41 @@ pub fn painting(b: &mut Builder) {
     let y = -hd + t;
     let (x0, x1, z0, z1) = (-hw + fw, hw - fw, fw, h - fw);
     b.cuboid(Canvas, [x0, y, z0], [x1, y + 0.003, z1]);
-    // Its subject: a few overlapping colour fields.
+    // Its subject: a few overlapping colour fields, laid out and coloured by its variant (a
+    // landscape's ground and sky with two shapes, a horizon high or low, a still life's blocks).
     let (pw, ph) = (x1 - x0, z1 - z0);
-    for (k, (u0, v0, u1, v1)) in [
-        (0.0, 0.0, 1.0, 0.45),
-        (0.0, 0.45, 1.0, 1.0),
-        (0.2, 0.2, 0.55, 0.7),
-        (0.6, 0.1, 0.85, 0.5),
-    ]
-    .iter()
-    .enumerate()
-    {
+    const SUBJECTS: [[(f64, f64, f64, f64); 4]; 4] = [
+        [
+            (0.0, 0.0, 1.0, 0.45),
+            (0.0, 0.45, 1.0, 1.0),
+            (0.2, 0.2, 0.55, 0.7),
+            (0.6, 0.1, 0.85, 0.5),
+        ],
+        [
+            (0.0, 0.0, 1.0, 0.7),
+            (0.0, 0.7, 1.0, 1.0),
+            (0.55, 0.6, 0.8, 0.85),
+            (0.1, 0.15, 0.45, 0.4),
+        ],
+        [
+            (0.0, 0.0, 1.0, 0.25),
+            (0.0, 0.25, 1.0, 1.0),
+            (0.1, 0.25, 0.3, 0.8),
+            (0.4, 0.25, 0.9, 0.55),
+        ],
+        [
+            (0.0, 0.0, 1.0, 1.0),
+            (0.1, 0.1, 0.5, 0.9),
+            (0.5, 0.3, 0.9, 0.7),
+            (0.3, 0.6, 0.7, 0.85),
+        ],
+    ];
+    let v = b.variant as usize % SUBJECTS.len();
+    for (k, (u0, v0, u1, v1)) in SUBJECTS[v].iter().enumerate() {
         let yk = y + 0.003 + 0.002 * k as f64;
         b.cuboid_v(
             Books,
-            [3, 1, 0, 5][k],
+            [3, 1, 0, 5][k] + 2 * v as u32,
             [x0 + u0 * pw, yk, z0 + v0 * ph],
             [x0 + u1 * pw, yk + 0.002, z0 + v1 * ph],
         );

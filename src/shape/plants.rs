@@ -1,8 +1,9 @@
 //! Layouts of potted plants by kind, each with its own habit: a snake plant (upright sword
 //! leaves), a fern (arching fronds of paired leaflets spilling over the pot), lucky bamboo
 //! (jointed canes with leaf tufts), an orchid (broad leaves, a staked arching spray of flowers), a bonsai (a
-//! twisted trunk with flat pads of leaves in a shallow tray) and a hanging plant (a pot on three
-//! cords with trailing strands). The front faces +y.
+//! twisted trunk with flat pads of leaves in a shallow tray), a hanging plant (a pot on three
+//! cords with trailing strands) and a potted palm (slender canes crowned with arching feather
+//! fronds). The front faces +y.
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::*;
 use super::parts::{rot_z, V3};
@@ -338,6 +339,79 @@ pub fn hanging_plant(b: &mut Builder) {
                 [out * c, out * s, z],
                 [leaf, 0.4 * leaf, 0.7 * leaf],
                 rot_z(a + j as f64),
+            );
+        }
+    }
+}
+
+/// A potted palm (an areca or kentia palm): a tall pot, a clump of slender canes rising from
+/// it at slight leans, and at the top of each a spray of long arching fronds, each a stalk with
+/// narrow leaflets in pairs hanging from it, drooping towards the tip.
+pub fn potted_palm(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let m = hw.min(hd);
+    let r = 0.5 * m;
+    let ph = (0.25 * h).min(0.4);
+    pot(b, r, ph);
+    let canes = 5;
+    for i in 0..canes {
+        let a = i as f64 * GOLDEN;
+        let (s, c) = a.sin_cos();
+        let off = if i == 0 { 0.0 } else { 0.4 * r };
+        let base = [off * c, off * s, ph];
+        // Taller canes in the middle, shorter round it.
+        let top_z = ph
+            + (h - ph)
+                * if i == 0 {
+                    0.7
+                } else {
+                    0.5 + 0.05 * (i % 3) as f64
+                };
+        let lean = 0.15 * (top_z - ph);
+        let top = [base[0] + lean * c, base[1] + lean * s, top_z];
+        b.rod(Trunk, base, top, (0.006 * h).clamp(0.006, 0.012));
+        let fronds = 4;
+        for f in 0..fronds {
+            let fa = a + f as f64 / fronds as f64 * TAU + 0.4 * i as f64;
+            palm_frond(b, (i * fronds + f) as u32, top, fa, m - 0.03, h);
+        }
+    }
+}
+
+/// One feather-palm frond from `base` out along the bearing `a`: a stalk rising then arching
+/// down to a tip `reach` out (within the size box of height `h`), narrow leaflets in pairs
+/// along it, shorter towards the tip.
+fn palm_frond(b: &mut Builder, variant: u32, base: V3, a: f64, reach: f64, h: f64) {
+    let (s, c) = a.sin_cos();
+    // Out from the cane to the box's edge; up a little, then down past the base.
+    let out = (reach - (base[0] * c + base[1] * s)).max(0.3 * reach);
+    let rise = (0.45 * out).min(h - base[2] - 0.02);
+    let at = |t: f64| {
+        let up = rise * (2.4 * t - 3.4 * t * t);
+        [
+            base[0] + out * t * c,
+            base[1] + out * t * s,
+            (base[2] + up).min(h - 0.01),
+        ]
+    };
+    let segs = 12;
+    for j in 0..segs {
+        let (t0, t1) = (j as f64 / segs as f64, (j + 1) as f64 / segs as f64);
+        let (q0, q1) = (at(t0), at(t1));
+        b.rod(Trunk, q0, q1, 0.004);
+        let centre = [0, 1, 2].map(|q| 0.5 * (q0[q] + q1[q]));
+        let leaflet = (0.35 * out).min(0.22) * (1.0 - 0.6 * t0);
+        let side = [-s, c, 0.0];
+        for sign in [-1.0, 1.0] {
+            // Each leaflet hangs out and down from the stalk.
+            let dir = unit([sign * side[0], sign * side[1], -0.7]);
+            let mid = [0, 1, 2].map(|q| centre[q] + dir[q] * 0.5 * leaflet);
+            b.ellipsoid_rot(
+                Foliage,
+                variant,
+                mid,
+                [0.012, 0.003, 0.5 * leaflet],
+                frame_along(dir),
             );
         }
     }

@@ -56,6 +56,7 @@ pub fn forge(b: &mut Builder) {
         goods: None,
         animal: None,
         bird: None,
+        variant: 0,
     };
     super::workshop::anvil(&mut anvil);
     b.parts.extend(anvil.parts);
