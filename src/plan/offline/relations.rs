@@ -223,6 +223,19 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
                 continue;
             }
             let (ns, no) = (counts[&subject], counts[&object]);
+            if rel.every && subject == object {
+                // a run ("washing machine* NEXT washing machine"): each beside the one before
+                for k in 2..=ns {
+                    push(
+                        spec,
+                        format!("{subject}{k}"),
+                        rel.relation,
+                        format!("{object}{}", k - 1),
+                        false,
+                    );
+                }
+                continue;
+            }
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
                 // every one of them spread over the objects ("beer bench* NEXT bench table")
