@@ -197,8 +197,9 @@ fn small_room(
     // A thing at floor level (a floor cushion, a mattress on the floor) is stepped onto: its
     // footprint is all it takes.
     let room_to_use = |h: f64| if h < LOW { 0.0 } else { margin };
-    // A thing against a wall is used from its front: its neighbours in a run along the wall (a
-    // sink beside a counter) share the room at its sides, half of it each.
+    // In a room called tiny a thing against a wall is used from its front: its neighbours in a
+    // run along the wall (a sink beside a counter) share the room at its sides, half each (a
+    // room only called small keeps it whole: its defaults still need their fronts clear).
     let walled = |c: &str| {
         use crate::plan::gcp::classes::{effective_class, Class};
         effective_class(spec, c) == Class::AgainstWall
@@ -208,7 +209,11 @@ fn small_room(
         .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
         .map(|i| {
             let m = room_to_use(i.size[2]);
-            let side = if walled(&i.category) { 0.5 * m } else { m };
+            let side = if scale < TINY_SCALE && walled(&i.category) {
+                0.5 * m
+            } else {
+                m
+            };
             (i.size[0] + side) * (i.size[1] + m)
         })
         .sum::<f64>()
