@@ -2,7 +2,8 @@
 //! the one before (a laundromat's washers, not one per wall); a studio's stove and fridge stand
 //! beside its kitchen counter; a hotel lobby's armchairs at its coffee tables; a room the text
 //! calls tiny loses a large optional piece (an office's conference table) before one of many
-//! desks; a cramped kitchen whose things stand against its walls is sized for them in a run.
+//! desks; a cramped kitchen whose things stand against its walls is sized for them in a run; a
+//! dryer the text puts against the wall still stands beside the washer there.
 use dreamscene::plan::check::{gap, validity_problems, wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
@@ -164,6 +165,24 @@ fn a_cramped_kitchen_is_sized_for_its_runs() {
                 .into_iter()
                 .fold(f64::INFINITY, f64::min);
             assert!(wall <= 0.3, "{prompt}: {} {wall:.2} m off the wall", o.id);
+        }
+    }
+}
+
+#[test]
+fn a_dryer_said_against_the_wall_still_stands_beside_the_washer() {
+    for prompt in [
+        "a laundry room with a washing machine and a dryer side by side against the wall",
+        "a utility room with a washer and a tumble dryer against the wall",
+        "a laundry with a dryer and a washing machine along the wall and a laundry basket",
+    ] {
+        for seed in 0..3 {
+            let (l, _) = lay(prompt, seed);
+            let g = gap_to(&l, "dryer1", "washing machine");
+            assert!(
+                g <= 0.5,
+                "{prompt} seed {seed}: dryer {g:.2} m from the washer"
+            );
         }
     }
 }
