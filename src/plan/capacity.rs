@@ -126,9 +126,13 @@ fn remove_one(spec: &mut SceneSpec, cat: &str) -> Vec<String> {
         .collect()
 }
 
+/// Share of the room's floor above which one piece counts as large when thinning: a 3 x 1.2 m
+/// conference table in a 20 m² office is; a desk (1 m²) is not.
+const LARGE_SHARE: f64 = 0.1;
+
 /// The default category to thin next: what the place can do without before what it cannot,
-/// decoration first, then furniture in no group, then the one whose instances cover the most
-/// floor; multiples lose one at a time. `None` when only named objects are left. Unless the room
+/// decoration first, then furniture in no group, then a piece large for the room, then the one
+/// whose instances cover the most floor; multiples lose one at a time. `None` when only named objects are left. Unless the room
 /// is `crowded` (over its occupancy), only what the place can do without and what frees floor
 /// (nothing standing on another piece or lying flat) is thinned: floor kept free for a room
 /// the text names nothing for never costs a tiny office its desk.
@@ -149,12 +153,16 @@ pub(crate) fn next_to_trim(
         .filter(|r| r.relation == RelationKind::Over)
         .map(|r| base(&r.subject))
         .collect();
+    // a single piece that takes a large share of the floor (a tiny office's conference
+    // table) goes before one of many smaller ones: it frees the most room for the least loss
+    let floor = spec.room.map_or(f64::INFINITY, |r| r.size[0] * r.size[1]);
     let key = |c: &str, o: &super::spec::ObjectSpec| {
+        let large = o.size[0] * o.size[1] > LARGE_SHARE * floor;
         (
             !essential.contains(c) as u8,
             DECOR.contains(&c) as u8,
             !grouped.contains(c) as u8,
-            (o.number > 1) as u8,
+            if large { 2u8 } else { (o.number > 1) as u8 },
             o.number as f64 * o.size[0] * o.size[1],
         )
     };

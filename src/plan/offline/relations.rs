@@ -2,7 +2,7 @@
 //! text's) and relations (the text's, spread over the instances; the scene's defaults, held by
 //! what fills a replaced default's role; then the functional groups, the text's own kept).
 use super::Draft;
-use crate::plan::spec::{Anchor, Relation, SceneSpec, SceneType};
+use crate::plan::spec::{Anchor, Relation, RelationKind, SceneSpec, SceneType};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// The category mention `i` means: a reference ("the table" after a round table, "each
@@ -213,16 +213,35 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         };
         // where the text puts a thing ("chairs stacked against the back wall") beats where
         // the scene would have it (in rows before the stage)
-        let placed: BTreeSet<&String> = r.anchors.iter().map(|&(mi, _)| meant(d, mi)).collect();
+        // (unless the other stands at that kind of place too: a dryer said against the wall
+        // still stands beside the washing machine there)
+        let placed: BTreeMap<&String, Anchor> =
+            r.anchors.iter().map(|&(mi, a)| (meant(d, mi), a)).collect();
         for rel in &sc.relations {
             let (Some(subject), Some(object)) = (filling(&rel.subject), filling(&rel.object))
             else {
                 continue;
             };
-            if placed.contains(&subject) {
+            if placed.get(&subject).is_some_and(|a| {
+                rel.relation != RelationKind::Next
+                    || spec.anchors.get(&format!("{object}1")) != Some(a)
+            }) {
                 continue;
             }
             let (ns, no) = (counts[&subject], counts[&object]);
+            if rel.every && subject == object {
+                // a run ("washing machine* NEXT washing machine"): each beside the one before
+                for k in 2..=ns {
+                    push(
+                        spec,
+                        format!("{subject}{k}"),
+                        rel.relation,
+                        format!("{object}{}", k - 1),
+                        false,
+                    );
+                }
+                continue;
+            }
             let n = if rel.every { ns } else { 1 };
             for k in 1..=n {
                 // every one of them spread over the objects ("beer bench* NEXT bench table")

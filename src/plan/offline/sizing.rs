@@ -220,10 +220,25 @@ fn small_room(
     // A thing at floor level (a floor cushion, a mattress on the floor) is stepped onto: its
     // footprint is all it takes.
     let room_to_use = |h: f64| if h < LOW { 0.0 } else { margin };
+    // In a room called tiny a thing against a wall is used from its front: its neighbours in a
+    // run along the wall (a sink beside a counter) share the room at its sides, half each (a
+    // room only called small keeps it whole: its defaults still need their fronts clear).
+    let walled = |c: &str| {
+        use crate::plan::gcp::classes::{effective_class, Class};
+        effective_class(spec, c) == Class::AgainstWall
+    };
     let need: f64 = named_inst
         .iter()
         .filter(|i| i.size[2] >= 0.05 && on_floor(&i.category) && !tucked(&i.category))
-        .map(|i| (i.size[0] + room_to_use(i.size[2])) * (i.size[1] + room_to_use(i.size[2])))
+        .map(|i| {
+            let m = room_to_use(i.size[2]);
+            let side = if scale < TINY_SCALE && walled(&i.category) {
+                0.5 * m
+            } else {
+                m
+            };
+            (i.size[0] + side) * (i.size[1] + m)
+        })
         .sum::<f64>()
         / occupancy;
     let longest = spec
