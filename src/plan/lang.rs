@@ -14,6 +14,7 @@ mod mentions;
 mod objects;
 mod place;
 mod placements;
+mod restate;
 mod room;
 mod scene;
 mod setting;
@@ -133,6 +134,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     room::read_room(&t, &mut r, &masked, &dims);
     mentions::for_whom(kb, &mut r);
     read_counts(&mut r);
+    restate::restated_counts(&mut r);
     read_placements(&mut r);
     placements::supports_hold(kb, &mut r);
     placements::surface_kinds(kb, &mut r);

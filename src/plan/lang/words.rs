@@ -163,6 +163,7 @@ pub fn is_known_word(w: &str) -> bool {
         "room_small",
         "room_large",
         "english",
+        "removers",
     ]
     .iter()
     .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))
