@@ -71,7 +71,7 @@ fn what_a_named_thing_holds_is_said_back_with_it() {
         ),
         (
             "a library with a bookcase full of books",
-            "bookcase",
+            "bookshelf",
             "books",
         ),
     ] {
