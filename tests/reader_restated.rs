@@ -89,3 +89,50 @@ fn what_a_named_thing_holds_is_said_back_with_it() {
         );
     }
 }
+
+#[test]
+fn a_bare_restated_number_counts_the_last_counted_thing() {
+    for (prompt, cat, n) in [
+        (
+            "A dining room with a table and four chairs. Actually make it six.",
+            "dining chair",
+            6,
+        ),
+        (
+            "A cafe with four tables and a sofa. Make it six tables and lose the sofa.",
+            "cafe table",
+            6,
+        ),
+        (
+            "A classroom with a teacher's desk and twenty desks. Change that to twelve.",
+            "desk",
+            13,
+        ),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, cat), n, "{prompt}: {:?}", keys(&s));
+    }
+}
+
+#[test]
+fn the_words_of_a_remover_of_two_words_are_used() {
+    for (prompt, gone) in [
+        ("a bedroom with a bed and a tv; take out the tv", "tv"),
+        (
+            "a living room with a sofa and a rug; swap out the rug for a bookshelf",
+            "rug",
+        ),
+        (
+            "a study with a desk and a globe, leave out the globe",
+            "globe",
+        ),
+    ] {
+        let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+        assert!(
+            p.understood.unused.is_empty(),
+            "{prompt}: {:?}",
+            p.understood.unused
+        );
+        assert_eq!(number(&p.spec, gone), 0, "{prompt}: {:?}", keys(&p.spec));
+    }
+}

@@ -26,9 +26,9 @@ use regex::Regex;
 use words::not_objects;
 pub use words::{
     alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
-    is_outdoor_place, is_seat, is_specialised, is_verb, kind_of_compound, normalise, number,
-    object_footprint, object_height, object_length, object_scale, part_owners, plural_means_one,
-    plurals, potted, singular,
+    is_outdoor_place, is_remover, is_seat, is_specialised, is_verb, kind_of_compound, normalise,
+    number, object_footprint, object_height, object_length, object_scale, part_owners,
+    plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
 
