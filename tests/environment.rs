@@ -439,3 +439,24 @@ fn a_balcony_has_a_parapet() {
     assert!(o("a balcony with two chairs").parapet.is_some());
     assert!(o("a garden").parapet.is_none());
 }
+
+/// A scene said to be in a place of another kind takes that place's floor and walls: "a home
+/// gym in the garage" is the garage's concrete and grey walls, not the gym's; a place named
+/// only as what it holds ("a garage with a rowing machine") keeps its own look.
+#[test]
+fn the_place_a_scene_is_in_gives_its_surfaces() {
+    let c = |t: &str| draft_colours(SceneType::Indoor, t);
+    let garage = c("a garage with a car");
+    for t in [
+        "a small home gym in the garage",
+        "a home gym in my garage",
+        "a workout room inside the garage with a treadmill",
+    ] {
+        let f = c(t);
+        assert_eq!((f.floor, f.wall), (garage.floor, garage.wall), "{t}");
+    }
+    // what a garage holds after "with" leaves the gym its own look
+    let gym = c("a home gym");
+    let f = c("a home gym with a treadmill in the garage");
+    assert_eq!((f.floor, f.wall), (gym.floor, gym.wall));
+}

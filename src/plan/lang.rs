@@ -14,6 +14,7 @@ mod mentions;
 mod objects;
 mod place;
 mod placements;
+mod restate;
 mod room;
 mod scene;
 mod setting;
@@ -25,9 +26,9 @@ use regex::Regex;
 use words::not_objects;
 pub use words::{
     alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
-    is_outdoor_place, is_seat, is_specialised, is_verb, kind_of_compound, normalise, number,
-    object_footprint, object_height, object_length, object_scale, part_owners, plural_means_one,
-    plurals, potted, singular,
+    is_outdoor_place, is_remover, is_seat, is_specialised, is_verb, kind_of_compound, normalise,
+    number, object_footprint, object_height, object_length, object_scale, part_owners,
+    plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
 
@@ -133,6 +134,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     room::read_room(&t, &mut r, &masked, &dims);
     mentions::for_whom(kb, &mut r);
     read_counts(&mut r);
+    restate::restated_counts(&mut r);
     read_placements(&mut r);
     placements::supports_hold(kb, &mut r);
     placements::surface_kinds(kb, &mut r);

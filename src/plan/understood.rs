@@ -154,9 +154,22 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
         .iter()
         .flat_map(|m| m.adjectives.iter().map(String::as_str))
         .collect();
+    // "take out the tv", "leave out the rug": the words of a remover of two words are used
+    let bare: Vec<&str> = r
+        .text
+        .split(' ')
+        .map(|w| w.trim_matches(|c: char| !c.is_alphanumeric()))
+        .collect();
+    let removes = |k: usize| {
+        let pair = |a: usize| {
+            bare.get(a + 1)
+                .is_some_and(|b| lang::is_remover(&format!("{}_{b}", bare[a])))
+        };
+        pair(k) || (k > 0 && pair(k - 1))
+    };
     let mut out: Vec<String> = vec![];
     let mut pos = 0;
-    for raw in r.text.split(' ') {
+    for (k, raw) in r.text.split(' ').enumerate() {
         let here = pos;
         pos += raw.len() + 1;
         let w = raw.trim_matches(|c: char| !c.is_alphanumeric() && c != '\'' && c != '-');
@@ -168,6 +181,7 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
             || styles.iter().any(|s| s == w)
             || super::offline::style_word(w).is_some()
             || lang::is_known_word(w)
+            || removes(k)
             || out.iter().any(|x| x == w)
         {
             continue;

@@ -151,6 +151,11 @@ pub fn is_outdoor_place(w: &str) -> bool {
     word_list("outdoors").contains(&w)
 }
 
+/// Whether `w` takes a named thing away (`kb/words.txt`, removers: "drop", "take_out").
+pub fn is_remover(w: &str) -> bool {
+    word_list("removers").contains(&w)
+}
+
 /// A word the reader knows as something other than an object: a part of the room, an area,
 /// an arrangement, people, a room size word, the weather or mood of the scene or a common
 /// English word of requests.
@@ -163,6 +168,7 @@ pub fn is_known_word(w: &str) -> bool {
         "room_small",
         "room_large",
         "english",
+        "removers",
     ]
     .iter()
     .any(|l| word_list(l).contains(&w) || word_list(l).contains(&sg.as_str()))

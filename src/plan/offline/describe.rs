@@ -226,6 +226,22 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
     objects
 }
 
+/// `why` with what the text says `category` holds ("named, full of paint cans"): the words
+/// of its contents are planned into its description, and said back where the user sees them.
+fn held(d: &Draft, category: &str, why: String) -> String {
+    let said =
+        d.r.contents
+            .iter()
+            .find(|(i, ..)| d.cats.get(*i).is_some_and(|c| c == category));
+    match said {
+        Some((_, what, ..)) => match what.strip_prefix("of ") {
+            Some(x) => format!("{why}, full of {x}"),
+            None => format!("{why}, {what}"),
+        },
+        None => why,
+    }
+}
+
 /// Each object's count and why it is there, and the words not used.
 pub(super) fn understood(
     d: &Draft,
@@ -253,12 +269,16 @@ pub(super) fn understood(
             .map(|(c, o)| crate::plan::understood::Because {
                 category: c.clone(),
                 count: o.number,
-                why: crate::plan::understood::why(
+                why: held(
+                    d,
                     c,
-                    inferred,
-                    named,
-                    scene.map(|s| s.name.as_str()),
-                    defaults.contains_key(c),
+                    crate::plan::understood::why(
+                        c,
+                        inferred,
+                        named,
+                        scene.map(|s| s.name.as_str()),
+                        defaults.contains_key(c),
+                    ),
                 ),
             })
             .collect(),

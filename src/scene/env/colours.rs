@@ -227,8 +227,55 @@ fn clinical(kind: Option<&str>, text: &str) -> bool {
     crate::plan::finish::clinical(kind, text)
 }
 
-/// The longest scene-kind name or synonym of the knowledge base in `text` (whole words).
+/// The place the scene is said to be in, when its kind has a look of its own: a scene-kind
+/// name or synonym right after "in the", "in a", "inside my", ... among the words naming the
+/// place (before "with", "where", a comma): "a home gym in the garage" has the garage's floor
+/// and walls, "a reading corner in the living room" the living room's.
+fn setting_kind(text: &str) -> Option<&'static str> {
+    let head = text
+        .to_lowercase()
+        .split([',', ';', ':', '.'])
+        .next()
+        .unwrap_or("")
+        .to_string();
+    let w = words(&head);
+    let end = w
+        .iter()
+        .position(|x| ["with", "where", "which", "that", "and"].contains(&x.as_str()))
+        .unwrap_or(w.len());
+    let w = &w[..end];
+    let mut best: Option<(&str, usize)> = None;
+    for i in 0..w.len().saturating_sub(2) {
+        if !["in", "inside"].contains(&w[i].as_str())
+            || !["a", "an", "the", "my", "our", "their", "his", "her"].contains(&w[i + 1].as_str())
+        {
+            continue;
+        }
+        for s in &KnowledgeBase::builtin().scenes {
+            if !KINDS.iter().any(|x| x.0 == s.name) {
+                continue;
+            }
+            for name in std::iter::once(&s.name).chain(&s.synonyms) {
+                let n = words(name);
+                let at = &w[i + 2..];
+                if at.len() >= n.len()
+                    && at[..n.len()] == n[..]
+                    && best.is_none_or(|(_, l)| n.len() > l)
+                {
+                    best = Some((s.name.as_str(), n.len()));
+                }
+            }
+        }
+    }
+    best.map(|(n, _)| n)
+}
+
+/// The kind whose look the scene takes: the place it is said to be in (`setting_kind`), else
+/// the longest scene-kind name or synonym of the knowledge base in `text` (whole words).
 fn scene_kind(text: &str) -> Option<&'static str> {
+    if let Some(k) = setting_kind(text) {
+        return Some(k);
+    }
     let t = format!(" {} ", words(text).join(" "));
     let mut best: Option<(&str, usize)> = None;
     for s in &KnowledgeBase::builtin().scenes {
