@@ -169,7 +169,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
     } = d;
     let mut rows: BTreeMap<String, u32> = BTreeMap::new();
     for (m, c) in r.mentions.iter().zip(cats.iter()) {
-        if m.rows > 0 && !m.negated {
+        if m.rows > 0 && !m.negated && !super::relations::hung(c) {
             let e = rows.entry(c.clone()).or_insert(0);
             *e = (*e).max(m.rows);
         }

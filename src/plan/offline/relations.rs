@@ -260,5 +260,47 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             }
         }
     }
+    // things hung on a wall asked in a row ("four posters in a row on the wall"): a run along
+    // one wall, each beside the one before, never rows standing on the floor
+    for (i, m) in r.mentions.iter().enumerate() {
+        let c = meant(d, i);
+        let n = counts.get(c).copied().unwrap_or(0);
+        if m.negated || !(m.in_rows || m.rows > 0) || n < 2 || !on_wall(c) {
+            continue;
+        }
+        let width = spec.objects.get(c).map_or(f64::INFINITY, |o| o.size[0]);
+        if n as f64 * width > RUN_ON_A_WALL {
+            // too long a run for one wall of a room: spread over the walls
+            continue;
+        }
+        for k in 2..=n {
+            push(
+                spec,
+                format!("{c}{k}"),
+                RelationKind::Next,
+                format!("{c}{}", k - 1),
+                true,
+            );
+        }
+    }
     crate::plan::groups::apply_named(spec, &keep, &d.named);
+}
+
+/// The longest run of things hung side by side on one wall (metres of their widths).
+const RUN_ON_A_WALL: f64 = 4.5;
+
+fn class(category: &str) -> crate::plan::gcp::classes::Class {
+    crate::plan::gcp::classes::Placements::builtin().class(category)
+}
+
+/// Whether a category hangs on a wall: asked "in a row", it stands in a run there.
+fn on_wall(category: &str) -> bool {
+    matches!(class(category), crate::plan::gcp::classes::Class::OnWall(_))
+}
+
+/// Whether a category hangs on a wall or from the ceiling: asked "in a row", it never stands
+/// in rows on the floor.
+pub(super) fn hung(category: &str) -> bool {
+    use crate::plan::gcp::classes::Class;
+    matches!(class(category), Class::OnWall(_) | Class::Ceiling)
 }
