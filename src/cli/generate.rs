@@ -137,10 +137,17 @@ fn locked(
         let own_run = out.join("spec.json").is_file() || existing.is_file();
         if !(a.resume && own_run) {
             let what = match read_scene(out) {
+                Ok(s)
+                    if !dreamscene::scene::dir::missing_files(out, &s).is_empty()
+                        || super::scene_renders::renders_missing(out) =>
+                {
+                    "an unfinished scene: files or views are missing".to_string()
+                }
                 Ok(s) if !s.history.is_empty() => {
                     format!("a scene with {} edits", s.history.len())
                 }
                 Ok(_) => "a scene".to_string(),
+                Err(_) if own_run => "an unfinished run: a plan, no scene yet".to_string(),
                 Err(_) => format!("{} entries", found.len()),
             };
             bail!(

@@ -16,6 +16,20 @@ const BACKGROUND: [f32; 3] = [0.0; 3];
 /// Renders the views `renders/cameras.json` lists that are not there, and the contact sheet
 /// when it is missing (all of them, chosen by what they show, when cameras.json itself is
 /// missing and views were asked for) from `scene.ply`. Says what it rendered, if anything.
+/// Whether the views `renders/cameras.json` lists, or the contact sheet, are missing: a run
+/// stopped while it rendered.
+pub(super) fn renders_missing(out: &Path) -> bool {
+    let dir = out.join("renders");
+    let Ok(cams) = dreamscene::camera::read_cameras(&dir.join("cameras.json")) else {
+        return false;
+    };
+    !cams.is_empty()
+        && (cams
+            .iter()
+            .any(|c| !dir.join(format!("{}.png", c.img_name)).is_file())
+            || !dir.join(SHEET).is_file())
+}
+
 pub(super) fn complete_renders(out: &Path, a: &GenerateArgs) -> Result<Option<String>> {
     let dir = out.join("renders");
     let cams_path = dir.join("cameras.json");
