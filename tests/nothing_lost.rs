@@ -105,6 +105,14 @@ fn resume_renders_the_views_cameras_json_lists_that_are_missing() {
     // As if killed during the render stage: two of the three views are missing.
     std::fs::remove_file(png(1)).expect("remove");
     std::fs::remove_file(png(2)).expect("remove");
+    // run again without --resume: refused, saying the scene is unfinished
+    let o = draft(&out, "3", &[]);
+    assert!(!o.status.success(), "refused");
+    assert!(
+        stderr(&o).contains("unfinished scene") && stderr(&o).contains("--resume"),
+        "{}",
+        stderr(&o)
+    );
     let o = draft(&out, "3", &["--resume"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let said = String::from_utf8_lossy(&o.stdout);
@@ -127,6 +135,13 @@ fn resume_renders_the_views_cameras_json_lists_that_are_missing() {
     assert!(
         String::from_utf8_lossy(&o.stdout).contains("nothing to do"),
         "complete now"
+    );
+    // complete: a rerun's refusal no longer calls it unfinished
+    let o = draft(&out, "3", &[]);
+    assert!(
+        !o.status.success() && !stderr(&o).contains("unfinished scene"),
+        "{}",
+        stderr(&o)
     );
     let _ = std::fs::remove_dir_all(&root);
 }
