@@ -96,12 +96,30 @@ fn format_of(out: &std::path::Path) -> Option<FormatArg> {
 }
 
 pub fn run(a: Args) -> Result<()> {
+    let out = a.out.clone();
+    super::saying_if_replaced(&out, || write(a))
+}
+
+fn write(a: Args) -> Result<()> {
     let Some(format) = a.format.or_else(|| format_of(&a.out)) else {
         bail!(
             "{}: give --format ply|splat|spz|glb (the extension names none)",
             a.out.display()
         );
     };
+    let format = Format::from(format);
+    if a.out.is_dir() {
+        bail!(
+            "{} is a folder: give a file for the export",
+            a.out.display()
+        );
+    }
+    if a.compat && format != Format::Ply {
+        bail!("--compat applies to --format ply only");
+    }
+    if a.scene_frame && format == Format::Glb {
+        bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
+    }
     if let (Some(asked), Some(named)) = (a.format, format_of(&a.out)) {
         if asked != named {
             bail!(
@@ -112,20 +130,6 @@ pub fn run(a: Args) -> Result<()> {
                 Format::from(asked).name()
             );
         }
-    }
-    let format = Format::from(format);
-    if a.out.is_dir() {
-        bail!(
-            "{} is a folder: give a file for the export",
-            a.out.display()
-        );
-    }
-    super::say_if_replacing(&a.out);
-    if a.compat && format != Format::Ply {
-        bail!("--compat applies to --format ply only");
-    }
-    if a.scene_frame && format == Format::Glb {
-        bail!("--scene-frame does not apply to --format glb (glTF is y up by definition)");
     }
     // A scene with a timeline exported to glb without --time keeps its motion: one node per
     // instance, animated as the timeline says.

@@ -136,12 +136,16 @@ pub fn check_writable(file: &Path) -> Result<()> {
     check_writable_dir(&dir).with_context(|| format!("cannot write {}", file.display()))
 }
 
-/// Says in one line that the output file `file` already exists and is being replaced (an
-/// export or a video written again over the last one), so nothing is overwritten unsaid.
-pub fn say_if_replacing(file: &Path) {
-    if file.is_file() {
-        eprintln!("note: {} exists: it is replaced", file.display());
+/// Runs `write`, which writes the output file `file`; when it succeeds over a file that was
+/// already there (an export or a video written again over the last one), says so in one line,
+/// so nothing is overwritten unsaid (a refused run keeps the old file and says only its error).
+pub fn saying_if_replaced(file: &Path, write: impl FnOnce() -> Result<()>) -> Result<()> {
+    let existed = file.is_file();
+    write()?;
+    if existed {
+        eprintln!("note: {} existed: it is replaced", file.display());
     }
+    Ok(())
 }
 
 /// Creates the folder `dir` (and its parents); a path that is a file is refused in one line

@@ -58,9 +58,13 @@ pub fn frame_count(seconds: f64, fps: f64) -> Result<usize> {
 }
 
 pub fn run(a: Args) -> Result<()> {
+    let out = a.out.clone();
+    super::saying_if_replaced(&out, || write(a))
+}
+
+fn write(a: Args) -> Result<()> {
     dreamscene::export::encode::Container::of(&a.out)?;
     super::check_writable(&a.out)?;
-    super::say_if_replacing(&a.out);
     // A scene with a timeline plays it: the motion and the camera path together.
     let (input, animated) = super::read_input(&a.input, || {
         let input = open_input(&a.input)?;

@@ -286,11 +286,12 @@ pub fn move_object(
     Ok((edit, footprints))
 }
 
-/// Whether two poses are the same to a user: under 5 mm apart, under 0.1° turned, the same scale.
+/// Whether two poses are the same (a tenth of a millimetre, a thousandth of a degree: a move
+/// by 1 mm is a move), the same scale.
 fn same_pose(a: Pose, b: Pose) -> bool {
-    dist2(a.position, b.position) < 0.005
-        && (a.position[2] - b.position[2]).abs() < 0.005
-        && wrap_yaw(a.yaw - b.yaw).abs() < 0.1
+    dist2(a.position, b.position) < 1e-4
+        && (a.position[2] - b.position[2]).abs() < 1e-4
+        && wrap_yaw(a.yaw - b.yaw).abs() < 1e-3
         && (0..3).all(|k| (a.scale[k] - b.scale[k]).abs() < 1e-6)
 }
 
