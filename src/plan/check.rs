@@ -254,7 +254,9 @@ pub fn relation_holds_box(sb: &Box2, rel: RelationKind, ob: &Box2) -> bool {
                 && facing_footprint_error(sb, ob) <= 30.0
         }
         RelationKind::Over => ob.contains(sb.c) && (sb.z0 - top).abs() <= 0.05,
-        RelationKind::Under => ob.contains(sb.c) && sb.z1 <= top + 1e-6,
+        // below it, one over the other: a thing on a wall (a mirror, 4 cm deep) is over a sink
+        // whose footprint holds its centre, though the sink's centre is not in the mirror's
+        RelationKind::Under => (ob.contains(sb.c) || sb.contains(ob.c)) && sb.z1 <= top + 1e-6,
         RelationKind::Around => {
             let beside = (l[0].abs() <= hw + 1e-9) != (l[1].abs() <= hd + 1e-9);
             beside
