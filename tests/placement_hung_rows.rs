@@ -1,7 +1,8 @@
 //! Things hung on a wall asked "in a row" hang in a run along the walls at their height (each beside
 //! the one before; a long run may turn a corner), never in
 //! rows standing on the floor; things hung from the ceiling asked in a row hang from it. Prompts of
-//! no corpus, over three seeds.
+//! no corpus, over three seeds. A thing under one hung on a wall (a sink under a mirror) holds
+//! that relation.
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
 use dreamscene::plan::spec::{Layout, PlacedObject};
@@ -78,6 +79,30 @@ fn ceiling_things_in_a_row_hang_from_the_ceiling() {
                     o.position
                 );
             }
+        }
+    }
+}
+
+#[test]
+fn a_thing_under_one_hung_on_the_wall_holds_its_relation() {
+    for prompt in [
+        "a bathroom with a sink under a mirror, a toilet and a bathtub",
+        "a bathroom with a mirror above the sink",
+        "a hallway with a console table under a mirror",
+    ] {
+        for seed in 0..3 {
+            let l = lay(prompt, seed);
+            assert!(
+                l.unsatisfied.is_empty(),
+                "{prompt} seed {seed}: {:?}",
+                l.unsatisfied
+            );
+            let mirror = of(&l, "mirror");
+            assert_eq!(mirror.len(), 1, "{prompt}");
+            assert!(
+                mirror[0].placed_by == dreamscene::plan::spec::PlacedBy::Constraint,
+                "{prompt} seed {seed}: the mirror by fallback"
+            );
         }
     }
 }
