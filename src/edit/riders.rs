@@ -1,7 +1,7 @@
 //! What rests on an instance moves with it: the computer and printer on a desk, the lamp on a
 //! nightstand, the vase on a shelf's top. A rider stands on its carrier's top (its foot within
-//! [`TOP_GAP`] of the top) with its centre over the carrier's footprint; things on riders ride
-//! too. A carrier is at least [`CARRIER_HEIGHT`] tall (a rug carries nothing: a sofa standing on
+//! 5 cm of the top) with its centre over the carrier's footprint; things on riders ride
+//! too. A carrier is at least 20 cm tall (a rug carries nothing: a sofa standing on
 //! it stays when the rug moves).
 use super::ops::{with_pose, Pose};
 use super::state::SceneState;
