@@ -9,6 +9,7 @@
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
 mod common;
+use common::edit;
 #[allow(dead_code, reason = "this test uses some of the shared export helpers")]
 mod export_support;
 use dreamscene::camera::object::{orbit_camera, ObjectFrame};
@@ -89,16 +90,6 @@ fn thin(path: &Path, k: usize) {
         *s = s.map(|v| v + grow);
     }
     write_ply(path, &t).unwrap();
-}
-
-fn edit(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-        .env_remove("DREAMSCENE_MODELS")
-        .arg("edit")
-        .arg(dir)
-        .args(args)
-        .output()
-        .unwrap()
 }
 
 fn ok(o: &std::process::Output) -> String {

@@ -9,13 +9,14 @@
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
+mod common;
+use common::edit;
 use dreamscene::export::labels::write_labelled_scene;
 use dreamscene::generate::scene::write_draft_scene;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::spec::SceneSpec;
 use dreamscene::scene::dir::read_scene;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("ds-riders-{name}-{}", std::process::id()));
@@ -74,16 +75,6 @@ fn draft(name: &str) -> PathBuf {
     cam.img_name = "view".into();
     dreamscene::camera::write_cameras(&d.join("renders/cameras.json"), &[cam]).unwrap();
     d
-}
-
-fn edit(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_dreamscene"))
-        .env_remove("DREAMSCENE_MODELS")
-        .arg("edit")
-        .arg(dir)
-        .args(args)
-        .output()
-        .unwrap()
 }
 
 fn pose(dir: &Path, id: &str) -> ([f64; 3], f64) {

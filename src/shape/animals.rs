@@ -223,7 +223,7 @@ fn table() -> &'static Table {
 
 /// The table's rows (the `default` row among them).
 pub fn rows() -> Vec<(&'static str, &'static Animal)> {
-    table().rows.iter().map(|(n, a)| (n.as_str(), a)).collect()
+    table().listed()
 }
 
 /// The table's lines that do not parse, with why (for the tests).
@@ -234,12 +234,7 @@ pub fn bad_lines() -> Vec<String> {
 /// The row `default`, drawn for a quadruped the table does not list.
 pub fn default_animal() -> &'static Animal {
     static D: OnceLock<Animal> = OnceLock::new();
-    table()
-        .rows
-        .iter()
-        .find(|(n, _)| n == "default")
-        .map(|(_, a)| a)
-        .unwrap_or_else(|| D.get_or_init(Animal::default))
+    super::rows::default_row(table(), &D)
 }
 
 /// A category's row (by its name or a synonym), if the table lists it.
@@ -248,5 +243,5 @@ pub fn animal_of(category: &str) -> Option<&'static Animal> {
     let c = crate::plan::kb::KnowledgeBase::builtin()
         .object(&c)
         .map_or(c, |o| o.category.clone());
-    table().rows.iter().find(|(n, _)| *n == c).map(|(_, a)| a)
+    table().row(&c)
 }

@@ -191,7 +191,7 @@ fn table() -> &'static Table {
 
 /// The table's rows (the `default` row among them).
 pub fn rows() -> Vec<(&'static str, &'static Bird)> {
-    table().rows.iter().map(|(n, a)| (n.as_str(), a)).collect()
+    table().listed()
 }
 
 /// The table's lines that do not parse, with why (for the tests).
@@ -202,12 +202,7 @@ pub fn bad_lines() -> Vec<String> {
 /// The row `default`, drawn for a bird the table does not list.
 pub fn default_bird() -> &'static Bird {
     static D: OnceLock<Bird> = OnceLock::new();
-    table()
-        .rows
-        .iter()
-        .find(|(n, _)| n == "default")
-        .map(|(_, a)| a)
-        .unwrap_or_else(|| D.get_or_init(Bird::default))
+    super::rows::default_row(table(), &D)
 }
 
 /// A category's row (by its name or a synonym; "parrot" for an unknown "grey parrot"), if the
@@ -216,7 +211,7 @@ pub fn bird_of(category: &str) -> Option<&'static Bird> {
     let c = category.trim().to_lowercase();
     let kb = crate::plan::kb::KnowledgeBase::builtin();
     let name = kb.object(&c).map_or(c.clone(), |o| o.category.clone());
-    let find = |n: &str| table().rows.iter().find(|(r, _)| r == n).map(|(_, a)| a);
+    let find = |n: &str| table().row(n);
     find(&name).or_else(|| {
         let head = c.rsplit(' ').next()?;
         find(

@@ -182,3 +182,14 @@ pub fn external_tool(name: &str, problem: Option<String>) -> bool {
     }
     true
 }
+
+/// Runs `dreamscene edit DIR ARGS…` without models (the scene's own prior), as a user would.
+pub fn edit(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_dreamscene"))
+        .env_remove("DREAMSCENE_MODELS")
+        .arg("edit")
+        .arg(dir)
+        .args(args)
+        .output()
+        .unwrap()
+}
