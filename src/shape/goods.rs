@@ -336,6 +336,18 @@ pub struct Bay {
     pub room: f64,
 }
 
+/// What one item of a row may use: from `x` to the bay's end `x1`, between the bay's back `y0` and
+/// its front `y1`, standing on `z` with `room` of height above it.
+#[derive(Clone, Copy)]
+struct Slot {
+    x: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+    z: f64,
+    room: f64,
+}
+
 /// Lays a row of `goods` along `bay`, each item's width drawn from `r`; products of one kind
 /// stand in facings (a few of the same side by side) as in a shop.
 pub fn fill(b: &mut Builder, goods: Goods, bay: Bay, r: &mut Draws) {
@@ -353,6 +365,14 @@ pub fn fill(b: &mut Builder, goods: Goods, bay: Bay, r: &mut Draws) {
     let front = y0 + depth;
     let mut x = x0;
     while x < x1 - 0.03 {
+        let slot = Slot {
+            x,
+            x1,
+            y0,
+            y1: front,
+            z,
+            room,
+        };
         let used = match goods {
             Goods::Books => {
                 let bw = (0.04 * (0.6 + 0.8 * r.next())).min(x1 - x);
@@ -368,12 +388,12 @@ pub fn fill(b: &mut Builder, goods: Goods, bay: Bay, r: &mut Draws) {
                 }
                 bw
             }
-            Goods::Loaves => loaves(b, r, x, x1, y0, front, z, room),
-            Goods::Groceries | Goods::Medicine => packs(b, goods, r, x, x1, y0, front, z, room),
-            Goods::Toys => toy(b, r, x, x1, y0, front, z, room),
-            Goods::Boxes => carton(b, r, x, x1, y0, front, z, room),
-            Goods::Bottles => bottles(b, r, x, x1, y0, front, z, room),
-            Goods::Clothes => folded(b, r, x, x1, y0, front, z, room),
+            Goods::Loaves => loaves(b, r, slot),
+            Goods::Groceries | Goods::Medicine => packs(b, goods, r, slot),
+            Goods::Toys => toy(b, r, slot),
+            Goods::Boxes => carton(b, r, slot),
+            Goods::Bottles => bottles(b, r, slot),
+            Goods::Clothes => folded(b, r, slot),
             Goods::Baskets => basket(
                 b,
                 goods.accent(r.next()),
@@ -447,20 +467,15 @@ fn basket(b: &mut Builder, v: u32, xa: f64, xb: f64, y0: f64, y1: f64, z: f64, h
 }
 
 /// Loaves lying along the board, two deep, and now and then a wicker basket of rolls.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn loaves(
-    b: &mut Builder,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn loaves(b: &mut Builder, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let g = Goods::Loaves;
     if r.next() < 0.25 && x1 - x > 0.3 {
         let h = (0.45 * room).min(0.12);
@@ -508,21 +523,15 @@ fn loaves(
 /// A facing of packs (or, for groceries, now and then cans): three to five of one product side
 /// by side, each a box with a pale band across its face; medicine packs are small white boxes
 /// with a brand's band.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn packs(
-    b: &mut Builder,
-    g: Goods,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn packs(b: &mut Builder, g: Goods, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let medicine = g == Goods::Medicine;
     let n = 3 + (r.next() * 3.0) as usize;
     let accent = g.accent(r.next());
@@ -589,20 +598,15 @@ fn packs(
 }
 
 /// One toy: a ball, a stack of blocks, a teddy or a boxed toy with a window.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn toy(
-    b: &mut Builder,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn toy(b: &mut Builder, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let g = Goods::Toys;
     let yc = 0.5 * (y0 + y1);
     let v = g.accent(r.next());
@@ -666,20 +670,15 @@ fn toy(
 }
 
 /// A carton with a tape strip over its top and down its face, or a plastic bin with a lid rim.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn carton(
-    b: &mut Builder,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn carton(b: &mut Builder, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let g = Goods::Boxes;
     // No sliver of a carton at the end of a board: the gap stays empty.
     if x1 - x < 0.15 {
@@ -717,20 +716,15 @@ fn carton(
 }
 
 /// A cluster of bottles and jars of coloured glass with corks and paper labels.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn bottles(
-    b: &mut Builder,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn bottles(b: &mut Builder, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let g = Goods::Bottles;
     let rad = (0.03 + 0.02 * r.next()).min(0.25 * (y1 - y0));
     if 2.0 * rad > x1 - x {
@@ -790,20 +784,15 @@ fn bottles(
 
 /// A stack of folded clothes: three to six folds of one colour family, each a flat slab with a
 /// rounded fold edge to the front.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one call fills one slot of a bay"
-)]
-fn folded(
-    b: &mut Builder,
-    r: &mut Draws,
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
-) -> f64 {
+fn folded(b: &mut Builder, r: &mut Draws, slot: Slot) -> f64 {
+    let Slot {
+        x,
+        x1,
+        y0,
+        y1,
+        z,
+        room,
+    } = slot;
     let g = Goods::Clothes;
     let w = (0.28 + 0.06 * r.next()).min(x1 - x);
     let fold = 0.045;
