@@ -280,6 +280,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             }
         }
     }
+    thin_shots(&mut positions, &mut targets, scene.objects.len());
     let max_pitch = view_pitch(scene).to_radians().tan();
     // Every position looks at every target; the room's corners also look at its centre through
     // the widest lens: the views that fill in where a small room runs short of good ones.
@@ -306,14 +307,15 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
     }
     let piece = pieces::piece_of(scene);
     let focal_object = focal(scene).map(|f| f.0);
-    let mut cands = vec![];
-    for (p, t, ti, fov, turned) in shots {
-        let (t, looked_at) = (&t, &targets[ti].1);
-        let p = &p;
-        {
+    use rayon::prelude::*;
+    let cands: Vec<Candidate> = shots
+        .into_par_iter()
+        .filter_map(|(p, t, ti, fov, turned)| {
+            let (t, looked_at) = (&t, &targets[ti].1);
+            let p = &p;
             let d = (t[0] - p[0]).hypot(t[1] - p[1]);
             if d < 0.8 {
-                continue;
+                return None;
             }
             // Look at the target's spot, no steeper than MAX_PITCH_DEG, never upwards.
             let tz = t[2].max(eye - max_pitch * d).min(eye);
@@ -321,7 +323,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
             let stats = view_stats(scene, &cam);
             // A turn is a view only where it frames the room ([`sweep`]).
             if turned && !(stats.framed_well() && stats.covered >= BARE_COVER) {
-                continue;
+                return None;
             }
             let shows = scene
                 .objects
@@ -385,7 +387,7 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 grazing_share(scene, &cam, &shares),
             );
             let backdrop = backdrop(scene, &cam, &sparse(&shares), focal_object);
-            cands.push(Candidate {
+            Some(Candidate {
                 backdrop,
                 pillar,
                 cut,
@@ -407,10 +409,38 @@ pub fn render_views(scene: &SceneBox, count: usize, width: u32, height: u32) -> 
                 stats,
                 shows,
                 dir,
-            });
-        }
-    }
+            })
+        })
+        .collect();
     pick::pick(scene, cands, count)
+}
+
+/// The most object boxes (shots, a position looking at a target, times objects) scored for
+/// one scene. A hall of a hundred chairs has a thousand pairs of neighbours and hundreds of spots
+/// along its walls; beyond this, the pairs' targets are thinned to one a cell, then spots are
+/// skipped evenly, so a large scene's views take seconds, not minutes. Rooms of everyday size
+/// (25 objects, 60,000 shots) stay under it.
+const MAX_BOX_SHOTS: usize = 1_500_000;
+/// The cell (metres) in which thinned pair targets keep one.
+const TARGET_CELL: f64 = 0.75;
+
+fn thin_shots(
+    positions: &mut Vec<[f64; 3]>,
+    targets: &mut Vec<([f64; 3], Vec<usize>)>,
+    objects: usize,
+) {
+    let max_shots = MAX_BOX_SHOTS / objects.max(1);
+    if positions.len() * targets.len() <= max_shots {
+        return;
+    }
+    let mut cells = std::collections::BTreeSet::new();
+    targets.retain(|(t, objs)| {
+        objs.len() < 2 || cells.insert([0, 1, 2].map(|k| (t[k] / TARGET_CELL).floor() as i64))
+    });
+    let stride = (positions.len() * targets.len()).div_ceil(max_shots);
+    if stride > 1 {
+        *positions = positions.iter().step_by(stride).copied().collect();
+    }
 }
 
 /// True when `o` (its silhouette's box `rect`, `dist` metres away) stands inside `cam`'s frame

@@ -95,14 +95,74 @@ pub fn hidden_share(near: &[f64; 4], far: &[f64; 4]) -> f64 {
     overlap / ((b[2] - b[0]) * (b[3] - b[1])).max(1e-9)
 }
 
+/// A convex polygon of image points kept on the stack (a box's silhouette has at most 24
+/// corners: 20 after the near plane, one more for each side of the frame).
+#[derive(Clone, Copy)]
+pub(crate) struct Poly {
+    pts: [[f64; 2]; Poly::CAP],
+    n: usize,
+}
+
+impl Poly {
+    const CAP: usize = 32;
+
+    fn new() -> Poly {
+        Poly {
+            pts: [[0.0; 2]; Poly::CAP],
+            n: 0,
+        }
+    }
+
+    fn push(&mut self, p: [f64; 2]) {
+        if self.n < Poly::CAP {
+            self.pts[self.n] = p;
+            self.n += 1;
+        }
+    }
+}
+
+impl std::ops::Deref for Poly {
+    type Target = [[f64; 2]];
+    fn deref(&self) -> &[[f64; 2]] {
+        &self.pts[..self.n]
+    }
+}
+
 /// `o`'s box as the image sees it: clipped by the near plane, projected, its convex hull
-/// clipped to the image (pixels).
-pub(crate) fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
-    let pc = corners(o).map(|p| to_cam(cam, p));
-    let mut pts = vec![];
+/// clipped to the image (pixels). A box wholly outside one side of the view is empty at once.
+pub(crate) fn silhouette(cam: &Camera, o: &ObjectBox) -> Poly {
+    let (r, t) = cam.world_to_camera();
+    let pc = corners(o)
+        .map(|p| [0, 1, 2].map(|i| r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + t[i]));
+    let (w, h) = (cam.width as f64, cam.height as f64);
+    // The view's five sides, each `>= 0` inside: the near plane and the frame's four edges.
+    let sides = |p: &[f64; 3]| {
+        [
+            p[2] - NEAR,
+            cam.fx * p[0] + 0.5 * w * p[2],
+            0.5 * w * p[2] - cam.fx * p[0],
+            cam.fy * p[1] + 0.5 * h * p[2],
+            0.5 * h * p[2] - cam.fy * p[1],
+        ]
+    };
+    let outside = pc.iter().map(sides).fold([true; 5], |all, d| {
+        [0, 1, 2, 3, 4].map(|k| all[k] && d[k] < 0.0)
+    });
+    if outside.contains(&true) {
+        return Poly::new();
+    }
+    let mut pts = [[0.0f64; 2]; 20];
+    let mut n = 0;
+    let mut keep = |p: [f64; 3]| {
+        pts[n] = [
+            cam.fx * p[0] / p[2] + 0.5 * w,
+            cam.fy * p[1] / p[2] + 0.5 * h,
+        ];
+        n += 1;
+    };
     for (i, a) in pc.iter().enumerate() {
         if a[2] >= NEAR {
-            pts.push(*a);
+            keep(*a);
         }
         // Edges join corners that differ in one bit.
         for bit in [1, 2, 4] {
@@ -111,23 +171,57 @@ pub(crate) fn silhouette(cam: &Camera, o: &ObjectBox) -> Vec<[f64; 2]> {
                 let b = pc[j];
                 if (a[2] - NEAR) * (b[2] - NEAR) < 0.0 {
                     let t = (NEAR - a[2]) / (b[2] - a[2]);
-                    pts.push([0, 1, 2].map(|k| a[k] + t * (b[k] - a[k])));
+                    keep([0, 1, 2].map(|k| a[k] + t * (b[k] - a[k])));
                 }
             }
         }
     }
-    let (w, h) = (cam.width as f64, cam.height as f64);
-    let proj: Vec<[f64; 2]> = pts
-        .iter()
-        .map(|p| {
-            [
-                cam.fx * p[0] / p[2] + 0.5 * w,
-                cam.fy * p[1] / p[2] + 0.5 * h,
-            ]
-        })
-        .collect();
-    let hull = crate::util::convex_hull(&proj);
-    clip_to_rect(&hull, w, h)
+    clip_to_rect(&hull(&mut pts[..n]), w, h)
+}
+
+/// The convex hull of `p` (reordered), counter-clockwise from its lowest-leftmost point (the
+/// monotone chain of [`crate::util::convex_hull`], on the stack).
+fn hull(p: &mut [[f64; 2]]) -> Poly {
+    let mut q = Poly::new();
+    for &v in p.iter().filter(|v| v[0].is_finite() && v[1].is_finite()) {
+        q.push(v);
+    }
+    let pts = &mut q.pts[..q.n];
+    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    let mut m = 0;
+    for k in 0..pts.len() {
+        if m == 0 || pts[k] != pts[m - 1] {
+            pts[m] = pts[k];
+            m += 1;
+        }
+    }
+    q.n = m;
+    if m < 3 {
+        return q;
+    }
+    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    let mut out = [[0.0f64; 2]; 2 * Poly::CAP];
+    let mut len = 0;
+    // The lower chain left to right, then the upper one right to left.
+    for upper in [false, true] {
+        let start = len;
+        for k in 0..m {
+            let v = q.pts[if upper { m - 1 - k } else { k }];
+            while len >= start + 2 && cross(out[len - 2], out[len - 1], v) <= 0.0 {
+                len -= 1;
+            }
+            out[len] = v;
+            len += 1;
+        }
+        len -= 1;
+    }
+    let mut res = Poly::new();
+    for &v in &out[..len] {
+        res.push(v);
+    }
+    res
 }
 
 /// True when `o`'s box centre is in front of `cam` and inside its frame.
@@ -207,8 +301,8 @@ pub fn framing_score(scene: &SceneBox, cams: &[Camera]) -> f64 {
 }
 
 /// Sutherland–Hodgman clipping of a convex polygon to `[0, w] x [0, h]`.
-fn clip_to_rect(poly: &[[f64; 2]], w: f64, h: f64) -> Vec<[f64; 2]> {
-    let mut out = poly.to_vec();
+fn clip_to_rect(poly: &Poly, w: f64, h: f64) -> Poly {
+    let mut out = *poly;
     // (axis, bound, keep below)
     for (axis, bound, below) in [(0, 0.0, false), (0, w, true), (1, 0.0, false), (1, h, true)] {
         let inside = |p: &[f64; 2]| {
@@ -218,7 +312,7 @@ fn clip_to_rect(poly: &[[f64; 2]], w: f64, h: f64) -> Vec<[f64; 2]> {
                 p[axis] >= bound
             }
         };
-        let input = std::mem::take(&mut out);
+        let input = std::mem::replace(&mut out, Poly::new());
         for (i, a) in input.iter().enumerate() {
             let b = &input[(i + 1) % input.len()];
             let (ia, ib) = (inside(a), inside(b));

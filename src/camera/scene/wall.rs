@@ -85,7 +85,7 @@ pub fn bare_wall_share(scene: &SceneBox, cam: &Camera) -> f64 {
     if scene.scene_type == SceneType::Outdoor {
         return 0.0;
     }
-    let hulls: Vec<Vec<[f64; 2]>> = scene
+    let hulls: Vec<super::views::Poly> = scene
         .objects
         .iter()
         .chain(&scene.openings)

@@ -1,7 +1,7 @@
 //! Seats the text sets out in rows ("twelve chairs in three rows facing the piano", "three rows
 //! of five chairs facing a stage") are an audience's, not the seats drawn up to the scene's
-//! default tables: the default tables they would sit at (a classroom's school desks) are left
-//! out, and nothing else changes. Named tables stay, and seats at tables the text names keep
+//! default tables: the default tables they would sit at (a classroom's school desks, a
+//! conference room's table) are left out, and nothing else changes. Named tables stay, and seats at tables the text names keep
 //! them.
 use super::Draft;
 use crate::plan::spec::{ObjectSpec, RelationKind, SceneSpec};
@@ -12,6 +12,7 @@ pub(super) fn seats_in_rows_leave_their_tables(d: &mut Draft) {
     let Draft {
         kb,
         r,
+        scene,
         cats,
         scene_type,
         counts,
@@ -31,6 +32,7 @@ pub(super) fn seats_in_rows_leave_their_tables(d: &mut Draft) {
             !m.negated
                 && !m.reference
                 && (m.rows > 0
+                    || m.in_rows
                     || r.relations
                         .iter()
                         .any(|(s, rel, _)| s == k && *rel == RelationKind::Row))
@@ -65,15 +67,18 @@ pub(super) fn seats_in_rows_leave_their_tables(d: &mut Draft) {
     };
     let mut gone = BTreeSet::new();
     for seat in rowed {
-        // (seats round a table, a banquet's, are the table's whatever their arrangement)
-        use RelationKind::{At, AtBack};
+        // (seats round a table that is the place's own, a banquet's round tables, leave it
+        // standing; a conference room's table goes when its chairs are set out in rows)
+        use RelationKind::{Around, At, AtBack, Next};
         let Some((kind, table)) = crate::plan::groups::group_of(&probe, seat) else {
             continue;
         };
         let default_table = defaults.contains_key(&table)
             && !named.contains(&table)
             && !explicit.contains_key(&table);
-        if matches!(kind, At | AtBack) && default_table {
+        let own = scene.is_some_and(|sc| sc.own.contains(&table));
+        let drawn_up = matches!(kind, At | AtBack) || (matches!(kind, Around | Next) && !own);
+        if drawn_up && default_table {
             gone.insert(table);
         }
     }

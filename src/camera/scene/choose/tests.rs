@@ -670,3 +670,31 @@ fn views_past_the_fourth_keep_masses_and_backs_off_the_lens_while_others_are_lef
         "{total} late views, seen from behind: {backs:?}"
     );
 }
+
+#[test]
+fn a_hall_of_a_hundred_chairs_scores_a_bounded_number_of_shots() {
+    // A 10 x 10 block of chairs 0.8 m apart: a thousand neighbour pairs, hundreds of spots.
+    let mut positions: Vec<[f64; 3]> = (0..600).map(|k| [k as f64 * 0.1, 0.0, 1.5]).collect();
+    let mut targets: Vec<([f64; 3], Vec<usize>)> = vec![([0.0; 3], vec![])];
+    for i in 0..100 {
+        let c = |k: usize| [(k % 10) as f64 * 0.8, (k / 10) as f64 * 0.8, 0.5];
+        targets.push((c(i), vec![i]));
+        for j in i + 1..100 {
+            let (a, b) = (c(i), c(j));
+            if (a[0] - b[0]).hypot(a[1] - b[1]) < 3.0 {
+                targets.push(([0, 1, 2].map(|k| 0.5 * (a[k] + b[k])), vec![i, j]));
+            }
+        }
+    }
+    let singles = 101;
+    assert!(positions.len() * targets.len() * 100 > 10 * MAX_BOX_SHOTS);
+    thin_shots(&mut positions, &mut targets, 100);
+    assert!(positions.len() * targets.len() * 100 <= MAX_BOX_SHOTS);
+    // every object is still a target of its own, and spots are skipped evenly, not cut off
+    assert_eq!(targets.iter().filter(|t| t.1.len() < 2).count(), singles);
+    assert!(positions.last().unwrap()[0] > 50.0);
+    // an everyday room keeps every shot
+    let (mut p, mut t) = (positions[..40].to_vec(), targets[..60].to_vec());
+    thin_shots(&mut p, &mut t, 20);
+    assert_eq!((p.len(), t.len()), (40, 60));
+}
