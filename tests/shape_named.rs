@@ -3,12 +3,17 @@
 //! clay on a wheel head inside a round open splash pan (not a boxy appliance with a door), a
 //! sarcophagus a domed figure lid with a face at its head end (not a strapped chest), a tripod
 //! lamp three feet apart on the floor (not one pole on a round base), a mushroom a thick stalk
-//! under a domed spotted cap (not an umbrella's thin pole under a canopy). Host-only, well under
-//! a second.
+//! under a domed spotted cap (not an umbrella's thin pole under a canopy). A lake is a wide
+//! sheet of water with a boat on it (not a small stone-rimmed pond on the grass), a beach has the
+//! sea along it, and a coffee maker is a coffee machine. Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
+mod reading;
 use common::samples::{all, drawn, of, range, sized, within, Samples};
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::offline::plan_offline;
 use dreamscene::shape::{archetype_of, Role};
+use reading::{keys, number, plan};
 
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 5)
@@ -149,5 +154,100 @@ fn a_mushroom_has_a_thick_stalk_under_a_domed_spotted_cap() {
     }
     for name in ["mushroom", "toadstool"] {
         assert_eq!(archetype_of(name), "mushroom", "{name}");
+    }
+}
+
+#[test]
+fn a_lake_is_a_wide_sheet_of_water_with_no_stone_rim() {
+    for size in sized("lake", [1.5, 0.7, 1.0]) {
+        let s = at("lake", size);
+        let (w, d) = (size[0], size[1]);
+        assert!(of(&s, Role::Top).is_empty(), "{size:?}: a stone rim");
+        // Water reaches out near the box's edges all round.
+        let water = of(&s, Role::Water);
+        let (x0, x1) = range(&water, 0);
+        let (y0, y1) = range(&water, 1);
+        assert!(x1 - x0 > 0.85 * w && y1 - y0 > 0.85 * d, "{size:?}");
+        assert!(range(&all(&s), 2).1 <= 0.06, "{size:?}: not flat");
+    }
+}
+
+#[test]
+fn a_lake_is_planned_with_a_boat_floating_on_it() {
+    for prompt in [
+        "a lake with a rowing boat",
+        "a quiet lakeside with two boats and some ducks",
+    ] {
+        let spec = plan_offline(prompt);
+        assert!(number(&spec, "lake") >= 1, "{prompt}: {:?}", keys(&spec));
+        assert_eq!(number(&spec, "pond"), 0, "{prompt}: {:?}", keys(&spec));
+        for seed in 0..3 {
+            let l = layout(&spec, LayoutOptions::seeded(seed)).unwrap();
+            let lake = l.objects.iter().find(|o| o.category == "lake").unwrap();
+            let boats: Vec<_> = l
+                .objects
+                .iter()
+                .filter(|o| {
+                    ["boat", "canoe", "kayak"]
+                        .iter()
+                        .any(|b| o.category.contains(b))
+                })
+                .collect();
+            assert!(!boats.is_empty(), "{prompt}");
+            let on = boats
+                .iter()
+                .filter(|b| {
+                    let (dx, dy) = (
+                        b.position[0] - lake.position[0],
+                        b.position[1] - lake.position[1],
+                    );
+                    let (hw, hd) = (lake.size[0] / 2.0, lake.size[1] / 2.0);
+                    let (c, s) = (lake.yaw.to_radians().cos(), lake.yaw.to_radians().sin());
+                    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
+                    (lx / hw).powi(2) + (ly / hd).powi(2) < 1.0
+                })
+                .count();
+            assert!(on >= 1, "{prompt} seed {seed}: no boat on the lake");
+        }
+    }
+}
+
+#[test]
+fn a_beach_lies_along_the_sea_with_surf_at_the_shore() {
+    for prompt in [
+        "a beach by the sea",
+        "a sandy beach with two sun loungers",
+        "a family picnic on the seashore",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "sea"), 1, "{prompt}: {:?}", keys(&s));
+    }
+    for size in sized("sea", [1.5, 0.6, 1.0]) {
+        let s = at("sea", size);
+        let hd = size[1] / 2.0;
+        let water = of(&s, Role::Water);
+        let surf = of(&s, Role::Canvas);
+        assert!(range(&water, 1).0 < -0.95 * hd, "{size:?}: no open water");
+        // The surf stands over the water, its line nearest the front.
+        assert!(
+            range(&surf, 2).1 > range(&water, 2).1,
+            "{size:?}: surf under water"
+        );
+        assert!(
+            range(&surf, 1).1 > 0.5 * hd,
+            "{size:?}: no surf at the shore"
+        );
+    }
+}
+
+#[test]
+fn a_coffee_maker_is_a_coffee_machine() {
+    for prompt in [
+        "a kitchen with a coffee maker on the counter",
+        "a small office kitchenette with a coffee maker and a microwave",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "coffee machine"), 1, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "maker"), 0, "{prompt}: {:?}", keys(&s));
     }
 }

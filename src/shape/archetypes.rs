@@ -586,6 +586,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sarcophagus", nm::sarcophagus, [Body, Top], [Body => [0.70, 0.52, 0.22], Top => [0.80, 0.62, 0.26], Frame => [0.55, 0.50, 0.44], Skin => [0.92, 0.74, 0.30], Canvas => [0.12, 0.26, 0.55], Handle => [0.88, 0.70, 0.25]]),
     arch!("tripod_lamp", nm::tripod_lamp, [Shade], [Frame => [0.50, 0.34, 0.20], Metal => [0.20, 0.20, 0.21], Shade => [0.93, 0.90, 0.82], Light => [1.0, 0.92, 0.70]]),
     arch!("mushroom", nm::mushroom, [Shade], [Shade => [0.82, 0.12, 0.10], Trunk => [0.93, 0.90, 0.82], Interior => [0.90, 0.85, 0.74], Canvas => [0.97, 0.96, 0.93]]),
+    arch!("lake", nm::lake, [Water], [Water => [0.20, 0.42, 0.55], Soil => [0.40, 0.33, 0.22], Foliage => [0.45, 0.55, 0.25]]),
+    arch!("sea", nm::sea, [Water], [Water => [0.12, 0.40, 0.60], Soil => [0.80, 0.70, 0.50], Canvas => [0.95, 0.97, 0.98]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

@@ -196,3 +196,51 @@ pub fn mushroom(b: &mut Builder) {
         }
     }
 }
+
+/// A lake: a wide sheet of water with no stone rim, its outline a few overlapping lobes, a band
+/// of muddy shore just under its edge all round; flat, so that a boat can float on it.
+pub fn lake(b: &mut Builder) {
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
+    let zw = b.h.min(0.05);
+    // Lobes: (centre x, centre y, radius x, radius y) as fractions of the half size.
+    const LOBES: [[f64; 4]; 4] = [
+        [0.0, 0.0, 0.8, 0.78],
+        [-0.38, 0.3, 0.6, 0.62],
+        [0.42, -0.25, 0.56, 0.7],
+        [0.3, 0.45, 0.52, 0.5],
+    ];
+    for [cx, cy, rx, ry] in LOBES {
+        let c = [cx * hw, cy * hd, 0.0];
+        // Flat discs, no walls: where lobes overlap no seam shows.
+        for (role, k, z) in [(Soil, 1.0, 0.5 * zw), (Water, 0.94, zw)] {
+            let disc = vec![[0.0, z], [k * rx * hw, z]];
+            b.revolved(
+                role,
+                0,
+                c,
+                super::parts::IDENTITY,
+                ry * hd / (rx * hw),
+                disc,
+            );
+        }
+    }
+}
+
+/// The sea: water out to the size box's back and sides, and at its front (+y, towards the land)
+/// a strip of wet sand by a white line of surf and the lines of two waves behind it, standing a
+/// little over the water; flat.
+pub fn sea(b: &mut Builder) {
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
+    let zw = 0.6 * b.h;
+    let shore = hd - (0.12 * b.d).min(1.5);
+    b.cuboid(Soil, [-hw, shore, 0.0], [hw, hd, 0.5 * zw]);
+    b.cuboid(Water, [-hw, -hd, 0.0], [hw, shore, zw]);
+    // Surf along the shore and two waves behind it, each a low white ridge.
+    for (k, y) in [shore, shore - 0.15 * b.d, shore - 0.35 * b.d]
+        .iter()
+        .enumerate()
+    {
+        let t = (0.03 * b.d).min(0.3) / (1.0 + k as f64);
+        b.cuboid(Canvas, [-hw, y - t, 0.0], [hw, *y, b.h]);
+    }
+}
