@@ -60,6 +60,7 @@ use super::market as mk;
 use super::materials::{Rgb, Role};
 use super::mirrors as mi;
 use super::more as m;
+use super::named as nm;
 use super::nursery as nu;
 use super::officefit as of;
 use super::orchard as oc;
@@ -581,6 +582,12 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("paper_lantern", tx::paper_lantern, [Shade], [Shade => [0.98, 0.95, 0.86], Frame => [0.12, 0.12, 0.13], Metal => [0.85, 0.82, 0.74]]),
     arch!("potted_palm", pt::potted_palm, [Foliage], [Foliage => [0.26, 0.52, 0.20], Trunk => [0.42, 0.48, 0.26], Pot => [0.86, 0.85, 0.82]]),
     arch!("standing_statue", ef::standing_statue, [Body, Top], [Body => [0.90, 0.89, 0.86], Top => [0.86, 0.85, 0.82]]),
+    arch!("pottery_wheel", nm::pottery_wheel, [Body], [Body => [0.90, 0.90, 0.88], Top => [0.62, 0.64, 0.66], Frame => [0.20, 0.20, 0.21], Metal => STEEL, Soil => [0.66, 0.44, 0.32], Handle => [0.15, 0.15, 0.16], Tyre => BLACK]),
+    arch!("sarcophagus", nm::sarcophagus, [Body, Top], [Body => [0.70, 0.52, 0.22], Top => [0.80, 0.62, 0.26], Frame => [0.55, 0.50, 0.44], Skin => [0.92, 0.74, 0.30], Canvas => [0.12, 0.26, 0.55], Handle => [0.88, 0.70, 0.25]]),
+    arch!("tripod_lamp", nm::tripod_lamp, [Shade], [Frame => [0.50, 0.34, 0.20], Metal => [0.20, 0.20, 0.21], Shade => [0.93, 0.90, 0.82], Light => [1.0, 0.92, 0.70]]),
+    arch!("mushroom", nm::mushroom, [Shade], [Shade => [0.82, 0.12, 0.10], Trunk => [0.93, 0.90, 0.82], Interior => [0.90, 0.85, 0.74], Canvas => [0.97, 0.96, 0.93]]),
+    arch!("lake", nm::lake, [Water], [Water => [0.20, 0.42, 0.55], Soil => [0.40, 0.33, 0.22], Foliage => [0.45, 0.55, 0.25]]),
+    arch!("sea", nm::sea, [Water], [Water => [0.12, 0.40, 0.60], Soil => [0.80, 0.70, 0.50], Canvas => [0.95, 0.97, 0.98]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

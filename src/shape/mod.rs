@@ -79,6 +79,7 @@ mod market;
 pub mod materials;
 mod mirrors;
 mod more;
+mod named;
 mod nursery;
 mod officefit;
 mod orchard;
