@@ -2,6 +2,7 @@
 //! edit recorded in `scene.json`'s history and `undo` to take it back.
 use anyhow::{bail, Context as _, Result};
 use dreamscene::diffusion::runtime::Provider;
+use dreamscene::edit::destination;
 use dreamscene::edit::ops::{self, MoveFlags, Pose};
 use dreamscene::edit::parse;
 use dreamscene::edit::reopt::{self, ReoptConfig};
@@ -519,7 +520,20 @@ fn resolve_id(state: &SceneState, name: &str) -> Result<String> {
 /// The instance and pose a sentence asks for (`default` is "it").
 fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Result<(String, Pose)> {
     let objects = state.id_categories();
-    let cmd = parse::parse(text, &objects, default).map_err(anyhow::Error::msg)?;
+    let cmd = match parse::parse(text, &objects, default) {
+        Ok(cmd) => cmd,
+        Err(e) => {
+            // not a motion: a place ("under the window", "into the corner")
+            let id = match default {
+                Some(id) => id.to_string(),
+                None => parse::subject(text, &objects).context(e.clone())?,
+            };
+            let Some(to) = destination::destination(state, &id, text) else {
+                bail!(e);
+            };
+            return Ok((id.clone(), destination::place_at(state, &id, &to)?));
+        }
+    };
     let id = cmd
         .subject
         .clone()

@@ -6,6 +6,7 @@
 //! timeline maths live in [`crate::scene::timeline`].
 pub mod animate;
 pub mod commit;
+pub mod destination;
 pub mod ops;
 pub mod parse;
 pub mod reopt;

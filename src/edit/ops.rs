@@ -171,20 +171,22 @@ pub fn move_object(
 ) -> Result<(Edit, Vec<Box2>)> {
     let before = state.object(id)?.clone();
     let mut pose = pose;
-    let mut next = with_pose(state, id, pose)?;
+    // its seats go with it: what it may not run into is the rest
+    let seats = super::riders::seats(state, id);
+    let mut alone = state.clone();
+    alone.scene.objects.retain(|o| !seats.contains(&o.id));
     let mut notes = vec![];
-    let problems = next.collisions(id, state);
+    let problems = with_pose(&alone, id, pose)?.collisions(id, &alone);
     if !problems.is_empty() {
         if force {
             notes.push(format!("placed despite: {} (--force)", problems.join("; ")));
-        } else if let Some((p, cand)) = nearest_free(state, id, pose)? {
+        } else if let Some((p, _)) = nearest_free(&alone, id, pose)? {
             notes.push(format!(
                 "the asked pose collides ({}); the nearest free pose is {:.2} m from it",
                 problems.join("; "),
                 dist2(p.position, pose.position)
             ));
             pose = p;
-            next = cand;
         } else {
             return Err(EditError::Collision(problems.join("; ")));
         }
@@ -199,10 +201,12 @@ pub fn move_object(
             ))
         });
     }
+    let next = with_pose(state, id, pose)?;
     let (carried, riding) = super::riders::carry_riders(state, next, id, Pose::of(&before))?;
-    next = carried;
+    let (carried, seats) = super::riders::carry_seats(state, carried, id, Pose::of(&before))?;
+    let mut next = carried;
     let mut footprints = vec![state.box_of(&before), next.box_of(next.object(id)?)];
-    for r in &riding {
+    for r in riding.iter().chain(&seats) {
         footprints.push(state.box_of(state.object(r)?));
         footprints.push(next.box_of(next.object(r)?));
     }
@@ -233,6 +237,12 @@ pub fn move_object(
         notes.push(format!(
             "{} move with {id}: they rest on it",
             riding.join(", ")
+        ));
+    }
+    if !seats.is_empty() {
+        notes.push(format!(
+            "{} move with {id}: they are its seats",
+            seats.join(", ")
         ));
     }
     let broken: Vec<&Relation> = state

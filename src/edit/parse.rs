@@ -220,6 +220,12 @@ fn mentions(t: &str, objects: &[(String, String)]) -> Vec<Mention> {
     out
 }
 
+/// The first instance `text` names (what moves in a sentence that names no other subject).
+pub fn subject(text: &str, objects: &[(String, String)]) -> Option<String> {
+    let lower = text.to_lowercase().replace(['’', '\''], "");
+    mentions(&lower, objects).first().map(|m| m.id.clone())
+}
+
 /// Parses `text` against the scene's instances `(id, category)`. `default` is the instance the
 /// caller named (what "it" is, and what moves when the sentence names none).
 pub fn parse(

@@ -2,10 +2,12 @@
 //! nightstand, the vase on a shelf's top. A rider stands on its carrier's top (its foot within
 //! 5 cm of the top) with its centre over the carrier's footprint; things on riders ride
 //! too. A carrier is at least 20 cm tall (a rug carries nothing: a sofa standing on
-//! it stays when the rug moves).
+//! it stays when the rug moves). The seats of a desk or a table (its chair) go with it too,
+//! keeping their place at it, where they land free.
 use super::ops::{with_pose, Pose};
 use super::state::SceneState;
 use super::Result;
+use crate::plan::spec::RelationKind;
 
 /// Most a rider's foot may stand above or below its carrier's top (metres).
 const TOP_GAP: f64 = 0.05;
@@ -83,6 +85,53 @@ pub fn carry_riders(
         next = with_pose(&next, r, p)?;
     }
     Ok((next, ids))
+}
+
+/// `next` with every seat of `id` in `before` (a chair AT a desk, AROUND a table) carried with
+/// it as a rider is, each only where it lands free; the seats' ids. A seat that would collide
+/// stays for the layout to place again.
+pub fn carry_seats(
+    before: &SceneState,
+    next: SceneState,
+    id: &str,
+    from: Pose,
+) -> Result<(SceneState, Vec<String>)> {
+    let to = Pose::of(next.object(id)?);
+    let mut next = next;
+    let mut out: Vec<String> = vec![];
+    for s in seats(before, id) {
+        let cand = with_pose(
+            &next,
+            &s,
+            carried(Pose::of(before.object(&s)?), from, to, 0.0),
+        )?;
+        if cand.collisions(&s, before).is_empty() {
+            next = cand;
+            out.push(s);
+        }
+    }
+    Ok((next, out))
+}
+
+/// The seats of `id`: the instances AT, AT_BACK or AROUND it (never `id`), in a stable order.
+pub fn seats(state: &SceneState, id: &str) -> Vec<String> {
+    let mut out: Vec<String> = state
+        .relations
+        .iter()
+        .filter(|r| {
+            r.object == id
+                && r.subject != id
+                && matches!(
+                    r.relation,
+                    RelationKind::At | RelationKind::AtBack | RelationKind::Around
+                )
+                && state.object(&r.subject).is_ok()
+        })
+        .map(|r| r.subject.clone())
+        .collect();
+    out.sort();
+    out.dedup();
+    out
 }
 
 #[cfg(test)]

@@ -105,11 +105,11 @@ pub(super) fn read_placements(r: &mut Reading) {
             Anchor::FaceWindow,
         ),
         (
-            r"\b(?:by|near|under|beneath|below|beside|next to|in front of|at|close to|against|in) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide )?windows?\b",
+            r"\b(?:by|near|under|beneath|below|beside|next to|in front of|at|close to|against|in|to|up to|over to) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide )?windows?\b",
             Anchor::Window,
         ),
         (
-            r"\b(?:by|near|beside|next to|at|close to|inside|behind) (?:the )?(?:front |main |entrance |back )?door(?:way)?\b",
+            r"\b(?:by|near|beside|next to|at|close to|inside|behind|to|up to|over to) (?:the )?(?:(?:front |main |entrance |back )?door(?:way)?|(?:front |main )?(?:entrance|entryway)(?: door)?)\b",
             Anchor::Door,
         ),
         (
@@ -121,7 +121,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             Anchor::Side,
         ),
         (
-            r"\bin (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b",
+            r"\b(?:in|into|to) (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b",
             Anchor::Corner,
         ),
     ];
