@@ -104,3 +104,31 @@ fn another_name_of_the_place_and_a_thing_it_has_are_no_unknown_words() {
         p.notes
     );
 }
+
+#[test]
+fn things_in_each_corner_stand_in_the_rooms_corners() {
+    // "in each corner" is the room's corners, not those of the thing named just before; the
+    // reason quotes the phrase that gave the count
+    for prompt in [
+        "a den with a couch and a fern in each corner",
+        "a study with a desk, a chair and a fern in each corner",
+    ] {
+        let p = plan_prompt(prompt).unwrap();
+        let plant = p
+            .understood
+            .objects
+            .iter()
+            .find(|o| o.category == "fern")
+            .unwrap_or_else(|| panic!("{prompt}: {:?}", p.understood.objects));
+        assert_eq!(plant.count, 4, "{prompt}");
+        assert!(
+            !plant.why.contains("couch") && !plant.why.contains("chair"),
+            "{prompt}: {}",
+            plant.why
+        );
+    }
+    // the corners of a table named just before are the table's
+    let p = plan_prompt("a games room with a square table and a stool at each corner").unwrap();
+    let stools = p.spec.objects.get("stool").map(|o| o.number);
+    assert_eq!(stools, Some(4), "{:?}", p.spec.objects.keys());
+}
