@@ -10,6 +10,7 @@ use super::units::{find_dims, Dims};
 
 mod contents;
 mod counts;
+mod described;
 mod mentions;
 mod objects;
 mod place;
@@ -106,6 +107,9 @@ pub struct Reading {
     pub contents: Vec<(usize, String, usize, usize)>,
     /// "a picnic spot in a park": spans naming the place the scene is in (no object of it).
     pub settings: Vec<(usize, usize)>,
+    /// "the armchair is red", "a sofa in navy blue": spans of colour words said after an
+    /// object's name (read into its adjectives).
+    pub described: Vec<(usize, usize)>,
 }
 
 fn re(p: &str) -> Regex {
@@ -130,6 +134,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     setting::read_settings(kb, &t, &mut r, &mut masked);
     let raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
     mentions::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
+    described::read_described(&t, &mut r);
     mentions::place_names(&mut r);
     room::read_room(&t, &mut r, &masked, &dims);
     mentions::for_whom(kb, &mut r);

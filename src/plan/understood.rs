@@ -143,6 +143,7 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
     }
     spans.extend(r.contents.iter().map(|&(_, _, s, e)| (s, e)));
     spans.extend(r.settings.iter().copied());
+    spans.extend(r.described.iter().copied());
     // "3 by 4 metres", "12 x 10 ft": a size phrase is read whole, its unit too
     spans.extend(
         crate::plan::units::find_dims(&r.text)

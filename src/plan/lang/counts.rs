@@ -50,6 +50,14 @@ fn part(s: &str) -> Option<u32> {
         .map(|&(_, n)| n)
 }
 
+/// "a plant in each corner", "a clock on each wall": corners something stands in and walls are
+/// the room's, never the thing named just before ("a stool at each corner" of a table is the
+/// table's).
+fn rooms_part(lead: &str, what: &str) -> bool {
+    let what = what.trim_end_matches('s');
+    what == "wall" || what == "corner" && lead.split_whitespace().last() == Some("in")
+}
+
 /// A countable part of the room that "each" can be about (`kb/words.txt`: features).
 fn is_feature(w: &str) -> bool {
     let sg = super::singular(w);
@@ -225,7 +233,10 @@ pub(super) fn read_counts(r: &mut Reading) {
                 (k + 1..n)
                     .find(|&j| r.mentions[j].reference && r.mentions[j].start <= next + 40)
                     .map(|j| referent(r, j))
-            } else if k > 0 && !t[r.mentions[k - 1].end..m.start].contains(['.', ';']) {
+            } else if k > 0
+                && !t[r.mentions[k - 1].end..m.start].contains(['.', ';'])
+                && !rooms_part(lead, what.unwrap_or(""))
+            {
                 // "a big table in the centre, a bench on each long side": the sides of the
                 // thing just named
                 Some(k - 1)

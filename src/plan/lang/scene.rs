@@ -104,6 +104,13 @@ pub(super) fn read_scene(
                     (i, end) = (k, end + " for ".len() + w.len());
                 }
             }
+            // "a library reading room": another name of the same place right after it is
+            // part of its name
+            if let Some(n) = found.get(k + 1).filter(|n| {
+                n.start() == end + 1 && scene_of.get(n.as_str()).is_some_and(|&j| j == i)
+            }) {
+                end = n.end();
+            }
             r.scene = Some((i, start, end));
             masked.push((start, end));
             break;

@@ -26,7 +26,9 @@ pub(super) fn mention_sizes(d: &mut Draft) {
         if m.negated || m.reference {
             continue;
         }
-        if !m.known && !unknown.contains_key(cat) {
+        // "a basket of towels" in a laundry room is its laundry basket, which the knowledge
+        // base has
+        if !m.known && !unknown.contains_key(cat) && kb.object(cat).is_none() {
             // "the instructor's mat" in a yoga studio: sized as the scene's own mats
             let own = scene.and_then(|s| {
                 let head = cat.rsplit(' ').next()?;
