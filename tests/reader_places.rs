@@ -216,11 +216,7 @@ fn a_generic_name_is_the_default_of_its_role_and_a_named_kind_replaces_it() {
 #[test]
 fn a_plural_support_without_a_count_holds_all_that_is_put_on_it() {
     for (prompt, thing, support) in [
-        (
-            "an office with twelve monitors on desks",
-            "computer",
-            "desk",
-        ),
+        ("an office with twelve monitors on desks", "monitor", "desk"),
         (
             "a repair shop with ten laptops on workbenches",
             "laptop",
