@@ -23,7 +23,6 @@ mod counts;
 mod describe;
 mod goods;
 mod outdoors;
-mod parts;
 mod placeable;
 mod purpose;
 mod relations;
@@ -211,7 +210,6 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     companions::companions(&mut d, people);
     purpose::seats_for_all(&mut d, people);
     supports::per_instance(&mut d);
-    parts::named_parts(&mut d);
     counts::clamp(&mut d);
     if d.counts.is_empty() {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
