@@ -29,13 +29,6 @@ const BLOCKER_FAULTS: f64 = 2.0;
 /// half of [`GOOD`], so a room with one spot to stand on turns to a new direction
 /// (`sweep.rs`) rather than repeating a well framed picture.
 const COPY_MORE: f64 = 9.0;
-/// What a repeat of a view already taken (`repeat.rs`) loses among the first [`ALWAYS`] views,
-/// the ones a user opens first (past them a repeat is refused): the door and bookcase corner
-/// seen again from a step aside is one picture too many, so a view of another corner is taken
-/// before it where one scores nearly as well. Less than a poor picture loses (a repeat is no
-/// poor picture, only one too many): measured on the framing figure, [`POOR`] took more masses
-/// at the frame's foot and back views for a few repeats fewer.
-const REPEAT: f64 = 0.5 * POOR;
 /// Up to this share of the frame bare wall costs a view nothing (a room's walls show above its
 /// furniture in every picture taken at eye height); beyond it each share costs
 /// [`WALL_PER_SHARE`].
@@ -238,7 +231,6 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 - 20.0 * (BARE_COVER - c.stats.covered).max(0.0)
                 - POOR * (bare + copy + BLOCKER_FAULTS * blocker + grazing)
                 - COPY_MORE * copy
-                - REPEAT * flag(repeat)
                 - 10.0 * (c.blocker + c.grazing)
                 + 4.0 * (c.reach / diagonal).min(0.6)
                 + if focal_taken < focal_target && looks_ahead(c) {
@@ -254,10 +246,7 @@ pub(super) fn pick(scene: &SceneBox, cands: Vec<Candidate>, count: usize) -> Vec
                 let soft = is_back(&c.stats) || c.mass > MASS_SHARE;
                 4 * usize::from(c.cut > 0.0) + 2 * usize::from(c.near < close) + usize::from(soft)
             } else {
-                // Among the first views a poor one (mostly bare, a blocker at the lens, a panel
-                // edge-on, a pillar in mid-frame) is taken only where no other is left: those
-                // are the pictures a user opens first.
-                usize::from(bare + blocker + grazing + pillar > 0.0)
+                0
             };
             scores.push((i, score, tier));
         }
