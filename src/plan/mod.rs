@@ -2,6 +2,7 @@
 //! constraint placement. Pure host code: never imports `ash`.
 pub mod capacity;
 pub mod check;
+pub mod colours;
 pub mod conform;
 pub mod dialogue;
 pub mod draw;

@@ -4,7 +4,7 @@
 //! said of "the armchair", they join the mention that first named it.
 use super::words::is_adjective;
 use super::Reading;
-use crate::shape::materials::{COLOURS, MATERIALS};
+use crate::plan::colours::{COLOURS, MATERIALS};
 
 /// Words that link an object's name to a colour said after it.
 const LINKS: &[&str] = &[
