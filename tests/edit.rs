@@ -876,10 +876,11 @@ fn an_animated_scene_plays_in_export_render_and_video() {
             .collect()
     };
     assert!(others(&g1) == others(&still), "static parts moved");
-    // Without --time the glb keeps the motion: one node per instance and an animation of
-    // chair1's node over the timeline's frames, valid glTF (the validator also checks that the
-    // accessors' bounds are their data), its translations the track's positions in glTF's y-up
-    // frame ((x, y, z) -> (x, z, -y)).
+    // Without --time the engine-ready glb keeps the motion: each instance's node holds its own
+    // splats and collider, the navmesh is there, and chair1's node has an animation over the
+    // timeline's frames, valid glTF (the validator also checks that the accessors' bounds are
+    // their data), its translations the track's positions in glTF's y-up frame
+    // ((x, y, z) -> (x, z, -y)).
     export_support::require_readers();
     let glb = dir.join("anim.glb");
     ok(&run_cli(&[
@@ -899,7 +900,31 @@ fn an_animated_scene_plays_in_export_render_and_video() {
         .iter()
         .position(|n| n["name"] == "chair1")
         .expect("a chair1 node");
-    assert_eq!(nodes.len(), 4, "environment and three instances");
+    let named = |n: &str| nodes.iter().position(|x| x["name"] == n);
+    let children = |i: usize| -> Vec<String> {
+        nodes[i]["children"]
+            .as_array()
+            .map(|c| {
+                c.iter()
+                    .map(|k| nodes[k.as_u64().unwrap() as usize]["name"].to_string())
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let kids = children(chair);
+    assert!(
+        kids.iter().any(|k| k.contains("splats_chair1"))
+            && kids.iter().any(|k| k.contains("collider_chair1")),
+        "chair1's node holds its splats and collider: {kids:?}"
+    );
+    assert!(
+        named("splats_environment").is_some(),
+        "the environment's splats"
+    );
+    assert!(
+        glb.with_extension("navmesh.obj").is_file(),
+        "the navmesh OBJ is written beside the glb"
+    );
     let anim = &doc["animations"][0];
     let channel = anim["channels"]
         .as_array()

@@ -8,7 +8,7 @@
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
 use dreamscene::edit::animate::{animate, final_pose, keyframes};
-use dreamscene::edit::parse::{parse, Step, DEFAULT_DISTANCE, SMALL_DISTANCE};
+use dreamscene::edit::parse::{ambiguous, parse, Step, DEFAULT_DISTANCE, SMALL_DISTANCE};
 use dreamscene::edit::SceneState;
 use dreamscene::generate::scene::write_draft_scene;
 use dreamscene::plan::gcp::{layout, LayoutOptions};
@@ -671,4 +671,32 @@ fn shape_prior_restyle_recolours_from_colour_words_and_says_so() {
     // Without a colour or material word the shape prior has nothing to do.
     let err = restyle(None, &st, "chair1", "a nicer chair", None, &cfg).unwrap_err();
     assert!(err.to_string().contains("can only recolour"), "{err}");
+}
+
+/// "move the sofa" in a lobby of two lobby sofas names no one instance: the answer says which
+/// ones it could be; a sentence naming one instance (or none) has no such answer.
+#[test]
+fn a_name_shared_by_two_instances_says_which_it_could_be() {
+    let objects: Vec<(String, String)> = [
+        ("lobby sofa1", "lobby sofa"),
+        ("lobby sofa2", "lobby sofa"),
+        ("coffee table1", "coffee table"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    let text = "move the sofa 1 m to the right";
+    // the parse finds no subject
+    let cmd = parse(text, &objects, None);
+    assert!(
+        cmd.map_or(true, |c| c.subject.is_none()),
+        "no one sofa is the subject"
+    );
+    let said = ambiguous(text, &objects).unwrap_or_default();
+    assert!(
+        said.contains("lobby sofa1") && said.contains("lobby sofa2"),
+        "the two sofas are named: {said:?}"
+    );
+    assert_eq!(ambiguous("move the coffee table 1 m left", &objects), None);
+    assert_eq!(ambiguous("turn it round", &objects), None);
 }

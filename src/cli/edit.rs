@@ -534,10 +534,12 @@ fn sentence_pose(state: &SceneState, text: &str, default: Option<&str>) -> Resul
             return Ok((id.clone(), destination::place_at(state, &id, &to)?));
         }
     };
-    let id = cmd
-        .subject
-        .clone()
-        .context("say which object (an id such as sofa1, or \"the sofa\")")?;
+    let Some(id) = cmd.subject.clone() else {
+        // "the sofa" in a room of two sofas: say which ones it could be
+        bail!(parse::ambiguous(text, &objects).unwrap_or_else(|| {
+            "say which object (an id such as sofa1, or \"the sofa\")".to_string()
+        }));
+    };
     let pose = animate::final_pose(state, &id, &cmd)?;
     Ok((id, pose))
 }

@@ -131,28 +131,6 @@ fn write(a: Args) -> Result<()> {
             );
         }
     }
-    // A scene with a timeline exported to glb without --time keeps its motion: one node per
-    // instance, animated as the timeline says.
-    if format == Format::Glb && a.time.is_none() && a.input.is_dir() {
-        let scene = super::read_input(&a.input, || {
-            Ok(dreamscene::scene::timeline::Animated::open(&a.input)?)
-        })
-        .map_err(|e| intact_ply_hint(&a.input, e))?;
-        if scene.is_animated() {
-            super::create_parent(&a.out)?;
-            let bytes = dreamscene::export::glb::encode_animated(&scene)?;
-            dreamscene::util::write_atomic(&a.out, &bytes)
-                .with_context(|| format!("writing {}", a.out.display()))?;
-            let tracks = scene.scene.timeline.as_ref().map_or(0, |t| t.tracks.len());
-            println!(
-                "wrote {} (glb, y up, {} instances as nodes, {tracks} animated over the timeline,                  {} bytes)",
-                a.out.display(),
-                scene.scene.objects.len(),
-                bytes.len()
-            );
-            return Ok(());
-        }
-    }
     if let Some(done) = engine_export(&a, format)? {
         return Ok(done);
     }
@@ -247,8 +225,17 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
         Format::Glb => {
             super::create_parent(&a.out)?;
             let (bytes, nav) = engine::export_scene(&a.input, &opts, &a.out)?;
+            let tracks = dreamscene::scene::dir::read_scene(&a.input)
+                .ok()
+                .and_then(|s| s.timeline)
+                .map_or(0, |t| t.tracks.len());
+            let moving = if tracks > 0 {
+                format!(", {tracks} animated over the timeline")
+            } else {
+                String::new()
+            };
             println!(
-                "wrote {} (glb, y up: nodes, colliders, navmesh of {:.1} m², {} bytes) and {} in {:.2} s",
+                "wrote {} (glb, y up: nodes{moving}, colliders, navmesh of {:.1} m², {} bytes) and {} in {:.2} s",
                 a.out.display(),
                 nav.area(),
                 bytes,

@@ -144,7 +144,8 @@ fn locked(
                     "an unfinished scene: files or views are missing".to_string()
                 }
                 Ok(s) if !s.history.is_empty() => {
-                    format!("a scene with {} edits", s.history.len())
+                    let n = s.history.len();
+                    format!("a scene with {n} edit{}", if n == 1 { "" } else { "s" })
                 }
                 Ok(_) => "a scene".to_string(),
                 Err(_) if own_run => "an unfinished run: a plan, no scene yet".to_string(),

@@ -593,6 +593,14 @@ pub fn resolve(name: &str, objects: &[(String, String)]) -> Result<String, Strin
     }
 }
 
+/// Why a sentence names no one instance: the first word of it that names several ("the sofa"
+/// in a room of two sofas), as [`resolve`] says it ("\"sofa\" could be sofa1, sofa2: ...").
+pub fn ambiguous(text: &str, objects: &[(String, String)]) -> Option<String> {
+    text.split(|c: char| !c.is_alphanumeric())
+        .filter(|w| w.len() > 2)
+        .find_map(|w| resolve(w, objects).err().filter(|e| e.contains("could be")))
+}
+
 /// The count a description of new objects starts with and the rest: "two cafe chairs" is
 /// (2, "cafe chairs"), "a pair of lamps" (2, "lamps"), "a green armchair" (1, itself).
 pub fn count_of(description: &str) -> (u32, String) {

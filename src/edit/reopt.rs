@@ -476,7 +476,8 @@ pub fn add_object(
         planned.size[2],
         pose.position[0],
         pose.position[1],
-        pose.yaw,
+        // rounded, and never "-0"
+        pose.yaw.round() + 0.0,
         if all_ok { "" } else { " (not every constraint could hold)" },
         g.len()
     ));

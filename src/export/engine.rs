@@ -13,10 +13,14 @@
 //! - `collider_floor` and `collider_wall_<side>` (openings cut out); outdoors only the ground;
 //! - `navmesh` ([`super::navmesh`]) and `spawn_<n>` nodes on it.
 //!
+//! A scene with a timeline (`edit animate`) keeps its motion: every instance's splats are its
+//! node's child (as with per-object splats) and each animated node has an animation sampled at
+//! the timeline's frame rate; colliders move with their node, the navmesh is the rest pose's.
+//!
 //! Colliders carry `OMI_physics_body`/`OMI_physics_shape` (Godot 4) and the Khronos draft
 //! `KHR_physics_rigid_bodies`/`KHR_implicit_shapes`, all in `extensionsUsed` only.
 use super::collider::{self, Mesh};
-use super::glb::{to_gltf_frame, GlbBuilder};
+use super::glb::{to_gltf_frame, GlbBuilder, NodeTransform};
 use super::labels::{node_name, SceneLabels};
 use super::navmesh::{Agent, NavMesh, Obstacle};
 use super::{ExportError, Result};
@@ -241,6 +245,9 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         ));
     }
     let ids = all.filter(&kept).instance;
+    // A timeline moves instances: each keeps its own splats under its node, so they move with it.
+    let timeline = scene.timeline.as_ref().filter(|t| !t.tracks.is_empty());
+    let per_object = opts.per_object_splats || timeline.is_some();
     let mut b = GlbBuilder::new();
     let room = scene.room.size;
     let indoor = scene
@@ -260,9 +267,10 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
             "scene_type": if indoor { "indoor" } else { "outdoor" },
             "room_size_m": room, "categories": categories,
             "labels": labels.to_json()["semantic"].clone(),
+            "animated": timeline.is_some(),
         }
     }));
-    if opts.per_object_splats {
+    if per_object {
         if keep[0] && labels.environment.1 > 0 {
             let (start, count) = labels.environment;
             let env = select_range(&input.cloud, start, count);
@@ -306,8 +314,13 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
             }
         }));
         b.add_child(root, node);
+        if let Some(t) = timeline {
+            if let Some(track) = crate::scene::timeline::track(t, &o.id) {
+                animate(&mut b, &name, node, t, track, &p);
+            }
+        }
         let own = select_range(&input.cloud, inst.start, inst.count);
-        if opts.per_object_splats && !own.is_empty() {
+        if per_object && !own.is_empty() {
             let local = super::instances::node_local(&own, p.yaw, p.position);
             let sname = format!("splats_{name}");
             let mesh = b.add_splats(&sname, &to_gltf_frame(&local))?;
@@ -436,6 +449,40 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         b.use_extension("KHR_physics_rigid_bodies");
     }
     Ok((b.finish()?, nav))
+}
+
+/// Adds the animation of instance node `node` (posed at `rest`, its splats baked at that pose's
+/// scale) over the timeline's frames: translation and yaw as the track says, and its scale
+/// relative to the rest scale.
+fn animate(
+    b: &mut GlbBuilder,
+    name: &str,
+    node: usize,
+    timeline: &crate::scene::dir::Timeline,
+    track: &crate::scene::dir::Track,
+    rest: &crate::scene::compose::Placement,
+) {
+    use crate::scene::timeline::{frame_times, sample};
+    let ratio = |k: f64, r: f64| if r.abs() > 1e-9 { k / r } else { 1.0 };
+    let keys: Vec<(f64, NodeTransform)> = frame_times(timeline)
+        .into_iter()
+        .filter_map(|t| {
+            let p = sample(track, t)?;
+            let half = (p.yaw.to_radians() / 2.0).sin_cos();
+            let s = [0, 1, 2].map(|a| ratio(p.scale[a], rest.scale[a]));
+            Some((
+                t,
+                NodeTransform {
+                    translation: Some(y_up(p.position).map(f64::from)),
+                    rotation: Some([0.0, half.0, 0.0, half.1]),
+                    scale: Some([s[0], s[2], s[1]]),
+                },
+            ))
+        })
+        .collect();
+    if !keys.is_empty() {
+        b.add_node_animation(name, node, &keys);
+    }
 }
 
 /// The points 0.6 m inside the room in front of each door, where spawn points go first.

@@ -322,60 +322,6 @@ impl GlbBuilder {
     }
 }
 
-/// An instance's placement (world frame: `Rz(yaw) · diag(scale) · p + position`) as a glTF node
-/// transform for a mesh stored in the glTF frame: the translation rotated to y up, the yaw a
-/// rotation about glTF's +y, the scale's y and z swapped.
-pub fn node_transform(p: &crate::scene::compose::Placement) -> NodeTransform {
-    let half = p.yaw.to_radians() / 2.0;
-    NodeTransform {
-        translation: Some([p.position[0], p.position[2], -p.position[1]]),
-        rotation: Some([0.0, half.sin(), 0.0, half.cos()]),
-        scale: Some([p.scale[0], p.scale[2], p.scale[1]]),
-    }
-}
-
-/// The `.glb` of a scene with a timeline: one mesh per object PLY (object frame) and the
-/// environment's, one node per instance placed as `scene.json` says, and one animation per
-/// track, sampled at the timeline's frame rate (so every interpolation plays as the engine
-/// plays it). Viewers that apply node transforms to splats play it; SH bands are stored in the
-/// object frame, so view-dependent colour turns with the node only where the viewer rotates it.
-pub fn encode_animated(scene: &crate::scene::timeline::Animated) -> Result<Vec<u8>> {
-    use crate::scene::timeline::{frame_times, sample, track};
-    let mut b = GlbBuilder::new();
-    if let Some(env) = scene.environment() {
-        let mesh = b.add_splats("environment", &to_gltf_frame(env))?;
-        b.add_node("environment", mesh, NodeTransform::default());
-    }
-    let mut meshes: std::collections::HashMap<&str, usize> = Default::default();
-    let file = &scene.scene;
-    for o in &file.objects {
-        let mesh = match meshes.get(o.ply.as_str()) {
-            Some(m) => *m,
-            None => {
-                let g = scene.object_cloud(&o.ply).ok_or_else(|| {
-                    ExportError::Unrepresentable(format!("{}: object not loaded", o.ply))
-                })?;
-                let m = b.add_splats(&o.category, &to_gltf_frame(g))?;
-                meshes.insert(o.ply.as_str(), m);
-                m
-            }
-        };
-        let node = b.add_node(&o.id, mesh, node_transform(&o.placement()));
-        if let Some(tl) = &file.timeline {
-            if let Some(tr) = track(tl, &o.id) {
-                let keys: Vec<(f64, NodeTransform)> = frame_times(tl)
-                    .into_iter()
-                    .filter_map(|t| sample(tr, t).map(|p| (t, node_transform(&p))))
-                    .collect();
-                if !keys.is_empty() {
-                    b.add_node_animation(&o.id, node, &keys);
-                }
-            }
-        }
-    }
-    b.finish()
-}
-
 /// The `.glb` of `g` (project world frame): one mesh, one node, in glTF's y-up frame.
 pub fn encode(g: &Gaussians) -> Result<Vec<u8>> {
     let mut b = GlbBuilder::new();

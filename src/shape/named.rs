@@ -211,9 +211,11 @@ pub fn lake(b: &mut Builder) {
     ];
     for [cx, cy, rx, ry] in LOBES {
         let c = [cx * hw, cy * hd, 0.0];
-        // Flat discs, no walls: where lobes overlap no seam shows.
+        // Low closed discs (a side to be seen edge on); where lobes overlap, an edge stands
+        // under the other lobe's top: no seam shows.
         for (role, k, z) in [(Soil, 1.0, 0.5 * zw), (Water, 0.94, zw)] {
-            let disc = vec![[0.0, z], [k * rx * hw, z]];
+            let r = k * rx * hw;
+            let disc = vec![[0.0, 0.0], [r, 0.0], [r, z], [0.0, z]];
             b.revolved(
                 role,
                 0,
