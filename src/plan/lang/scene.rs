@@ -49,8 +49,14 @@ pub(super) fn read_scene(
         // "an ice cream parlour", "a tattoo parlour": a place word that a noun before it makes
         // another place (`kb/words.txt`: qualified_places) names no scene; "a cosy parlour",
         // "grandma's parlour" is the sitting room.
-        let qualified = word_list("qualified_places").contains(&m.as_str())
-            && noun_before(&t[..m.start()]).is_some();
+        let qualified = word_list("qualified_places").contains(&m.as_str()) && {
+            let w = t[..m.start()].split_whitespace().last().unwrap_or("");
+            !(w.is_empty()
+                || is_function_word(w)
+                || is_known_word(w)
+                || w.ends_with("'s")
+                || crate::plan::offline::style_word(w).is_some())
+        };
         !inside_object && !item && !qualified
     };
     for (k, m) in found.iter().enumerate() {

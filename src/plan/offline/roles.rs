@@ -34,23 +34,29 @@ pub(super) fn scene_defaults(d: &mut Draft) {
     }
     if r.not_literal.is_some() {
         // the seats of a table left out go with it (the reading chairs of a haunted library)
-        notes.extend(without_their_partners(scene, counts, &Default::default()));
+        notes.extend(without_their_partners(
+            scene,
+            counts,
+            &Default::default(),
+            |_| true,
+        ));
     }
     d.defaults = d.counts.clone();
 }
 
-/// The scene's defaults that serve only what the plan no longer holds go with it: a seat whose
-/// group partners (`kb/groups.txt`: the tables it stands at or around) are among the scene's
-/// defaults but none is left (the visitor chairs of an office "with no meeting table"). Named
-/// categories (`named`) stay. One note each.
+/// The scene's defaults of the kinds `which` keeps that serve only what the plan no longer
+/// holds go with it: a seat whose group partners (`kb/groups.txt`: the tables it stands at or
+/// around) are among the scene's defaults but none is left (the visitor chairs of an office
+/// "with no meeting table"). Named categories (`named`) stay. One note each.
 fn without_their_partners(
     scene: Option<&crate::plan::kb::SceneKind>,
     counts: &mut BTreeMap<String, u32>,
     named: &std::collections::BTreeSet<String>,
+    which: impl Fn(&str) -> bool,
 ) -> Vec<String> {
     let lone: Vec<String> = counts
         .keys()
-        .filter(|c| !named.contains(*c))
+        .filter(|c| !named.contains(*c) && which(c))
         .filter(|c| {
             let objs = crate::plan::groups::partners_of(c);
             scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
@@ -398,9 +404,10 @@ pub(super) fn take_away(d: &mut Draft) {
                     || role.is_some_and(|role| crate::plan::roles::role_of(k) == Some(role)))
         });
     }
-    // what served only the negated things goes with them (the chairs around a table)
+    // the seats that served only the negated things go with them (the chairs around a
+    // table; a coffee table stays for the armchairs when the sofa goes)
     if any {
-        notes.extend(without_their_partners(*scene, counts, named));
+        notes.extend(without_their_partners(*scene, counts, named, lang::is_seat));
     }
 }
 
