@@ -1,5 +1,5 @@
 //! Nothing lost, through the command line: `generate --out` onto a scene refuses (naming
-//! --resume and --force), --force replaces it whole, a failed run leaves no directory, --resume
+//! --resume and --force), --force replaces it whole, and so does `plan --out` (naming --force), a failed run leaves no directory, --resume
 //! renders the views cameras.json lists that are missing, a second writer with --no-wait names
 //! the holder, empty environment variables mean unset, values out of bounds in scene.json are
 //! refused in one line naming the instance, messages say each path once, and each edit
@@ -89,6 +89,57 @@ fn generate_refuses_an_existing_scene_force_replaces_it_whole_and_failures_leave
     let o = run(&["generate", "asdf qwerty zxcv", "--out", &b], &[]);
     assert!(!o.status.success(), "refused");
     assert!(!bad.exists(), "no empty output directory: {}", stderr(&o));
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+/// Every file under `dir` with its bytes, sorted by path.
+fn files_of(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut out = vec![];
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).expect("read dir") {
+            let p = e.expect("entry").path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let bytes = std::fs::read(&p).expect("read file");
+                out.push((p, bytes));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn plan_refuses_a_scene_in_its_out_and_force_replaces_it() {
+    let (root, out, d) = drafted("plan-onto");
+    let before = files_of(&out);
+    let o = run(&["plan", "a studio flat with a futon", "--out", &d], &[]);
+    let err = stderr(&o);
+    assert!(!o.status.success(), "refused");
+    assert!(
+        err.contains("--force") && err.lines().filter(|l| l.starts_with("error")).count() == 1,
+        "one line naming --force: {err}"
+    );
+    assert!(files_of(&out) == before, "nothing of the scene changed");
+    let o = run(
+        &["plan", "a studio flat with a futon", "--out", &d, "--force"],
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        !out.join("scene.json").exists() && !out.join("objects").exists(),
+        "--force replaces the scene whole"
+    );
+    let spec = std::fs::read_to_string(out.join("spec.json")).expect("spec.json");
+    assert!(spec.contains("futon"), "the new plan");
+    // a plan's own directory is planned again without asking
+    let o = run(
+        &["plan", "a sunroom with two wicker chairs", "--out", &d],
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
     let _ = std::fs::remove_dir_all(&root);
 }
 

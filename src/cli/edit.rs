@@ -359,7 +359,17 @@ pub fn run(a: Args) -> Result<()> {
                             .with_context(|| format!("add \"{description}\": where it goes"))?,
                         Some(*kind),
                     )),
-                    (None, None) => None,
+                    // "a desk lamp": on the scene's desk
+                    (None, None) => dreamscene::edit::wanted::plan_object(&wanted.what)
+                        .ok()
+                        .and_then(|p| {
+                            dreamscene::edit::wanted::support_named(
+                                &wanted.what,
+                                &p.category,
+                                &state.id_categories(),
+                            )
+                        })
+                        .map(|id| (id, Some(dreamscene::plan::spec::RelationKind::Over))),
                 };
             let what = wanted.what;
             let needs_gpu = state.scene.prior.kind != "shape";

@@ -85,7 +85,7 @@ const LOCK_FILES: [&str; 2] = [
 ];
 
 /// The entries of `dir` other than its lock files.
-fn contents(dir: &Path) -> Result<Vec<PathBuf>> {
+pub(super) fn contents(dir: &Path) -> Result<Vec<PathBuf>> {
     let mut out = vec![];
     for e in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
         let e = e.with_context(|| format!("reading {}", dir.display()))?;
@@ -95,6 +95,21 @@ fn contents(dir: &Path) -> Result<Vec<PathBuf>> {
     }
     out.sort();
     Ok(out)
+}
+
+/// Empties `out` of `found` (its entries) for `--force`: the old scene is replaced whole, so
+/// nothing of it stays beside the new one. Holds the commit lock so no reader sees it half gone.
+pub(super) fn empty_out(out: &Path, found: &[PathBuf]) -> Result<()> {
+    let _readers_out = CommitGuard::acquire(out)?;
+    for p in found {
+        let removed = if p.is_dir() && !p.is_symlink() {
+            std::fs::remove_dir_all(p)
+        } else {
+            std::fs::remove_file(p)
+        };
+        removed.with_context(|| format!("--force: removing {}", p.display()))?;
+    }
+    Ok(())
 }
 
 fn remove_if_empty(dir: &Path) {
@@ -123,16 +138,7 @@ fn locked(
     let existing = out.join("scene.json");
     let found = contents(out)?;
     if a.force {
-        // Replaced whole: nothing of the old scene stays beside the new one.
-        let _readers_out = CommitGuard::acquire(out)?;
-        for p in &found {
-            let removed = if p.is_dir() && !p.is_symlink() {
-                std::fs::remove_dir_all(p)
-            } else {
-                std::fs::remove_file(p)
-            };
-            removed.with_context(|| format!("--force: removing {}", p.display()))?;
-        }
+        empty_out(out, &found)?;
     } else if !found.is_empty() {
         let own_run = out.join("spec.json").is_file() || existing.is_file();
         if !(a.resume && own_run) {

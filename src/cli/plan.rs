@@ -26,11 +26,51 @@ pub struct Args {
     /// Output directory.
     #[arg(long)]
     pub out: PathBuf,
+    /// Replace the scene already in --out (generated or edited), whole, with the plan.
+    #[arg(long)]
+    pub force: bool,
 }
 
 pub fn run(a: Args) -> Result<()> {
     let llm = a.llm.config();
+    if a.out.is_dir() {
+        if let Some(what) = holds_scene(&a.out) {
+            if !a.force {
+                bail!(
+                    "{} holds {what}, whose spec.json and layout.json a plan would overwrite; give \
+                     another --out, or --force to replace the scene with the plan",
+                    a.out.display()
+                );
+            }
+            let found = super::generate::contents(&a.out)?;
+            super::generate::empty_out(&a.out, &found)?;
+        }
+    }
     plan(a.prompt, a.dialogue, llm, a.interactive, a.seed, &a.out)
+}
+
+/// Entries only `generate` (and `edit` after it) writes into a scene directory: a plan's own
+/// three files beside none of them are a plan that may be planned again.
+const SCENE_ENTRIES: [&str; 6] = [
+    "scene.json",
+    "objects",
+    "checkpoints",
+    "renders",
+    "scene.ply",
+    "environment.ply",
+];
+
+/// What of a scene `dir` holds ("a scene with 2 edits", "a scene", "an unfinished scene"), if
+/// anything: a plan written there would lose it.
+fn holds_scene(dir: &Path) -> Option<String> {
+    if !SCENE_ENTRIES.iter().any(|e| dir.join(e).exists()) {
+        return None;
+    }
+    Some(match dreamscene::scene::dir::read_scene(dir) {
+        Ok(s) if !s.history.is_empty() => format!("a scene with {} edits", s.history.len()),
+        Ok(_) => "a scene".to_string(),
+        Err(_) => "an unfinished scene".to_string(),
+    })
 }
 
 /// The planner's LLM endpoint, shared by `plan` and `generate`.

@@ -7,7 +7,6 @@ use super::state::SceneState;
 use super::{EditError, Result};
 use crate::plan::check::Box2;
 use crate::plan::gcp::{layout_pinned, LayoutOptions, Pin};
-use crate::plan::kb::KnowledgeBase;
 use crate::plan::spec::{
     Anchor, ObjectSpec, PlacedBy, Relation, RelationKind, SceneSpec, SceneType,
 };
@@ -509,46 +508,6 @@ pub struct Planned {
     pub size: [f64; 3],
     pub anchor: Anchor,
     pub description: String,
-}
-
-/// Plans one object from `text` with the knowledge base: the longest category name or synonym
-/// it contains (singular or plural).
-pub fn plan_object(text: &str) -> Result<Planned> {
-    let kb = KnowledgeBase::builtin();
-    let lower = text.to_lowercase();
-    let words: Vec<&str> = lower
-        .split(|c: char| !(c.is_alphanumeric() || c == '-'))
-        .filter(|w| !w.is_empty())
-        .collect();
-    let joined = format!(" {} ", words.join(" "));
-    let mut best: Option<(usize, &crate::plan::kb::ObjectKind)> = None;
-    for (name, kind) in kb.names() {
-        let forms = [name.to_string(), format!("{name}s"), format!("{name}es")];
-        if forms.iter().any(|f| joined.contains(&format!(" {f} ")))
-            && best.is_none_or(|b| name.len() > b.0)
-        {
-            best = Some((name.len(), kind));
-        }
-    }
-    let Some((_, kind)) = best else {
-        return Err(EditError::Bad(format!(
-            "\"{text}\": no known object category in it (e.g. \"a floor lamp\", \"an armchair\")"
-        )));
-    };
-    let description = if lower.starts_with("a dslr photo") {
-        text.to_string()
-    } else {
-        format!(
-            "A DSLR photo of {}",
-            text.trim_start_matches(|c: char| c.is_whitespace())
-        )
-    };
-    Ok(Planned {
-        category: kind.category.clone(),
-        size: kind.size,
-        anchor: kind.anchor,
-        description,
-    })
 }
 
 /// The next free instance id of `category` (`chair3` after `chair1`, `chair2`).

@@ -8,8 +8,9 @@
 //! placed where the edited scene has them, and its environment, are what the views should show;
 //! for restyling, a second reference is the target).
 use super::commit::Edit;
-use super::ops::{place_new, plan_object};
+use super::ops::place_new;
 use super::state::SceneState;
+use super::wanted::plan_object;
 use super::{EditError, Result};
 use crate::camera::object::ObjectFrame;
 use crate::camera::scene::{valid_viewpoint, SceneBox};

@@ -1,8 +1,10 @@
 //! What `edit add` is asked for when the description says where it goes: "a green armchair next
 //! to the bookshelf" is an armchair placed NEXT to the scene's bookshelf (not a third
 //! bookshelf), "a lamp on the desk" one OVER the desk, "a plant in the corner" one anchored in a
-//! corner. The request reader of `plan` reads the description, so the same phrases mean the same
-//! thing in a prompt and in an edit.
+//! corner; and what the thing is: "a desk lamp" is a lamp, on the scene's desk. The request
+//! reader of `plan` reads the description, so the same phrases mean the same thing in a prompt
+//! and in an edit.
+use super::ops::Planned;
 use crate::plan::kb::KnowledgeBase;
 use crate::plan::spec::{Anchor, RelationKind};
 
@@ -75,6 +77,93 @@ pub fn read(description: &str, ids: &[(String, String)]) -> Wanted {
     }
 }
 
+/// The instance a thing to add is named after and stands on: "a desk lamp" goes on the
+/// scene's desk, when a desk can hold what `category` is (`kb/placement.txt`: supports) and
+/// the scene has one. `what` is the thing as said; `ids` the scene's instances with their
+/// categories (the first of the named category is chosen).
+pub fn support_named(what: &str, category: &str, ids: &[(String, String)]) -> Option<String> {
+    let supports = &crate::plan::gcp::classes::Placements::builtin()
+        .get(category)?
+        .supports;
+    let said = format!(" {} ", what.to_lowercase());
+    let kb = KnowledgeBase::builtin();
+    ids.iter()
+        .filter(|(_, c)| supports.contains(c))
+        .find(|(_, c)| {
+            kb.names()
+                .filter(|(_, k)| k.category == *c)
+                .any(|(name, _)| said.contains(&format!(" {name} ")))
+        })
+        .map(|(id, _)| id.clone())
+}
+
+/// Plans one object from `text` as the request reader of `plan` reads it: "a desk lamp" is a
+/// lamp, "a bedroom dresser" a dresser (the place word names no object), as in a prompt. When
+/// the reader names no one known object, the longest category name or synonym the text
+/// contains (singular or plural).
+pub fn plan_object(text: &str) -> super::Result<Planned> {
+    let kb = KnowledgeBase::builtin();
+    let description = if text.to_lowercase().starts_with("a dslr photo") {
+        text.to_string()
+    } else {
+        format!(
+            "A DSLR photo of {}",
+            text.trim_start_matches(|c: char| c.is_whitespace())
+        )
+    };
+    if let Some((category, size)) = read_object(text) {
+        if let Some(kind) = kb.object(&category) {
+            return Ok(Planned {
+                category,
+                size,
+                anchor: kind.anchor,
+                description,
+            });
+        }
+    }
+    let lower = text.to_lowercase();
+    let words: Vec<&str> = lower
+        .split(|c: char| !(c.is_alphanumeric() || c == '-'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    let joined = format!(" {} ", words.join(" "));
+    let mut best: Option<(usize, &crate::plan::kb::ObjectKind)> = None;
+    for (name, kind) in kb.names() {
+        let forms = [name.to_string(), format!("{name}s"), format!("{name}es")];
+        if forms.iter().any(|f| joined.contains(&format!(" {f} ")))
+            && best.is_none_or(|b| name.len() > b.0)
+        {
+            best = Some((name.len(), kind));
+        }
+    }
+    let Some((_, kind)) = best else {
+        return Err(super::EditError::Bad(format!(
+            "\"{text}\": no known object category in it (e.g. \"a floor lamp\", \"an armchair\")"
+        )));
+    };
+    Ok(Planned {
+        category: kind.category.clone(),
+        size: kind.size,
+        anchor: kind.anchor,
+        description,
+    })
+}
+
+/// The one object the offline planner reads `text` to name, with its planned size ("a tall
+/// floor lamp"), if it names exactly one.
+fn read_object(text: &str) -> Option<(String, [f64; 3])> {
+    let p = crate::plan::offline::plan_prompt(text).ok()?;
+    let named: Vec<&String> = p
+        .named
+        .iter()
+        .filter(|c| p.spec.objects.contains_key(*c))
+        .collect();
+    let [c] = named[..] else {
+        return None;
+    };
+    Some((c.clone(), p.spec.objects[c].size))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -122,5 +211,35 @@ mod tests {
         let w = read("a red leather armchair");
         assert_eq!(w.what, "a red leather armchair");
         assert!(w.partner.is_none() && w.anchor.is_none());
+    }
+
+    #[test]
+    fn a_thing_named_after_a_support_of_the_scene_stands_on_it() {
+        assert_eq!(
+            support_named("a desk lamp", "table lamp", &ids()),
+            Some("desk1".to_string())
+        );
+        // no support named ("a floor lamp" stands on the floor), or none in the scene
+        assert_eq!(support_named("a floor lamp", "floor lamp", &ids()), None);
+        assert_eq!(support_named("a bedside lamp", "table lamp", &ids()), None);
+        // the word is no support of what is added ("a desk chair" stands at it)
+        assert_eq!(support_named("a desk chair", "office chair", &ids()), None);
+    }
+
+    #[test]
+    fn the_thing_to_add_is_what_its_name_ends_in() {
+        for (said, category) in [
+            ("a desk lamp", "table lamp"),
+            ("a brass desk lamp", "table lamp"),
+            ("a floor lamp", "floor lamp"),
+            ("a coffee table", "coffee table"),
+            ("a table lamp", "table lamp"),
+            ("a bedside table", "nightstand"),
+            ("a bedroom dresser", "dresser"),
+            ("a living room rug", "rug"),
+        ] {
+            let p = plan_object(said).expect("planned");
+            assert_eq!(p.category, category, "{said}");
+        }
     }
 }

@@ -428,8 +428,11 @@ pub const FACE_WINDOW_DISTANCE: f64 = 2.0;
 pub const DOOR_DISTANCE: f64 = 1.0;
 /// Depth of a door's clear zone inside the room.
 pub const DOOR_CLEAR_DEPTH: f64 = 0.8;
-/// Facing tolerance of FACE_WINDOW (degrees).
+/// Facing tolerance of FACE_WINDOW and FACE_DOOR (degrees).
 pub const FACE_WINDOW_TOLERANCE: f64 = 30.0;
+/// Largest footprint distance to the door's span of FACE_DOOR: across a small room, beyond the
+/// door's clear zone.
+pub const FACE_DOOR_DISTANCE: f64 = 4.0;
 
 /// Distance from a footprint to an opening's span on the floor.
 pub fn opening_distance(b: &Box2, o: &Opening) -> f64 {
@@ -484,7 +487,9 @@ pub fn opening_zone(o: &Opening) -> Box2 {
 /// [`WINDOW_DISTANCE`] of a window's span. FACE_WINDOW: the window nearest the footprint is
 /// within [`FACE_WINDOW_DISTANCE`] of it, and the object faces that window's centre within
 /// [`FACE_WINDOW_TOLERANCE`]. DOOR: the footprint is within [`DOOR_DISTANCE`] of a door's span
-/// and outside its clear zone. Without openings none of the three holds.
+/// and outside its clear zone. FACE_DOOR: the door nearest the footprint is within
+/// [`FACE_DOOR_DISTANCE`] of it, the footprint is outside its clear zone, and the object faces
+/// the door's centre within [`FACE_WINDOW_TOLERANCE`]. Without openings none of them holds.
 pub fn anchor_holds_in(
     b: &Box2,
     anchor: Anchor,
@@ -497,23 +502,30 @@ pub fn anchor_holds_in(
         Anchor::Window => {
             of(OpeningKind::Window).any(|w| opening_distance(b, w) <= WINDOW_DISTANCE)
         }
-        Anchor::FaceWindow => {
-            let nearest = of(OpeningKind::Window)
-                .map(|w| (opening_distance(b, w), w))
-                .min_by(|a, c| a.0.total_cmp(&c.0));
-            nearest.is_some_and(|(d, w)| {
-                let to = [w.position[0] - b.c[0], w.position[1] - b.c[1]];
-                let l = (to[0] * to[0] + to[1] * to[1]).sqrt().max(1e-9);
-                let c = (to[0] * b.ey[0] + to[1] * b.ey[1]) / l;
-                d <= FACE_WINDOW_DISTANCE
-                    && c.clamp(-1.0, 1.0).acos().to_degrees() <= FACE_WINDOW_TOLERANCE
-            })
+        Anchor::FaceWindow => faces_nearest(b, of(OpeningKind::Window), FACE_WINDOW_DISTANCE),
+        Anchor::FaceDoor => {
+            of(OpeningKind::Door).all(|d| overlap_depth(b, &door_zone(d)) <= 0.0)
+                && faces_nearest(b, of(OpeningKind::Door), FACE_DOOR_DISTANCE)
         }
         Anchor::Door => of(OpeningKind::Door).any(|d| {
             opening_distance(b, d) <= DOOR_DISTANCE && overlap_depth(b, &door_zone(d)) <= 0.0
         }),
         a => anchor_holds_box(b, a, scene, room),
     }
+}
+
+/// Whether the opening of `openings` nearest the footprint `b` is within `distance` of it and
+/// `b` faces its centre within [`FACE_WINDOW_TOLERANCE`].
+fn faces_nearest<'a>(b: &Box2, openings: impl Iterator<Item = &'a Opening>, distance: f64) -> bool {
+    let nearest = openings
+        .map(|o| (opening_distance(b, o), o))
+        .min_by(|a, c| a.0.total_cmp(&c.0));
+    nearest.is_some_and(|(d, o)| {
+        let to = [o.position[0] - b.c[0], o.position[1] - b.c[1]];
+        let l = (to[0] * to[0] + to[1] * to[1]).sqrt().max(1e-9);
+        let c = (to[0] * b.ey[0] + to[1] * b.ey[1]) / l;
+        d <= distance && c.clamp(-1.0, 1.0).acos().to_degrees() <= FACE_WINDOW_TOLERANCE
+    })
 }
 
 /// [`anchor_holds`] on a box (the opening anchors need [`anchor_holds_in`]).
@@ -538,7 +550,7 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
             let near: Vec<usize> = (0..4).filter(|&w| d[w] <= CORNER_DISTANCE + 1e-9).collect();
             near.len() == 2 && near.iter().all(|&w| facing_dot(w) > 0.0)
         }
-        Anchor::Window | Anchor::FaceWindow | Anchor::Door => false,
+        Anchor::Window | Anchor::FaceWindow | Anchor::Door | Anchor::FaceDoor => false,
     }
 }
 

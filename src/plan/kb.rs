@@ -67,6 +67,7 @@ pub fn parse_anchor(s: &str) -> Option<Anchor> {
         "WINDOW" => Some(Anchor::Window),
         "FACE_WINDOW" => Some(Anchor::FaceWindow),
         "DOOR" => Some(Anchor::Door),
+        "FACE_DOOR" => Some(Anchor::FaceDoor),
         _ => None,
     }
 }

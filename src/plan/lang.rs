@@ -27,8 +27,8 @@ use regex::Regex;
 use words::not_objects;
 pub use words::{
     alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
-    is_outdoor_place, is_remover, is_seat, is_specialised, is_verb, kind_of_compound, normalise,
-    number, object_footprint, object_height, object_length, object_scale, part_owners,
+    is_open_air, is_outdoor_place, is_remover, is_seat, is_specialised, is_verb, kind_of_compound,
+    normalise, number, object_footprint, object_height, object_length, object_scale, part_owners,
     plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
@@ -94,6 +94,9 @@ pub struct Reading {
     pub seats_for: Vec<(usize, u32)>,
     /// "small" / "large" said of the scene.
     pub scale: f64,
+    /// The place is named by a compound head that makes it a large one ("a dance hall", "a
+    /// convention hall"): its floor is grown as a "large" one's unless the text sizes it.
+    pub large_place: bool,
     /// Nothing in the text looks like English.
     pub not_english: bool,
     /// The word that makes the scene's place not the template's own ("a haunted ballroom", "a

@@ -27,6 +27,10 @@ pub enum Anchor {
     FaceWindow,
     /// Beside a door, outside its clear zone: see [`crate::plan::check::anchor_holds_in`].
     Door,
+    /// Facing a door from the room, clear of its zone: see
+    /// [`crate::plan::check::anchor_holds_in`].
+    #[serde(rename = "FACE_DOOR")]
+    FaceDoor,
 }
 
 /// Pairwise relation: "subject is RELATION of object", in the object's own frame.

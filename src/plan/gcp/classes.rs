@@ -378,6 +378,28 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
             }
         }
     }
+    // One "facing the door" with seats at it is used facing it: the seats face the door
+    // across it (it stands before them, its back to the door: `Problem::seat_faces_door`).
+    let facing: Vec<String> = spec
+        .anchors
+        .iter()
+        .filter(|(_, a)| **a == Anchor::FaceDoor)
+        .map(|(id, _)| id.clone())
+        .collect();
+    for id in facing {
+        let seats: Vec<String> = spec
+            .relations
+            .iter()
+            .filter(|r| r.object == id && r.relation == RelationKind::At)
+            .map(|r| r.subject.clone())
+            .collect();
+        if !seats.is_empty() {
+            spec.anchors.insert(id, Anchor::Others);
+            for s in seats {
+                spec.anchors.insert(s, Anchor::FaceDoor);
+            }
+        }
+    }
     spec.relations.extend(added);
     flank_with_support(spec, &carried);
     for (id, target) in over.into_iter().chain(under) {
@@ -448,8 +470,12 @@ fn one_support(spec: &mut SceneSpec) {
 /// a sofa that faces the window) stands where that partner puts it: its own CENTER anchor gives
 /// way, and so does that of a thing UNDER it (its rug).
 fn give_up_middle(spec: &mut SceneSpec) {
-    let edge =
-        |a: Option<&Anchor>| matches!(a, Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door));
+    let edge = |a: Option<&Anchor>| {
+        matches!(
+            a,
+            Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door | Anchor::FaceDoor)
+        )
+    };
     let mut moved: Vec<String> = vec![];
     loop {
         let next: Vec<String> = spec

@@ -205,13 +205,19 @@ fn counted_windows(
 impl super::Problem {
     /// Candidate poses of instance `i` that its opening anchor asks for: along a window's wall
     /// in front of it (WINDOW), facing it from 0.3–1.5 m (FACE_WINDOW), beside a door's clear
-    /// zone (DOOR). Empty for the other anchors.
+    /// zone (DOOR), facing it from beyond its clear zone (FACE_DOOR; a desk whose seat faces the
+    /// door stands there with its back to it, between the seat and the door). Empty for the
+    /// other anchors.
     pub(super) fn opening_candidates(&self, i: usize) -> Vec<super::Pose> {
         use crate::plan::spec::Anchor;
-        let anchor = self.inst[i].anchor;
+        let anchor = if self.seat_faces_door(i) {
+            Anchor::FaceDoor
+        } else {
+            self.inst[i].anchor
+        };
         let kind = match anchor {
             Anchor::Window | Anchor::FaceWindow => OpeningKind::Window,
-            Anchor::Door => OpeningKind::Door,
+            Anchor::Door | Anchor::FaceDoor => OpeningKind::Door,
             _ => return vec![],
         };
         let s = self.inst[i].size;
@@ -265,6 +271,20 @@ impl super::Problem {
                             out.push(super::Pose {
                                 c: at(along, gap + 0.5 * s[1]),
                                 yaw: toward,
+                                z,
+                            });
+                        }
+                    }
+                }
+                Anchor::FaceDoor => {
+                    // beyond the clear zone; a seated desk turned away, its seat behind it
+                    let yaw = if seated { into } else { toward };
+                    let clear = crate::plan::check::DOOR_CLEAR_DEPTH + 0.2;
+                    for along in [0.0, -0.3 * o.width, 0.3 * o.width] {
+                        for gap in [clear, clear + 0.5, clear + 1.0, clear + 1.5] {
+                            out.push(super::Pose {
+                                c: at(along, gap + 0.5 * s[1]),
+                                yaw,
                                 z,
                             });
                         }

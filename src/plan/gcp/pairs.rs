@@ -98,7 +98,7 @@ pub(super) fn face_screens(spec: &mut SceneSpec) {
                 !opposite(spec, s)
                     && !matches!(
                         spec.anchors.get(*s),
-                        Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door)
+                        Some(Anchor::FaceWindow | Anchor::Window | Anchor::Door | Anchor::FaceDoor)
                     )
                     && !spec
                         .relations

@@ -68,6 +68,14 @@ impl Problem {
             .iter()
             .any(|&(k, _, subject)| k == RelationKind::At && !subject)
     }
+
+    /// Whether a seat at instance `i` is to face the door (a desk "facing the door": the one
+    /// at it faces the door across it).
+    pub(super) fn seat_faces_door(&self, i: usize) -> bool {
+        self.rels[i].iter().any(|&(k, j, subject)| {
+            k == RelationKind::At && !subject && self.inst[j].anchor == Anchor::FaceDoor
+        })
+    }
 }
 
 pub(super) fn yaw_facing(d: [f64; 2]) -> f64 {

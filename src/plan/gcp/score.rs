@@ -60,18 +60,22 @@ impl Problem {
             }
         }
         let mut total = 1;
-        let mut ok = anchor_holds_in(
-            &b,
-            self.inst[i].anchor,
-            self.scene,
-            self.room,
-            &self.openings,
-        ) as usize;
+        // a desk whose seat faces the door across it: its back to the door
+        let (held, anchor) = if self.seat_faces_door(i) {
+            let back = Pose {
+                yaw: p.yaw + 180.0,
+                ..*p
+            };
+            (self.boxed(i, &back), Anchor::FaceDoor)
+        } else {
+            (b, self.inst[i].anchor)
+        };
+        let mut ok = anchor_holds_in(&held, anchor, self.scene, self.room, &self.openings) as usize;
         let mut near = 0.0;
         let mut pose_bonus = 0.0;
         let free_yaw = !matches!(
             self.inst[i].anchor,
-            Anchor::Side | Anchor::Corner | Anchor::FaceWindow
+            Anchor::Side | Anchor::Corner | Anchor::FaceWindow | Anchor::FaceDoor
         );
         for &(rel, j, subject) in &self.rels[i] {
             let Some(pj) = placed[j] else { continue };

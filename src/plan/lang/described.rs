@@ -34,7 +34,7 @@ const LINKS: &[&str] = &[
 const SHADES: &[&str] = &["light", "dark", "pale", "deep", "bright", "vivid", "soft"];
 
 /// A colour or material name, or a word of one ("navy", "oak", "stainless").
-fn colour_or_material(w: &str) -> bool {
+pub(super) fn colour_or_material(w: &str) -> bool {
     COLOURS.iter().any(|c| c.0 == w) || MATERIALS.iter().any(|m| m.0.split(' ').any(|x| x == w))
 }
 

@@ -109,6 +109,10 @@ pub(super) fn read_placements(r: &mut Reading) {
             Anchor::Window,
         ),
         (
+            r"\b(?:facing|faces|face|looking at|looks at|turned to(?:wards?)?|towards?) (?:the )?(?:(?:front |main |entrance |back )?door(?:way)?|(?:front |main )?(?:entrance|entryway)(?: door)?)\b",
+            Anchor::FaceDoor,
+        ),
+        (
             r"\b(?:by|near|beside|next to|at|close to|inside|behind|to|up to|over to) (?:the )?(?:(?:front |main |entrance |back )?door(?:way)?|(?:front |main )?(?:entrance|entryway)(?: door)?)\b",
             Anchor::Door,
         ),

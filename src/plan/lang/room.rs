@@ -3,6 +3,10 @@
 use super::{number_of, re, word_list, words_in, Mention, Reading};
 use crate::plan::units::Dims;
 
+/// The floor factor of a place named as a hall ("an exhibition hall"): twice the floor its
+/// kind's furniture needs, the room of a place where a crowd gathers rather than a party.
+const HALL_SCALE: f64 = 2.0;
+
 /// Reads the room's size, the people it is for, its scale and whether only what is named is
 /// wanted from `t` into `r`; `masked` holds the dimensions objects took.
 pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dims: &[Dims]) {
@@ -41,6 +45,10 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
         }
     }
     r.scale = room_scale(t, &r.mentions, r.scene.map(|(_, s, _)| s));
+    // "a conference hall": a hall is large, unless the text says otherwise ("a small dance hall")
+    if r.large_place && r.scale >= 1.0 {
+        r.scale = r.scale.max(HALL_SCALE);
+    }
     r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
         .is_match(t);
 }

@@ -37,16 +37,9 @@ pub(super) fn read_scene(
             .iter()
             .any(|w| w.replace('_', " ") == name)
     };
-    for (k, m) in found.iter().enumerate() {
-        // An owner's place ("the dentist's") said before a room any place has ("a dentist's
-        // waiting room") only qualifies that room.
-        if m.as_str().ends_with("'s")
-            && found
-                .get(k + 1)
-                .is_some_and(|n| n.start() == m.end() + 1 && shared(n.as_str()))
-        {
-            continue;
-        }
+    // Whether the scene name `m` names the place: no part of a longer object's name, no item
+    // of the contents, no place word another noun makes another place.
+    let names_place = |m: &regex::Match| {
         let inside_object = objects
             .iter()
             .any(|&(s, e)| s <= m.start() && m.end() <= e && e - s > m.end() - m.start());
@@ -64,7 +57,33 @@ pub(super) fn read_scene(
                 || w.ends_with("'s")
                 || crate::plan::offline::style_word(w).is_some())
         };
-        if !inside_object && !item && !qualified {
+        !inside_object && !item && !qualified
+    };
+    for (k, m) in found.iter().enumerate() {
+        // An owner's place ("the dentist's") said before a room any place has ("a dentist's
+        // waiting room") only qualifies that room.
+        if m.as_str().ends_with("'s")
+            && found
+                .get(k + 1)
+                .is_some_and(|n| n.start() == m.end() + 1 && shared(n.as_str()))
+        {
+            continue;
+        }
+        // "a town hall meeting room", "a museum cafe": a place's name right before another
+        // place's name qualifies it; the last noun is the place ("a library reading room", two
+        // names of one place, is that place).
+        let next = found
+            .get(k + 1)
+            .filter(|n| n.start() == m.end() + 1 && names_place(n));
+        // (a generic place word after it is its head: "a gallery hall" is a gallery)
+        let head = next.filter(|n| word_list("place_heads").contains(&n.as_str()));
+        if next.is_some_and(|n| scene_of[n.as_str()] != scene_of[m.as_str()])
+            && head.is_none()
+            && names_place(m)
+        {
+            continue;
+        }
+        if names_place(m) {
             // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
             // place_heads) after a word that starts another scene's name ("conference room")
             // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
@@ -87,7 +106,12 @@ pub(super) fn read_scene(
                         .next()
                 })
                 .flatten();
-            let (mut i, start) = match modified {
+            // "a convention hall": a compound head (`kb/words.txt`: compound_heads) after a
+            // noun that starts no scene's name is the place that head names in a compound
+            let compound = compound_head(m.as_str())
+                .filter(|_| modified.is_none() && noun_before(before).is_some())
+                .and_then(|c| scene_of.get(&c).copied());
+            let (mut i, start) = match modified.or(compound) {
                 Some(i) => (i, before.len() - word.len()),
                 None => (scene_of[m.as_str()], m.start()),
             };
@@ -111,7 +135,19 @@ pub(super) fn read_scene(
             }) {
                 end = n.end();
             }
+            if let Some(n) = head.filter(|n| n.start() == end + 1) {
+                end = n.end();
+            }
             r.scene = Some((i, start, end));
+            // "a dance hall", "an exhibition hall": a compound head (a noun before it) names a
+            // large place of the kind, unless the kind is such a place itself (an exam hall) or
+            // the head alone names it (an entrance hall is a hallway)
+            let last = t[start..end].rsplit(' ').next().unwrap_or("");
+            let alone = scene_of.get(last);
+            r.large_place = t[start..end].contains(' ')
+                && compound_head(last).is_some()
+                && compound_head(kb.scenes[i].name.rsplit(' ').next().unwrap_or("")).is_none()
+                && alone != Some(&i);
             masked.push((start, end));
             break;
         }
@@ -189,6 +225,35 @@ fn not_literal(t: &str, s: usize, e: usize, own: &[&str]) -> Option<String> {
                 || is_verb(next)
                 || number_of(next).is_some()));
     head.then(|| next.to_string())
+}
+
+/// The scene `word` names as the head of a compound place name ("a convention hall": a hall of
+/// gatherings), when it is such a head (`kb/words.txt`: compound_heads, `head=scene`; plurals
+/// too).
+fn compound_head(word: &str) -> Option<String> {
+    let w = super::singular(word);
+    word_list("compound_heads").iter().find_map(|e| {
+        let (head, scene) = e.split_once('=')?;
+        (head == w).then(|| scene.replace('_', " "))
+    })
+}
+
+/// The noun that ends `before` (the text before a place word), when it is one that makes a
+/// compound with it ("convention" in "a convention hall"): not a function word, a size or
+/// mood word, an owner ("grandma's"), a style, a word that only describes a place
+/// (`kb/words.txt`: place_describers: "the main hall") or a participle ("a tiled hall").
+fn noun_before(before: &str) -> Option<&str> {
+    let w = before.split_whitespace().last()?;
+    let describes = is_function_word(w)
+        || is_known_word(w)
+        || w.ends_with("'s")
+        || w.ends_with("ed")
+        || crate::plan::offline::style_word(w).is_some()
+        || word_list("place_describers").contains(&w)
+        || word_list("fantastical").contains(&w)
+        || number_of(w).is_some()
+        || super::described::colour_or_material(w);
+    (!describes && w.chars().all(|c| c.is_alphabetic() || c == '-')).then_some(w)
 }
 
 /// Scene names and synonyms to the scene index.

@@ -151,6 +151,11 @@ pub fn is_outdoor_place(w: &str) -> bool {
     word_list("outdoors").contains(&w)
 }
 
+/// Whether `w` puts a place out of doors (`kb/words.txt`, open_air: "outdoor", "open-air").
+pub fn is_open_air(w: &str) -> bool {
+    word_list("open_air").contains(&w)
+}
+
 /// Whether `w` takes a named thing away (`kb/words.txt`, removers: "drop", "take_out").
 pub fn is_remover(w: &str) -> bool {
     word_list("removers").contains(&w)

@@ -57,10 +57,14 @@ pub(super) fn mention_counts(d: &mut Draft) {
                 *explicit.entry(cat.clone()).or_default() += n;
             }
             // "a small office with a lamp on the desk": the one desk of a room the text sizes
-            // small is the desk it refers to (the place's several desks are a bigger room's)
+            // small is the desk it refers to (the place's several desks are a bigger room's);
+            // so is "an office where the desk faces the window": the text sets the desk in the
+            // room as the one it has
             None if m.definite
                 && one_of_few.contains(cat)
-                && (r.room.is_some() || r.scale < 1.0) =>
+                && (r.room.is_some()
+                    || r.scale < 1.0
+                    || r.anchors.iter().any(|&(s, _)| s == mi)) =>
             {
                 counts.insert(cat.clone(), 1);
             }

@@ -33,6 +33,25 @@ pub(super) fn unnamed_place_type(kb: &KnowledgeBase, r: &Reading) -> SceneType {
     }
 }
 
+/// "an outdoor wedding ceremony", "a yoga class outdoors": an open-air word (`kb/words.txt`:
+/// open_air) said of the place (in the phrase that names it, or right after its name) puts a
+/// place that is a room by default out of doors; one said of a thing ("a kitchen with an
+/// outdoor table") does not.
+pub(super) fn said_open_air(r: &Reading) -> bool {
+    let Some((_, s, e)) = r.scene else {
+        return false;
+    };
+    let text = r.text.replace("open air", "open-air");
+    let mut pos = 0;
+    text.split(' ').any(|w| {
+        let start = pos;
+        pos += w.len() + 1;
+        let w = w.trim_matches(|c: char| !(c.is_alphanumeric() || c == '-'));
+        let of_place = (start < s && !text[start..s].contains([',', ':', ';'])) || start == e + 1;
+        lang::is_open_air(w) && of_place
+    })
+}
+
 /// +1 when only outdoor places of the knowledge base hold `category` by default, -1 when only
 /// indoor ones do, 0 when both or neither.
 fn home(kb: &KnowledgeBase, category: &str) -> i32 {

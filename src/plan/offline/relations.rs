@@ -45,7 +45,7 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     let facing: BTreeSet<usize> = r
         .anchors
         .iter()
-        .filter(|(_, a)| *a == Anchor::FaceWindow)
+        .filter(|(_, a)| matches!(a, Anchor::FaceWindow | Anchor::FaceDoor))
         .map(|&(mi, _)| mi)
         .collect();
     // "a reading nook by the window": the place's main piece (what it cannot do without, else
@@ -70,7 +70,9 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     }
     for &(mi, a) in &r.anchors {
         let c = meant(d, mi);
-        if counts.contains_key(c) && (a == Anchor::FaceWindow || !facing.contains(&mi)) {
+        if counts.contains_key(c)
+            && (matches!(a, Anchor::FaceWindow | Anchor::FaceDoor) || !facing.contains(&mi))
+        {
             anchors.insert(c.clone(), a);
         }
     }

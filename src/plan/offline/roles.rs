@@ -34,23 +34,53 @@ pub(super) fn scene_defaults(d: &mut Draft) {
     }
     if r.not_literal.is_some() {
         // the seats of a table left out go with it (the reading chairs of a haunted library)
-        let lone: Vec<String> = counts
-            .keys()
-            .filter(|c| {
-                let objs = crate::plan::groups::partners_of(c);
-                scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
-                    && !objs.iter().any(|o| counts.contains_key(*o))
-            })
-            .cloned()
-            .collect();
-        for c in lone {
-            counts.remove(&c);
-            notes.push(format!(
-                "default `{c}` left out: what it goes with is left out"
-            ));
-        }
+        notes.extend(without_their_partners(
+            scene,
+            counts,
+            &Default::default(),
+            |_| true,
+        ));
     }
     d.defaults = d.counts.clone();
+}
+
+/// The scene's defaults of the kinds `which` keeps that serve only what the plan no longer
+/// holds go with it: a seat whose group partners (`kb/groups.txt`: the tables it stands at or
+/// around) are among the scene's defaults but none is left (the visitor chairs of an office
+/// "with no meeting table"). Named categories (`named`) stay. One note each.
+fn without_their_partners(
+    scene: Option<&crate::plan::kb::SceneKind>,
+    counts: &mut BTreeMap<String, u32>,
+    named: &std::collections::BTreeSet<String>,
+    which: impl Fn(&str) -> bool,
+) -> Vec<String> {
+    let lone: Vec<String> = counts
+        .keys()
+        .filter(|c| !named.contains(*c) && which(c))
+        .filter(|c| {
+            let objs = crate::plan::groups::partners_of(c);
+            scene.is_some_and(|s| s.objects.iter().any(|(o, _)| objs.contains(&o.as_str())))
+                && !objs.iter().any(|o| counts.contains_key(*o))
+        })
+        .cloned()
+        .collect();
+    lone.into_iter()
+        .map(|c| {
+            counts.remove(&c);
+            format!("default `{c}` left out: what it goes with is left out")
+        })
+        .collect()
+}
+
+/// Whether `category` is a kind of what the text named as `said` (singular): the same
+/// category, a compound with it as head ("visitor chair" of "chair") or a one-word kind of it
+/// (`kb/words.txt`: kinds; an armchair is a chair).
+fn kind_of_said(category: &str, said: &str) -> bool {
+    category == said
+        || category
+            .strip_suffix(said)
+            .is_some_and(|q| q.ends_with(' '))
+        || lang::kind_of_compound(category) == Some(said)
 }
 
 /// The category each mention means (`cats`).
@@ -354,11 +384,30 @@ pub(super) fn take_away(d: &mut Draft) {
         }
     }
     counted_nouns(r, cats, counts, defaults, named, explicit, *scene, notes);
-    // A negated role takes its defaults with it ("no bath": no bathtub of any kind).
-    for c in negated.iter().chain(others.iter()) {
-        if let Some(role) = crate::plan::roles::role_of(c) {
-            counts.retain(|k, _| named.contains(k) || crate::plan::roles::role_of(k) != Some(role));
+    // "no chair": every kind of what is negated goes, the visitor chairs of an office as well
+    // as its office chairs; a noun said alone names its role too ("no bath": no bathtub of any
+    // kind), a kind said in full only itself ("no dining table" leaves a kitchen's island).
+    let mut any = false;
+    for (m, cat) in r.mentions.iter().zip(cats.iter()) {
+        if !m.negated || !(negated.contains(cat) || others.contains(cat)) {
+            continue;
         }
+        any = true;
+        let said = lang::singular(&m.text);
+        let role = (!said.contains(' '))
+            .then(|| crate::plan::roles::role_of(cat))
+            .flatten();
+        counts.retain(|k, _| {
+            named.contains(k)
+                || !(kind_of_said(k, &said)
+                    || kind_of_said(k, cat)
+                    || role.is_some_and(|role| crate::plan::roles::role_of(k) == Some(role)))
+        });
+    }
+    // the seats that served only the negated things go with them (the chairs around a
+    // table; a coffee table stays for the armchairs when the sofa goes)
+    if any {
+        notes.extend(without_their_partners(*scene, counts, named, lang::is_seat));
     }
 }
 
