@@ -46,7 +46,10 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
     }
     r.scale = room_scale(t, &r.mentions, r.scene.map(|(_, s, _)| s));
     // "a conference hall": a hall is large, unless the text says otherwise ("a small dance hall")
-    if r.large_place && r.scale >= 1.0 {
+    // or counts what fills it ("a dining hall with three tables for eight": the room is sized
+    // for what was counted)
+    let counted = r.mentions.iter().any(|m| m.count.is_some_and(|n| n >= 2));
+    if r.large_place && r.scale >= 1.0 && !counted {
         r.scale = r.scale.max(HALL_SCALE);
     }
     r.exclusive = re(r"\bnothing else\b|\b(?:only|just) (?:a|an|one|two|three|four|five|[0-9]+)\b")
