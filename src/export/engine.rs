@@ -260,16 +260,20 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
         .filter(|i| keep[usize::from(i.instance_id)])
         .map(|i| (node_name(&i.id), json!(i.category)))
         .collect();
-    let root = b.push_node(json!({
+    let mut root_node = json!({
         "name": "dreamscene",
         "extras": {
             "units": "metres", "up": "+y", "prompt": scene.prompt,
             "scene_type": if indoor { "indoor" } else { "outdoor" },
             "room_size_m": room, "categories": categories,
             "labels": labels.to_json()["semantic"].clone(),
-            "animated": timeline.is_some(),
         }
-    }));
+    });
+    if timeline.is_some() {
+        // only when animated: a still scene's extras stay as they were
+        root_node["extras"]["animated"] = json!(true);
+    }
+    let root = b.push_node(root_node);
     if per_object {
         if keep[0] && labels.environment.1 > 0 {
             let (start, count) = labels.environment;
