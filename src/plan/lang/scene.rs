@@ -64,7 +64,16 @@ pub(super) fn read_scene(
                 || w.ends_with("'s")
                 || crate::plan::offline::style_word(w).is_some())
         };
-        if !inside_object && !item && !qualified {
+        // "a green velvet sofa": a colour word that is also a place's name ("a village
+        // green") said before another word describes what follows, names no place
+        let colour = crate::plan::colours::COLOURS
+            .iter()
+            .any(|(c, _)| *c == m.as_str())
+            && t[m.end()..]
+                .strip_prefix(' ')
+                .and_then(|rest| rest.split(|c: char| !c.is_alphanumeric()).next())
+                .is_some_and(|w| !w.is_empty() && !is_function_word(w) && !is_verb(w));
+        if !inside_object && !item && !qualified && !colour {
             // "a conference hall", "a lecture hall": a generic place word (`kb/words.txt`:
             // place_heads) after a word that starts another scene's name ("conference room")
             // is that other scene; a specific one keeps its meaning ("a tiny bedroom", "the
