@@ -44,8 +44,16 @@ pub fn curtains(b: &mut Builder) {
         curtain(b, x0, x1, y, 0.02, top);
         // the tie-back: a band round the gathered panel
         let zt = 0.45 * h;
-        b.cuboid(Cushion, [x0 - 0.01, y - 0.04, zt], [x1 + 0.01, y + 0.04, zt + 0.05]);
-        b.ellipsoid(Metal, [sx * (hw - 0.015), y, top + 0.015], [0.025, 0.025, 0.025]);
+        b.cuboid(
+            Cushion,
+            [x0 - 0.01, y - 0.04, zt],
+            [x1 + 0.01, y + 0.04, zt + 0.05],
+        );
+        b.ellipsoid(
+            Metal,
+            [sx * (hw - 0.015), y, top + 0.015],
+            [0.025, 0.025, 0.025],
+        );
     }
     b.rod(Metal, [-hw, y, top + 0.015], [hw, y, top + 0.015], 0.012);
 }

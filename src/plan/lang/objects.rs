@@ -197,8 +197,9 @@ pub(super) fn object_spans(
 /// (`raw`): "a bus stop with a shelter" says again the bus stop, which is a bus shelter.
 fn names_part_of(kb: &KnowledgeBase, head: &str, raw: &[Span]) -> bool {
     raw.iter().filter(|o| !o.2.is_empty()).any(|o| {
-        kb.names()
-            .any(|(n, k)| k.category == o.2 && n.contains(' ') && n.rsplit(' ').next() == Some(head))
+        kb.names().any(|(n, k)| {
+            k.category == o.2 && n.contains(' ') && n.rsplit(' ').next() == Some(head)
+        })
     })
 }
 
