@@ -1,7 +1,7 @@
 //! `dreamscene plan`: a sentence or a dialogue to a SceneSpec and its layout.
 use super::write_png;
 use anyhow::{bail, Context as _, Result};
-use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::gcp::{layout, layout_growing, LayoutOptions};
 use dreamscene::plan::spec::SceneSpec;
 use dreamscene::plan::understood::{Because, Understood};
 use std::path::{Path, PathBuf};
@@ -212,13 +212,13 @@ pub fn plan_to_dir(
     seed: u64,
     out: &Path,
 ) -> Result<(SceneSpec, dreamscene::plan::spec::Layout)> {
-    let (spec, understood) = match llm {
+    let (mut spec, understood, room_stated) = match llm {
         None => {
             let p = dreamscene::plan::offline::plan_prompt(text)?;
             for n in &p.notes {
                 eprintln!("note: {n}");
             }
-            (p.spec, p.understood)
+            (p.spec, p.understood, p.room_stated)
         }
         Some(cfg) => {
             eprintln!("asking {} ({})", cfg.url, cfg.model);
@@ -238,14 +238,28 @@ pub fn plan_to_dir(
                     .collect(),
                 unused: vec![],
             };
-            (spec, understood)
+            (spec, understood, true)
         }
     };
     println!("understood:");
     for line in understood.lines() {
         println!("  {line}");
     }
-    let l = layout(&spec, LayoutOptions::seeded(seed))?;
+    // a room the text gave no size is the planner's choice: it grows to take everything
+    let l = if room_stated {
+        layout(&spec, LayoutOptions::seeded(seed))?
+    } else {
+        let planned = spec.room;
+        let l = layout_growing(&mut spec, LayoutOptions::seeded(seed))?;
+        match (planned, spec.room) {
+            (Some(a), Some(b)) if a != b => eprintln!(
+                "note: the {} x {} m room grew to {} x {} m to take everything",
+                a.size[0], a.size[1], b.size[0], b.size[1]
+            ),
+            _ => {}
+        }
+        l
+    };
     super::create_dir(out)?;
     // spec.json records what was understood and what the layout could not satisfy (added keys).
     let mut json = serde_json::to_value(&spec)?;

@@ -29,7 +29,7 @@ mod tables;
 mod walls;
 use attempt::attempt_layout;
 use fit::join_names;
-pub use fit::smallest_room;
+pub use fit::{layout_growing, smallest_room};
 pub use pairs::viewing_side;
 use problem::{yaw_facing, Pose, Problem};
 pub use room::{choose_room, INDOOR_OCCUPANCY};

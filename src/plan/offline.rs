@@ -59,6 +59,9 @@ pub struct Plan {
     pub negated: BTreeSet<String>,
     /// "nothing else", "just ...": only what the text names.
     pub exclusive: bool,
+    /// Whether the text states the room's size: a room the planner chose instead may grow
+    /// when its layout cannot take everything (`gcp::layout_growing`).
+    pub room_stated: bool,
 }
 
 /// Room size stated in the text: "4m x 5m", "15 ft x 12 ft", "400cm by 300cm", "20 m²".
@@ -260,5 +263,6 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         understood,
         negated: d.negated,
         exclusive: d.r.exclusive,
+        room_stated: d.r.room.is_some(),
     })
 }

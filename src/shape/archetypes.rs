@@ -26,6 +26,7 @@ use super::crafts as cr;
 use super::crates as cx;
 use super::daily as d;
 use super::displays as dp;
+use super::drapes as dra;
 use super::drawers as dr;
 use super::effigies as ef;
 use super::engines as en;
@@ -184,6 +185,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("shopping_basket", pk::shopping_basket, [Frame, Top, Body], [Frame => [0.80, 0.12, 0.12], Body => [0.80, 0.12, 0.12], Top => [0.80, 0.12, 0.12], Handle => BLACK]),
     arch!("fitting_room", bo::fitting_room, [Upholstery], [Body => [0.88, 0.86, 0.82], Frame => [0.88, 0.86, 0.82], Upholstery => [0.48, 0.12, 0.16], Seat => [0.55, 0.38, 0.22], Interior => [0.55, 0.55, 0.56], Handle => STEEL, Metal => STEEL]),
     arch!("photo_booth", bo::photo_booth, [Body], [Body => [0.72, 0.12, 0.12], Top => BLACK, Upholstery => [0.12, 0.12, 0.14], Light => [0.98, 0.96, 0.90], Seat => STEEL, Interior => BLACK, Handle => STEEL, Metal => STEEL]),
+    arch!("curtains", dra::curtains, [Upholstery], [Upholstery => [0.78, 0.72, 0.62], Cushion => [0.62, 0.52, 0.40], Metal => BRASS]),
+    arch!("privacy_curtain", dra::privacy_curtain, [Upholstery], [Upholstery => [0.62, 0.78, 0.80], Canvas => [0.92, 0.92, 0.91], Metal => STEEL]),
     arch!("security_gate", bo::security_gate, [Body], [Body => [0.62, 0.64, 0.67], Top => [0.30, 0.30, 0.32], Frame => BLACK, Light => [0.35, 0.90, 0.40]]),
     arch!("turnstile", bo::turnstile, [Body], [Body => STEEL, Top => BLACK, Metal => [0.82, 0.83, 0.85], Light => [0.35, 0.90, 0.40]]),
     arch!("photo_backdrop", bo::photo_backdrop, [Canvas], [Metal => BLACK]),

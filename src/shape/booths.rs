@@ -5,28 +5,9 @@
 //! backdrop (a paper sweep hanging from a bar between two stands and curving onto the floor).
 //! The front faces +y.
 use super::archetypes::{frame_along, Builder};
+use super::drapes::curtain;
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
-
-/// A pleated curtain from `x0` to `x1` hanging at depth `y` between `z0` and `z1`, on a rail:
-/// upright folds of alternating depth.
-fn curtain(b: &mut Builder, x0: f64, x1: f64, y: f64, z0: f64, z1: f64) {
-    let n = (((x1 - x0) / 0.09).round() as usize).max(2);
-    let pitch = (x1 - x0) / n as f64;
-    for i in 0..n {
-        let x = x0 + (i as f64 + 0.5) * pitch;
-        let dy = if i % 2 == 0 { 0.012 } else { -0.012 };
-        b.frustum(
-            Upholstery,
-            [x, y + dy, z0],
-            0.6 * pitch,
-            0.025,
-            1.0,
-            z1 - z0,
-        );
-    }
-    b.rod(Metal, [x0, y, z1 + 0.015], [x1, y, z1 + 0.015], 0.012);
-}
 
 /// A fitting room: back and side walls, a curtain across the open front on a rail, a stool
 /// and a hook inside.

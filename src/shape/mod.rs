@@ -42,6 +42,7 @@ mod crafts;
 mod crates;
 mod daily;
 mod displays;
+mod drapes;
 mod drawers;
 mod effigies;
 mod engines;

@@ -1,7 +1,44 @@
 //! The smallest room that takes a spec: grown in steps of 10% from what its footprints need
-//! until the layout is valid.
-use super::{choose_room, layout_in, LayoutOptions};
-use crate::plan::spec::{Room, SceneSpec};
+//! until the layout is valid; and the layout of a spec whose room is the planner's choice, in a
+//! room grown until everything fits.
+use super::{choose_room, layout, layout_in, LayoutOptions};
+use crate::plan::spec::{Layout, Room, SceneSpec, SpecError};
+
+/// Steps of 10% past the smallest room that [`layout_growing`] tries with the caller's seed
+/// (the smallest room is found with seed 0).
+const GROW_STEPS: usize = 4;
+
+/// [`layout`] of `spec`, whose room the planner chose (the text stated no size): when the
+/// objects do not all fit, the room grows (its proportions kept, never shrunk) to the smallest
+/// room that takes them, then in steps of 10% until the layout with `opts` does, and `spec.room`
+/// becomes the room used. A room that would have to grow past that is refused with the first
+/// error. A room the user stated is never grown: lay it out with [`layout`].
+pub fn layout_growing(spec: &mut SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError> {
+    let first = match layout(spec, opts) {
+        Err(e @ SpecError::DoesNotFit(_)) => e,
+        other => return other,
+    };
+    let Some(planned) = spec.room else {
+        return Err(first);
+    };
+    let smallest = smallest_room(spec);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    let mut size = [0, 1, 2].map(|k| smallest.size[k].max(planned.size[k]));
+    for _ in 0..=GROW_STEPS {
+        if size == planned.size {
+            size = [r(size[0] * 1.1), r(size[1] * 1.1), size[2]];
+            continue;
+        }
+        let mut grown = spec.clone();
+        grown.room = Some(Room { size });
+        if let Ok(l) = layout(&grown, opts) {
+            *spec = grown;
+            return Ok(l);
+        }
+        size = [r(size[0] * 1.1), r(size[1] * 1.1), size[2]];
+    }
+    Err(first)
+}
 
 /// "a, b and 3 more" followed by `verb`.
 pub(super) fn join_names(names: &[String], verb: &str) -> String {

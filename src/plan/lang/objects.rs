@@ -155,9 +155,12 @@ pub(super) fn object_spans(
             from = j + 1;
             (j, known_next) = run(from);
         }
-        // "a craft corner", "a reading nook": words before an area word describe the area
+        // "a craft corner", "a reading nook", "a spare room": words before an area word or a
+        // room's generic name (`kb/words.txt`: place_heads) describe the place
         let area_next = all.get(j).is_some_and(|x| {
-            not_objects().contains(&x.1) || not_objects().contains(&singular(x.1).as_str())
+            not_objects().contains(&x.1)
+                || not_objects().contains(&singular(x.1).as_str())
+                || word_list("place_heads").contains(&singular(x.1).as_str())
         });
         if j > from && !known_next && !area_next {
             let head = all[j - 1].1;
@@ -166,6 +169,9 @@ pub(super) fn object_spans(
                 && !not_objects().contains(&head)
                 && !not_objects().contains(&singular(head).as_str())
                 && crate::plan::offline::style_word(head).is_none()
+                // "an old brick warehouse": a place's name is where things are, not a thing
+                && !super::setting::names_place(kb, &singular(head))
+                && !names_part_of(kb, &singular(head), &raw)
                 && head.len() > 2;
             if ok {
                 let start = all[from].0;
@@ -185,6 +191,16 @@ pub(super) fn object_spans(
         keep
     });
     raw
+}
+
+/// Whether the unknown noun `head` is the last word of another name of a thing the text names
+/// (`raw`): "a bus stop with a shelter" says again the bus stop, which is a bus shelter.
+fn names_part_of(kb: &KnowledgeBase, head: &str, raw: &[Span]) -> bool {
+    raw.iter().filter(|o| !o.2.is_empty()).any(|o| {
+        kb.names().any(|(n, k)| {
+            k.category == o.2 && n.contains(' ') && n.rsplit(' ').next() == Some(head)
+        })
+    })
 }
 
 /// Whether a name "X of Y" is said in the plural of its head X ("buckets of flowers" is several

@@ -158,6 +158,19 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
         }
     }
+    // "two sofas facing each other": a pair turned to one another (one mention, both ends)
+    for m in re(r"\b(?:facing|face|faces|opposite|across from) (?:each other|one another)\b")
+        .find_iter(&t)
+    {
+        let Some(s) = subject_before(&r.mentions, m.start()) else {
+            continue;
+        };
+        let pair = r.mentions[s].count.map_or(r.mentions[s].plural, |n| n == 2);
+        if pair {
+            r.relations.push((s, RelationKind::Opposite, s));
+        }
+        used.push((m.start(), m.end()));
+    }
     for (p, rel) in phrases {
         let Some(rel) = rel else { continue };
         for m in re(p).find_iter(&t) {

@@ -57,7 +57,16 @@ pub(super) fn read_scene(
                 || w.ends_with("'s")
                 || crate::plan::offline::style_word(w).is_some())
         };
-        !inside_object && !item && !qualified
+        // "a green velvet sofa": a colour word that is also a place's name ("a village
+        // green") said before another word describes what follows, names no place
+        let colour = crate::plan::colours::COLOURS
+            .iter()
+            .any(|(c, _)| *c == m.as_str())
+            && t[m.end()..]
+                .strip_prefix(' ')
+                .and_then(|rest| rest.split(|c: char| !c.is_alphanumeric()).next())
+                .is_some_and(|w| !w.is_empty() && !is_function_word(w) && !is_verb(w));
+        !inside_object && !item && !qualified && !colour
     };
     for (k, m) in found.iter().enumerate() {
         // An owner's place ("the dentist's") said before a room any place has ("a dentist's

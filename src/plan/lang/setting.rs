@@ -15,7 +15,7 @@ const LOCATIVES: &[&str] = &[
 const DETERMINERS: &[&str] = &["a", "an", "the", "some", "my", "our", "your", "their"];
 
 /// Whether `w` names a place rather than a thing.
-fn names_place(kb: &KnowledgeBase, w: &str) -> bool {
+pub(super) fn names_place(kb: &KnowledgeBase, w: &str) -> bool {
     if kb.object(w).is_some() || kb.names().any(|(n, _)| n == w) {
         return false;
     }
@@ -56,7 +56,10 @@ pub(super) fn read_settings(
         let ends = all
             .get(j + 1)
             .is_none_or(|x| is_function_word(x.1) || !is_adjective(x.1));
-        if ends && !inside(pos, masked) && names_place(kb, head) {
+        // a place of two words ("at an airport gate"): its head alone may name a thing
+        let two = (j > k + 2).then(|| format!("{} {}", all[j - 1].1, head));
+        let place = names_place(kb, head) || two.is_some_and(|p| names_place(kb, &p));
+        if ends && !inside(pos, masked) && place {
             let span = (start, pos + head.len());
             r.settings.push(span);
             masked.push(span);

@@ -115,6 +115,17 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         let (Some(&ns), Some(_)) = (counts.get(sc), counts.get(oc)) else {
             continue;
         };
+        // "two sofas facing each other": the second of the pair faces the first (a pair of
+        // seats at a table faces across it as the group has them)
+        if si == oi {
+            if rel == crate::plan::spec::RelationKind::Opposite
+                && ns == 2
+                && crate::plan::groups::group_of(spec, sc).is_none()
+            {
+                push(spec, format!("{sc}2"), rel, format!("{sc}1"), true);
+            }
+            continue;
+        }
         // A seat "around" or "at" its table is the group's relation, whatever the phrase.
         let rel = match crate::plan::groups::group_of(spec, sc) {
             Some((g, t))
