@@ -53,6 +53,7 @@ use super::household as ho;
 use super::instruments as ins;
 use super::jobtables as jt;
 use super::kiosks as ks;
+use super::kitchenyard as ky;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -598,6 +599,11 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("watering_can", hf::watering_can, [Body], [Body => [0.25, 0.50, 0.30], Metal => [0.66, 0.67, 0.69], Handle => [0.25, 0.50, 0.30], Interior => BLACK]),
     arch!("wall_mirror", hf::wall_mirror, [Frame], [Frame => [0.72, 0.56, 0.28], Canvas => [0.78, 0.84, 0.88], Body => [0.35, 0.25, 0.16], Metal => STEEL]),
     arch!("window_seat", hf::window_seat, [Cushion], [Cushion => [0.36, 0.48, 0.62], Body => WHITE, Door => [0.95, 0.95, 0.94], Frame => WHITE, Top => [0.90, 0.90, 0.89], Interior => [0.55, 0.55, 0.55], Handle => BRASS, Pillow => [0.92, 0.86, 0.74]]),
+    arch!("cutting_board", ky::cutting_board, [Top], [Top => [0.72, 0.52, 0.30], Interior => [0.45, 0.30, 0.16], Metal => [0.82, 0.83, 0.85], Handle => BLACK]),
+    arch!("pot_rack", ky::pot_rack, [Pot], [Frame => [0.12, 0.12, 0.13], Metal => [0.30, 0.30, 0.32], Pot => [0.72, 0.40, 0.22], Handle => [0.20, 0.20, 0.21]]),
+    arch!("sawhorse", ky::sawhorse, [Frame, Top], [Frame => [0.78, 0.64, 0.44], Top => [0.80, 0.66, 0.46]]),
+    arch!("baby_gate", ky::baby_gate, [Frame], [Frame => [0.95, 0.95, 0.94], Handle => [0.55, 0.56, 0.58]]),
+    arch!("step_stool", ky::step_stool, [Body], [Body => WHITE, Top => WHITE, Tyre => [0.30, 0.30, 0.32]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

@@ -72,6 +72,7 @@ mod household;
 mod instruments;
 mod jobtables;
 mod kiosks;
+mod kitchenyard;
 mod laundry;
 mod lockers;
 mod lounge;
