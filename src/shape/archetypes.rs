@@ -30,6 +30,7 @@ use super::displays as dp;
 use super::drawers as dr;
 use super::effigies as ef;
 use super::engines as en;
+use super::everyday as ev;
 use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
@@ -604,6 +605,12 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sawhorse", ky::sawhorse, [Frame, Top], [Frame => [0.78, 0.64, 0.44], Top => [0.80, 0.66, 0.46]]),
     arch!("baby_gate", ky::baby_gate, [Frame], [Frame => [0.95, 0.95, 0.94], Handle => [0.55, 0.56, 0.58]]),
     arch!("step_stool", ky::step_stool, [Body], [Body => WHITE, Top => WHITE, Tyre => [0.30, 0.30, 0.32]]),
+    arch!("air_purifier", ev::air_purifier, [Body], [Body => [0.93, 0.93, 0.92], Interior => [0.30, 0.31, 0.33], Light => [0.40, 0.75, 1.0]]),
+    arch!("knife_block", ev::knife_block, [Body], [Body => [0.62, 0.44, 0.26], Handle => [0.10, 0.10, 0.11]]),
+    arch!("towel_roll", ev::towel_roll, [Metal], [Metal => STEEL, Canvas => [0.97, 0.97, 0.95], Interior => [0.62, 0.50, 0.36], Handle => STEEL]),
+    arch!("tricycle", ev::tricycle, [Body], [Body => [0.85, 0.12, 0.10], Tyre => BLACK, Metal => STEEL, Handle => [0.12, 0.12, 0.13], Seat => BLACK]),
+    arch!("clothesline", ev::clothesline, [Frame], [Frame => [0.62, 0.64, 0.66], Metal => [0.85, 0.85, 0.85], Handle => [0.55, 0.40, 0.24]]),
+    arch!("hose_reel", ev::hose_reel, [Pot], [Pot => [0.20, 0.55, 0.25], Frame => [0.22, 0.22, 0.24], Body => [0.22, 0.22, 0.24], Metal => STEEL, Handle => [0.95, 0.65, 0.10]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

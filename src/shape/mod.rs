@@ -46,6 +46,7 @@ mod displays;
 mod drawers;
 mod effigies;
 mod engines;
+mod everyday;
 mod fittings;
 mod fixtures;
 mod florist;
