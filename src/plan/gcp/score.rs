@@ -79,6 +79,9 @@ impl Problem {
             total += 1;
             let holds = if subject {
                 relation_holds_alone(&b, rel, &bj, self.alone(rel, j))
+                    && !(rel == RelationKind::Over
+                        && self.round[j]
+                        && !super::problem::on_ellipse(&b, &bj))
             } else {
                 relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
