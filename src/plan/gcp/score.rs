@@ -67,6 +67,12 @@ impl Problem {
             self.room,
             &self.openings,
         ) as usize;
+        // A thing that stands with its back to a wall (a window seat, a sideboard) still does
+        // at a window: its back to the window's wall, not turned out into the room.
+        if self.faced[i] && self.inst[i].anchor == Anchor::Window {
+            total += 1;
+            ok += anchor_holds_in(&b, Anchor::Side, self.scene, self.room, &self.openings) as usize;
+        }
         let mut near = 0.0;
         let mut pose_bonus = 0.0;
         let free_yaw = !matches!(
