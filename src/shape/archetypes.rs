@@ -255,7 +255,6 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE, Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.25, 0.40, 0.75]]),
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
-    arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
     arch!("arcade", ks::arcade, [Canvas], [Body => [0.09, 0.09, 0.11], Screen => [0.22, 0.45, 0.72], Canvas => [0.20, 0.35, 0.90], Top => [0.14, 0.14, 0.17], Door => [0.30, 0.30, 0.33], Light => [1.0, 0.85, 0.35], Handle => [0.90, 0.12, 0.10], Metal => STEEL, Frame => [0.16, 0.16, 0.18], Interior => BLACK]),
     arch!("atm", ks::atm, [Canvas], [Body => [0.70, 0.71, 0.73], Canvas => [0.10, 0.32, 0.65], Top => [0.22, 0.23, 0.26], Keys => [0.82, 0.82, 0.84], Door => [0.60, 0.61, 0.64], Light => [0.35, 0.90, 0.45], Metal => STEEL, Handle => STEEL, Interior => BLACK]),
     arch!("pail", bw::pail, [Metal], [Metal => [0.74, 0.76, 0.78], Interior => [0.52, 0.54, 0.56], Glass => [0.45, 0.60, 0.70], Handle => [0.55, 0.56, 0.58], Trunk => [0.55, 0.38, 0.22]]),

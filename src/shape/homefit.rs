@@ -70,9 +70,21 @@ pub fn loft_bed(b: &mut Builder) {
     b.legs(Frame, p, 0.0, 0.0, h);
     let zb = 0.62 * h;
     b.cuboid(Frame, [-hw + p, -hd, zb], [hw - p, hd, zb + 0.08]);
-    b.cuboid(Mattress, [-hw + p, -hd + p, zb + 0.08], [hw - p, hd - p, zb + 0.2]);
-    b.cuboid(Duvet, [-hw + p, -hd + 0.55, zb + 0.2], [hw - p, hd - p, zb + 0.23]);
-    b.ellipsoid(Pillow, [0.0, -hd + p + 0.18, zb + 0.25], [0.3 * b.w, 0.14, 0.05]);
+    b.cuboid(
+        Mattress,
+        [-hw + p, -hd + p, zb + 0.08],
+        [hw - p, hd - p, zb + 0.2],
+    );
+    b.cuboid(
+        Duvet,
+        [-hw + p, -hd + 0.55, zb + 0.2],
+        [hw - p, hd - p, zb + 0.23],
+    );
+    b.ellipsoid(
+        Pillow,
+        [0.0, -hd + p + 0.18, zb + 0.25],
+        [0.3 * b.w, 0.14, 0.05],
+    );
     // guard rails: both ends and the wall side full length, the room side up to the ladder
     let zr = (zb + 0.4).min(h - 0.02);
     let ly = hd - 0.4;
@@ -90,12 +102,17 @@ pub fn loft_bed(b: &mut Builder) {
     }
     let mut z = 0.28;
     while z < zb + 0.05 {
-        b.rod(Frame, [hw - 0.02, ly - 0.18, z], [hw - 0.02, ly + 0.18, z], 0.015);
+        b.rod(
+            Frame,
+            [hw - 0.02, ly - 0.18, z],
+            [hw - 0.02, ly + 0.18, z],
+            0.015,
+        );
         z += 0.28;
     }
     // the desk under the bed: a top between the posts, a drawer pedestal at the left
     let zt = (0.42 * h).min(0.76);
-    let (d0, d1) = (-0.6 * hd, 0.4 * hd);
+    let (d0, d1) = (-0.45 * hd, 0.55 * hd);
     b.cuboid(Top, [-hw + p, d0, zt - 0.03], [hw - p, d1, zt]);
     let (pw, pd) = (0.8 * (hw - p), (0.8 * (d1 - d0)).min(0.45));
     b.cuboid(Body, [-hw + p, d0, 0.0], [-hw + p + pw, d0 + pd, zt - 0.03]);
@@ -104,7 +121,11 @@ pub fn loft_bed(b: &mut Builder) {
         b.cuboid(
             Door,
             [-hw + p + 0.02, d0 + pd, z0],
-            [-hw + p + pw - 0.02, d0 + pd + 0.01, z0 + (zt - 0.1) / 3.0 - 0.02],
+            [
+                -hw + p + pw - 0.02,
+                d0 + pd + 0.01,
+                z0 + (zt - 0.1) / 3.0 - 0.02,
+            ],
         );
     }
 }
@@ -119,7 +140,12 @@ pub fn watering_can(b: &mut Builder) {
     let zt = 0.62 * h;
     b.frustum(Body, [cx, 0.0, 0.0], rx, ry, 0.92, zt);
     b.frustum(Body, [cx, 0.0, zt], 0.92 * rx, 0.92 * ry, 0.55, 0.08 * h);
-    b.cylinder(Interior, [cx + 0.2 * rx, 0.0, zt + 0.08 * h], 0.22 * rx.min(ry), 0.005);
+    b.cylinder(
+        Interior,
+        [cx + 0.2 * rx, 0.0, zt + 0.08 * h],
+        0.22 * rx.min(ry),
+        0.005,
+    );
     // The spout from low on the tank's front up to the rose.
     let r = 0.05 * h.min(0.5).max(0.2);
     let a = [cx + 0.8 * rx, 0.0, 0.15 * h];
@@ -131,7 +157,14 @@ pub fn watering_can(b: &mut Builder) {
     let u = d.map(|v| v / l);
     let rr = (2.4 * r).min(0.9 * hd).min(hw - tip[0] + 0.5 * r);
     let len = 0.06 * h.max(0.2);
-    b.revolved(Metal, 0, tip, frame_along(d), 1.0, frustum_profile(r, rr, len));
+    b.revolved(
+        Metal,
+        0,
+        tip,
+        frame_along(d),
+        1.0,
+        frustum_profile(r, rr, len),
+    );
     b.revolved(
         Interior,
         0,
@@ -162,7 +195,11 @@ pub fn wall_mirror(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let f = (0.12 * hw.min(0.5 * h)).clamp(0.025, 0.08);
     let back = -hd + 0.3 * b.d;
-    b.cuboid(Body, [-hw + 0.5 * f, -hd + 0.2 * b.d, 0.5 * f], [hw - 0.5 * f, back, h - 0.5 * f]);
+    b.cuboid(
+        Body,
+        [-hw + 0.5 * f, -hd + 0.2 * b.d, 0.5 * f],
+        [hw - 0.5 * f, back, h - 0.5 * f],
+    );
     b.cuboid(Canvas, [-hw + f, back, f], [hw - f, back + 0.004, h - f]);
     // the frame: four mouldings, a raised lip on each
     for (lo, hi) in [
@@ -175,14 +212,23 @@ pub fn wall_mirror(b: &mut Builder) {
     }
     let lip = 0.35 * f;
     b.cuboid(Frame, [-hw + lip, hd - 0.3 * b.d, 0.0], [hw - lip, hd, lip]);
-    b.cuboid(Frame, [-hw + lip, hd - 0.3 * b.d, h - lip], [hw - lip, hd, h]);
+    b.cuboid(
+        Frame,
+        [-hw + lip, hd - 0.3 * b.d, h - lip],
+        [hw - lip, hd, h],
+    );
     b.cuboid(Frame, [-hw, hd - 0.3 * b.d, 0.0], [-hw + lip, hd, h]);
     b.cuboid(Frame, [hw - lip, hd - 0.3 * b.d, 0.0], [hw, hd, h]);
     // the hanging wire at the back between two rings
     let zw = 0.78 * h;
     let yw = -hd + 0.002;
     for sx in [-1.0, 1.0] {
-        b.rod(Metal, [sx * 0.5 * hw, yw, zw - 0.01], [sx * 0.5 * hw, yw, zw + 0.01], 0.006);
+        b.rod(
+            Metal,
+            [sx * 0.5 * hw, yw, zw - 0.01],
+            [sx * 0.5 * hw, yw, zw + 0.01],
+            0.006,
+        );
     }
     b.polyline(
         Metal,
@@ -204,10 +250,18 @@ pub fn window_seat(b: &mut Builder) {
     let zs = (0.42 * h / 0.8).min(0.6 * h);
     let zc = zs + (0.1 * h / 0.8).min(0.2 * h);
     for sx in [-1.0, 1.0] {
-        let (x0, x1) = if sx < 0.0 { (-hw, -hw + e) } else { (hw - e, hw) };
+        let (x0, x1) = if sx < 0.0 {
+            (-hw, -hw + e)
+        } else {
+            (hw - e, hw)
+        };
         b.cuboid(Frame, [x0, -hd, 0.0], [x1, hd, h]);
     }
-    b.cuboid(Frame, [-hw + e, -hd, h - 0.04 * h], [hw - e, -hd + 0.3 * b.d, h]);
+    b.cuboid(
+        Frame,
+        [-hw + e, -hd, h - 0.04 * h],
+        [hw - e, -hd + 0.3 * b.d, h],
+    );
     let (x0, x1) = (-hw + e, hw - e);
     b.cuboid(Interior, [x0, -hd, 0.0], [x1, hd - 0.06, 0.08]);
     b.cuboid(Body, [x0, -hd, 0.08], [x1, hd - 0.02, zs]);
@@ -227,7 +281,11 @@ pub fn window_seat(b: &mut Builder) {
         );
     }
     b.cuboid(Top, [x0, -hd, zs - 0.02], [x1, hd, zs]);
-    b.cuboid(Cushion, [x0 + 0.01, -hd + 0.01, zs], [x1 - 0.01, hd - 0.03, zc]);
+    b.cuboid(
+        Cushion,
+        [x0 + 0.01, -hd + 0.01, zs],
+        [x1 - 0.01, hd - 0.03, zc],
+    );
     // pillows against the back
     let m = ((x1 - x0) / 0.5).floor().max(1.0) as usize;
     let ph = (h - zc - 0.04 * h).max(0.05);
