@@ -22,7 +22,11 @@ fn holds(prompt: &str, category: &str, n: u32, not: &[&str]) {
     let got = s.objects.get(category).map_or(0, |o| o.number);
     assert_eq!(got, n, "{prompt}: {:?}", keys(&s));
     for c in not {
-        assert!(!s.objects.contains_key(*c), "{prompt}: {c} in {:?}", keys(&s));
+        assert!(
+            !s.objects.contains_key(*c),
+            "{prompt}: {c} in {:?}",
+            keys(&s)
+        );
     }
 }
 
@@ -53,7 +57,11 @@ fn kitchen_things_are_read_as_what_they_are() {
         for seed in 0..3 {
             let l = layout(&spec, LayoutOptions::seeded(seed)).unwrap();
             let r = l.objects.iter().find(|o| o.category == "pot rack").unwrap();
-            assert!(r.position[2] > 1.6, "{prompt} seed {seed}: {:?}", r.position);
+            assert!(
+                r.position[2] > 1.6,
+                "{prompt} seed {seed}: {:?}",
+                r.position
+            );
         }
     }
 }
@@ -92,7 +100,10 @@ fn a_cutting_board_is_a_flat_board_with_a_handle_and_a_knife() {
         assert!(y1 - y0 > 1.9 * hd, "{size:?}");
         // the handle: the board narrows at its right end
         let tab = within(&board, |p| p[0] > 0.9 * hw);
-        assert!(!tab.is_empty() && range(&tab, 1).1 < 0.6 * hd, "{size:?}: no handle");
+        assert!(
+            !tab.is_empty() && range(&tab, 1).1 < 0.6 * hd,
+            "{size:?}: no handle"
+        );
         assert!(!of(&s, Role::Metal).is_empty(), "{size:?}: no knife");
     }
     assert_eq!(archetype_of("chopping board"), "cutting_board");
@@ -106,9 +117,15 @@ fn a_pot_rack_hangs_pans_below_its_rail() {
         let rail = within(&of(&s, Role::Frame), |p| p[2] < 0.9 * h);
         let pans = of(&s, Role::Pot);
         assert!(pans.len() > 100, "{size:?}: no pans");
-        assert!(range(&pans, 2).1 < range(&rail, 2).0, "{size:?}: pans not under the rail");
+        assert!(
+            range(&pans, 2).1 < range(&rail, 2).0,
+            "{size:?}: pans not under the rail"
+        );
         // chains up to the ceiling
-        assert!(range(&of(&s, Role::Frame), 2).1 > 0.98 * h, "{size:?}: no chains");
+        assert!(
+            range(&of(&s, Role::Frame), 2).1 > 0.98 * h,
+            "{size:?}: no chains"
+        );
     }
 }
 
@@ -133,11 +150,17 @@ fn a_baby_gate_has_close_bars_too_narrow_to_pass() {
     for size in sized("baby gate", [1.4, 1.0, 1.1]) {
         let s = at("baby gate", size);
         let (hw, h) = (size[0] / 2.0, size[2]);
-        let band = within(&all(&s), |p| (p[2] - 0.5 * h).abs() < 0.02 && p[0].abs() < 0.85 * hw);
+        let band = within(&all(&s), |p| {
+            (p[2] - 0.5 * h).abs() < 0.02 && p[0].abs() < 0.85 * hw
+        });
         let n = runs(&band, 0, 0.005);
         let span = range(&band, 0).1 - range(&band, 0).0;
         assert!(n >= 5, "{size:?}: {n} bars");
-        assert!(span / (n as f64) < 0.09, "{size:?}: bars {:.3} apart", span / n as f64);
+        assert!(
+            span / (n as f64) < 0.09,
+            "{size:?}: bars {:.3} apart",
+            span / n as f64
+        );
         assert!(!of(&s, Role::Handle).is_empty(), "{size:?}: no latch");
     }
     assert_eq!(archetype_of("stair gate"), "baby_gate");
@@ -152,8 +175,14 @@ fn a_step_stool_has_a_low_front_tread_and_a_high_back_one() {
         let low = within(&treads, |p| p[2] < 0.7 * h);
         let high = within(&treads, |p| p[2] > 0.9 * h);
         assert!(!low.is_empty() && !high.is_empty(), "{size:?}: one tread");
-        assert!(range(&low, 1).0 > range(&high, 1).0, "{size:?}: the low tread is not in front");
-        assert!(range(&low, 2).1 > 0.3 * h, "{size:?}: the low tread on the floor");
+        assert!(
+            range(&low, 1).0 > range(&high, 1).0,
+            "{size:?}: the low tread is not in front"
+        );
+        assert!(
+            range(&low, 2).1 > 0.3 * h,
+            "{size:?}: the low tread on the floor"
+        );
     }
     assert_eq!(archetype_of("stepstool"), "step_stool");
 }

@@ -22,7 +22,11 @@ pub fn printing_press(b: &mut Builder) {
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
             let (x, y) = (sx * (bw - leg), sy * (0.9 * hd - leg));
-            b.cuboid(Frame, [x - leg, y - leg, 0.0], [x + leg, y + leg, zb - 0.03 * h]);
+            b.cuboid(
+                Frame,
+                [x - leg, y - leg, 0.0],
+                [x + leg, y + leg, zb - 0.03 * h],
+            );
         }
         b.cuboid(
             Frame,
@@ -37,7 +41,11 @@ pub fn printing_press(b: &mut Builder) {
         [-0.7 * bw, -0.3 * hd, zb],
         [0.7 * bw, 0.3 * hd, zb + 0.02 * h],
     );
-    b.cuboid(Frame, [-0.85 * bw, 0.4 * hd, zb], [0.85 * bw, 0.93 * hd, zb + 0.01 * h]);
+    b.cuboid(
+        Frame,
+        [-0.85 * bw, 0.4 * hd, zb],
+        [0.85 * bw, 0.93 * hd, zb + 0.01 * h],
+    );
     b.cuboid(
         Canvas,
         [-0.75 * bw, 0.45 * hd, zb + 0.01 * h],
@@ -53,11 +61,19 @@ pub fn printing_press(b: &mut Builder) {
     }
     b.cuboid(Metal, [-cx1, -1.2 * cy, 0.8 * h], [cx1, 1.2 * cy, 0.9 * h]);
     // The counterweight's finial on the crown.
-    b.ellipsoid(Handle, [0.0, 0.0, 0.94 * h], [0.12 * hw, 0.7 * cy, 0.06 * h]);
+    b.ellipsoid(
+        Handle,
+        [0.0, 0.0, 0.94 * h],
+        [0.12 * hw, 0.7 * cy, 0.06 * h],
+    );
     // The screw and the platen hung from it over the forme.
     let zp = zb + 0.1 * h;
     b.cylinder(Metal, [0.0, 0.0, zp + 0.02 * h], 0.05 * hw, 0.78 * h);
-    b.cuboid(Metal, [-0.8 * bw, -0.36 * hd, zp], [0.8 * bw, 0.36 * hd, zp + 0.03 * h]);
+    b.cuboid(
+        Metal,
+        [-0.8 * bw, -0.36 * hd, zp],
+        [0.8 * bw, 0.36 * hd, zp + 0.03 * h],
+    );
     // The bar handle out to the right, its wooden grip at the end.
     let zh = 0.72 * h;
     let end = [0.8 * hw, 0.55 * hd, zh - 0.04 * h];
@@ -66,7 +82,12 @@ pub fn printing_press(b: &mut Builder) {
         &[[0.0, 0.0, zh], [cx1 + 0.05 * hw, 0.2 * hd, zh], end],
         0.022 * h.min(1.6),
     );
-    b.rod(Frame, end, [0.98 * hw, 0.62 * hd, zh - 0.05 * h], 0.03 * h.min(1.6));
+    b.rod(
+        Frame,
+        end,
+        [0.98 * hw, 0.62 * hd, zh - 0.05 * h],
+        0.03 * h.min(1.6),
+    );
     // The rounce: a crank of four spokes on the bed's right side at the front.
     let (rx, ry, rz) = (bw + 0.06 * hw, 0.75 * hd, zb - 0.04 * h);
     b.rod(Metal, [bw, ry, rz], [rx, ry, rz], 0.02);
@@ -88,28 +109,69 @@ pub fn xray_machine(b: &mut Builder) {
     let (y0, y1) = (-0.15 * hd, hd);
     let yc = 0.5 * (y0 + y1);
     // The table: a pedestal, the detector tray under the top, the padded top.
-    b.cuboid(Body, [-0.3 * hw, yc - 0.2 * hd, 0.0], [0.3 * hw, yc + 0.2 * hd, 0.05 * h]);
-    b.cuboid(Body, [-0.15 * hw, yc - 0.12 * hd, 0.05 * h], [0.15 * hw, yc + 0.12 * hd, zt - 0.06 * h]);
-    b.cuboid(Metal, [-0.5 * hw, y0 + 0.05 * hd, zt - 0.06 * h], [0.5 * hw, y1 - 0.05 * hd, zt - 0.03 * h]);
+    b.cuboid(
+        Body,
+        [-0.3 * hw, yc - 0.2 * hd, 0.0],
+        [0.3 * hw, yc + 0.2 * hd, 0.05 * h],
+    );
+    b.cuboid(
+        Body,
+        [-0.15 * hw, yc - 0.12 * hd, 0.05 * h],
+        [0.15 * hw, yc + 0.12 * hd, zt - 0.06 * h],
+    );
+    b.cuboid(
+        Metal,
+        [-0.5 * hw, y0 + 0.05 * hd, zt - 0.06 * h],
+        [0.5 * hw, y1 - 0.05 * hd, zt - 0.03 * h],
+    );
     b.cuboid(Top, [-hw, y0, zt - 0.03 * h], [hw, y1, zt]);
-    b.cuboid(Cushion, [-0.97 * hw, y0 + 0.03 * hd, zt], [0.97 * hw, y1 - 0.03 * hd, zt + 0.015 * h]);
+    b.cuboid(
+        Cushion,
+        [-0.97 * hw, y0 + 0.03 * hd, zt],
+        [0.97 * hw, y1 - 0.03 * hd, zt + 0.015 * h],
+    );
     // The column on its floor plate at the back, the arm forward from it.
     let cs = 0.1 * hw.min(hd).max(0.3);
-    b.cuboid(Metal, [-2.0 * cs, -hd, 0.0], [2.0 * cs, -hd + 3.0 * cs, 0.02 * h]);
-    b.cuboid(Body, [-cs, -hd + 0.5 * cs, 0.0], [cs, -hd + 2.5 * cs, 0.97 * h]);
+    b.cuboid(
+        Metal,
+        [-2.0 * cs, -hd, 0.0],
+        [2.0 * cs, -hd + 3.0 * cs, 0.02 * h],
+    );
+    b.cuboid(
+        Body,
+        [-cs, -hd + 0.5 * cs, 0.0],
+        [cs, -hd + 2.5 * cs, 0.97 * h],
+    );
     let za = 0.8 * h;
-    b.cuboid(Body, [-0.8 * cs, -hd + 2.5 * cs, za], [0.8 * cs, yc, za + 0.06 * h]);
+    b.cuboid(
+        Body,
+        [-0.8 * cs, -hd + 2.5 * cs, za],
+        [0.8 * cs, yc, za + 0.06 * h],
+    );
     // The tube head across the arm's end, the collimator under it.
     let zh = za - 0.07 * h;
     let r = 0.06 * h.min(2.0);
     b.rod(Body, [-0.35 * hw, yc, zh], [0.35 * hw, yc, zh], r);
-    b.cuboid(Metal, [-0.5 * cs, yc - 0.3 * cs, zh], [0.5 * cs, yc + 0.3 * cs, za]);
+    b.cuboid(
+        Metal,
+        [-0.5 * cs, yc - 0.3 * cs, zh],
+        [0.5 * cs, yc + 0.3 * cs, za],
+    );
     let c = 0.12 * hw.min(hd);
     b.cuboid(Body, [-c, yc - c, zh - r - 0.08 * h], [c, yc + c, zh - r]);
-    b.cuboid(Light, [-0.7 * c, yc - 0.7 * c, zh - r - 0.082 * h], [0.7 * c, yc + 0.7 * c, zh - r - 0.08 * h]);
+    b.cuboid(
+        Light,
+        [-0.7 * c, yc - 0.7 * c, zh - r - 0.082 * h],
+        [0.7 * c, yc + 0.7 * c, zh - r - 0.08 * h],
+    );
     // Handles either side of the collimator.
     for sx in [-1.0, 1.0] {
-        b.rod(Handle, [sx * c, yc, zh - r - 0.04 * h], [sx * 1.6 * c, yc, zh - r - 0.04 * h], 0.012);
+        b.rod(
+            Handle,
+            [sx * c, yc, zh - r - 0.04 * h],
+            [sx * 1.6 * c, yc, zh - r - 0.04 * h],
+            0.012,
+        );
     }
 }
 
@@ -125,7 +187,12 @@ pub fn time_machine(b: &mut Builder) {
     let yd = -0.8 * hd;
     let t = 0.03 * hd.max(0.5);
     b.rod(Metal, [0.0, yd - t, zc], [0.0, yd + t, zc], r);
-    b.rod(Glass, [0.0, yd + t, zc], [0.0, yd + t + 0.005, zc], 0.75 * r);
+    b.rod(
+        Glass,
+        [0.0, yd + t, zc],
+        [0.0, yd + t + 0.005, zc],
+        0.75 * r,
+    );
     for k in 0..8 {
         let a = k as f64 / 8.0 * TAU;
         b.rod(
@@ -139,7 +206,12 @@ pub fn time_machine(b: &mut Builder) {
     // The disc's two standards down to the deck.
     let zd = 0.07 * h;
     for sx in [-1.0, 1.0] {
-        b.rod(Metal, [sx * 0.5 * r, yd, zd], [sx * 0.3 * r, yd, zc], 0.02 * h.max(1.0));
+        b.rod(
+            Metal,
+            [sx * 0.5 * r, yd, zd],
+            [sx * 0.3 * r, yd, zc],
+            0.02 * h.max(1.0),
+        );
     }
     // The sled: runners curling up at the front, the deck on them.
     let rx = 0.8 * hw;
@@ -159,14 +231,30 @@ pub fn time_machine(b: &mut Builder) {
             b.rod(Metal, [x, y, 0.015 * h], [x, y, zd], 0.01 * h);
         }
     }
-    b.cuboid(Top, [-0.9 * hw, -0.95 * hd, zd], [0.9 * hw, 0.8 * hd, zd + 0.02 * h]);
+    b.cuboid(
+        Top,
+        [-0.9 * hw, -0.95 * hd, zd],
+        [0.9 * hw, 0.8 * hd, zd + 0.02 * h],
+    );
     // The seat on the deck, facing forward: a base, the velvet cushion, a buttoned back, arms.
     let z0 = zd + 0.02 * h;
     let (sw, ys) = (0.4 * hw, -0.15 * hd);
     let zs = z0 + 0.15 * h.min(3.0);
-    b.cuboid(Frame, [-sw, ys - 0.3 * hd, z0], [sw, ys + 0.3 * hd, zs - 0.03]);
-    b.cuboid(Upholstery, [-sw, ys - 0.3 * hd, zs - 0.03], [sw, ys + 0.3 * hd, zs + 0.04]);
-    b.cuboid(Upholstery, [-sw, ys - 0.36 * hd, zs], [sw, ys - 0.26 * hd, zs + 0.5]);
+    b.cuboid(
+        Frame,
+        [-sw, ys - 0.3 * hd, z0],
+        [sw, ys + 0.3 * hd, zs - 0.03],
+    );
+    b.cuboid(
+        Upholstery,
+        [-sw, ys - 0.3 * hd, zs - 0.03],
+        [sw, ys + 0.3 * hd, zs + 0.04],
+    );
+    b.cuboid(
+        Upholstery,
+        [-sw, ys - 0.36 * hd, zs],
+        [sw, ys - 0.26 * hd, zs + 0.5],
+    );
     for sx in [-1.0, 1.0] {
         b.cuboid(
             Frame,
@@ -187,7 +275,12 @@ pub fn time_machine(b: &mut Builder) {
     );
     for k in 0..3 {
         let x = (k as f64 - 1.0) * 0.18 * hw;
-        b.rod(Canvas, [x, yp - 0.02, zp + 0.03], [x, yp - 0.02, zp + 0.035], 0.03);
+        b.rod(
+            Canvas,
+            [x, yp - 0.02, zp + 0.03],
+            [x, yp - 0.02, zp + 0.035],
+            0.03,
+        );
     }
     for sx in [-1.0, 1.0] {
         let base = [sx * 0.2 * hw, yp + 0.04, zp + 0.02];
@@ -202,7 +295,12 @@ pub fn time_machine(b: &mut Builder) {
         let x = sx * 0.88 * hw;
         b.polyline(
             Metal,
-            &[[x, -0.2 * hd, zd], [x, -0.2 * hd, zr], [x, -0.9 * hd, zr], [x, -0.9 * hd, zd]],
+            &[
+                [x, -0.2 * hd, zd],
+                [x, -0.2 * hd, zr],
+                [x, -0.9 * hd, zr],
+                [x, -0.9 * hd, zd],
+            ],
             0.012,
         );
     }

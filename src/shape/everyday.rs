@@ -15,9 +15,21 @@ use std::f64::consts::TAU;
 pub fn air_purifier(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     b.frustum(Body, [0.0, 0.0, 0.0], hw, hd, 0.94, h);
-    b.frustum(Interior, [0.0, 0.0, 0.08 * h], 1.005 * hw, 1.005 * hd, 0.97, 0.55 * h);
+    b.frustum(
+        Interior,
+        [0.0, 0.0, 0.08 * h],
+        1.005 * hw,
+        1.005 * hd,
+        0.97,
+        0.55 * h,
+    );
     b.cylinder(Interior, [0.0, 0.0, h], 0.75 * hw.min(hd), 0.002);
-    b.cylinder(Light, [0.0, 0.8 * 0.94 * hd, h], 0.05 * hw.min(hd).max(0.2), 0.003);
+    b.cylinder(
+        Light,
+        [0.0, 0.8 * 0.94 * hd, h],
+        0.05 * hw.min(hd).max(0.2),
+        0.003,
+    );
 }
 
 /// A knife block: a wooden block leaning back on a foot, knife handles coming out of slots in
@@ -29,10 +41,18 @@ pub fn knife_block(b: &mut Builder) {
     let tilt = 0.35;
     let half = [0.9 * hw, 0.45 * hd, 0.5 * zt];
     b.slab(Body, [0.0, -0.05 * hd, 0.5 * zt], half, rot_x(tilt));
-    b.cuboid(Body, [-0.9 * hw, -0.9 * hd, 0.0], [0.9 * hw, 0.9 * hd, 0.06 * h]);
+    b.cuboid(
+        Body,
+        [-0.9 * hw, -0.9 * hd, 0.0],
+        [0.9 * hw, 0.9 * hd, 0.06 * h],
+    );
     // the handles: out of the top along its slope, side by side
     let n = 5;
-    let top = [0.0, -0.05 * hd - zt * 0.5 * tilt.sin(), zt * (0.5 + 0.5 * tilt.cos())];
+    let top = [
+        0.0,
+        -0.05 * hd - zt * 0.5 * tilt.sin(),
+        zt * (0.5 + 0.5 * tilt.cos()),
+    ];
     for k in 0..n {
         let x = (k as f64 - 0.5 * (n - 1) as f64) * 1.6 * hw / n as f64;
         let a = [x, top[1], top[2] - 0.02];
@@ -63,7 +83,12 @@ fn wheel(b: &mut Builder, c: [f64; 3], r: f64, t: f64) {
         })
         .collect();
     b.polyline(Tyre, &pts, t);
-    b.rod(Metal, [c[0] - 0.02, c[1], c[2]], [c[0] + 0.02, c[1], c[2]], 0.15 * r);
+    b.rod(
+        Metal,
+        [c[0] - 0.02, c[1], c[2]],
+        [c[0] + 0.02, c[1], c[2]],
+        0.15 * r,
+    );
     for k in 0..6 {
         let a = k as f64 / 6.0 * TAU;
         b.rod(
@@ -93,17 +118,35 @@ pub fn tricycle(b: &mut Builder) {
     for sx in [-1.0, 1.0] {
         let p = [sx * 0.12 * hw.max(0.2), yf + sx * 0.4 * rf, rf];
         b.rod(Metal, [0.0, yf, rf], p, 0.008);
-        b.cuboid(Handle, [p[0] - 0.03, p[1] - 0.02, p[2] - 0.01], [p[0] + 0.03, p[1] + 0.02, p[2] + 0.01]);
+        b.cuboid(
+            Handle,
+            [p[0] - 0.03, p[1] - 0.02, p[2] - 0.01],
+            [p[0] + 0.03, p[1] + 0.02, p[2] + 0.01],
+        );
     }
     // the fork, the frame and the seat
     let zh = 0.9 * h;
     let head = [0.0, yf - 0.15 * rf, 0.75 * h];
     b.rod(Body, [0.0, yf, rf], head, 0.018);
     b.rod(Body, head, [0.0, head[1], zh], 0.015);
-    b.rod(Handle, [-0.6 * hw, head[1] - 0.05, zh], [0.6 * hw, head[1] - 0.05, zh], 0.014);
+    b.rod(
+        Handle,
+        [-0.6 * hw, head[1] - 0.05, zh],
+        [0.6 * hw, head[1] - 0.05, zh],
+        0.014,
+    );
     let seat = [0.0, yb + 0.3 * rb, 0.62 * h];
-    b.polyline(Body, &[head, [0.0, 0.0, 0.45 * h], [0.0, yb, rb + 0.05]], 0.02);
-    b.rod(Body, [0.0, 0.0, 0.45 * h], [0.0, seat[1], seat[2] - 0.03], 0.015);
+    b.polyline(
+        Body,
+        &[head, [0.0, 0.0, 0.45 * h], [0.0, yb, rb + 0.05]],
+        0.02,
+    );
+    b.rod(
+        Body,
+        [0.0, 0.0, 0.45 * h],
+        [0.0, seat[1], seat[2] - 0.03],
+        0.015,
+    );
     b.ellipsoid(Seat, seat, [0.14 * hw.max(0.3), 0.12 * hd.max(0.3), 0.03]);
 }
 
@@ -115,7 +158,12 @@ pub fn clothesline(b: &mut Builder) {
     let arm = 0.9 * hd;
     for sx in [-1.0, 1.0] {
         b.rod(Frame, [sx * x, 0.0, 0.0], [sx * x, 0.0, h - 0.03], 0.035);
-        b.rod(Frame, [sx * x, -arm, h - 0.08], [sx * x, arm, h - 0.08], 0.025);
+        b.rod(
+            Frame,
+            [sx * x, -arm, h - 0.08],
+            [sx * x, arm, h - 0.08],
+            0.025,
+        );
     }
     let lines = [-0.6 * arm, 0.0, 0.6 * arm];
     let zl = h - 0.1;
@@ -139,7 +187,11 @@ pub fn clothesline(b: &mut Builder) {
                 [xc + wide, y + 0.004, zl],
             );
             for dx in [-0.8 * wide, 0.8 * wide] {
-                b.cuboid(Handle, [xc + dx - 0.01, y - 0.008, zl - 0.02], [xc + dx + 0.01, y + 0.008, zl + 0.02]);
+                b.cuboid(
+                    Handle,
+                    [xc + dx - 0.01, y - 0.008, zl - 0.02],
+                    [xc + dx + 0.01, y + 0.008, zl + 0.02],
+                );
             }
         }
     }
@@ -163,7 +215,12 @@ pub fn hose_reel(b: &mut Builder) {
     // the drum's flanges and the coiled hose between them
     let xf = 0.7 * xs;
     for sx in [-1.0, 1.0] {
-        b.rod(Body, [sx * xf - 0.005, 0.0, zc], [sx * xf + 0.005, 0.0, zc], r);
+        b.rod(
+            Body,
+            [sx * xf - 0.005, 0.0, zc],
+            [sx * xf + 0.005, 0.0, zc],
+            r,
+        );
     }
     b.rod(Metal, [-xs, 0.0, zc], [xs, 0.0, zc], 0.02);
     let coils = ((2.0 * xf) / 0.03).floor() as usize;
@@ -174,14 +231,27 @@ pub fn hose_reel(b: &mut Builder) {
     // the crank on the right
     b.polyline(
         Handle,
-        &[[xs, 0.0, zc], [xs + 0.02, 0.0, zc], [xs + 0.02, 0.0, zc + 0.5 * r]],
+        &[
+            [xs, 0.0, zc],
+            [xs + 0.02, 0.0, zc],
+            [xs + 0.02, 0.0, zc + 0.5 * r],
+        ],
         0.012,
     );
     // the hose's end lying out in front, its nozzle
     b.polyline(
         Pot,
-        &[[0.0, 0.2 * r, zc - 0.75 * r], [0.0, 0.6 * hd, 0.03], [0.3 * hw, 0.85 * hd, 0.03]],
+        &[
+            [0.0, 0.2 * r, zc - 0.75 * r],
+            [0.0, 0.6 * hd, 0.03],
+            [0.3 * hw, 0.85 * hd, 0.03],
+        ],
         0.012,
     );
-    b.rod(Handle, [0.3 * hw, 0.85 * hd, 0.03], [0.5 * hw, 0.95 * hd, 0.03], 0.02);
+    b.rod(
+        Handle,
+        [0.3 * hw, 0.85 * hd, 0.03],
+        [0.5 * hw, 0.95 * hd, 0.03],
+        0.02,
+    );
 }

@@ -15,7 +15,12 @@ pub fn cutting_board(b: &mut Builder) {
     b.cuboid(Top, [-hw, -hd, 0.0], [xh, hd, zt]);
     // the handle: a narrower tab with a hole through it
     b.cuboid(Top, [xh, -0.45 * hd, 0.0], [hw, 0.45 * hd, zt]);
-    b.cylinder(Interior, [0.5 * (xh + hw), 0.0, zt], 0.2 * hd.min(hw - xh), 0.002);
+    b.cylinder(
+        Interior,
+        [0.5 * (xh + hw), 0.0, zt],
+        0.2 * hd.min(hw - xh),
+        0.002,
+    );
     // the groove round the top
     let g = 0.08 * hd;
     for (lo, hi) in [
@@ -28,8 +33,16 @@ pub fn cutting_board(b: &mut Builder) {
     }
     // a knife on it: the blade along x, its handle towards the right
     let yk = -0.3 * hd;
-    b.cuboid(Metal, [-0.7 * hw, yk - 0.1 * hd, zt], [0.05 * hw, yk + 0.1 * hd, h - 0.1 * h]);
-    b.cuboid(Handle, [0.05 * hw, yk - 0.08 * hd, zt], [0.45 * hw, yk + 0.08 * hd, h]);
+    b.cuboid(
+        Metal,
+        [-0.7 * hw, yk - 0.1 * hd, zt],
+        [0.05 * hw, yk + 0.1 * hd, h - 0.1 * h],
+    );
+    b.cuboid(
+        Handle,
+        [0.05 * hw, yk - 0.08 * hd, zt],
+        [0.45 * hw, yk + 0.08 * hd, h],
+    );
 }
 
 /// A pot rack hung from the ceiling: four chains from its top corners down to an iron rail
@@ -41,12 +54,23 @@ pub fn pot_rack(b: &mut Builder) {
     let (x, y) = (hw - r, hd - r);
     for sx in [-1.0, 1.0] {
         for sy in [-1.0, 1.0] {
-            b.rod(Frame, [sx * x, sy * y, zr], [sx * 0.9 * x, sy * 0.9 * y, h], 0.006);
+            b.rod(
+                Frame,
+                [sx * x, sy * y, zr],
+                [sx * 0.9 * x, sy * 0.9 * y, h],
+                0.006,
+            );
         }
     }
     b.polyline(
         Frame,
-        &[[-x, -y, zr], [x, -y, zr], [x, y, zr], [-x, y, zr], [-x, -y, zr]],
+        &[
+            [-x, -y, zr],
+            [x, -y, zr],
+            [x, y, zr],
+            [-x, y, zr],
+            [-x, -y, zr],
+        ],
         r,
     );
     b.rod(Frame, [-x, 0.0, zr], [x, 0.0, zr], r);
@@ -89,13 +113,22 @@ pub fn sawhorse(b: &mut Builder) {
     for sx in [-1.0, 1.0] {
         let x = sx * xe;
         for sy in [-1.0, 1.0] {
-            b.rod(Frame, [x, sy * 0.5 * bd, h - bt], [x, sy * (hd - s), 0.0], s);
+            b.rod(
+                Frame,
+                [x, sy * 0.5 * bd, h - bt],
+                [x, sy * (hd - s), 0.0],
+                s,
+            );
         }
         let zb = 0.35 * h;
         let yb = bd + (hd - s - bd) * (1.0 - zb / (h - bt)) * 0.95;
         b.cuboid(Frame, [x - s, -yb, zb - 0.03], [x + s, yb, zb + 0.03]);
     }
-    b.cuboid(Frame, [-xe, -0.02, 0.35 * h - 0.03], [xe, 0.02, 0.35 * h + 0.03]);
+    b.cuboid(
+        Frame,
+        [-xe, -0.02, 0.35 * h - 0.03],
+        [xe, 0.02, 0.35 * h + 0.03],
+    );
 }
 
 /// A baby gate: a low white frame with close upright bars (too narrow for a child to pass), a
@@ -109,7 +142,11 @@ pub fn baby_gate(b: &mut Builder) {
     b.cuboid(Frame, [-hw + 0.04, -t, h - f], [hw - 0.04, t, h]);
     for sx in [-1.0, 1.0] {
         let x0 = sx * (hw - 0.04);
-        b.cuboid(Frame, [x0.min(x0 - sx * f), -t, 0.0], [x0.max(x0 - sx * f), t, h]);
+        b.cuboid(
+            Frame,
+            [x0.min(x0 - sx * f), -t, 0.0],
+            [x0.max(x0 - sx * f), t, h],
+        );
         // pressure knobs top and bottom out to the doorway's sides
         for z in [0.15 * h, 0.85 * h] {
             b.rod(Handle, [x0, 0.0, z], [sx * hw, 0.0, z], 0.02);
@@ -129,7 +166,11 @@ pub fn baby_gate(b: &mut Builder) {
         b.rod(Frame, [x, 0.0, f], [x, 0.0, h - f], 0.006);
     }
     // the latch on top of the door
-    b.cuboid(Handle, [dw - 0.05, -1.6 * t, h - 2.5 * f], [dw + 0.02, 1.6 * t, h + 0.0]);
+    b.cuboid(
+        Handle,
+        [dw - 0.05, -1.6 * t, h - 2.5 * f],
+        [dw + 0.02, 1.6 * t, h + 0.0],
+    );
 }
 
 /// A step stool: two side frames, a lower tread at the front and an upper one behind and
@@ -140,7 +181,11 @@ pub fn step_stool(b: &mut Builder) {
     let z1 = 0.5 * h;
     let sides = 0.04;
     for sx in [-1.0, 1.0] {
-        let (x0, x1) = if sx < 0.0 { (-hw, -hw + sides) } else { (hw - sides, hw) };
+        let (x0, x1) = if sx < 0.0 {
+            (-hw, -hw + sides)
+        } else {
+            (hw - sides, hw)
+        };
         // the side frame: a tall back leg, a short front leg, rails between
         b.cuboid(Body, [x0, -hd, 0.0], [x1, -hd + 0.06, h]);
         b.cuboid(Body, [x0, hd - 0.06, 0.0], [x1, hd, z1]);
