@@ -58,23 +58,27 @@ pub fn parse_size(s: &str) -> Result<[f64; 3], String> {
     }
 }
 
-/// The knowledge-base category a prompt names (the longest name or synonym found as whole
-/// words), if any.
-pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
-    let words: String = prompt
+/// `text` in lower case as words of letters and digits, one space apart: a prompt and a name
+/// compare alike whatever their punctuation ("an x-ray machine" names the x-ray machine).
+fn plain_words(text: &str) -> String {
+    let words: String = text
         .to_lowercase()
         .chars()
         .map(|c| if c.is_alphanumeric() { c } else { ' ' })
         .collect();
-    let padded = format!(
-        " {} ",
-        words.split_whitespace().collect::<Vec<_>>().join(" ")
-    );
+    words.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The knowledge-base category a prompt names (the longest name or synonym found as whole
+/// words), if any.
+pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
+    let padded = format!(" {} ", plain_words(prompt));
     let kb = KnowledgeBase::builtin();
-    let mut best: Option<(&str, &dreamscene::plan::kb::ObjectKind)> = None;
+    let mut best: Option<(String, &dreamscene::plan::kb::ObjectKind)> = None;
     for (name, kind) in kb.names() {
+        let name = plain_words(name);
         let hit = padded.contains(&format!(" {name} ")) || padded.contains(&format!(" {name}s "));
-        if hit && best.is_none_or(|b| name.len() > b.0.len()) {
+        if hit && best.as_ref().is_none_or(|b| name.len() > b.0.len()) {
             best = Some((name, kind));
         }
     }
@@ -440,4 +444,21 @@ pub fn run(a: Args) -> Result<()> {
         resume: a.resume,
         turntable: a.turntable,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::find_category;
+
+    #[test]
+    fn names_with_hyphens_are_found_in_a_prompt() {
+        for (prompt, category) in [
+            ("an x-ray machine", "x-ray machine"),
+            ("a tall full-length mirror in oak", "full length mirror"),
+            ("a white two-step stool", "step stool"),
+        ] {
+            let got = find_category(prompt).map(|(c, _)| c);
+            assert_eq!(got.as_deref(), Some(category), "{prompt}");
+        }
+    }
 }

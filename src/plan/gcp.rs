@@ -293,7 +293,12 @@ fn layout_in_pinned(
                 .flatten()
         })
         .collect();
+    let round = inst
+        .iter()
+        .map(|i| problem::round_top(&i.category))
+        .collect();
     let mut prob = Problem {
+        round,
         fronts,
         faced,
         wall_hung,

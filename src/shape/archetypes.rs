@@ -22,6 +22,7 @@ use super::cases as c;
 use super::clearglass as cg;
 use super::clocks as ck;
 use super::coast as co;
+use super::contraptions as cn;
 use super::crafts as cr;
 use super::crates as cx;
 use super::daily as d;
@@ -30,6 +31,7 @@ use super::drapes as dra;
 use super::drawers as dr;
 use super::effigies as ef;
 use super::engines as en;
+use super::everyday as ev;
 use super::fixtures as fx;
 use super::florist as fl;
 use super::forms as fo;
@@ -48,10 +50,12 @@ use super::gym;
 use super::hangings as hg;
 use super::heritage as he;
 use super::holders as hr;
+use super::homefit as hf;
 use super::household as ho;
 use super::instruments as ins;
 use super::jobtables as jt;
 use super::kiosks as ks;
+use super::kitchenyard as ky;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -254,7 +258,6 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE, Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.25, 0.40, 0.75]]),
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
     arch!("stove", a::stove, [Body, Door], [Body => STEEL, Door => STEEL, Top => BLACK]),
-    arch!("appliance", a::appliance, [Body, Door], [Body => [0.85, 0.85, 0.85], Door => [0.80, 0.80, 0.81]]),
     arch!("arcade", ks::arcade, [Canvas], [Body => [0.09, 0.09, 0.11], Screen => [0.22, 0.45, 0.72], Canvas => [0.20, 0.35, 0.90], Top => [0.14, 0.14, 0.17], Door => [0.30, 0.30, 0.33], Light => [1.0, 0.85, 0.35], Handle => [0.90, 0.12, 0.10], Metal => STEEL, Frame => [0.16, 0.16, 0.18], Interior => BLACK]),
     arch!("atm", ks::atm, [Canvas], [Body => [0.70, 0.71, 0.73], Canvas => [0.10, 0.32, 0.65], Top => [0.22, 0.23, 0.26], Keys => [0.82, 0.82, 0.84], Door => [0.60, 0.61, 0.64], Light => [0.35, 0.90, 0.45], Metal => STEEL, Handle => STEEL, Interior => BLACK]),
     arch!("pail", bw::pail, [Metal], [Metal => [0.74, 0.76, 0.78], Interior => [0.52, 0.54, 0.56], Glass => [0.45, 0.60, 0.70], Handle => [0.55, 0.56, 0.58], Trunk => [0.55, 0.38, 0.22]]),
@@ -591,6 +594,25 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("mushroom", nm::mushroom, [Shade], [Shade => [0.82, 0.12, 0.10], Trunk => [0.93, 0.90, 0.82], Interior => [0.90, 0.85, 0.74], Canvas => [0.97, 0.96, 0.93]]),
     arch!("lake", nm::lake, [Water], [Water => [0.20, 0.42, 0.55], Soil => [0.40, 0.33, 0.22], Foliage => [0.45, 0.55, 0.25]]),
     arch!("sea", nm::sea, [Water], [Water => [0.12, 0.40, 0.60], Soil => [0.80, 0.70, 0.50], Canvas => [0.95, 0.97, 0.98]]),
+    arch!("printing_press", cn::printing_press, [Metal], [Metal => [0.16, 0.16, 0.17], Body => [0.22, 0.22, 0.23], Frame => [0.42, 0.28, 0.16], Handle => [0.72, 0.56, 0.28], Interior => [0.06, 0.06, 0.07], Canvas => [0.95, 0.93, 0.86]]),
+    arch!("xray_machine", cn::xray_machine, [Body], [Body => [0.90, 0.91, 0.92], Metal => [0.62, 0.64, 0.67], Top => [0.80, 0.82, 0.84], Cushion => [0.22, 0.42, 0.62], Light => [1.0, 0.92, 0.55], Handle => [0.20, 0.20, 0.22]]),
+    arch!("time_machine", cn::time_machine, [Metal], [Metal => BRASS, Handle => [0.80, 0.64, 0.32], Glass => [0.42, 0.30, 0.16], Light => [0.55, 0.85, 1.0], Top => [0.36, 0.22, 0.12], Frame => [0.30, 0.18, 0.10], Upholstery => [0.62, 0.08, 0.10], Body => [0.25, 0.16, 0.09], Canvas => [0.95, 0.92, 0.82]]),
+    arch!("folding_chair", hf::folding_chair, [Seat], [Metal => [0.20, 0.20, 0.22], Handle => STEEL, Seat => [0.20, 0.20, 0.22]]),
+    arch!("loft_bed", hf::loft_bed, [Frame], [Duvet => [0.35, 0.48, 0.66], Top => [0.80, 0.66, 0.46], Body => [0.85, 0.84, 0.80], Door => [0.88, 0.87, 0.83]]),
+    arch!("watering_can", hf::watering_can, [Body], [Body => [0.25, 0.50, 0.30], Metal => [0.66, 0.67, 0.69], Handle => [0.25, 0.50, 0.30], Interior => BLACK]),
+    arch!("wall_mirror", hf::wall_mirror, [Frame], [Frame => [0.72, 0.56, 0.28], Canvas => [0.78, 0.84, 0.88], Body => [0.35, 0.25, 0.16], Metal => STEEL]),
+    arch!("window_seat", hf::window_seat, [Cushion], [Cushion => [0.36, 0.48, 0.62], Body => WHITE, Door => [0.95, 0.95, 0.94], Frame => WHITE, Top => [0.90, 0.90, 0.89], Interior => [0.55, 0.55, 0.55], Handle => BRASS, Pillow => [0.92, 0.86, 0.74]]),
+    arch!("cutting_board", ky::cutting_board, [Top], [Top => [0.72, 0.52, 0.30], Interior => [0.45, 0.30, 0.16], Metal => [0.82, 0.83, 0.85], Handle => BLACK]),
+    arch!("pot_rack", ky::pot_rack, [Pot], [Frame => [0.12, 0.12, 0.13], Metal => [0.30, 0.30, 0.32], Pot => [0.72, 0.40, 0.22], Handle => [0.20, 0.20, 0.21]]),
+    arch!("sawhorse", ky::sawhorse, [Frame, Top], [Frame => [0.78, 0.64, 0.44], Top => [0.80, 0.66, 0.46]]),
+    arch!("baby_gate", ky::baby_gate, [Frame], [Frame => [0.95, 0.95, 0.94], Handle => [0.55, 0.56, 0.58]]),
+    arch!("step_stool", ky::step_stool, [Body], [Body => WHITE, Top => WHITE, Tyre => [0.30, 0.30, 0.32]]),
+    arch!("air_purifier", ev::air_purifier, [Body], [Body => [0.93, 0.93, 0.92], Interior => [0.30, 0.31, 0.33], Light => [0.40, 0.75, 1.0]]),
+    arch!("knife_block", ev::knife_block, [Body], [Body => [0.62, 0.44, 0.26], Handle => [0.10, 0.10, 0.11]]),
+    arch!("towel_roll", ev::towel_roll, [Metal], [Metal => STEEL, Canvas => [0.97, 0.97, 0.95], Interior => [0.62, 0.50, 0.36], Handle => STEEL]),
+    arch!("tricycle", ev::tricycle, [Body], [Body => [0.85, 0.12, 0.10], Tyre => BLACK, Metal => STEEL, Handle => [0.12, 0.12, 0.13], Seat => BLACK]),
+    arch!("clothesline", ev::clothesline, [Frame], [Frame => [0.62, 0.64, 0.66], Metal => [0.85, 0.85, 0.85], Handle => [0.55, 0.40, 0.24]]),
+    arch!("hose_reel", ev::hose_reel, [Pot], [Pot => [0.20, 0.55, 0.25], Frame => [0.22, 0.22, 0.24], Body => [0.22, 0.22, 0.24], Metal => STEEL, Handle => [0.95, 0.65, 0.10]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
 ];
 

@@ -2,8 +2,8 @@
 //! round, so they never read as a plain box from behind: a fridge's condenser (a black coil of
 //! tube zigzagging over wire fins across most of its back) and its compressor dome at the foot,
 //! (a glass-door drinks fridge has the same), a dishwasher's tub wrapped in a dark insulating
-//! blanket, its drain hose looped high up its back, its hoses and cord along the floor, and a standing machine's (an arcade cabinet's,
-//! a jukebox's) rear service door with vent slots, a lock and a power cord. Both draw behind a body that ends at `-hd + BACK` (`laundry.rs`).
+//! blanket, its drain hose looped high up its back, its hoses and cord along the floor. Both
+//! draw behind a body that ends at `-hd + BACK` (`laundry.rs`).
 use super::archetypes::Builder;
 use super::laundry::BACK;
 use super::materials::Role::*;
@@ -90,39 +90,4 @@ pub(super) fn dishwasher_back(b: &mut Builder) {
             0.01,
         );
     }
-}
-
-/// A standing machine's back: a rear service door with rows of vent slots at its top and
-/// bottom, a lock, and the power cord falling from a socket below it.
-pub(super) fn machine_back(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let yb = -hd + BACK;
-    let (x0, x1) = (-hw + 0.12 * b.w, hw - 0.12 * b.w);
-    let (z0, z1) = (0.12 * h, 0.78 * h);
-    b.cuboid(Frame, [x0, yb - 0.012, z0], [x1, yb, z1]);
-    for zc in [z1 - 0.1 * h, z0 + 0.04 * h] {
-        for k in 0..4 {
-            let z = zc + k as f64 * 0.012 * h;
-            b.cuboid(
-                Interior,
-                [x0 + 0.15 * b.w, yb - 0.014, z],
-                [x1 - 0.15 * b.w, yb - 0.012, z + 0.005 * h],
-            );
-        }
-    }
-    b.cuboid(
-        Handle,
-        [x1 - 0.1 * b.w, yb - 0.02, 0.45 * h],
-        [x1 - 0.05 * b.w, yb - 0.012, 0.5 * h],
-    );
-    let yc = -hd + 0.012;
-    b.polyline(
-        Frame,
-        &[
-            [0.0, yb - 0.012, 0.08 * h],
-            [0.0, yc, 0.06 * h],
-            [0.1 * b.w, yc, 0.01],
-        ],
-        0.008,
-    );
 }

@@ -222,7 +222,9 @@ impl super::Problem {
         };
         let s = self.inst[i].size;
         let z = self.hung[i].unwrap_or(0.0);
-        let seated = self.seated_at(i);
+        // (a thing that stands with its back to a wall, a window seat or a sideboard, stands
+        // under a window with its back to the window's wall, as one with a seat at it does)
+        let seated = self.seated_at(i) || self.faced[i];
         let mut out = vec![];
         for o in self.openings.iter().filter(|o| o.kind == kind) {
             let n = o.wall.inward();

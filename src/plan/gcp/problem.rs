@@ -29,6 +29,9 @@ pub(super) struct Problem {
     pub(super) ceiling: Vec<bool>,
     /// Per instance hung from the ceiling: the instance with a floor footprint it hangs over.
     pub(super) hang_over: Vec<Option<usize>>,
+    /// Per instance: its top is drawn round or oval (a lake, a round table), so what stands on
+    /// it keeps its whole footprint on that ellipse, not out at the box's corners.
+    pub(super) round: Vec<bool>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
     /// Front bands of the blocks of rows of this attempt (the view from the rows to what they
@@ -47,6 +50,28 @@ pub(super) struct Pose {
     pub(super) c: [f64; 2],
     pub(super) yaw: f64,
     pub(super) z: f64,
+}
+
+/// Whether `category`'s top is drawn round or oval (its knowledge-base drawing is a lake, a
+/// round or an oval one).
+pub(super) fn round_top(category: &str) -> bool {
+    crate::plan::kb::KnowledgeBase::builtin()
+        .object(category)
+        .is_some_and(|o| {
+            o.archetype == "lake"
+                || o.archetype.starts_with("round_")
+                || o.archetype.starts_with("oval_")
+        })
+}
+
+/// Whether footprint `b` lies on the ellipse inscribed in `support`'s footprint, where a
+/// footprint of its size centred on it would (a boat on its lake, off the box's corners).
+pub(super) fn on_ellipse(b: &Box2, support: &Box2) -> bool {
+    let [a, e] = support.half;
+    let inside = |p: [f64; 2]| (p[0] / a).powi(2) + (p[1] / e).powi(2) <= 1.0;
+    let centred = Box2 { c: support.c, ..*b };
+    let fits = centred.corners().iter().all(|q| inside(support.local(*q)));
+    !fits || b.corners().iter().all(|q| inside(support.local(*q)))
 }
 
 /// The widest gap between a desk's back and its seat there (m): the seats' poses
