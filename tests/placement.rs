@@ -570,6 +570,7 @@ fn appliance_fronts_are_kept_clear() {
         seed: 0,
         objects,
         unsatisfied: vec![],
+        unsatisfied_anchors: vec![],
         openings: vec![],
     };
     let spec: SceneSpec =

@@ -265,7 +265,13 @@ pub fn plan_to_dir(
     let mut json = serde_json::to_value(&spec)?;
     if let Some(map) = json.as_object_mut() {
         map.insert("understood".into(), serde_json::to_value(&understood)?);
-        let unsatisfied: Vec<String> = l.unsatisfied.iter().map(|r| r.to_string()).collect();
+        // (the anchors it could not meet too: "desk1 WINDOW")
+        let unsatisfied: Vec<String> = l
+            .unsatisfied
+            .iter()
+            .map(|r| r.to_string())
+            .chain(l.unsatisfied_anchors.iter().map(|a| a.to_string()))
+            .collect();
         map.insert("unsatisfied".into(), serde_json::to_value(unsatisfied)?);
     }
     let spec_json = serde_json::to_string_pretty(&json)?;
@@ -280,18 +286,27 @@ pub fn plan_to_dir(
     Ok((spec, l))
 }
 
-/// "; 1 relation unsatisfied: chair1 faces table1" (each named), or nothing when all hold.
+/// "; 1 relation unsatisfied: chair1 faces table1" (each named), then "; 1 anchor unmet: desk1
+/// WINDOW", or nothing when all hold.
 pub fn unsatisfied_note(l: &dreamscene::plan::spec::Layout) -> String {
-    match l.unsatisfied.len() {
+    let listed = |what: &str, v: Vec<String>| match v.len() {
         0 => String::new(),
         n => format!(
-            "; {n} relation{} unsatisfied: {}",
+            "; {n} {what}{} {}: {}",
             if n == 1 { "" } else { "s" },
-            l.unsatisfied
-                .iter()
-                .map(|r| r.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
+            if what == "relation" {
+                "unsatisfied"
+            } else {
+                "unmet"
+            },
+            v.join(", ")
         ),
-    }
+    };
+    let relations: Vec<String> = l.unsatisfied.iter().map(|r| r.to_string()).collect();
+    let anchors: Vec<String> = l
+        .unsatisfied_anchors
+        .iter()
+        .map(|a| a.to_string())
+        .collect();
+    listed("relation", relations) + &listed("anchor", anchors)
 }

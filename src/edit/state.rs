@@ -4,7 +4,8 @@
 //! and composition of a scene whose changed PLYs are still in memory. Host-only.
 use super::EditError;
 use crate::plan::check::{
-    penetration, relation_unsatisfied, relations_unsatisfied, wall_distances, Box2, TOLERANCE,
+    anchors_unmet, penetration, relation_unsatisfied, relations_unsatisfied, wall_distances, Box2,
+    TOLERANCE,
 };
 use crate::plan::spec::{Anchor, Layout, PlacedBy, PlacedObject, Relation, SceneType};
 use crate::scene::compose::{merge, place};
@@ -139,6 +140,12 @@ impl SceneState {
     pub fn current_layout(&self) -> Layout {
         let objects = self.placed_objects();
         let unsatisfied = relations_unsatisfied(&objects, &self.relations);
+        let openings = self
+            .layout
+            .as_ref()
+            .map_or_else(Vec::new, |l| l.openings.clone());
+        let room = self.scene.room.size;
+        let unsatisfied_anchors = anchors_unmet(&objects, self.scene.scene_type, room, &openings);
         Layout {
             scene_type: self.scene.scene_type,
             room: crate::plan::spec::Room {
@@ -147,10 +154,8 @@ impl SceneState {
             seed: self.layout.as_ref().map_or(self.scene.seed, |l| l.seed),
             objects,
             unsatisfied,
-            openings: self
-                .layout
-                .as_ref()
-                .map_or_else(Vec::new, |l| l.openings.clone()),
+            unsatisfied_anchors,
+            openings,
         }
     }
 

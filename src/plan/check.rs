@@ -1,8 +1,8 @@
 //! The meaning of relations, anchors and validity (ARCHITECTURE.md), as predicates on placed
 //! objects. The layout search filters candidates with them and the tests check layouts with them.
 use super::spec::{
-    Anchor, Layout, Opening, OpeningKind, PlacedObject, Relation, RelationKind, SceneSpec,
-    SceneType,
+    Anchor, Layout, MissedAnchor, Opening, OpeningKind, PlacedObject, Relation, RelationKind,
+    SceneSpec, SceneType,
 };
 
 pub mod ceiling;
@@ -420,8 +420,11 @@ pub fn anchor_holds(o: &PlacedObject, anchor: Anchor, scene: SceneType, room: [f
     anchor_holds_box(&Box2::of(o), anchor, scene, room)
 }
 
-/// Largest footprint distance to a window's span of WINDOW.
+/// Largest distance (m) from a WINDOW thing's footprint to its window's wall.
 pub const WINDOW_DISTANCE: f64 = 1.0;
+/// How far beyond the ends of a window's span (m) the centre of a thing at the window may
+/// stand: beside its frame, not along the wall past it.
+pub const WINDOW_SIDE: f64 = 0.3;
 /// Largest footprint distance to the window's span of FACE_WINDOW.
 pub const FACE_WINDOW_DISTANCE: f64 = 2.0;
 /// Largest footprint distance to a door's span of DOOR.
@@ -441,6 +444,22 @@ pub fn opening_distance(b: &Box2, o: &Opening) -> f64 {
         .iter()
         .map(|&p| seg_point_dist(p, a, e))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// Whether footprint `b` stands at window `w` (WINDOW: "a desk under the window", "a plant by
+/// the window"): its centre before the window's span or within [`WINDOW_SIDE`] beyond its
+/// ends, and the footprint within [`WINDOW_DISTANCE`] of the window's wall. A thing along the
+/// same wall past the window, however near its frame, is not at it.
+pub fn at_window(b: &Box2, w: &Opening) -> bool {
+    let (a, n) = (w.wall.along(), w.wall.inward());
+    let [x, y, _] = w.position;
+    let along = ((b.c[0] - x) * a[0] + (b.c[1] - y) * a[1]).abs();
+    let off = b
+        .corners()
+        .iter()
+        .map(|p| (p[0] - x) * n[0] + (p[1] - y) * n[1])
+        .fold(f64::INFINITY, f64::min);
+    along <= 0.5 * w.width + WINDOW_SIDE + 1e-9 && off <= WINDOW_DISTANCE + 1e-9
 }
 
 /// A door's clear zone: its width (plus 5 cm a side) by [`DOOR_CLEAR_DEPTH`] (plus 10 cm)
@@ -483,8 +502,8 @@ pub fn opening_zone(o: &Opening) -> Box2 {
     }
 }
 
-/// [`anchor_holds_box`] in a room with `openings`. WINDOW: the footprint is within
-/// [`WINDOW_DISTANCE`] of a window's span. FACE_WINDOW: the window nearest the footprint is
+/// [`anchor_holds_box`] in a room with `openings`. WINDOW: the footprint stands at a window
+/// ([`at_window`]). FACE_WINDOW: the window nearest the footprint is
 /// within [`FACE_WINDOW_DISTANCE`] of it, and the object faces that window's centre within
 /// [`FACE_WINDOW_TOLERANCE`]. DOOR: the footprint is within [`DOOR_DISTANCE`] of a door's span
 /// and outside its clear zone. FACE_DOOR: the door nearest the footprint is within
@@ -499,9 +518,7 @@ pub fn anchor_holds_in(
 ) -> bool {
     let of = |k: OpeningKind| openings.iter().filter(move |o| o.kind == k);
     match anchor {
-        Anchor::Window => {
-            of(OpeningKind::Window).any(|w| opening_distance(b, w) <= WINDOW_DISTANCE)
-        }
+        Anchor::Window => of(OpeningKind::Window).any(|w| at_window(b, w)),
         Anchor::FaceWindow => faces_nearest(b, of(OpeningKind::Window), FACE_WINDOW_DISTANCE),
         Anchor::FaceDoor => {
             of(OpeningKind::Door).all(|d| overlap_depth(b, &door_zone(d)) <= 0.0)
@@ -552,6 +569,24 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
         }
         Anchor::Window | Anchor::FaceWindow | Anchor::Door | Anchor::FaceDoor => false,
     }
+}
+
+/// The instances of `objects` whose anchor does not hold where they stand, in a room with
+/// `openings` ([`anchor_holds_in`]).
+pub fn anchors_unmet(
+    objects: &[PlacedObject],
+    scene: SceneType,
+    room: [f64; 3],
+    openings: &[Opening],
+) -> Vec<MissedAnchor> {
+    objects
+        .iter()
+        .filter(|o| !anchor_holds_in(&Box2::of(o), o.anchor, scene, room, openings))
+        .map(|o| MissedAnchor {
+            id: o.id.clone(),
+            anchor: o.anchor,
+        })
+        .collect()
 }
 
 /// Tolerance of the validity rules (metres).

@@ -6,7 +6,9 @@
 //! seeded restarts keep the best layout. No object is ever dropped: when nothing satisfies its
 //! constraints it takes the best pose it can get and is marked `fallback`.
 use super::check::opening_zone;
-use super::spec::{Layout, Opening, PlacedBy, RelationKind, Room, SceneSpec, SceneType, SpecError};
+use super::spec::{
+    Anchor, Layout, Opening, PlacedBy, RelationKind, Room, SceneSpec, SceneType, SpecError,
+};
 use rand::SeedableRng;
 
 mod above;
@@ -23,10 +25,13 @@ mod poses;
 mod problem;
 mod room;
 pub mod rows;
+mod runs;
 mod score;
 mod spacing;
+mod staff;
 mod tables;
 mod walls;
+mod windows;
 use attempt::attempt_layout;
 use fit::join_names;
 pub use fit::{layout_growing, smallest_room};
@@ -293,12 +298,30 @@ fn layout_in_pinned(
                 .flatten()
         })
         .collect();
+    // (a counter staff stand behind, on the floor where the text puts it at no wall: their
+    // depth behind it)
+    let staff: Vec<f64> = inst
+        .iter()
+        .zip(&rels)
+        .map(|(i, r)| {
+            let stacked = r
+                .iter()
+                .any(|&(rel, _, subject)| subject && rel == RelationKind::Over);
+            match (spec.scene_type, i.anchor) {
+                (SceneType::Indoor, Anchor::Others) if !stacked => classes::Placements::builtin()
+                    .staff_depth(&i.category)
+                    .unwrap_or(0.0),
+                _ => 0.0,
+            }
+        })
+        .collect();
     let round = inst
         .iter()
         .map(|i| problem::round_top(&i.category))
         .collect();
     let mut prob = Problem {
         round,
+        staff,
         fronts,
         faced,
         wall_hung,
@@ -362,8 +385,19 @@ fn layout_in_pinned(
         prob.zones = prob.openings.iter().map(opening_zone).collect();
         let mut fixed = pinned.clone();
         prob.bands = prob.place_rows(spec, &mut fixed);
+        prob.place_runs(spec, &mut fixed);
         let mut l = attempt_layout(&prob, spec, room, opts.seed, &mut rng, &fixed);
+        // a thing asked at a window that stands at a wall with none free there gets one
+        if openings.is_none()
+            && spec.scene_type == SceneType::Indoor
+            && openings::asked_windows(&spec.scene_text).is_none()
+        {
+            prob.openings.extend(prob.windows_for(&l.objects));
+            prob.zones = prob.openings.iter().map(opening_zone).collect();
+        }
         l.openings = prob.openings.clone();
+        l.unsatisfied_anchors =
+            super::check::anchors_unmet(&l.objects, spec.scene_type, room.size, &l.openings);
         let q =
             quality(&prob, &l) - 3.0 * super::check::fronts::fronts_blocked(&l, spec).len() as f64;
         // (an extra attempt is taken only for fewer relaxed pieces and doors blocked, not a

@@ -106,6 +106,9 @@ pub struct Reading {
     /// "a reading nook by the window": where the text puts the place itself, said right after
     /// its name (the planner gives it to the place's main piece, its seat).
     pub place_anchor: Option<Anchor>,
+    /// "six chairs along the wall", "two bookcases against the back wall": mentions asked to
+    /// stand along one wall (a run there), not spread over the walls ("lining the walls").
+    pub one_wall: Vec<usize>,
     /// "a bookcase full of books": (mention index, what it holds as said, the span of those words).
     pub contents: Vec<(usize, String, usize, usize)>,
     /// "a picnic spot in a park": spans naming the place the scene is in (no object of it).

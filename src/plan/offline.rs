@@ -23,6 +23,7 @@ mod counts;
 mod describe;
 mod goods;
 mod outdoors;
+mod parts;
 mod placeable;
 mod purpose;
 mod relations;
@@ -237,6 +238,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         }
     }
     relations::relations(&d, &mut spec);
+    parts::seats_at_parts(&d, &mut spec);
     let essential: BTreeSet<String> = d
         .scene
         .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());

@@ -14,6 +14,8 @@ struct Roles {
     holds: Vec<(String, Vec<String>)>,
     /// Names that say only the role of what they name ("shelving units").
     generic: Vec<String>,
+    /// "has" lines: a category to the things it has as parts (a salon station's mirror).
+    has: Vec<(String, Vec<String>)>,
 }
 
 fn roles() -> &'static Roles {
@@ -35,6 +37,7 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
         needs: vec![],
         holds: vec![],
         generic: vec![],
+        has: vec![],
     };
     for (ln, line) in text.lines().enumerate() {
         let line = line.trim();
@@ -67,6 +70,12 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
                     .ok_or_else(|| err("holds a category".into()))?;
                 r.holds.push((cat, list(held)?));
             }
+            ["has", cat, parts] => {
+                let cat = list(cat)?
+                    .pop()
+                    .ok_or_else(|| err("has a category".into()))?;
+                r.has.push((cat, list(parts)?));
+            }
             ["generic", names] => {
                 for n in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
                     if kb.object(n).is_none() {
@@ -75,10 +84,10 @@ fn parse(text: &str, kb: &super::kb::KnowledgeBase) -> Result<Roles, String> {
                     r.generic.push(n.to_string());
                 }
             }
-            [role, cats] if *role != "needs" && *role != "holds" => r.roles.push((role.to_string(), list(cats)?)),
+            [role, cats] if !matches!(*role, "needs" | "holds" | "has") => r.roles.push((role.to_string(), list(cats)?)),
             _ => {
                 return Err(err(
-                    "expected `role | categories`, `needs | category | categories`, `holds | category | categories` or `generic | names`"
+                    "expected `role | categories`, `needs | category | categories`, `holds | category | categories`, `has | category | categories` or `generic | names`"
                         .into(),
                 ))
             }
@@ -109,6 +118,15 @@ pub const AUDIENCE: &str = "audience seating";
 /// (`kb/roles.txt`: generic): "a shelving unit" in a shop is its display shelf.
 pub fn is_generic(name: &str) -> bool {
     roles().generic.iter().any(|n| n == name)
+}
+
+/// Whether `category` has a `part` of its own (`kb/roles.txt`: has): a salon station's lit
+/// mirror is the mirror a chair at it faces.
+pub fn has_part(category: &str, part: &str) -> bool {
+    roles()
+        .has
+        .iter()
+        .any(|(c, parts)| c == category && parts.iter().any(|p| p == part))
 }
 
 /// Removes from `counts` the defaults (categories not in `named`) there only to hold what the

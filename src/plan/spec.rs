@@ -20,7 +20,7 @@ pub enum Anchor {
     Side,
     Corner,
     Others,
-    /// Beside a window: footprint within [`crate::plan::check::WINDOW_DISTANCE`] of a window's span.
+    /// At a window: before its span, near its wall ([`crate::plan::check::at_window`]).
     Window,
     /// Facing a window: see [`crate::plan::check::anchor_holds_in`].
     #[serde(rename = "FACE_WINDOW")]
@@ -224,9 +224,27 @@ pub struct Layout {
     pub seed: u64,
     pub objects: Vec<PlacedObject>,
     pub unsatisfied: Vec<Relation>,
+    /// Anchors the layout could not meet (a desk asked under the window where no window is
+    /// free), beside the relations in `unsatisfied`; empty (not written) when all hold.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub unsatisfied_anchors: Vec<MissedAnchor>,
     /// Doors and windows of an indoor room (empty outdoors).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub openings: Vec<Opening>,
+}
+
+/// An instance whose anchor does not hold where it stands.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct MissedAnchor {
+    pub id: String,
+    pub anchor: Anchor,
+}
+
+impl std::fmt::Display for MissedAnchor {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = serde_json::to_value(self.anchor).map_err(|_| std::fmt::Error)?;
+        write!(f, "{} {}", self.id, a.as_str().unwrap_or("?"))
+    }
 }
 
 /// Door or window.

@@ -191,6 +191,7 @@ mod tests {
             seed: 0,
             objects,
             unsatisfied: vec![],
+            unsatisfied_anchors: vec![],
             openings: vec![Opening {
                 kind: OpeningKind::Door,
                 wall: Wall::South,

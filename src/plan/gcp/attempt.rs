@@ -29,7 +29,9 @@ pub(super) fn order(prob: &Problem, rng: &mut impl Rng) -> Vec<usize> {
     };
     let key = |i: usize| {
         let a = &prob.inst[i];
-        let wall = matches!(a.anchor, Anchor::Side | Anchor::Corner) as u32;
+        // (a counter staff stand behind takes its wall as a wall thing does)
+        let wall =
+            (matches!(a.anchor, Anchor::Side | Anchor::Corner) || prob.staff[i] > 0.0) as u32;
         let area = a.size[0] * a.size[1];
         let holds = prob.rels[i]
             .iter()
@@ -212,6 +214,7 @@ pub(super) fn attempt_layout(
         seed,
         objects,
         unsatisfied,
+        unsatisfied_anchors: vec![],
         openings: vec![],
     }
 }

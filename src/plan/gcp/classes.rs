@@ -41,6 +41,8 @@ pub struct Placements {
     pub faces: Vec<(Vec<String>, Vec<String>)>,
     /// `indoors` lines: the size of a thing of outdoor scale when it stands in a room.
     indoors: BTreeMap<String, [f64; 3]>,
+    /// `staffed` lines: the counters staff stand behind, and the depth kept for them there.
+    staffed: BTreeMap<String, f64>,
 }
 
 impl Placements {
@@ -49,6 +51,7 @@ impl Placements {
         let mut by_category = BTreeMap::new();
         let mut faces = vec![];
         let mut indoors = BTreeMap::new();
+        let mut staffed = BTreeMap::new();
         let list =
             |v: &str| -> Vec<String> { v.split(',').map(|s| s.trim().to_string()).collect() };
         for (n, line) in text.lines().enumerate() {
@@ -63,6 +66,18 @@ impl Placements {
                     return Err(err("needs 3 fields: faces | seats | screens"));
                 }
                 faces.push((list(f[1]), list(f[2])));
+                continue;
+            }
+            if f[0] == "staffed" {
+                let depth = f.get(2).and_then(|v| v.parse::<f64>().ok());
+                let Some(depth) = depth.filter(|d| f.len() == 3 && *d > 0.0 && *d <= 2.0) else {
+                    return Err(err(
+                        "needs 3 fields: staffed | categories | depth (up to 2 m)",
+                    ));
+                };
+                for c in list(f[1]) {
+                    staffed.insert(c, depth);
+                }
                 continue;
             }
             if f[0] == "indoors" {
@@ -135,6 +150,7 @@ impl Placements {
             by_category,
             faces,
             indoors,
+            staffed,
         })
     }
 
@@ -143,6 +159,15 @@ impl Placements {
     /// ceiling.
     pub fn indoor_size(&self, category: &str) -> Option<[f64; 3]> {
         self.indoors.get(category).copied()
+    }
+
+    /// The depth (m) kept behind `category` for the staff who stand there (a reception desk,
+    /// a checkout), if the table names it.
+    pub fn staff_depth(&self, category: &str) -> Option<f64> {
+        self.staffed.get(category).copied().or_else(|| {
+            let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
+            self.staffed.get(&kb.category).copied()
+        })
     }
 
     /// The built-in table.
@@ -269,8 +294,16 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
             let id = format!("{cat}{k}");
             match class {
                 Class::AgainstWall | Class::OnWall(_) if indoor => {
+                    // (a counter staff stand behind keeps their room from the wall, and a thing
+                    // the text stands on another stands where that one does)
+                    let staffed = Placements::builtin().staff_depth(&cat).is_some();
+                    let on_another = matches!(class, Class::AgainstWall)
+                        && spec
+                            .relations
+                            .iter()
+                            .any(|r| r.subject == id && r.relation == RelationKind::Over);
                     let a = spec.anchors.entry(id.clone()).or_insert(Anchor::Side);
-                    if *a == Anchor::Others || *a == Anchor::Center {
+                    if (*a == Anchor::Others && !staffed && !on_another) || *a == Anchor::Center {
                         *a = Anchor::Side;
                     }
                     if let Class::OnWall(h) = class {

@@ -34,6 +34,9 @@ pub(super) struct Problem {
     pub(super) round: Vec<bool>,
     /// Per instance standing on the floor: the depth its front keeps clear (kb/placement.txt).
     pub(super) fronts: Vec<Option<f64>>,
+    /// Per instance: the depth kept behind it for its staff (a reception desk; `staff.rs`),
+    /// 0 when none.
+    pub(super) staff: Vec<f64>,
     /// Front bands of the blocks of rows of this attempt (the view from the rows to what they
     /// face), each with the instances that belong there.
     pub(super) bands: Vec<(Box2, Vec<usize>)>,
@@ -188,8 +191,9 @@ impl Problem {
                 yaws.push(pj.yaw + 180.0);
             }
         }
-        // (a thing whose seats at its back stand against the wall stands before them)
-        let back = self.wall_seats_depth(i);
+        // (a thing whose seats at its back stand against the wall stands before them, a
+        // counter before its staff)
+        let back = self.wall_seats_depth(i).max(self.staff[i]);
         let anchor = if back > 0.0 {
             Anchor::Side
         } else {

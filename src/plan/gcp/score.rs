@@ -150,6 +150,7 @@ impl Problem {
         let comp = self.composition(i, p, &b, placed, boxes)
             + self.gathering(i, p, &b, placed, boxes)
             - front
+            - self.staff_cost(i, &b, boxes)
             - self.sliver_cost(i, &b, placed, boxes);
         let score = 10.0 * ok as f64 + 2.0 * clearance - 0.3 * near + pose_bonus + comp + jitter;
         (true, ok, total, score)

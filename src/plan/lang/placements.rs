@@ -147,6 +147,9 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
+                if *a == Anchor::Side && one_wall(m.as_str()) {
+                    r.one_wall.push(s);
+                }
                 used.push((m.start(), m.end()));
             } else if r
                 .scene
@@ -212,6 +215,20 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
         }
     }
+}
+
+/// Whether a wall phrase names one wall ("along the wall", "against the back wall", "lining
+/// one wall"), not several ("along the walls", "on both walls") nor a hull or side.
+fn one_wall(phrase: &str) -> bool {
+    let words: Vec<&str> = phrase.split(|c: char| !c.is_alphanumeric()).collect();
+    words.contains(&"wall")
+        && !words.contains(&"mounted")
+        && !words.iter().any(|w| {
+            [
+                "each", "both", "all", "every", "two", "three", "four", "opposite",
+            ]
+            .contains(w)
+        })
 }
 
 /// Whether `rest` begins with a count ("20 chairs", "a dozen tables").

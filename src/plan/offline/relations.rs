@@ -40,6 +40,14 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
             }
         }
     }
+    // a counter staff stand behind (kb/placement.txt: staffed) keeps their room from the wall
+    // the scene would put it against; one the text puts at a wall stands there (below)
+    let table = crate::plan::gcp::classes::Placements::builtin();
+    for (c, a) in anchors.iter_mut() {
+        if *a == Anchor::Side && table.staff_depth(c).is_some() {
+            *a = Anchor::Others;
+        }
+    }
     // "in one corner, facing the window": one anchor per object, and the facing is what a
     // position word cannot give back, so it stays
     let facing: BTreeSet<usize> = r
@@ -296,7 +304,31 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             );
         }
     }
+    // things standing on the floor asked along one wall ("six chairs along the wall"): a run
+    // there, each beside the one before (the layout stands the run along one wall)
+    for &mi in &r.one_wall {
+        let c = meant(d, mi);
+        let n = counts.get(c).copied().unwrap_or(0);
+        if r.mentions[mi].negated || n < 2 || !stands_on_floor(c) {
+            continue;
+        }
+        for k in 2..=n {
+            push(
+                spec,
+                format!("{c}{k}"),
+                RelationKind::Next,
+                format!("{c}{}", k - 1),
+                true,
+            );
+        }
+    }
     crate::plan::groups::apply_named(spec, &keep, &d.named);
+}
+
+/// Whether a category stands on the floor (its own footprint, not hung nor on a support).
+fn stands_on_floor(category: &str) -> bool {
+    use crate::plan::gcp::classes::Class;
+    matches!(class(category), Class::Floor | Class::AgainstWall)
 }
 
 /// The longest run of things hung side by side on one wall (metres of their widths).
