@@ -301,7 +301,11 @@ fn a_window_seat_stands_by_a_window_with_its_back_to_the_wall() {
         let spec = plan_offline(prompt);
         for seed in 0..3 {
             let l = layout(&spec, LayoutOptions::seeded(seed)).unwrap();
-            let seat = l.objects.iter().find(|o| o.category == "window seat").unwrap();
+            let seat = l
+                .objects
+                .iter()
+                .find(|o| o.category == "window seat")
+                .unwrap();
             let b = Box2::of(seat);
             for anchor in [Anchor::Window, Anchor::Side] {
                 assert!(

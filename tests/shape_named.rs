@@ -260,10 +260,7 @@ fn every_boat_floats_on_its_lake() {
         let spec = plan_offline(prompt);
         for seed in 0..3 {
             // (two of the search's restarts: an outdoor scene's search is long in a debug build)
-            let opts = LayoutOptions {
-                seed,
-                restarts: 2,
-            };
+            let opts = LayoutOptions { seed, restarts: 2 };
             let l = layout(&spec, opts).unwrap();
             let lake = l.objects.iter().find(|o| o.category == "lake").unwrap();
             let boats: Vec<_> = l

@@ -2,8 +2,8 @@
 //! round, so they never read as a plain box from behind: a fridge's condenser (a black coil of
 //! tube zigzagging over wire fins across most of its back) and its compressor dome at the foot,
 //! (a glass-door drinks fridge has the same), a dishwasher's tub wrapped in a dark insulating
-//! blanket, its drain hose looped high up its back, its hoses and cord along the floor, and a standing machine's (an arcade cabinet's,
-//! a jukebox's) rear service door with vent slots, a lock and a power cord. Both draw behind a body that ends at `-hd + BACK` (`laundry.rs`).
+//! blanket, its drain hose looped high up its back, its hoses and cord along the floor. Both
+//! draw behind a body that ends at `-hd + BACK` (`laundry.rs`).
 use super::archetypes::Builder;
 use super::laundry::BACK;
 use super::materials::Role::*;

@@ -5,6 +5,10 @@ use crate::plan::check::{
 };
 use crate::plan::spec::{Anchor, Layout, PlacedBy, RelationKind};
 
+/// What standing out over the rim of a round support costs (a relation held counts 10): a
+/// lake's boat keeps its bow and stern on the water wherever the lake has room for it.
+const ELLIPSE_WEIGHT: f64 = 6.0;
+
 /// Weight of a thing turning toward what it relates to, against the search's seeded jitter
 /// (at most 3).
 const FACING_WEIGHT: f64 = 1.5;
@@ -85,13 +89,20 @@ impl Problem {
             total += 1;
             let holds = if subject {
                 relation_holds_alone(&b, rel, &bj, self.alone(rel, j))
-                    && !(rel == RelationKind::Over
-                        && self.round[j]
-                        && !super::problem::on_ellipse(&b, &bj))
             } else {
                 relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
             ok += holds as usize;
+            // on a support drawn round (a lake, a round table) a thing keeps off the box's
+            // corners where it can, but rather sits out over the rim than off its support
+            // (two magazines on a small round side table)
+            if subject
+                && rel == RelationKind::Over
+                && self.round[j]
+                && !super::problem::on_ellipse(&b, &bj)
+            {
+                pose_bonus -= ELLIPSE_WEIGHT;
+            }
             if rel == RelationKind::Opposite {
                 // the two ends face each other, in range or not (a wall TV on the wall the
                 // sofa faces, not behind it), rather than stand close
