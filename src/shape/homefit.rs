@@ -147,7 +147,7 @@ pub fn watering_can(b: &mut Builder) {
         0.005,
     );
     // The spout from low on the tank's front up to the rose.
-    let r = 0.05 * h.min(0.5).max(0.2);
+    let r = 0.05 * h.clamp(0.2, 0.5);
     let a = [cx + 0.8 * rx, 0.0, 0.15 * h];
     let tip = [0.8 * hw, 0.0, 0.84 * h];
     b.rod(Body, a, tip, r);
@@ -174,7 +174,7 @@ pub fn watering_can(b: &mut Builder) {
         frustum_profile(0.8 * rr, 0.8 * rr, 0.003),
     );
     // The handle arching over the tank.
-    let hr = 0.045 * h.min(0.5).max(0.2);
+    let hr = 0.045 * h.clamp(0.2, 0.5);
     b.polyline(
         Handle,
         &[
