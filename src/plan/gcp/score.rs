@@ -97,12 +97,13 @@ impl Problem {
                 relation_holds_alone(&bj, rel, &b, self.alone(rel, i))
             };
             ok += holds as usize;
-            // on a support drawn round (a lake, a round table) a thing keeps off the box's
-            // corners where it can, but rather sits out over the rim than off its support
-            // (two magazines on a small round side table)
+            // on a support drawn round lying on the ground (a lake, a round rug) a thing keeps
+            // off the box's corners where it can; on a round table it may sit out over the rim
+            // rather than off its support (two magazines on a small round side table)
             if subject
                 && rel == RelationKind::Over
                 && self.round[j]
+                && bj.z1 < 0.1
                 && !super::problem::on_ellipse(&b, &bj)
             {
                 pose_bonus -= ELLIPSE_WEIGHT;
