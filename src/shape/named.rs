@@ -211,11 +211,11 @@ pub fn lake(b: &mut Builder) {
     ];
     for [cx, cy, rx, ry] in LOBES {
         let c = [cx * hw, cy * hd, 0.0];
-        // Low closed discs (a side to be seen edge on); where lobes overlap, an edge stands
-        // under the other lobe's top: no seam shows.
+        // Low closed lenses (a side to be seen edge on), their rims half as high as their
+        // middles: where lobes overlap, a rim stays under the other lobe's top and no seam shows.
         for (role, k, z) in [(Soil, 1.0, 0.5 * zw), (Water, 0.94, zw)] {
             let r = k * rx * hw;
-            let disc = vec![[0.0, 0.0], [r, 0.0], [r, z], [0.0, z]];
+            let disc = vec![[0.0, 0.0], [r, 0.0], [r, 0.5 * z], [0.0, z]];
             b.revolved(
                 role,
                 0,
