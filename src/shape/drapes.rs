@@ -66,16 +66,16 @@ pub fn privacy_curtain(b: &mut Builder) {
     let (hl, h) = (b.w.max(b.d) / 2.0, b.h);
     let y = 0.0;
     // the track and the rods that hang it from the ceiling
-    b.cuboid(Metal, [-hl, y - 0.02, h - 0.03], [hl, y + 0.02, h]);
+    b.cuboid(Metal, [-hl, y - 0.02, h - 0.06], [hl, y + 0.02, h]);
     for sx in [-0.9, 0.0, 0.9] {
         b.cylinder(Metal, [sx * hl, y, h - 0.1], 0.008, 0.07);
     }
     let mesh = (0.25 * h).min(0.45);
-    curtain(b, -hl + 0.02, hl - 0.02, y, 0.2, h - 0.1 - mesh);
+    curtain(b, -hl + 0.02, hl - 0.02, y, 0.0, h - 0.1 - mesh);
     b.cuboid(
         Canvas,
-        [-hl + 0.02, y - 0.006, h - 0.1 - mesh],
-        [hl - 0.02, y + 0.006, h - 0.12],
+        [-hl + 0.02, y - 0.012, h - 0.1 - mesh],
+        [hl - 0.02, y + 0.012, h - 0.1],
     );
     if b.d > b.w {
         b.turn_from(first, rot_z(FRAC_PI_2));

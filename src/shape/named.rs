@@ -211,11 +211,12 @@ pub fn lake(b: &mut Builder) {
     ];
     for [cx, cy, rx, ry] in LOBES {
         let c = [cx * hw, cy * hd, 0.0];
-        // Low closed lenses (a side to be seen edge on), their rims half as high as their
-        // middles: where lobes overlap, a rim stays under the other lobe's top and no seam shows.
-        for (role, k, z) in [(Soil, 1.0, 0.5 * zw), (Water, 0.94, zw)] {
-            let r = k * rx * hw;
-            let disc = vec![[0.0, 0.0], [r, 0.0], [r, 0.5 * z], [0.0, z]];
+        // The water a flat open disc (no rim: where lobes overlap no seam shows) over a closed
+        // low disc of soil (the sheet's side, seen edge on), whose rim shows past the water.
+        let r = rx * hw;
+        let soil = vec![[0.0, 0.0], [r, 0.0], [r, 0.6 * zw], [0.0, 0.6 * zw]];
+        let water = vec![[0.0, zw], [0.94 * r, zw]];
+        for (role, disc) in [(Soil, soil), (Water, water)] {
             b.revolved(
                 role,
                 0,
