@@ -1,7 +1,7 @@
 //! Layouts of curtains: the pleated curtain on a rail that booths and hangings share, window
 //! curtains (two floor-length panels gathered at either end of a rod, tied back) and a privacy
 //! curtain (one pleated curtain drawn along a track hung from the ceiling, as round a hospital
-//! bed, its hem clear of the floor). The front faces +y, z up, the bottom face's centre at the
+//! bed, its hem down to the floor). The front faces +y, z up, the bottom face's centre at the
 //! origin.
 use super::archetypes::Builder;
 use super::materials::Role::*;
@@ -59,7 +59,7 @@ pub fn curtains(b: &mut Builder) {
 }
 
 /// A privacy curtain: a ceiling track along its longer side on hangers, and one pleated curtain
-/// drawn along it, its hem a hand's breadth above the floor and a mesh band along its top (a
+/// drawn along it, its hem down to the floor and a mesh band along its top (a
 /// curtain beside a bed runs along the bed: its size is thin across and long front to back).
 pub fn privacy_curtain(b: &mut Builder) {
     let first = b.parts.len();
