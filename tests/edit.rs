@@ -954,6 +954,54 @@ fn an_animated_scene_plays_in_export_render_and_video() {
         );
     }
 
+    // With --time the engine-ready glb is the scene still, as it stands then: no animation,
+    // chair1's node at the track's last key (y up), the root saying the time.
+    let posed = dir.join("posed.glb");
+    ok(&run_cli(&[
+        "export",
+        d,
+        "--format",
+        "glb",
+        "--time",
+        "1",
+        "--out",
+        posed.to_str().unwrap(),
+    ]));
+    let bytes = std::fs::read(&posed).unwrap();
+    export_support::assert_renamed_validates_clean(&bytes, &dir.join("posed-renamed.glb"));
+    let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+    let doc: serde_json::Value = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+    assert!(doc["animations"].is_null(), "a posed glb is still");
+    let nodes = doc["nodes"].as_array().unwrap();
+    let root = nodes.iter().find(|n| n["name"] == "dreamscene").unwrap();
+    assert_eq!(root["extras"]["time_s"].as_f64(), Some(1.0));
+    assert!(root["extras"]["animated"].is_null());
+    let chair = nodes.iter().find(|n| n["name"] == "chair1").unwrap();
+    let tr: Vec<f64> = chair["translation"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    for (i, want) in [p1[0], p1[2], -p1[1]].into_iter().enumerate() {
+        assert!((tr[i] - want).abs() < 1e-4, "chair1 at t = 1: {tr:?}");
+    }
+    assert!(
+        nodes.iter().any(|n| n["name"] == "collider_chair1"),
+        "its collider"
+    );
+    let o = run_cli(&[
+        "export",
+        d,
+        "--format",
+        "glb",
+        "--time",
+        "-1",
+        "--out",
+        dir.join("never.glb").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success() && !dir.join("never.glb").exists());
+
     // A time is refused for a single PLY, and a negative time anywhere.
     let o = run_cli(&[
         "export",

@@ -51,7 +51,8 @@ pub struct Args {
     #[arg(long)]
     pub scene_frame: bool,
     /// Play the scene's timeline (scene.json `timeline`, made by `edit animate`) to this time in
-    /// seconds and export the scene as it stands then.
+    /// seconds and export the scene as it stands then (glb of a scene: the engine-ready glb,
+    /// still, posed at that time).
     #[arg(long)]
     pub time: Option<f64>,
     /// Engine export (a scene directory): keep only these instances, categories or `walls`
@@ -174,7 +175,8 @@ fn write(a: Args) -> Result<()> {
 /// labels. `None` when the plain path applies.
 fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
     use dreamscene::export::engine;
-    let scene_dir = a.input.is_dir() && a.time.is_none();
+    // A time poses the engine-ready glb; the other formats take the merged cloud at that time.
+    let scene_dir = a.input.is_dir() && (a.time.is_none() || format == Format::Glb);
     let selecting = !a.only.is_empty() || !a.without.is_empty();
     if selecting && !scene_dir {
         bail!("--only/--without need a scene directory (they name its instances)");
@@ -219,6 +221,7 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
         only: a.only.clone(),
         without: a.without.clone(),
         per_object_splats: a.splats == SplatsArg::PerObject,
+        time: a.time,
         ..Default::default()
     };
     match format {
@@ -229,10 +232,10 @@ fn engine_export(a: &Args, format: Format) -> Result<Option<()>> {
                 .ok()
                 .and_then(|s| s.timeline)
                 .map_or(0, |t| t.tracks.len());
-            let moving = if tracks > 0 {
-                format!(", {tracks} animated over the timeline")
-            } else {
-                String::new()
+            let moving = match a.time {
+                Some(t) => format!(" posed at {t} s"),
+                None if tracks > 0 => format!(", {tracks} animated over the timeline"),
+                None => String::new(),
             };
             println!(
                 "wrote {} (glb, y up: nodes{moving}, colliders, navmesh of {:.1} m², {} bytes) and {} in {:.2} s",

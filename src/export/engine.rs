@@ -16,6 +16,8 @@
 //! A scene with a timeline (`edit animate`) keeps its motion: every instance's splats are its
 //! node's child (as with per-object splats) and each animated node has an animation sampled at
 //! the timeline's frame rate; colliders move with their node, the navmesh is the rest pose's.
+//! With [`EngineOptions::time`] the scene is exported still, as it stands at that time (nodes,
+//! colliders and navmesh posed there; the root's extras give `time_s`).
 //!
 //! Colliders carry `OMI_physics_body`/`OMI_physics_shape` (Godot 4) and the Khronos draft
 //! `KHR_physics_rigid_bodies`/`KHR_implicit_shapes`, all in `extensionsUsed` only.
@@ -55,6 +57,8 @@ pub struct EngineOptions {
     /// One splat primitive per instance (a child of its node, in its frame) and one for the
     /// environment, instead of one for the whole scene.
     pub per_object_splats: bool,
+    /// Export the scene as it stands at this time of its timeline (seconds), still.
+    pub time: Option<f64>,
 }
 
 /// A scene read for export: the scene file, its parts and labels, layout sizes and openings.
@@ -73,13 +77,28 @@ pub struct SceneInput {
 /// the instance's scale; else its Gaussians' bounds) and the openings (scene.json, else
 /// layout.json).
 pub fn read_input(dir: &Path) -> Result<SceneInput> {
+    read_input_at(dir, None)
+}
+
+/// [`read_input`] with every animated instance posed at `time` (seconds) of the scene's
+/// timeline, which is then dropped: the scene as it stands at that time, still.
+pub fn read_input_at(dir: &Path, time: Option<f64>) -> Result<SceneInput> {
     let dir = if dir.is_file() {
         dir.parent().unwrap_or(Path::new("."))
     } else {
         dir
     };
     let bad = |e: crate::scene::dir::SceneError| ExportError::Unrepresentable(e.to_string());
-    let scene = read_scene(dir).map_err(bad)?;
+    let mut scene = read_scene(dir).map_err(bad)?;
+    if let Some(t) = time {
+        if !t.is_finite() || t < 0.0 {
+            return Err(ExportError::Unrepresentable(format!(
+                "--time {t}: give a time in seconds, 0 or more"
+            )));
+        }
+        scene = crate::scene::timeline::scene_at(&scene, t);
+        scene.timeline = None;
+    }
     let parts = compose_parts(dir, &scene).map_err(bad)?;
     let labels = SceneLabels::of_parts(&scene, &parts)?;
     let layout: Value = std::fs::read_to_string(dir.join("layout.json"))
@@ -272,6 +291,9 @@ pub fn encode(input: &SceneInput, opts: &EngineOptions) -> Result<(Vec<u8>, NavM
     if timeline.is_some() {
         // only when animated: a still scene's extras stay as they were
         root_node["extras"]["animated"] = json!(true);
+    }
+    if let Some(t) = opts.time {
+        root_node["extras"]["time_s"] = json!(t);
     }
     let root = b.push_node(root_node);
     if per_object {
@@ -513,7 +535,7 @@ fn inside_point(o: &collider::Opening, d: f64) -> [f64; 2] {
 /// Reads the scene in `dir` and writes the engine glb to `out` and the navmesh as OBJ beside
 /// it (`<stem>.navmesh.obj`), atomically; returns the glb's size and the navmesh.
 pub fn export_scene(dir: &Path, opts: &EngineOptions, out: &Path) -> Result<(usize, NavMesh)> {
-    let input = read_input(dir)?;
+    let input = read_input_at(dir, opts.time)?;
     let (bytes, nav) = encode(&input, opts)?;
     let write = |p: &Path, b: &[u8]| {
         crate::util::write_atomic(p, b).map_err(|source| ExportError::Write {
