@@ -211,6 +211,11 @@ pub(super) fn read_counts(r: &mut Reading) {
             continue;
         }
         let word = c.get(1).map(|g| g.as_str()).unwrap_or("");
+        // "three booths next to each other", "two armchairs facing each other": reciprocal,
+        // not distributive
+        if word == "each" && tail[c.get(1).map_or(0, |g| g.end())..].starts_with(" other") {
+            continue;
+        }
         // "each long side": an adjective may describe the part, nothing else may stand there
         if c.get(3).is_some_and(|a| !super::is_adjective(a.as_str())) {
             continue;
@@ -317,6 +322,9 @@ pub(super) fn read_counts(r: &mut Reading) {
     let each_clause = re(
         r"\beach (?:(with|having|holding|has|gets|topped with)|[a-z]+ing|in front of|under|beneath|beside|next to|by|behind|against|below|above|on top of|on)\b",
     );
+    let own_group = re(
+        r"^ (?:(?:next to|facing|beside|opposite) (?:each other|one another)|side by side|(?:along|against|on|by|at|in|into|near) (?:the|one|a) (?:[a-z]+ ){0,2}(?:wall|walls|corner|corners|door|doorway|entrance|window|windows|room))\b",
+    );
     for c in each_clause.captures_iter(&t) {
         let Some(c0) = c.get(0) else { continue };
         let placed = c.get(1).is_none();
@@ -324,10 +332,20 @@ pub(super) fn read_counts(r: &mut Reading) {
         let Some(x) = distributor(r, c.start(), "") else {
             continue;
         };
-        let end = t[c.end()..]
+        let mut end = t[c.end()..]
             .find([',', ';', '.', '!', '?'])
             .map(|i| c.end() + i)
             .unwrap_or(t.len());
+        // "desks each with a laptop and three phone booths along the east wall": a thing set
+        // by the room's parts or among its own kind is a new item of the list, and so is all
+        // that follows it
+        if let Some(m) = r
+            .mentions
+            .iter()
+            .find(|m| m.start >= c.end() && m.end <= end && own_group.is_match(&t[m.end..end]))
+        {
+            end = m.start;
+        }
         for m in r.mentions.iter_mut() {
             if m.start >= c.end()
                 && m.end <= end
