@@ -2,8 +2,9 @@
 //! its own) is trimmed until the floor footprint is within [`TRIM_OCCUPANCY`] of the floor and
 //! every piece fits the room; objects the user named are never dropped: when one cannot fit,
 //! planning stops with an error naming it and the smallest room that would take it.
+use super::gcp::classes::Placements;
 use super::gcp::{choose_room, smallest_room};
-use super::spec::{Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
+use super::spec::{Anchor, Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
 use std::collections::BTreeSet;
 
 mod blocks;
@@ -51,15 +52,19 @@ pub const USE_MARGIN: f64 = 0.2;
 /// [`USE_MARGIN`] (flat things and things standing on others too, a slight overestimate). A seat
 /// round a table is pulled out into the table's own room: its bare footprint is all it adds (a
 /// stool at an island or a chair at a desk keeps its own, as the counter or desk has no room
-/// round it).
+/// round it). A table with more seats round it than its long sides take has seats at its ends
+/// too: its length counts them (a long table for ten is its length and two chairs long); a
+/// counter staff stand behind counts their band (kb/placement.txt: staffed).
 pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
-    let tucked: BTreeSet<&str> = spec
+    let around: Vec<(&str, &str)> = spec
         .relations
         .iter()
         .filter(|r| r.relation == RelationKind::Around && r.subject != r.object)
-        .map(|r| r.subject.as_str())
+        .map(|r| (r.subject.as_str(), r.object.as_str()))
         .collect();
+    let tucked: BTreeSet<&str> = around.iter().map(|&(s, _)| s).collect();
     let instances = spec.instances();
+    let size_of = |id: &str| instances.iter().find(|i| i.id == id).map(|i| i.size);
     let grown: Vec<Instance> = instances
         .iter()
         .map(|i| {
@@ -68,12 +73,39 @@ pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
                 g.size[0] += USE_MARGIN;
                 g.size[1] += USE_MARGIN;
             }
+            let seats: Vec<[f64; 3]> = around
+                .iter()
+                .filter(|&&(_, t)| t == i.id)
+                .filter_map(|&(s, _)| size_of(s))
+                .collect();
+            let longer = usize::from(i.size[1] > i.size[0]);
+            g.size[longer] += end_seats_length(i.size[longer], &seats);
+            // a counter staff stand behind, at no wall the text names: their band is its room
+            if i.anchor == Anchor::Others {
+                g.size[1] += Placements::builtin()
+                    .staff_depth(&i.category)
+                    .unwrap_or(0.0);
+            }
             g
         })
         .collect();
     let mut room = choose_room(&grown, scene);
     room.size[2] = choose_room(&instances, scene).size[2];
     room
+}
+
+/// What the seats at the ends of a table `length` long add to its length when the `seats`
+/// round it are more than its two long sides take (a seat's width and 0.1 m each, as the layout
+/// spreads them): a seat's depth and a hand's gap at each end; 0 when the sides take them all.
+fn end_seats_length(length: f64, seats: &[[f64; 3]]) -> f64 {
+    let wide = seats.iter().map(|s| s[0]).fold(0.0, f64::max);
+    let deep = seats.iter().map(|s| s[1]).fold(0.0, f64::max);
+    let side = ((length + 0.1) / (wide + 0.1)).floor().max(1.0) as usize;
+    if seats.len() > 2 * side {
+        2.0 * (deep + 0.05)
+    } else {
+        0.0
+    }
 }
 
 /// Floor area the spec's instances cover: things standing on others and flat things (rugs,

@@ -355,7 +355,8 @@ pub fn relations_unsatisfied(objects: &[PlacedObject], relations: &[Relation]) -
 /// Whether `objects` do not satisfy relation `r` of the set `relations`: as [`relation_holds`]
 /// says (FRONT / BEHIND as [`relation_holds_alone`] when the subject is the only one in that
 /// relation to its object in `relations`), and an OPPOSITE pair also with nothing but what
-/// stands on its ends blocking its [`sight_zone`]. False when `r` names no object of `objects`.
+/// stands on its ends or is a seat of one (two desks facing each other across their chairs)
+/// blocking its [`sight_zone`]. False when `r` names no object of `objects`.
 /// The layout's report and the edits judge relations with it alike.
 pub fn relation_unsatisfied(
     objects: &[PlacedObject],
@@ -363,10 +364,12 @@ pub fn relation_unsatisfied(
     r: &Relation,
 ) -> bool {
     let find = |id: &str| objects.iter().find(|o| o.id == id);
+    // what stands on an end (over or under it) or is a seat of it (a desk's chair)
     let stacked = |a: &str, b: &str| {
         relations.iter().any(|r| {
-            matches!(r.relation, RelationKind::Over | RelationKind::Under)
-                && ((r.subject == a && r.object == b) || (r.subject == b && r.object == a))
+            let pair = (r.subject == a && r.object == b) || (r.subject == b && r.object == a);
+            (pair && matches!(r.relation, RelationKind::Over | RelationKind::Under))
+                || (r.subject == a && r.object == b && r.relation.is_seat())
         })
     };
     let (Some(s), Some(o)) = (find(&r.subject), find(&r.object)) else {

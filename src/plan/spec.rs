@@ -91,6 +91,14 @@ impl RelationKind {
         RelationKind::Before,
     ];
 
+    /// Whether it puts a seat at its object (AROUND, AT, AT_BACK): the seat belongs to it.
+    pub fn is_seat(self) -> bool {
+        matches!(
+            self,
+            RelationKind::Around | RelationKind::At | RelationKind::AtBack
+        )
+    }
+
     /// The name as spec.json writes it (`OPPOSITE`).
     pub fn name(self) -> &'static str {
         use RelationKind::*;

@@ -4,6 +4,7 @@
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
 )]
+pub mod placed;
 pub mod samples;
 
 use dreamscene::gpu::Context;

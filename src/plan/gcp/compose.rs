@@ -105,7 +105,7 @@ impl Problem {
         loaded.z1 += self.load_height(i);
         if loaded.z1 > SIGHTLINE_HEIGHT {
             for &(a, c) in &self.sightlines {
-                if a == i || c == i || self.is_stacked(i, a) || self.is_stacked(i, c) {
+                if a == i || c == i || self.belongs_to(i, a) || self.belongs_to(i, c) {
                     continue;
                 }
                 if let (Some(ba), Some(bc)) = (boxed(a), boxed(c)) {
@@ -152,7 +152,7 @@ impl Problem {
                         if k == j || bk.z1 <= SIGHTLINE_HEIGHT {
                             continue;
                         }
-                        if self.is_stacked(k, i) || self.is_stacked(k, j) {
+                        if self.belongs_to(k, i) || self.belongs_to(k, j) {
                             continue;
                         }
                         if blocks_sight(bk, &zone) {

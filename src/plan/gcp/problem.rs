@@ -127,6 +127,15 @@ impl Problem {
         self.stacked.contains(&(a.min(b), a.max(b)))
     }
 
+    /// Whether instance `a` is stacked with `b` or is a seat of it (a desk's chair): it
+    /// belongs to `b`, so it blocks no sightline from `b`.
+    pub(super) fn belongs_to(&self, a: usize, b: usize) -> bool {
+        self.is_stacked(a, b)
+            || self.rels[a]
+                .iter()
+                .any(|&(rel, j, subject)| subject && j == b && rel.is_seat())
+    }
+
     /// Candidate poses for instance `i` given the placed ones: the poses its functional groups
     /// suggest (tried first: a seat's slots at its table, a desk's place in its row), then all.
     pub(super) fn candidates(&self, i: usize, placed: &[Option<Pose>]) -> (Vec<Pose>, Vec<Pose>) {

@@ -1,0 +1,26 @@
+//! Plan-and-lay-out helpers the placement tests share: a prompt planned offline and laid out
+//! on a seed, checked valid, and its placed things found by category.
+use dreamscene::plan::check::validity_problems;
+use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::offline::plan_prompt;
+use dreamscene::plan::spec::{Layout, PlacedObject, SceneSpec};
+
+/// The seeds a layout test runs.
+pub const SEEDS: std::ops::Range<u64> = 0..3;
+
+/// `prompt` planned offline and laid out on `seed`, with no validity problem.
+pub fn lay(prompt: &str, seed: u64) -> (Layout, SceneSpec) {
+    let plan = plan_prompt(prompt).expect("planned");
+    let l = layout(&plan.spec, LayoutOptions::seeded(seed)).expect("laid out");
+    let problems = validity_problems(&l, &plan.spec);
+    assert!(problems.is_empty(), "{prompt} seed {seed}: {problems:?}");
+    (l, plan.spec)
+}
+
+/// The placed things of `category`.
+pub fn all<'a>(l: &'a Layout, category: &str) -> Vec<&'a PlacedObject> {
+    l.objects
+        .iter()
+        .filter(|o| o.category == category)
+        .collect()
+}
