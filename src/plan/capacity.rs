@@ -2,9 +2,8 @@
 //! its own) is trimmed until the floor footprint is within [`TRIM_OCCUPANCY`] of the floor and
 //! every piece fits the room; objects the user named are never dropped: when one cannot fit,
 //! planning stops with an error naming it and the smallest room that would take it.
-use super::gcp::classes::Placements;
 use super::gcp::{choose_room, smallest_room};
-use super::spec::{Anchor, Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
+use super::spec::{Instance, RelationKind, Room, SceneSpec, SceneType, SpecError};
 use std::collections::BTreeSet;
 
 mod blocks;
@@ -53,8 +52,7 @@ pub const USE_MARGIN: f64 = 0.2;
 /// round a table is pulled out into the table's own room: its bare footprint is all it adds (a
 /// stool at an island or a chair at a desk keeps its own, as the counter or desk has no room
 /// round it). A table with more seats round it than its long sides take has seats at its ends
-/// too: its length counts them (a long table for ten is its length and two chairs long); a
-/// counter staff stand behind counts their band (kb/placement.txt: staffed).
+/// too: its length counts them (a long table for ten is its length and two chairs long).
 pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
     let around: Vec<(&str, &str)> = spec
         .relations
@@ -80,12 +78,6 @@ pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
                 .collect();
             let longer = usize::from(i.size[1] > i.size[0]);
             g.size[longer] += end_seats_length(i.size[longer], &seats);
-            // a counter staff stand behind, at no wall the text names: their band is its room
-            if i.anchor == Anchor::Others {
-                g.size[1] += Placements::builtin()
-                    .staff_depth(&i.category)
-                    .unwrap_or(0.0);
-            }
             g
         })
         .collect();
