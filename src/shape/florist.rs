@@ -44,7 +44,15 @@ pub fn flower_bucket_stand(b: &mut Builder) {
         for i in 0..n {
             let x = -hw + (i as f64 + 0.5) / n as f64 * b.w;
             b.frustum(Metal, [x, yc, z], rb, rb, 1.25, bucket);
-            bunch(b, [x, yc, z + bucket], rb, bloom, (i + 2 * k) as u32);
+            let v = BLOOMS[(i + 2 * k) % BLOOMS.len()];
+            bunch(
+                b,
+                [x, yc, z + bucket],
+                rb,
+                bloom,
+                (i + 2 * k) as f64,
+                &[v; 5],
+            );
         }
     }
 }
@@ -72,26 +80,29 @@ pub fn flower_bucket(b: &mut Builder) {
         b.rod(
             Foliage,
             [0.3 * m * c, 0.3 * m * s, zb - 0.05],
-            [0.7 * m * c, 0.7 * m * s, zt],
+            [0.85 * m * c, 0.85 * m * s, zt],
             (0.012 * h).clamp(0.004, 0.01),
         );
     }
-    bunch(b, [0.0, 0.0, zt], 0.85 * m, 2.0 * (h - zt), 0);
+    bunch(b, [0.0, 0.0, zt], 0.85 * m, 2.0 * (h - zt), 0.0, &BLOOMS);
 }
 
-/// A bunch of blooms over a mound of leaves, its base at `at`, `rb` across and `bloom` high;
-/// `k` turns the bloom colours and their places.
-fn bunch(b: &mut Builder, at: [f64; 3], rb: f64, bloom: f64, k: u32) {
+/// Bloom colours (variants of the goods palette) a bunch takes them from.
+const BLOOMS: [u32; 6] = [0, 1, 5, 6, 8, 4];
+
+/// A bunch of blooms over a mound of leaves, its base at `at`, `rb` across and `bloom` high:
+/// one bloom of each of `colours` in a ring turned by `turn`.
+fn bunch(b: &mut Builder, at: [f64; 3], rb: f64, bloom: f64, turn: f64, colours: &[u32]) {
     let [x, yc, zt] = at;
     b.ellipsoid(Foliage, [x, yc, zt], [1.1 * rb, 1.1 * rb, 0.5 * bloom]);
-    let v = [0u32, 1, 5, 6, 8, 4][k as usize % 6];
-    for j in 0..5 {
-        let a = j as f64 * 1.3 + k as f64;
+    let n = colours.len();
+    for (j, v) in colours.iter().enumerate() {
+        let a = j as f64 * std::f64::consts::TAU / n as f64 + turn;
         let (dx, dy) = (0.6 * rb * a.cos(), 0.6 * rb * a.sin());
-        let r = 0.45 * bloom.min(rb);
+        let r = 0.45 * bloom.min(rb) * (5.0 / n.max(5) as f64).sqrt();
         b.push(
             Books,
-            v,
+            *v,
             super::parts::Primitive::Revolved {
                 origin: [x + dx, yc + dy, zt + 0.5 * bloom - r],
                 rot: super::parts::IDENTITY,
