@@ -2,12 +2,15 @@
 //! each checked on its parts at its knowledge-base size and a stretched one, against the old
 //! drawing's defect: a shop's counter, a reception desk, a checkout and a bar were a kitchen's
 //! run of base cabinets (doors with handles on the customer's side, a closed back); a bucket of
-//! flowers was an empty vase; a raised vegetable bed was a flower bed of many-coloured blooms.
+//! flowers was an empty vase; a raised vegetable bed was a flower bed of many-coloured blooms; a
+//! noticeboard (written as one word) was no known thing, a deep box hung on the wall.
 //! Host-only, well under a second.
 #![allow(clippy::unwrap_used, reason = "tests")]
 mod common;
+mod reading;
 use common::samples::{all, drawn, of, range, runs, sized, within, Samples};
 use dreamscene::shape::{archetype_of, Role};
+use reading::{keys, number, plan};
 
 fn at(category: &str, size: [f64; 3]) -> Samples {
     drawn(category, size, 7)
@@ -124,4 +127,22 @@ fn a_raised_vegetable_bed_grows_green_rows_not_coloured_blooms() {
         assert!(runs(&crops, 1, 0.02) >= 2, "{size:?}: one block of green");
     }
     assert_eq!(archetype_of("raised bed"), "vegetable_bed");
+}
+
+#[test]
+fn a_noticeboard_written_as_one_word_is_a_bulletin_board() {
+    for p in [
+        "a staff room with a noticeboard above the kettle",
+        "a village hall, a noticeboard by the door and stacked chairs",
+        "a scout hut with two noticeboards",
+    ] {
+        let s = plan(p);
+        assert!(number(&s, "bulletin board") >= 1, "{p}: {:?}", keys(&s));
+        assert!(
+            !s.objects.contains_key("noticeboard"),
+            "{p}: {:?}",
+            keys(&s)
+        );
+    }
+    assert_eq!(archetype_of("noticeboard"), "corkboard");
 }
