@@ -23,6 +23,7 @@ use super::clearglass as cg;
 use super::clocks as ck;
 use super::coast as co;
 use super::contraptions as cn;
+use super::counters as scn;
 use super::crafts as cr;
 use super::crates as cx;
 use super::daily as d;
@@ -235,6 +236,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("table_lamp", c::table_lamp, [Body], [Body => [0.85, 0.82, 0.76]]),
     arch!("rug", c::rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("counter", c::counter, [Body, Door], [Top => [0.82, 0.80, 0.76]]),
+    arch!("service_counter", scn::service_counter, [Body, Door], [Top => [0.82, 0.80, 0.76], Door => [0.66, 0.50, 0.33], Interior => [0.22, 0.17, 0.13]]),
+    arch!("bar_counter", scn::bar_counter, [Body, Door], [Top => DARK_WOOD, Body => [0.45, 0.30, 0.18], Door => [0.50, 0.34, 0.20], Interior => [0.18, 0.13, 0.09], Metal => BRASS]),
     arch!("sink", c::sink, [Body, Door], [Top => [0.82, 0.80, 0.76], Canvas => WHITE, Metal => STEEL]),
     arch!("fireplace", c::fireplace, [Body], [Body => STONE, Top => DARK_WOOD]),
     arch!("piano", c::piano, [Body], [Body => BLACK, Frame => BLACK]),
@@ -298,6 +301,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("pram", d::pram, [Body, Shade], [Body => [0.20, 0.24, 0.34], Shade => [0.20, 0.24, 0.34], Frame => [0.15, 0.15, 0.16], Metal => [0.60, 0.61, 0.63]]),
     arch!("hedge", d::hedge, [Foliage], [Foliage => [0.16, 0.40, 0.15]]),
     arch!("flower_bed", d::flower_bed, [Books], [Frame => [0.45, 0.32, 0.20], Foliage => [0.22, 0.46, 0.18]]),
+    arch!("vegetable_bed", d::vegetable_bed, [Frame], [Frame => [0.45, 0.32, 0.20], Foliage => [0.30, 0.52, 0.20]]),
     arch!("log", d::log, [Trunk], [Trunk => [0.36, 0.26, 0.17], Top => [0.78, 0.62, 0.42]]),
     arch!("hydrant", d::hydrant, [Body, Top], [Body => [0.80, 0.12, 0.10], Top => [0.80, 0.12, 0.10], Metal => [0.62, 0.62, 0.64]]),
     arch!("padded_table", d::padded_table, [Upholstery], [Upholstery => [0.55, 0.70, 0.72], Frame => STEEL]),
@@ -524,6 +528,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("laundry_basket", bw::laundry_basket, [Body], [Body => [0.78, 0.66, 0.46], Frame => [0.62, 0.50, 0.32], Interior => [0.45, 0.36, 0.24]]),
     arch!("water_jug", bw::water_jug, [Glass], [Glass => [0.55, 0.75, 0.92], Handle => [0.15, 0.35, 0.80], Interior => [0.40, 0.60, 0.80]]),
     arch!("flower_bucket_stand", fl::flower_bucket_stand, [Frame], [Frame => [0.40, 0.30, 0.20], Top => [0.48, 0.36, 0.24], Metal => [0.66, 0.68, 0.70], Foliage => [0.22, 0.45, 0.20]]),
+    arch!("flower_bucket", fl::flower_bucket, [Metal], [Metal => [0.66, 0.68, 0.70], Foliage => [0.22, 0.45, 0.20], Interior => [0.10, 0.12, 0.10]]),
     arch!("bollard", tk::bollard, [Body, Top], [Body => [0.25, 0.25, 0.27], Top => [0.25, 0.25, 0.27], Metal => [0.30, 0.30, 0.32], Frame => [0.55, 0.56, 0.58], Canvas => [0.95, 0.78, 0.10]]),
     arch!("stage", pd::stage, [Top], [Top => [0.24, 0.21, 0.19], Body => [0.30, 0.29, 0.29], Frame => [0.55, 0.40, 0.26], Canvas => [0.06, 0.06, 0.07], Handle => [0.85, 0.75, 0.25]]),
     arch!("pedestal", pd::pedestal, [Body, Top, Frame], [Body => WHITE, Top => WHITE, Frame => [0.84, 0.84, 0.83], Interior => [0.45, 0.45, 0.46]]),

@@ -132,12 +132,7 @@ pub fn hedge(b: &mut Builder) {
 pub fn flower_bed(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let e = (0.35 * h).min(0.15);
-    let t = 0.05f64.min(0.1 * hd);
-    b.cuboid(Frame, [-hw, -hd, 0.0], [hw, -hd + t, e]);
-    b.cuboid(Frame, [-hw, hd - t, 0.0], [hw, hd, e]);
-    b.cuboid(Frame, [-hw, -hd + t, 0.0], [-hw + t, hd - t, e]);
-    b.cuboid(Frame, [hw - t, -hd + t, 0.0], [hw, hd - t, e]);
-    b.cuboid(Soil, [-hw + t, -hd + t, 0.0], [hw - t, hd - t, e - 0.02]);
+    let t = bed_edging(b, e);
     let r = (0.22 * (hd - t)).clamp(0.04, 0.2);
     let nx = (((b.w - 2.0 * t) / (1.6 * r)).floor() as usize).max(2);
     let ny = (((b.d - 2.0 * t) / (1.6 * r)).floor() as usize).max(1);
@@ -168,6 +163,65 @@ pub fn flower_bed(b: &mut Builder) {
                 IDENTITY,
             );
             k += 1;
+        }
+    }
+}
+
+/// The boards round a bed's soil, `e` high; returns their thickness.
+fn bed_edging(b: &mut Builder, e: f64) -> f64 {
+    let (hw, hd) = b.half();
+    let t = 0.05f64.min(0.1 * hd);
+    b.cuboid(Frame, [-hw, -hd, 0.0], [hw, -hd + t, e]);
+    b.cuboid(Frame, [-hw, hd - t, 0.0], [hw, hd, e]);
+    b.cuboid(Frame, [-hw, -hd + t, 0.0], [-hw + t, hd - t, e]);
+    b.cuboid(Frame, [hw - t, -hd + t, 0.0], [hw, hd - t, e]);
+    b.cuboid(Soil, [-hw + t, -hd + t, 0.0], [hw - t, hd - t, e - 0.02]);
+    t
+}
+
+/// A raised vegetable bed: boards most of its height round the soil, and rows of crops along
+/// its length with bare soil between them, all green: round cabbage heads in loose outer
+/// leaves, then a row of feathery upright tops (carrots, leeks), in turn.
+pub fn vegetable_bed(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let e = 0.55 * h;
+    let t = bed_edging(b, e);
+    let soil = e - 0.02;
+    let lz = h - soil;
+    let rows = (((b.d - 2.0 * t) / (2.2 * lz).max(0.2)).floor() as usize).max(1);
+    let pitch = (b.d - 2.0 * t) / rows as f64;
+    let r = (0.32 * pitch).min(0.9 * lz);
+    for j in 0..rows {
+        let y = -hd + t + (j as f64 + 0.5) * pitch;
+        let n = (((b.w - 2.0 * t) / (2.4 * r)).floor() as usize).max(1);
+        let step = (b.w - 2.0 * t) / n as f64;
+        for i in 0..n {
+            let x = -hw + t + (i as f64 + 0.5) * step;
+            let k = (i + j) as u32;
+            if j % 2 == 0 {
+                // A cabbage: a paler head in a ring of spread outer leaves.
+                b.ellipsoid_rot(
+                    Foliage,
+                    k,
+                    [x, y, soil + 0.15 * lz],
+                    [r, r, 0.3 * lz],
+                    IDENTITY,
+                );
+                b.ellipsoid_rot(
+                    Foliage,
+                    k + 3,
+                    [x, y, soil + 0.45 * lz],
+                    [0.6 * r, 0.6 * r, 0.5 * lz],
+                    IDENTITY,
+                );
+            } else {
+                // Feathery tops: thin stems fanning up from one root.
+                for q in 0..5 {
+                    let a = q as f64 * 2.0 * PI / 5.0 + k as f64;
+                    let top = [x + 0.6 * r * a.cos(), y + 0.6 * r * a.sin(), h - 0.01];
+                    b.rod(Foliage, [x, y, soil], top, (0.06 * r).max(0.004));
+                }
+            }
         }
     }
 }

@@ -39,6 +39,7 @@ mod clocks;
 mod coast;
 mod coats;
 mod contraptions;
+mod counters;
 mod crafts;
 mod crates;
 mod daily;
