@@ -111,10 +111,6 @@ pub struct Reading {
     /// "six chairs along the wall", "two bookcases against the back wall": mentions asked to
     /// stand along one wall (a run there), not spread over the walls ("lining the walls").
     pub one_wall: Vec<usize>,
-    /// "a lamp between the two armchairs", "a table between them": (subject, object) mentions
-    /// where the subject stands between things the one object mention names (next to two of
-    /// them, not one).
-    pub between: Vec<(usize, usize)>,
     /// "a bookcase full of books": (mention index, what it holds as said, the span of those words).
     pub contents: Vec<(usize, String, usize, usize)>,
     /// "a picnic spot in a park": spans naming the place the scene is in (no object of it).

@@ -212,11 +212,6 @@ pub(super) fn read_placements(r: &mut Reading) {
                         r.relations.push((s, RelationKind::Next, o + 1));
                     }
                 }
-                // "between the two armchairs", "between them": next to two of the things
-                // one plural names
-                if os.len() == 1 && (many(&r.mentions[o]) || r.mentions[o].reference) {
-                    r.between.push((s, o));
-                }
             }
         }
     }

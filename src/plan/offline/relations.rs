@@ -196,19 +196,6 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             push(spec, format!("{sc}{k}"), rel, format!("{oc}{ko}"), true);
         }
     }
-    // "a lamp between the two armchairs": next to the second of them too (the first is above)
-    for &(si, oi) in &r.between {
-        let (sc, oc) = (meant(d, si), meant(d, oi));
-        if counts.get(sc).is_some() && counts.get(oc).is_some_and(|&n| n >= 2) {
-            push(
-                spec,
-                format!("{sc}1"),
-                crate::plan::spec::RelationKind::Next,
-                format!("{oc}2"),
-                true,
-            );
-        }
-    }
     // tables laid for different numbers: the seats said for each table at it
     for (table, (seat, each)) in &d.laid {
         let (Some(&nt), Some(&ns)) = (counts.get(table), counts.get(seat)) else {
