@@ -26,10 +26,10 @@ use placements::read_placements;
 use regex::Regex;
 use words::not_objects;
 pub use words::{
-    alternation, counts_whole, is_adjective, is_function_word, is_indoor_place, is_known_word,
-    is_open_air, is_outdoor_place, is_remover, is_seat, is_specialised, is_verb, kind_of_compound,
-    normalise, number, object_footprint, object_height, object_length, object_scale, part_owners,
-    plural_means_one, plurals, potted, singular,
+    alternation, counts_whole, is_adjective, is_function_word, is_generic_seat, is_ground,
+    is_indoor_place, is_known_word, is_open_air, is_outdoor_place, is_remover, is_seat,
+    is_specialised, is_verb, kind_of_compound, normalise, number, object_footprint, object_height,
+    object_length, object_scale, part_owners, plural_means_one, plurals, potted, singular,
 };
 use words::{number_of, quantities, word_list, words_in, NEGATORS};
 
@@ -94,6 +94,8 @@ pub struct Reading {
     pub seats_for: Vec<(usize, u32)>,
     /// "small" / "large" said of the scene.
     pub scale: f64,
+    /// "long", "narrow" said of the scene: a room drawn out along one side.
+    pub long: bool,
     /// The place is named by a compound head that makes it a large one ("a dance hall", "a
     /// convention hall"): its floor is grown as a "large" one's unless the text sizes it.
     pub large_place: bool,

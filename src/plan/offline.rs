@@ -173,10 +173,12 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     // "a pirate ship's hold": a place inside what the template is the outside of
     let inside = r.not_literal.as_deref().is_some_and(lang::is_indoor_place);
     let scene_type = scene
-        .map(|s| match outdoors::said_open_air(&r) {
-            true => SceneType::Outdoor,
-            false => s.scene_type,
-        })
+        .map(
+            |s| match outdoors::said_open_air(&r) || outdoors::set_outdoors(&r) {
+                true => SceneType::Outdoor,
+                false => s.scene_type,
+            },
+        )
         .filter(|_| !inside)
         .unwrap_or_else(|| match inside {
             true => SceneType::Indoor,

@@ -97,6 +97,7 @@ fn feature_count<'a>(before: &'a str, of: Option<&str>) -> Option<(usize, u32, &
 /// whose kind the text named before ("the table": a picnic table) refers to that object; it
 /// is no new one.
 fn definite_references(r: &mut Reading) {
+    counted_references(r);
     for k in 0..r.mentions.len() {
         let m = &r.mentions[k];
         // "the headmaster's desk" is a particular one of its own
@@ -122,6 +123,27 @@ fn definite_references(r: &mut Reading) {
         if let Some(c) = earlier {
             let m = &mut r.mentions[k];
             m.category = c;
+            m.reference = true;
+        }
+    }
+}
+
+/// "two armchairs and a lamp between the two armchairs", "... between both armchairs": a
+/// counted definite noun phrase of a kind the text named before, no more of them than were
+/// named, refers to those; it is no new group.
+fn counted_references(r: &mut Reading) {
+    for k in 0..r.mentions.len() {
+        let m = &r.mentions[k];
+        let Some(n) = m.count.filter(|&n| n > 0 && m.definite && !m.negated) else {
+            continue;
+        };
+        let named = r.mentions[..k].iter().any(|o| {
+            let many = o.count.map_or(o.plural, |c| c >= n);
+            !o.negated && !o.reference && o.category == m.category && many
+        });
+        if named {
+            let m = &mut r.mentions[k];
+            m.count = None;
             m.reference = true;
         }
     }

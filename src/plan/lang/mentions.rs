@@ -202,6 +202,10 @@ pub(super) fn read_mentions(
                     if n == 0 {
                         negated = true;
                     }
+                    // "the two armchairs", "both armchairs": a counted definite noun phrase
+                    // (said again of things already named, see `counts::definite_references`)
+                    definite = w == "both"
+                        || prev2.is_some_and(|p| ["the", "these", "those"].contains(&p));
                     // "a dozen", "a couple"; "half a dozen"
                     if ["dozen", "couple", "pair"].contains(&w) {
                         count = Some(n);

@@ -7,6 +7,9 @@ use crate::plan::units::Dims;
 /// kind's furniture needs, the room of a place where a crowd gathers rather than a party.
 const HALL_SCALE: f64 = 2.0;
 
+/// The floor factor of a room called huge or vast: the floor of a hall.
+const HUGE_SCALE: f64 = HALL_SCALE;
+
 /// Reads the room's size, the people it is for, its scale and whether only what is named is
 /// wanted from `t` into `r`; `masked` holds the dimensions objects took.
 pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dims: &[Dims]) {
@@ -44,7 +47,7 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
             }
         }
     }
-    r.scale = room_scale(t, &r.mentions, r.scene.map(|(_, s, _)| s));
+    (r.scale, r.long) = room_scale(t, &r.mentions, r.scene.map(|(_, s, _)| s));
     // "a conference hall": a hall is large, unless the text says otherwise ("a small dance hall")
     // or counts what fills it ("a dining hall with three tables for eight": the room is sized
     // for what was counted)
@@ -58,11 +61,13 @@ pub(super) fn read_room(t: &str, r: &mut Reading, masked: &[(usize, usize)], dim
 
 /// The room's size word ("a tiny bathroom", "a bedroom that's tiny", "quite cramped", "a box
 /// room") as a factor on the floor area the furniture needs (`kb/words.txt`: room_tiny,
-/// room_small, room_large); a size word inside an object's noun phrase ("a small table") is the
-/// object's, not the room's.
-fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 {
+/// room_small, room_large, room_huge), and whether a word draws it out ("a long narrow hall":
+/// room_long); a size word inside an object's noun phrase ("a small table") is the object's,
+/// not the room's.
+fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> (f64, bool) {
     let words = words_in(t, 0, t.len());
     let mut scale: f64 = 1.0;
+    let mut long = false;
     for (k, &(pos, w)) in words.iter().enumerate() {
         let two = words
             .get(k + 1)
@@ -76,6 +81,10 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
             0.5
         } else if word_list("room_large").contains(&w) {
             1.35
+        } else if word_list("room_huge").contains(&w) {
+            HUGE_SCALE
+        } else if word_list("room_long").contains(&w) {
+            1.0
         } else {
             continue;
         };
@@ -111,11 +120,12 @@ fn room_scale(t: &str, mentions: &[Mention], scene_start: Option<usize>) -> f64 
         if object && scene_start != Some(pos) {
             continue;
         }
+        long |= word_list("room_long").contains(&w);
         scale = if factor < 1.0 {
             scale.min(factor)
         } else {
             scale.max(factor)
         };
     }
-    scale
+    (scale, long)
 }

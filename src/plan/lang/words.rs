@@ -151,6 +151,12 @@ pub fn is_outdoor_place(w: &str) -> bool {
     word_list("outdoors").contains(&w)
 }
 
+/// Whether `w` names an outdoor place one stands in (`kb/words.txt`, grounds: "a garden",
+/// "the beach").
+pub fn is_ground(w: &str) -> bool {
+    word_list("grounds").contains(&w)
+}
+
 /// Whether `w` puts a place out of doors (`kb/words.txt`, open_air: "outdoor", "open-air").
 pub fn is_open_air(w: &str) -> bool {
     word_list("open_air").contains(&w)
@@ -172,6 +178,7 @@ pub fn is_known_word(w: &str) -> bool {
         "room_tiny",
         "room_small",
         "room_large",
+        "room_huge",
         "english",
         "removers",
     ]
@@ -222,7 +229,12 @@ pub fn counts_whole(head: &str) -> bool {
     word_list("counted_whole").contains(&head)
 }
 
-/// Whether `category` is a thing to sit on: its head noun is one of `kb/words.txt`, seats.
+/// Whether `w` names a seat as generally as can be (`kb/words.txt`, generic_seats: "seat").
+pub fn is_generic_seat(w: &str) -> bool {
+    word_list("generic_seats").contains(&w)
+}
+
+/// Whether `category` is a thing to sit on (`kb/words.txt`, seats: its head noun).
 pub fn is_seat(category: &str) -> bool {
     let head = category.rsplit(' ').next().unwrap_or(category);
     word_list("seats").contains(&head)

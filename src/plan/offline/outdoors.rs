@@ -15,7 +15,15 @@ pub(super) fn unnamed_place_type(kb: &KnowledgeBase, r: &Reading) -> SceneType {
         .split(|c: char| !(c.is_alphanumeric() || c == '-' || c == '\''))
         .filter(|w| !w.is_empty())
         .collect();
-    if words.iter().any(|w| lang::is_outdoor_place(w)) {
+    // "a painting of a lake": a place a thing shows or looks out on is not where it stands;
+    // "a mountain of cushions" is a heap
+    let of = |k: usize| {
+        let back: Vec<&str> = words[..k].iter().rev().take(2).copied().collect();
+        back.first() == Some(&"of")
+            || (back.get(1) == Some(&"of") && ["a", "an", "the"].contains(&back[0]))
+            || words.get(k + 1) == Some(&"of")
+    };
+    if (0..words.len()).any(|k| lang::is_outdoor_place(words[k]) && !of(k)) {
         return SceneType::Outdoor;
     }
     // "a grotto with a waterfall": a place inside rock or a hull holds outdoor things indoors
@@ -50,6 +58,22 @@ pub(super) fn said_open_air(r: &Reading) -> bool {
         let of_place = (start < s && !text[start..s].contains([',', ':', ';'])) || start == e + 1;
         lang::is_open_air(w) && of_place
     })
+}
+
+/// "a wedding ceremony in a garden", "a yoga class on the beach": a place that is a room by
+/// default, said right after its name to be in an outdoor place one stands in (`kb/words.txt`,
+/// grounds, the head of the phrase: "in a garden shed" is in a shed), is out of doors.
+pub(super) fn set_outdoors(r: &Reading) -> bool {
+    let Some((_, _, e)) = r.scene else {
+        return false;
+    };
+    let after = regex::Regex::new(
+        r"^\s*(?:in|at|on) (?:the |a |an )?(?:[a-z'-]+ )?([a-z'-]+)(?:\s*$|\s*[,.;:!?]|\s+(?:with|and|where|for|under|surrounded|full|at|on|by)\b)",
+    )
+    .expect("a valid pattern");
+    r.text
+        .get(e..)
+        .is_some_and(|rest| after.captures(rest).is_some_and(|c| lang::is_ground(&c[1])))
 }
 
 /// +1 when only outdoor places of the knowledge base hold `category` by default, -1 when only

@@ -521,6 +521,15 @@ fn in_scene(
             }
         }
     }
+    // "four seats" in a kitchen, "seats" in a waiting room: a name as general as a seat can be
+    // (`kb/words.txt`: generic_seats) is the place's own seat, the most numerous (its theatre
+    // seats only where it has them)
+    if m.text.split(' ').count() == 1 && lang::is_generic_seat(&head) {
+        let seats = s.objects.iter().filter(|(c, _)| lang::is_seat(c));
+        if let Some(c) = most_its_own(s, seats) {
+            return c;
+        }
+    }
     // Only what scenes specialise (`kb/words.txt`: specialised); a lamp stays a lamp.
     if !lang::is_specialised(&head) {
         return m.category.clone();

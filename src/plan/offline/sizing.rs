@@ -167,6 +167,9 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
                     room.size[k] = (room.size[k] * s * 10.0).ceil() / 10.0;
                 }
             }
+            if r.long {
+                room.size = drawn_out(room.size);
+            }
             // things asked in rows: wide and deep enough for the block and its front
             let need = crate::plan::gcp::rows::room_for_rows(spec, [room.size[0], room.size[1]]);
             for (v, n) in room.size.iter_mut().zip(need) {
@@ -182,6 +185,23 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         ));
     }
     room
+}
+
+/// Long side over short side of a room the text calls long or narrow (a hallway, a gallery):
+/// plainly drawn out next to the 1.25 of a room sized for its furniture.
+const LONG_RATIO: f64 = 2.5;
+
+/// Short side of a room drawn out (metres): a corridor still walked past furniture on one side.
+const LONG_MIN_SIDE: f64 = 1.6;
+
+/// The floor `size` drawn out to [`LONG_RATIO`], its area kept (its short side never under
+/// [`LONG_MIN_SIDE`]).
+fn drawn_out(size: [f64; 3]) -> [f64; 3] {
+    let area = size[0] * size[1];
+    let d = (area / LONG_RATIO).sqrt().max(LONG_MIN_SIDE);
+    let w = (area / d).max(d * LONG_RATIO);
+    let r = |v: f64| (v * 10.0).ceil() / 10.0;
+    [r(w), r(d), size[2]]
 }
 
 /// Scale below which the text called the room tiny, not just small ("tiny", "cramped").
