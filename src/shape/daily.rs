@@ -179,12 +179,13 @@ fn bed_edging(b: &mut Builder, e: f64) -> f64 {
     t
 }
 
-/// A raised vegetable bed: boards most of its height round the soil, and rows of crops along
-/// its length with bare soil between them, all green: round cabbage heads in loose outer
-/// leaves, then a row of feathery upright tops (carrots, leeks), in turn.
+/// A raised vegetable bed: boards about knee high (most of its height) round the soil, and
+/// rows of crops along its length with bare soil between them, all green: round cabbage heads
+/// in loose outer leaves, then a row of feathery upright tops (carrots, leeks), in turn. The
+/// boards' height is what tells it from a flower bed's low edging at a glance.
 pub fn vegetable_bed(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let e = 0.55 * h;
+    let e = 0.7 * h;
     let t = bed_edging(b, e);
     let soil = e - 0.02;
     let lz = h - soil;
