@@ -266,6 +266,29 @@ fn step_keys(state: &SceneState, id: &str, p: &Pose, step: &Step) -> Result<(Key
             }
             (keys, 0.6 * n as f64)
         }
+        Step::Sway {
+            forward,
+            left,
+            times,
+            across,
+        } => {
+            let (f, l) = (p.forward(), p.left());
+            let d = [f[0] * forward + l[0] * left, f[1] * forward + l[1] * left];
+            // out and back, or out, across and back: the start between
+            let legs: &[f64] = if *across {
+                &[1.0, 0.0, -1.0, 0.0]
+            } else {
+                &[1.0, 0.0]
+            };
+            let n = (*times as usize * legs.len()) as f64;
+            let keys = (0..*times as usize)
+                .flat_map(|_| legs.iter())
+                .enumerate()
+                .map(|(k, &s)| ((k + 1) as f64 / n, shifted(p, [s * d[0], s * d[1]])))
+                .collect();
+            let reach = forward.hypot(*left);
+            (keys, (n * reach / PACE).max(0.5 * *times as f64))
+        }
         Step::Pause => (vec![(1.0, *p)], 1.0),
     })
 }
@@ -380,6 +403,12 @@ pub fn animate(
         keys.len(),
         tl.duration
     ));
+    if !cmd.unread.is_empty() {
+        edit.notes.push(format!(
+            "not understood, so left out: \"{}\"",
+            cmd.unread.join("\", \"")
+        ));
+    }
     edit.notes.extend(path_warnings(state, &edit.scene, id)?);
     Ok(edit)
 }

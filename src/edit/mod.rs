@@ -25,9 +25,12 @@ pub enum EditError {
     /// The request itself: an unknown id, a sentence that says nothing, a bad value.
     #[error("{0}")]
     Bad(String),
-    /// A move or add that would collide, with the reasons (`--force` overrides).
+    /// A move that would collide, with the reasons (`--force` overrides).
     #[error("refused: {0} (nothing changed; --force places it anyway)")]
     Collision(String),
+    /// An edit with no place free of collisions and no `--force` to override it (`add`).
+    #[error("refused: {0} (nothing changed)")]
+    NoRoom(String),
     #[error("{0}")]
     Io(String),
     #[error(transparent)]

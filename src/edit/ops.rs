@@ -175,6 +175,16 @@ pub fn move_object(
     let mut alone = state.clone();
     alone.scene.objects.retain(|o| !seats.contains(&o.id));
     let mut notes = vec![];
+    // (a move that ends a centimetre through a wall stops at it)
+    let shift = with_pose(&alone, id, pose)?.back_inside(id);
+    if shift != [0.0; 2] && !force {
+        pose.position[0] += shift[0];
+        pose.position[1] += shift[1];
+        notes.push(format!(
+            "{id} stops at the wall, {:.2} m short of the asked pose",
+            shift[0].hypot(shift[1])
+        ));
+    }
     let problems = with_pose(&alone, id, pose)?.collisions(id, &alone);
     if !problems.is_empty() {
         if force {

@@ -43,6 +43,14 @@ pub enum Step {
     Circle { target: String, turns: f64 },
     /// Hop up and down in place.
     Bounce { height: f64, times: u32 },
+    /// To and fro `times` over (back and forth, side to side): out by the shift in the object's
+    /// frame and back each time; `across` goes as far the other way too before coming back.
+    Sway {
+        forward: f64,
+        left: f64,
+        times: u32,
+        across: bool,
+    },
     /// Stay still.
     Pause,
 }
@@ -52,6 +60,8 @@ pub enum Step {
 pub struct Command {
     pub subject: Option<String>,
     pub steps: Vec<(Step, Option<f64>)>,
+    /// What the sentence says that no step reads ("three times" of a slide), for one line.
+    pub unread: Vec<String>,
 }
 
 /// Default distance of a move that gives none, and of "a bit", "slightly".
@@ -69,6 +79,12 @@ fn re(p: &str) -> Regex {
 }
 
 const NUM: &str = r"(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|half an?|a half|one and a half|two and a half|a couple of|a few)";
+
+/// A repeat count: "three times", "twice".
+fn times_re() -> &'static Regex {
+    static R: OnceLock<Regex> = OnceLock::new();
+    R.get_or_init(|| re(&format!(r"\b({NUM})\s+times\b|\b(twice|thrice|once)\b")))
+}
 
 fn number(s: &str) -> Option<f64> {
     let s = s.trim();
@@ -258,8 +274,14 @@ pub fn parse(
         ids.get(k).cloned()
     };
     let mut steps = vec![];
+    let mut unread = vec![];
     for clause in split_clauses(&t) {
         if let Some(s) = step(&clause, &target)? {
+            // a count only a repeated motion reads
+            let repeats = matches!(s.0, Step::Bounce { .. } | Step::Sway { .. });
+            if let Some(k) = times_re().find(&clause).filter(|_| !repeats) {
+                unread.push(k.as_str().to_string());
+            }
             steps.push(s);
         }
     }
@@ -283,7 +305,11 @@ pub fn parse(
             }
         }
     }
-    Ok(Command { subject, steps })
+    Ok(Command {
+        subject,
+        steps,
+        unread,
+    })
 }
 
 fn split_clauses(t: &str) -> Vec<String> {
@@ -374,17 +400,38 @@ fn step(
         }
         return out(Step::Scale { factor });
     }
-    // Bounce.
-    if has("bounce|bounces|bouncing|jump|jumps|hop|hops") {
-        let times = Regex::new(&format!(r"\b({NUM})\s+times\b|\b(twice|thrice|once)\b"))
-            .ok()
-            .and_then(|r| r.captures(c))
+    let times = || {
+        let n = times_re()
+            .captures(c)
             .and_then(|k| number(k.get(1).or(k.get(2))?.as_str()))
             .unwrap_or(1.0);
+        (n.round() as u32).max(1)
+    };
+    // Bounce.
+    if has("bounce|bounces|bouncing|jump|jumps|hop|hops") {
         let height = dist.unwrap_or(0.3);
         return out(Step::Bounce {
             height,
-            times: (times.round() as u32).max(1),
+            times: times(),
+        });
+    }
+    // To and fro: a motion that comes back, so many times (a rocking chair rocking).
+    // ("forward and back" is two clauses: "and back" starts a step of its own)
+    if has("back and forth|backward and forward|backwards and forwards|to and fro|forwards and backwards|side to side|left and right|right and left") {
+        let m = dist.unwrap_or(SMALL_DISTANCE);
+        let sideways = has("side to side|left and right|right and left");
+        let first_back = has("back and forth|backward and forward|backwards and forwards");
+        let (forward, left) = match (sideways, first_back) {
+            (true, _) if has("right and left") => (0.0, -m),
+            (true, _) => (0.0, m),
+            (false, true) => (-m, 0.0),
+            (false, false) => (m, 0.0),
+        };
+        return out(Step::Sway {
+            forward,
+            left,
+            times: times(),
+            across: sideways,
         });
     }
     // Circling another object.

@@ -410,7 +410,7 @@ pub fn add_object(
     };
     let problems = next.collisions(&id, &empty);
     if !problems.is_empty() {
-        return Err(EditError::Collision(format!(
+        return Err(EditError::NoRoom(format!(
             "no free place for {id}: {}",
             problems.join("; ")
         )));

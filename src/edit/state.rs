@@ -166,6 +166,22 @@ impl SceneState {
         !relation_unsatisfied(&self.placed_objects(), &self.relations, r)
     }
 
+    /// The shift (x, y) that brings instance `id` inside the walls (or the ground's edges) where
+    /// it passes through them by no more than the collision tolerance: what a move that ends
+    /// flush against a wall, a centimetre through it, takes back. Zero where it is inside or
+    /// further through (that is a collision).
+    pub fn back_inside(&self, id: &str) -> [f64; 2] {
+        let Ok(o) = self.object(id) else {
+            return [0.0; 2];
+        };
+        let w = wall_distances(&self.box_of(o), self.scene.room.size);
+        if w.iter().any(|&v| v < -TOLERANCE - 1e-9) {
+            return [0.0; 2];
+        }
+        let out = |v: f64| if v < -1e-6 { -v } else { 0.0 };
+        [out(w[0]) - out(w[1]), out(w[2]) - out(w[3])]
+    }
+
     /// Why instance `id` at its current transform collides, compared with `before` (its state
     /// before the edit: a collision already there and not made deeper is not the edit's doing).
     /// Empty when it is free.

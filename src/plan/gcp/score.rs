@@ -3,7 +3,7 @@ use super::{compose, yaw_facing, Pose, Problem, WALKWAY, WALL_MARGIN};
 use crate::plan::check::{
     anchor_holds_in, penetration, relation_holds_alone, wall_distances, Box2, TOLERANCE,
 };
-use crate::plan::spec::{Anchor, Layout, PlacedBy, RelationKind};
+use crate::plan::spec::{Anchor, Layout, OpeningKind, PlacedBy, RelationKind};
 
 /// What standing out over the rim of a round support costs (a relation held counts 10): a
 /// lake's boat keeps its bow and stern on the water wherever the lake has room for it.
@@ -30,10 +30,22 @@ impl Problem {
         if wd.iter().any(|&v| v < -1e-9) || b.z1 > self.room[2] + 1e-9 {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
-        // (with what will stand on it: a stand whose TV would cover a window)
+        // (with what will stand on it: a stand whose TV would cover a window). A thing resting
+        // on a support placed before it is held to the windows through that support's load,
+        // which the support was placed with: on a dresser set under a window (a pinned scene's
+        // own) a lamp still stands where it was asked, as on a sill.
         let mut loaded = b;
         loaded.z1 += self.load_height(i);
-        if self.zones.iter().any(|z| penetration(&loaded, z) > 0.0) {
+        let resting = self.rels[i]
+            .iter()
+            .any(|&(rel, j, subject)| subject && rel == RelationKind::Over && placed[j].is_some());
+        let kept = |k: usize| !(resting && self.openings[k].kind == OpeningKind::Window);
+        if self
+            .zones
+            .iter()
+            .enumerate()
+            .any(|(k, z)| kept(k) && penetration(&loaded, z) > 0.0)
+        {
             return (false, 0, 0, f64::NEG_INFINITY);
         }
         // A thing hung on a wall touches it, facing into the room.
