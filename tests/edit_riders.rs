@@ -4,7 +4,8 @@
 //! stands is refused in one line and changes nothing, history included. `edit add` reads where
 //! the description puts the new thing: "a potted plant next to the armchair" adds a plant by the
 //! armchair (not a second armchair), "a laptop on the desk" a laptop on the desk's top, and a
-//! partner the scene lacks is refused in one line.
+//! partner the scene lacks is refused in one line. An edit whose new layout gives fewer good
+//! preview views than there were names the views it removed.
 #![allow(
     clippy::unwrap_used,
     reason = "helpers outside #[test] functions: a panic there fails the test at its line"
@@ -184,4 +185,63 @@ fn add_reads_where_the_description_puts_the_new_thing() {
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert!(err.contains("sofa"), "{err}");
     assert_eq!(std::fs::read(d.join("scene.json")).unwrap(), before);
+}
+
+/// Eight preview views (as `generate` names them) over the study, each with its picture.
+fn eight_views(d: &Path) -> Vec<String> {
+    let mut cams = vec![];
+    for k in 0..8u32 {
+        let a = f64::from(k) * std::f64::consts::PI / 4.0;
+        let mut cam = dreamscene::camera::Camera::look_at(
+            [1.5 * a.cos(), 1.3 * a.sin(), 1.6],
+            [0.0, 0.0, 0.5],
+            [0.0, 0.0, 1.0],
+            32,
+            32,
+            1.2,
+        );
+        cam.img_name = format!("view_{k:04}");
+        image::RgbImage::new(32, 32)
+            .save(d.join(format!("renders/{}.png", cam.img_name)))
+            .unwrap();
+        cams.push(cam);
+    }
+    dreamscene::camera::write_cameras(&d.join("renders/cameras.json"), &cams).unwrap();
+    cams.iter().map(|c| c.img_name.clone()).collect()
+}
+
+#[test]
+fn views_the_new_layout_cannot_fill_are_named_when_an_edit_removes_them() {
+    let d = draft("views");
+    let before = eight_views(&d);
+    let o = edit(&d, &["remove", "armchair1"]);
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success(), "{err}");
+    let kept: Vec<String> = dreamscene::camera::read_cameras(&d.join("renders/cameras.json"))
+        .unwrap()
+        .into_iter()
+        .map(|c| c.img_name)
+        .collect();
+    // Every view cameras.json names has its picture, and no picture is left without its view.
+    for v in &before {
+        let png = d.join(format!("renders/{v}.png")).is_file();
+        assert_eq!(png, kept.contains(v), "{v}: picture {png}, kept {kept:?}");
+    }
+    // A 4 x 3.5 m study gives fewer than eight distinct good views: the ones removed are said.
+    let gone: Vec<&String> = before.iter().filter(|v| !kept.contains(v)).collect();
+    assert!(!gone.is_empty(), "all eight views kept: {kept:?}");
+    for v in gone {
+        assert!(
+            err.contains(v.as_str()),
+            "{v} removed without a word: {err}"
+        );
+    }
+    // Undo brings every picture back.
+    assert!(edit(&d, &["undo"]).status.success());
+    for v in &before {
+        assert!(
+            d.join(format!("renders/{v}.png")).is_file(),
+            "{v} not restored"
+        );
+    }
 }

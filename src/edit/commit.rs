@@ -119,9 +119,9 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
         let p = t.stage_path("scene.ply")?;
         write_ply_labelled(&p, &composed, Some(&labels.per_gaussian())).map_err(io(&p))?;
         t.write("labels.json", labels_text.as_bytes())?;
-        let renders = match ctx {
+        let (renders, dropped) = match ctx {
             Some(ctx) => render_previews(ctx, &mut t, &composed, edit.layout.as_ref())?,
-            None => 0,
+            None => (0, vec![]),
         };
         let record = format!("{HISTORY}/{:04}", state.scene.history.len() + 1);
         let backup = t.backup(&record)?;
@@ -141,13 +141,21 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
         let text =
             serde_json::to_string_pretty(&scene).map_err(|e| EditError::Io(e.to_string()))?;
         t.write("scene.json", text.as_bytes())?;
-        Ok((renders, record))
+        Ok((renders, dropped, record))
     })();
     match result {
-        Ok((renders, record)) => {
+        Ok((renders, dropped, record)) => {
             t.commit()?;
+            let mut notes = edit.notes;
+            if !dropped.is_empty() {
+                notes.push(format!(
+                    "renders: {} removed: the new layout gives {renders} distinct good views, not {} (undo restores them)",
+                    dropped.join(", "),
+                    renders + dropped.len()
+                ));
+            }
             Ok(Applied {
-                notes: edit.notes,
+                notes,
                 gaussians: composed.len(),
                 renders,
                 record,
@@ -164,16 +172,19 @@ pub fn apply_edit(state: &SceneState, edit: Edit, ctx: Option<&Context>) -> Resu
 /// When the edit changed the layout, the views are chosen afresh for it (as many, at the same
 /// size, as `renders/cameras.json` had), so no view keeps looking at what was moved or removed;
 /// otherwise the views of `renders/cameras.json` are kept. Nothing happens without that file.
+/// Returns how many views were rendered and the names of the views removed (the new layout
+/// gave fewer distinct good views than there were).
 fn render_previews(
     ctx: &Context,
     t: &mut Txn,
     g: &Gaussians,
     layout: Option<&Layout>,
-) -> Result<usize> {
+) -> Result<(usize, Vec<String>)> {
     let cams_path = t.dir().join("renders/cameras.json");
     if !cams_path.is_file() {
-        return Ok(0);
+        return Ok((0, vec![]));
     }
+    let mut dropped = vec![];
     let mut cams = read_cameras(&cams_path).map_err(|e| EditError::Io(e.to_string()))?;
     if let (Some(l), Some(first)) = (layout, cams.first()) {
         let mut fresh = render_views(
@@ -195,6 +206,7 @@ fn render_previews(
                     .is_file()
             {
                 t.delete(&format!("renders/{}.png", old.img_name))?;
+                dropped.push(old.img_name.clone());
             }
         }
         let p = t.stage_path("renders/cameras.json")?;
@@ -218,7 +230,7 @@ fn render_previews(
     crate::util::contact_sheet(&tiles, 4, 256)
         .save_with_format(&p, image::ImageFormat::Png)
         .map_err(|e| EditError::Io(format!("{}: {e}", p.display())))?;
-    Ok(cams.len())
+    Ok((cams.len(), dropped))
 }
 
 /// Writes an RGB image in [0, 1] as a PNG.
