@@ -1,6 +1,7 @@
 //! Hosts and supports grow to what a scene asks of them: a table or counter to seat its share
 //! of the seats, a bench or counter to hold what stands on it side by side.
 use super::{capacity, group_of, rules};
+use crate::plan::gcp::classes::{Class, Placements};
 use crate::plan::spec::{RelationKind, SceneSpec};
 use std::collections::BTreeMap;
 
@@ -52,8 +53,11 @@ pub(super) fn grow_hosts(spec: &mut SceneSpec) {
 
 /// A support grows to hold what stands on it side by side (ten computers on three benches):
 /// the widest load of its instances, each thing's width and 5 cm between and at the ends, up
-/// to [`MOST_GROWTH`] times its width. A single thing never grows its support.
+/// to [`MOST_GROWTH`] times its width. A single thing never grows its support, nor does one
+/// that is not set on surfaces (`kb/placement.txt`'s on_surface): shelves over a washer and a
+/// dryer hang on the wall above them, a load on no top.
 pub(super) fn grow_supports(spec: &mut SceneSpec) {
+    let table = Placements::builtin();
     let base = |id: &str| {
         id.trim_end_matches(|c: char| c.is_ascii_digit())
             .to_string()
@@ -64,9 +68,13 @@ pub(super) fn grow_supports(spec: &mut SceneSpec) {
         .iter()
         .filter(|r| r.relation == RelationKind::Over)
     {
-        let Some(o) = spec.objects.get(&base(&r.subject)) else {
+        let subject = base(&r.subject);
+        let Some(o) = spec.objects.get(&subject) else {
             continue;
         };
+        if !matches!(table.class(&subject), Class::OnSurface(_)) {
+            continue;
+        }
         let e = load.entry(r.object.clone()).or_insert((0.05, 0));
         e.0 += o.size[0] + 0.05;
         e.1 += 1;
