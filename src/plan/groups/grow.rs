@@ -54,10 +54,11 @@ pub(super) fn grow_hosts(spec: &mut SceneSpec) {
 /// A support grows to hold what stands on it side by side (ten computers on three benches):
 /// the widest load of its instances, each thing's width and 5 cm between and at the ends, up
 /// to [`MOST_GROWTH`] times its width. A single thing never grows its support, nor does one
-/// that is not set on surfaces (`kb/placement.txt`'s on_surface): shelves over a washer and a
-/// dryer hang on the wall above them, a load on no top.
+/// that the placement table does not set on surfaces (`kb/placement.txt`'s on_surface):
+/// shelves over a washer and a dryer hang on the wall above them, a load on no top.
 pub(super) fn grow_supports(spec: &mut SceneSpec) {
     let table = Placements::builtin();
+    let kb = crate::plan::kb::KnowledgeBase::builtin();
     let base = |id: &str| {
         id.trim_end_matches(|c: char| c.is_ascii_digit())
             .to_string()
@@ -72,7 +73,9 @@ pub(super) fn grow_supports(spec: &mut SceneSpec) {
         let Some(o) = spec.objects.get(&subject) else {
             continue;
         };
-        if !matches!(table.class(&subject), Class::OnSurface(_)) {
+        // a thing the knowledge base does not know ("a cake on the counter") is taken at its
+        // word, whatever its kind's class
+        if kb.object(&subject).is_some() && !matches!(table.class(&subject), Class::OnSurface(_)) {
             continue;
         }
         let e = load.entry(r.object.clone()).or_insert((0.05, 0));

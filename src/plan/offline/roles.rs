@@ -536,14 +536,16 @@ fn in_scene(
     }
     let head_cat = kb.object(&head).map(|o| o.category.clone());
     // Only a bare head noun ("desks", "a chair") is re-read; "an office chair" stays.
-    // "two wall shelves", "floating shelves" name their kind by a word of its own name even
-    // where the head noun alone ("shelf") is a name of it too
+    // "two wall shelves", "floating shelves" name their kind (one of a compound name) by a
+    // word of its own name even where the head noun alone ("shelf") is a name of it too; a
+    // kind named by the bare noun ("computer desks" are desks) is still re-read
     let own_word = kb.object(&m.category).is_some_and(|o| {
-        std::iter::once(&o.category)
-            .chain(&o.synonyms)
-            .flat_map(|n| n.split(' '))
-            .filter(|w| *w != head)
-            .any(|w| m.text.split(' ').any(|t| t == w))
+        o.category != head
+            && std::iter::once(&o.category)
+                .chain(&o.synonyms)
+                .flat_map(|n| n.split(' '))
+                .filter(|w| *w != head)
+                .any(|w| m.text.split(' ').any(|t| t == w))
     });
     let bare = m.text.split(' ').count() == 1
         || (head_cat.as_deref() == Some(m.category.as_str()) && !own_word);
