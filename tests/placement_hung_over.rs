@@ -85,7 +85,7 @@ fn a_kind_named_by_its_own_word_is_not_the_places_bare_noun() {
     // the bare noun is still the place's own
     let (_, spec) = lay("a laundry room with two shelves", 0);
     assert!(
-        spec.objects.get("wall shelf").is_none(),
+        !spec.objects.contains_key("wall shelf"),
         "bare shelves of a laundry"
     );
 }
