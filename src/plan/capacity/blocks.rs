@@ -11,8 +11,8 @@ use std::collections::{BTreeMap, BTreeSet};
 /// Fewest instances a scaled block keeps (two seats still face the screen together).
 const FEWEST: u32 = 2;
 
-/// Whether category `c` of `spec` stands in a block: rows asked, in ROW before a front, or
-/// tables with seats AROUND them.
+/// Whether category `c` of `spec` stands in a block: rows asked, in ROW before a front, tables
+/// with seats AROUND them, or desks and counters with a seat AT each (an office's workstations).
 fn in_block(spec: &SceneSpec, c: &str) -> bool {
     let base = |id: &str| {
         id.trim_end_matches(|ch: char| ch.is_ascii_digit())
@@ -21,7 +21,8 @@ fn in_block(spec: &SceneSpec, c: &str) -> bool {
     spec.objects.get(c).is_some_and(|o| o.rows > 0)
         || spec.relations.iter().any(|r| {
             (r.relation == RelationKind::Row && base(&r.subject) == c)
-                || (r.relation == RelationKind::Around && base(&r.object) == c)
+                || (matches!(r.relation, RelationKind::Around | RelationKind::At)
+                    && base(&r.object) == c)
         })
 }
 
