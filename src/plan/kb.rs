@@ -156,6 +156,9 @@ impl KnowledgeBase {
             let idx = kb.objects.len();
             for name in std::iter::once(&o.category).chain(&o.synonyms) {
                 if let Some(&other) = kb.by_name.get(name) {
+                    if other == idx {
+                        return Err(err(&format!("`{name}` listed twice")));
+                    }
                     let first = &kb.objects[other].category;
                     return Err(err(&if *name == o.category && *first == o.category {
                         format!("category `{name}` defined twice")

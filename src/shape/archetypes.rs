@@ -386,6 +386,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("candle", ho::candle, [Body], [Body => [0.95, 0.92, 0.82], Interior => BLACK, Metal => [0.70, 0.58, 0.32]]),
     arch!("tea_set", ho::tea_set, [Body], [Body => [0.95, 0.94, 0.90], Handle => [0.80, 0.68, 0.35], Top => [0.55, 0.38, 0.22], Interior => [0.45, 0.25, 0.10]]),
     arch!("kettle", ho::kettle, [Body], [Body => STEEL, Handle => BLACK, Glass => [0.45, 0.62, 0.75]]),
+    arch!("cooking_pot", ho::cooking_pot, [Body], [Body => STEEL, Metal => STEEL, Handle => BLACK, Interior => [0.30, 0.31, 0.33]]),
     arch!("toaster", ho::toaster, [Body], [Body => STEEL, Handle => BLACK, Interior => BLACK]),
     arch!("glass_fridge", vi::glass_fridge, [Body, Door], [Body => [0.15, 0.15, 0.16], Door => [0.15, 0.15, 0.16], Interior => [0.30, 0.32, 0.34], Frame => [0.70, 0.71, 0.73], Light => [0.95, 0.96, 1.0], Handle => STEEL]),
     arch!("vending", vi::vending, [Body], [Body => [0.75, 0.12, 0.12], Interior => [0.12, 0.12, 0.13], Metal => [0.60, 0.61, 0.63], Keys => [0.85, 0.85, 0.83], Handle => [0.30, 0.30, 0.32]]),

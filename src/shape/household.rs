@@ -159,6 +159,46 @@ pub fn kettle(b: &mut Builder) {
     );
 }
 
+/// A cooking pot: a squat straight-sided steel body, a lid a little domed with a knob, and a
+/// loop handle either side (a saucepan or stockpot on a hob).
+pub fn cooking_pot(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = 0.78 * hw.min(hd);
+    b.cylinder(Body, [0.0, 0.0, 0.0], r, 0.78 * h);
+    b.cylinder(Interior, [0.0, 0.0, 0.78 * h - 0.01], 0.94 * r, 0.012);
+    b.frustum(
+        Metal,
+        [0.0, 0.0, 0.78 * h],
+        1.02 * r,
+        1.02 * r,
+        0.75,
+        0.1 * h,
+    );
+    b.ellipsoid(Handle, [0.0, 0.0, 0.92 * h], [0.14 * r, 0.14 * r, 0.08 * h]);
+    for s in [-1.0, 1.0] {
+        let x0 = s * 0.98 * r;
+        let x1 = s * (hw - 0.01).max(1.12 * r);
+        b.rod(
+            Handle,
+            [x0, -0.3 * r, 0.62 * h],
+            [x1, -0.2 * r, 0.64 * h],
+            0.05 * r,
+        );
+        b.rod(
+            Handle,
+            [x1, -0.2 * r, 0.64 * h],
+            [x1, 0.2 * r, 0.64 * h],
+            0.05 * r,
+        );
+        b.rod(
+            Handle,
+            [x1, 0.2 * r, 0.64 * h],
+            [x0, 0.3 * r, 0.62 * h],
+            0.05 * r,
+        );
+    }
+}
+
 /// A toaster: a rounded body with two bread slots on top, a lever and a knob on the front, a
 /// dark foot.
 pub fn toaster(b: &mut Builder) {
