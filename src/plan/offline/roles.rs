@@ -556,7 +556,29 @@ fn in_scene(
         c.rsplit(' ').next() == Some(head.as_str())
             || kb.object(&head).is_some_and(|o| o.category == **c)
     });
-    most_its_own(s, sharing).unwrap_or_else(|| m.category.clone())
+    most_its_own(s, sharing)
+        .or_else(|| set_on_its_own(kb, s, &head))
+        .unwrap_or_else(|| m.category.clone())
+}
+
+/// The kind of `head` the knowledge base has that is set on a support of the place's own
+/// (`kb/placement.txt`, first support): "a pot" in a kitchen is the cooking pot its stove holds.
+fn set_on_its_own(
+    kb: &KnowledgeBase,
+    scene: &crate::plan::kb::SceneKind,
+    head: &str,
+) -> Option<String> {
+    let placements = crate::plan::gcp::classes::Placements::builtin();
+    kb.objects
+        .iter()
+        .filter(|o| o.category.rsplit(' ').next() == Some(head) && o.category != head)
+        .find(|o| {
+            placements
+                .get(&o.category)
+                .and_then(|p| p.supports.first())
+                .is_some_and(|first| scene.objects.iter().any(|(c, _)| c == first))
+        })
+        .map(|o| o.category.clone())
 }
 
 /// Of the scene's defaults `candidates`, the one a bare noun means: the most numerous; of as
