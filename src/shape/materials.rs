@@ -305,12 +305,18 @@ impl Palette {
         }
         for w in words.iter().filter(|w| w.part.is_none()) {
             if let WordKind::Material(class) = w.kind {
-                // a material none of the object's parts is usually made of ("a stone bench":
-                // a bench's seat and frame are wood or metal) is what the object itself is made
-                // of: its main parts take it
-                let own = main.iter().all(|r| !r.accepts(class));
+                // a material things are built of that none of the object's parts is usually
+                // made of ("a stone bench": a bench's seat and frame are wood or metal) is what
+                // the object itself is built of: its main structural parts take it (not what a
+                // machine works on: a paper shredder's body is no paper)
+                let builds = [Class::Stone, Class::Wood, Class::Metal, Class::Wicker];
+                let own = builds.contains(&class) && main.iter().all(|r| !r.accepts(class));
                 let drawn = colours.iter().any(|(r, _)| r.accepts(class));
-                let mains = main.iter().copied().filter(|_| own && !drawn);
+                let structural = [Role::Seat, Role::Frame, Role::Body, Role::Top, Role::Door];
+                let mains = main
+                    .iter()
+                    .copied()
+                    .filter(|r| own && !drawn && structural.contains(r));
                 for r in ALL_ROLES
                     .into_iter()
                     .filter(|r| r.accepts(class))
