@@ -1,6 +1,6 @@
 //! Ponds that lie in the ground, not tubs: a water surface a few centimetres above the ground,
-//! an uneven ring of low edging stones round it, lily pads on the water; a garden pond has a
-//! clump of reeds at one end, a koi pond a few orange and white fish just under the surface.
+//! an uneven ring of low edging stones round it, lily pads on the water and a few orange and
+//! white fish just under the surface.
 //! The front faces +y; each stays inside its size box.
 use super::archetypes::Builder;
 use super::materials::Role::*;
@@ -11,28 +11,9 @@ use std::f64::consts::TAU;
 /// Height of the water surface over the ground (m): the pond lies in it.
 const SURFACE: f64 = 0.03;
 
-/// A pond in the ground, a clump of reeds at its back left.
+/// A pond in the ground: a few fish, orange and white with an orange head (koi, goldfish), just
+/// under the surface.
 pub fn pond(b: &mut Builder) {
-    let (rx, ry) = basin(b);
-    // reeds: thin upright blades in a clump at the back left, as tall as the size box
-    let (cx, cy) = (-0.55 * rx, -0.8 * ry);
-    for k in 0..14 {
-        let a = TAU * wobble(k, 7);
-        let r = 0.16 * rx.min(ry) * wobble(k, 8).sqrt();
-        let base = [cx + r * a.cos(), cy + r * a.sin(), 0.0];
-        let lean = 0.12 * (wobble(k, 9) - 0.5);
-        let top = [
-            base[0] + lean,
-            base[1] + 0.5 * lean,
-            b.h * (0.7 + 0.3 * wobble(k, 10)),
-        ];
-        b.rod(Foliage, base, top, 0.012);
-    }
-}
-
-/// A koi pond in the ground: a few fish, orange and white with an orange head, just under the
-/// surface.
-pub fn koi_pond(b: &mut Builder) {
     let (rx, ry) = basin(b);
     let len = (0.14 * rx.min(ry)).clamp(0.12, 0.35);
     let thick = (0.14 * len).min(0.02);
@@ -63,9 +44,7 @@ fn basin(b: &mut Builder) -> (f64, f64) {
     let stone = (0.1 * hw.min(hd)).clamp(0.1, 0.3);
     // the water to the stones' middle line, the stones reaching the box's edge
     let (rx, ry) = (hw - 1.1 * stone, hd - 1.1 * stone);
-    // the ground under the water's edge, then the water, a closed flat disc
-    let bank = vec![[0.0, 0.0], [hw, 0.0], [hw, 0.01], [0.0, 0.01]];
-    b.revolved(Soil, 0, [0.0, 0.0, 0.0], IDENTITY, hd / hw, bank);
+    // the water, a closed flat disc reaching under the stones
     let water = vec![
         [0.0, 0.0],
         [rx + 0.5 * stone, 0.0],
@@ -82,7 +61,7 @@ fn basin(b: &mut Builder) -> (f64, f64) {
     );
     // edging stones: low, uneven lumps side by side round the water
     let perimeter = TAU * ((rx * rx + ry * ry) / 2.0).sqrt();
-    let n = ((perimeter / (1.6 * stone)) as usize).max(8);
+    let n = ((perimeter / (1.3 * stone)) as usize).max(8);
     let top = (0.45 * b.h).min(0.18);
     for k in 0..n {
         let a = TAU * (k as f64 + 0.3 * wobble(k, 1)) / n as f64;
