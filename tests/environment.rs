@@ -356,7 +356,8 @@ fn outdoor_grounds_have_an_area_a_surround_and_a_roof_parapet() {
     assert!(deck.surround[1] > deck.surround[0], "still a lawn round it");
     let roof = o("a rooftop terrace with two chairs");
     assert!(roof.parapet.is_some(), "a parapet round a rooftop");
-    // a possessive still names the scene: a ship's deck is boards with the sea round it
+    // a possessive still names the scene: a ship's deck is planks (wide enough to read at the
+    // outdoor ground's spacing) with the sea round it
     for t in [
         "a pirate ship's deck with two cannons",
         "the deck of a pirate ship",
@@ -364,8 +365,8 @@ fn outdoor_grounds_have_an_area_a_surround_and_a_roof_parapet() {
         let ship = o(t);
         assert_eq!(
             ship.ground_pattern,
-            Pattern::Boards,
-            "{t}: a deck of boards"
+            Pattern::Planks,
+            "{t}: a deck of planks"
         );
         assert!(
             ship.surround[2] > ship.surround[1] && ship.surround[1] > ship.surround[0],

@@ -48,6 +48,45 @@ pub struct SceneKind {
     /// The floor a place of this kind has when the text gives none (an optional seventh field
     /// of `kb/scenes.txt`, "W D" in metres): a balcony is a narrow strip, whatever its furniture.
     pub floor: Option<[f64; 2]>,
+    /// The height of a place whose kind is tall (a church, a barn, a cave; `height H` in the
+    /// seventh field): its room's height when the text gives none, instead of a house's 2.8 m.
+    pub height: Option<f64>,
+    /// Whether a place of this kind has windows (`windowless` in the seventh field: a cave, a
+    /// cellar): one without gets none unless the text counts some.
+    pub windows: bool,
+}
+
+/// The seventh field of `kb/scenes.txt`: an optional floor `W D` in metres, then optional
+/// `height H` (metres) and `windowless`, in any order after the floor.
+type PlaceField = (Option<[f64; 2]>, Option<f64>, bool);
+
+fn place_field(x: &str) -> Result<PlaceField, String> {
+    let mut nums = vec![];
+    let (mut height, mut windows) = (None, true);
+    let mut it = x.split_whitespace();
+    while let Some(t) = it.next() {
+        match t {
+            "height" => {
+                let h: f64 = it
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .filter(|h: &f64| *h >= 2.0 && *h <= 30.0)
+                    .ok_or("height must be `height H` in metres (2 to 30)")?;
+                height = Some(h);
+            }
+            "windowless" => windows = false,
+            n => nums.push(
+                n.parse::<f64>()
+                    .map_err(|_| format!("`{n}` in the place field"))?,
+            ),
+        }
+    }
+    let floor = match nums[..] {
+        [] => None,
+        [w, d] if w > 0.0 && d > 0.0 => Some([w, d]),
+        _ => return Err("floor must be `W D` in metres".into()),
+    };
+    Ok((floor, height, windows))
 }
 
 /// Categories and scene types.
@@ -180,18 +219,9 @@ impl KnowledgeBase {
             if f.len() != 6 && f.len() != 7 {
                 return Err(err("expected 6 or 7 fields"));
             }
-            let floor = match f.get(6) {
-                None => None,
-                Some(x) => {
-                    let v: Vec<f64> = x
-                        .split_whitespace()
-                        .filter_map(|n| n.parse().ok())
-                        .collect();
-                    match v[..] {
-                        [w, d] if w > 0.0 && d > 0.0 => Some([w, d]),
-                        _ => return Err(err("floor must be `W D` in metres")),
-                    }
-                }
+            let (floor, height, windows) = match f.get(6) {
+                None => (None, None, true),
+                Some(x) => place_field(x).map_err(|m| err(&m))?,
             };
             let scene_type = match f[1] {
                 "indoor" => SceneType::Indoor,
@@ -271,6 +301,8 @@ impl KnowledgeBase {
                 anchors,
                 relations,
                 floor,
+                height,
+                windows,
             });
         }
         Ok(kb)

@@ -83,6 +83,7 @@ use super::plants as pt;
 use super::play as pl;
 use super::podiums as pd;
 use super::poles as po;
+use super::ponds as pond;
 use super::prints as pr;
 use super::racks as rk;
 use super::recliners as rc;
@@ -280,7 +281,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("castle", st::castle, [Body], [Body => [0.84, 0.74, 0.55], Top => [0.78, 0.66, 0.46]]),
     arch!("lantern", st::lantern, [Body, Top], [Body => STONE, Top => [0.58, 0.56, 0.52], Light => [1.0, 0.86, 0.55]]),
     arch!("brazier", bz::brazier, [Metal], [Metal => [0.17, 0.16, 0.15], Top => [0.95, 0.32, 0.08], Interior => [0.10, 0.09, 0.08], Light => [1.0, 0.72, 0.25]]),
-    arch!("palm", st::palm, [Foliage], [Trunk => [0.52, 0.40, 0.28], Foliage => [0.22, 0.50, 0.18]]),
+    arch!("palm", st::palm, [Foliage], [Trunk => [0.56, 0.46, 0.34], Foliage => [0.22, 0.50, 0.18], Body => [0.36, 0.24, 0.12]]),
     arch!("tripod", t::tripod, [Body], [Body => [0.90, 0.90, 0.90], Metal => [0.20, 0.20, 0.21], Glass => [0.25, 0.35, 0.45]]),
     arch!("console", t::console, [Body, Top], [Body => [0.30, 0.32, 0.36], Top => [0.45, 0.47, 0.50]]),
     arch!("robot", t::robot, [Body], [Body => [0.78, 0.80, 0.83], Metal => [0.35, 0.36, 0.38], Light => [0.35, 0.80, 0.95]]),
@@ -598,8 +599,9 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("sarcophagus", nm::sarcophagus, [Body, Top], [Body => [0.70, 0.52, 0.22], Top => [0.80, 0.62, 0.26], Frame => [0.55, 0.50, 0.44], Skin => [0.92, 0.74, 0.30], Canvas => [0.12, 0.26, 0.55], Handle => [0.88, 0.70, 0.25]]),
     arch!("tripod_lamp", nm::tripod_lamp, [Shade], [Frame => [0.50, 0.34, 0.20], Metal => [0.20, 0.20, 0.21], Shade => [0.93, 0.90, 0.82], Light => [1.0, 0.92, 0.70]]),
     arch!("mushroom", nm::mushroom, [Shade], [Shade => [0.82, 0.12, 0.10], Trunk => [0.93, 0.90, 0.82], Interior => [0.90, 0.85, 0.74], Canvas => [0.97, 0.96, 0.93]]),
+    arch!("pond", pond::pond, [Water], [Water => [0.16, 0.34, 0.38], Stone => [0.55, 0.54, 0.50], Foliage => [0.30, 0.50, 0.20], Body => [0.95, 0.45, 0.10], Canvas => [0.96, 0.95, 0.92]]),
     arch!("lake", nm::lake, [Water], [Water => [0.20, 0.42, 0.55], Soil => [0.40, 0.33, 0.22], Foliage => [0.45, 0.55, 0.25]]),
-    arch!("sea", nm::sea, [Water], [Water => [0.12, 0.40, 0.60], Soil => [0.80, 0.70, 0.50], Canvas => [0.95, 0.97, 0.98]]),
+    arch!("sea", nm::sea, [Water], [Water => [0.12, 0.40, 0.60], Soil => [0.80, 0.70, 0.50], Interior => [0.58, 0.48, 0.33], Canvas => [0.95, 0.97, 0.98]]),
     arch!("printing_press", cn::printing_press, [Metal], [Metal => [0.16, 0.16, 0.17], Body => [0.22, 0.22, 0.23], Frame => [0.42, 0.28, 0.16], Handle => [0.72, 0.56, 0.28], Interior => [0.06, 0.06, 0.07], Canvas => [0.95, 0.93, 0.86]]),
     arch!("xray_machine", cn::xray_machine, [Body], [Body => [0.90, 0.91, 0.92], Metal => [0.62, 0.64, 0.67], Top => [0.80, 0.82, 0.84], Cushion => [0.22, 0.42, 0.62], Light => [1.0, 0.92, 0.55], Handle => [0.20, 0.20, 0.22]]),
     arch!("time_machine", cn::time_machine, [Metal], [Metal => BRASS, Handle => [0.80, 0.64, 0.32], Glass => [0.42, 0.30, 0.16], Light => [0.55, 0.85, 1.0], Top => [0.36, 0.22, 0.12], Frame => [0.30, 0.18, 0.10], Upholstery => [0.62, 0.08, 0.10], Body => [0.25, 0.16, 0.09], Canvas => [0.95, 0.92, 0.82]]),

@@ -165,6 +165,13 @@ const PART_WORDS: &[(&str, Role)] = &[
     ("canopy", Role::Shade),
 ];
 
+/// Words after a material that make it the material of a thing's fittings or trim
+/// ("iron-bound", "brass-studded", "copper-banded"), not of the thing.
+const TRIMS: &[&str] = &[
+    "bound", "banded", "strapped", "studded", "trimmed", "hinged", "riveted", "edged", "capped",
+    "tipped", "handled",
+];
+
 /// What a colour word says.
 #[derive(Debug, Clone, PartialEq)]
 pub enum WordKind {
@@ -234,10 +241,18 @@ pub fn colour_words(description: &str) -> Vec<ColourWord> {
                 phrase = format!("{m} {phrase}");
             }
         }
-        let part = words[i + n..]
+        let mut part = words[i + n..]
             .iter()
             .take(2)
             .find_map(|w| PART_WORDS.iter().find(|p| p.0 == *w).map(|p| p.1));
+        // "iron-bound", "brass-studded": the material of the fittings, not of the thing
+        if words.get(i + n).is_some_and(|w| TRIMS.contains(w)) {
+            if kind != WordKind::Material(Class::Metal) {
+                i += n;
+                continue;
+            }
+            part = Some(Role::Metal);
+        }
         out.push(ColourWord {
             phrase,
             kind,
@@ -290,8 +305,24 @@ impl Palette {
         }
         for w in words.iter().filter(|w| w.part.is_none()) {
             if let WordKind::Material(class) = w.kind {
-                for r in ALL_ROLES {
-                    if r.accepts(class) && !fixed.contains(&r) {
+                // a material things are built of that none of the object's parts is usually
+                // made of ("a stone bench": a bench's seat and frame are wood or metal) is what
+                // the object itself is built of: its main structural parts take it (not what a
+                // machine works on: a paper shredder's body is no paper)
+                let builds = [Class::Stone, Class::Wood, Class::Metal, Class::Wicker];
+                let own = builds.contains(&class) && main.iter().all(|r| !r.accepts(class));
+                let drawn = colours.iter().any(|(r, _)| r.accepts(class));
+                let structural = [Role::Seat, Role::Frame, Role::Body, Role::Top, Role::Door];
+                let mains = main
+                    .iter()
+                    .copied()
+                    .filter(|r| own && !drawn && structural.contains(r));
+                for r in ALL_ROLES
+                    .into_iter()
+                    .filter(|r| r.accepts(class))
+                    .chain(mains)
+                {
+                    if !fixed.contains(&r) {
                         set(&mut colours, r, w.rgb);
                         fixed.push(r);
                     }
@@ -337,6 +368,8 @@ impl Palette {
                 [0.9, 0.95, 1.05],
                 [1.15, 1.05, 0.85],
             ],
+            // open water, the deep (darker, greener), the shallows (lighter, turquoise)
+            Role::Water => &[[1.0, 1.0, 1.0], [0.7, 0.85, 0.85], [1.4, 1.3, 1.05]],
             Role::Stone => &[
                 [1.0, 1.0, 1.0],
                 [0.84, 0.83, 0.81],

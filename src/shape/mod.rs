@@ -102,6 +102,7 @@ mod plants;
 mod play;
 mod podiums;
 mod poles;
+mod ponds;
 mod prints;
 mod racks;
 mod recliners;
@@ -259,7 +260,7 @@ pub fn archetype_by_keyword(category: &str) -> &'static str {
         ("counter", "counter"),
         ("car", "vehicle"),
         ("tent", "tent"),
-        ("pond", "water"),
+        ("pond", "pond"),
         ("fountain", "water"),
         ("bridge", "bridge"),
         ("tower", "tower"),

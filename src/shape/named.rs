@@ -229,21 +229,62 @@ pub fn lake(b: &mut Builder) {
     }
 }
 
-/// The sea: water out to the size box's back and sides, and at its front (+y, towards the land)
-/// a strip of wet sand by a white line of surf and the lines of two waves behind it, standing a
-/// little over the water; flat.
+/// The sea, not a pool: water out to the size box's back and sides, lighter in the shallows by
+/// the shore and deeper blue-green away from it; at its front (+y, towards the land) a band of
+/// wet sand, a ragged line of foam along the water's edge, and behind it broken crests, short
+/// white dashes here and there, fewer further out; all standing a little over the water, flat.
 pub fn sea(b: &mut Builder) {
     let (hw, hd) = (b.w / 2.0, b.d / 2.0);
     let zw = 0.6 * b.h;
-    let shore = hd - (0.12 * b.d).min(1.5);
-    b.cuboid(Soil, [-hw, shore, 0.0], [hw, hd, 0.5 * zw]);
-    b.cuboid(Water, [-hw, -hd, 0.0], [hw, shore, zw]);
-    // Surf along the shore and two waves behind it, each a low white ridge.
-    for (k, y) in [shore, shore - 0.15 * b.d, shore - 0.35 * b.d]
-        .iter()
+    let band = (0.12 * b.d).min(1.5);
+    let shore = hd - band;
+    // the beach's edge: dry sand, then a darker wet band the waves reach
+    b.cuboid(Soil, [-hw, shore + 0.5 * band, 0.0], [hw, hd, 0.5 * zw]);
+    b.cuboid(
+        Interior,
+        [-hw, shore, 0.0],
+        [hw, shore + 0.5 * band, 0.5 * zw],
+    );
+    // shallows (variant 2), open water, the deep (variant 1) beyond
+    let (shallow, deep) = (shore - 0.15 * b.d, -hd + 0.45 * b.d);
+    b.cuboid_v(Water, 2, [-hw, shallow, 0.0], [hw, shore, zw]);
+    b.cuboid_v(Water, 0, [-hw, deep, 0.0], [hw, shallow, zw]);
+    b.cuboid_v(Water, 1, [-hw, -hd, 0.0], [hw, deep, zw]);
+    // the foam line: short pieces of uneven depth along a wavering edge
+    let piece = (0.04 * b.w).clamp(0.2, 0.8);
+    let n = (b.w / piece).ceil() as usize;
+    let foam = (0.03 * b.d).min(0.3);
+    for k in 0..n {
+        let x0 = -hw + k as f64 * piece;
+        let x1 = (x0 + piece).min(hw);
+        let wave = foam * (0.8 * (x0 * 1.3).sin() + 0.5 * (x0 * 0.37 + 1.0).sin());
+        let depth = foam * (0.6 + 0.8 * wobble(k, 1));
+        let y1 = (shore - 0.5 * foam + wave).min(shore);
+        b.cuboid(Canvas, [x0, y1 - depth, 0.0], [x1, y1, b.h]);
+    }
+    // broken crests: dashes at rows further out, each row sparser and thinner
+    for (row, y) in [shore - 0.12 * b.d, shore - 0.3 * b.d, shore - 0.5 * b.d]
+        .into_iter()
         .enumerate()
     {
-        let t = (0.03 * b.d).min(0.3) / (1.0 + k as f64);
-        b.cuboid(Canvas, [-hw, y - t, 0.0], [hw, *y, b.h]);
+        let t = foam / (1.5 + row as f64);
+        let dashes = ((b.w / (3.0 + 2.0 * row as f64)) as usize).max(2);
+        for k in 0..dashes {
+            let j = k + 17 * row;
+            let len = piece * (1.5 + 2.5 * wobble(j, 2)) / (1.0 + 0.5 * row as f64);
+            let x = -hw + (k as f64 + wobble(j, 3)) * b.w / dashes as f64;
+            let x1 = (x + len).min(hw);
+            let yy = y + 0.04 * b.d * (wobble(j, 4) - 0.5);
+            if x1 > x {
+                b.cuboid(Canvas, [x, yy - t, 0.0], [x1, yy, b.h]);
+            }
+        }
     }
+}
+
+/// A deterministic number in [0, 1) for index `k` and stream `s` (sizes that differ without a
+/// random source, so a drawing is the same every time).
+pub(super) fn wobble(k: usize, s: u32) -> f64 {
+    let x = ((k as f64 + 1.0) * 12.9898 + s as f64 * 78.233).sin() * 43_758.547;
+    x - x.floor()
 }

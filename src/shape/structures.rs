@@ -2,7 +2,7 @@
 //! bridges, towers on legs, small castles, post lanterns and palms. The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
-use super::parts::{rot_z, IDENTITY};
+use super::parts::IDENTITY;
 use std::f64::consts::{PI, TAU};
 
 /// A ridge tent: two sloped canvas roofs meeting at a ridge along y, triangular end walls and a
@@ -282,53 +282,70 @@ pub fn lantern(b: &mut Builder) {
     b.ellipsoid(Top, [0.0, 0.0, 0.97 * h], [0.12 * m, 0.12 * m, 0.03 * h]);
 }
 
-/// A palm: a slender, slightly leaning ringed trunk and a crown of long drooping fronds.
+/// A palm: a tall bare trunk curving gently to one side, ringed where old fronds fell, under
+/// one crown of long fronds that arch out and droop, each a midrib with narrow leaflets down
+/// both sides (feathers, not the stacked discs of a conifer's tiers), a few coconuts under it.
 pub fn palm(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let m = hw.min(hd);
-    let crown = [0.12 * hw, 0.0, 0.85 * h];
-    let r = (0.05 * h).clamp(0.03, 0.2).min(0.3 * m);
-    let segs = 10;
+    let crown = [0.2 * hw, 0.0, 0.8 * h];
+    let r = (0.04 * h).clamp(0.03, 0.16).min(0.25 * m);
+    let segs = 12;
+    let bend = |t: f64| crown[0] * t * t;
     for i in 0..segs {
         let (t0, t1) = (i as f64 / segs as f64, (i + 1) as f64 / segs as f64);
-        let bend = |t: f64| crown[0] * t * t;
-        b.rod(
-            Trunk,
+        let (r0, r1) = (r * (1.0 - 0.3 * t0), r * (1.0 - 0.3 * t1));
+        let (a, c) = (
             [bend(t0), 0.0, t0 * crown[2]],
             [bend(t1), 0.0, t1 * crown[2]],
-            r * (1.0 - 0.3 * t0),
         );
+        b.rod(Trunk, a, c, r0.min(r1));
+        // a ring where a frond fell
+        b.ellipsoid(Trunk, c, [1.12 * r1, 1.12 * r1, 0.02 * h]);
     }
-    let fronds = 12;
+    let fronds = 9;
+    let reach = 0.97 * m;
     for k in 0..fronds {
         let a = k as f64 / fronds as f64 * TAU + 0.3;
         let (c, s) = (a.cos(), a.sin());
-        // Each frond: leaflets along an arc that rises then droops to the crown's edge.
-        let reach = 0.95 * m;
-        let mut prev = crown;
-        for j in 1..=10 {
-            let t = j as f64 / 10.0;
-            let p = [
+        // up a little, then out and down: the tip hangs well below the crown
+        let at = |t: f64| {
+            [
                 crown[0] + c * reach * t,
                 crown[1] + s * reach * t * (hd / hw),
-                crown[2] + 0.1 * h * (PI * t).sin() - 0.3 * h * t * t,
-            ];
-            let p = [p[0], p[1], p[2].min(h - 0.02)];
-            let mid = [0, 1, 2].map(|q| 0.5 * (prev[q] + p[q]));
-            let seg = ((p[0] - prev[0]).powi(2) + (p[1] - prev[1]).powi(2)).sqrt();
-            b.ellipsoid_rot(
-                Foliage,
-                k,
-                mid,
-                [
-                    0.95 * seg + 0.03,
-                    0.22 * m * (1.0 - 0.5 * t) + 0.03,
-                    0.04 + 0.02 * m,
-                ],
-                rot_z(a),
-            );
-            prev = p;
+                (crown[2] + 0.12 * h * (PI * t).sin().min(1.0) * (1.0 - t) - 0.28 * h * t * t)
+                    .min(h - 0.03),
+            ]
+        };
+        let n = 9;
+        for j in 0..n {
+            let (p, q) = (at(j as f64 / n as f64), at((j + 1) as f64 / n as f64));
+            b.rod(Foliage, p, q, 0.012 + 0.006 * m);
+            // leaflets from the midrib's middle out to its tip, both sides, hanging down
+            let t = (j as f64 + 0.5) / n as f64;
+            if t < 0.15 {
+                continue;
+            }
+            let len = 0.28 * reach * (1.0 - 0.55 * t);
+            let mid = [0, 1, 2].map(|x| 0.5 * (p[x] + q[x]));
+            for side in [-1.0, 1.0] {
+                let tip = [
+                    mid[0] - side * s * len * 0.8 + c * 0.3 * len,
+                    mid[1] + side * c * len * 0.8 * (hd / hw) + s * 0.3 * len,
+                    (mid[2] - 0.55 * len).max(0.02),
+                ];
+                b.rod(Foliage, mid, tip, 0.01 + 0.008 * m);
+            }
         }
     }
-    b.ellipsoid(Trunk, crown, [1.6 * r, 1.6 * r, 1.4 * r]);
+    b.ellipsoid(Trunk, crown, [1.5 * r, 1.5 * r, 1.3 * r]);
+    for k in 0..3 {
+        let a = TAU * k as f64 / 3.0;
+        let c = [
+            crown[0] + 1.4 * r * a.cos(),
+            1.4 * r * a.sin(),
+            crown[2] - 1.2 * r,
+        ];
+        b.ellipsoid(Body, c, [0.9 * r, 0.9 * r, 0.95 * r]);
+    }
 }

@@ -47,7 +47,7 @@ pub fn asked_windows(text: &str) -> Option<u32> {
             .map(|k| k as u32 + 1)
             .or_else(|| w.parse::<u32>().ok().filter(|n| (1..=12).contains(n)))
     };
-    words.iter().enumerate().find_map(|(k, w)| {
+    let counted = words.iter().enumerate().find_map(|(k, w)| {
         if *w != "windows" {
             return None;
         }
@@ -67,7 +67,8 @@ pub fn asked_windows(text: &str) -> Option<u32> {
             }
         }
         None
-    })
+    });
+    counted.or_else(|| windowless_place(&t).then_some(0))
 }
 
 /// Length of `wall` in a room of size `room`.
@@ -96,6 +97,34 @@ fn opposite(w: Wall) -> Wall {
         Wall::East => Wall::West,
         Wall::West => Wall::East,
     }
+}
+
+/// Whether the place `t` (lower case) opens with is of a kind without windows (`windowless` in
+/// `kb/scenes.txt`: a cave, a cellar): its name or a synonym, whole words, among the words
+/// naming the place (before "with", "where", a comma).
+fn windowless_place(t: &str) -> bool {
+    let head = t.split([',', ';', ':', '.']).next().unwrap_or("");
+    let w: Vec<&str> = head
+        .split(|c: char| !c.is_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let end = w
+        .iter()
+        .position(|x| ["with", "where", "which", "that"].contains(x))
+        .unwrap_or(w.len());
+    let w = &w[..end];
+    crate::plan::kb::KnowledgeBase::builtin()
+        .scenes
+        .iter()
+        .filter(|s| !s.windows)
+        .flat_map(|s| std::iter::once(&s.name).chain(&s.synonyms))
+        .any(|name| {
+            let n: Vec<&str> = name
+                .split(|c: char| !c.is_alphanumeric())
+                .filter(|w| !w.is_empty())
+                .collect();
+            !n.is_empty() && w.windows(n.len()).any(|x| x == &n[..])
+        })
 }
 
 /// Seeded openings of a room of size `room`, with `windows` windows when the sentence counts

@@ -133,17 +133,24 @@ fn with_contents(d: &Draft, category: &str, description: String) -> String {
     }
 }
 
-/// Style words describe the whole scene unless they are one object's adjectives.
+/// Style words describe the whole scene unless they are one object's adjectives or part of an
+/// object's name ("a little wooden bridge" names a wooden bridge: the park is not wooden).
 pub(super) fn styles(d: &Draft) -> Vec<String> {
     let Draft { r, adjectives, .. } = d;
     let local = |w: &str| adjectives.values().any(|a| a.iter().any(|x| x == w));
+    let named = |s: usize, e: usize| {
+        r.mentions
+            .iter()
+            .any(|m| m.known && m.start <= s && e <= m.end)
+    };
     let mut v: Vec<String> = vec![];
     for w in r.text.split(|c: char| !c.is_alphanumeric() && c != '-') {
+        let at = w.as_ptr() as usize - r.text.as_ptr() as usize;
         let is_style = style_word(w).is_some()
             || ["-inspired", "-style", "-styled", "-themed"]
                 .iter()
                 .any(|s| w.ends_with(s) && w.len() > s.len());
-        if is_style && !local(w) && !v.iter().any(|x| x == w) {
+        if is_style && !local(w) && !named(at, at + w.len()) && !v.iter().any(|x| x == w) {
             v.push(w.to_string());
         }
     }

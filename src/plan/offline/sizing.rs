@@ -123,8 +123,12 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         ..
     } = d;
     let scene_type = *scene_type;
+    // a tall place's kind (a church, a barn, a cave) sets its height, a house's room is 2.8 m
+    let kind_height = scene
+        .filter(|_| scene_type == SceneType::Indoor)
+        .and_then(|s| s.height);
     let height: f64 = match scene_type {
-        SceneType::Indoor => 2.8,
+        SceneType::Indoor => kind_height.unwrap_or(2.8),
         SceneType::Outdoor => 10.0,
     };
     let stated = r.room;
@@ -146,6 +150,7 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         }
         None => {
             let mut room = room_for(spec, scene_type);
+            room.size[2] = room.size[2].max(kind_height.unwrap_or(0.0));
             if let Some(floor) = scene.and_then(|s| s.floor) {
                 room.size = kind_floor(spec, named, floor, r.scale, room.size);
             } else if r.scale < 1.0 {

@@ -28,6 +28,14 @@ pub enum Pattern {
     /// 60 cm paving slabs with wide joints and a per-slab tint, legible at the outdoor ground's
     /// coarser point spacing.
     Slabs,
+    /// Tatami mats: 90 x 180 cm straw mats in offset rows, a fine weave across each, dark cloth
+    /// borders along their long sides.
+    Tatami,
+    /// Rough rock (a cave's walls, ceiling and floor): dark and light masses, cracks.
+    Rock,
+    /// A ship's deck: 30 cm planks with wide dark caulked seams and staggered butt ends, legible
+    /// at the outdoor ground's coarser point spacing.
+    Planks,
 }
 
 /// Colours (linear RGB in [0, 1]) and patterns of the environment surfaces. `floor` is the
@@ -41,6 +49,8 @@ pub struct EnvColours {
     pub sky: [f32; 3],
     pub ground: [f32; 3],
     pub wall_pattern: Pattern,
+    /// The ceiling's pattern: plain paint, a cave's rock.
+    pub ceiling_pattern: Pattern,
     pub floor_pattern: Pattern,
     pub ground_pattern: Pattern,
     /// Outdoors: the ground around the scene area (a lawn round a patio, the sea round a deck).
@@ -212,7 +222,17 @@ const KINDS: &[KindLook] = &[
     ("winter village", [0.93, 0.95, 0.98], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
     ("campsite", [0.40, 0.38, 0.22], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
     ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
+    ("tea room", [0.74, 0.72, 0.50], Tatami, [0.90, 0.87, 0.78], Plain, DOOR_WOOD),
+    ("cave", [0.40, 0.37, 0.33], Rock, ROCK, Rock, TUNNEL),
 ];
+
+/// Rock of a cave's walls and roof.
+const ROCK: [f32; 3] = [0.36, 0.33, 0.30];
+/// A cave's way out: the dark of a tunnel, not a door leaf.
+const TUNNEL: [f32; 3] = [0.06, 0.05, 0.05];
+
+/// Ceilings of scene kinds whose roof is not plain paint: (kind, colour, pattern).
+const CEILINGS: &[(&str, [f32; 3], Pattern)] = &[("cave", ROCK, Rock)];
 
 /// The clinical floor: pale sheet vinyl, its fine speckle; and the walls of a clinical place
 /// whose kind has no look of its own.
@@ -326,6 +346,7 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         sky: BLUE_SKY,
         ground: GRASS,
         wall_pattern: Plain,
+        ceiling_pattern: Plain,
         floor_pattern: Boards,
         ground_pattern: Mottled,
         surround: GRASS,
@@ -336,6 +357,9 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
     let kind = scene_kind(scene_text);
     if let Some(&(_, fc, fp, wc, wp, dc)) = kind.and_then(|k| KINDS.iter().find(|x| x.0 == k)) {
         (c.floor, c.floor_pattern, c.wall, c.wall_pattern, c.door) = (fc, fp, wc, wp, dc);
+    }
+    if let Some(&(_, cc, cp)) = kind.and_then(|k| CEILINGS.iter().find(|x| x.0 == k)) {
+        (c.ceiling, c.ceiling_pattern) = (cc, cp);
     }
     let w = words(scene_text);
     if scene_type == SceneType::Indoor && clinical(kind, scene_text) {
@@ -471,7 +495,7 @@ fn noise(u: f32, v: f32, seed: u64) -> f32 {
 }
 
 /// Three octaves of value noise, in about [0, 1), features of `size` metres.
-fn fbm(u: f32, v: f32, size: f32, seed: u64) -> f32 {
+pub(super) fn fbm(u: f32, v: f32, size: f32, seed: u64) -> f32 {
     let (mut sum, mut amp, mut f) = (0.0, 0.5, 1.0 / size);
     for o in 0..3 {
         sum += amp * noise(u * f, v * f, seed.wrapping_add(o));
@@ -563,6 +587,7 @@ pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed:
         Mottled => {
             k *= 1.0 + 0.35 * (fbm(u, v, 1.2, seed) - 0.5) + 0.1 * (speck - 0.5);
         }
+        Tatami | Rock | Planks => return super::natural::shade(base, pattern, u, v, speck, seed),
     }
     let mut c = base.map(|x| x * k);
     if let Some((to, t)) = mix_to {

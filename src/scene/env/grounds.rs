@@ -1,6 +1,7 @@
 //! Outdoor grounds of the draft: the scene area's own surface (paving on a patio, decking on a
 //! ship, sand on a beach) and what lies around it (a lawn round a patio, the sea round a ship,
-//! the roofs round a rooftop), plus a parapet round a rooftop. Host-only and deterministic.
+//! the roofs round a rooftop), plus a parapet round a rooftop or a bulwark round a ship's
+//! deck. Host-only and deterministic.
 use super::colours::Pattern::{self, *};
 
 const GRASS: [f32; 3] = [0.30, 0.50, 0.20];
@@ -44,8 +45,15 @@ const GROUNDS: &[KindGround] = &[
     ("beer garden", GRAVEL, Speckled, GRASS, Mottled),
     ("basketball court", ASPHALT, Speckled, GRASS, Mottled),
     ("skate park", CONCRETE, Mottled, GRASS, Mottled),
-    ("pirate ship deck", DECK, Boards, SEA, Mottled),
+    ("pirate ship deck", DECK, Planks, SEA, Mottled),
 ];
+
+/// A ship's bulwark: the tarred timber wall round its deck.
+const BULWARK: [f32; 3] = [0.30, 0.20, 0.12];
+
+/// Outdoor scene kinds walled round at rail height (a ship's deck inside its bulwark): (kind,
+/// the wall's colour).
+const WALLED: &[(&str, [f32; 3])] = &[("pirate ship deck", BULWARK)];
 
 /// Words that put a scene up on a building, on a roof or a balcony: paving inside a parapet,
 /// roofs around.
@@ -67,7 +75,7 @@ pub const PARAPET_HEIGHT: f64 = 1.05;
 pub struct OutdoorGround {
     pub area: ([f32; 3], Pattern),
     pub surround: ([f32; 3], Pattern),
-    /// A parapet's colour round the area (rooftops).
+    /// A parapet's colour round the area (rooftops; a ship's bulwark).
     pub parapet: Option<[f32; 3]>,
     /// Whether what the text says of the ground covers the surround too (one ground all round).
     pub one_ground: bool,
@@ -90,10 +98,11 @@ pub fn outdoor_ground(kind: Option<&str>, words: &[String]) -> OutdoorGround {
         Some(&(_, ac, ap, sc, sp)) => ((ac, ap), (sc, sp)),
         None => ((GRASS, Mottled), (GRASS, Mottled)),
     };
+    let walled = kind.and_then(|k| WALLED.iter().find(|g| g.0 == k));
     OutdoorGround {
         area,
         surround,
-        parapet: None,
+        parapet: walled.map(|g| g.1),
         one_ground: area == surround,
     }
 }

@@ -13,6 +13,7 @@
 mod colours;
 mod grounds;
 mod light;
+mod natural;
 mod openings;
 mod said_not;
 
@@ -156,7 +157,7 @@ pub fn init_environment(
             let span = [w + 2.0 * m, d + 2.0 * m];
             b.plane(&mut rng, n, span, |u, v, push| {
                 let p = [u - hw - m, v - hd - m, h + push];
-                (p, [0.0, 0.0, 1.0], colours.ceiling, Pattern::Plain)
+                (p, [0.0, 0.0, 1.0], colours.ceiling, colours.ceiling_pattern)
             });
             let env = b.take();
             // The floor sits at z = 0 (at most 4 mm below), under the walls' push.
