@@ -215,6 +215,7 @@ fn print_colour(category: &str, size: [f64; 3], variant: u32) -> [f32; 3] {
             gaussians: Some(20_000),
             seed: 1,
             variant,
+            mount: None,
         },
     )
     .unwrap();

@@ -135,7 +135,7 @@ pub struct Archetype {
 
 impl Archetype {
     /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`, a bird as
-    /// `bird`.
+    /// `bird`, held up as `mount` says.
     pub fn parts_holding(
         &self,
         size: [f64; 3],
@@ -143,6 +143,7 @@ impl Archetype {
         animal: Option<&'static super::animals::Animal>,
         bird: Option<&'static super::birds::Bird>,
         variant: u32,
+        mount: super::Mount,
     ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
@@ -153,6 +154,7 @@ impl Archetype {
             animal,
             bird,
             variant: variant % super::variants::count(self.name),
+            mount,
         };
         (self.layout)(&mut b);
         b.parts
