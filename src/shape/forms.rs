@@ -92,11 +92,20 @@ fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
 /// top of its box when it stands (on legs below it), in the middle of its box when it hangs.
 pub fn round_mirror(b: &mut Builder) {
     let r = 0.5 * b.w.min(b.h);
-    let zc = match b.mount {
-        Mount::Stand => b.h - r,
-        Mount::Wall | Mount::Ceiling => 0.5 * b.h,
-    };
-    elliptic_mirror(b, r, r, zc);
+    match b.mount {
+        Mount::Stand => elliptic_mirror(b, r, r, b.h - r),
+        Mount::Wall | Mount::Ceiling => {
+            // hung on a leather strap from a peg: the disc at the foot of its box, the strap's
+            // two ends meeting at the top
+            let r = r.min(0.4 * b.h);
+            elliptic_mirror(b, r, r, r);
+            let (y, top) = (-b.d / 2.0 + 0.006, b.h - 0.01);
+            for sx in [-1.0, 1.0] {
+                b.rod(Upholstery, [sx * 0.6 * r, y, 1.8 * r], [0.0, y, top], 0.006);
+            }
+            b.cylinder(Metal, [0.0, -b.d / 2.0 + 0.012, top - 0.01], 0.012, 0.02);
+        }
+    }
 }
 
 /// An oval mirror filling its box's width and height (an upright ellipse).

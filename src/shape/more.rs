@@ -140,7 +140,7 @@ pub fn screen(b: &mut Builder) {
         );
         (zp, y0)
     } else {
-        (0.0, -hd)
+        (0.0, -0.5 * pd)
     };
     b.cuboid(Body, [-hw, y0, zp], [hw, y0 + pd, h]);
     let bezel = (0.015 * b.w).max(0.01);
