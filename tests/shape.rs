@@ -106,6 +106,7 @@ fn every_builtin_category_builds_inside_its_box_and_covers_its_silhouette() {
         gaussians: None,
         seed: 1,
         variant: 0,
+        mount: None,
     };
     let mut holes: Vec<String> = vec![];
     for o in &kb.objects {
@@ -168,6 +169,7 @@ fn default_count_follows_area_and_option_overrides_it() {
         gaussians: Some(12_000),
         seed: 0,
         variant: 0,
+        mount: None,
     };
     let n = build("sofa", [2.1, 0.95, 0.85], "", &opts).unwrap().len();
     assert!((10_800..=13_200).contains(&n), "{n}");
@@ -302,11 +304,13 @@ fn deterministic_per_seed_and_seeds_differ() {
         gaussians: None,
         seed: 7,
         variant: 0,
+        mount: None,
     };
     let b = ShapeOptions {
         gaussians: None,
         seed: 8,
         variant: 0,
+        mount: None,
     };
     let g1 = build("chair", size, "oak chair", &a).unwrap();
     let g2 = build("chair", size, "oak chair", &a).unwrap();
@@ -334,6 +338,7 @@ fn bad_sizes_and_counts_are_errors() {
         gaussians: Some(5),
         seed: 0,
         variant: 0,
+        mount: None,
     };
     assert!(matches!(
         build("sofa", [1.0, 1.0, 1.0], "", &few),

@@ -43,6 +43,7 @@ fn blue_share(category: &str, description: &str) -> f64 {
             gaussians: Some(20_000),
             seed: 3,
             variant: 0,
+            mount: None,
         },
     )
     .unwrap();

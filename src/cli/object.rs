@@ -165,6 +165,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
                 gaussians: None,
                 seed: cfg.seed,
                 variant: 0,
+                mount: None,
             },
         )?)
     };

@@ -423,6 +423,7 @@ pub fn add_object(
             gaussians: None,
             seed: state.scene.seed,
             variant: 0,
+            mount: None,
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;

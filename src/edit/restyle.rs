@@ -304,6 +304,7 @@ fn recolour_object(
             gaussians: None,
             seed,
             variant: 0,
+            mount: None,
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;

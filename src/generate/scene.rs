@@ -196,6 +196,7 @@ pub fn draft_object(
             gaussians: None,
             seed,
             variant: 0,
+            mount: Some(shape::Mount::in_scene(spec, cat)),
         },
     )
     .with_context(|| format!("building the shape prior of `{cat}`"))?;

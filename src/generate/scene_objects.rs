@@ -103,6 +103,7 @@ pub fn generate_objects(
                 gaussians: cfg.object_gaussians,
                 seed: cfg.seed,
                 variant: 0,
+                mount: Some(shape::Mount::in_scene(spec, &cat)),
             },
         )
         .map_err(|e| GenError::Prior(Error::Input(e.to_string())))?;

@@ -75,6 +75,7 @@ pub fn draft_variants(
                     gaussians: None,
                     seed,
                     variant: v,
+                    mount: Some(shape::Mount::in_scene(spec, &o.category)),
                 },
             )
             .with_context(|| format!("building variant {v} of `{}`", o.category))?;

@@ -21,6 +21,7 @@ mod audience;
 mod companions;
 mod counts;
 mod describe;
+mod filled;
 mod goods;
 mod outdoors;
 mod parts;
@@ -206,6 +207,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     roles::scene_defaults(&mut d);
     goods::goods_on_show(&mut d);
     roles::mention_kinds(&mut d);
+    filled::by_contents(&mut d);
     supports::work_tables(&mut d);
     sizing::mention_sizes(&mut d);
     counts::mention_counts(&mut d);

@@ -136,7 +136,7 @@ pub struct Archetype {
 
 impl Archetype {
     /// The parts at `size`, shelves holding `goods`, a quadruped drawn as `animal`, a bird as
-    /// `bird`.
+    /// `bird`, held up as `mount` says.
     pub fn parts_holding(
         &self,
         size: [f64; 3],
@@ -144,6 +144,7 @@ impl Archetype {
         animal: Option<&'static super::animals::Animal>,
         bird: Option<&'static super::birds::Bird>,
         variant: u32,
+        mount: super::Mount,
     ) -> Vec<Part> {
         let mut b = Builder {
             parts: vec![],
@@ -154,6 +155,7 @@ impl Archetype {
             animal,
             bird,
             variant: variant % super::variants::count(self.name),
+            mount,
         };
         (self.layout)(&mut b);
         b.parts
@@ -370,7 +372,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("display_case", vi::display_case, [Body], [Body => [0.55, 0.38, 0.22], Door => [0.50, 0.34, 0.20], Frame => STEEL, Interior => [0.30, 0.28, 0.26]]),
     arch!("aquarium", vi::aquarium, [Body, Top, Frame], [Body => BLACK, Door => [0.14, 0.14, 0.15], Top => BLACK, Frame => BLACK, Water => [0.16, 0.42, 0.58], Soil => [0.80, 0.72, 0.56], Foliage => [0.20, 0.55, 0.22], Pane => [0.62, 0.84, 0.90]]),
     arch!("shower", vi::shower, [Canvas], [Body => WHITE, Canvas => [0.86, 0.88, 0.90], Metal => [0.42, 0.43, 0.45], Handle => [0.42, 0.43, 0.45], Interior => [0.40, 0.40, 0.42]]),
-    arch!("round_mirror", fo::round_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("round_mirror", fo::round_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88], Upholstery => [0.42, 0.26, 0.15]]),
     arch!("oval_mirror", fo::oval_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
     arch!("round_rug", fo::round_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("oval_rug", fo::oval_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),

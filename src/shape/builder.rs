@@ -19,6 +19,8 @@ pub struct Builder {
     /// Which of its archetype's variants to draw (`kb/variants.txt`: a poster's print, a
     /// statue's pose), below the archetype's count; 0 is its usual drawing.
     pub variant: u32,
+    /// How it is held up: a wall thing draws no legs, a ceiling thing hangs on a cord.
+    pub mount: super::Mount,
 }
 
 impl Builder {

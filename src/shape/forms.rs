@@ -5,6 +5,7 @@
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
+use super::Mount;
 use std::f64::consts::FRAC_PI_2;
 
 const FORMS: &str = include_str!("kb/forms.txt");
@@ -62,8 +63,9 @@ fn disc(b: &mut Builder, role: super::materials::Role, c: [f64; 3], r: f64, az: 
     b.revolved(role, 0, c, rot_x(-FRAC_PI_2), az, frustum_profile(r, r, t));
 }
 
-/// A framed mirror of semi-axes `rx` (across) and `rz` (up) centred at height `zc`, hung on the
-/// back plane of the box; on two slim legs when it does not reach the floor.
+/// A framed mirror of semi-axes `rx` (across) and `rz` (up) centred at height `zc`, on the back
+/// plane of the box; standing, on two slim legs when it does not reach the floor (hung on a
+/// wall or from the ceiling, it has none).
 fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
     let hd = b.d / 2.0;
     let t = (0.5 * b.d).min(0.03);
@@ -71,7 +73,7 @@ fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
     let inset = (0.1 * rx).clamp(0.02, 0.05);
     let (ix, iz) = (rx - inset, rz - inset);
     disc(b, Canvas, [0.0, -hd + t, zc], ix, iz / ix, 0.003);
-    if zc - rz > 0.05 {
+    if zc - rz > 0.05 && b.mount == Mount::Stand {
         // A cheval stand: two legs from the floor to the frame's sides, splayed feet.
         for sx in [-1.0, 1.0] {
             let x = sx * 0.75 * rx;
@@ -87,10 +89,23 @@ fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
 }
 
 /// A round mirror: a circle as wide as the box (or as tall, when it is lower than wide) at the
-/// top of its box.
+/// top of its box when it stands (on legs below it), in the middle of its box when it hangs.
 pub fn round_mirror(b: &mut Builder) {
     let r = 0.5 * b.w.min(b.h);
-    elliptic_mirror(b, r, r, b.h - r);
+    match b.mount {
+        Mount::Stand => elliptic_mirror(b, r, r, b.h - r),
+        Mount::Wall | Mount::Ceiling => {
+            // hung on a leather strap from a peg: the disc at the foot of its box, the strap's
+            // two ends meeting at the top
+            let r = r.min(0.4 * b.h);
+            elliptic_mirror(b, r, r, r);
+            let (y, top) = (-b.d / 2.0 + 0.006, b.h - 0.01);
+            for sx in [-1.0, 1.0] {
+                b.rod(Upholstery, [sx * 0.6 * r, y, 1.8 * r], [0.0, y, top], 0.006);
+            }
+            b.cylinder(Metal, [0.0, -b.d / 2.0 + 0.012, top - 0.01], 0.012, 0.02);
+        }
+    }
 }
 
 /// An oval mirror filling its box's width and height (an upright ellipse).

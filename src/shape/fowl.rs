@@ -24,6 +24,7 @@ pub fn bird(b: &mut Builder) {
         animal: None,
         bird: None,
         variant: 0,
+        mount: b.mount,
     };
     draw(&mut own, row);
     fit(&mut own.parts, [w, d, b.h]);
@@ -296,6 +297,7 @@ mod tests {
                 animal: None,
                 bird: None,
                 variant: 0,
+                mount: super::super::Mount::Stand,
             };
             draw(&mut b, a);
             let (lo, hi) = bounds(&b.parts);

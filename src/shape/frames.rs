@@ -207,10 +207,14 @@ pub fn laptop(b: &mut Builder) {
     plank(b, Interior, lift(a, 0.08), lift(c, -0.06), 0.9 * b.w, 0.002);
 }
 
-/// A vase: a turned body swelling above its foot, narrowing to a neck with a flared lip.
+/// A vase: a turned body swelling above its foot, narrowing to a neck with a flared lip; one
+/// holding flowers (`Builder::goods`) is the lower part of its box, a bouquet rising from its
+/// neck above it.
 pub fn vase(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let r = hw;
+    let flowers = b.goods == Some(super::goods::Goods::Flowers);
+    let (hw, hd) = (b.w / 2.0, b.d / 2.0);
+    let h = if flowers { 0.55 * b.h } else { b.h };
+    let r = if flowers { 0.8 * hw } else { hw };
     let profile = vec![
         [0.0, 0.0],
         [0.55 * r, 0.0],
@@ -223,4 +227,7 @@ pub fn vase(b: &mut Builder) {
         [0.0, h],
     ];
     b.revolved(Body, 0, [0.0, 0.0, 0.0], IDENTITY, hd / hw, profile);
+    if flowers {
+        super::wares::bouquet(b, 0.9 * h, 0.38 * r, b.h);
+    }
 }

@@ -4,8 +4,17 @@ use super::archetypes::Builder;
 use super::materials::Role::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
 
+/// Height kept above a table's top for what it holds (books in low stacks, dishes), so the
+/// goods stay inside its box: none when it holds nothing.
+fn held_room(b: &Builder) -> f64 {
+    b.goods.map_or(0.0, |_| (0.12 * b.h).clamp(0.04, 0.1))
+}
+
+/// A table on four legs with aprons; what it holds (`Builder::goods`: "a table of new
+/// releases") lies on its top.
 pub fn table(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let room = held_room(b);
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h - room);
     let t = (0.05 * h).clamp(0.025, 0.05);
     b.cuboid(Top, [-hw, -hd, h - t], [hw, hd, h]);
     let s = (0.06 * b.w.min(b.d)).clamp(0.035, 0.08);
@@ -23,16 +32,23 @@ pub fn table(b: &mut Builder) {
         let x = sx * ix;
         b.cuboid(Frame, [x - th, -iy, h - t - a], [x + th, iy, h - t]);
     }
+    if let Some(g) = b.goods {
+        super::wares::on_top(b, g, h, 0.9 * hw, 0.85 * hd, false, room);
+    }
 }
 
 pub fn round_table(b: &mut Builder) {
-    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let room = held_room(b);
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h - room);
     let t = (0.05 * h).clamp(0.025, 0.05);
     // Round: a circle as wide as the box's shorter side (an oval is `oval_table`).
     let m = hw.min(hd);
     b.frustum(Top, [0.0, 0.0, h - t], m, m, 1.0, t);
     b.cylinder(Frame, [0.0, 0.0, 0.04], (0.12 * m).max(0.03), h - t - 0.04);
     b.frustum(Frame, [0.0, 0.0, 0.0], 0.6 * m, 0.6 * m, 0.45, 0.05);
+    if let Some(g) = b.goods {
+        super::wares::on_top(b, g, h, m, m, true, room);
+    }
 }
 
 pub fn desk(b: &mut Builder) {

@@ -25,11 +25,19 @@ pub enum Goods {
     Magazines,
     /// Fruit and vegetables: round things in the colours of produce.
     Produce,
+    /// Bunches of flowers (a vase's bouquet).
+    Flowers,
+    /// Plates standing on their rims (a kitchen dresser's rack).
+    Plates,
+    /// Rings, chains and stones on velvet pads (a jeweller's case).
+    Jewels,
+    /// Urns, busts and tablets (a museum's case).
+    Artefacts,
 }
 
 impl Goods {
     /// Every kind, in table order.
-    pub const ALL: [Goods; 12] = [
+    pub const ALL: [Goods; 16] = [
         Goods::Books,
         Goods::Loaves,
         Goods::Groceries,
@@ -42,6 +50,10 @@ impl Goods {
         Goods::Balls,
         Goods::Magazines,
         Goods::Produce,
+        Goods::Flowers,
+        Goods::Plates,
+        Goods::Jewels,
+        Goods::Artefacts,
     ];
 
     /// The table's name of the kind.
@@ -59,6 +71,10 @@ impl Goods {
             Goods::Balls => "balls",
             Goods::Magazines => "magazines",
             Goods::Produce => "produce",
+            Goods::Flowers => "flowers",
+            Goods::Plates => "plates",
+            Goods::Jewels => "jewels",
+            Goods::Artefacts => "artefacts",
         }
     }
 
@@ -84,6 +100,10 @@ impl Goods {
             Goods::Balls => BALLS,
             Goods::Magazines => MAGAZINES,
             Goods::Produce => PRODUCE,
+            Goods::Flowers => FLOWERS,
+            Goods::Plates => PLATES,
+            Goods::Jewels => JEWELS,
+            Goods::Artefacts => ARTEFACTS,
         }
     }
 
@@ -91,13 +111,14 @@ impl Goods {
     fn specials(self) -> usize {
         match self {
             Goods::Loaves | Goods::Medicine | Goods::Bottles => 2,
-            Goods::Boxes | Goods::Balls => 1,
+            Goods::Jewels => 3,
+            Goods::Boxes | Goods::Balls | Goods::Flowers | Goods::Plates | Goods::Artefacts => 1,
             _ => 0,
         }
     }
 
     /// A product colour's variant for a draw `r` in [0, 1).
-    fn accent(self, r: f64) -> u32 {
+    pub(super) fn accent(self, r: f64) -> u32 {
         let (s, n) = (self.specials(), self.palette().len());
         (s + ((r * (n - s) as f64) as usize).min(n - s - 1)) as u32
     }
@@ -222,6 +243,45 @@ const PRODUCE: &[Rgb] = &[
     [0.80, 0.62, 0.40],
 ];
 
+/// A stem's green, then blooms.
+const FLOWERS: &[Rgb] = &[
+    [0.22, 0.45, 0.18],
+    [0.90, 0.15, 0.20],
+    [0.98, 0.85, 0.20],
+    [0.95, 0.55, 0.70],
+    [0.98, 0.97, 0.95],
+    [0.55, 0.30, 0.75],
+    [0.98, 0.50, 0.10],
+];
+/// A well's white glaze, then rims: blue-and-white, cream, green, a painted red.
+const PLATES: &[Rgb] = &[
+    [0.96, 0.96, 0.94],
+    [0.20, 0.35, 0.70],
+    [0.92, 0.88, 0.76],
+    [0.45, 0.62, 0.50],
+    [0.75, 0.25, 0.20],
+    [0.85, 0.85, 0.88],
+];
+/// A pad's dark velvet, gold, silver, then stones.
+const JEWELS: &[Rgb] = &[
+    [0.10, 0.08, 0.14],
+    [0.85, 0.68, 0.25],
+    [0.82, 0.83, 0.86],
+    [0.75, 0.05, 0.15],
+    [0.10, 0.35, 0.85],
+    [0.10, 0.65, 0.35],
+    [0.95, 0.95, 0.98],
+];
+/// A plinth's marble, then terracotta, bronze, old stone, gilt and glazed blue.
+const ARTEFACTS: &[Rgb] = &[
+    [0.90, 0.89, 0.86],
+    [0.72, 0.40, 0.24],
+    [0.45, 0.32, 0.16],
+    [0.62, 0.60, 0.55],
+    [0.80, 0.64, 0.30],
+    [0.25, 0.40, 0.60],
+];
+
 /// Glossy covers and their pictures.
 const MAGAZINES: &[Rgb] = &[
     [0.85, 0.12, 0.15],
@@ -339,13 +399,13 @@ pub struct Bay {
 /// What one item of a row may use: from `x` to the bay's end `x1`, between the bay's back `y0` and
 /// its front `y1`, standing on `z` with `room` of height above it.
 #[derive(Clone, Copy)]
-struct Slot {
-    x: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    z: f64,
-    room: f64,
+pub(super) struct Slot {
+    pub x: f64,
+    pub x1: f64,
+    pub y0: f64,
+    pub y1: f64,
+    pub z: f64,
+    pub room: f64,
 }
 
 /// Lays a row of `goods` along `bay`, each item's width drawn from `r`; products of one kind
@@ -394,6 +454,10 @@ pub fn fill(b: &mut Builder, goods: Goods, bay: Bay, r: &mut Draws) {
             Goods::Boxes => carton(b, r, slot),
             Goods::Bottles => bottles(b, r, slot),
             Goods::Clothes => folded(b, r, slot),
+            Goods::Flowers => super::wares::flowers(b, r, slot),
+            Goods::Plates => super::wares::plate(b, r, slot),
+            Goods::Jewels => super::wares::jewels(b, r, slot),
+            Goods::Artefacts => super::wares::artefact(b, r, slot),
             Goods::Baskets => basket(
                 b,
                 goods.accent(r.next()),

@@ -38,6 +38,7 @@ mod clearglass;
 mod clocks;
 mod coast;
 mod coats;
+mod contents;
 mod contraptions;
 mod counters;
 mod crafts;
@@ -85,6 +86,7 @@ mod market;
 pub mod materials;
 mod mirrors;
 mod more;
+mod mount;
 mod named;
 mod nursery;
 mod officefit;
@@ -140,6 +142,7 @@ mod vehicles;
 mod vendors;
 mod vitrines;
 mod wards;
+mod wares;
 mod washroom;
 mod workshop;
 mod worktops;
@@ -147,6 +150,7 @@ mod yard;
 
 pub use goods::Goods;
 pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
+pub use mount::Mount;
 pub use parts::{Part, Primitive};
 
 use crate::plan::kb::KnowledgeBase;
@@ -184,6 +188,9 @@ pub struct ShapeOptions {
     /// Which variant of its archetype to draw (`kb/variants.txt`: a poster's print, a statue's
     /// pose), taken modulo the archetype's count; 0 is its usual drawing.
     pub variant: u32,
+    /// How it is held up (on a wall, from the ceiling, standing); `None` takes its category's
+    /// placement class (`kb/placement.txt`), as [`Mount::of_category`].
+    pub mount: Option<Mount>,
 }
 
 /// Errors of [`build`].
@@ -306,14 +313,25 @@ pub fn parts_described(
     size: [f64; 3],
     description: &str,
 ) -> Result<Vec<Part>, ShapeError> {
+    parts_mounted(category, size, description, Mount::of_category(category))
+}
+
+/// [`parts_described`] hung or stood as `mount` says (a mirror on a wall has no legs).
+pub fn parts_mounted(
+    category: &str,
+    size: [f64; 3],
+    description: &str,
+    mount: Mount,
+) -> Result<Vec<Part>, ShapeError> {
     check_size(size)?;
     let arch = archetypes::get(archetype_described(category, description));
     Ok(arch.parts_holding(
         size,
-        goods::goods_of(category, arch.name),
+        goods_described(category, arch.name, description),
         animal_for(category, arch.name),
         bird_for(category, arch.name),
         0,
+        mount,
     ))
 }
 
@@ -332,7 +350,31 @@ pub fn parts_variant(
         animal_for(category, arch.name),
         bird_for(category, arch.name),
         variant,
+        Mount::of_category(category),
     ))
+}
+
+/// What a category drawn as `archetype` holds as `description` says it ("a vase with
+/// flowers", "a table full of new releases"; `kb/contents.txt`), else its own goods
+/// (`kb/shelf_goods.txt`); nothing for one said to be empty.
+fn goods_described(category: &str, archetype: &str, description: &str) -> Option<Goods> {
+    if description
+        .split(|c: char| !c.is_alphanumeric())
+        .any(|w| w.eq_ignore_ascii_case("empty"))
+    {
+        return None;
+    }
+    contents::said(description).or_else(|| goods::goods_of(category, archetype))
+}
+
+/// The goods a description says its thing holds (`kb/contents.txt`), if any.
+pub fn said_goods(description: &str) -> Option<Goods> {
+    contents::said(description)
+}
+
+/// The lines of the contents table that do not parse.
+pub fn contents_bad_lines() -> Vec<&'static str> {
+    contents::bad_lines()
 }
 
 /// The animal row a category is drawn as: its own, or the table's `default` for a quadruped
@@ -398,10 +440,11 @@ pub fn build(
         return Err(ShapeError::BadCount(n));
     }
     let arch = archetypes::get(archetype_described(category, description));
-    let goods = goods::goods_of(category, arch.name);
+    let goods = goods_described(category, arch.name, description);
     let animal = animal_for(category, arch.name);
     let bird = bird_for(category, arch.name);
-    let parts = arch.parts_holding(size, goods, animal, bird, opts.variant);
+    let mount = opts.mount.unwrap_or_else(|| Mount::of_category(category));
+    let parts = arch.parts_holding(size, goods, animal, bird, opts.variant, mount);
     let palette = match (animal, bird) {
         (Some(a), _) => animal_palette(description, arch.main, arch.defaults, a),
         (None, Some(f)) => {
@@ -618,6 +661,7 @@ mod kb_tests {
                 animal_for(&o.category, arch.name),
                 bird_for(&o.category, arch.name),
                 0,
+                Mount::of_category(&o.category),
             ) {
                 let mut raw = vec![];
                 part.prim.sample(

@@ -3,6 +3,7 @@
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::{self, *};
 use super::parts::{rot_z, IDENTITY};
+use super::Mount;
 use std::f64::consts::{PI, TAU};
 
 pub fn solid_box(b: &mut Builder) {
@@ -123,17 +124,24 @@ pub fn conifer(b: &mut Builder) {
     b.ellipsoid(Light, [0.0, 0.0, h - 0.05 * h], [0.05, 0.05, 0.05 * h]);
 }
 
+/// A flat screen: standing, on a foot and a neck; hung on a wall, the panel alone over its
+/// whole box, its back to the wall.
 pub fn screen(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let zp = if h / b.w > 0.7 { 0.3 * h } else { 0.1 * h };
     let pd = (0.5 * b.d).min(0.06);
-    let y0 = -0.5 * pd;
-    b.cuboid(Metal, [-0.22 * b.w, -hd, 0.0], [0.22 * b.w, hd, 0.015]);
-    b.cuboid(
-        Metal,
-        [-0.04 * b.w, y0 - 0.015, 0.015],
-        [0.04 * b.w, y0, zp + 0.1 * h],
-    );
+    let (zp, y0) = if b.mount == Mount::Stand {
+        let zp = if h / b.w > 0.7 { 0.3 * h } else { 0.1 * h };
+        let y0 = -0.5 * pd;
+        b.cuboid(Metal, [-0.22 * b.w, -hd, 0.0], [0.22 * b.w, hd, 0.015]);
+        b.cuboid(
+            Metal,
+            [-0.04 * b.w, y0 - 0.015, 0.015],
+            [0.04 * b.w, y0, zp + 0.1 * h],
+        );
+        (zp, y0)
+    } else {
+        (0.0, -0.5 * pd)
+    };
     b.cuboid(Body, [-hw, y0, zp], [hw, y0 + pd, h]);
     let bezel = (0.015 * b.w).max(0.01);
     b.cuboid(
@@ -167,9 +175,31 @@ fn panel(b: &mut Builder, role: Role, z0: f64) {
     b.cuboid(role, [x0, t / 2.0, z0 + fw], [x1, t / 2.0 + 0.003, z1]);
 }
 
+/// A board: standing, a panel on two posts with feet; hung on a wall, the framed panel alone
+/// over its whole box with a ledge (a pen or chalk tray) along its foot, nothing below it.
 pub fn board(b: &mut Builder) {
+    if b.mount != Mount::Stand {
+        return wall_panel(b, Canvas);
+    }
     let z0 = if b.h > 1.5 { 0.35 * b.h } else { 0.1 * b.h };
     panel(b, Canvas, z0);
+}
+
+/// A panel hung flat on a wall (its back at −y): a frame over the whole box, the surface
+/// (`role`) inside it, and a ledge along its foot standing out from the face.
+fn wall_panel(b: &mut Builder, role: Role) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let t = (0.4 * b.d).clamp(0.005, 0.025);
+    let fw = (0.03 * b.w.min(h)).clamp(0.015, 0.035);
+    let ledge = (0.04 * h).clamp(0.02, 0.05);
+    b.cuboid(Frame, [-hw, -hd, ledge], [hw, -hd + t, h]);
+    b.cuboid(
+        role,
+        [-hw + fw, -hd + t, ledge + fw],
+        [hw - fw, -hd + t + 0.003, h - fw],
+    );
+    // The ledge: a shelf as deep as the box, running most of the panel's width.
+    b.cuboid(Metal, [-0.9 * hw, -hd, 0.0], [0.9 * hw, hd, ledge]);
 }
 
 pub fn chalkboard(b: &mut Builder) {
@@ -236,7 +266,10 @@ pub fn mirror(b: &mut Builder) {
         [-hw + 0.04, -hd + t, 0.04],
         [hw - 0.04, -hd + t + 0.003, h - 0.04],
     );
-    b.cuboid(Frame, [-0.1 * b.w, -hd, 0.0], [0.1 * b.w, hd, 0.02]);
+    if b.mount == Mount::Stand {
+        // the foot it stands on (hung on a wall, it needs none)
+        b.cuboid(Frame, [-0.1 * b.w, -hd, 0.0], [0.1 * b.w, hd, 0.02]);
+    }
 }
 
 pub fn cone(b: &mut Builder) {

@@ -5,6 +5,7 @@
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::{self, *};
 use super::parts::{frustum_profile, mat_mul, rot_z, IDENTITY, V3};
+use super::Mount;
 
 /// A closed body of revolution along `dir` from `base` (a bottle, a blade): the profile's
 /// second coordinate runs along `dir`, its first is the radius; `ay` flattens the section and
@@ -156,10 +157,12 @@ pub fn pantry_rack(b: &mut Builder) {
         }
     }
     let boards = ((h / 0.38).round() as usize).clamp(3, 7);
-    let pitch = (h - 0.1) / (boards - 1) as f64;
+    // standing, its lowest board is off the floor on the posts; hung on a wall, at its foot
+    let z0 = if b.mount == Mount::Stand { 0.08 } else { 0.02 };
+    let pitch = (h - z0 - 0.02) / (boards - 1) as f64;
     let mut n = 0u32;
     for k in 0..boards {
-        let z = 0.08 + k as f64 * pitch;
+        let z = z0 + k as f64 * pitch;
         b.cuboid(Top, [-hw, -hd, z - 0.02], [hw, hd, z]);
         if k + 1 == boards {
             break;

@@ -57,6 +57,7 @@ pub fn forge(b: &mut Builder) {
         animal: None,
         bird: None,
         variant: 0,
+        mount: b.mount,
     };
     super::workshop::anvil(&mut anvil);
     b.parts.extend(anvil.parts);

@@ -4,6 +4,7 @@
 //! ribbed paper globe on a small foot). Each lies or stands inside its size box, front +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
+use super::Mount;
 
 /// A beach towel: stripes across its length in turn of its main colour, white and an accent,
 /// the white ones narrower.
@@ -65,13 +66,23 @@ pub fn tiled_mat(b: &mut Builder) {
 }
 
 /// A paper lantern: a round paper globe as wide as the box, lit from within, ringed by thin
-/// ribs, on a short stem over a small dark foot.
+/// ribs; standing, on a short stem over a small dark foot; hung from the ceiling, at the foot
+/// of its box on a cord from a small canopy at its top.
 pub fn paper_lantern(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let r = (0.98 * hw.min(hd)).min(0.45 * h);
-    let zc = h - r;
-    b.frustum(Frame, [0.0, 0.0, 0.0], 0.45 * r, 0.45 * r, 0.8, 0.03);
-    b.cylinder(Frame, [0.0, 0.0, 0.0], 0.04 * r, zc - 0.9 * r);
+    let zc = if b.mount == Mount::Ceiling {
+        let zc = 0.95 * r;
+        let cord = (0.03 * r).max(0.004);
+        b.cylinder(Frame, [0.0, 0.0, zc + 0.85 * r], cord, h - zc - 0.85 * r);
+        b.frustum(Frame, [0.0, 0.0, h - 0.025], 0.25 * r, 0.25 * r, 1.0, 0.025);
+        zc
+    } else {
+        let zc = h - r;
+        b.frustum(Frame, [0.0, 0.0, 0.0], 0.45 * r, 0.45 * r, 0.8, 0.03);
+        b.cylinder(Frame, [0.0, 0.0, 0.0], 0.04 * r, zc - 0.9 * r);
+        zc
+    };
     b.ellipsoid(Shade, [0.0, 0.0, zc], [r, r, 0.95 * r]);
     for k in 1..8 {
         let z = -0.95 * r + k as f64 * 1.9 * r / 8.0;

@@ -82,6 +82,7 @@ pub fn display_case(b: &mut Builder) {
     let levels = (((h - zb) / (3.0 * s)).floor() as usize).clamp(1, 4);
     let pitch = (h - zb - f) / levels as f64;
     let mut v = 0;
+    let mut draws = super::goods::Draws::new(levels as u64 * 7919 + (b.w * 1000.0) as u64);
     for k in 0..levels {
         let z = zb + k as f64 * pitch;
         let yf = front(z + pitch) - 0.02;
@@ -92,7 +93,21 @@ pub fn display_case(b: &mut Builder) {
         let rows = if depth > 0.45 { 2 } else { 1 };
         for r in 0..rows {
             let y = -hd + 0.01 + (r as f64 + 0.5) * depth / rows as f64;
-            goods(b, [-hw + f + 0.02, hw - f - 0.02], y, z, s, &mut v);
+            match b.goods {
+                // what the case shows (a bookshop's books, a museum's artefacts)
+                Some(g) => {
+                    let bay = super::goods::Bay {
+                        x0: -hw + f + 0.02,
+                        x1: hw - f - 0.02,
+                        y0: y - 0.45 * depth / rows as f64,
+                        depth: 0.9 * depth / rows as f64,
+                        z,
+                        room: (pitch - 0.03).min(3.0 * s),
+                    };
+                    super::goods::fill(b, g, bay, &mut draws);
+                }
+                None => goods(b, [-hw + f + 0.02, hw - f - 0.02], y, z, s, &mut v),
+            }
         }
     }
     // The panes: a sloping front, a top, and sides stepping back with the front.

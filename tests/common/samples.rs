@@ -1,6 +1,6 @@
 //! Surface samples of a drawn object, by role: the helpers the shape tests share.
 use dreamscene::plan::kb::KnowledgeBase;
-use dreamscene::shape::{parts, Role};
+use dreamscene::shape::{parts, parts_mounted, Mount, Part, Role};
 use rand::SeedableRng;
 
 /// Surface samples with the role of the part each lies on.
@@ -20,10 +20,29 @@ pub fn sizes(category: &str, k: [f64; 3]) -> [[f64; 3]; 3] {
 /// Surface samples of `category` drawn at `size` (sampling seed `seed`), those outside the size
 /// box dropped as the shape prior drops them.
 pub fn drawn(category: &str, size: [f64; 3], seed: u64) -> Samples {
+    sampled(&parts(category, size).unwrap(), size, seed)
+}
+
+/// [`drawn`] as `description` shapes it and hung or stood as `mount` says.
+pub fn drawn_mounted(
+    category: &str,
+    description: &str,
+    size: [f64; 3],
+    mount: Mount,
+    seed: u64,
+) -> Samples {
+    sampled(
+        &parts_mounted(category, size, description, mount).unwrap(),
+        size,
+        seed,
+    )
+}
+
+fn sampled(parts: &[Part], size: [f64; 3], seed: u64) -> Samples {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let spacing = 0.004 * size.iter().cloned().fold(0.0, f64::max);
     let mut out = vec![];
-    for p in parts(category, size).unwrap() {
+    for p in parts {
         let mut s = vec![];
         p.prim.sample(spacing, &mut rng, &mut s);
         out.extend(s.iter().map(|s| (s.pos, p.role)));

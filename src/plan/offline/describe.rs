@@ -129,8 +129,28 @@ fn with_contents(d: &Draft, category: &str, description: String) -> String {
                 None => format!("{body} {what}"),
             }
         }
-        _ => description,
+        Some(_) => description,
+        // what the place shows in it (a bookshop's display case is full of books)
+        None => match place_holds(d.scene.map(|s| s.name.as_str()), category) {
+            Some(x) if !description.contains(x) => format!("{description} full of {x}"),
+            _ => description,
+        },
     }
+}
+
+/// What `category` holds in the place `scene` when the text says nothing of it
+/// (`kb/holds.txt`: a bookshop's display case, books; a museum's, artefacts).
+fn place_holds(scene: Option<&str>, category: &str) -> Option<&'static str> {
+    let scene = scene?;
+    include_str!("../kb/holds.txt")
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .find_map(|l| {
+            let f: Vec<&str> = l.split('|').map(str::trim).collect();
+            (f.len() == 3 && f[0] == scene && f[1].split(',').any(|c| c.trim() == category))
+                .then_some(f[2])
+        })
 }
 
 /// Style words describe the whole scene unless they are one object's adjectives or part of an
