@@ -76,6 +76,7 @@ mod instruments;
 mod jobtables;
 mod kiosks;
 mod kitchenyard;
+mod lair;
 mod laundry;
 mod lockers;
 mod lounge;
