@@ -270,7 +270,7 @@ pub fn periscope(b: &mut Builder) {
     );
     b.cuboid(
         Body,
-        [-1.0 * r, 1.6 * r, ze - 0.08],
+        [-r, 1.6 * r, ze - 0.08],
         [1.0 * r, (2.6 * r).min(hd - 0.003), ze + 0.08],
     );
     b.cuboid(
