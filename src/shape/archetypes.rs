@@ -57,6 +57,7 @@ use super::instruments as ins;
 use super::jobtables as jt;
 use super::kiosks as ks;
 use super::kitchenyard as ky;
+use super::lair as lr;
 use super::laundry as la;
 use super::lockers as lk;
 use super::lounge as lo;
@@ -624,6 +625,18 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("clothesline", ev::clothesline, [Frame], [Frame => [0.62, 0.64, 0.66], Metal => [0.85, 0.85, 0.85], Handle => [0.55, 0.40, 0.24]]),
     arch!("hose_reel", ev::hose_reel, [Pot], [Pot => [0.20, 0.55, 0.25], Frame => [0.22, 0.22, 0.24], Body => [0.22, 0.22, 0.24], Metal => STEEL, Handle => [0.95, 0.65, 0.10]]),
     arch!("surgical_light", sg::surgical_light, [Shade], [Shade => [0.92, 0.93, 0.94], Metal => [0.82, 0.83, 0.85], Frame => [0.85, 0.86, 0.87], Light => [1.0, 0.98, 0.92], Handle => [0.35, 0.55, 0.75]]),
+    arch!("sectional", lo::sectional, [Upholstery, Cushion], [Frame => DARK_WOOD]),
+    arch!("pulpit", pd::pulpit, [Body, Top, Door], [Body => [0.42, 0.27, 0.15], Top => [0.34, 0.21, 0.11], Door => [0.48, 0.31, 0.18], Frame => [0.34, 0.21, 0.11], Canvas => [0.42, 0.12, 0.40], Handle => BRASS]),
+    arch!("hanging_scroll", hg::hanging_scroll, [Body], [Body => [0.56, 0.62, 0.50], Canvas => [0.94, 0.91, 0.82], Frame => [0.30, 0.20, 0.12], Handle => [0.20, 0.14, 0.09], Interior => [0.20, 0.20, 0.22], BlackKeys => [0.25, 0.22, 0.18], Cushion => [0.78, 0.14, 0.10]]),
+    arch!("string_lights", hg::string_lights, [Light], [Light => [1.0, 0.86, 0.52], BlackKeys => [0.10, 0.10, 0.10], Metal => STEEL]),
+    arch!("squat_rack", tr::squat_rack, [Frame], [Frame => [0.14, 0.14, 0.15], Metal => [0.12, 0.12, 0.13], Handle => STEEL, Interior => BLACK]),
+    arch!("play_kitchen", pl::play_kitchen, [Body, Door], [Body => [0.96, 0.95, 0.92], Door => [0.98, 0.55, 0.62], Canvas => [0.50, 0.80, 0.86], Top => [0.86, 0.72, 0.52], Frame => [0.98, 0.55, 0.62], Handle => [0.98, 0.80, 0.18], BlackKeys => BLACK, Metal => STEEL, Screen => [0.10, 0.12, 0.14]]),
+    arch!("dragon", lr::dragon, [Body], [Body => [0.50, 0.10, 0.08], Upholstery => [0.85, 0.62, 0.30], Canvas => [0.38, 0.07, 0.07], Frame => [0.32, 0.06, 0.05], Keys => [0.92, 0.88, 0.76], Light => [1.0, 0.85, 0.20], Top => [0.25, 0.05, 0.04]]),
+    arch!("treasure_hoard", lr::treasure_hoard, [Metal], [Metal => [0.78, 0.56, 0.12], Handle => [1.0, 0.86, 0.36], Body => [0.92, 0.74, 0.28], Interior => [0.25, 0.16, 0.05], Cushion => [0.80, 0.06, 0.12], Glass => [0.12, 0.30, 0.85]]),
+    arch!("bowl", bw::bowl, [Body], [Body => WHITE, Top => [0.35, 0.50, 0.70]]),
+    arch!("toys", pl::toys, [Body], [Body => [0.86, 0.20, 0.14], Top => [0.95, 0.80, 0.20], Cushion => [0.20, 0.45, 0.85], Tyre => BLACK]),
+    arch!("sack_of_presents", pk::sack_of_presents, [Canvas], [Canvas => [0.62, 0.48, 0.30], Frame => [0.80, 0.10, 0.10], Handle => [0.95, 0.80, 0.30], Cushion => [0.85, 0.12, 0.12], Top => [0.15, 0.55, 0.25], Pillow => [0.90, 0.90, 0.94], Shade => [0.20, 0.40, 0.85]]),
+    arch!("periscope", sco::periscope, [Metal], [Metal => [0.55, 0.58, 0.55], Frame => [0.30, 0.32, 0.30], Body => [0.40, 0.43, 0.40], Screen => [0.05, 0.06, 0.08], Handle => [0.12, 0.12, 0.13]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

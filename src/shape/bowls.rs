@@ -1,7 +1,8 @@
 //! Open vessels drawn with what is in them: a fruit bowl (apples, an orange, a bunch of bananas
 //! and grapes heaped over its rim), a pet bowl (a flared steel bowl on a rubber ring, kibble in
 //! it), a laundry basket (a woven tub with hand holes, clothes heaped in it) and a water jug (a
-//! big ribbed bottle with a neck, a cap and a grip). The front faces +y.
+//! big ribbed bottle with a neck, a cap and a grip), and a plain bowl (empty, wide and deep on
+//! a foot ring, glazed inside in another colour). The front faces +y.
 use super::archetypes::{frame_along, Builder};
 use super::fittings::{band, disc};
 use super::materials::Role::{self, *};
@@ -300,5 +301,26 @@ pub fn pail(b: &mut Builder) {
         [-0.25 * r, 0.0, h - 0.03 * h],
         [0.25 * r, 0.0, h - 0.03 * h],
         0.04 * r,
+    );
+}
+
+/// A plain bowl: a deep round ceramic bowl on a low foot ring, its inside glazed in a second
+/// colour, a thin band of that colour round the outside under the rim. Empty.
+pub fn bowl(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = hw.min(hd);
+    let foot = 0.1 * h;
+    b.frustum(Body, [0.0, 0.0, 0.0], 0.42 * r, 0.42 * r, 1.05, foot);
+    let first = b.parts.len();
+    open_bowl(b, Body, Top, [0.45 * r, r, h - foot, 0.05 * r], 1.0);
+    b.translate_from(first, [0.0, 0.0, foot]);
+    band(
+        b,
+        Top,
+        [0.0, 0.0, h - 0.12 * h],
+        Z,
+        0.97 * r,
+        0.01 * r,
+        0.05 * h,
     );
 }

@@ -1,6 +1,6 @@
 //! Layouts of things that hang: from the ceiling (a chandelier, a pendant light, a flush
-//! ceiling light, a ceiling fan), their top face against the ceiling, and a cloth banner on a
-//! wall rod. The front faces +y, z up, the bottom face's centre at the origin.
+//! ceiling light, a ceiling fan), their top face against the ceiling, and on a wall: a cloth
+//! banner on a rod, a hanging scroll between two rollers and a string of lights in swags. The front faces +y, z up, the bottom face's centre at the origin.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::{mat_mul, rot_x, rot_y, rot_z, IDENTITY};
@@ -266,4 +266,123 @@ pub fn poster(b: &mut Builder) {
     for x in [x0 + 0.02, x1 - 0.02] {
         b.ellipsoid(Metal, [x, y + 0.004, z1 - 0.01], [0.008, 0.004, 0.008]);
     }
+}
+
+/// A hanging scroll (kakejiku): a tall strip of silk mounting hung by a cord from a thin top
+/// rod, a paper panel in it with an ink picture (misty peaks, a column of brush strokes and a
+/// red seal), and a heavier wooden roller across the foot with knobs standing out past the
+/// silk. No frame.
+pub fn hanging_scroll(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let y = -hd + 0.025;
+    let t = 0.003;
+    let rr = (0.03 * b.w).clamp(0.012, 0.02);
+    // The foot roller's knobs (1.3 times its radius) rest on the box's floor.
+    let zb = 1.3 * rr;
+    let zt = h - 0.1 * h.min(1.0);
+    // The cord in a triangle from the rod's ends to a hook at the top.
+    for sx in [-1.0, 1.0] {
+        b.rod(
+            BlackKeys,
+            [sx * 0.6 * hw, y, zt],
+            [0.0, y, h - 0.005],
+            0.003,
+        );
+    }
+    let sw = 0.8 * hw;
+    b.rod(Frame, [-sw, y, zt], [sw, y, zt], 0.6 * rr);
+    b.rod(Frame, [-hw + 0.02, y, zb], [hw - 0.02, y, zb], rr);
+    for sx in [-1.0, 1.0] {
+        b.rod(
+            Handle,
+            [sx * (hw - 0.02), y, zb],
+            [sx * hw, y, zb],
+            1.3 * rr,
+        );
+    }
+    // The silk mounting, the paper panel on it with a wider band of silk above than below.
+    b.cuboid(Body, [-sw, y - t, zb], [sw, y + t, zt]);
+    let (px, pz0, pz1) = (0.8 * sw, zb + 0.13 * (zt - zb), zt - 0.2 * (zt - zb));
+    let yp = y + t + 0.002;
+    b.cuboid(Canvas, [-px, y + t, pz0], [px, yp, pz1]);
+    // Peaks: ink triangles laid as narrowing strips, the nearer ones darker and lower.
+    let ph = pz1 - pz0;
+    for (x, z, s, v) in [
+        (-0.3, 0.28, 0.55, 0u32),
+        (0.3, 0.3, 0.4, 1),
+        (0.0, 0.12, 0.35, 0),
+    ] {
+        let (half, top) = (s * px, s * 0.55 * ph);
+        let z0 = pz0 + z * ph;
+        let n = 8;
+        for j in 0..n {
+            let f = j as f64 / n as f64;
+            let hwj = half * (1.0 - f);
+            b.cuboid_v(
+                Interior,
+                v,
+                [x * px - hwj, yp, z0 + f * top],
+                [x * px + hwj, yp + 0.001, z0 + (f + 1.0 / n as f64) * top],
+            );
+        }
+    }
+    // Brush strokes in a column down the right, a red seal under them.
+    for k in 0..5 {
+        let z = pz1 - 0.06 * ph - k as f64 * 0.07 * ph;
+        let wv = if k % 2 == 0 { 0.06 } else { 0.035 };
+        b.cuboid(
+            Interior,
+            [0.62 * px - wv * px, yp, z - 0.035 * ph],
+            [0.62 * px + wv * px, yp + 0.002, z],
+        );
+    }
+    let sz = 0.05 * px.min(ph);
+    let zs = pz1 - 0.45 * ph;
+    b.cuboid(
+        Cushion,
+        [0.62 * px - sz, yp, zs - 2.0 * sz],
+        [0.62 * px + sz, yp + 0.003, zs],
+    );
+}
+
+/// String lights hung on a wall: a wire in swags between hooks along the top of the box, small
+/// round bulbs in dark sockets hanging from it every few hand widths.
+pub fn string_lights(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let y = -hd + 0.5 * b.d.min(0.1);
+    let br = (0.12 * h).clamp(0.02, 0.035);
+    let ztop = h - 0.02;
+    let sag = (h - 0.02 - 4.0 * br).max(0.05);
+    let swags = ((b.w / 1.5).round() as usize).max(1);
+    let sw = b.w / swags as f64;
+    let wire = |x: f64| {
+        let u = ((x + hw) / sw).fract() * 2.0 - 1.0;
+        ztop - sag * (1.0 - u * u)
+    };
+    for k in 0..=swags {
+        let x = (-hw + k as f64 * sw).clamp(-hw + 0.015, hw - 0.015);
+        b.ellipsoid(Metal, [x, y, ztop], [0.012, 0.012, 0.015]);
+    }
+    for k in 0..swags {
+        let x0 = -hw + k as f64 * sw;
+        let pts: Vec<[f64; 3]> = (0..=12)
+            .map(|i| {
+                let x = x0 + sw * i as f64 / 12.0;
+                let u = 2.0 * i as f64 / 12.0 - 1.0;
+                [x, y, ztop - sag * (1.0 - u * u)]
+            })
+            .collect();
+        b.polyline(BlackKeys, &pts, 0.005);
+    }
+    let n = ((b.w / 0.18).round() as usize).max(3);
+    let mut low = f64::INFINITY;
+    for i in 0..n {
+        let x = -hw + (i as f64 + 0.5) * b.w / n as f64;
+        let z = wire(x);
+        b.cylinder(BlackKeys, [x, y, z - 0.025], 0.008, 0.025);
+        b.ellipsoid(Light, [x, y, z - 0.025 - br], [br, br, 1.1 * br]);
+        low = low.min(z - 0.025 - 2.1 * br);
+    }
+    // The lowest bulb rests on the box's floor (the prior stands every drawing on it).
+    b.translate_from(0, [0.0, 0.0, -low]);
 }

@@ -249,3 +249,66 @@ pub fn recliner(b: &mut Builder) {
         );
     }
 }
+
+/// A sectional (corner) sofa: a long seat along the back with an arm at its left end, and a
+/// chaise running forward from its right end to the front of the footprint, its outer arm low
+/// along the chaise's side; seat cushions along the back, one long cushion on the chaise, back
+/// cushions against the back rest. Seen from above, an L.
+pub fn sectional(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let lh = (0.1 * h).min(0.1);
+    let base_top = 0.42 * h;
+    let back = (0.14 * b.d).min(0.22);
+    let arm = (0.06 * b.w).clamp(0.12, 0.2);
+    // The seat along the back is a sofa's depth; the chaise a seat's width.
+    let sd = (0.55 * b.d).clamp(0.8, 1.0).min(b.d - 0.3);
+    let cw = (0.3 * b.w).clamp(0.7, 0.95);
+    let (xc, yf) = (hw - arm - cw, -hd + sd);
+    // Legs under the L's corners (none under the open front corner).
+    for (x, y) in [
+        (-hw + 0.03, -hd + 0.03),
+        (hw - 0.08, -hd + 0.03),
+        (hw - 0.08, hd - 0.08),
+        (-hw + 0.03, yf - 0.08),
+        (xc, hd - 0.08),
+        (xc, yf - 0.08),
+    ] {
+        b.cuboid(Frame, [x, y, 0.0], [x + 0.05, y + 0.05, lh]);
+    }
+    b.cuboid(Upholstery, [-hw + arm, -hd, lh], [hw - arm, yf, base_top]);
+    b.cuboid(Upholstery, [xc, yf, lh], [hw - arm, hd - 0.01, base_top]);
+    b.cuboid(Upholstery, [-hw, -hd, lh], [hw, -hd + back, h]);
+    let arm_top = 0.66 * h;
+    b.cuboid(Upholstery, [-hw, -hd + back, lh], [-hw + arm, yf, arm_top]);
+    b.cuboid(Upholstery, [hw - arm, -hd + back, lh], [hw, hd, arm_top]);
+    let zc = base_top + 0.12 * h;
+    let gap = 0.008;
+    // Seat cushions along the back, as many as the straight run holds.
+    let run = xc - (-hw + arm);
+    let seats = ((run / 0.65).round() as usize).max(1);
+    let sw = run / seats as f64;
+    for i in 0..seats {
+        let x0 = -hw + arm + i as f64 * sw;
+        b.cuboid(
+            Cushion,
+            [x0 + gap, -hd + back, base_top],
+            [x0 + sw - gap, yf - 0.01, zc],
+        );
+    }
+    b.cuboid(
+        Cushion,
+        [xc + gap, -hd + back, base_top],
+        [hw - arm - gap, hd - 0.02, zc],
+    );
+    // Back cushions along the whole back, the chaise's included.
+    let n = seats + 1;
+    let bw = (hw - arm - (-hw + arm)) / n as f64;
+    for i in 0..n {
+        let x0 = -hw + arm + i as f64 * bw;
+        b.cuboid(
+            Cushion,
+            [x0 + gap, -hd + back, zc],
+            [x0 + bw - gap, -hd + back + 0.18, 0.93 * h],
+        );
+    }
+}

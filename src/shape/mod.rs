@@ -77,6 +77,7 @@ mod instruments;
 mod jobtables;
 mod kiosks;
 mod kitchenyard;
+mod lair;
 mod laundry;
 mod lockers;
 mod lounge;

@@ -2,10 +2,12 @@
 //! with a flap, shoulder straps and a front pocket), a bathroom scale (a flat slab with a dial),
 //! a bread bin (a roll top over a base), a covered litter box (a tray under a rounded hood with
 //! a door), a stack of magazines (thin covers fanned a little) and a shopping basket (a wire
-//! body under two raised handles). The front faces +y.
+//! body under two raised handles), and a sack of presents (a tied burlap sack with wrapped boxes
+//! heaped out of its mouth). The front faces +y.
 use super::archetypes::{frame_along, Builder};
 use super::materials::Role::*;
-use super::parts::{frustum_profile, rot_z};
+use super::parts::{frustum_profile, mat_mul, rot_x, rot_z, IDENTITY};
+use std::f64::consts::FRAC_PI_2;
 
 /// A roll top: an elliptic half-cylinder along x over `[-hw, hw]`, its axis at height `z`,
 /// `ry` deep each way and rising `rz` above the axis (the part below lies inside what it sits
@@ -237,5 +239,69 @@ pub fn shopping_basket(b: &mut Builder) {
             ],
             0.011,
         );
+    }
+}
+
+/// A sack of presents: a bulging burlap sack standing open, a cord tied round it under a mouth
+/// of loose folds, wrapped boxes in bright papers with ribbons heaped out of the top.
+pub fn sack_of_presents(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let ay = hd / hw;
+    let zb = 0.68 * h;
+    b.revolved(
+        Canvas,
+        0,
+        [0.0, 0.0, 0.0],
+        IDENTITY,
+        ay,
+        vec![
+            [0.0, 0.0],
+            [0.8 * hw, 0.0],
+            [0.98 * hw, 0.25 * zb],
+            [0.97 * hw, 0.6 * zb],
+            [0.82 * hw, 0.9 * zb],
+            [0.74 * hw, zb],
+            [0.0, zb - 0.02],
+        ],
+    );
+    // The cord tied round under the mouth; loose folds of cloth round the rim.
+    b.revolved(
+        Frame,
+        0,
+        [0.0, 0.0, 0.9 * zb],
+        IDENTITY,
+        ay,
+        vec![
+            [0.8 * hw, 0.0],
+            [0.835 * hw, 0.0],
+            [0.835 * hw, 0.025 * h],
+            [0.8 * hw, 0.025 * h],
+        ],
+    );
+    for k in 0..8 {
+        let a = k as f64 / 8.0 * std::f64::consts::TAU;
+        let (x, y) = (0.72 * hw * a.cos(), 0.72 * hd * a.sin());
+        b.ellipsoid_rot(
+            Canvas,
+            0,
+            [x, y, zb],
+            [0.16 * hw, 0.05 * hw, 0.07 * h],
+            rot_z(a + FRAC_PI_2),
+        );
+    }
+    // Presents heaped in the mouth, tilted, each with a ribbon across its top.
+    let top = h - zb;
+    let boxes = [
+        (Cushion, 0.0, 0.05, 0.55, 0.2),
+        (Top, -0.35, -0.1, 0.42, -0.4),
+        (Pillow, 0.35, -0.15, 0.4, 0.7),
+        (Shade, 0.1, 0.4, 0.35, 1.1),
+    ];
+    for (k, (role, fx, fy, s, a)) in boxes.into_iter().enumerate() {
+        let e = (s * hw).min(0.32 * top);
+        let c = [fx * hw, fy * hd, zb - 0.2 * e + e];
+        let rot = mat_mul(&rot_z(a), &rot_x(0.2 * (k as f64 - 1.5)));
+        b.slab(role, c, [e, e, e], rot);
+        b.slab(Handle, c, [0.2 * e, 1.02 * e, 1.02 * e], rot);
     }
 }

@@ -1,10 +1,11 @@
 //! Layouts of things people play on or with: a trampoline, a playground merry-go-round, a
-//! surfboard, an inflatable pool ring and a skateboard ramp. The front faces +y, z up, the
+//! surfboard, an inflatable pool ring, a skateboard ramp, a child's play kitchen and a little
+//! pile of toys. The front faces +y, z up, the
 //! bottom face's centre at the origin.
 use super::archetypes::{frame_along, Builder};
 use super::heritage::slab;
 use super::materials::Role::*;
-use super::parts::rot_x;
+use super::parts::{rot_x, IDENTITY};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 /// A closed ring (a torus) about the vertical axis through `(0, 0, z)`: centre-line radius
@@ -227,4 +228,144 @@ pub fn ramp(b: &mut Builder) {
     }
     let lip = -hd + deck_d;
     b.rod(Metal, [-hw, lip, top - 0.02], [hw, lip, top - 0.02], 0.03);
+}
+
+/// A play kitchen: a child-high unit in bright colours, a worktop at a child's waist with two
+/// black hob rings and a steel sink bowl with a tap, an oven door with a dark window and a
+/// bar handle under the hob, a cupboard door under the sink, big round knobs along the front,
+/// and a back panel rising behind with a shelf across it.
+pub fn play_kitchen(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let zt = (0.55 * h).min(0.55);
+    let tt = 0.03;
+    let yb = -hd + 0.03;
+    // Back panel and its shelf, a rounded top bar.
+    b.cuboid(Canvas, [-hw, -hd, 0.0], [hw, yb, h - 0.03]);
+    b.rod(
+        Canvas,
+        [-hw, -hd + 0.015, h - 0.03],
+        [hw, -hd + 0.015, h - 0.03],
+        0.015,
+    );
+    let zs = zt + 0.6 * (h - zt);
+    b.cuboid(
+        Top,
+        [-hw + 0.03, yb, zs - 0.02],
+        [hw - 0.03, yb + 0.12_f64.min(0.5 * b.d), zs],
+    );
+    // The unit, the worktop on it.
+    b.cuboid(Body, [-hw, yb, 0.04], [hw, hd - 0.015, zt - tt]);
+    b.cuboid(
+        Frame,
+        [-hw + 0.02, yb + 0.02, 0.0],
+        [hw - 0.02, hd - 0.04, 0.04],
+    );
+    b.cuboid(Top, [-hw, yb, zt - tt], [hw, hd, zt]);
+    // The hob (left) and the sink (right).
+    let xl = -0.5 * hw;
+    let yc = 0.5 * (yb + hd);
+    let rr = (0.2 * hw).min(0.3 * (hd - yb)).min(0.1);
+    for (dx, dy) in [(-0.45, 0.0), (0.45, 0.0)] {
+        b.revolved(
+            BlackKeys,
+            0,
+            [xl + dx * hw * 0.6, yc + dy, zt],
+            IDENTITY,
+            1.0,
+            vec![[0.0, 0.0], [rr, 0.0], [rr, 0.008], [0.0, 0.008]],
+        );
+    }
+    let xr = 0.5 * hw;
+    let sr = (0.6 * hw).min(0.8 * (hd - yb)) / 2.0;
+    b.revolved(
+        Metal,
+        0,
+        [xr, yc, zt - 0.08],
+        IDENTITY,
+        1.0,
+        vec![[0.0, 0.0], [0.7 * sr, 0.0], [sr, 0.082], [0.9 * sr, 0.082]],
+    );
+    b.cuboid(
+        Metal,
+        [xr - 0.015, yb, zt],
+        [xr + 0.015, yb + 0.03, zt + 0.14],
+    );
+    b.rod(
+        Metal,
+        [xr, yb + 0.02, zt + 0.14],
+        [xr, yc - 0.3 * sr, zt + 0.14],
+        0.012,
+    );
+    // The oven door with a window and a handle; the cupboard door with a knob.
+    let (z0, z1) = (0.08, zt - tt - 0.1);
+    b.cuboid(Door, [-hw + 0.04, hd - 0.015, z0], [-0.04, hd - 0.003, z1]);
+    b.cuboid(
+        Screen,
+        [-hw + 0.1, hd - 0.003, z0 + 0.06],
+        [-0.1, hd - 0.001, z1 - 0.1],
+    );
+    b.rod(
+        Handle,
+        [-hw + 0.1, hd - 0.013, z1 - 0.05],
+        [-0.1, hd - 0.013, z1 - 0.05],
+        0.012,
+    );
+    b.cuboid(Door, [0.04, hd - 0.015, z0], [hw - 0.04, hd - 0.003, z1]);
+    b.ellipsoid(
+        Handle,
+        [0.1, hd - 0.012, 0.5 * (z0 + z1)],
+        [0.02, 0.01, 0.02],
+    );
+    // Knobs along the front under the worktop.
+    for k in 0..4 {
+        let x = -hw + (k as f64 + 0.5) * hw / 2.0;
+        b.ellipsoid(
+            Handle,
+            [x, hd - 0.012, zt - tt - 0.05],
+            [0.025, 0.01, 0.025],
+        );
+    }
+}
+
+/// Toys: a little pile of them, a ball, a stack of building blocks in bright colours and a
+/// wooden car on four black wheels.
+pub fn toys(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = (0.3 * hw).min(0.45 * h).min(hd);
+    b.ellipsoid(Cushion, [-hw + r, hd - r, r], [r, r, r]);
+    let s = (0.22 * b.w).min(0.3 * h);
+    for k in 0..3u32 {
+        let z = k as f64 * s;
+        let x = 0.2 * hw + 0.1 * s * (k as f64 - 1.0);
+        b.cuboid_v(
+            Books,
+            k * 2 + 1,
+            [x - s / 2.0, -hd + 0.02, z],
+            [x + s / 2.0, -hd + 0.02 + s, z + s],
+        );
+    }
+    // The car: a body, a cab on it, four wheels, across the front right.
+    let (cl, cw) = ((0.7 * hw).min(0.3), (0.5 * hd).min(0.12));
+    let (cx, cy) = (hw - cl / 2.0 - 0.01, hd - cw / 2.0 - 0.01);
+    let wr = 0.25 * cw;
+    b.cuboid(
+        Body,
+        [cx - cl / 2.0, cy - cw / 2.0, wr],
+        [cx + cl / 2.0, cy + cw / 2.0, wr + 0.5 * cw],
+    );
+    b.cuboid(
+        Top,
+        [cx - 0.25 * cl, cy - 0.4 * cw, wr + 0.5 * cw],
+        [cx + 0.1 * cl, cy + 0.4 * cw, wr + 0.9 * cw],
+    );
+    for sx in [-1.0, 1.0] {
+        for sy in [-1.0, 1.0] {
+            b.rod(
+                Tyre,
+                [cx + sx * 0.32 * cl, cy + sy * (0.5 * cw - 0.01), wr],
+                [cx + sx * 0.32 * cl, cy + sy * 0.5 * cw, wr],
+                wr,
+            );
+        }
+    }
 }

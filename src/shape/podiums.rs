@@ -184,3 +184,125 @@ pub fn hostess_stand(b: &mut Builder) {
         );
     }
 }
+
+/// A pulpit: a raised, enclosed wooden box at the front right of its footprint (a panelled
+/// parapet waist high round a floor raised on a pedestal, a sloped reading ledge inside its
+/// front with a cloth fall hanging over the front), reached by a flight of steps with a
+/// handrail rising from the left to a gap in its left side.
+pub fn pulpit(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    // The parapet stands about 1.05 m over the pulpit's floor.
+    let zf = (h - 1.05).clamp(0.3 * h, 0.5 * h);
+    let bw = b.d.min(0.55 * b.w);
+    // Panels and the cloth stand proud of the walls, inside the size box.
+    let (x0, x1) = (hw - bw, hw - 0.025);
+    let (y0, y1) = (-hd + 0.015, hd - 0.025);
+    let t = 0.05;
+    // The pedestal, a moulded foot and a floor slab overhanging it.
+    b.cuboid(
+        Frame,
+        [x0 + 0.06, y0 + 0.06, 0.0],
+        [x1 - 0.06, y1 - 0.06, 0.08],
+    );
+    b.cuboid(
+        Body,
+        [x0 + 0.15, y0 + 0.15, 0.08],
+        [x1 - 0.15, y1 - 0.15, zf - 0.08],
+    );
+    b.cuboid(Top, [x0, y0, zf - 0.08], [x1, y1, zf]);
+    // The parapet: front, right and back walls whole, the left one cut for the stair's gap.
+    let zt = h - 0.04;
+    b.cuboid(Body, [x0, y1 - t, zf], [x1, y1, zt]);
+    b.cuboid(Body, [x1 - t, y0, zf], [x1, y1, zt]);
+    b.cuboid(Body, [x0, y0, zf], [x1, y0 + t, zt]);
+    let gap = (0.6 * b.d).min(0.6);
+    b.cuboid(Body, [x0, y0 + gap, zf], [x0 + t, y1, zt]);
+    // A capping rail all round, proud of the walls.
+    b.cuboid(
+        Top,
+        [x0 - 0.01, y1 - t - 0.01, zt],
+        [x1 + 0.01, y1 + 0.01, h],
+    );
+    b.cuboid(
+        Top,
+        [x1 - t - 0.01, y0 - 0.01, zt],
+        [x1 + 0.01, y1 + 0.01, h],
+    );
+    b.cuboid(
+        Top,
+        [x0 - 0.01, y0 - 0.01, zt],
+        [x1 + 0.01, y0 + t + 0.01, h],
+    );
+    b.cuboid(
+        Top,
+        [x0 - 0.01, y0 + gap, zt],
+        [x0 + t + 0.01, y1 + 0.01, h],
+    );
+    // Raised panels on the front (doors' role, facing +y) and the right side.
+    let (pz0, pz1) = (zf + 0.12, zt - 0.12);
+    let n = ((bw / 0.35).round() as usize).max(2);
+    let pw = (bw - 0.08) / n as f64;
+    for i in 0..n {
+        let x = x0 + 0.04 + i as f64 * pw;
+        b.cuboid(Door, [x + 0.03, y1, pz0], [x + pw - 0.03, y1 + 0.012, pz1]);
+    }
+    let m = ((b.d / 0.35).round() as usize).max(2);
+    let pd = (b.d - 0.08) / m as f64;
+    for i in 0..m {
+        let y = y0 + 0.04 + i as f64 * pd;
+        b.cuboid(Top, [x1, y + 0.03, pz0], [x1 + 0.012, y + pd - 0.03, pz1]);
+    }
+    // The reading ledge inside the front, sloping down towards the preacher, and a cloth fall
+    // hanging from it over the middle of the front.
+    let slope = 0.35f64;
+    let ld = 0.32f64.min(0.4 * b.d);
+    b.slab(
+        Top,
+        [
+            0.5 * (x0 + x1),
+            y1 - t - 0.5 * ld,
+            h - 0.02 - 0.5 * ld * slope.sin(),
+        ],
+        [0.4 * bw, 0.5 * ld, 0.015],
+        rot_x(slope),
+    );
+    let fw = (0.18 * bw).min(0.2);
+    let xm = 0.5 * (x0 + x1);
+    b.cuboid(
+        Canvas,
+        [xm - fw, y1 + 0.012, zt - 0.45],
+        [xm + fw, y1 + 0.022, h],
+    );
+    // The steps, rising from the left towards the gap, under a handrail on newels.
+    let run = x0 - (-hw);
+    let k = risers(zf);
+    let tread = run / k as f64;
+    let (sy0, sy1) = (y0 + 0.05, y0 + gap - 0.02);
+    for i in 0..k {
+        let xs = -hw + i as f64 * tread;
+        let z = zf * (i + 1) as f64 / k as f64;
+        b.cuboid(Top, [xs, sy0, z - 0.03], [x0, sy1, z]);
+        b.cuboid(Body, [xs, sy0, 0.0], [xs + 0.02, sy1, z - 0.03]);
+    }
+    b.cuboid(Body, [-hw, sy0, 0.0], [x0, sy0 + 0.03, 0.5 * zf]);
+    let rail = 0.9f64.min(h - zf);
+    let (ya, za, zb) = (sy1 - 0.02, zf / k as f64 + rail, zf + rail);
+    b.rod(
+        Frame,
+        [-hw + 0.03, ya, zf / k as f64],
+        [-hw + 0.03, ya, za],
+        0.025,
+    );
+    b.rod(
+        Frame,
+        [x0 - 0.03, ya, zf],
+        [x0 - 0.03, ya, zb.min(h)],
+        0.025,
+    );
+    b.rod(
+        Handle,
+        [-hw + 0.03, ya, za],
+        [x0 - 0.03, ya, zb.min(h)],
+        0.02,
+    );
+}

@@ -2,7 +2,8 @@
 //! holding the stage, the turret of objectives over it and the eyepiece tube leaning back, with
 //! focus knobs and a lamp in the foot), a stage spotlight (a can on a yoke, tilted forward,
 //! on a column over a tripod) and a photographer's softbox (a wide octagonal diffuser box on the
-//! same light stand). The front faces +y.
+//! same light stand), and a submarine's periscope (a tube floor to ceiling with a head at eye
+//! height). The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_x};
@@ -248,4 +249,39 @@ pub fn spotlight(b: &mut Builder) {
         ],
         0.03 * s,
     );
+}
+
+/// A periscope: a steel tube standing from the floor to the ceiling, a head at eye height
+/// with a dark eyepiece towards the front and a handle folded out at each side.
+pub fn periscope(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let r = (0.25 * hw.min(hd)).clamp(0.05, 0.09);
+    b.cylinder(Metal, [0.0, 0.0, 0.0], 1.6 * r, 0.06);
+    b.cylinder(Metal, [0.0, 0.0, 0.06], r, h - 0.06);
+    for z in [0.3 * h, h - 0.08] {
+        b.cylinder(Frame, [0.0, 0.0, z], 1.2 * r, 0.04);
+    }
+    // The head: a box round the tube at eye height, the eyepiece in a hood at its front.
+    let ze = (0.7 * h).min(1.6);
+    b.cuboid(
+        Body,
+        [-1.4 * r, -1.4 * r, ze - 0.25],
+        [1.4 * r, 1.6 * r, ze + 0.1],
+    );
+    b.cuboid(
+        Body,
+        [-r, 1.6 * r, ze - 0.08],
+        [1.0 * r, (2.6 * r).min(hd - 0.003), ze + 0.08],
+    );
+    b.cuboid(
+        Screen,
+        [-0.7 * r, (2.6 * r).min(hd - 0.003), ze - 0.05],
+        [0.7 * r, (2.6 * r).min(hd - 0.003) + 0.002, ze + 0.05],
+    );
+    for sx in [-1.0, 1.0] {
+        let x0 = sx * 1.4 * r;
+        let x1 = sx * (hw - 0.02).min(4.0 * r);
+        b.rod(Metal, [x0, 0.0, ze - 0.12], [x1, 0.0, ze - 0.12], 0.02);
+        b.rod(Handle, [x1, 0.0, ze - 0.12], [x1, 0.0, ze - 0.28], 0.025);
+    }
 }

@@ -1,6 +1,7 @@
 //! Layouts of strength and boxing gear: a weight bench (a padded bench on a steel frame, with
 //! uprights at its head holding a loaded barbell) and a punching bag hanging on a chain from
-//! the arm of its stand, clear of the floor. The front faces +y.
+//! the arm of its stand, clear of the floor, and a squat rack (a cage of four steel uprights
+//! with a loaded barbell on hooks at shoulder height). The front faces +y.
 use super::archetypes::Builder;
 use super::materials::Role::*;
 
@@ -227,5 +228,87 @@ pub fn exercise_bike(b: &mut Builder) {
             [p[0] - 0.05, p[1] - 0.05, p[2] - 0.012],
             [p[0] + 0.05, p[1] + 0.05, p[2] + 0.012],
         );
+    }
+}
+
+/// A squat rack: four steel uprights on floor rails joined at the top, a row of holes down the
+/// front pair, J hooks on them holding a loaded barbell across the front at shoulder height,
+/// safety arms below it and a peg of spare plates at each back corner.
+pub fn squat_rack(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let s = 0.06;
+    // The bar's plates stand out past the uprights: the cage is narrower than the bar.
+    let xu = (hw - 0.25).max(0.45 * hw);
+    let (yf, yb) = (0.45 * hd, -hd + s);
+    for x in [-xu, xu] {
+        b.cuboid(Frame, [x - s / 2.0, -hd, 0.0], [x + s / 2.0, hd, s]);
+        for y in [yf, yb] {
+            b.cuboid(
+                Frame,
+                [x - s / 2.0, y - s / 2.0, s],
+                [x + s / 2.0, y + s / 2.0, h],
+            );
+        }
+        b.cuboid(Frame, [x - s / 2.0, yb, h - s], [x + s / 2.0, yf, h]);
+        // Holes down the front upright.
+        let mut z = 0.4;
+        while z < h - 0.15 {
+            b.cuboid(
+                Interior,
+                [x - 0.01, yf + s / 2.0, z],
+                [x + 0.01, yf + s / 2.0 + 0.002, z + 0.02],
+            );
+            z += 0.1;
+        }
+    }
+    for y in [yf, yb] {
+        b.cuboid(Frame, [-xu, y - s / 2.0, h - s], [xu, y + s / 2.0, h]);
+    }
+    b.cuboid(Frame, [-xu, yb - s / 2.0, 0.0], [xu, yb + s / 2.0, s]);
+    // J hooks and the loaded bar on them, the safety arms lower, through the cage.
+    let zb = (0.62 * h).min(1.45);
+    let yh = yf + s / 2.0 + 0.04;
+    for x in [-xu, xu] {
+        b.cuboid(
+            Metal,
+            [x - s / 2.0, yf + s / 2.0, zb - 0.05],
+            [x + s / 2.0, yh + 0.03, zb - 0.03],
+        );
+        b.cuboid(
+            Metal,
+            [x - s / 2.0, yh + 0.01, zb - 0.05],
+            [x + s / 2.0, yh + 0.03, zb + 0.03],
+        );
+        b.cuboid(
+            Metal,
+            [x - 0.025, yb, 0.45 * zb - 0.02],
+            [x + 0.025, hd, 0.45 * zb + 0.02],
+        );
+    }
+    let zbar = zb - 0.015;
+    b.rod(Handle, [-hw, yh, zbar], [hw, yh, zbar], 0.015);
+    let r = (0.22f64).min(hd - yh).min(zbar - 0.45 * zb - 0.03).max(0.1);
+    for sx in [-1.0, 1.0] {
+        for (k, rr) in [r, 0.8 * r].into_iter().enumerate() {
+            plate(b, sx * (xu + 0.08 + 0.045 * k as f64), yh, zbar, rr, 0.04);
+        }
+        // A peg of spare plates standing out from a post on the floor rail.
+        let (xp, yp, rp) = (sx * (xu + 0.06), -hd + 0.27, 0.25);
+        b.cuboid(
+            Frame,
+            [sx * xu - 0.025, yp - 0.025, s],
+            [sx * xu + 0.025, yp + 0.025, 0.33],
+        );
+        b.rod(Metal, [sx * xu, yp, 0.3], [xp + sx * 0.12, yp, 0.3], 0.02);
+        for k in 0..3 {
+            plate(
+                b,
+                xp + sx * 0.045 * k as f64,
+                yp,
+                0.3,
+                rp - 0.03 * k as f64,
+                0.04,
+            );
+        }
     }
 }

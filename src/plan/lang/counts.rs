@@ -98,6 +98,7 @@ fn feature_count<'a>(before: &'a str, of: Option<&str>) -> Option<(usize, u32, &
 /// is no new one.
 fn definite_references(r: &mut Reading) {
     counted_references(r);
+    owner_references(r);
     for k in 0..r.mentions.len() {
         let m = &r.mentions[k];
         // "the headmaster's desk" is a particular one of its own
@@ -124,6 +125,27 @@ fn definite_references(r: &mut Reading) {
             let m = &mut r.mentions[k];
             m.category = c;
             m.reference = true;
+        }
+    }
+}
+
+/// "a dragon's lair with a dragon", "a horse's stable with a horse": the owner a place is named
+/// after, when the text names one of its kind again, is that one; it is no second one.
+fn owner_references(r: &mut Reading) {
+    let t = r.text.clone();
+    for k in 0..r.mentions.len() {
+        let m = &r.mentions[k];
+        let owner = ["'s ", "' "].iter().any(|p| t[m.end..].starts_with(p))
+            || t[..m.end].ends_with("'s")
+            || t[..m.end].ends_with('\'');
+        if !owner || m.negated || m.count.is_some_and(|n| n != 1) || m.reference {
+            continue;
+        }
+        let again = r.mentions[k + 1..]
+            .iter()
+            .any(|o| !o.negated && o.category == m.category);
+        if again {
+            r.mentions[k].reference = true;
         }
     }
 }
