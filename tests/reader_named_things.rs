@@ -36,10 +36,10 @@ fn a_sectional_is_an_l_shaped_sofa_of_its_own() {
             "a basement lounge with a corner sofa and a shaggy rug",
             "an open-plan living area with a grey sectional and a coffee table",
         ],
-        "sectional",
+        "sectional sofa",
         &["sofa"],
     );
-    assert_ne!(archetype_of("sectional"), archetype_of("sofa"));
+    assert_ne!(archetype_of("sectional sofa"), archetype_of("sofa"));
 }
 
 #[test]

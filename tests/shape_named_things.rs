@@ -17,8 +17,8 @@ fn at(category: &str, size: [f64; 3]) -> Samples {
 
 #[test]
 fn a_sectional_is_an_l_seen_from_above() {
-    for size in sized("sectional", [1.2, 1.1, 1.0]) {
-        let s = all(&at("sectional", size));
+    for size in sized("sectional sofa", [1.2, 1.1, 1.0]) {
+        let s = all(&at("sectional sofa", size));
         let (hw, hd) = (size[0] / 2.0, size[1] / 2.0);
         let front = |left: bool| {
             within(&s, |p| {
