@@ -312,3 +312,38 @@ pub(super) fn understood(
         unused: crate::plan::understood::unused_words(r, &used),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::kb::KnowledgeBase;
+
+    /// Every line of `kb/holds.txt` names a place of `kb/scenes.txt` and categories of
+    /// `kb/objects.txt` (a misspelt one would silently show nothing), and says what they hold.
+    #[test]
+    fn the_places_holdings_name_known_places_and_categories() {
+        let kb = KnowledgeBase::builtin();
+        let mut lines = 0;
+        for l in include_str!("../kb/holds.txt")
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        {
+            let f: Vec<&str> = l.split('|').map(str::trim).collect();
+            assert_eq!(f.len(), 3, "holds.txt: {l}");
+            assert!(
+                kb.scenes.iter().any(|s| s.name == f[0]),
+                "holds.txt: no place `{}`",
+                f[0]
+            );
+            for c in f[1].split(',').map(str::trim) {
+                assert!(
+                    kb.object(c).is_some_and(|o| o.category == c),
+                    "holds.txt: `{c}` is no category"
+                );
+            }
+            assert!(!f[2].is_empty(), "holds.txt: {l}");
+            lines += 1;
+        }
+        assert!(lines > 0);
+    }
+}
