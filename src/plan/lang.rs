@@ -11,6 +11,7 @@ use super::units::{find_dims, Dims};
 mod contents;
 mod counts;
 mod described;
+mod lining;
 mod mentions;
 mod objects;
 mod place;
@@ -111,6 +112,12 @@ pub struct Reading {
     /// "six chairs along the wall", "two bookcases against the back wall": mentions asked to
     /// stand along one wall (a run there), not spread over the walls ("lining the walls").
     pub one_wall: Vec<usize>,
+    /// "bookcases along every wall", "lined with lockers on both sides": (mention index, walls
+    /// it lines: 1, 2, or 0 for every wall), a plural the room's walls count.
+    pub lining: Vec<(usize, u32)>,
+    /// Plurals the text gave no number for, counted by the parts of the room a phrase names
+    /// ("lockers down both sides": 2), which a lining may raise.
+    pub parts_counted: Vec<usize>,
     /// "a bookcase full of books": (mention index, what it holds as said, the span of those words).
     pub contents: Vec<(usize, String, usize, usize)>,
     /// "a picnic spot in a park": spans naming the place the scene is in (no object of it).
@@ -149,6 +156,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     read_counts(&mut r);
     restate::restated_counts(&mut r);
     read_placements(&mut r);
+    lining::read_lining(&mut r);
     placements::supports_hold(kb, &mut r);
     placements::surface_kinds(kb, &mut r);
     contents::read_contents(&mut r);

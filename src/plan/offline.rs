@@ -23,6 +23,7 @@ mod counts;
 mod describe;
 mod filled;
 mod goods;
+mod lining;
 mod outdoors;
 mod parts;
 mod placeable;
@@ -160,6 +161,41 @@ struct Draft<'a> {
     laid: BTreeMap<String, Laid>,
 }
 
+/// The spec of `d`'s counts: objects, anchors, relations, seats at parts, default blocks scaled
+/// for a small room, and the room sized for them.
+fn build_spec(
+    d: &mut Draft,
+    styles: &[String],
+    essential: &BTreeSet<String>,
+    prompt: &str,
+) -> SceneSpec {
+    let anchors = relations::anchors(d);
+    let objects = describe::objects(d, styles);
+    let mut spec = SceneSpec {
+        scene_type: d.scene_type,
+        scene_text: prompt.trim().to_string(),
+        room: None,
+        objects,
+        anchors: BTreeMap::new(),
+        relations: vec![],
+    };
+    for (c, n) in &d.counts {
+        for k in 1..=*n {
+            spec.anchors.insert(format!("{c}{k}"), anchors[c]);
+        }
+    }
+    relations::relations(d, &mut spec);
+    parts::seats_at_parts(d, &mut spec);
+    // a room called small or tiny (no stated size) seats fewer: its default rows and tables
+    // shrink with its floor before the room is sized for them
+    if d.r.scale < 1.0 && d.r.room.is_none() {
+        let cut = crate::plan::capacity::scale_blocks(&mut spec, &d.named, essential, d.r.scale);
+        d.notes.extend(cut);
+    }
+    spec.room = Some(sizing::room(d, &spec));
+    spec
+}
+
 /// Plans `prompt` offline, or says why it cannot.
 pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     let kb = KnowledgeBase::builtin();
@@ -226,33 +262,16 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
         return Err(PlanError::NothingRecognised(prompt.trim().to_string()));
     }
     let styles = describe::styles(&d);
-    let anchors = relations::anchors(&d);
-    let objects = describe::objects(&d, &styles);
-    let mut spec = SceneSpec {
-        scene_type,
-        scene_text: prompt.trim().to_string(),
-        room: None,
-        objects,
-        anchors: BTreeMap::new(),
-        relations: vec![],
-    };
-    for (c, n) in &d.counts {
-        for k in 1..=*n {
-            spec.anchors.insert(format!("{c}{k}"), anchors[c]);
-        }
-    }
-    relations::relations(&d, &mut spec);
-    parts::seats_at_parts(&d, &mut spec);
     let essential: BTreeSet<String> = d
         .scene
         .map_or(BTreeSet::new(), |s| s.essential.iter().cloned().collect());
-    // a room called small or tiny (no stated size) seats fewer: its default rows and tables
-    // shrink with its floor before the room is sized for them
-    if d.r.scale < 1.0 && d.r.room.is_none() {
-        let cut = crate::plan::capacity::scale_blocks(&mut spec, &d.named, &essential, d.r.scale);
-        d.notes.extend(cut);
+    let noted = d.notes.len();
+    let mut spec = build_spec(&mut d, &styles, &essential, prompt);
+    // things lining the walls are as many as the sized room's walls take: built again for them
+    if lining::fill_walls(&mut d, &spec) {
+        d.notes.truncate(noted);
+        spec = build_spec(&mut d, &styles, &essential, prompt);
     }
-    spec.room = Some(sizing::room(&mut d, &spec));
     let trim = d.r.room.is_some() || d.r.scale < 1.0;
     let fitted = fit(&mut spec, &d.named, &essential, trim)?;
     d.notes.extend(fitted);

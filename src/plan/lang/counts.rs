@@ -299,6 +299,11 @@ pub(super) fn read_counts(r: &mut Reading) {
             m.parts = if one_a_side { 1 } else { p };
             m.each_of = owner;
             if owner.is_none() {
+                if m.count.is_none() && m.plural {
+                    // "lockers down both sides": one or more a side, the walls may say more
+                    r.parts_counted.push(k);
+                }
+                let m = &mut r.mentions[k];
                 m.count = Some(m.count.unwrap_or(1) * m.parts);
                 m.parts = 1;
             }

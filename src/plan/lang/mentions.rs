@@ -60,9 +60,15 @@ pub(super) fn read_mentions(
         for d in dims {
             if d.end <= start && d.end + 24 >= np_start && d.start >= prev_end && d.area.is_none() {
                 let between = &t[d.end..np_start.max(d.end)];
-                if between
-                    .split_whitespace()
-                    .all(|w| is_adjective(w) || w == "long" || w == "wide")
+                // "a 12 m by 3 m corridor with lockers": the place's name between is what
+                // the size is of
+                let place_between = masked
+                    .iter()
+                    .any(|&(s, e)| s >= d.end && e <= np_start.max(d.end) && s < e);
+                if !place_between
+                    && between
+                        .split_whitespace()
+                        .all(|w| is_adjective(w) || w == "long" || w == "wide")
                 {
                     for (k, v) in d.values.iter().enumerate().take(3) {
                         size[k] = *v;

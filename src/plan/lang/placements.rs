@@ -4,6 +4,10 @@
 use super::{is_adjective, re, Mention, Reading};
 use crate::plan::spec::{Anchor, RelationKind};
 
+/// A phrase that puts a thing against the walls ("along every wall", "on both sides", "against
+/// the back wall", "wall-mounted").
+pub(super) const SIDE_PHRASE: &str = r"\b(?:against|along|by|on|lining|lined up along|up against|down|around|round) (?:one|a|the|each|both|all|every|either|two|three|four|opposite)(?: the| four)? (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near|long) )?walls?|sides?|hull)\b|\bwall-mounted\b|\bagainst the (?:walls?|hull)\b|\balong the (?:walls?|hull)\b";
+
 /// Relation and anchor phrases between the mentions.
 pub(super) fn read_placements(r: &mut Reading) {
     let t = r.text.clone();
@@ -120,10 +124,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             r"\b(?:centered|centred|in the (?:center|centre|middle)(?: of the room)?)\b",
             Anchor::Center,
         ),
-        (
-            r"\b(?:against|along|by|on|lining|lined up along|up against) (?:one|a|the|each|both|all|every|two|three|four|opposite) (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near) )?walls?|sides?|hull)\b|\bwall-mounted\b|\bagainst the (?:walls?|hull)\b|\balong the (?:walls?|hull)\b",
-            Anchor::Side,
-        ),
+        (SIDE_PHRASE, Anchor::Side),
         (
             r"\b(?:in|into|to) (?:the|a|one|each|every|all|two|three|four|opposite)(?: the)? corners?\b",
             Anchor::Corner,
