@@ -69,9 +69,9 @@ fn plain_words(text: &str) -> String {
     words.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-/// The knowledge-base category a prompt names (the longest name or synonym found as whole
-/// words), if any.
-pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
+/// The knowledge-base kind a prompt names (the longest name or synonym found as whole words),
+/// with that name as plain words, if any.
+fn find_kind(prompt: &str) -> Option<(String, &'static dreamscene::plan::kb::ObjectKind)> {
     let padded = format!(" {} ", plain_words(prompt));
     let kb = KnowledgeBase::builtin();
     let mut best: Option<(String, &dreamscene::plan::kb::ObjectKind)> = None;
@@ -82,7 +82,34 @@ pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
             best = Some((name, kind));
         }
     }
-    best.map(|(_, k)| (k.category.clone(), k.size))
+    best
+}
+
+/// The knowledge-base category a prompt names (the longest name or synonym found as whole
+/// words), if any.
+pub fn find_category(prompt: &str) -> Option<(String, [f64; 3])> {
+    find_kind(prompt).map(|(_, k)| (k.category.clone(), k.size))
+}
+
+/// What the shape prior draws from a prompt: its words with the thing's name said as the
+/// knowledge base describes it, so a word of the name is never read as a colour or material
+/// ("a wood stove" is black cast iron, "a red wood stove" red).
+pub fn shape_description(prompt: &str) -> String {
+    let plain = format!(" {} ", plain_words(prompt));
+    match find_kind(prompt) {
+        Some((name, kind)) => {
+            let said = if plain.contains(&format!(" {name} ")) {
+                format!(" {name} ")
+            } else {
+                format!(" {name}s ")
+            };
+            plain
+                .replacen(&said, &format!(" {} ", kind.description), 1)
+                .trim()
+                .to_string()
+        }
+        None => prompt.to_string(),
+    }
 }
 
 /// What `object` was asked.
@@ -160,7 +187,7 @@ pub fn run_with(a: ObjectArgs) -> Result<()> {
         Ok(shape::build(
             &category,
             size,
-            &a.prompt,
+            &shape_description(&a.prompt),
             &ShapeOptions {
                 gaussians: None,
                 seed: cfg.seed,
@@ -449,7 +476,20 @@ pub fn run(a: Args) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::find_category;
+    use super::{find_category, shape_description};
+
+    #[test]
+    fn a_word_of_the_things_name_is_not_its_material() {
+        // the stove of "a wood stove" is cast iron; a colour said besides stays
+        let d = shape_description("a red wood stove");
+        assert!(d.contains("cast-iron") && d.contains("red"), "{d}");
+        assert!(!d.split_whitespace().any(|w| w == "wood"), "{d}");
+        // a material said of the thing stays ("a stone bench" is stone)
+        let d = shape_description("a stone bench");
+        assert!(d.contains("stone"), "{d}");
+        // no known thing: the prompt as said
+        assert_eq!(shape_description("a zorbulator"), "a zorbulator");
+    }
 
     #[test]
     fn names_with_hyphens_are_found_in_a_prompt() {

@@ -27,8 +27,8 @@ use placements::read_placements;
 use regex::Regex;
 use words::not_objects;
 pub use words::{
-    alternation, counts_whole, is_adjective, is_function_word, is_generic_seat, is_ground,
-    is_indoor_place, is_known_word, is_open_air, is_outdoor_place, is_remover, is_seat,
+    alternation, counts_whole, is_adjective, is_building, is_function_word, is_generic_seat,
+    is_ground, is_indoor_place, is_known_word, is_open_air, is_outdoor_place, is_remover, is_seat,
     is_specialised, is_verb, kind_of_compound, normalise, number, object_footprint, object_height,
     object_length, object_scale, part_owners, plural_means_one, plurals, potted, singular,
 };

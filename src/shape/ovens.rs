@@ -143,3 +143,51 @@ pub fn sauna_stove(b: &mut Builder) {
     let r = (0.12 * hw).clamp(0.04, 0.07);
     b.rod(Metal, [0.0, -hd + r, zb], [0.0, -hd + r, h], r);
 }
+
+/// A wood stove: a squat black cast-iron firebox on four short legs, a glass door glowing with
+/// the fire, a top plate proud of the body, and a flue pipe rising from the top to the top of
+/// the size box (the stovepipe to the ceiling, which tells it from a kitchen range or a safe).
+pub fn wood_stove(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    // The body is a stove's height whatever the pipe above it.
+    let body = (0.75 * b.w).clamp(0.45, 0.85).min(0.6 * h);
+    let legs = 0.18 * body;
+    b.legs(Metal, 0.025, 0.06, 0.0, legs + 0.01);
+    b.cuboid(
+        Body,
+        [-hw + 0.04, -hd + 0.04, legs],
+        [hw - 0.04, hd - 0.06, body],
+    );
+    // A plinth rail and the top plate, both a little proud of the body.
+    b.cuboid(
+        Metal,
+        [-hw + 0.02, -hd + 0.02, legs],
+        [hw - 0.02, hd - 0.04, legs + 0.03],
+    );
+    b.cuboid(Top, [-hw, -hd, body], [hw, hd - 0.02, body + 0.03]);
+    // The fire door: a frame, the glass lit by the fire, a handle at its side.
+    let (z0, z1) = (legs + 0.18 * (body - legs), legs + 0.82 * (body - legs));
+    let (dx, y) = (0.72 * hw, hd - 0.06);
+    b.cuboid(Door, [-dx, y, z0], [dx, y + 0.03, z1]);
+    b.cuboid(
+        Light,
+        [-0.8 * dx, y + 0.03, z0 + 0.04],
+        [0.8 * dx, y + 0.035, z1 - 0.04],
+    );
+    b.ellipsoid(
+        Interior,
+        [0.0, y + 0.036, z0 + 0.07],
+        [0.6 * dx, 0.004, 0.05],
+    );
+    b.rod(
+        Metal,
+        [dx + 0.01, y + 0.05, z0 + 0.1],
+        [dx + 0.01, y + 0.05, z1 - 0.1],
+        0.012,
+    );
+    // The stovepipe from the top plate up, with a collar where it leaves the stove.
+    let r = (0.16 * hw.min(hd)).clamp(0.06, 0.09);
+    let py = -0.15 * b.d;
+    b.cylinder(Metal, [0.0, py, body + 0.03], 1.3 * r, 0.05);
+    b.cylinder(Metal, [0.0, py, body + 0.03], r, h - body - 0.03);
+}

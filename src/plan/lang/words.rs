@@ -157,6 +157,12 @@ pub fn is_ground(w: &str) -> bool {
     word_list("grounds").contains(&w)
 }
 
+/// Whether `w` heads the name of a building one is inside (`kb/words.txt`, buildings: "a
+/// cabin", "a chapel"), indoors wherever it stands.
+pub fn is_building(w: &str) -> bool {
+    word_list("buildings").contains(&w)
+}
+
 /// Whether `w` puts a place out of doors (`kb/words.txt`, open_air: "outdoor", "open-air").
 pub fn is_open_air(w: &str) -> bool {
     word_list("open_air").contains(&w)

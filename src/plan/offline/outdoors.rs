@@ -64,9 +64,14 @@ pub(super) fn said_open_air(r: &Reading) -> bool {
 /// default, said right after its name to be in an outdoor place one stands in (`kb/words.txt`,
 /// grounds, the head of the phrase: "in a garden shed" is in a shed), is out of doors.
 pub(super) fn set_outdoors(r: &Reading) -> bool {
-    let Some((_, _, e)) = r.scene else {
+    let Some((_, s, e)) = r.scene else {
         return false;
     };
+    // "a cabin in the forest": a building stays indoors wherever it stands
+    let head = r.text[s..e].split_whitespace().last().unwrap_or("");
+    if lang::is_building(head) {
+        return false;
+    }
     let after = regex::Regex::new(
         r"^\s*(?:in|at|on) (?:the |a |an )?(?:[a-z'-]+ )?([a-z'-]+)(?:\s*$|\s*[,.;:!?]|\s+(?:with|and|where|for|under|surrounded|full|at|on|by)\b)",
     )
