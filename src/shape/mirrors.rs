@@ -42,19 +42,20 @@ pub fn mirror_wall(b: &mut Builder) {
 /// Half the thickness of a sheen streak (metres): a film on the glass.
 const SHEEN: f64 = 0.0008;
 
-/// The sheen that makes glass read as a mirror: two light streaks slanting up to the right
-/// across the glass (a broad one and a thin one beside it), in the glass's brighter shade
+/// The sheen that makes glass read as a mirror: two light streaks slanting up to the right (as
+/// seen from the room) across the glass (a broad one and a thin one beside it), in the glass's brighter shade
 /// ([`Canvas`] variant 1), within the ellipse of semi-axes `rx` (across) and `rz` (up) centred
 /// at `c` on the glass's front face (its normal +y, into the room).
 pub fn sheen(b: &mut Builder, c: [f64; 3], rx: f64, rz: f64) {
     use super::parts::rot_y;
     let s = std::f64::consts::FRAC_1_SQRT_2;
-    // in the unit disc: along (1, 1)/√2, offset towards the upper left along (−1, 1)/√2
+    // in the unit disc: along (−1, 1)/√2, offset towards the upper left along (1, 1)/√2 (seen
+    // from the room, the object's +x is on the viewer's left)
     for (off, wide) in [(0.28, 0.16), (0.02, 0.06)] {
         let half = 0.8 * (1.0_f64 - off * off).sqrt();
-        let mid = [-s * off, s * off];
+        let mid = [s * off, s * off];
         let ends =
-            [-1.0, 1.0].map(|k| [(mid[0] + k * s * half) * rx, (mid[1] + k * s * half) * rz]);
+            [-1.0, 1.0].map(|k| [(mid[0] - k * s * half) * rx, (mid[1] + k * s * half) * rz]);
         let (dx, dz) = (ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]);
         let centre = [
             c[0] + 0.5 * (ends[0][0] + ends[1][0]),
