@@ -122,3 +122,46 @@ fn a_place_fills_its_display_cases_and_the_contents_choose_the_kind() {
     let s = plan("a bedroom with a double bed and a dresser full of clothes");
     assert!(s.objects.contains_key("dresser"), "{:?}", keys(&s));
 }
+
+/// A table said to hold books is covered in them, as a bookshop lays out its new releases:
+/// books over most of its top to the edge (it had four small stacks in the middle of a round
+/// table), some standing on end among the flat stacks.
+#[test]
+fn a_table_of_books_is_covered_in_them_some_standing() {
+    for (category, description) in [
+        ("round table", "a round wooden table piled with paperbacks"),
+        ("dining table", "a long oak table covered with bestsellers"),
+        ("display table", "a display table stocked with cookbooks"),
+    ] {
+        let s = size(category);
+        let books = goods(category, description);
+        // cover: cells of the top (its disc, for a round one) with a book over them
+        let cells = 12;
+        let (mut top, mut covered) = (0, 0);
+        let r = 0.5 * s[0].min(s[1]);
+        for i in 0..cells {
+            for j in 0..cells {
+                let x = -0.5 * s[0] + (i as f64 + 0.5) * s[0] / cells as f64;
+                let y = -0.5 * s[1] + (j as f64 + 0.5) * s[1] / cells as f64;
+                if category == "round table" && x.hypot(y) > 0.85 * r {
+                    continue;
+                }
+                top += 1;
+                let near = |p: &&[f64; 3]| {
+                    (p[0] - x).abs() < 0.5 * s[0] / cells as f64
+                        && (p[1] - y).abs() < 0.5 * s[1] / cells as f64
+                };
+                covered += books.iter().any(|p| near(&p)) as usize;
+            }
+        }
+        let share = covered as f64 / top as f64;
+        assert!(share > 0.6, "{category}: books over {share:.2} of its top");
+        let standing = parts_mounted(category, s, description, Mount::Stand)
+            .unwrap()
+            .iter()
+            .filter(|p| p.role == Role::Books)
+            .filter(|p| matches!(p.prim, Primitive::Cuboid { rot, .. } if rot[2][2] < 0.999))
+            .count();
+        assert!(standing >= 2, "{category}: {standing} books standing");
+    }
+}

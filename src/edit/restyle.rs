@@ -111,8 +111,15 @@ pub fn restyle(
             let size = [0, 1, 2].map(|a| size_scaled[a] / o.scale[a].abs());
             let new = match prior {
                 ScenePrior::Shape => {
-                    let (g, note) =
-                        recolour_object(&o.category, size, &cloud, description, state.scene.seed)?;
+                    let mount = state.mount(&o.category);
+                    let (g, note) = recolour_object(
+                        &o.category,
+                        size,
+                        mount,
+                        &cloud,
+                        description,
+                        state.scene.seed,
+                    )?;
                     edit.notes.push(format!("{}: {note}", o.id));
                     g
                 }
@@ -278,11 +285,12 @@ fn edit_object(
 }
 
 /// The shape prior's restyle of an object: its shape prior rebuilt from the new description
-/// (same category, size and seed). When the rebuilt geometry is the object's own (a draft), only
+/// (same category, size, mount and seed). When the rebuilt geometry is the object's own (a draft), only
 /// the colours are taken; otherwise the object is tinted toward the description's colour.
 fn recolour_object(
     category: &str,
     size: [f64; 3],
+    mount: shape::Mount,
     cloud: &Gaussians,
     description: &str,
     seed: u64,
@@ -304,7 +312,7 @@ fn recolour_object(
             gaussians: None,
             seed,
             variant: 0,
-            mount: None,
+            mount: Some(mount),
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;

@@ -7,9 +7,10 @@ use crate::plan::check::{
     anchors_unmet, penetration, relation_unsatisfied, relations_unsatisfied, wall_distances, Box2,
     TOLERANCE,
 };
-use crate::plan::spec::{Anchor, Layout, PlacedBy, PlacedObject, Relation, SceneType};
+use crate::plan::spec::{Anchor, Layout, PlacedBy, PlacedObject, Relation, SceneSpec, SceneType};
 use crate::scene::compose::{merge, place};
 use crate::scene::dir::{read_scene, SceneFile, SceneObject};
+use crate::shape::Mount;
 use crate::splat::ply::read_ply;
 use crate::splat::Gaussians;
 use std::collections::BTreeMap;
@@ -71,6 +72,20 @@ impl SceneState {
             sizes,
             anchors,
         })
+    }
+
+    /// How the things of `category` are held up in this scene, as its draft drew them: the
+    /// mount the layout gives the category in the scene's `spec.json` (a TV in a room with no
+    /// stand for it hangs on the wall), else the knowledge base's. A redraw of an instance (a
+    /// restyle) takes it, so a wall TV gets no foot back and a wall mirror no legs.
+    pub fn mount(&self, category: &str) -> Mount {
+        std::fs::read_to_string(self.dir.join("spec.json"))
+            .ok()
+            .and_then(|t| serde_json::from_str::<SceneSpec>(&t).ok())
+            .map_or_else(
+                || Mount::of_category(category),
+                |spec| Mount::in_scene(&spec, category),
+            )
     }
 
     /// Every instance's id and category, in scene order (what names in a sentence resolve to).

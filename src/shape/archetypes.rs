@@ -171,6 +171,8 @@ const BLACK: Rgb = [0.08, 0.08, 0.09];
 const DARK_WOOD: Rgb = [0.30, 0.19, 0.11];
 const BRASS: Rgb = [0.72, 0.56, 0.28];
 const STONE: Rgb = [0.66, 0.64, 0.60];
+/// Silvered glass: pale, a little blue, brighter than a white wall's shade so it reads as glass.
+const MIRROR_GLASS: Rgb = [0.82, 0.89, 0.94];
 
 macro_rules! arch {
     ($name:literal, $layout:expr, [$($main:expr),*], [$($role:expr => $rgb:expr),*]) => {
@@ -256,11 +258,11 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("board", m::board, [Canvas], [Frame => [0.70, 0.71, 0.73]]),
     arch!("chalkboard", m::chalkboard, [Canvas], [Canvas => [0.15, 0.25, 0.20]]),
     arch!("painting", m::painting, [Frame], [Frame => [0.62, 0.48, 0.22]]),
-    arch!("mirror", m::mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("mirror", m::mirror, [Frame], [Canvas => MIRROR_GLASS]),
     arch!("wall_map", pr::wall_map, [Water], [Frame => [0.30, 0.20, 0.12], Water => [0.40, 0.62, 0.82], Foliage => [0.30, 0.62, 0.22], Soil => [0.90, 0.72, 0.35], Canvas => [0.85, 0.88, 0.92]]),
     arch!("calendar", pr::calendar, [Canvas], [Canvas => WHITE, Body => [0.55, 0.75, 0.92], Foliage => [0.35, 0.62, 0.30], Top => [0.80, 0.14, 0.12], Frame => [0.72, 0.72, 0.75], Handle => [0.90, 0.55, 0.55], Metal => [0.55, 0.55, 0.57]]),
     arch!("poster", hg::poster, [Body], [Canvas => [0.95, 0.94, 0.90], Body => [0.16, 0.30, 0.52], Cushion => [0.92, 0.62, 0.18], Frame => [0.12, 0.12, 0.14], Metal => [0.75, 0.75, 0.75]]),
-    arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => [0.78, 0.84, 0.88], Metal => [0.74, 0.75, 0.77]]),
+    arch!("mirror_wall", mi::mirror_wall, [Metal], [Canvas => MIRROR_GLASS, Metal => [0.74, 0.75, 0.77]]),
     arch!("fridge", a::fridge, [Body, Door], [Body => STEEL, Door => STEEL, Handle => [0.22, 0.22, 0.24]]),
     arch!("washer", a::washer, [Body, Door], [Body => WHITE, Door => WHITE, Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.25, 0.40, 0.75]]),
     arch!("wall_oven", la::wall_oven, [Body, Door], [Body => STEEL, Door => STEEL, Screen => BLACK, Metal => STEEL, Handle => [0.80, 0.80, 0.82], Light => [0.35, 0.85, 0.95], Frame => [0.45, 0.45, 0.46]]),
@@ -373,8 +375,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("display_case", vi::display_case, [Body], [Body => [0.55, 0.38, 0.22], Door => [0.50, 0.34, 0.20], Frame => STEEL, Interior => [0.30, 0.28, 0.26]]),
     arch!("aquarium", vi::aquarium, [Body, Top, Frame], [Body => BLACK, Door => [0.14, 0.14, 0.15], Top => BLACK, Frame => BLACK, Water => [0.16, 0.42, 0.58], Soil => [0.80, 0.72, 0.56], Foliage => [0.20, 0.55, 0.22], Pane => [0.62, 0.84, 0.90]]),
     arch!("shower", vi::shower, [Canvas], [Body => WHITE, Canvas => [0.86, 0.88, 0.90], Metal => [0.42, 0.43, 0.45], Handle => [0.42, 0.43, 0.45], Interior => [0.40, 0.40, 0.42]]),
-    arch!("round_mirror", fo::round_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88], Upholstery => [0.42, 0.26, 0.15]]),
-    arch!("oval_mirror", fo::oval_mirror, [Frame], [Canvas => [0.78, 0.84, 0.88]]),
+    arch!("round_mirror", fo::round_mirror, [Frame], [Canvas => MIRROR_GLASS, Upholstery => [0.42, 0.26, 0.15]]),
+    arch!("oval_mirror", fo::oval_mirror, [Frame], [Canvas => MIRROR_GLASS]),
     arch!("round_rug", fo::round_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("oval_rug", fo::oval_rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("oval_table", fo::oval_table, [Top, Frame], []),
@@ -562,8 +564,8 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("chess_table", bd::chess_table, [Top, Frame], [Canvas => [0.90, 0.84, 0.70], Interior => [0.28, 0.17, 0.10]]),
     arch!("air_hockey_table", bd::air_hockey_table, [Body, Frame], [Body => [0.12, 0.20, 0.45], Frame => [0.12, 0.20, 0.45], Canvas => [0.96, 0.96, 0.96], Handle => [0.85, 0.15, 0.12], Interior => BLACK]),
     arch!("dryer", la::dryer, [Body], [Body => WHITE, Door => [0.22, 0.23, 0.25], Top => [0.80, 0.81, 0.82], Metal => STEEL, Frame => [0.55, 0.55, 0.56], Handle => [0.74, 0.74, 0.76], Screen => [0.05, 0.07, 0.09]]),
-    arch!("vanity", va::vanity, [Top, Body, Door], [Top => [0.93, 0.91, 0.87], Body => [0.93, 0.91, 0.87], Door => [0.95, 0.93, 0.89], Frame => [0.78, 0.66, 0.42], Canvas => [0.78, 0.84, 0.88], Handle => BRASS]),
-    arch!("salon_station", va::salon_station, [Body, Door], [Body => [0.12, 0.12, 0.13], Door => [0.16, 0.16, 0.17], Top => WHITE, Frame => [0.20, 0.20, 0.21], Canvas => [0.78, 0.84, 0.88], Light => [1.0, 0.90, 0.65], Interior => BLACK, Metal => STEEL, Handle => STEEL]),
+    arch!("vanity", va::vanity, [Top, Body, Door], [Top => [0.93, 0.91, 0.87], Body => [0.93, 0.91, 0.87], Door => [0.95, 0.93, 0.89], Frame => [0.78, 0.66, 0.42], Canvas => MIRROR_GLASS, Handle => BRASS]),
+    arch!("salon_station", va::salon_station, [Body, Door], [Body => [0.12, 0.12, 0.13], Door => [0.16, 0.16, 0.17], Top => WHITE, Frame => [0.20, 0.20, 0.21], Canvas => MIRROR_GLASS, Light => [1.0, 0.90, 0.65], Interior => BLACK, Metal => STEEL, Handle => STEEL]),
     arch!("footstool", va::footstool, [Upholstery], [Upholstery => [0.55, 0.45, 0.38], Cushion => [0.30, 0.24, 0.19], Frame => DARK_WOOD]),
     arch!("poker_table", jt::poker_table, [Upholstery], [Upholstery => [0.08, 0.42, 0.20], Cushion => [0.10, 0.09, 0.09], Frame => [0.36, 0.20, 0.10], Interior => BLACK]),
     arch!("cutting_table", jt::cutting_table, [Top, Body], [Top => [0.90, 0.88, 0.84], Body => WHITE, Frame => [0.85, 0.85, 0.84], Canvas => [0.15, 0.45, 0.32], Handle => [0.80, 0.88, 0.82], Metal => STEEL]),
@@ -612,7 +614,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("folding_chair", hf::folding_chair, [Seat], [Metal => [0.20, 0.20, 0.22], Handle => STEEL, Seat => [0.20, 0.20, 0.22]]),
     arch!("loft_bed", hf::loft_bed, [Frame], [Duvet => [0.35, 0.48, 0.66], Top => [0.80, 0.66, 0.46], Body => [0.85, 0.84, 0.80], Door => [0.88, 0.87, 0.83]]),
     arch!("watering_can", hf::watering_can, [Body], [Body => [0.25, 0.50, 0.30], Metal => [0.66, 0.67, 0.69], Handle => [0.25, 0.50, 0.30], Interior => BLACK]),
-    arch!("wall_mirror", hf::wall_mirror, [Frame], [Frame => [0.72, 0.56, 0.28], Canvas => [0.78, 0.84, 0.88], Body => [0.35, 0.25, 0.16], Metal => STEEL]),
+    arch!("wall_mirror", hf::wall_mirror, [Frame], [Frame => [0.72, 0.56, 0.28], Canvas => MIRROR_GLASS, Body => [0.35, 0.25, 0.16], Metal => STEEL]),
     arch!("window_seat", hf::window_seat, [Cushion], [Cushion => [0.36, 0.48, 0.62], Body => WHITE, Door => [0.95, 0.95, 0.94], Frame => WHITE, Top => [0.90, 0.90, 0.89], Interior => [0.55, 0.55, 0.55], Handle => BRASS, Pillow => [0.92, 0.86, 0.74]]),
     arch!("cutting_board", ky::cutting_board, [Top], [Top => [0.72, 0.52, 0.30], Interior => [0.45, 0.30, 0.16], Metal => [0.82, 0.83, 0.85], Handle => BLACK]),
     arch!("pot_rack", ky::pot_rack, [Pot], [Frame => [0.12, 0.12, 0.13], Metal => [0.30, 0.30, 0.32], Pot => [0.72, 0.40, 0.22], Handle => [0.20, 0.20, 0.21]]),

@@ -73,6 +73,7 @@ fn elliptic_mirror(b: &mut Builder, rx: f64, rz: f64, zc: f64) {
     let inset = (0.1 * rx).clamp(0.02, 0.05);
     let (ix, iz) = (rx - inset, rz - inset);
     disc(b, Canvas, [0.0, -hd + t, zc], ix, iz / ix, 0.003);
+    super::mirrors::sheen(b, [0.0, -hd + t + 0.003, zc], ix, iz);
     if zc - rz > 0.05 && b.mount == Mount::Stand {
         // A cheval stand: two legs from the floor to the frame's sides, splayed feet.
         for sx in [-1.0, 1.0] {

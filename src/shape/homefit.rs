@@ -201,6 +201,7 @@ pub fn wall_mirror(b: &mut Builder) {
         [hw - 0.5 * f, back, h - 0.5 * f],
     );
     b.cuboid(Canvas, [-hw + f, back, f], [hw - f, back + 0.004, h - f]);
+    super::mirrors::sheen(b, [0.0, back + 0.004, 0.5 * h], hw - f, 0.5 * h - f);
     // the frame: four mouldings, a raised lip on each
     for (lo, hi) in [
         ([-hw, -hd, 0.0], [hw, hd - 0.3 * b.d, f]),

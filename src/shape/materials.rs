@@ -378,6 +378,8 @@ impl Palette {
                 [1.14, 1.13, 1.11],
                 [0.76, 0.76, 0.77],
             ],
+            // glass and its sheen (a mirror's light streaks)
+            Role::Canvas => &[[1.0, 1.0, 1.0], [1.22, 1.18, 1.14]],
             _ => return c,
         };
         let k = shades[variant as usize % shades.len()];

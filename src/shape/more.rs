@@ -266,6 +266,12 @@ pub fn mirror(b: &mut Builder) {
         [-hw + 0.04, -hd + t, 0.04],
         [hw - 0.04, -hd + t + 0.003, h - 0.04],
     );
+    super::mirrors::sheen(
+        b,
+        [0.0, -hd + t + 0.003, 0.5 * h],
+        hw - 0.04,
+        0.5 * h - 0.04,
+    );
     if b.mount == Mount::Stand {
         // the foot it stands on (hung on a wall, it needs none)
         b.cuboid(Frame, [-0.1 * b.w, -hd, 0.0], [0.1 * b.w, hd, 0.02]);

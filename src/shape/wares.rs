@@ -7,7 +7,7 @@
 use super::builder::{frame_along, Builder};
 use super::goods::{Draws, Goods, Slot};
 use super::materials::Role::Books;
-use super::parts::{frustum_profile, rot_x, IDENTITY};
+use super::parts::{frustum_profile, mul, rot_x, rot_z, IDENTITY};
 use std::f64::consts::FRAC_PI_2;
 
 /// A rod from `a` to `b` of radius `r` in goods colour `v`.
@@ -191,34 +191,7 @@ pub(super) fn on_top(
 ) {
     let mut r = Draws::new(((hw * 1000.0) as u64) << 8 | goods as u64);
     if matches!(goods, Goods::Books | Goods::Magazines) {
-        let cell = 0.3;
-        let (nx, ny) = (
-            ((2.0 * hw) / cell).floor() as i64,
-            ((2.0 * hd) / cell).floor() as i64,
-        );
-        for i in 0..nx.max(1) {
-            for j in 0..ny.max(1) {
-                let x = -hw + (i as f64 + 0.5) * 2.0 * hw / nx.max(1) as f64;
-                let y = -hd + (j as f64 + 0.5) * 2.0 * hd / ny.max(1) as f64;
-                let (bw, bd) = (0.14, 0.2);
-                if round && (x.abs() + 0.5 * bw).hypot(y.abs() + 0.5 * bd) > 0.92 * hw {
-                    continue;
-                }
-                let n = 1 + (r.next() * 3.0) as usize;
-                let t = (room / 3.0).min(0.03);
-                for k in 0..n {
-                    let v = goods.accent(r.next());
-                    let zk = z + k as f64 * t;
-                    let (dx, dy) = (0.01 * (r.next() - 0.5), 0.01 * (r.next() - 0.5));
-                    b.cuboid_v(
-                        Books,
-                        v,
-                        [x - 0.5 * bw + dx, y - 0.5 * bd + dy, zk],
-                        [x + 0.5 * bw + dx, y + 0.5 * bd + dy, zk + t - 0.002],
-                    );
-                }
-            }
-        }
+        books_on_top(b, goods, z, hw, hd, round, room, &mut r);
         return;
     }
     let rows = ((2.0 * hd) / 0.3).floor().max(1.0) as usize;
@@ -240,6 +213,73 @@ pub(super) fn on_top(
             room,
         };
         super::goods::fill(b, goods, bay, &mut r);
+    }
+}
+
+/// Footprint of a book laid flat on a table (metres): a hardback's, across and deep.
+const BOOK: [f64; 2] = [0.15, 0.21];
+/// Grid a table of books is laid out on (metres, across and deep): a book and a finger's gap.
+const BOOK_PITCH: [f64; 2] = [0.18, 0.24];
+
+/// A table top covered in books, as a bookshop lays out its new releases: the whole top to its
+/// edge in a grid of places, most a low stack of books laid flat (each a little turned, one to
+/// three high), every few a pair standing up on end leaning back, covers facing out from the
+/// table's middle. Within `hw` × `hd` of the centre (a disc of radius `hw` when `round`), at
+/// most `room` high above `z`.
+#[allow(clippy::too_many_arguments, reason = "the on_top bay and its draws")]
+fn books_on_top(
+    b: &mut Builder,
+    goods: Goods,
+    z: f64,
+    hw: f64,
+    hd: f64,
+    round: bool,
+    room: f64,
+    r: &mut Draws,
+) {
+    let n = [0, 1].map(|a| ((2.0 * [hw, hd][a]) / BOOK_PITCH[a]).floor().max(1.0) as i64);
+    let t = (room / 3.0).min(0.03);
+    for i in 0..n[0] {
+        for j in 0..n[1] {
+            let x = -hw + (i as f64 + 0.5) * 2.0 * hw / n[0] as f64;
+            let y = -hd + (j as f64 + 0.5) * 2.0 * hd / n[1] as f64;
+            let reach = (x.abs() + 0.5 * BOOK[0]).hypot(y.abs() + 0.5 * BOOK[1]);
+            if round && reach > 0.97 * hw {
+                continue;
+            }
+            if (i + 2 * j) % 3 == 1 && goods == Goods::Books {
+                // two standing on end, covers out from the middle, leaning back a little
+                let out = if y < 0.0 { -1.0 } else { 1.0 };
+                let bh = 0.95 * room;
+                let bw = (0.7 * bh).min(0.5 * BOOK[0]);
+                for k in [-0.5, 0.5] {
+                    let v = goods.accent(r.next());
+                    // (rot_x(a) leans the top towards −y for a > 0: back, to the middle)
+                    let tilt = rot_x(out * 0.12);
+                    let c = mul(&tilt, [0.0, 0.0, 0.5 * bh]);
+                    b.slab_v(
+                        Books,
+                        v,
+                        [x + k * (bw + 0.01), y + c[1], z + c[2]],
+                        [0.5 * bw, 0.012, 0.5 * bh - 0.004],
+                        tilt,
+                    );
+                }
+                continue;
+            }
+            let high = 1 + (r.next() * 3.0) as usize;
+            for k in 0..high {
+                let v = goods.accent(r.next());
+                let turn = rot_z(0.25 * (r.next() - 0.5));
+                b.slab_v(
+                    Books,
+                    v,
+                    [x, y, z + (k as f64 + 0.5) * t],
+                    [0.5 * BOOK[0], 0.5 * BOOK[1], 0.5 * t - 0.001],
+                    turn,
+                );
+            }
+        }
     }
 }
 
