@@ -6,7 +6,7 @@
 use crate::plan::spec::{Layout, SceneSpec, SceneType};
 use crate::scene::compose::merge;
 use crate::scene::dir::{self, SceneFile, SceneObject, Stage};
-use crate::scene::env::{draft_colours, init_environment, EnvKind, EnvOptions};
+use crate::scene::env::{init_environment, scene_colours, EnvKind, EnvOptions};
 use crate::shape::{self, ShapeOptions};
 use crate::splat::ply::{read_ply, write_ply};
 use crate::splat::Gaussians;
@@ -264,7 +264,7 @@ pub fn write_draft_scene(
     if !variants.is_empty() {
         progress(&format!("variants: {}", variants.join(", ")));
     }
-    let colours = draft_colours(layout.scene_type, prompt);
+    let colours = scene_colours(layout, prompt);
     let env = init_environment(
         layout.scene_type,
         layout.room.size,

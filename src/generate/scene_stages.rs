@@ -27,7 +27,7 @@ use crate::diffusion::Error;
 use crate::gpu::Context;
 use crate::plan::spec::{Layout, SceneSpec, SceneType};
 use crate::scene::compose::{merge, pad_sh, place, Placement};
-use crate::scene::env::{draft_colours, init_environment, EnvOptions};
+use crate::scene::env::{init_environment, scene_colours, EnvOptions};
 use crate::splat::ply::{read_ply, write_ply};
 use crate::splat::train::{FitConfig, Trainer};
 use crate::splat::Gaussians;
@@ -369,7 +369,7 @@ pub fn generate_scene(
             let env = init_environment(
                 layout.scene_type,
                 layout.room.size,
-                &draft_colours(layout.scene_type, prompt),
+                &scene_colours(layout, prompt),
                 &EnvOptions {
                     seed: cfg.seed,
                     ..cfg.env

@@ -561,7 +561,19 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
             let near: Vec<usize> = (0..4)
                 .filter(|&w| d[w] <= side_distance(scene, room) + 1e-9)
                 .collect();
-            near.len() == 1 && facing_dot(near[0]) >= 30f64.to_radians().cos() - 1e-9
+            let backs: Vec<usize> = near
+                .iter()
+                .copied()
+                .filter(|&w| facing_dot(w) >= 30f64.to_radians().cos() - 1e-9)
+                .collect();
+            // a thing as long as its wall (the sea along a beach) also reaches the walls at
+            // its ends
+            let [x0, y0, x1, y1] = b.aabb();
+            let spans = |w: usize| {
+                let (along, len) = if w < 2 { (y1 - y0, room[1]) } else { (x1 - x0, room[0]) };
+                along >= len - 2.0 * side_distance(scene, room)
+            };
+            backs.len() == 1 && (near.len() == 1 || spans(backs[0]))
         }
         Anchor::Corner => {
             if scene == SceneType::Outdoor {

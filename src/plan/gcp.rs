@@ -201,6 +201,25 @@ pub(crate) fn layout_in(spec: &SceneSpec, room: Room, opts: LayoutOptions) -> La
     layout_in_pinned(spec, room, opts, &BTreeMap::new(), None, false)
 }
 
+/// The instances of an outdoor `spec` that run the whole length of a side of the ground
+/// (kb/placement.txt `spans`: the sea), made to stand against a side (SIDE).
+fn spanning(spec: &mut SceneSpec) -> Vec<String> {
+    if spec.scene_type != SceneType::Outdoor {
+        return vec![];
+    }
+    let table = classes::Placements::builtin();
+    let ids: Vec<String> = spec
+        .instances()
+        .into_iter()
+        .filter(|i| table.spans_side(&i.category))
+        .map(|i| i.id)
+        .collect();
+    for id in &ids {
+        spec.anchors.insert(id.clone(), Anchor::Side);
+    }
+    ids
+}
+
 /// [`layout_in`] with pinned instances placed first, as they are. The placement classes
 /// (kb/placement.txt) become anchors and OVER relations of a working copy of the spec first.
 fn layout_in_pinned(
@@ -214,8 +233,13 @@ fn layout_in_pinned(
     let mut work = spec.clone();
     let mounts = classes::apply(&mut work);
     pairs::float_seats(&mut work, room.size);
+    let spans = spanning(&mut work);
     let spec = &work;
     let mut inst = spec.instances();
+    // the sea along a beach runs the ground's whole width, flush with one of its long sides
+    for i in inst.iter_mut().filter(|i| spans.contains(&i.id)) {
+        i.size[0] = i.size[0].max(room.size[0] - 2.0 * WALL_MARGIN);
+    }
     // a light hung from the ceiling over no piece named below it keeps head room under it:
     // its drop is shortened (a pendant's cord taken up)
     for i in inst.iter_mut() {

@@ -639,7 +639,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("bowl", bw::bowl, [Body], [Body => WHITE, Top => [0.35, 0.50, 0.70]]),
     arch!("toys", pl::toys, [Body], [Body => [0.86, 0.20, 0.14], Top => [0.95, 0.80, 0.20], Cushion => [0.20, 0.45, 0.85], Tyre => BLACK]),
     arch!("sack_of_presents", pk::sack_of_presents, [Canvas], [Canvas => [0.62, 0.48, 0.30], Frame => [0.80, 0.10, 0.10], Handle => [0.95, 0.80, 0.30], Cushion => [0.85, 0.12, 0.12], Top => [0.15, 0.55, 0.25], Pillow => [0.90, 0.90, 0.94], Shade => [0.20, 0.40, 0.85]]),
-    arch!("periscope", sco::periscope, [Metal], [Metal => [0.55, 0.58, 0.55], Frame => [0.30, 0.32, 0.30], Body => [0.40, 0.43, 0.40], Screen => [0.05, 0.06, 0.08], Handle => [0.12, 0.12, 0.13]]),
+    arch!("periscope", sco::periscope, [Metal], [Metal => [0.40, 0.43, 0.41], Frame => [0.22, 0.24, 0.23], Body => [0.30, 0.33, 0.31], Screen => [0.05, 0.06, 0.08], Handle => [0.12, 0.12, 0.13]]),
 ];
 
 /// Names of [`ARCHETYPES`], in order.

@@ -152,6 +152,7 @@ mod yard;
 pub use goods::Goods;
 pub use materials::{colour_words, Class, ColourWord, Role, WordKind};
 pub use mount::Mount;
+pub use named::shore_band;
 pub use parts::{Part, Primitive};
 
 use crate::plan::kb::KnowledgeBase;

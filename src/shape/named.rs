@@ -236,7 +236,7 @@ pub fn lake(b: &mut Builder) {
 pub fn sea(b: &mut Builder) {
     let (hw, hd) = (b.w / 2.0, b.d / 2.0);
     let zw = 0.6 * b.h;
-    let band = (0.12 * b.d).min(1.5);
+    let band = shore_band(b.d);
     let shore = hd - band;
     // the beach's edge: dry sand, then a darker wet band the waves reach
     b.cuboid(Soil, [-hw, shore + 0.5 * band, 0.0], [hw, hd, 0.5 * zw]);
@@ -274,12 +274,24 @@ pub fn sea(b: &mut Builder) {
             let len = piece * (1.5 + 2.5 * wobble(j, 2)) / (1.0 + 0.5 * row as f64);
             let x = -hw + (k as f64 + wobble(j, 3)) * b.w / dashes as f64;
             let x1 = (x + len).min(hw);
-            let yy = y + 0.04 * b.d * (wobble(j, 4) - 0.5);
-            if x1 > x {
-                b.cuboid(Canvas, [x, yy - t, 0.0], [x1, yy, b.h]);
+            let yy = y + 0.1 * b.d * (wobble(j, 4) - 0.5);
+            // each crest bowed towards the shore, in three pieces
+            let (step, bow) = ((x1 - x) / 3.0, 0.6 * foam);
+            for (q, lift) in [0.0, 1.0, 0.0].into_iter().enumerate() {
+                let (xa, xb) = (x + q as f64 * step, x + (q + 1) as f64 * step);
+                let yc = (yy + bow * lift).min(shore - foam);
+                if xb > xa {
+                    b.cuboid(Canvas, [xa, yc - t, 0.0], [xb, yc, b.h]);
+                }
             }
         }
     }
+}
+
+/// The band of beach (dry and wet sand) at the front of a drawn sea `depth` deep: its water
+/// line lies this far behind its front (the environment carries the water on from there).
+pub fn shore_band(depth: f64) -> f64 {
+    (0.12 * depth).min(1.5)
 }
 
 /// A deterministic number in [0, 1) for index `k` and stream `s` (sizes that differ without a

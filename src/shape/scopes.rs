@@ -251,37 +251,38 @@ pub fn spotlight(b: &mut Builder) {
     );
 }
 
-/// A periscope: a steel tube standing from the floor to the ceiling, a head at eye height
-/// with a dark eyepiece towards the front and a handle folded out at each side.
+/// A periscope: a thick steel tube standing from a collar in the floor up to the ceiling
+/// (banded where its sections join), and at eye height its head: a wide box round the tube
+/// with a hooded eyepiece towards the front (two dark lenses) and a long training handle
+/// folded down at each side, as an officer grips them.
 pub fn periscope(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
-    let r = (0.25 * hw.min(hd)).clamp(0.05, 0.09);
-    b.cylinder(Metal, [0.0, 0.0, 0.0], 1.6 * r, 0.06);
-    b.cylinder(Metal, [0.0, 0.0, 0.06], r, h - 0.06);
-    for z in [0.3 * h, h - 0.08] {
-        b.cylinder(Frame, [0.0, 0.0, z], 1.2 * r, 0.04);
+    let r = (0.3 * hw.min(hd)).clamp(0.06, 0.11);
+    // the well collar in the floor, the tube, its bands
+    b.cylinder(Frame, [0.0, 0.0, 0.0], (2.0 * r).min(hd - 0.01), 0.08);
+    b.cylinder(Metal, [0.0, 0.0, 0.08], r, h - 0.08);
+    for z in [0.35 * h, h - 0.1] {
+        b.cylinder(Frame, [0.0, 0.0, z], 1.25 * r, 0.05);
     }
-    // The head: a box round the tube at eye height, the eyepiece in a hood at its front.
-    let ze = (0.7 * h).min(1.6);
-    b.cuboid(
-        Body,
-        [-1.4 * r, -1.4 * r, ze - 0.25],
-        [1.4 * r, 1.6 * r, ze + 0.1],
-    );
-    b.cuboid(
-        Body,
-        [-r, 1.6 * r, ze - 0.08],
-        [1.0 * r, (2.6 * r).min(hd - 0.003), ze + 0.08],
-    );
-    b.cuboid(
-        Screen,
-        [-0.7 * r, (2.6 * r).min(hd - 0.003), ze - 0.05],
-        [0.7 * r, (2.6 * r).min(hd - 0.003) + 0.002, ze + 0.05],
-    );
+    // The head at eye height: wider than the tube all round, the hood at its front.
+    let ze = (0.68 * h).min(1.6);
+    let (bw, front) = ((2.0 * r).min(hw - 0.02), (2.2 * r).min(hd - 0.02));
+    b.cuboid(Body, [-bw, -1.6 * r, ze - 0.3], [bw, front, ze + 0.12]);
+    let hood = (front + 0.6 * r).min(hd - 0.004);
+    b.cuboid(Body, [-1.2 * r, front, ze - 0.1], [1.2 * r, hood, ze + 0.08]);
     for sx in [-1.0, 1.0] {
-        let x0 = sx * 1.4 * r;
-        let x1 = sx * (hw - 0.02).min(4.0 * r);
-        b.rod(Metal, [x0, 0.0, ze - 0.12], [x1, 0.0, ze - 0.12], 0.02);
-        b.rod(Handle, [x1, 0.0, ze - 0.12], [x1, 0.0, ze - 0.28], 0.025);
+        let x = sx * 0.55 * r;
+        b.cuboid(
+            Screen,
+            [x - 0.4 * r, hood, ze - 0.05],
+            [x + 0.4 * r, hood + 0.003, ze + 0.04],
+        );
+    }
+    // the training handles: an arm out of each side of the head, a grip hanging from it
+    for sx in [-1.0, 1.0] {
+        let x0 = sx * bw;
+        let x1 = sx * (hw - 0.03).max(bw + 0.05);
+        b.rod(Metal, [x0, 0.0, ze - 0.1], [x1, 0.0, ze - 0.1], 0.025);
+        b.rod(Handle, [x1, 0.0, ze - 0.1], [x1, 0.0, ze - 0.4], 0.03);
     }
 }

@@ -43,6 +43,8 @@ pub struct Placements {
     indoors: BTreeMap<String, [f64; 3]>,
     /// `staffed` lines: the counters staff stand behind, and the depth kept for them there.
     staffed: BTreeMap<String, f64>,
+    /// `spans` lines: what runs the whole length of one side of an outdoor ground (the sea).
+    spans: Vec<String>,
 }
 
 impl Placements {
@@ -52,6 +54,7 @@ impl Placements {
         let mut faces = vec![];
         let mut indoors = BTreeMap::new();
         let mut staffed = BTreeMap::new();
+        let mut spans = vec![];
         let list =
             |v: &str| -> Vec<String> { v.split(',').map(|s| s.trim().to_string()).collect() };
         for (n, line) in text.lines().enumerate() {
@@ -78,6 +81,13 @@ impl Placements {
                 for c in list(f[1]) {
                     staffed.insert(c, depth);
                 }
+                continue;
+            }
+            if f[0] == "spans" {
+                if f.len() != 2 || f[1].is_empty() {
+                    return Err(err("needs 2 fields: spans | categories"));
+                }
+                spans.extend(list(f[1]));
                 continue;
             }
             if f[0] == "indoors" {
@@ -151,6 +161,7 @@ impl Placements {
             faces,
             indoors,
             staffed,
+            spans,
         })
     }
 
@@ -168,6 +179,14 @@ impl Placements {
             let kb = crate::plan::kb::KnowledgeBase::builtin().object(category)?;
             self.staffed.get(&kb.category).copied()
         })
+    }
+
+    /// Whether `category` (or the knowledge-base category it names) runs the whole length of
+    /// one side of an outdoor ground, out past it (the sea along a beach).
+    pub fn spans_side(&self, category: &str) -> bool {
+        let kb = crate::plan::kb::KnowledgeBase::builtin().object(category);
+        let cat = kb.map_or(category, |o| o.category.as_str());
+        self.spans.iter().any(|s| s == category || s == cat)
     }
 
     /// The built-in table.

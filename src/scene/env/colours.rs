@@ -36,6 +36,9 @@ pub enum Pattern {
     /// A ship's deck: 30 cm planks with wide dark caulked seams and staggered butt ends, legible
     /// at the outdoor ground's coarser point spacing.
     Planks,
+    /// Glazing: tall glass panes on a thin light frame (a greenhouse's walls and roof), the
+    /// glass pale, greener low down where the planting outside shows through.
+    Panes,
 }
 
 /// Colours (linear RGB in [0, 1]) and patterns of the environment surfaces. `floor` is the
@@ -58,6 +61,8 @@ pub struct EnvColours {
     pub surround_pattern: Pattern,
     /// Outdoors: a parapet's colour round the scene area (a rooftop), none elsewhere.
     pub parapet: Option<[f32; 3]>,
+    /// Outdoors: the sea past one side of the ground (a beach's), set from the layout.
+    pub shore: Option<super::grounds::Shore>,
     /// The door leaf: the scene kind's, its style words' ("modern", "rustic"), or what the text
     /// says of its doors ("a red door").
     pub door: [f32; 3],
@@ -224,7 +229,17 @@ const KINDS: &[KindLook] = &[
     ("farm", [0.45, 0.40, 0.25], Mottled, OFF_WHITE, Plain, DOOR_WOOD),
     ("tea room", [0.74, 0.72, 0.50], Tatami, [0.90, 0.87, 0.78], Plain, DOOR_WOOD),
     ("cave", [0.40, 0.37, 0.33], Rock, ROCK, Rock, TUNNEL),
+    // garden buildings: glass on a frame, timber boards
+    ("greenhouse", [0.52, 0.50, 0.46], Slabs, GLASS, Panes, GLASS),
+    ("potting shed", [0.48, 0.42, 0.34], Boards, SHED_BOARDS, Boards, SHED_BOARDS),
+    ("boathouse", [0.45, 0.33, 0.22], Boards, SHED_BOARDS, Boards, DARK_WOOD),
+    ("sauna", [0.70, 0.55, 0.36], Boards, [0.80, 0.64, 0.42], Boards, DOOR_WOOD),
 ];
+
+/// A greenhouse's glass (its frame is drawn by the `Panes` pattern).
+const GLASS: [f32; 3] = [0.80, 0.90, 0.90];
+/// Weathered timber cladding of a shed.
+const SHED_BOARDS: [f32; 3] = [0.50, 0.38, 0.26];
 
 /// Rock of a cave's walls and roof.
 const ROCK: [f32; 3] = [0.36, 0.33, 0.30];
@@ -232,7 +247,13 @@ const ROCK: [f32; 3] = [0.36, 0.33, 0.30];
 const TUNNEL: [f32; 3] = [0.06, 0.05, 0.05];
 
 /// Ceilings of scene kinds whose roof is not plain paint: (kind, colour, pattern).
-const CEILINGS: &[(&str, [f32; 3], Pattern)] = &[("cave", ROCK, Rock)];
+const CEILINGS: &[(&str, [f32; 3], Pattern)] = &[
+    ("cave", ROCK, Rock),
+    ("greenhouse", GLASS, Panes),
+    ("potting shed", SHED_BOARDS, Boards),
+    ("boathouse", SHED_BOARDS, Boards),
+    ("sauna", [0.80, 0.64, 0.42], Boards),
+];
 
 /// The clinical floor: pale sheet vinyl, its fine speckle; and the walls of a clinical place
 /// whose kind has no look of its own.
@@ -352,6 +373,7 @@ pub fn draft_colours(scene_type: SceneType, scene_text: &str) -> EnvColours {
         surround: GRASS,
         surround_pattern: Mottled,
         parapet: None,
+        shore: None,
         door: DOOR_WOOD,
     };
     let kind = scene_kind(scene_text);
@@ -587,7 +609,7 @@ pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed:
         Mottled => {
             k *= 1.0 + 0.35 * (fbm(u, v, 1.2, seed) - 0.5) + 0.1 * (speck - 0.5);
         }
-        Tatami | Rock | Planks => return super::natural::shade(base, pattern, u, v, speck, seed),
+        Tatami | Rock | Planks | Panes => return super::natural::shade(base, pattern, u, v, speck, seed),
     }
     let mut c = base.map(|x| x * k);
     if let Some((to, t)) = mix_to {

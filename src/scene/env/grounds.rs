@@ -106,3 +106,84 @@ pub fn outdoor_ground(kind: Option<&str>, words: &[String]) -> OutdoorGround {
         one_ground: area == surround,
     }
 }
+
+/// Open water past one side of an outdoor ground (the sea along a beach, kb/placement.txt
+/// `spans`): the ground where `sign * p[axis] > edge` is sea out to the horizon, `edge` its
+/// water line (where the drawn sea's foam runs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shore {
+    pub axis: usize,
+    pub sign: f64,
+    pub edge: f64,
+}
+
+impl Shore {
+    /// How far the point (x, y) lies past the water line (negative: on land), and where it
+    /// lies along the shore.
+    pub fn beyond(&self, x: f64, y: f64) -> (f64, f64) {
+        let p = [x, y];
+        (self.sign * p[self.axis] - self.edge, p[1 - self.axis])
+    }
+}
+
+/// The shore of a laid-out outdoor scene: the water line of a thing that spans a side (the
+/// sea), turned with it; `None` indoors or with none.
+pub fn shore_of(layout: &crate::plan::spec::Layout) -> Option<Shore> {
+    if layout.scene_type != crate::plan::spec::SceneType::Outdoor {
+        return None;
+    }
+    let table = crate::plan::gcp::classes::Placements::builtin();
+    let o = layout
+        .objects
+        .iter()
+        .find(|o| table.spans_side(&o.category))?;
+    let (s, c) = o.yaw.to_radians().sin_cos();
+    let front = [-s, c];
+    let axis = usize::from(front[1].abs() > front[0].abs());
+    // the land lies before its front: the water behind its water line, out past its back
+    let sign = -front[axis].signum();
+    let line = 0.5 * o.size[1] - crate::shape::shore_band(o.size[1]);
+    Some(Shore {
+        axis,
+        sign,
+        edge: sign * o.position[axis] - line,
+    })
+}
+
+/// Sea foam and the breaking crests.
+const FOAM: [f32; 3] = [0.92, 0.95, 0.97];
+/// The sea by the shore, further out, and far out.
+const SHALLOWS: [f32; 3] = [0.18, 0.50, 0.62];
+const OPEN_SEA: [f32; 3] = [0.12, 0.40, 0.60];
+const DEEP_SEA: [f32; 3] = [0.07, 0.25, 0.42];
+
+/// The colour of the sea `beyond` metres past its water line, `along` the shore: a ragged
+/// line of foam at the edge, water deepening away from it, and broken crests in rows roughly
+/// parallel to the shore, wavering and sparser further out.
+pub fn sea_colour(beyond: f64, along: f64) -> [f32; 3] {
+    let mix = |a: [f32; 3], b: [f32; 3], t: f64| {
+        let t = t.clamp(0.0, 1.0) as f32;
+        [0, 1, 2].map(|k| a[k] + (b[k] - a[k]) * t)
+    };
+    let foam = 0.3 + 0.2 * (along * 1.3).sin() + 0.15 * (along * 0.37 + 1.0).sin();
+    if beyond < foam.max(0.05) {
+        return FOAM;
+    }
+    let water = if beyond < 4.0 {
+        mix(SHALLOWS, OPEN_SEA, beyond / 4.0)
+    } else {
+        mix(OPEN_SEA, DEEP_SEA, (beyond - 4.0) / 20.0)
+    };
+    // crests: rows 3 m apart that waver along the shore, each broken into pieces
+    let wavy = beyond + 0.5 * (along * 0.23 + 0.7 * beyond).sin() + 0.3 * (along * 0.61).sin();
+    let row = (wavy / 3.0).floor();
+    let f = wavy / 3.0 - row;
+    let piece = (along / (1.5 + 0.5 * (row.rem_euclid(3.0)))).floor();
+    let h = ((row * 12.9898 + piece * 78.233).sin() * 43_758.547).rem_euclid(1.0);
+    let thin = 0.09 / (1.0 + 0.08 * beyond);
+    if f < thin && h > 0.45 {
+        mix(water, FOAM, 0.75)
+    } else {
+        water
+    }
+}

@@ -18,7 +18,7 @@ mod openings;
 mod said_not;
 
 pub use colours::{draft_colours, shade, EnvColours, Pattern};
-pub use grounds::PARAPET_HEIGHT;
+pub use grounds::{sea_colour, shore_of, Shore, PARAPET_HEIGHT};
 pub use light::{
     bake_light, openings_of, restyle_surface, styled_openings, DraftLight, LitBox, Opening,
 };
@@ -108,6 +108,15 @@ fn areas(scene_type: SceneType, room: [f64; 3], parapet: bool) -> (f64, f64) {
                 std::f64::consts::PI * r * r,
             )
         }
+    }
+}
+
+/// The draft colours of a laid-out scene: the text's ([`draft_colours`]) and the sea past
+/// the side of its ground the layout puts one along ([`shore_of`]).
+pub fn scene_colours(layout: &crate::plan::spec::Layout, prompt: &str) -> EnvColours {
+    EnvColours {
+        shore: shore_of(layout),
+        ..draft_colours(layout.scene_type, prompt)
     }
 }
 
@@ -223,7 +232,13 @@ pub fn init_environment(
                 } else {
                     (colours.surround, colours.surround_pattern)
                 };
-                let c = shade(base, pattern, x as f32, y as f32, speck, opts.seed);
+                let mut c = shade(base, pattern, x as f32, y as f32, speck, opts.seed);
+                // past a beach's water line, the sea out to the horizon
+                if let Some((beyond, along)) = colours.shore.map(|s| s.beyond(x, y)) {
+                    if beyond > 0.0 {
+                        c = sea_colour(beyond, along);
+                    }
+                }
                 b.push([x, y, z], [0.0, 0.0, 1.0], spacing, c);
             }
             let floor = b.take();

@@ -1,5 +1,5 @@
 //! Surface patterns of particular places: a tatami room's mats, a cave's rock, a ship's deck
-//! planks. Evaluated at surface coordinates in metres, like the patterns of `colours.rs`.
+//! planks, a greenhouse's glazing. Evaluated at surface coordinates in metres, like the patterns of `colours.rs`.
 use super::colours::{fbm, hash, Pattern};
 
 /// Tatami mat size (m): a 90 x 180 cm mat, its long side along u.
@@ -14,6 +14,11 @@ const PLANK: [f32; 2] = [0.32, 3.2];
 const SEAM: f32 = 0.07;
 /// Caulking: pitch-dark.
 const CAULK: [f32; 3] = [0.12, 0.09, 0.07];
+
+/// A greenhouse pane (across, up) and half its glazing bar's width (m); the bars' white paint.
+const PANE: [f32; 2] = [0.7, 1.2];
+const FRAME: f32 = 0.025;
+const FRAME_PAINT: [f32; 3] = [0.93, 0.94, 0.92];
 
 /// The colour of `base` under one of this module's patterns at (u, v); `speck` is this point's
 /// own uniform random number in [0, 1).
@@ -63,6 +68,18 @@ pub(super) fn shade(
             if fv < SEAM || fu < 0.5 * SEAM {
                 mix_to = Some((CAULK, 0.85));
             }
+        }
+        Pattern::Panes => {
+            // the glass: pale, the planting outside greener below, brighter sky above
+            let t = (v / 2.0).clamp(0.0, 1.0);
+            let through = [0.55 + 0.4 * t, 0.75 + 0.2 * t, 0.55 + 0.42 * t];
+            let mut c = [0, 1, 2].map(|i| 0.5 * (base[i] + through[i]));
+            k *= 1.0 + 0.04 * (fbm(u, v, 0.6, seed) - 0.5);
+            let (fu, fv) = (u.rem_euclid(PANE[0]), v.rem_euclid(PANE[1]));
+            if fu.min(PANE[0] - fu) < FRAME || fv.min(PANE[1] - fv) < FRAME {
+                c = FRAME_PAINT;
+            }
+            return c.map(|x| (x * k).clamp(0.0, 1.0));
         }
         _ => {}
     }
