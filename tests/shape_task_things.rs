@@ -13,16 +13,25 @@ fn mean(pts: &[[f64; 3]], axis: usize) -> f64 {
 
 #[test]
 fn a_desk_lamp_reaches_forward_over_the_desk() {
-    assert_ne!(archetype_of("desk lamp"), archetype_of("table lamp"));
-    for size in sized("desk lamp", [1.3, 1.2, 1.2]) {
-        let s = drawn("desk lamp", size, 3);
+    assert_ne!(archetype_of("task lamp"), archetype_of("table lamp"));
+    for size in sized("task lamp", [1.3, 1.2, 1.2]) {
+        let s = drawn("task lamp", size, 3);
         let (hd, h) = (size[1] / 2.0, size[2]);
         let shade = of(&s, Role::Shade);
         let metal = of(&s, Role::Metal);
-        assert!(shade.len() > 50 && metal.len() > 50, "{size:?}: no shade or arm");
+        assert!(
+            shade.len() > 50 && metal.len() > 50,
+            "{size:?}: no shade or arm"
+        );
         // the shade hangs forward of the middle, high up; the foot stands at the back
-        assert!(mean(&shade, 1) > 0.25 * hd, "{size:?}: the shade is not forward");
-        assert!(range(&shade, 2).0 > 0.4 * h, "{size:?}: the shade is not raised");
+        assert!(
+            mean(&shade, 1) > 0.25 * hd,
+            "{size:?}: the shade is not forward"
+        );
+        assert!(
+            range(&shade, 2).0 > 0.4 * h,
+            "{size:?}: the shade is not raised"
+        );
         let foot: Vec<_> = metal.iter().filter(|p| p[2] < 0.05).collect();
         assert!(!foot.is_empty(), "{size:?}: no foot");
         assert!(
@@ -32,7 +41,10 @@ fn a_desk_lamp_reaches_forward_over_the_desk() {
         // the bulb glows in the shade's mouth, below the top of the shade
         let light = of(&s, Role::Light);
         assert!(!light.is_empty(), "{size:?}: no bulb");
-        assert!(range(&light, 2).1 < range(&shade, 2).1, "{size:?}: bulb above the shade");
+        assert!(
+            range(&light, 2).1 < range(&shade, 2).1,
+            "{size:?}: bulb above the shade"
+        );
     }
     // a table lamp's shade stays centred over its base
     let t = drawn("table lamp", [0.3, 0.3, 0.5], 3);
@@ -50,6 +62,10 @@ fn a_double_vanity_has_two_basins_side_by_side() {
     }
     for c in ["bathroom sink", "kitchen sink"] {
         let s = drawn(c, [0.9, 0.55, 0.88], 3);
-        assert_eq!(runs(&of(&s, Role::Canvas), 0, 0.04), 1, "{c}: not one basin");
+        assert_eq!(
+            runs(&of(&s, Role::Canvas), 0, 0.04),
+            1,
+            "{c}: not one basin"
+        );
     }
 }

@@ -176,7 +176,7 @@ pub fn table_lamp(b: &mut Builder) {
 /// A desk lamp: a weighted round foot at the back, an arm rising from it to an elbow and a
 /// second arm reaching forward, and a cone of a shade at its end tipped down over the desk,
 /// its bulb in the mouth (a task lamp, never a bedside lamp's drum on a bulb base).
-pub fn desk_lamp(b: &mut Builder) {
+pub fn task_lamp(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let foot = hw.min(0.4 * hd);
     let yb = -hd + foot;
