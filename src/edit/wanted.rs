@@ -216,7 +216,7 @@ mod tests {
     #[test]
     fn a_thing_named_after_a_support_of_the_scene_stands_on_it() {
         assert_eq!(
-            support_named("a desk lamp", "table lamp", &ids()),
+            support_named("a desk lamp", "task lamp", &ids()),
             Some("desk1".to_string())
         );
         // no support named ("a floor lamp" stands on the floor), or none in the scene
@@ -229,8 +229,8 @@ mod tests {
     #[test]
     fn the_thing_to_add_is_what_its_name_ends_in() {
         for (said, category) in [
-            ("a desk lamp", "table lamp"),
-            ("a brass desk lamp", "table lamp"),
+            ("a desk lamp", "task lamp"),
+            ("a brass desk lamp", "task lamp"),
             ("a floor lamp", "floor lamp"),
             ("a coffee table", "coffee table"),
             ("a table lamp", "table lamp"),

@@ -240,6 +240,7 @@ pub const ARCHETYPES: &[Archetype] = &[
     arch!("rack", c::rack, [Frame], [Frame => [0.40, 0.41, 0.43]]),
     arch!("floor_lamp", c::floor_lamp, [Shade], []),
     arch!("table_lamp", c::table_lamp, [Body], [Body => [0.85, 0.82, 0.76]]),
+    arch!("task_lamp", c::task_lamp, [Shade, Metal], [Shade => [0.10, 0.10, 0.11], Metal => [0.12, 0.12, 0.13], Light => [1.0, 0.96, 0.85]]),
     arch!("rug", c::rug, [Upholstery], [Upholstery => [0.62, 0.28, 0.22], Cushion => [0.86, 0.79, 0.63]]),
     arch!("counter", c::counter, [Body, Door], [Top => [0.82, 0.80, 0.76]]),
     arch!("service_counter", scn::service_counter, [Body, Door], [Top => [0.82, 0.80, 0.76], Door => [0.66, 0.50, 0.33], Interior => [0.22, 0.17, 0.13]]),

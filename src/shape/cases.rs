@@ -1,6 +1,6 @@
 //! Layouts of case goods and fixtures: cabinets, dressers, wardrobes, shelves,
 //! lamps, rugs, counters, sinks, fireplaces, pianos, bathtubs and toilets. The front faces +y.
-use super::archetypes::Builder;
+use super::archetypes::{frame_along, Builder};
 use super::goods::{fill, Bay, Draws};
 use super::materials::Role::*;
 use super::parts::{frustum_profile, rot_y, IDENTITY};
@@ -173,6 +173,48 @@ pub fn table_lamp(b: &mut Builder) {
     b.frustum(Shade, [0.0, 0.0, h - sh], hw, hd, 0.65, sh);
 }
 
+/// A desk lamp: a weighted round foot at the back, an arm rising from it to an elbow and a
+/// second arm reaching forward, and a cone of a shade at its end tipped down over the desk,
+/// its bulb in the mouth (a task lamp, never a bedside lamp's drum on a bulb base).
+pub fn task_lamp(b: &mut Builder) {
+    let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
+    let foot = hw.min(0.4 * hd);
+    let yb = -hd + foot;
+    b.cylinder(Metal, [0.0, yb, 0.0], foot, 0.03);
+    let arm = (0.012 * h / 0.5).clamp(0.006, 0.02);
+    let elbow = [0.0, -hd + 0.4 * foot, 0.88 * h];
+    b.rod(Metal, [0.0, yb, 0.03], elbow, arm);
+    // the shade's mouth faces down and forward; its apex sits at the end of the upper arm
+    let sl = (0.3 * h).min(0.9 * hd);
+    let sr = (0.9 * hw).min(0.45 * sl);
+    let axis: [f64; 3] = [0.0, 0.45, -1.0];
+    let l = (axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
+    let dir: [f64; 3] = [0.0, axis[1] / l, axis[2] / l];
+    let mouth_y = hd - sr * dir[2].abs();
+    let apex = [0.0, mouth_y - sl * dir[1], h - 0.02];
+    b.rod(Metal, elbow, apex, arm);
+    // a spring beside each arm, as on an anglepoise
+    for (a, c) in [([0.0, yb, 0.03], elbow), (elbow, apex)] {
+        b.rod(
+            Metal,
+            [a[0] + 2.5 * arm, a[1], a[2] + 0.1 * (c[2] - a[2]).abs()],
+            [c[0] + 2.5 * arm, c[1], c[2] - 0.02],
+            0.4 * arm,
+        );
+    }
+    b.cylinder(Metal, [0.0, elbow[1], elbow[2] - arm], 1.6 * arm, 2.0 * arm);
+    b.revolved(
+        Shade,
+        0,
+        apex,
+        frame_along(dir),
+        1.0,
+        frustum_profile(0.25 * sr, sr, sl),
+    );
+    let bulb = [0, 1, 2].map(|k| apex[k] + 0.8 * sl * dir[k]);
+    b.ellipsoid(Light, bulb, [0.35 * sr, 0.35 * sr, 0.35 * sr]);
+}
+
 pub fn rug(b: &mut Builder) {
     let (hw, hd, h) = (b.w / 2.0, b.d / 2.0, b.h);
     let bw = (0.08 * b.w.min(b.d)).min(0.15);
@@ -224,7 +266,10 @@ pub fn sink(b: &mut Builder) {
     let zt = h - bowl;
     base_cabinets(b, zt - 0.035);
     b.cuboid(Top, [-hw, -hd, zt - 0.035], [hw, hd, zt]);
-    let (rx, ry) = ((0.3 * b.w).min(0.3), (0.32 * b.d).min(0.22));
+    // a top long enough for two people to wash side by side (a double vanity) has two basins
+    let basins: usize = if b.w >= 1.3 { 2 } else { 1 };
+    let rx = (0.3 * b.w / basins as f64).min(0.3);
+    let ry = (0.32 * b.d).min(0.22);
     let yc = 0.05 * b.d;
     let profile = vec![
         [0.6 * rx, 0.0],
@@ -234,20 +279,22 @@ pub fn sink(b: &mut Builder) {
         [0.55 * rx, 0.02],
         [0.0, 0.02],
     ];
-    b.revolved(Canvas, 0, [0.0, yc, zt], IDENTITY, ry / rx, profile);
-    let yf = yc - ry - 0.05;
-    b.cylinder(
-        Metal,
-        [0.0, yf, zt],
-        0.018,
-        bowl + 0.1_f64.min(h - zt - bowl) - 0.005,
-    );
-    b.rod(
-        Metal,
-        [0.0, yf, h - 0.02],
-        [0.0, yf + 0.12, h - 0.02],
-        0.012,
-    );
+    for i in 0..basins {
+        let xc = if basins == 1 {
+            0.0
+        } else {
+            (i as f64 - 0.5) * b.w / 2.0
+        };
+        b.revolved(Canvas, 0, [xc, yc, zt], IDENTITY, ry / rx, profile.clone());
+        let yf = yc - ry - 0.05;
+        b.cylinder(
+            Metal,
+            [xc, yf, zt],
+            0.018,
+            bowl + 0.1_f64.min(h - zt - bowl) - 0.005,
+        );
+        b.rod(Metal, [xc, yf, h - 0.02], [xc, yf + 0.12, h - 0.02], 0.012);
+    }
 }
 
 pub fn fireplace(b: &mut Builder) {

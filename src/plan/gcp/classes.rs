@@ -8,7 +8,9 @@ use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
 mod flank;
+mod support;
 use flank::flank_with_support;
+pub use support::support_in;
 
 /// Where a category stands.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -244,12 +246,11 @@ pub fn effective_class(spec: &SceneSpec, category: &str) -> Class {
     match table.get(category) {
         Some(Placement {
             class: Class::OnSurface(h),
-            supports,
             ..
         }) => {
             if let (Some(h), true) = (h, on_wall) {
                 Class::OnWall(*h)
-            } else if supports.iter().any(|s| spec.objects.contains_key(s)) {
+            } else if support_in(table, category, spec).is_some() {
                 Class::OnSurface(*h)
             } else if let Some(h) = h {
                 Class::OnWall(*h)
@@ -357,14 +358,11 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                         }
                         continue;
                     }
-                    let Some(p) = Placements::builtin().get(&cat) else {
+                    let Some(sup) = support_in(Placements::builtin(), &cat, spec) else {
                         continue;
                     };
-                    let Some(sup) = p.supports.iter().find(|s| spec.objects.contains_key(*s))
-                    else {
-                        continue;
-                    };
-                    let so = &spec.objects[sup];
+                    let sup = sup.to_string();
+                    let so = &spec.objects[&sup];
                     let top = so.size[0] * so.size[1];
                     // the least loaded instance of the support, by the share of its top used
                     let best = (1..=so.number).map(|m| format!("{sup}{m}")).min_by(|a, b| {
