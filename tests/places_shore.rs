@@ -39,23 +39,46 @@ fn the_sea_runs_along_a_whole_side_and_nothing_stands_in_it() {
                 .find(|o| o.category == "sea")
                 .unwrap_or_else(|| panic!("{prompt}: no sea"));
             let [w, d, _] = l.room.size;
-            let (hw, hd) = (0.5 * w, 0.5 * d);
-            // along a long side, the whole of it, its back at the edge, facing the land
+            // along a long side (either side of a square ground), the whole of it, its back
+            // at the edge, facing the land
             let across = sea.yaw.to_radians().cos().abs() > 0.99;
-            assert!(across, "{prompt} ({seed}): yaw {}", sea.yaw);
-            assert!(sea.size[0] >= w - 0.1, "{prompt} ({seed}): {:?} in {w}", sea.size);
-            let back = sea.position[1].abs() + 0.5 * sea.size[1];
-            assert!((back - hd).abs() < 0.1, "{prompt} ({seed}): back at {back} of {hd}");
-            assert!(sea.position[0].abs() < 0.1, "{prompt} ({seed}): {:?}", sea.position);
-            assert_ne!(sea.placed_by, PlacedBy::Fallback, "{prompt} ({seed}): a SIDE met");
+            let down = sea.yaw.to_radians().sin().abs() > 0.99;
+            assert!(
+                across || down && (w - d).abs() < 0.01,
+                "{prompt} ({seed}): yaw {}",
+                sea.yaw
+            );
+            // (a, b): the sea's axis along its side and the axis out to sea
+            let (a, b) = if across { (0, 1) } else { (1, 0) };
+            let (len, hd) = (l.room.size[a], 0.5 * l.room.size[b]);
+            assert!(
+                sea.size[0] >= len - 0.1,
+                "{prompt} ({seed}): {:?} in {len}",
+                sea.size
+            );
+            let back = sea.position[b].abs() + 0.5 * sea.size[1];
+            assert!(
+                (back - hd).abs() < 0.1,
+                "{prompt} ({seed}): back at {back} of {hd}"
+            );
+            assert!(
+                sea.position[a].abs() < 0.1,
+                "{prompt} ({seed}): {:?}",
+                sea.position
+            );
+            assert_ne!(
+                sea.placed_by,
+                PlacedBy::Fallback,
+                "{prompt} ({seed}): a SIDE met"
+            );
             // nothing stands in the water
-            let front = sea.position[1].abs() - 0.5 * sea.size[1];
-            let toward = sea.position[1].signum();
+            let front = sea.position[b].abs() - 0.5 * sea.size[1];
+            let toward = sea.position[b].signum();
             for o in l.objects.iter().filter(|o| o.id != sea.id) {
                 let r = 0.5 * o.size[0].max(o.size[1]);
-                let y = o.position[1] * toward;
+                let y = o.position[b] * toward;
                 assert!(
-                    y - r < front + 0.05 && o.position[0].abs() <= hw,
+                    y - r < front + 0.05 && o.position[a].abs() <= 0.5 * l.room.size[a],
                     "{prompt} ({seed}): {} at {:?} in the sea (front {front})",
                     o.id,
                     o.position
@@ -137,12 +160,17 @@ fn a_greenhouse_is_glazed_and_a_shed_is_boarded() {
         let pane = dreamscene::scene::env::shade(g.wall, Pattern::Panes, 0.35, 0.6, 0.5, 1);
         let bar = dreamscene::scene::env::shade(g.wall, Pattern::Panes, 0.005, 0.6, 0.5, 1);
         assert!(pane[1] > pane[0], "{t}: greenish glass {pane:?}");
-        assert!(bar[0] > pane[0] + 0.05, "{t}: a light frame bar {bar:?} vs {pane:?}");
+        assert!(
+            bar[0] > pane[0] + 0.05,
+            "{t}: a light frame bar {bar:?} vs {pane:?}"
+        );
     }
     for t in [
         "a potting shed with a workbench and clay pots",
         "a cosy boathouse with two rowing boats",
         "a wooden sauna with two benches",
+        "a log cabin in the woods with a wood stove",
+        "a ski chalet with bunk beds",
     ] {
         let s = c(t);
         assert_eq!(s.wall_pattern, Pattern::Boards, "{t}: timber walls");
@@ -164,8 +192,15 @@ fn a_periscope_is_a_stout_tube_with_a_wide_head_and_handles_at_eye_height() {
     let (hx0, hx1) = range(&head, 0);
     let (hz0, hz1) = range(&head, 2);
     assert!(hx1 - hx0 >= 2.0 * (x1 - x0), "a head wider than the tube");
-    assert!(hz0 > 1.0 && hz1 < 1.8, "the head at eye height: {hz0:.2}-{hz1:.2}");
+    assert!(
+        hz0 > 1.0 && hz1 < 1.8,
+        "the head at eye height: {hz0:.2}-{hz1:.2}"
+    );
     let grips = of(&s, Role::Handle);
     let (gx0, gx1) = range(&grips, 0);
-    assert!(gx1 - gx0 > 0.5, "handles out at both sides: {:.2}", gx1 - gx0);
+    assert!(
+        gx1 - gx0 > 0.5,
+        "handles out at both sides: {:.2}",
+        gx1 - gx0
+    );
 }

@@ -109,11 +109,22 @@ pub fn floor_area(spec: &SceneSpec) -> f64 {
         .filter(|r| r.relation == RelationKind::Over)
         .map(|r| r.subject.as_str())
         .collect();
+    // what runs a whole side of the ground (the sea along a beach) is ground, not furniture
     spec.instances()
         .iter()
-        .filter(|i| !on_top.contains(i.id.as_str()) && i.size[2] >= 0.05)
+        .filter(|i| {
+            !on_top.contains(i.id.as_str())
+                && i.size[2] >= 0.05
+                && !spans_ground(spec.scene_type, &i.category)
+        })
         .map(|i| i.size[0] * i.size[1])
         .sum()
+}
+
+/// Whether `category` runs the whole length of a side of an outdoor ground (the sea along a
+/// beach): its length is the ground's, so it is never too long for it.
+fn spans_ground(scene: SceneType, category: &str) -> bool {
+    scene == SceneType::Outdoor && super::gcp::classes::Placements::builtin().spans_side(category)
 }
 
 /// Whether a box of `size` fits in `room` in some quarter turn.
@@ -252,7 +263,7 @@ pub fn fit(
     let too_big: Vec<String> = spec
         .objects
         .iter()
-        .filter(|(_, o)| !fits(o.size, room.size))
+        .filter(|(c, o)| !fits(o.size, room.size) && !spans_ground(spec.scene_type, c))
         .map(|(c, _)| c.clone())
         .collect();
     for c in too_big {

@@ -570,7 +570,11 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
             // its ends
             let [x0, y0, x1, y1] = b.aabb();
             let spans = |w: usize| {
-                let (along, len) = if w < 2 { (y1 - y0, room[1]) } else { (x1 - x0, room[0]) };
+                let (along, len) = if w < 2 {
+                    (y1 - y0, room[1])
+                } else {
+                    (x1 - x0, room[0])
+                };
                 along >= len - 2.0 * side_distance(scene, room)
             };
             backs.len() == 1 && (near.len() == 1 || spans(backs[0]))

@@ -238,7 +238,7 @@ fn layout_in_pinned(
     let mut inst = spec.instances();
     // the sea along a beach runs the ground's whole width, flush with one of its long sides
     for i in inst.iter_mut().filter(|i| spans.contains(&i.id)) {
-        i.size[0] = i.size[0].max(room.size[0] - 2.0 * WALL_MARGIN);
+        i.size[0] = room.size[0] - 2.0 * WALL_MARGIN;
     }
     // a light hung from the ceiling over no piece named below it keeps head room under it:
     // its drop is shortened (a pendant's cord taken up)

@@ -269,7 +269,11 @@ pub fn periscope(b: &mut Builder) {
     let (bw, front) = ((2.0 * r).min(hw - 0.02), (2.2 * r).min(hd - 0.02));
     b.cuboid(Body, [-bw, -1.6 * r, ze - 0.3], [bw, front, ze + 0.12]);
     let hood = (front + 0.6 * r).min(hd - 0.004);
-    b.cuboid(Body, [-1.2 * r, front, ze - 0.1], [1.2 * r, hood, ze + 0.08]);
+    b.cuboid(
+        Body,
+        [-1.2 * r, front, ze - 0.1],
+        [1.2 * r, hood, ze + 0.08],
+    );
     for sx in [-1.0, 1.0] {
         let x = sx * 0.55 * r;
         b.cuboid(

@@ -234,10 +234,13 @@ const KINDS: &[KindLook] = &[
     ("potting shed", [0.48, 0.42, 0.34], Boards, SHED_BOARDS, Boards, SHED_BOARDS),
     ("boathouse", [0.45, 0.33, 0.22], Boards, SHED_BOARDS, Boards, DARK_WOOD),
     ("sauna", [0.70, 0.55, 0.36], Boards, [0.80, 0.64, 0.42], Boards, DOOR_WOOD),
+    ("log cabin", [0.46, 0.32, 0.20], Boards, LOGS, Boards, DARK_WOOD),
 ];
 
 /// A greenhouse's glass (its frame is drawn by the `Panes` pattern).
 const GLASS: [f32; 3] = [0.80, 0.90, 0.90];
+/// Honey-brown round logs of a log cabin's walls and roof boards.
+const LOGS: [f32; 3] = [0.60, 0.42, 0.25];
 /// Weathered timber cladding of a shed.
 const SHED_BOARDS: [f32; 3] = [0.50, 0.38, 0.26];
 
@@ -253,6 +256,7 @@ const CEILINGS: &[(&str, [f32; 3], Pattern)] = &[
     ("potting shed", SHED_BOARDS, Boards),
     ("boathouse", SHED_BOARDS, Boards),
     ("sauna", [0.80, 0.64, 0.42], Boards),
+    ("log cabin", LOGS, Boards),
 ];
 
 /// The clinical floor: pale sheet vinyl, its fine speckle; and the walls of a clinical place
@@ -609,7 +613,9 @@ pub fn shade(base: [f32; 3], pattern: Pattern, u: f32, v: f32, speck: f32, seed:
         Mottled => {
             k *= 1.0 + 0.35 * (fbm(u, v, 1.2, seed) - 0.5) + 0.1 * (speck - 0.5);
         }
-        Tatami | Rock | Planks | Panes => return super::natural::shade(base, pattern, u, v, speck, seed),
+        Tatami | Rock | Planks | Panes => {
+            return super::natural::shade(base, pattern, u, v, speck, seed)
+        }
     }
     let mut c = base.map(|x| x * k);
     if let Some((to, t)) = mix_to {
