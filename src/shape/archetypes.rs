@@ -156,7 +156,7 @@ impl Archetype {
             animal,
             bird,
             variant: variant % super::variants::count(self.name),
-            mount,
+            mount: mount.drawn(),
         };
         (self.layout)(&mut b);
         b.parts

@@ -95,7 +95,7 @@ pub fn round_mirror(b: &mut Builder) {
     let r = 0.5 * b.w.min(b.h);
     match b.mount {
         Mount::Stand => elliptic_mirror(b, r, r, b.h - r),
-        Mount::Wall | Mount::Ceiling => {
+        Mount::Wall | Mount::Ceiling | Mount::Post(_) => {
             // hung on a leather strap from a peg: the disc at the foot of its box, the strap's
             // two ends meeting at the top
             let r = r.min(0.4 * b.h);

@@ -15,6 +15,10 @@ pub enum Mount {
     Wall,
     /// Hung from the ceiling, the top of its box there: on a cord, chain or rod.
     Ceiling,
+    /// Outdoors, where there is no wall to hang it on: drawn as hung on a wall, held up from
+    /// the ground behind it by a post (two at the ends of a wide thing); the drop from the
+    /// ground to its foot in centimetres.
+    Post(u16),
 }
 
 impl Mount {
@@ -37,12 +41,23 @@ impl Mount {
     }
 
     /// The mount of `category` in `spec`, as the layout places it: a TV hangs on the wall of a
-    /// room with no stand for it; outdoors there is no wall, but a wall thing is still drawn
-    /// flat (it stands where it is put, at its height).
+    /// room with no stand for it; outdoors there is no wall, so a wall thing stands where it is
+    /// put, at its height, on posts from the ground (never floating in the air).
     pub fn in_scene(spec: &SceneSpec, category: &str) -> Mount {
+        let outdoor = spec.scene_type == SceneType::Outdoor;
         match effective_class(spec, category) {
-            Class::Ceiling if spec.scene_type == SceneType::Outdoor => Mount::Stand,
+            Class::Ceiling if outdoor => Mount::Stand,
+            Class::OnWall(h) if outdoor && h > 0.05 => Mount::Post((100.0 * h).round() as u16),
             class => Mount::of_class(class),
+        }
+    }
+
+    /// How its own drawing is held up: a thing on posts is drawn as a wall thing (the posts
+    /// are drawn below it, [`super::build`]).
+    pub fn drawn(self) -> Mount {
+        match self {
+            Mount::Post(_) => Mount::Wall,
+            m => m,
         }
     }
 }

@@ -36,6 +36,23 @@ fn walls_named(phrase: &str, lined: bool) -> Option<u32> {
     if sides {
         return Some(1);
     }
+    // the edge of an open ground (a terrace's, a plaza's) runs round it unless one is named
+    let edge = [
+        "edge",
+        "edges",
+        "perimeter",
+        "parapet",
+        "railing",
+        "railings",
+    ]
+    .iter()
+    .any(|w| has(w));
+    let one = [
+        "one", "back", "front", "far", "near", "left", "right", "rear", "long",
+    ];
+    if edge && !one.iter().any(|w| has(w)) {
+        return Some(0);
+    }
     let many = has("walls")
         || ["every", "each", "all", "four", "three"]
             .iter()
@@ -145,5 +162,9 @@ mod tests {
         assert_eq!(walls_named("on both sides", false), None);
         assert_eq!(walls_named("wall-mounted", false), None);
         assert_eq!(walls_named("on the walls", false), None);
+        // an open ground's edge runs round it
+        assert_eq!(walls_named("lining the edge", false), Some(0));
+        assert_eq!(walls_named("around the perimeter", false), Some(0));
+        assert_eq!(walls_named("along the back edge", false), Some(1));
     }
 }

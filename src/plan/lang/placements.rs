@@ -6,7 +6,7 @@ use crate::plan::spec::{Anchor, RelationKind};
 
 /// A phrase that puts a thing against the walls ("along every wall", "on both sides", "against
 /// the back wall", "wall-mounted").
-pub(super) const SIDE_PHRASE: &str = r"\b(?:against|along|by|on|lining|lined up along|up against|down|around|round) (?:one|a|the|each|both|all|every|either|two|three|four|opposite)(?: the| four)? (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near|long) )?walls?|sides?|hull)\b|\bwall-mounted\b|\bagainst the (?:walls?|hull)\b|\balong the (?:walls?|hull)\b";
+pub(super) const SIDE_PHRASE: &str = r"\b(?:against|along|by|on|lining|lined up along|up against|down|around|round) (?:one|a|the|each|both|all|every|either|two|three|four|opposite)(?: the| four)? (?:(?:(?:back|front|far|end|side|rear|left|right|other|main|opposite|near|long) )?walls?|sides?|hull|edges?|perimeter|parapet|railings?)\b|\bwall-mounted\b|\bagainst the (?:walls?|hull)\b|\balong the (?:walls?|hull)\b";
 
 /// Relation and anchor phrases between the mentions.
 pub(super) fn read_placements(r: &mut Reading) {
