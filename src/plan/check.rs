@@ -566,8 +566,8 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
                 .copied()
                 .filter(|&w| facing_dot(w) >= 30f64.to_radians().cos() - 1e-9)
                 .collect();
-            // a thing as long as its wall (the sea along a beach) also reaches the walls at
-            // its ends
+            // outdoors a thing as long as its side (the sea along a beach) also reaches the
+            // sides at its ends (indoors a piece in a corner is still at two walls)
             let [x0, y0, x1, y1] = b.aabb();
             let spans = |w: usize| {
                 let (along, len) = if w < 2 {
@@ -577,7 +577,8 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
                 };
                 along >= len - 2.0 * side_distance(scene, room)
             };
-            backs.len() == 1 && (near.len() == 1 || spans(backs[0]))
+            backs.len() == 1
+                && (near.len() == 1 || scene == SceneType::Outdoor && spans(backs[0]))
         }
         Anchor::Corner => {
             if scene == SceneType::Outdoor {
