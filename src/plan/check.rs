@@ -577,8 +577,7 @@ pub fn anchor_holds_box(b: &Box2, anchor: Anchor, scene: SceneType, room: [f64; 
                 };
                 along >= len - 2.0 * side_distance(scene, room)
             };
-            backs.len() == 1
-                && (near.len() == 1 || scene == SceneType::Outdoor && spans(backs[0]))
+            backs.len() == 1 && (near.len() == 1 || scene == SceneType::Outdoor && spans(backs[0]))
         }
         Anchor::Corner => {
             if scene == SceneType::Outdoor {
