@@ -117,6 +117,34 @@ fn wall_named(k: usize, p: [f64; 3]) -> Surface {
     }
 }
 
+/// The skirting of walls drawn as `env`'s `surface` says: plain painted walls (the same colour
+/// all over) have a white skirting board; walls of logs, boards, brick, tiles, glass or rock
+/// (a patterned surface, its colour varying from point to point) have none: their foot only
+/// darkens into the crease.
+fn skirting_of(env: &Gaussians, surface: &[Surface]) -> Option<[f32; 3]> {
+    let stride = 3 * env.coeffs();
+    let (mut sum, mut sum2, mut count) = (0.0f64, 0.0f64, 0usize);
+    for (i, s) in surface.iter().enumerate().take(env.len()) {
+        if !matches!(s, Surface::Wall(..)) {
+            continue;
+        }
+        let dc = &env.sh[i * stride..i * stride + 3];
+        let rgb = dc.iter().map(|&c| SH_C0 * f64::from(c) + 0.5);
+        let y: f64 = rgb.zip([0.2126, 0.7152, 0.0722]).map(|(c, w)| c * w).sum();
+        (sum, sum2, count) = (sum + y, sum2 + y * y, count + 1);
+    }
+    if count == 0 {
+        return Some(SKIRTING);
+    }
+    let mean = sum / count as f64;
+    let spread = (sum2 / count as f64 - mean * mean).max(0.0).sqrt();
+    (spread <= PLAIN_WALL * mean.max(1e-6)).then_some(SKIRTING)
+}
+
+/// The most a plain painted wall's luminance varies from point to point, as a share of its
+/// mean (a trace of speckle; boards, bricks and tiles vary by a tenth and more).
+const PLAIN_WALL: f64 = 0.04;
+
 /// Bakes light into the environment cloud `env` of a draft (see the module doc); the openings'
 /// own surfels are appended. Outdoors only the ground gets contact shadows. A frame loop keeps
 /// a [`DraftLight`] instead, which re-computes only the shadows of objects that moved.
@@ -194,6 +222,7 @@ impl DraftLight {
             }
         }
         let n = env.len();
+        let skirting = skirting_of(&env, &surface);
         let (mut room_k, mut least_k, mut paint) = (vec![1.0; n], vec![0.0; n], vec![None; n]);
         let [hx, hy] = [0.5 * room[0], 0.5 * room[1]];
         let (mut floor, mut walls) = (vec![], vec![]);
@@ -228,7 +257,7 @@ impl DraftLight {
                     };
                     *k *= 1.0 - 0.2 * (-(along - u.abs()).max(0.0) / 0.25).exp();
                     if z < SKIRTING_H {
-                        paint[i] = Some(SKIRTING);
+                        paint[i] = skirting;
                     }
                     for o in openings.iter().filter(|o| o.wall == side) {
                         if let Some((rgb, inside)) = super::openings::paint(o, side, u, z) {

@@ -214,3 +214,54 @@ fn an_opening_is_drawn_by_its_own_straight_edged_surfels() {
             && (hi as f64 - (-0.5 + outline)).abs() < 0.012
     );
 }
+
+/// Blue over red of the lit wall points of `env` between heights `z0` and `z1` (white is about
+/// 1, a warm timber well under it, a pale blue paint over it).
+fn wall_band(env: &Gaussians, room: [f64; 3], z0: f64, z1: f64) -> f64 {
+    let (mut sum, mut n) = ([0.0; 3], 0);
+    for (i, m) in env.means.iter().enumerate() {
+        let p = m.map(f64::from);
+        let at_wall = (0.5 * room[1] - p[1].abs()).abs() < 0.02;
+        if at_wall && p[2] > z0 && p[2] < z1 && p[0].abs() < 0.3 * room[0] {
+            for (k, s) in sum.iter_mut().enumerate() {
+                *s += 0.5 + SH_C0 * f64::from(env.sh[3 * i + k]);
+            }
+            n += 1;
+        }
+    }
+    assert!(n > 10, "{n} wall points");
+    sum[2] / sum[0]
+}
+
+#[test]
+fn a_painted_wall_has_a_white_skirting_and_a_log_wall_none() {
+    let room = [5.0, 4.0, 2.8];
+    let opts = super::super::EnvOptions {
+        density: 900.0,
+        ..Default::default()
+    };
+    let lit = |text: &str| {
+        let c = super::super::draft_colours(SceneType::Indoor, text);
+        let mut env = super::super::init_environment(SceneType::Indoor, room, &c, &opts).env;
+        bake_light(&mut env, SceneType::Indoor, room, &[], &[]);
+        let (foot, above) = (
+            wall_band(&env, room, 0.0, 0.07),
+            wall_band(&env, room, 0.15, 0.3),
+        );
+        (foot, above)
+    };
+    // pale blue paint above a white skirting board
+    let (foot, above) = lit("a kids room with a bunk bed");
+    assert!(
+        above > 1.1 && (foot - 0.96).abs() < 0.05,
+        "painted: foot {foot:.2}, above {above:.2}"
+    );
+    // logs and rock run down to the floor
+    for text in ["a log cabin with a wood stove", "a cave with a campfire"] {
+        let (foot, above) = lit(text);
+        assert!(
+            (foot - above).abs() < 0.1,
+            "{text}: foot {foot:.2}, above {above:.2}"
+        );
+    }
+}
