@@ -33,3 +33,38 @@ fn named_picnic_tables_replace_default_bench_tables_and_their_benches() {
     let s = spec("a sunny beer garden");
     assert!(number(&s, "bench table") > 0 && number(&s, "beer bench") > 0);
 }
+
+/// A table "for N" is the size furnishers give a table for that many (kb/seating.txt), larger
+/// than the usual six-seater for eight or ten, smaller for two or four: eight chairs were
+/// squeezed round a 1.8 m table.
+#[test]
+fn a_table_for_n_is_sized_for_n() {
+    let long = |prompt: &str| {
+        let s = dreamscene::plan::offline::plan_prompt(prompt)
+            .unwrap_or_else(|e| panic!("{prompt}: {e}"))
+            .spec;
+        let o = &s.objects["dining table"];
+        o.size[0].max(o.size[1])
+    };
+    for (prompt, lo, hi) in [
+        (
+            "a family dining room with a table for eight and a dresser",
+            2.1,
+            2.5,
+        ),
+        (
+            "a farmhouse kitchen, a big table for ten in the middle",
+            2.5,
+            3.0,
+        ),
+        ("a dining nook with a table for four", 1.0, 1.3),
+        (
+            "a little dining room with a table for two by the window",
+            0.7,
+            0.9,
+        ),
+    ] {
+        let l = long(prompt);
+        assert!((lo..=hi).contains(&l), "{prompt}: {l} m long");
+    }
+}

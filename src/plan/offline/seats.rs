@@ -167,11 +167,10 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
                     sizes.insert(table.clone(), big);
                     laid.insert(table.clone(), (seat.clone(), list));
                 }
-                // a usual table that seats them keeps its size unless a smaller one is laid for them
-                (_, _, Some(size), Some(o))
-                    if size[0] * size[1] < o.size[0] * o.size[1]
-                        || capacity(table, &seat, o.size).is_some_and(|c| c < most) =>
-                {
+                // a table laid for them is the size furnishers give a table for that many
+                // (kb/seating.txt), smaller or larger than the usual one: eight do not squeeze
+                // round a six-seater that the seat rules would fit them to
+                (_, _, Some(size), Some(_)) => {
                     sizes.insert(table.clone(), size);
                 }
                 _ => {}

@@ -64,9 +64,13 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                 sizes.insert(cat.clone(), size);
             } else if m.known {
                 // "a huge viewscreen", "a tiny desk": the size words of kb/words.txt scale it.
+                // "a big table for ten": the seats it is laid for set its footprint
+                // (kb/seating.txt), whatever words of size are said of it
+                let laid_for = r.seats_for.iter().any(|&(t, _)| t == i);
                 let f: f64 = m
                     .adjectives
                     .iter()
+                    .filter(|_| !laid_for)
                     .filter_map(|a| lang::object_scale(a))
                     .product();
                 // a word the category's own description has ("small round cafe table") is
@@ -75,7 +79,7 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                 let g: f64 = m
                     .adjectives
                     .iter()
-                    .filter(|a| !described.split(' ').any(|w| w == a.as_str()))
+                    .filter(|a| !laid_for && !described.split(' ').any(|w| w == a.as_str()))
                     .filter_map(|a| lang::object_footprint(a))
                     .product();
                 // "a long table", "a tall bookcase": its longer side, its height
@@ -86,8 +90,6 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                         .filter_map(|a| by(a))
                         .product()
                 };
-                // "a long table for eight": the seats it is laid for set its length
-                let laid_for = r.seats_for.iter().any(|&(t, _)| t == i);
                 let l = if laid_for {
                     1.0
                 } else {
