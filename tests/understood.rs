@@ -90,6 +90,9 @@ fn words_the_plan_does_not_use_are_listed_and_no_others() {
         "{:?}",
         p.understood.unused
     );
+    // the ground a place stands on is read (a rooftop's parapet is drawn round it)
+    let p = plan("a rooftop terrace with two bistro tables and a parasol");
+    assert!(p.understood.unused.is_empty(), "{:?}", p.understood.unused);
 }
 
 #[test]

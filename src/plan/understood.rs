@@ -182,6 +182,9 @@ pub fn unused_words(r: &Reading, styles: &[String]) -> Vec<String> {
             || styles.iter().any(|s| s == w)
             || super::offline::style_word(w).is_some()
             || lang::is_known_word(w)
+            // a word of the ground ("a rooftop terrace") sets where the place is, and the
+            // environment draws it (a rooftop's parapet)
+            || lang::is_ground(w)
             || removes(k)
             || out.iter().any(|x| x == w)
         {
