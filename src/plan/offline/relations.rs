@@ -153,7 +153,11 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         };
         // "40 seats facing a screen" in a lecture hall: its seats face the screen in rows
         use crate::plan::spec::RelationKind::{Opposite, Row};
+        // and so do things the text sets out in rows ("twelve mats in three rows of four, all
+        // facing the instructor's mat"): each row faces it, not each thing its narrow front
+        let in_rows = r.mentions[si].rows > 0 || r.mentions[si].in_rows;
         let rel = match scene {
+            _ if rel == Opposite && in_rows => Row,
             Some(s)
                 if rel == Opposite
                     && s.relations
