@@ -61,3 +61,60 @@ impl Mount {
         }
     }
 }
+
+/// Adds to `g` (a thing drawn as hung on a wall, its foot `drop` metres above the ground) the
+/// posts that hold it up outdoors: one behind the middle of a narrow thing, one behind each end
+/// of a wide one (string lights, a long sign), from a foot plate on the ground to two thirds up
+/// its back; below and just behind its own box.
+pub(super) fn posts(
+    g: &mut crate::splat::Gaussians,
+    size: [f64; 3],
+    drop: f64,
+    palette: &super::materials::Palette,
+    spacing: f64,
+    seed: u64,
+) {
+    let [w, d, h] = size;
+    let r = (0.02 * (drop + h)).clamp(0.03, 0.06);
+    let top = drop + 0.67 * h;
+    // a box deep enough for the posts behind the thing's back
+    let box_d = d + 4.0 * r + 0.02;
+    let y = -d / 2.0 - r - 0.005;
+    let xs: Vec<f64> = if w > 1.2 {
+        vec![-(w / 2.0 - r), w / 2.0 - r]
+    } else {
+        vec![0.0]
+    };
+    let mut b = super::builder::Builder {
+        parts: vec![],
+        w,
+        d: box_d,
+        h: top,
+        goods: None,
+        animal: None,
+        bird: None,
+        variant: 0,
+        mount: Mount::Stand,
+    };
+    for x in xs {
+        b.cylinder(super::Role::Metal, [x, y, 0.0], r, top);
+        b.cuboid(
+            super::Role::Metal,
+            [x - 2.5 * r, y - 2.5 * r, 0.0],
+            [x + 2.5 * r, y + 2.5 * r, 0.02],
+        );
+    }
+    let p = super::sample(
+        &b.parts,
+        palette,
+        [w, box_d, top],
+        spacing.min(0.03),
+        seed ^ 0x9057,
+    );
+    g.means
+        .extend(p.means.iter().map(|m| [m[0], m[1], m[2] - drop as f32]));
+    g.scales.extend(p.scales);
+    g.rotations.extend(p.rotations);
+    g.opacities.extend(p.opacities);
+    g.sh.extend(p.sh);
+}
