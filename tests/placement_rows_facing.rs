@@ -59,3 +59,82 @@ fn rows_said_to_face_a_thing_face_it_as_rows() {
         }
     }
 }
+
+/// The least distance (m) from the front face of the first row to the lectern the rows face:
+/// the ends of a row of five with an aisle see it within about 40 degrees only from so far.
+const VIEW: f64 = 1.3;
+
+/// Rows facing a lectern in a room whose board hangs at the front: the lectern stands before
+/// the board, a passage from it, and the first row a view's depth before the lectern (it stood
+/// level with the first row, which saw it side-on); the lectern is the speaker's place, so the
+/// room's default teacher's desk and its chair are left out (the chairs asked are all the
+/// chairs).
+#[test]
+fn rows_facing_a_lectern_keep_a_view_of_it_and_it_stands_before_the_board() {
+    for prompt in [
+        "a seminar room with eighteen chairs in three rows facing a lectern",
+        "a training room with a lectern and fifteen chairs in three rows facing it",
+    ] {
+        let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+        assert!(
+            !p.spec.objects.contains_key("teacher desk"),
+            "{prompt}: {:?}",
+            p.spec.objects.keys()
+        );
+        let chairs: u32 = p
+            .spec
+            .objects
+            .iter()
+            .filter(|(c, _)| c.contains("chair"))
+            .map(|(_, o)| o.number)
+            .sum();
+        assert!(chairs == 18 || chairs == 15, "{prompt}: {chairs} chairs");
+        for seed in 0..2 {
+            let l = layout(&p.spec, LayoutOptions::seeded(seed)).unwrap();
+            let lectern = l.objects.iter().find(|o| o.category == "lectern").unwrap();
+            // the way the lectern faces: the rows stand that way from it
+            let f = {
+                let a = lectern.yaw.to_radians();
+                [-a.sin(), a.cos()]
+            };
+            let along = |o: &dreamscene::plan::spec::PlacedObject| {
+                (o.position[0] - lectern.position[0]) * f[0]
+                    + (o.position[1] - lectern.position[1]) * f[1]
+            };
+            let first = l
+                .objects
+                .iter()
+                .filter(|o| o.category.contains("chair"))
+                .map(|o| along(o) - 0.5 * o.size[1])
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                first - 0.5 * lectern.size[1] >= VIEW,
+                "{prompt} ({seed}): the first row is {:.2} m from the lectern's front",
+                first - 0.5 * lectern.size[1]
+            );
+            if let Some(board) = l.objects.iter().find(|o| o.category.contains("board")) {
+                assert!(
+                    along(board) < -0.5,
+                    "{prompt} ({seed}): the lectern is not before the board"
+                );
+            }
+        }
+    }
+}
+
+/// Things said to stand behind what rows face ("two candle stands behind it") have room
+/// between it and the wall: the altar stands off the wall by their depth (both stood in the
+/// aisle, or one did, before).
+#[test]
+fn what_stands_behind_the_front_has_room_there() {
+    let prompt = "a small chapel with an altar, two candle stands behind it and six pews";
+    let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+    for seed in 0..2 {
+        let l = layout(&p.spec, LayoutOptions::seeded(seed)).unwrap();
+        assert!(
+            !l.unsatisfied.iter().any(|u| u.subject.contains("candle")),
+            "{prompt} ({seed}): {:?}",
+            l.unsatisfied
+        );
+    }
+}

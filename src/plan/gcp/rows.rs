@@ -50,8 +50,9 @@ struct Block {
     target_width: f64,
     /// What stands at the front, centred before the rows, the most telling first: the
     /// target and the fronts.txt categories before it that the scene holds (a stage, then
-    /// the screen above it).
-    at_front: Vec<String>,
+    /// the screen above it), each with its depth from the front wall: 0, or for a target that
+    /// is not the most telling (a lectern before a board) the depth of what stands BEFORE them.
+    at_front: Vec<(String, f64)>,
 }
 
 /// kb/fronts.txt: what rows face, most telling first.
@@ -221,14 +222,49 @@ fn block(spec: &SceneSpec, cat: &str) -> Option<Block> {
         },
     };
     b.front = b.front.max(0.55 * b.width());
-    // the ends of the first row see what stands at the front within SIGHT of straight ahead
-    for t in at_front.iter().filter_map(|t| spec.objects.get(t)) {
+    // the ends of the first row see what stands at the front within SIGHT of straight ahead;
+    // a target on the floor that is not the most telling front thing (a lectern before a
+    // board) stands a passage before it, and before what stands BEFORE it (a teacher's desk)
+    let table = super::classes::Placements::builtin();
+    let hung = |c: &str| matches!(table.class(c), super::classes::Class::OnWall(_));
+    // the depth of the front things at the wall before the target, and a passage before them
+    let at_wall = at_front
+        .iter()
+        .filter(|c| Some(*c) != target.as_ref())
+        .filter_map(|c| spec.objects.get(c))
+        .map(|t| t.size[1] + PASSAGE)
+        .fold(0.0, f64::max);
+    let mut placed_at = vec![];
+    for (k, name) in at_front.into_iter().enumerate() {
+        // (a target that stands on another thing, an altar on a platform, is set there)
+        let on_other = spec
+            .relations
+            .iter()
+            .any(|r| r.relation == RelationKind::Over && base(&r.subject) == name);
+        let from_wall = if k > 0 && Some(&name) == target.as_ref() && !hung(&name) && !on_other {
+            before.max(at_wall)
+        } else {
+            0.0
+        };
+        // what stands BEHIND it (candle stands behind an altar) stands between it and the wall
+        let behind = spec
+            .relations
+            .iter()
+            .filter(|r| r.relation == RelationKind::Behind && base(&r.object) == name)
+            .filter_map(|r| spec.objects.get(base(&r.subject)))
+            .map(|s| s.size[1] + super::compose::FRONT_LEGROOM + 0.05)
+            .fold(0.0, f64::max);
+        let from_wall = from_wall + if hung(&name) { 0.0 } else { behind };
+        let Some(t) = spec.objects.get(&name) else {
+            continue;
+        };
+        placed_at.push((name, from_wall));
         let lateral = (0.5 * b.width() - 0.5 * t.size[0]).max(0.0);
         b.front = b
             .front
-            .max(t.size[1] + (lateral / SIGHT.to_radians().tan()).max(1.0));
+            .max(from_wall + t.size[1] + (lateral / SIGHT.to_radians().tan()).max(1.0));
     }
-    b.at_front = at_front;
+    b.at_front = placed_at;
     Some(b)
 }
 
@@ -282,9 +318,9 @@ impl Problem {
                     placed[i] = Some(p);
                 }
                 let mut members = ids.clone();
-                for t in &b.at_front {
+                for (t, from_wall) in &b.at_front {
                     if let Some(&t) = self.index.get(&format!("{t}1")) {
-                        self.place_front(t, f, placed);
+                        self.place_front(t, f, *from_wall, placed);
                         members.push(t);
                     }
                 }
@@ -312,16 +348,17 @@ impl Problem {
         bands
     }
 
-    /// Stands what the rows face (instance `t`) against the front wall, centred before the
-    /// rows and turned to them, when it is free there; else the search places it.
-    fn place_front(&self, t: usize, f: [f64; 2], placed: &mut [Option<Pose>]) {
+    /// Stands what the rows face (instance `t`) `from_wall` before the front wall (against it
+    /// when 0), centred before the rows and turned to them, when it is free there; else the
+    /// search places it.
+    fn place_front(&self, t: usize, f: [f64; 2], from_wall: f64, placed: &mut [Option<Pose>]) {
         if placed[t].is_some() {
             return;
         }
         let [w, d, _] = self.room;
         let along = if f[0] == 0.0 { d } else { w };
         let s = self.inst[t].size;
-        let v = 0.5 * along - 0.02 - 0.5 * s[1];
+        let v = 0.5 * along - 0.02 - from_wall - 0.5 * s[1];
         let p = Pose {
             c: [v * f[0], v * f[1]],
             yaw: yaw_facing([-f[0], -f[1]]),

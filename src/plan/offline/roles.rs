@@ -355,7 +355,14 @@ pub(super) fn take_away(d: &mut Draft) {
                 .filter_map(|m| m.said_as.clone()),
         )
         .collect();
-    notes.extend(crate::plan::roles::apply(counts, &filling, r.exclusive));
+    let replaced = crate::plan::roles::apply(counts, &filling, r.exclusive);
+    let any_replaced = !replaced.is_empty();
+    notes.extend(replaced);
+    // the seat of a default a named thing replaced goes with it (the teacher's chair of the
+    // teacher's desk a named lectern replaced)
+    if any_replaced {
+        notes.extend(without_their_partners(*scene, counts, named, lang::is_seat));
+    }
     // "the invigilator's desk": a particular one takes the place of the scene's single
     // default of its kind (the teacher's desk).
     for (m, cat) in r.mentions.iter().zip(cats.iter()) {
