@@ -179,9 +179,8 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
             }
             // things asked in rows: wide and deep enough for the block and its front
             let need = crate::plan::gcp::rows::room_for_rows(spec, [room.size[0], room.size[1]]);
-            for (v, n) in room.size.iter_mut().zip(need) {
-                *v = v.max((n * 10.0).ceil() / 10.0);
-            }
+            let need = need.map(|n| (n * 10.0).ceil() / 10.0);
+            room.size = rows_room([room.size[0], room.size[1], room.size[2]], need);
             room
         }
     };
@@ -192,6 +191,23 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
         ));
     }
     room
+}
+
+/// The room `size` chosen by floor area made wide and deep enough for the blocks of rows
+/// (`need`); when only one side must grow, the other gives back what keeps the floor area (the
+/// rows already hold their share of it), down to what the rows need: twelve yoga mats in three
+/// rows were an 8.9 x 12.2 m studio, the square of their area drawn out to the rows' depth.
+fn rows_room(size: [f64; 3], need: [f64; 2]) -> [f64; 3] {
+    let area = size[0] * size[1];
+    let mut out = [size[0].max(need[0]), size[1].max(need[1]), size[2]];
+    for k in 0..2 {
+        let o = 1 - k;
+        if out[k] > size[k] && out[o] == size[o] {
+            let keep = ((area / out[k]) * 10.0).ceil() / 10.0;
+            out[o] = keep.max(need[o]).min(size[o]);
+        }
+    }
+    out
 }
 
 /// Long side over short side of a room the text calls long or narrow (a hallway, a gallery):
@@ -383,4 +399,28 @@ fn unknown_size(kb: &KnowledgeBase, name: &str) -> ([f64; 3], String) {
 
 fn fmt_size(s: [f64; 3]) -> String {
     format!("{} x {} x {} m", s[0], s[1], s[2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rows_room;
+
+    #[test]
+    fn rows_that_deepen_a_room_narrow_it_to_keep_its_area() {
+        // deeper for the rows: the width gives back the area, down to the rows' width
+        let r = rows_room([8.9, 8.9, 2.8], [5.7, 12.2]);
+        assert_eq!(r[1], 12.2);
+        assert!(r[0] >= 5.7 && r[0] * r[1] <= 8.9 * 8.9 + 1.0, "{r:?}");
+        assert!((r[0] - 6.5).abs() < 0.05, "{r:?}");
+        // never below what the rows need
+        assert_eq!(rows_room([8.0, 8.0, 2.8], [7.5, 20.0])[0], 7.5);
+        // both sides grow: nothing to give back
+        assert_eq!(rows_room([5.0, 5.0, 2.8], [6.0, 7.0]), [6.0, 7.0, 2.8]);
+        // the rows fit: unchanged
+        assert_eq!(rows_room([6.0, 7.0, 2.8], [4.0, 5.0]), [6.0, 7.0, 2.8]);
+        // wider for the rows: the depth gives back
+        let r = rows_room([6.0, 6.0, 2.8], [9.0, 3.0]);
+        assert_eq!(r[0], 9.0);
+        assert!((r[1] - 4.0).abs() < 0.05, "{r:?}");
+    }
 }
