@@ -29,7 +29,7 @@ mod runs;
 mod score;
 mod spacing;
 mod staff;
-mod tables;
+pub(crate) mod tables;
 mod walls;
 mod windows;
 use attempt::attempt_layout;

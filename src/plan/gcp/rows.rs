@@ -276,7 +276,14 @@ fn base(id: &str) -> &str {
 /// The smallest [w, d] that holds every block of `spec` facing +y (a room chosen by floor area
 /// alone can be too narrow for ten seats abreast) and every floor of tables.
 pub fn room_for_rows(spec: &SceneSpec, base: [f64; 2]) -> [f64; 2] {
-    let mut need = super::tables::room_for_tables(spec, base);
+    let t = super::tables::room_for_tables(spec, base);
+    let b = room_for_blocks(spec);
+    [t[0].max(b[0]), t[1].max(b[1])]
+}
+
+/// The smallest [w, d] that holds every block of rows of `spec` facing +y, [0, 0] when none.
+pub fn room_for_blocks(spec: &SceneSpec) -> [f64; 2] {
+    let mut need = [0.0f64, 0.0f64];
     for cat in spec.objects.keys() {
         if let Some(b) = block(spec, cat) {
             let [a, l] = b.needs();

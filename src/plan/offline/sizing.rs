@@ -178,9 +178,15 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
                 room.size = drawn_out(room.size);
             }
             // things asked in rows: wide and deep enough for the block and its front
-            let need = crate::plan::gcp::rows::room_for_rows(spec, [room.size[0], room.size[1]]);
-            let need = need.map(|n| (n * 10.0).ceil() / 10.0);
-            room.size = rows_room([room.size[0], room.size[1], room.size[2]], need);
+            // (floors of tables grow it only: the lattice keeps the walls' band for the rest)
+            let up = |n: f64| (n * 10.0).ceil() / 10.0;
+            let need =
+                crate::plan::gcp::tables::room_for_tables(spec, [room.size[0], room.size[1]]);
+            for (v, n) in room.size.iter_mut().zip(need) {
+                *v = v.max(up(n));
+            }
+            let need = crate::plan::gcp::rows::room_for_blocks(spec).map(up);
+            room.size = rows_room(room.size, need);
             room
         }
     };
@@ -193,10 +199,14 @@ pub(super) fn room(d: &mut Draft, spec: &SceneSpec) -> Room {
     room
 }
 
+/// Room kept beside what rows need when a side gives back area (m).
+const ROWS_SLACK: f64 = 0.6;
+
 /// The room `size` chosen by floor area made wide and deep enough for the blocks of rows
 /// (`need`); when only one side must grow, the other gives back what keeps the floor area (the
-/// rows already hold their share of it), down to what the rows need: twelve yoga mats in three
-/// rows were an 8.9 x 12.2 m studio, the square of their area drawn out to the rows' depth.
+/// rows already hold their share of it), down to what the rows need and [`ROWS_SLACK`] (a door
+/// on the front wall still leaves the front thing its place): twelve yoga mats in three rows
+/// were an 8.9 x 12.2 m studio, the square of their area drawn out to the rows' depth.
 fn rows_room(size: [f64; 3], need: [f64; 2]) -> [f64; 3] {
     let area = size[0] * size[1];
     let mut out = [size[0].max(need[0]), size[1].max(need[1]), size[2]];
@@ -204,7 +214,7 @@ fn rows_room(size: [f64; 3], need: [f64; 2]) -> [f64; 3] {
         let o = 1 - k;
         if out[k] > size[k] && out[o] == size[o] {
             let keep = ((area / out[k]) * 10.0).ceil() / 10.0;
-            out[o] = keep.max(need[o]).min(size[o]);
+            out[o] = keep.max(need[o] + ROWS_SLACK).min(size[o]);
         }
     }
     out
@@ -412,8 +422,13 @@ mod tests {
         assert_eq!(r[1], 12.2);
         assert!(r[0] >= 5.7 && r[0] * r[1] <= 8.9 * 8.9 + 1.0, "{r:?}");
         assert!((r[0] - 6.5).abs() < 0.05, "{r:?}");
-        // never below what the rows need
-        assert_eq!(rows_room([8.0, 8.0, 2.8], [7.5, 20.0])[0], 7.5);
+        assert!(r[0] >= 5.7 + super::ROWS_SLACK, "{r:?}");
+        // never below what the rows need, with some room beside
+        assert_eq!(
+            rows_room([9.0, 8.0, 2.8], [7.5, 20.0])[0],
+            7.5 + super::ROWS_SLACK
+        );
+        assert_eq!(rows_room([7.8, 8.0, 2.8], [7.5, 20.0])[0], 7.8);
         // both sides grow: nothing to give back
         assert_eq!(rows_room([5.0, 5.0, 2.8], [6.0, 7.0]), [6.0, 7.0, 2.8]);
         // the rows fit: unchanged
@@ -422,5 +437,7 @@ mod tests {
         let r = rows_room([6.0, 6.0, 2.8], [9.0, 3.0]);
         assert_eq!(r[0], 9.0);
         assert!((r[1] - 4.0).abs() < 0.05, "{r:?}");
+        let r = rows_room([6.0, 6.0, 2.8], [9.0, 3.8]);
+        assert!((r[1] - 4.4).abs() < 0.05, "{r:?}");
     }
 }
