@@ -120,6 +120,14 @@ pub fn is_generic(name: &str) -> bool {
     roles().generic.iter().any(|n| n == name)
 }
 
+/// Whether `category` is there to hold `held` (`kb/roles.txt`: holds): a toy chest holds toys.
+pub fn holds(category: &str, held: &str) -> bool {
+    roles()
+        .holds
+        .iter()
+        .any(|(c, h)| c == category && h.iter().any(|x| x == held))
+}
+
 /// Whether `category` has a `part` of its own (`kb/roles.txt`: has): a salon station's lit
 /// mirror is the mirror a chair at it faces.
 pub fn has_part(category: &str, part: &str) -> bool {

@@ -25,6 +25,7 @@ const MOST_WORDS: usize = 3;
 pub(super) fn read_contents(r: &mut Reading) {
     let t = r.text.clone();
     let starts: Vec<usize> = r.mentions.iter().map(|m| m.start).collect();
+    let mut held_inside = vec![];
     for (i, m) in r.mentions.iter().enumerate() {
         if m.negated {
             continue;
@@ -55,12 +56,36 @@ pub(super) fn read_contents(r: &mut Reading) {
         }
         let end = end.min(t.len()).max(from);
         let end = from + t[from..end].trim_end().len();
+        // "a toy box full of toys": what the thing is there to hold (kb/roles.txt holds), said
+        // after "full of" and not after a bare "of", is inside it, not a thing of its own
+        if intro != "of" {
+            let held = r.mentions.iter().position(|o| {
+                o.start >= from
+                    && t[from..o.start]
+                        .split(' ')
+                        .filter(|w| !w.is_empty())
+                        .count()
+                        <= MOST_WORDS
+                    && !o.reference
+                    && crate::plan::roles::holds(&m.category, &o.category)
+            });
+            if let Some(j) = held {
+                held_inside.push((i, j, format!("{intro} {}", &t[from..r.mentions[j].end])));
+                continue;
+            }
+        }
         if words == 0 || starts.iter().any(|&s| s >= from && s < end) {
             continue;
         }
         let span_start = m.end + 1;
         r.contents
             .push((i, format!("{intro} {}", &t[from..end]), span_start, end));
+    }
+    for (i, j, said) in held_inside {
+        let end = r.mentions[j].end;
+        r.mentions[j].reference = true;
+        let span_start = r.mentions[i].end + 1;
+        r.contents.push((i, said, span_start, end));
     }
 }
 
@@ -84,6 +109,39 @@ mod tests {
             contents("a study with a shelf filled with old paperbacks, and a desk"),
             ["filled with old paperbacks"]
         );
+    }
+
+    /// What a thing is there to hold (kb/roles.txt holds), said after "full of", is inside it:
+    /// no pile of toys beside the toy box; after a bare "of", or said on its own, it is a thing.
+    #[test]
+    fn what_a_container_holds_is_inside_it() {
+        let kb = KnowledgeBase::builtin();
+        let things = |text: &str| -> Vec<String> {
+            let r = super::super::read(kb, text);
+            r.mentions
+                .iter()
+                .filter(|m| !m.reference)
+                .map(|m| m.category.clone())
+                .collect()
+        };
+        for (text, inside) in [
+            ("a nursery with a toy chest full of toys", "full of toys"),
+            (
+                "a kid's room with a toy box stuffed with soft toys and a bed",
+                "stuffed with soft toys",
+            ),
+        ] {
+            assert_eq!(contents(text), [inside], "{text}");
+            let t = things(text);
+            assert!(
+                !t.iter().any(|c| c == "toys" || c == "teddy bear"),
+                "{text}: {t:?}"
+            );
+            assert!(t.iter().any(|c| c == "toy chest"), "{text}: {t:?}");
+        }
+        // toys of their own stay things
+        let t = things("a playroom with a toy chest and toys on the rug");
+        assert!(t.iter().any(|c| c == "toys"), "{t:?}");
     }
 
     #[test]
