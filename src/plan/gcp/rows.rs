@@ -1,7 +1,8 @@
 //! Things asked in rows ("four rows of six desks", "twelve desks in three rows", "a row of five
 //! treadmills"): one block of aligned rows, every instance turned the same way, toward the front
 //! of the room. What the rows face (their OPPOSITE or ROW partner, else the first category of
-//! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall,
+//! kb/fronts.txt the scene holds: a stage, altar, screen, board) stands at the front wall
+//! (a passage before it when something more telling is there: a lectern before the board),
 //! centred before them, with the fronts.txt things more telling than it that the scene holds
 //! (a stage below the screen); the front band is deep enough that the ends of the first row
 //! see them within 38° of straight ahead. Row 0 is nearest the front; a row holds `ceil(n / rows)` instances or
@@ -50,8 +51,9 @@ struct Block {
     target_width: f64,
     /// What stands at the front, centred before the rows, the most telling first: the
     /// target and the fronts.txt categories before it that the scene holds (a stage, then
-    /// the screen above it), each with its depth from the front wall: 0, or for a target that
-    /// is not the most telling (a lectern before a board) the depth of what stands BEFORE them.
+    /// the screen above it), each with how far before the front wall it stands: 0; for a floor
+    /// target that is not the most telling (a lectern before a board) a passage before the
+    /// others and before what stands BEFORE them; more by the depth of what stands BEHIND it.
     at_front: Vec<(String, f64)>,
 }
 
