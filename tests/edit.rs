@@ -432,6 +432,48 @@ fn add_places_a_free_object_next_to_another_and_remove_takes_it_out() {
     assert_eq!(lamps(&read_scene(&d).unwrap()), 1, "undo takes back one");
 }
 
+/// What `add` places is held up as the plan holds it up: a mirror and a wall clock hang on a
+/// wall at their heights (their drawings with no foot down to the floor), a table lamp stands on
+/// the nightstand, not on the floor.
+#[test]
+fn add_hangs_wall_things_and_puts_a_lamp_on_its_support() {
+    let (d, _) = draft("add-mount");
+    for (text, id) in [
+        ("a mirror", "mirror1"),
+        ("a wall clock", "wall clock1"),
+        ("a table lamp", "table lamp1"),
+    ] {
+        ok(&edit(&d, &["add", text, "--no-render"]));
+        let l: Layout =
+            serde_json::from_str(&std::fs::read_to_string(d.join("layout.json")).unwrap())
+                .unwrap();
+        let o = l.objects.iter().find(|o| o.id == id).expect("added");
+        let b = Box2::of(o);
+        let wd = dreamscene::plan::check::wall_distances(&b, l.room.size);
+        let r = range_of(&d, id);
+        let scene = read_ply(&d.join("scene.ply")).unwrap();
+        let low = scene.means[r].iter().map(|m| m[2]).fold(f32::MAX, f32::min);
+        if id == "table lamp1" {
+            let ns = l.objects.iter().find(|o| o.id == "nightstand1").unwrap();
+            let nb = Box2::of(ns);
+            let q = nb.local([o.position[0], o.position[1]]);
+            assert!(
+                (o.position[2] - ns.size[2]).abs() < 0.02
+                    && q[0].abs() <= nb.half[0]
+                    && q[1].abs() <= nb.half[1],
+                "the lamp stands on the nightstand: {:?} (nightstand at {:?})",
+                o.position,
+                ns.position
+            );
+        } else {
+            assert!(o.position[2] > 0.9, "{id} hangs: z = {}", o.position[2]);
+            let near = wd.iter().cloned().fold(f64::MAX, f64::min);
+            assert!(near < 0.05, "{id} on a wall: {wd:?}");
+            assert!(low > 0.8, "{id}'s drawing reaches down to {low} m");
+        }
+    }
+}
+
 /// Exports instance `id` alone (`export --only`, scene frame, PLY) and reads it back.
 fn export_only(dir: &Path, id: &str) -> (Gaussians, dreamscene::splat::ply::Labels) {
     let out = dir.with_extension("only.ply");

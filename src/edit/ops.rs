@@ -408,44 +408,49 @@ pub fn replace_partners(
     Ok(out)
 }
 
-/// A SceneSpec of the present instances for GCP, one category per instance (its own size and
-/// anchor), keyed so that instance `id` is called `key[id]`; `add` appends one more instance.
+/// A SceneSpec of the present instances for GCP under their own categories (each instance
+/// with its own size and anchor), so the placement classes hold for them as in the plan: a
+/// mirror added or placed again hangs on a wall at its height, a lamp goes on a support. The
+/// instances are renumbered per category; instance `id` is called `key[id]`. `add` appends one
+/// more instance (`id`, category, size, anchor, its relations).
 fn gcp_spec(
     state: &SceneState,
-    add: Option<(&str, [f64; 3], Anchor, Vec<Relation>)>,
+    add: Option<(&str, &str, [f64; 3], Anchor, Vec<Relation>)>,
 ) -> Result<(SceneSpec, BTreeMap<String, String>)> {
-    let mut objects = BTreeMap::new();
-    let mut anchors = BTreeMap::new();
-    let mut key = BTreeMap::new();
-    let mut entries: Vec<(String, [f64; 3], Anchor)> = state
+    let mut entries: Vec<(String, String, [f64; 3], Anchor)> = state
         .scene
         .objects
         .iter()
         .map(|o| {
             let size = state.sizes.get(&o.id).copied().unwrap_or([0.0; 3]);
             let anchor = state.anchors.get(&o.id).copied().unwrap_or(Anchor::Others);
-            (o.id.clone(), size, anchor)
+            (o.id.clone(), o.category.clone(), size, anchor)
         })
         .collect();
     let mut relations = state.relations.clone();
-    if let Some((id, size, anchor, rels)) = add {
-        entries.push((id.to_string(), size, anchor));
+    if let Some((id, category, size, anchor, rels)) = add {
+        entries.push((id.to_string(), category.to_string(), size, anchor));
         relations.extend(rels);
     }
-    for (id, size, anchor) in entries {
-        let cat = format!("{id}_");
-        let inst = format!("{cat}1");
+    let mut objects: BTreeMap<String, ObjectSpec> = BTreeMap::new();
+    let mut anchors = BTreeMap::new();
+    let mut key = BTreeMap::new();
+    for (id, cat, size, anchor) in entries {
         let size = size.map(|v| v.max(1e-3));
-        objects.insert(
-            cat,
-            ObjectSpec {
-                number: 1,
-                size,
-                description: id.clone(),
-                rows: 0,
-                sizes: vec![],
-            },
-        );
+        let o = objects.entry(cat.clone()).or_insert_with(|| ObjectSpec {
+            number: 0,
+            size,
+            description: cat.clone(),
+            rows: 0,
+            sizes: vec![],
+        });
+        o.number += 1;
+        o.sizes.push(size);
+        // (`size` is the largest instance's, as the spec has it where instances differ)
+        if size[0] * size[1] > o.size[0] * o.size[1] {
+            o.size = size;
+        }
+        let inst = format!("{cat}{}", o.number);
         if anchor != Anchor::Others {
             let anchor = if anchor == Anchor::Corner && state.scene.scene_type == SceneType::Outdoor
             {
@@ -456,6 +461,12 @@ fn gcp_spec(
             anchors.insert(inst.clone(), anchor);
         }
         key.insert(id, inst);
+    }
+    // one size for all: no per-instance list
+    for o in objects.values_mut() {
+        if o.sizes.iter().all(|s| *s == o.size) {
+            o.sizes.clear();
+        }
     }
     let relations = relations
         .iter()
@@ -520,6 +531,16 @@ pub struct Planned {
     pub description: String,
 }
 
+/// How a thing of `category` is held up in the scene `state` holds (its instances as they
+/// are, the new one among them): the mount the layout gives it there (a mirror or a TV with no
+/// stand hangs on a wall), else the knowledge base's.
+pub fn mount_in(state: &SceneState, category: &str) -> crate::shape::Mount {
+    gcp_spec(state, None).map_or_else(
+        |_| crate::shape::Mount::of_category(category),
+        |(spec, _)| crate::shape::Mount::in_scene(&spec, category),
+    )
+}
+
 /// The next free instance id of `category` (`chair3` after `chair1`, `chair2`).
 pub fn next_id(state: &SceneState, category: &str) -> String {
     (1..)
@@ -561,7 +582,10 @@ pub fn place_new(
         .into_iter()
         .collect();
     let anchor = anchor.unwrap_or(planned.anchor);
-    let (spec, key) = gcp_spec(state, Some((&id, planned.size, anchor, rels)))?;
+    let (spec, key) = gcp_spec(
+        state,
+        Some((&id, &planned.category, planned.size, anchor, rels)),
+    )?;
     let pins: BTreeMap<String, Pin> = state
         .scene
         .objects

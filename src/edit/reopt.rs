@@ -423,7 +423,7 @@ pub fn add_object(
             gaussians: None,
             seed: state.scene.seed,
             variant: 0,
-            mount: None,
+            mount: Some(super::ops::mount_in(&next, &planned.category)),
         },
     )
     .map_err(|e| EditError::Bad(e.to_string()))?;
