@@ -445,8 +445,7 @@ fn add_hangs_wall_things_and_puts_a_lamp_on_its_support() {
     ] {
         ok(&edit(&d, &["add", text, "--no-render"]));
         let l: Layout =
-            serde_json::from_str(&std::fs::read_to_string(d.join("layout.json")).unwrap())
-                .unwrap();
+            serde_json::from_str(&std::fs::read_to_string(d.join("layout.json")).unwrap()).unwrap();
         let o = l.objects.iter().find(|o| o.id == id).expect("added");
         let b = Box2::of(o);
         let wd = dreamscene::plan::check::wall_distances(&b, l.room.size);

@@ -234,6 +234,7 @@ pub(super) fn read_counts(r: &mut Reading) {
     let tail_re = re(
         r"^[ ,]*(?:(?:[a-z'-]+ ){0,4}?)(?:(each|every|per|apiece|either|both)\b(?: (one|of them|(?:([a-z'-]+) )?(?:side|sides|end|ends|corner|corners|wall)))?)",
     );
+    let each_has = re(r"^ (?:with|having|holding|has|gets|topped with)\b");
     for k in 0..n {
         let m = &r.mentions[k];
         if m.negated || m.reference || m.each_of.is_some() {
@@ -255,6 +256,14 @@ pub(super) fn read_counts(r: &mut Reading) {
             continue;
         }
         let word = c.get(1).map(|g| g.as_str()).unwrap_or("");
+        // "two tables by the window each with 2 chairs": "each with" says what each of them
+        // has (read below), not that there are this many of it for each of something else
+        if word == "each"
+            && c.get(2).is_none()
+            && each_has.is_match(&tail[c.get(1).map_or(0, |g| g.end())..])
+        {
+            continue;
+        }
         // "three booths next to each other", "two armchairs facing each other": reciprocal,
         // not distributive
         if word == "each" && tail[c.get(1).map_or(0, |g| g.end())..].starts_with(" other") {
@@ -278,10 +287,15 @@ pub(super) fn read_counts(r: &mut Reading) {
             // "two cannons on each side": as many as the parts, times a named owner if any
             // ("a bench down each side of every table").
             let rest = &tail[after_each..];
-            let owner = if rest.trim_start().starts_with("of ") {
+            let of_at = m.end + after_each + (rest.len() - rest.trim_start().len()) + 3;
+            let pronoun = re(r"^of (?:it|them|this|that)\b").is_match(rest.trim_start());
+            let owner = if rest.trim_start().starts_with("of ") && !pronoun {
+                // the owner is named right after "of" ("of every table"), never the thing
+                // itself said again later ("a lamp on each nightstand")
                 (k + 1..n)
-                    .find(|&j| r.mentions[j].reference && r.mentions[j].start <= next + 40)
+                    .find(|&j| r.mentions[j].reference && r.mentions[j].start <= of_at + 25)
                     .map(|j| referent(r, j))
+                    .filter(|&o| o != k)
             } else if k > 0
                 && !t[r.mentions[k - 1].end..m.start].contains(['.', ';'])
                 && !rooms_part(lead, what.unwrap_or(""))
