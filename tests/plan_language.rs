@@ -219,6 +219,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             description: "A DSLR photo of a crate".into(),
             rows: 0,
             sizes: vec![],
+            on_wall: None,
         },
     );
     objects.insert(
@@ -229,6 +230,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             description: "A DSLR photo of a barrel".into(),
             rows: 0,
             sizes: vec![],
+            on_wall: None,
         },
     );
     objects.insert(
@@ -239,6 +241,7 @@ fn named_objects_are_never_dropped_and_what_cannot_fit_is_refused() {
             description: "A DSLR photo of a chest".into(),
             rows: 0,
             sizes: vec![],
+            on_wall: None,
         },
     );
     let mut spec = SceneSpec {

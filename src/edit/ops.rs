@@ -435,6 +435,11 @@ fn gcp_spec(
     let mut objects: BTreeMap<String, ObjectSpec> = BTreeMap::new();
     let mut anchors = BTreeMap::new();
     let mut key = BTreeMap::new();
+    // what the plan hung on a wall that its kind stands on the floor stays hung
+    let planned: Option<SceneSpec> = std::fs::read_to_string(state.dir.join("spec.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok());
+    let hung = |cat: &str| planned.as_ref()?.objects.get(cat)?.on_wall;
     for (id, cat, size, anchor) in entries {
         let size = size.map(|v| v.max(1e-3));
         let o = objects.entry(cat.clone()).or_insert_with(|| ObjectSpec {
@@ -443,6 +448,7 @@ fn gcp_spec(
             description: cat.clone(),
             rows: 0,
             sizes: vec![],
+            on_wall: hung(&cat),
         });
         o.number += 1;
         o.sizes.push(size);

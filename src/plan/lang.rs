@@ -112,6 +112,9 @@ pub struct Reading {
     /// "six chairs along the wall", "two bookcases against the back wall": mentions asked to
     /// stand along one wall (a run there), not spread over the walls ("lining the walls").
     pub one_wall: Vec<usize>,
+    /// "a guitar hanging on the wall", "a neon sign on the wall": mentions the text hangs on a
+    /// wall (the planner hangs those that can hang and that their kind stands on the floor).
+    pub hung: Vec<usize>,
     /// "bookcases along every wall", "lined with lockers on both sides": (mention index, walls
     /// it lines: 1, 2, or 0 for every wall), a plural the room's walls count.
     pub lining: Vec<(usize, u32)>,
@@ -133,7 +136,9 @@ fn re(p: &str) -> Regex {
 
 /// Reads `text`.
 pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
-    let t = words::spelled_sizes(&words::compound_numbers(&normalise(text)));
+    let t = words::on_top_of_it(&words::spelled_sizes(&words::compound_numbers(&normalise(
+        text,
+    ))));
     let t = spelling::mend_place_names(kb, &t);
     let t = spelling::mend_object_words(kb, &t);
     let mut r = Reading {

@@ -283,6 +283,7 @@ fn parse_objects(
                 description,
                 rows: 0,
                 sizes: vec![],
+                on_wall: None,
             },
         );
     }

@@ -23,6 +23,7 @@ mod counts;
 mod describe;
 mod filled;
 mod goods;
+mod hung;
 mod lining;
 mod outdoors;
 mod parts;
@@ -100,6 +101,7 @@ fn generic_room(prompt: &str) -> SceneSpec {
                 description: describe(o, &[], &[], None),
                 rows: 0,
                 sizes: vec![],
+                on_wall: None,
             },
         );
         for k in 1..=n {
@@ -185,6 +187,7 @@ fn build_spec(
         }
     }
     relations::relations(d, &mut spec);
+    hung::hang(d, &mut spec);
     parts::seats_at_parts(d, &mut spec);
     // a room called small or tiny (no stated size) seats fewer: its default rows and tables
     // shrink with its floor before the room is sized for them

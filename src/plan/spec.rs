@@ -156,6 +156,11 @@ pub struct ObjectSpec {
     /// when every instance has `size`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sizes: Vec<[f64; 3]>,
+    /// Hung on a wall with its bottom at this height (m), where the text hangs there a thing
+    /// the knowledge base stands on the floor or does not know ("a guitar hanging on the wall",
+    /// "a neon sign on the wall"); absent (not written) when its placement class decides.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub on_wall: Option<f64>,
 }
 
 impl ObjectSpec {

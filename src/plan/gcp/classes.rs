@@ -10,7 +10,7 @@ use std::sync::OnceLock;
 mod flank;
 mod support;
 use flank::flank_with_support;
-pub use support::support_in;
+pub use support::{support_in, supports_in};
 
 /// Where a category stands.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -240,6 +240,10 @@ impl Placements {
 /// that the spec puts against a wall (SIDE: "a TV on the wall") hangs there.
 pub fn effective_class(spec: &SceneSpec, category: &str) -> Class {
     let table = Placements::builtin();
+    // the text hangs it on a wall (`ObjectSpec::on_wall`)
+    if let Some(h) = spec.objects.get(category).and_then(|o| o.on_wall) {
+        return Class::OnWall(h);
+    }
     let on_wall = spec.objects.get(category).is_some_and(|o| {
         (1..=o.number).any(|k| spec.anchors.get(&format!("{category}{k}")) == Some(&Anchor::Side))
     });
@@ -277,6 +281,10 @@ pub struct Mounts {
     /// chandelier "over the table", pendant lights "above the island").
     pub hang_over: BTreeMap<String, String>,
 }
+
+/// The share of a support's top that things set on it by their class may fill before the
+/// next support of their list takes them.
+const FULL_TOP: f64 = 0.8;
 
 /// Puts the placement classes into `spec`'s own terms: against_wall and on_wall things without
 /// an anchor of the user's take SIDE (indoor); an on_surface thing with no OVER/UNDER relation
@@ -358,18 +366,33 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                         }
                         continue;
                     }
-                    let Some(sup) = support_in(Placements::builtin(), &cat, spec) else {
-                        continue;
+                    let sups: Vec<String> = supports_in(Placements::builtin(), &cat, spec)
+                        .into_iter()
+                        .map(str::to_string)
+                        .collect();
+                    // the least loaded instance of each support, by the share of its top used
+                    let least = |sup: &String| {
+                        let so = &spec.objects[sup];
+                        let top = (so.size[0] * so.size[1]).max(1e-6);
+                        (1..=so.number)
+                            .map(|m| {
+                                let id = format!("{sup}{m}");
+                                let share = (load.get(&id).copied().unwrap_or(0.0)
+                                    + size[0] * size[1])
+                                    / top;
+                                (id, share)
+                            })
+                            .min_by(|a, b| a.1.total_cmp(&b.1))
                     };
-                    let sup = sup.to_string();
-                    let so = &spec.objects[&sup];
-                    let top = so.size[0] * so.size[1];
-                    // the least loaded instance of the support, by the share of its top used
-                    let best = (1..=so.number).map(|m| format!("{sup}{m}")).min_by(|a, b| {
-                        let la = load.get(a).copied().unwrap_or(0.0) / top;
-                        let lb = load.get(b).copied().unwrap_or(0.0) / top;
-                        la.total_cmp(&lb)
-                    });
+                    // the first support in the table's order with room left on a top (what the
+                    // text put on a small side table keeps it: the default globe goes on the
+                    // reading table), else the first
+                    let best = sups
+                        .iter()
+                        .filter_map(least)
+                        .find(|(_, share)| *share <= FULL_TOP)
+                        .or_else(|| sups.first().and_then(least))
+                        .map(|(id, _)| id);
                     if let Some(oid) = best {
                         *load.entry(oid.clone()).or_default() += size[0] * size[1];
                         // a thing on a support keeps no anchor of its own

@@ -148,6 +148,9 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
+                if *a == Anchor::Side && hangs_on_wall(&t[..m.start()], m.as_str()) {
+                    r.hung.push(s);
+                }
                 if *a == Anchor::Side && one_wall(m.as_str()) {
                     r.one_wall.push(s);
                 }
@@ -206,6 +209,29 @@ pub(super) fn read_placements(r: &mut Reading) {
                     r.relations.push((s, *rel, o));
                 }
             }
+            // "a stage with a sofa and a lamp on it": what is said together before a pronoun
+            // is placed there as one, back to the thing the pronoun names
+            // (said with that thing: "a coffee table and a rug under it" puts only the rug)
+            let pronoun = re(r"^ (?:it|them)\b").is_match(&t[m.end()..]);
+            if let (true, [o]) = (pronoun, os.as_slice()) {
+                let mut j = s;
+                while j > o + 1
+                    && joined(&t, &r.mentions[j - 1], &r.mentions[j])
+                    && !r.mentions[j - 1].negated
+                {
+                    j -= 1;
+                }
+                let with = t
+                    .get(r.mentions[*o].end..r.mentions[j].start)
+                    .is_some_and(|w| re(r"\b(?:with|has|having|holding|holds)\b").is_match(w));
+                if j == o + 1 && j < s && with {
+                    for k in j..s {
+                        if r.mentions[k].category != r.mentions[*o].category {
+                            r.relations.push((k, *rel, *o));
+                        }
+                    }
+                }
+            }
             if m.as_str() == "between" {
                 // "between the sofa and the armchair": next to both
                 if let Some(o2) = r.mentions.get(o + 1) {
@@ -216,6 +242,17 @@ pub(super) fn read_placements(r: &mut Reading) {
             }
         }
     }
+}
+
+/// Whether a wall phrase (and the words before it) hangs a thing on a wall ("hanging on the
+/// wall", "on the back wall", "mounted on one wall"), not stood against it ("against the wall",
+/// "along the wall", "on both sides").
+fn hangs_on_wall(before: &str, phrase: &str) -> bool {
+    let last = |w: &str| w.rsplit(' ').next().unwrap_or("") == "wall" || w.ends_with(" walls");
+    let hung_word =
+        re(r"\b(?:hanging|hung|hangs|mounted|fixed|displayed|framed|pinned|nailed)\s*$");
+    (phrase.starts_with("on ") && last(phrase))
+        || (hung_word.is_match(before.trim_end()) && last(phrase))
 }
 
 /// Whether a wall phrase names one wall ("along the wall", "against the back wall", "lining
@@ -284,6 +321,13 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
     }
 }
 
+/// Whether things of `category` are a floor people walk on, low and wide (a stage): what
+/// stands on the floor stands on it as it is ("a sofa and a standard lamp on the stage").
+fn walked_on(kb: &crate::plan::kb::KnowledgeBase, category: &str) -> bool {
+    kb.object(category)
+        .is_some_and(|k| k.size[0] * k.size[1] >= 4.0 && k.size[2] <= 1.0)
+}
+
 /// The knowledge base's kinds whose name or a synonym ends in the noun `head` ("bench":
 /// a bench, a science bench, a workbench's "work bench").
 fn kinds_named_by<'a>(
@@ -309,6 +353,7 @@ pub(super) fn surface_kinds(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
             || !s.known
             || !matches!(table.class(&s.category), Class::Floor | Class::AgainstWall)
             || !table.is_support(&o.category)
+            || walked_on(kb, &o.category)
         {
             continue;
         }

@@ -287,6 +287,21 @@ pub fn normalise(text: &str) -> String {
         .join(" ")
 }
 
+/// "a sideboard with a fruit bowl on top": on top of it (the thing the phrase is said with),
+/// as the placement phrases read a pronoun.
+pub(super) fn on_top_of_it(t: &str) -> String {
+    static RE: OnceLock<Regex> = OnceLock::new();
+    let re = RE.get_or_init(|| Regex::new(r"\bon top\b( of\b)?").expect("valid regex"));
+    re.replace_all(t, |c: &regex::Captures| {
+        if c.get(1).is_some() {
+            c[0].to_string()
+        } else {
+            "on top of it".to_string()
+        }
+    })
+    .into_owned()
+}
+
 /// Numbers of two words written out ("twenty-four", "thirty two") as digits, so that they
 /// count what follows as a number word does.
 pub(super) fn compound_numbers(t: &str) -> String {

@@ -47,6 +47,7 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                         description: String::new(),
                         rows: 0,
                         sizes: vec![],
+                        on_wall: None,
                     },
                 )
             })
@@ -66,6 +67,7 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                     description: String::new(),
                     rows: 0,
                     sizes: vec![],
+                    on_wall: None,
                 };
                 (c.clone(), o)
             })

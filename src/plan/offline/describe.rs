@@ -247,6 +247,7 @@ pub(super) fn objects(d: &Draft, styles: &[String]) -> BTreeMap<String, ObjectSp
                     .filter(|(_, each)| each.len() == *n as usize)
                     .map(|(_, each)| each.iter().map(|&(_, s)| s).collect())
                     .unwrap_or_default(),
+                on_wall: None,
             },
         );
     }

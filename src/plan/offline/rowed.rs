@@ -58,6 +58,7 @@ pub(super) fn seats_in_rows_leave_their_tables(d: &mut Draft) {
                     description: String::new(),
                     rows: 0,
                     sizes: vec![],
+                    on_wall: None,
                 };
                 (c.clone(), o)
             })

@@ -27,6 +27,7 @@ pub(super) fn seat_for(table: &str, counts: &BTreeMap<String, u32>) -> Option<St
                     description: String::new(),
                     rows: 0,
                     sizes: vec![],
+                    on_wall: None,
                 },
             );
         }
@@ -52,6 +53,7 @@ fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
                 description: String::new(),
                 rows: 0,
                 sizes: vec![],
+                on_wall: None,
             };
             (c.to_string(), o)
         })
@@ -218,6 +220,7 @@ pub(super) fn people_at_the_table(d: &mut Draft, people: Option<u32>) {
                     description: String::new(),
                     rows: 0,
                     sizes: vec![],
+                    on_wall: None,
                 };
                 (c.clone(), o)
             })

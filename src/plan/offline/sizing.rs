@@ -38,7 +38,24 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                     .find(|(c, _)| c.rsplit(' ').next() == Some(head))?;
                 Some((kb.object(c)?.size, format!("sized as a {c}")))
             });
-            let (size, how) = own.unwrap_or_else(|| unknown_size(kb, cat));
+            let (mut size, mut how) = own.unwrap_or_else(|| unknown_size(kb, cat));
+            // "a cup of tea on the side table": a small thing the text puts on another is
+            // a thing of its top, a hand's size, not a small piece of furniture
+            let on = r
+                .relations
+                .iter()
+                .find(|&&(s, rel, _)| s == i && rel == crate::plan::spec::RelationKind::Over)
+                .and_then(|&(_, _, o)| kb.object(&r.mentions.get(o)?.category));
+            if let Some(o) = on.filter(|o| size[2] < 1.0 && o.size[2] < 1.5) {
+                let top = o.size[0].min(o.size[1]);
+                let side = (0.4 * top).clamp(0.1, TABLETOP[0]);
+                size = [side, side, TABLETOP[1]];
+                how = format!(
+                    "sized as a small thing on a {} {}",
+                    o.category,
+                    fmt_size(size)
+                );
+            }
             notes.push(format!("`{cat}` is not in the knowledge base: kept, {how}"));
             unknown.insert(cat.clone(), size);
         }
@@ -365,6 +382,9 @@ fn sides_within(area: f64, min_side: f64) -> [f64; 2] {
     let r = |v: f64| (v * 10.0).ceil() / 10.0;
     [r(w), r(d)]
 }
+
+/// Largest footprint side and height of a small unknown thing on a support (m).
+const TABLETOP: [f64; 2] = [0.25, 0.25];
 
 /// Size of an object the knowledge base lacks: from its head noun's category when it has one,
 /// else from a size class named by its words.

@@ -35,3 +35,26 @@ pub fn support_in<'a>(table: &Placements, category: &str, spec: &'a SceneSpec) -
         .find(|(c, _)| crate::plan::roles::role_of(c).is_some_and(|r| roles.contains(&r)))
         .map(|(c, _)| c.as_str())
 }
+
+/// Every category of `spec` that `category`'s supports name, in the table's order of
+/// preference, else the one [`support_in`] finds by its role (a thing goes on the next one
+/// when the first ones' tops are taken).
+pub fn supports_in<'a>(table: &Placements, category: &str, spec: &'a SceneSpec) -> Vec<&'a str> {
+    let Some(p) = table.get(category) else {
+        return vec![];
+    };
+    let listed: Vec<&'a str> = p
+        .supports
+        .iter()
+        .filter_map(|s| {
+            spec.objects
+                .get_key_value(s.as_str())
+                .map(|(c, _)| c.as_str())
+        })
+        .collect();
+    if listed.is_empty() {
+        support_in(table, category, spec).into_iter().collect()
+    } else {
+        listed
+    }
+}
