@@ -408,6 +408,9 @@ pub fn replace_partners(
     Ok(out)
 }
 
+/// One more instance for [`gcp_spec`]: id, category, size, anchor and its relations.
+type Added<'a> = (&'a str, &'a str, [f64; 3], Anchor, Vec<Relation>);
+
 /// A SceneSpec of the present instances for GCP under their own categories (each instance
 /// with its own size and anchor), so the placement classes hold for them as in the plan: a
 /// mirror added or placed again hangs on a wall at its height, a lamp goes on a support. The
@@ -415,7 +418,7 @@ pub fn replace_partners(
 /// more instance (`id`, category, size, anchor, its relations).
 fn gcp_spec(
     state: &SceneState,
-    add: Option<(&str, &str, [f64; 3], Anchor, Vec<Relation>)>,
+    add: Option<Added>,
 ) -> Result<(SceneSpec, BTreeMap<String, String>)> {
     let mut entries: Vec<(String, String, [f64; 3], Anchor)> = state
         .scene
