@@ -30,6 +30,7 @@ fn spec30() -> SceneSpec {
                 description: format!("A DSLR photo of a {cat}"),
                 rows: 0,
                 sizes: vec![],
+                on_wall: None,
             },
         );
         for k in 1..=n {

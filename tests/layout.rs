@@ -234,6 +234,7 @@ fn random_specs_always_give_valid_layouts() {
                     description: "A DSLR photo of a thing".into(),
                     rows: 0,
                     sizes: vec![],
+                    on_wall: None,
                 },
             );
         }
