@@ -1,7 +1,8 @@
 //! Where the text puts a thing, the layout puts it: what is said "on top" of a support or
 //! together "on it" stands on that support (a sofa and a standard lamp on a stage, a bowl on a
 //! sideboard), a small thing the knowledge base does not know fits the top it is put on (a cup
-//! of tea on a little side table), a default thing gives way on a small top to a named one, and
+//! of tea on a little side table, the birthday cake on the table though never named before),
+//! a default thing gives way on a small top to a named one, and
 //! what the text hangs on a wall that its kind stands on the floor, or that the knowledge base
 //! does not know, hangs there (guitars, a framed print, a neon sign) while furniture "on the
 //! back wall" stands against it. Plan and layout only; prompts of no corpus.
@@ -55,6 +56,16 @@ fn things_said_on_a_support_stand_on_it() {
             "a study with bookcases, a small side table with a vase on it and a leather armchair",
             "vase",
             "side table",
+        ),
+        (
+            "a party room with one long table with eight chairs around it and the birthday cake on the table",
+            "cake",
+            "dining table",
+        ),
+        (
+            "a workshop with a workbench and the old typewriter on the workbench",
+            "typewriter",
+            "workbench",
         ),
         (
             "a library with a leather armchair, a little side table with a vase on it",

@@ -246,6 +246,7 @@ pub fn plan_prompt(prompt: &str) -> Result<Plan, PlanError> {
     roles::scene_defaults(&mut d);
     goods::goods_on_show(&mut d);
     roles::mention_kinds(&mut d);
+    roles::definites_as_named(&mut d);
     filled::by_contents(&mut d);
     supports::work_tables(&mut d);
     sizing::mention_sizes(&mut d);

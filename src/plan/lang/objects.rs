@@ -120,8 +120,12 @@ pub(super) fn object_spans(
     let mut k = 0;
     while k < all.len() {
         let (pos, w) = all[k];
+        // "the cake on the table": a definite phrase the text puts on or by a thing it names
+        // is a thing too, though not named before (checked once its words are known)
+        let the = w == "the";
         let det = number_of(w).is_some() && !["no", "zero", "both"].contains(&w)
-            || ["another", "some"].contains(&w);
+            || ["another", "some"].contains(&w)
+            || the;
         // "bunk beds for six campers": whom a thing is for, not more things
         let for_whom = k > 0 && all[k - 1].1 == "for" && number_of(w).is_some_and(|n| n > 1);
         if !det
@@ -162,7 +166,22 @@ pub(super) fn object_spans(
                 || not_objects().contains(&singular(x.1).as_str())
                 || word_list("place_heads").contains(&singular(x.1).as_str())
         });
-        if j > from && !known_next && !area_next {
+        let placed_by_known = || {
+            let mut q = j;
+            match all.get(q).map(|x| x.1) {
+                Some("on" | "under" | "beside" | "atop" | "upon" | "near") => q += 1,
+                Some("next") if all.get(q + 1).is_some_and(|x| x.1 == "to") => q += 2,
+                _ => return false,
+            }
+            if all
+                .get(q)
+                .is_some_and(|x| ["the", "a", "an", "its", "their", "each", "every"].contains(&x.1))
+            {
+                q += 1;
+            }
+            all.get(q).is_some_and(|x| known_at(x.0))
+        };
+        if j > from && !known_next && !area_next && (!the || placed_by_known()) {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
                 && !head.ends_with('\'')

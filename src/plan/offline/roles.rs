@@ -84,6 +84,23 @@ fn kind_of_said(category: &str, said: &str) -> bool {
 }
 
 /// The category each mention means (`cats`).
+/// "one long table with ten chairs around it, a vase on the table": "the table" is that long
+/// table, whatever kind the place gives a bare table (after [`mention_kinds`]).
+pub(super) fn definites_as_named(d: &mut Draft) {
+    for i in 0..d.cats.len() {
+        let m = &d.r.mentions[i];
+        if !m.definite || m.count.is_some() || m.plural || m.negated || m.owner.is_some() {
+            continue;
+        }
+        let earlier = d.r.mentions[..i]
+            .iter()
+            .position(|o| o.category == m.category && !o.definite && !o.negated && !o.reference);
+        if let Some(e) = earlier {
+            d.cats[i] = d.cats[e].clone();
+        }
+    }
+}
+
 pub(super) fn mention_kinds(d: &mut Draft) {
     let (kb, scene) = (d.kb, d.scene);
     d.cats =

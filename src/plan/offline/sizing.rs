@@ -46,7 +46,7 @@ pub(super) fn mention_sizes(d: &mut Draft) {
                 .iter()
                 .find(|&&(s, rel, _)| s == i && rel == crate::plan::spec::RelationKind::Over)
                 .and_then(|&(_, _, o)| kb.object(&r.mentions.get(o)?.category));
-            if let Some(o) = on.filter(|o| size[2] < 1.0 && o.size[2] < 1.5) {
+            if let Some(o) = on.filter(|o| o.size[2] < 1.5) {
                 let top = o.size[0].min(o.size[1]);
                 let side = (0.4 * top).clamp(0.1, TABLETOP[0]);
                 size = [side, side, TABLETOP[1]];
