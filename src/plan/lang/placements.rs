@@ -321,11 +321,15 @@ pub(super) fn supports_hold(kb: &crate::plan::kb::KnowledgeBase, r: &mut Reading
     }
 }
 
+/// The highest top (m) of a floor people walk on: a stage is, a table-high ping-pong table
+/// or a king-size bed is not.
+const WALKED_ON_TOP: f64 = 0.7;
+
 /// Whether things of `category` are a floor people walk on, low and wide (a stage): what
 /// stands on the floor stands on it as it is ("a sofa and a standard lamp on the stage").
 fn walked_on(kb: &crate::plan::kb::KnowledgeBase, category: &str) -> bool {
     kb.object(category)
-        .is_some_and(|k| k.size[0] * k.size[1] >= 4.0 && k.size[2] <= 1.0)
+        .is_some_and(|k| k.size[0] * k.size[1] >= 4.0 && k.size[2] <= WALKED_ON_TOP)
 }
 
 /// The knowledge base's kinds whose name or a synonym ends in the noun `head` ("bench":
