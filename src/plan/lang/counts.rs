@@ -388,11 +388,29 @@ pub(super) fn read_counts(r: &mut Reading) {
     let own_group = re(
         r"^ (?:(?:next to|facing|beside|opposite) (?:each other|one another)|side by side|(?:along|against|on|by|at|in|into|near) (?:the|one|a) (?:[a-z]+ ){0,2}(?:wall|walls|corner|corners|door|doorway|entrance|window|windows|room))\b",
     );
-    for c in each_clause.captures_iter(&t) {
-        let Some(c0) = c.get(0) else { continue };
-        let placed = c.get(1).is_none();
-        let c = c0;
-        let Some(x) = distributor(r, c.start(), "") else {
+    // "16 desks in four rows, each desk with a monitor and a chair", "every table has a lamp":
+    // the thing named again after "each" owns what it has
+    let each_named =
+        re(r"\b(?:each|every) (?:[a-z'-]+ ){0,2}?(?:with|having|holding|has|gets|topped with)\b");
+    let named_owner = |r: &Reading, c: regex::Match| {
+        let i = r
+            .mentions
+            .iter()
+            .position(|m| m.reference && m.start >= c.start() && m.end <= c.end() && !m.negated)?;
+        let x = referent(r, i);
+        (x != i).then_some(x)
+    };
+    let clauses: Vec<(regex::Match, bool, Option<usize>)> = each_clause
+        .captures_iter(&t)
+        .filter_map(|c| Some((c.get(0)?, c.get(1).is_none(), None)))
+        .chain(
+            each_named
+                .find_iter(&t)
+                .filter_map(|c| Some((c, false, Some(named_owner(r, c)?)))),
+        )
+        .collect();
+    for (c, placed, owner) in clauses {
+        let Some(x) = owner.or_else(|| distributor(r, c.start(), "")) else {
             continue;
         };
         let mut end = t[c.end()..]

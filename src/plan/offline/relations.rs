@@ -223,6 +223,7 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
             }
         }
     }
+    seats_said_per_host(d, spec, &mut push);
     if let Some(sc) = scene {
         // a scene's relation of a default that a named thing of its role replaced holds for
         // that thing (the teacher's desk before the whiteboard that replaced the blackboard)
@@ -327,6 +328,62 @@ pub(super) fn relations(d: &Draft, spec: &mut SceneSpec) {
         }
     }
     crate::plan::groups::apply_named(spec, &keep, &d.named);
+}
+
+/// "six lab benches, each with two stools", "manicure tables each with a chair on both sides":
+/// seats the text gives each of a thing sit at that thing, as many at each as said: as the
+/// functional group seats them there, else at its front (on both sides: around it), beside a
+/// bed or another seat. Seats the text already relates stay where it puts them.
+fn seats_said_per_host(
+    d: &Draft,
+    spec: &mut SceneSpec,
+    push: &mut impl FnMut(&mut SceneSpec, String, RelationKind, String, bool),
+) {
+    use crate::plan::lang::is_seat;
+    let mut taken: BTreeMap<String, u32> = BTreeMap::new();
+    for (i, m) in d.r.mentions.iter().enumerate() {
+        let Some(x) = m.each_of.filter(|_| !m.negated) else {
+            continue;
+        };
+        let (c, h) = (meant(d, i).clone(), meant(d, x).clone());
+        let (Some(&ns), Some(&nh)) = (d.counts.get(&c), d.counts.get(&h)) else {
+            continue;
+        };
+        if c == h || !is_seat(&c) || !stands_on_floor(&h) {
+            continue;
+        }
+        let per = m.count.unwrap_or(1) * m.parts;
+        // (a bench things stand on is a work top, not a seat)
+        let top = crate::plan::gcp::classes::Placements::builtin().is_support(&h);
+        let lies =
+            !top && (is_seat(&h) || matches!(h.rsplit(' ').next(), Some("bed" | "cot" | "bunk")));
+        let rel = if let Some(g) = crate::plan::groups::relation_between(&c, &h) {
+            // the group's way of seating them, as many at each as the text says
+            g
+        } else if lies {
+            RelationKind::Next
+        } else if m.parts > 1 || per >= 3 {
+            RelationKind::Around
+        } else {
+            RelationKind::At
+        };
+        let related = |spec: &SceneSpec, id: &str| spec.relations.iter().any(|r| r.subject == id);
+        let mut k = taken.get(&c).copied().unwrap_or(0);
+        for host in 1..=nh {
+            for _ in 0..per {
+                // the next seat the text has not put anywhere yet
+                while k < ns && related(spec, &format!("{c}{}", k + 1)) {
+                    k += 1;
+                }
+                if k >= ns {
+                    break;
+                }
+                k += 1;
+                push(spec, format!("{c}{k}"), rel, format!("{h}{host}"), true);
+            }
+        }
+        taken.insert(c, k);
+    }
 }
 
 /// Whether a category stands on the floor (its own footprint, not hung nor on a support).
