@@ -8,6 +8,8 @@ Two tables, both small:
   from SIZE_CLASSES when no category is met. "owl" -> small, "chesterfield" -> sofa.
 - `keep`: nouns ending in "s" that are singular (their "s"-less form is no noun): "dais".
 - `irregular`: irregular plurals (WordNet's noun.exc) that rules get wrong: "mice" -> "mouse".
+- `noun`: words that are nouns and never adjectives, with a tagged sense (in use): "tape",
+  "hamster", "information"; before an unknown head noun they name its kind with it.
 
 Run from the repository root: python3 scripts/wordnet_kinds.py [WORDNET_DIR]
 """
@@ -75,6 +77,18 @@ def first_senses():
         n_syn = int(f[2])
         first[lemma] = f[-n_syn]
     return first
+
+
+def index_lemmas(name):
+    """Single-word lemmas of a WordNet index file with their tagged sense counts."""
+    out = {}
+    for line in open(os.path.join(WN, name)):
+        if line.startswith(" "):
+            continue
+        f = line.split()
+        p_cnt = int(f[3])
+        out[f[0]] = int(f[5 + p_cnt])
+    return out
 
 
 def kind_of(off, syn, names):
@@ -147,6 +161,11 @@ def main():
             kinds[lemma] = k
     keep = sorted(w for w in first if re.fullmatch(r"[a-z]+s", w) and not w.endswith("ss")
                   and w[:-1] not in first and w not in names and physical(first[w], syn))
+    # nouns that are no adjectives and that people use (WordNet's tagged sense count): said
+    # before an unknown head noun they name its kind with it ("a tape dispenser")
+    adjectives = set(index_lemmas("index.adj"))
+    nouns = sorted(w for w, tagged in index_lemmas("index.noun").items()
+                   if tagged > 0 and re.fullmatch(r"[a-z]+", w) and w not in adjectives)
     irregular = {}
     for line in open(os.path.join(WN, "noun.exc")):
         f = line.split()
@@ -158,14 +177,16 @@ def main():
         # whole from the package's copyright file
         for line in licence():
             o.write(f"# {line}".rstrip() + "\n")
-        o.write("# kind NOUN | CATEGORY or size CLASS; keep NOUN (singular ending in s); irregular PLURAL | SINGULAR\n")
+        o.write("# kind NOUN | CATEGORY or size CLASS; keep NOUN (singular ending in s); irregular PLURAL | SINGULAR; noun WORD\n")
         for w in sorted(kinds):
             o.write(f"kind {w} | {kinds[w]}\n")
         for w in keep:
             o.write(f"keep {w}\n")
         for w in sorted(irregular):
             o.write(f"irregular {w} | {irregular[w]}\n")
-    print(f"{len(kinds)} kinds, {len(keep)} keep, {len(irregular)} irregular -> {OUT}")
+        for w in nouns:
+            o.write(f"noun {w}\n")
+    print(f"{len(kinds)} kinds, {len(keep)} keep, {len(irregular)} irregular, {len(nouns)} nouns -> {OUT}")
 
 
 main()

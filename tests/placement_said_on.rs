@@ -59,7 +59,7 @@ fn things_said_on_a_support_stand_on_it() {
         ),
         (
             "a party room with one long table with eight chairs around it and the birthday cake on the table",
-            "cake",
+            "birthday cake",
             "dining table",
         ),
         (

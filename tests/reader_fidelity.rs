@@ -471,10 +471,15 @@ fn a_place_that_is_not_the_template_lends_only_generic_furniture() {
 fn wordnet_gives_kinds_and_singulars() {
     use dreamscene::plan::lexicon::{kind, known_singular, Kind};
     assert_eq!(kind("dais"), Some(Kind::Category("stage")));
-    assert_eq!(kind("owl"), Some(Kind::Size("small")));
+    assert_eq!(kind("accordion"), Some(Kind::Size("small")));
+    assert_eq!(kind("owl"), None, "owl is a knowledge-base name now");
     assert_eq!(kind("divan"), Some(Kind::Category("sofa")));
     assert_eq!(kind("sofa"), None, "a knowledge-base name needs no kind");
     assert_eq!(known_singular("dais"), Some("dais"));
     assert_eq!(known_singular("mice"), Some("mouse"));
     assert_eq!(known_singular("chairs"), None);
+    // nouns that are never adjectives name an unknown thing's kind before its head noun
+    use dreamscene::plan::lexicon::is_noun;
+    assert!(is_noun("tape") && is_noun("information") && is_noun("hamster"));
+    assert!(!is_noun("little") && !is_noun("wooden") && !is_noun("stone"));
 }

@@ -18,6 +18,7 @@ pub enum Kind<'a> {
 struct Lexicon {
     kinds: BTreeMap<&'static str, &'static str>,
     keep: BTreeSet<&'static str>,
+    nouns: BTreeSet<&'static str>,
     irregular: BTreeMap<&'static str, &'static str>,
 }
 
@@ -27,6 +28,7 @@ fn lexicon() -> &'static Lexicon {
         let mut l = Lexicon {
             kinds: BTreeMap::new(),
             keep: BTreeSet::new(),
+            nouns: BTreeSet::new(),
             irregular: BTreeMap::new(),
         };
         for line in include_str!("kb/wordnet.txt").lines() {
@@ -44,6 +46,9 @@ fn lexicon() -> &'static Lexicon {
                 ("keep", None) => {
                     l.keep.insert(rest.trim());
                 }
+                ("noun", None) => {
+                    l.nouns.insert(rest.trim());
+                }
                 _ => {}
             }
         }
@@ -58,6 +63,13 @@ pub fn kind(noun: &str) -> Option<Kind<'static>> {
         Some(class) => Kind::Size(class),
         None => Kind::Category(k),
     })
+}
+
+/// Whether `w` is a noun and never an adjective in WordNet ("tape", "information", "hamster";
+/// not "little", "stone", "wooden"): said before an unknown head noun, it names its kind.
+pub fn is_noun(w: &str) -> bool {
+    let l = lexicon();
+    l.nouns.contains(w) || l.kinds.contains_key(w)
 }
 
 /// Whether `w` is an English word (WordNet 3.0, any part of speech) one slip away from a word

@@ -267,10 +267,21 @@ pub(super) fn read_mentions(
             // The head noun names the unknown object; the words before it describe it.
             let mut words: Vec<&str> = head_text.split(' ').collect();
             let head = singular(words.pop().unwrap_or(""));
+            // "a tape dispenser", "information panels", "my hamster cage": a noun before the
+            // head names the kind with it (a material or colour only describes it)
+            let kind_word = words.last().copied().filter(|w| {
+                crate::plan::lexicon::is_noun(w)
+                    && !crate::plan::colours::MATERIALS.iter().any(|m| m.0 == *w)
+                    && !crate::plan::colours::COLOURS.iter().any(|c| c.0 == *w)
+            });
+            if kind_word.is_some() {
+                words.pop();
+            }
             adjectives.extend(words.iter().map(|w| w.to_string()));
-            match super::words::misspelt(kb, &head) {
-                Some(c) => (c, true),
-                None => (head, false),
+            match (super::words::misspelt(kb, &head), kind_word) {
+                (Some(c), None) => (c, true),
+                (_, Some(k)) => (format!("{k} {head}"), false),
+                (None, None) => (head, false),
             }
         } else {
             (cat, true)

@@ -122,12 +122,28 @@ pub(super) fn object_spans(
         let (pos, w) = all[k];
         // "the cake on the table": a definite phrase the text puts on or by a thing it names
         // is a thing too, though not named before (checked once its words are known)
-        let the = w == "the";
+        // (and so is "my hamster cage on the desk", "her knitting on the side table", "a
+        // changing table with nappies on it", "information panels on the walls": a phrase
+        // after a possessive, or with no determiner after "with", "and" or a comma, that the
+        // text puts on, by or under a thing it names, or hangs on a wall)
+        let possessive = POSSESSIVES.contains(&w);
+        let the = w == "the" || possessive;
+        let bare = !the
+            && is_adjective(w)
+            && !known_at(pos)
+            && (k == 0 || [",", "with", "and"].contains(&all[k - 1].1));
         let det = number_of(w).is_some() && !["no", "zero", "both"].contains(&w)
             || ["another", "some"].contains(&w)
-            || the;
-        // "bunk beds for six campers": whom a thing is for, not more things
-        let for_whom = k > 0 && all[k - 1].1 == "for" && number_of(w).is_some_and(|n| n > 1);
+            || the
+            || bare;
+        // "bunk beds for six campers", "a bedroom for my two boys", "a ballroom for a wedding
+        // reception": whom or what a thing is for, not more things
+        let after_for = |q: usize| {
+            q > 0
+                && (all[q - 1].1 == "for"
+                    || q > 1 && POSSESSIVES.contains(&all[q - 1].1) && all[q - 2].1 == "for")
+        };
+        let for_whom = after_for(k);
         if !det
             || for_whom
             || inside(pos, masked)
@@ -139,7 +155,7 @@ pub(super) fn object_spans(
         // Words after the determiner up to a function word, verb or punctuation; a participle
         // right after the determiner describes what follows ("a stuffed owl", "two carved masks",
         // "a hanging scroll", "a sleeping dragon").
-        let mut j = k + 1;
+        let mut j = if bare { k } else { k + 1 };
         if j + 1 < all.len()
             && is_verb(all[j].1)
             && (all[j].1.ends_with("ed") || all[j].1.ends_with("ing"))
@@ -148,7 +164,7 @@ pub(super) fn object_spans(
             j += 1;
         }
         let (mut j, mut known_next) = run(j);
-        let mut from = k + 1;
+        let mut from = if bare { k } else { k + 1 };
         // "a hoard of gold", "a heap of gold coins": a quantity word names the heap of what
         // follows "of" (`kb/words.txt`: quantities), one object of the words after it.
         if j > k + 1
@@ -168,20 +184,46 @@ pub(super) fn object_spans(
         });
         let placed_by_known = || {
             let mut q = j;
+            // "cereals and juice on it": the phrase it is listed with is placed with it
+            if all.get(q).is_some_and(|x| x.1 == "and") {
+                q += 1;
+                while q < j + 5
+                    && all
+                        .get(q)
+                        .is_some_and(|x| is_adjective(x.1) || x.1 == "the")
+                {
+                    q += 1;
+                }
+            }
+            let on = all.get(q).is_some_and(|x| x.1 == "on");
             match all.get(q).map(|x| x.1) {
                 Some("on" | "under" | "beside" | "atop" | "upon" | "near") => q += 1,
                 Some("next") if all.get(q + 1).is_some_and(|x| x.1 == "to") => q += 2,
                 _ => return false,
             }
-            if all
-                .get(q)
-                .is_some_and(|x| ["the", "a", "an", "its", "their", "each", "every"].contains(&x.1))
-            {
+            // "a side table with her knitting on": on the thing it is said with
+            if on && all.get(q).is_none_or(|x| x.1 == ",") {
+                return true;
+            }
+            if all.get(q).is_some_and(|x| {
+                [
+                    "the", "a", "an", "its", "their", "each", "every", "one", "our", "my",
+                ]
+                .contains(&x.1)
+            }) {
                 q += 1;
             }
-            all.get(q).is_some_and(|x| known_at(x.0))
+            // "... on it", "... on the back wall", "... on the walls"
+            let hung = |q: usize| {
+                (q..(q + 3).min(all.len()))
+                    .find(|&p| !is_adjective(all[p].1) || matches!(all[p].1, "wall" | "walls"))
+                    .is_some_and(|p| matches!(all[p].1, "wall" | "walls"))
+            };
+            all.get(q)
+                .is_some_and(|x| known_at(x.0) || ["it", "them"].contains(&x.1))
+                || on && hung(q)
         };
-        if j > from && !known_next && !area_next && (!the || placed_by_known()) {
+        if j > from && !known_next && !area_next && (!(the || bare) || placed_by_known()) {
             let head = all[j - 1].1;
             let ok = !head.ends_with("'s")
                 && !head.ends_with('\'')
@@ -211,6 +253,9 @@ pub(super) fn object_spans(
     });
     raw
 }
+
+/// Words that own what follows, as "the" does ("my hamster cage on the desk").
+const POSSESSIVES: &[&str] = &["my", "our", "his", "her", "their", "your"];
 
 /// Whether the unknown noun `head` is the last word of another name of a thing the text names
 /// (`raw`): "a bus stop with a shelter" says again the bus stop, which is a bus shelter.

@@ -288,18 +288,23 @@ pub fn normalise(text: &str) -> String {
 }
 
 /// "a sideboard with a fruit bowl on top": on top of it (the thing the phrase is said with),
-/// as the placement phrases read a pronoun.
+/// as the placement phrases read a pronoun; so is "a side table with her knitting on", an
+/// "on" that ends its clause.
 pub(super) fn on_top_of_it(t: &str) -> String {
     static RE: OnceLock<Regex> = OnceLock::new();
+    static END: OnceLock<Regex> = OnceLock::new();
     let re = RE.get_or_init(|| Regex::new(r"\bon top\b( of\b)?").expect("valid regex"));
-    re.replace_all(t, |c: &regex::Captures| {
+    let end = END.get_or_init(|| {
+        Regex::new(r"\bwith ([^,.;:!?]{1,60}?) on *([,.;:!?]|$)").expect("valid regex")
+    });
+    let t = re.replace_all(t, |c: &regex::Captures| {
         if c.get(1).is_some() {
             c[0].to_string()
         } else {
             "on top of it".to_string()
         }
-    })
-    .into_owned()
+    });
+    end.replace_all(&t, "with $1 on it$2").into_owned()
 }
 
 /// Numbers of two words written out ("twenty-four", "thirty two") as digits, so that they
