@@ -1,6 +1,6 @@
-//! Things the text hangs on a wall that their kind stands on the floor, or that the knowledge
-//! base does not know: "a guitar hanging on the wall", "a neon sign on the wall", "a framed
-//! print on the wall", "tyres hanging on the wall". Such a thing hangs there (the spec's
+//! Things the text hangs on a wall that their kind stands on the floor or on a top, or that
+//! the knowledge base does not know: "a guitar hanging on the wall", "a neon sign on the
+//! wall", "a framed print on the wall", "tyres hanging on the wall", "a monitor on the wall". Such a thing hangs there (the spec's
 //! `on_wall`) when it is something that can hang: not a support, a seat or a large piece, and
 //! thin and light enough. Furniture said to be "on the back wall" stands against it as before.
 use super::Draft;
@@ -30,9 +30,15 @@ pub(super) fn hang(d: &mut Draft, spec: &mut SceneSpec) {
             continue;
         }
         let known = d.kb.object(cat).is_some();
-        let floor = match table.get(cat) {
-            Some(p) => matches!(p.class, Class::Floor | Class::AgainstWall),
-            None => true,
+        // (a thing that stands on a top, "a monitor on the wall showing the stage", hangs at
+        // the height its kind hangs at where it has one)
+        let (floor, mount) = match table.get(cat) {
+            Some(p) => match p.class {
+                Class::Floor | Class::AgainstWall => (true, None),
+                Class::OnSurface(h) => (true, h),
+                _ => (false, None),
+            },
+            None => (true, None),
         };
         if !floor || table.is_support(cat) || crate::plan::lang::is_seat(cat) {
             continue;
@@ -51,7 +57,7 @@ pub(super) fn hang(d: &mut Draft, spec: &mut SceneSpec) {
                 s[1] = s[1].min(FLAT);
             }
         }
-        let bottom = ((EYE - h / 2.0) * 100.0).round() / 100.0;
+        let bottom = mount.unwrap_or(((EYE - h / 2.0) * 100.0).round() / 100.0);
         o.on_wall = Some(bottom.max(0.3));
         d.notes.push(format!(
             "{cat}: hung on a wall as the text says, its bottom at {:.2} m",
