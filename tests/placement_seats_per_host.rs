@@ -3,13 +3,15 @@
 //! tables each with a chair on both sides", "each desk with a monitor and a chair"), and what
 //! "each desk with" names comes once per desk. Plan and layout only; prompts of no corpus.
 use dreamscene::plan::check::{gap, Box2};
-use dreamscene::plan::gcp::{layout, LayoutOptions};
+use dreamscene::plan::gcp::{layout_growing, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
 use dreamscene::plan::spec::{Layout, PlacedObject};
 
 fn laid_out(prompt: &str, seed: u64) -> Layout {
-    let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
-    layout(&p.spec, LayoutOptions::seeded(seed)).unwrap_or_else(|e| panic!("{prompt}: {e}"))
+    // (the room grows to take everything, as `plan` grows it)
+    let mut p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+    layout_growing(&mut p.spec, LayoutOptions::seeded(seed))
+        .unwrap_or_else(|e| panic!("{prompt}: {e}"))
 }
 
 fn named<'a>(l: &'a Layout, word: &str) -> Vec<&'a PlacedObject> {
@@ -129,5 +131,27 @@ fn what_each_named_thing_has_comes_once_per_thing() {
         let l = laid_out(prompt, 0);
         let got = named(&l, thing).len();
         assert_eq!(got, n, "{prompt}: {got} {thing}s");
+    }
+}
+
+#[test]
+fn tables_of_n_seat_n_and_a_big_bed_has_its_bedside_tables() {
+    for seed in [0, 2] {
+        seated(
+            "a church hall set out for a bingo night with five tables of six and a stage",
+            seed,
+            "chair",
+            "table",
+            6,
+            0.5,
+        );
+        seated(
+            "a guest suite with a king-size bed with a bedside table on each side and a wardrobe",
+            seed,
+            "nightstand",
+            "bed",
+            2,
+            0.3,
+        );
     }
 }

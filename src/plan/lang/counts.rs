@@ -439,10 +439,12 @@ pub(super) fn read_counts(r: &mut Reading) {
             }
         }
     }
-    // Seats of a table: "a table for six", "tables for two", "each laid for four", "that seats 8".
+    // Seats of a table: "a table for six", "tables for two", "each laid for four", "that seats 8",
+    // "eight tables of six" (of people: no noun follows the number)
     let seats = re(
-        r"^[ ,]*(?:each )?(?:(?:that|which) )?(?:(?:is )?(?:laid|set|seating|seats|seat) )?(?:for )?([0-9]+|[a-z]+)\b",
+        r"^[ ,]*(?:each )?(?:(?:that|which) )?(?:(?:is )?(?:laid|set|seating|seats|seat) )?(?:for |of )?([0-9]+|[a-z]+)\b",
     );
+    let of_people = re(r"^ of [0-9a-z]+(?:\s*(?:[,.;:!?]|$)| (?:people|guests|diners|and|with)\b)");
     for k in 0..n {
         let m = &r.mentions[k];
         if m.negated || m.reference {
@@ -453,7 +455,8 @@ pub(super) fn read_counts(r: &mut Reading) {
             continue;
         };
         let whole = c.get(0).map(|g| g.as_str()).unwrap_or("");
-        if !(whole.contains("for ") || whole.contains("seat")) {
+        let of = whole.contains("of ") && of_people.is_match(tail);
+        if !(whole.contains("for ") || whole.contains("seat") || of) {
             continue;
         }
         if let Some(v) = number_of(&c[1]).filter(|&v| v >= 2) {
