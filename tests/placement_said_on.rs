@@ -6,6 +6,8 @@
 //! what the text hangs on a wall that its kind stands on the floor, or that the knowledge base
 //! does not know, hangs there (guitars, a framed print, a neon sign) while furniture "on the
 //! back wall" stands against it. Plan and layout only; prompts of no corpus.
+mod common;
+use common::placed::stands_on;
 use dreamscene::plan::check::{wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
@@ -18,15 +20,6 @@ fn laid_out(prompt: &str, seed: u64) -> Layout {
 
 fn of<'a>(l: &'a Layout, cat: &str) -> Vec<&'a PlacedObject> {
     l.objects.iter().filter(|o| o.category == cat).collect()
-}
-
-/// Whether `a` stands on `b`: its centre over b's footprint, its bottom on b's top.
-fn on(a: &PlacedObject, b: &PlacedObject) -> bool {
-    let bb = Box2::of(b);
-    let q = bb.local([a.position[0], a.position[1]]);
-    q[0].abs() <= bb.half[0] + 1e-6
-        && q[1].abs() <= bb.half[1] + 1e-6
-        && (a.position[2] - (b.position[2] + b.size[2])).abs() < 0.05
 }
 
 #[test]
@@ -80,7 +73,7 @@ fn things_said_on_a_support_stand_on_it() {
             assert!(!things.is_empty(), "{prompt}: no {thing}");
             for t in things {
                 assert!(
-                    sup.iter().any(|s| on(t, s)),
+                    sup.iter().any(|s| stands_on(t, s)),
                     "{prompt} (seed {seed}): {} at {:?} is on no {support}",
                     t.id,
                     t.position

@@ -6,14 +6,14 @@
 //! label maker", "a tape gun"; a material only describes it). Whom or what a place is for
 //! ("a bedroom for my three girls", "a hall for a charity auction") adds nothing. Plan and
 //! layout only; prompts of no corpus.
-use dreamscene::plan::check::Box2;
-use dreamscene::plan::gcp::{layout, LayoutOptions};
+mod common;
+use common::placed::{lay, stands_on};
 use dreamscene::plan::offline::plan_prompt;
 use dreamscene::plan::spec::{Layout, PlacedObject};
 
+/// `prompt` planned and laid out on seed 0, with no validity problem.
 fn laid_out(prompt: &str) -> Layout {
-    let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
-    layout(&p.spec, LayoutOptions::seeded(0)).unwrap_or_else(|e| panic!("{prompt}: {e}"))
+    lay(prompt, 0).0
 }
 
 fn named<'a>(l: &'a Layout, word: &str) -> Vec<&'a PlacedObject> {
@@ -21,15 +21,6 @@ fn named<'a>(l: &'a Layout, word: &str) -> Vec<&'a PlacedObject> {
         .iter()
         .filter(|o| o.category.split(' ').any(|w| w == word))
         .collect()
-}
-
-/// Whether `a` stands on `b`: its centre over b's footprint, its bottom on b's top.
-fn on(a: &PlacedObject, b: &PlacedObject) -> bool {
-    let bb = Box2::of(b);
-    let q = bb.local([a.position[0], a.position[1]]);
-    q[0].abs() <= bb.half[0] + 1e-6
-        && q[1].abs() <= bb.half[1] + 1e-6
-        && (a.position[2] - (b.position[2] + b.size[2])).abs() < 0.05
 }
 
 #[test]
@@ -72,7 +63,7 @@ fn unknown_things_put_on_a_named_thing_stand_on_it() {
         assert!(!things.is_empty(), "{prompt}: no {thing}: {:?}", l.objects.iter().map(|o| &o.id).collect::<Vec<_>>());
         for t in &things {
             assert!(
-                sups.iter().any(|s| on(t, s)),
+                sups.iter().any(|s| stands_on(t, s)),
                 "{prompt}: {} is not on a {support}",
                 t.id
             );
