@@ -160,6 +160,7 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     mentions::for_whom(kb, &mut r);
     read_counts(&mut r);
     restate::restated_counts(&mut r);
+    restate::answered_questions(&mut r);
     read_placements(&mut r);
     lining::read_lining(&mut r);
     placements::supports_hold(kb, &mut r);

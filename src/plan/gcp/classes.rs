@@ -331,7 +331,12 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                             .iter()
                             .any(|r| r.subject == id && r.relation == RelationKind::Over);
                     let a = spec.anchors.entry(id.clone()).or_insert(Anchor::Side);
-                    if (*a == Anchor::Others && !staffed && !on_another) || *a == Anchor::Center {
+                    // (a thing the text stands in the middle stands there: "a workbench in
+                    // the middle"; no default puts an against-wall kind there)
+                    let hung = matches!(class, Class::OnWall(_));
+                    if (*a == Anchor::Others && !staffed && !on_another)
+                        || (*a == Anchor::Center && hung)
+                    {
                         *a = Anchor::Side;
                     }
                     if let Class::OnWall(h) = class {

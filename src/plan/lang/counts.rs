@@ -444,7 +444,9 @@ pub(super) fn read_counts(r: &mut Reading) {
     let seats = re(
         r"^[ ,]*(?:each )?(?:(?:that|which) )?(?:(?:is )?(?:laid|set|seating|seats|seat) )?(?:for |of )?([0-9]+|[a-z]+)\b",
     );
-    let of_people = re(r"^ of [0-9a-z]+(?:\s*(?:[,.;:!?]|$)| (?:people|guests|diners|and|with)\b)");
+    let of_people = re(
+        r"^ of [0-9a-z]+(?:\s*(?:[,.;:!?]|$)| (?:people|guests|diners|and|with|for|each|apiece|by|near|in|around|along|under)\b)",
+    );
     for k in 0..n {
         let m = &r.mentions[k];
         if m.negated || m.reference {

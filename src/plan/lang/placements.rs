@@ -32,7 +32,8 @@ pub(super) fn read_placements(r: &mut Reading) {
     };
     let subject_before = |ms: &[Mention], pos: usize| -> Option<usize> {
         let cs = clause_start(pos);
-        last_in(ms, cs, pos).or_else(|| asked_about(ms, cs))
+        let s = last_in(ms, cs, pos).or_else(|| asked_about(ms, cs))?;
+        Some(with_head(ms, &t, s, pos).unwrap_or(s))
     };
     let named_after = |ms: &[Mention], pos: usize| -> Option<usize> {
         ms.iter()
@@ -109,7 +110,7 @@ pub(super) fn read_placements(r: &mut Reading) {
             Anchor::FaceWindow,
         ),
         (
-            r"\b(?:by|near|under|beneath|below|beside|next to|in front of|at|close to|against|in|to|up to|over to) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide )?windows?\b",
+            r"\b(?:by|near|under|beneath|below|beside|next to|in front of|at|close to|against|in|to|up to|over to|along|lining) (?:the |a |one of the )?(?:big |large |bay |front |tall |wide |shop |display )?windows?\b",
             Anchor::Window,
         ),
         (
@@ -146,6 +147,14 @@ pub(super) fn read_placements(r: &mut Reading) {
             {
                 continue;
             }
+            // "in the middle of the back wall": at a wall, not in the room's middle
+            let a = if *a == Anchor::Center
+                && re(r"^ of (?:the |one |a |that )?(?:\w+ )?wall\b").is_match(&t[m.end()..])
+            {
+                &Anchor::Side
+            } else {
+                a
+            };
             if let Some(s) = subject_before(&r.mentions, m.start()) {
                 r.anchors.push((s, *a));
                 if *a == Anchor::Side && hangs_on_wall(&t[..m.start()], m.as_str()) {
@@ -191,9 +200,22 @@ pub(super) fn read_placements(r: &mut Reading) {
             let Some(s) = subject_before(&r.mentions, m.start()) else {
                 continue;
             };
-            let os = objects_after(&r.mentions, m.end());
+            let mut os = objects_after(&r.mentions, m.end());
+            // "two tables, a vase on each", "four benches, a sink at each": what each of them
+            // is, the thing the subject is said per instance of
+            if os.is_empty()
+                && re(r"^ (?:each|every one|each one)\b(?: of them\b)?").is_match(&t[m.end()..])
+            {
+                os.extend(r.mentions[s].each_of);
+            }
             let Some(&o) = os.first() else {
                 continue;
+            };
+            // "a sink at each bench": at it is beside it for what is not a seat
+            let rel = if *rel == RelationKind::At && !super::is_seat(&r.mentions[s].category) {
+                &RelationKind::Next
+            } else {
+                rel
             };
             used.push((m.start(), m.end()));
             // "a printer on the desk next to the computer": a thing that stands on surfaces is
@@ -403,6 +425,22 @@ fn said_of_pronoun(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<
     }
     let at = end + between.find(" it").or_else(|| between.find(" them"))?;
     referents(ms, t, at + 1).first().copied()
+}
+
+/// The thing a phrase at `pos` is said of when the mention before it, `thing`, is what that thing
+/// is said with and a comma closes it: "eight round tables, each with four chairs, under a
+/// pergola" puts the tables under it, "a desk with a lamp, by the window" the desk.
+fn with_head(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<usize> {
+    if t.get(ms.get(thing)?.end..pos)?.trim() != "," {
+        return None;
+    }
+    let mut k = thing;
+    while k > 0 && joined(t, &ms[k - 1], &ms[k]) {
+        k -= 1;
+    }
+    let h = k.checked_sub(1)?;
+    let with = re(r"^,?\s*(?:(?:each|all|both|every one)\s+)?(?:with|having|holding)\s[^,.;:!?]*$");
+    (with.is_match(t.get(ms[h].end..ms[k].start)?) && !ms[h].negated).then_some(h)
 }
 
 /// The thing placed on mention `support` when the text reads "THING on the SUPPORT" right

@@ -50,6 +50,59 @@ pub(super) fn restated_counts(r: &mut Reading) {
     bare_restated_counts(r);
 }
 
+/// "B: Table for eight? A: Yes, table for eight under the chandelier": a thing named in a question
+/// and named again in the sentence after it (its answer) is one thing, the answer's, which takes
+/// the question's count and seats where it says none; "B: A rug? A: No rug." / "A: No." wants
+/// none.
+pub(super) fn answered_questions(r: &mut Reading) {
+    let t = r.text.clone();
+    let ends = |from: usize| t[from..].find(['.', '!', '?']).map(|k| from + k);
+    for i in 0..r.mentions.len() {
+        let m = &r.mentions[i];
+        if m.negated || m.reference {
+            continue;
+        }
+        let Some(q) = ends(m.end).filter(|&q| t[q..].starts_with('?')) else {
+            continue;
+        };
+        let next_end = ends(q + 1).unwrap_or(t.len());
+        // the answer without its speaker's label ("a: no.")
+        let answer = t[q + 1..next_end].trim();
+        let answer = answer
+            .split_once(':')
+            .filter(|(who, _)| who.split_whitespace().count() == 1)
+            .map_or(answer, |(_, a)| a.trim());
+        let said_again = (i + 1..r.mentions.len()).find(|&j| {
+            let o = &r.mentions[j];
+            o.start > q && o.end <= next_end && o.category == m.category && !o.reference
+        });
+        let Some(j) = said_again else {
+            let no = answer.split([',', ' ', '!']).next() == Some("no")
+                && !r.mentions.iter().any(|o| o.start > q && o.end <= next_end);
+            if no {
+                r.mentions[i].negated = true;
+            }
+            continue;
+        };
+        if r.mentions[j].negated {
+            r.mentions[i].negated = true;
+            continue;
+        }
+        if r.mentions[j].count.is_none() {
+            r.mentions[j].count = r.mentions[i].count;
+        }
+        if let Some(&(_, n)) = r.seats_for.iter().find(|s| s.0 == i) {
+            if !r.seats_for.iter().any(|s| s.0 == j) {
+                r.seats_for.push((j, n));
+            }
+        }
+        r.seats_for.retain(|s| s.0 != i);
+        let m = &mut r.mentions[i];
+        m.count = None;
+        m.reference = true;
+    }
+}
+
 /// "four chairs. Actually make it six.": a restater whose number ends its clause, with no noun
 /// after it, gives that number to the last counted thing named before it.
 fn bare_restated_counts(r: &mut Reading) {

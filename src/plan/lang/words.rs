@@ -276,13 +276,28 @@ pub fn is_adjective(w: &str) -> bool {
         && !(w.ends_with("ly") && w.len() > 4 && w != "holy" && w != "curly")
 }
 
-/// Lower case, typographic quotes and primes made plain, whitespace single.
+/// Lower case, typographic quotes and primes made plain, whitespace single, "w/" and "w/o"
+/// written out.
 pub fn normalise(text: &str) -> String {
     text.to_lowercase()
         .replace(['’', '‘', '`'], "'")
         .replace(['“', '”'], "\"")
         .replace('×', " x ")
         .split_whitespace()
+        .map(|w| {
+            // "each w/ two chairs", "w/o a rug": the shorthand for "with" and "without"
+            if w == "w/o" {
+                "without".to_string()
+            } else if let Some(rest) = w.strip_prefix("w/").filter(|r| !r.starts_with('/')) {
+                if rest.is_empty() {
+                    "with".to_string()
+                } else {
+                    format!("with {rest}")
+                }
+            } else {
+                w.to_string()
+            }
+        })
         .collect::<Vec<_>>()
         .join(" ")
 }

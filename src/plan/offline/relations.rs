@@ -76,8 +76,19 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
             anchors.insert(c.to_string(), a);
         }
     }
+    // "a tree in the corner by the window", "a desk against the wall by the door": the window
+    // or door says which corner or wall, so it is the anchor
+    let by_opening: BTreeSet<usize> = r
+        .anchors
+        .iter()
+        .filter(|(_, a)| matches!(a, Anchor::Window | Anchor::Door))
+        .map(|&(mi, _)| mi)
+        .collect();
     for &(mi, a) in &r.anchors {
         let c = meant(d, mi);
+        if matches!(a, Anchor::Corner | Anchor::Side) && by_opening.contains(&mi) {
+            continue;
+        }
         if counts.contains_key(c)
             && (matches!(a, Anchor::FaceWindow | Anchor::FaceDoor) || !facing.contains(&mi))
         {

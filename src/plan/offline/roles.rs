@@ -162,7 +162,9 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             .iter()
             .any(|&(s, k, o)| s == i && o == i - 1 && matches!(k, Around | At));
         // "a big table in the middle, six chairs around it": said around it, a comma apart
-        let with = between.trim_start().starts_with("with ") && !between.contains([',', ';', '.']);
+        // ("a big table in the centre with 8 chairs": what the table is said with, after where)
+        let with = (between.trim_start().starts_with("with ") || between.contains(" with "))
+            && !between.contains([',', ';', '.']);
         if cats[i] == m.category || !(with || round_it) {
             continue;
         }
@@ -173,17 +175,36 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             c.rsplit(' ').next() == Some(head.as_str())
                 && seat_for(table, &one).as_deref() == Some(c)
         };
-        // the scene's seats of that noun first, then the one named like the table ("kids
-        // table", "kids chair"), the usual seats, then any kind of it
+        // the one named like the table ("kids table", "kids chair"), the scene's seats of that
+        // noun it sets at such tables, the text's own kind, the scene's other seats, the usual
+        // seats, then any kind of it
         let named_like = table
             .split_once(' ')
             .map(|(q, _)| format!("{q} {head}"))
             .filter(|c| kb.object(c).is_some());
         let usual = seat_for(table, &BTreeMap::new());
-        let seat = scene_seats
+        // (the scene's seats only where it sets them at tables of this one's role: "a big
+        // table with 8 chairs" in a study seats dining chairs at it, not the study's office
+        // chairs, which would call for desks)
+        let role = crate::plan::roles::role_of(table);
+        let set_at_such = |c: &String| {
+            scene_seats.keys().any(|t| {
+                let one: BTreeMap<String, u32> = [(c.clone(), 0)].into();
+                t != c
+                    && crate::plan::roles::role_of(t) == role
+                    && seat_for(t, &one).as_deref() == Some(c.as_str())
+            })
+        };
+        let own: Vec<String> = scene_seats
             .keys()
+            .filter(|c| set_at_such(c))
             .cloned()
-            .chain(named_like)
+            .collect();
+        let seat = named_like
+            .into_iter()
+            .chain(own)
+            .chain(Some(m.category.clone()))
+            .chain(scene_seats.keys().cloned())
             .chain(usual)
             .chain(kb.objects.iter().map(|o| o.category.clone()))
             .find(|c| sits(c));

@@ -1,0 +1,243 @@
+//! What a thing is said with and where: a placement after "X, each with Y," is said of the Xs;
+//! "w/" is "with"; seats said with a table are its seats whatever the place's usual seat; "of
+//! eight for the guests" seats eight; "a vase on each" and "a sink at each" are on or beside
+//! each of the things before; a thing named in a question and again in its answer is one thing;
+//! a window or door said with a corner or wall says which; a thing of the walls said in the
+//! middle of the room stands there. Plan and layout only; prompts of no corpus.
+mod common;
+use common::placed::{all, lay, SEEDS};
+use dreamscene::plan::offline::plan_prompt;
+use dreamscene::plan::spec::{Anchor, RelationKind, SceneSpec};
+
+/// How many relations `kind` the spec has from instances of `subject` to instances of `object`.
+fn related(spec: &SceneSpec, subject: &str, kind: RelationKind, object: &str) -> usize {
+    let of = |id: &str, cat: &str| {
+        id.strip_prefix(cat)
+            .is_some_and(|k| k.parse::<u32>().is_ok())
+    };
+    spec.relations
+        .iter()
+        .filter(|r| r.relation == kind && of(&r.subject, subject) && of(&r.object, object))
+        .count()
+}
+
+fn count(spec: &SceneSpec, category: &str) -> u32 {
+    spec.objects.get(category).map_or(0, |o| o.number)
+}
+
+#[test]
+fn a_placement_after_each_with_is_said_of_the_things_before() {
+    let p =
+        plan_prompt("a beer garden: six picnic tables, each with two benches, under a big gazebo")
+            .expect("planned");
+    let s = &p.spec;
+    let tables = count(s, "picnic table");
+    assert_eq!(tables, 6, "{:?}", s.objects.keys());
+    let under = s
+        .relations
+        .iter()
+        .filter(|r| r.relation == RelationKind::Under && r.subject.starts_with("picnic table"))
+        .count();
+    assert_eq!(under, 6, "every table under the gazebo: {:?}", s.relations);
+    // and the benches stand at their tables (under the roof with them)
+    let bench = s
+        .objects
+        .keys()
+        .find(|c| c.ends_with("bench"))
+        .expect("benches")
+        .clone();
+    assert_eq!(related(s, &bench, RelationKind::Around, "picnic table"), 12);
+}
+
+#[test]
+fn w_slash_is_with_and_its_seats_sit_at_each_table() {
+    let p =
+        plan_prompt("a tiny cafe, five small round tables each w/ three chairs").expect("planned");
+    let s = &p.spec;
+    assert_eq!(count(s, "round table"), 5, "{:?}", s.objects.keys());
+    let seats: u32 = s
+        .objects
+        .iter()
+        .filter(|(c, _)| c.ends_with("chair"))
+        .map(|(_, o)| o.number)
+        .sum();
+    assert_eq!(seats, 15, "{:?}", s.objects);
+    let at = s
+        .relations
+        .iter()
+        .filter(|r| {
+            r.subject.contains("chair")
+                && r.object.starts_with("round table")
+                && matches!(r.relation, RelationKind::At | RelationKind::Around)
+        })
+        .count();
+    assert_eq!(at, 15);
+    let p = plan_prompt("a bedroom w/o a rug, a bed and a wardrobe").expect("planned");
+    assert!(
+        !p.spec.objects.contains_key("rug"),
+        "{:?}",
+        p.spec.objects.keys()
+    );
+}
+
+#[test]
+fn seats_said_with_a_table_are_its_seats_in_any_place() {
+    // a study's usual seat is an office chair, which calls for desks; these sit at the table
+    let p = plan_prompt("a study with a long table by the window with six chairs").expect("plan");
+    let s = &p.spec;
+    assert_eq!(
+        count(s, "office chair") + count(s, "desk"),
+        2,
+        "{:?}",
+        s.objects
+    );
+    let seated = s
+        .relations
+        .iter()
+        .filter(|r| {
+            r.subject.contains("chair")
+                && matches!(r.relation, RelationKind::At | RelationKind::Around)
+                && !r.object.starts_with("desk")
+        })
+        .count();
+    assert_eq!(seated, 6, "{:?}", s.relations);
+}
+
+#[test]
+fn tables_of_n_for_the_guests_seat_n() {
+    let p = plan_prompt("a banquet hall: twelve round tables of ten for the guests and a stage")
+        .expect("planned");
+    let s = &p.spec;
+    assert_eq!(count(s, "round table"), 12);
+    let around = s
+        .relations
+        .iter()
+        .filter(|r| r.object.starts_with("round table") && r.relation == RelationKind::Around)
+        .count();
+    assert_eq!(around, 120, "{:?}", s.objects);
+}
+
+#[test]
+fn on_each_and_at_each_are_said_of_every_one() {
+    let p = plan_prompt("an office with three desks, a lamp on each").expect("planned");
+    let s = &p.spec;
+    assert_eq!(count(s, "desk"), 3);
+    let lamps: Vec<_> = s
+        .relations
+        .iter()
+        .filter(|r| r.subject.contains("lamp") && r.relation == RelationKind::Over)
+        .map(|r| r.object.clone())
+        .collect();
+    assert_eq!(lamps.len(), 3, "{:?}", s.relations);
+    let mut on: Vec<_> = lamps.clone();
+    on.sort();
+    on.dedup();
+    assert_eq!(on.len(), 3, "one on each desk: {lamps:?}");
+    let p = plan_prompt("a chemistry lab: five lab benches, a sink at each, and a fume cupboard")
+        .expect("planned");
+    let s = &p.spec;
+    let sink = s
+        .objects
+        .keys()
+        .find(|c| c.ends_with("sink"))
+        .expect("sinks")
+        .clone();
+    let bench = s
+        .objects
+        .keys()
+        .find(|c| c.contains("bench"))
+        .expect("benches")
+        .clone();
+    assert_eq!(count(s, &sink), count(s, &bench), "{:?}", s.objects);
+    assert_eq!(
+        related(s, &sink, RelationKind::Next, &bench),
+        count(s, &bench) as usize
+    );
+    assert!(
+        s.objects.contains_key("fume hood"),
+        "a fume cupboard is a fume hood"
+    );
+}
+
+#[test]
+fn a_thing_asked_about_and_answered_is_one_thing() {
+    let p = plan_prompt(
+        "A: Kitchen for a family of four. B: Table for four? A: Yes, table for four by the window.",
+    )
+    .expect("planned");
+    let s = &p.spec;
+    let tables: u32 = s
+        .objects
+        .iter()
+        .filter(|(c, _)| c.ends_with("table") && !c.contains("side"))
+        .map(|(_, o)| o.number)
+        .sum();
+    assert_eq!(tables, 1, "{:?}", s.objects);
+    let chairs: u32 = s
+        .objects
+        .iter()
+        .filter(|(c, _)| c.ends_with("chair"))
+        .map(|(_, o)| o.number)
+        .sum();
+    assert_eq!(chairs, 4, "{:?}", s.objects);
+    let p = plan_prompt("A: a bedroom with a double bed. B: A rug? A: No. B: A desk? A: Yes.")
+        .expect("planned");
+    assert!(!p.spec.objects.contains_key("rug"), "{:?}", p.spec.objects);
+    assert!(p.spec.objects.contains_key("desk"), "{:?}", p.spec.objects);
+}
+
+#[test]
+fn a_window_or_door_says_which_corner_or_wall() {
+    for (prompt, cat, want) in [
+        (
+            "a lounge with a sofa and a christmas tree in the corner by the window",
+            "christmas tree",
+            Anchor::Window,
+        ),
+        (
+            "a hallway with a coat stand in the corner by the door",
+            "coat rack",
+            Anchor::Door,
+        ),
+        (
+            "a gift shop with flower buckets along the shop window",
+            "flower bucket",
+            Anchor::Window,
+        ),
+    ] {
+        let p = plan_prompt(prompt).expect(prompt);
+        let id = format!("{cat}1");
+        assert_eq!(
+            p.spec.anchors.get(&id),
+            Some(&want),
+            "{prompt}: {:?}",
+            p.spec.anchors
+        );
+    }
+}
+
+#[test]
+fn a_thing_of_the_walls_said_in_the_middle_stands_there() {
+    let prompt = "a carpentry shop with a big workbench in the middle of the room and tools";
+    for seed in SEEDS {
+        let (l, spec) = lay(prompt, seed);
+        assert_eq!(spec.anchors.get("workbench1"), Some(&Anchor::Center));
+        let b = all(&l, "workbench")[0];
+        let [w, d, _] = l.room.size;
+        let off = b.position[0].hypot(b.position[1]);
+        assert!(
+            off <= 0.25 * w.min(d) + 0.3,
+            "seed {seed}: {off:.2} m off the middle"
+        );
+    }
+    // the middle of a wall is at that wall
+    let p = plan_prompt("a living room with a bookcase in the middle of the back wall")
+        .expect("planned");
+    assert_eq!(
+        p.spec
+            .anchors
+            .get("bookcase1")
+            .or(p.spec.anchors.get("bookshelf1")),
+        Some(&Anchor::Side)
+    );
+}
