@@ -156,6 +156,17 @@ pub(super) fn object_spans(
         // right after the determiner describes what follows ("a stuffed owl", "two carved masks",
         // "a hanging scroll", "a sleeping dragon").
         let mut j = if bare { k } else { k + 1 };
+        // "a couple of deckchairs", "a pair of easels", "a dozen crates": the count's words
+        // come before the thing
+        if !bare
+            && all.get(j + 1).is_some_and(|x| x.1 == "of")
+            && all
+                .get(j)
+                .is_some_and(|x| ["couple", "pair", "few", "dozen", "handful"].contains(&x.1))
+        {
+            j += 2;
+        }
+        let from0 = j;
         if j + 1 < all.len()
             && is_verb(all[j].1)
             && (all[j].1.ends_with("ed") || all[j].1.ends_with("ing"))
@@ -164,7 +175,7 @@ pub(super) fn object_spans(
             j += 1;
         }
         let (mut j, mut known_next) = run(j);
-        let mut from = if bare { k } else { k + 1 };
+        let mut from = from0;
         // "a hoard of gold", "a heap of gold coins": a quantity word names the heap of what
         // follows "of" (`kb/words.txt`: quantities), one object of the words after it.
         if j > k + 1
@@ -196,6 +207,37 @@ pub(super) fn object_spans(
                 }
             }
             let on = all.get(q).is_some_and(|x| x.1 == "on");
+            // "a fruit machine by the door", "dust extractor in the corner", "a kiln against
+            // the wall": put by the door or a window, in a corner or the middle, at a wall
+            let word = |p: usize| all.get(p).map_or("", |x| x.1);
+            let by = match (word(q), word(q + 1)) {
+                ("next", "to") => Some(q + 2),
+                ("by" | "near" | "beside" | "against" | "along" | "in", _) => Some(q + 1),
+                _ => None,
+            };
+            if let Some(p) = by {
+                let p = if ["the", "a", "one", "each", "every"].contains(&word(p)) {
+                    p + 1
+                } else {
+                    p
+                };
+                let p = if ["back", "far", "front", "side", "left", "right", "end"]
+                    .contains(&word(p))
+                {
+                    p + 1
+                } else {
+                    p
+                };
+                let place = match word(q) {
+                    "in" => ["corner", "corners", "middle", "centre", "center"].contains(&word(p)),
+                    "against" | "along" => ["wall", "walls"].contains(&word(p)),
+                    _ => ["door", "doors", "window", "windows", "entrance", "wall"]
+                        .contains(&word(p)),
+                };
+                if place {
+                    return true;
+                }
+            }
             match all.get(q).map(|x| x.1) {
                 Some("on" | "under" | "beside" | "atop" | "upon" | "near") => q += 1,
                 Some("next") if all.get(q + 1).is_some_and(|x| x.1 == "to") => q += 2,

@@ -103,7 +103,17 @@ pub(super) fn read_scene(
             // school lab; "a child's bedroom" the child's room.
             let generic = word_list("place_heads").contains(&m.as_str())
                 || (word.ends_with("'s") && !shared(m.as_str()));
-            let modified = (generic && !word.is_empty() && !is_function_word(word))
+            // (a size word of a room is none: "a narrow hall" is a hall, no narrowboat)
+            let sized = [
+                "room_tiny",
+                "room_small",
+                "room_large",
+                "room_huge",
+                "room_long",
+            ]
+            .iter()
+            .any(|l| word_list(l).contains(&word));
+            let modified = (generic && !word.is_empty() && !is_function_word(word) && !sized)
                 .then(|| {
                     scene_of
                         .iter()

@@ -176,6 +176,8 @@ fn mendable(kb: &KnowledgeBase, w: &str, n: &str) -> bool {
         && crate::plan::lexicon::kind(w).is_none()
         && !crate::plan::lexicon::is_near_word(w)
         && crate::plan::lexicon::kind(&super::singular(w)).is_none()
+        // "railings" is a word of its own, no slip for "trailing"
+        && !crate::plan::lexicon::is_noun(&super::singular(w))
         && !super::words::is_known_word(w)
         && crate::plan::offline::style_word(w).is_none()
         && super::object_scale(w).is_none()

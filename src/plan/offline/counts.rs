@@ -53,6 +53,14 @@ pub(super) fn mention_counts(d: &mut Draft) {
             continue;
         }
         match m.count {
+            // "two bunks one above the other": a bunk is one bed of a bunk bed
+            Some(n)
+                if lang::singular(m.text.rsplit(' ').next().unwrap_or("")) == "bunk"
+                    && lang::plural_means_one(cat).is_some() =>
+            {
+                let holds = lang::plural_means_one(cat).unwrap_or(1).max(1);
+                *explicit.entry(cat.clone()).or_default() += n.div_ceil(holds);
+            }
             Some(n) => {
                 *explicit.entry(cat.clone()).or_default() += n;
             }
