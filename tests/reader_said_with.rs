@@ -241,3 +241,32 @@ fn a_thing_of_the_walls_said_in_the_middle_stands_there() {
         Some(&Anchor::Side)
     );
 }
+
+#[test]
+fn a_thing_of_tops_said_at_a_wall_stands_on_a_support_there() {
+    let prompt = "a study with two rows of two desks, a sideboard and a printer against the wall";
+    for seed in SEEDS {
+        let (l, _) = lay(prompt, seed);
+        let p = all(&l, "printer")[0];
+        let [w, d, _] = l.room.size;
+        let box2 = dreamscene::plan::check::Box2::of(p);
+        let off = box2
+            .corners()
+            .iter()
+            .map(|c| (0.5 * w - c[0].abs()).min(0.5 * d - c[1].abs()))
+            .fold(f64::INFINITY, f64::min);
+        // on the sideboard at the wall (whose own gap is the layout's), not on a desk of the rows
+        assert!(
+            off <= 0.5,
+            "seed {seed}: the printer is {off:.2} m from a wall"
+        );
+        let on_desk = all(&l, "desk")
+            .iter()
+            .any(|d| common::placed::stands_on(p, d));
+        assert!(
+            !on_desk,
+            "seed {seed}: the printer stands on a desk in the rows"
+        );
+        assert!(p.position[2] > 0.3, "seed {seed}: it stands on a top");
+    }
+}

@@ -392,10 +392,47 @@ pub fn apply(spec: &mut SceneSpec) -> Mounts {
                     // the first support in the table's order with room left on a top (what the
                     // text put on a small side table keeps it: the default globe goes on the
                     // reading table), else the first
+                    // ("a printer against the wall": on a support that stands there, the
+                    // filing cabinet against it rather than a desk in the room)
+                    let want = spec.anchors.get(&id).copied().filter(|a| {
+                        matches!(
+                            a,
+                            Anchor::Side | Anchor::Window | Anchor::Corner | Anchor::Door
+                        )
+                    });
+                    // (things set out in rows stand in the room, whatever their kind)
+                    // (nor what is placed beside another: a filing cabinet by its desk)
+                    let free = |sup: &String| {
+                        !spec.relations.iter().any(|r| {
+                            r.subject
+                                .strip_prefix(sup.as_str())
+                                .is_some_and(|k| k.parse::<u32>().is_ok())
+                                && r.relation != RelationKind::Over
+                        })
+                    };
+                    let there = |sup: &String| {
+                        spec.objects.get(sup).is_some_and(|o| o.rows == 0)
+                            && free(sup)
+                            && want.is_some_and(|a| {
+                                spec.anchors.get(&format!("{sup}1")) == Some(&a)
+                                    || (a == Anchor::Side
+                                        && effective_class(spec, sup) == Class::AgainstWall
+                                        && !matches!(
+                                            spec.anchors.get(&format!("{sup}1")),
+                                            Some(Anchor::Center | Anchor::Others)
+                                        ))
+                            })
+                    };
                     let best = sups
                         .iter()
+                        .filter(|s| there(s))
                         .filter_map(least)
-                        .find(|(_, share)| *share <= FULL_TOP)
+                        .find(|(_, share)| *share <= 1.0)
+                        .or_else(|| {
+                            sups.iter()
+                                .filter_map(least)
+                                .find(|(_, share)| *share <= FULL_TOP)
+                        })
                         .or_else(|| sups.first().and_then(least))
                         .map(|(id, _)| id);
                     if let Some(oid) = best {
