@@ -21,6 +21,15 @@ fn related(spec: &SceneSpec, subject: &str, kind: RelationKind, object: &str) ->
         .count()
 }
 
+/// How many things the spec has of the categories `pick` takes.
+fn total(spec: &SceneSpec, pick: impl Fn(&str) -> bool) -> u32 {
+    spec.objects
+        .iter()
+        .filter(|(c, _)| pick(c))
+        .map(|(_, o)| o.number)
+        .sum()
+}
+
 fn count(spec: &SceneSpec, category: &str) -> u32 {
     spec.objects.get(category).map_or(0, |o| o.number)
 }
@@ -55,12 +64,7 @@ fn w_slash_is_with_and_its_seats_sit_at_each_table() {
         plan_prompt("a tiny cafe, five small round tables each w/ three chairs").expect("planned");
     let s = &p.spec;
     assert_eq!(count(s, "round table"), 5, "{:?}", s.objects.keys());
-    let seats: u32 = s
-        .objects
-        .iter()
-        .filter(|(c, _)| c.ends_with("chair"))
-        .map(|(_, o)| o.number)
-        .sum();
+    let seats = total(s, |c| c.ends_with("chair"));
     assert_eq!(seats, 15, "{:?}", s.objects);
     let at = s
         .relations
@@ -166,19 +170,9 @@ fn a_thing_asked_about_and_answered_is_one_thing() {
     )
     .expect("planned");
     let s = &p.spec;
-    let tables: u32 = s
-        .objects
-        .iter()
-        .filter(|(c, _)| c.ends_with("table") && !c.contains("side"))
-        .map(|(_, o)| o.number)
-        .sum();
+    let tables = total(s, |c| c.ends_with("table") && !c.contains("side"));
     assert_eq!(tables, 1, "{:?}", s.objects);
-    let chairs: u32 = s
-        .objects
-        .iter()
-        .filter(|(c, _)| c.ends_with("chair"))
-        .map(|(_, o)| o.number)
-        .sum();
+    let chairs = total(s, |c| c.ends_with("chair"));
     assert_eq!(chairs, 4, "{:?}", s.objects);
     let p = plan_prompt("A: a bedroom with a double bed. B: A rug? A: No. B: A desk? A: Yes.")
         .expect("planned");
