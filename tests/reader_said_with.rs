@@ -30,6 +30,15 @@ fn total(spec: &SceneSpec, pick: impl Fn(&str) -> bool) -> u32 {
         .sum()
 }
 
+/// The spec's category `pick` takes (`what` names it in the message when there is none).
+fn category_where(spec: &SceneSpec, pick: impl Fn(&str) -> bool, what: &str) -> String {
+    spec.objects
+        .keys()
+        .find(|c| pick(c))
+        .unwrap_or_else(|| panic!("no {what} in {:?}", spec.objects.keys()))
+        .clone()
+}
+
 fn count(spec: &SceneSpec, category: &str) -> u32 {
     spec.objects.get(category).map_or(0, |o| o.number)
 }
@@ -49,12 +58,7 @@ fn a_placement_after_each_with_is_said_of_the_things_before() {
         .count();
     assert_eq!(under, 6, "every table under the gazebo: {:?}", s.relations);
     // and the benches stand at their tables (under the roof with them)
-    let bench = s
-        .objects
-        .keys()
-        .find(|c| c.ends_with("bench"))
-        .expect("benches")
-        .clone();
+    let bench = category_where(s, |c| c.ends_with("bench"), "benches");
     assert_eq!(related(s, &bench, RelationKind::Around, "picnic table"), 12);
 }
 
@@ -140,18 +144,8 @@ fn on_each_and_at_each_are_said_of_every_one() {
     let p = plan_prompt("a chemistry lab: five lab benches, a sink at each, and a fume cupboard")
         .expect("planned");
     let s = &p.spec;
-    let sink = s
-        .objects
-        .keys()
-        .find(|c| c.ends_with("sink"))
-        .expect("sinks")
-        .clone();
-    let bench = s
-        .objects
-        .keys()
-        .find(|c| c.contains("bench"))
-        .expect("benches")
-        .clone();
+    let sink = category_where(s, |c| c.ends_with("sink"), "sinks");
+    let bench = category_where(s, |c| c.contains("bench"), "benches");
     assert_eq!(count(s, &sink), count(s, &bench), "{:?}", s.objects);
     assert_eq!(
         related(s, &sink, RelationKind::Next, &bench),

@@ -17,6 +17,15 @@ fn meant<'a>(d: &'a Draft, i: usize) -> &'a String {
     &d.cats[first.unwrap_or(i)]
 }
 
+/// The mentions the text gives one of the anchors `kinds`.
+fn anchored(r: &crate::plan::lang::Reading, kinds: &[Anchor]) -> BTreeSet<usize> {
+    r.anchors
+        .iter()
+        .filter(|(_, a)| kinds.contains(a))
+        .map(|&(mi, _)| mi)
+        .collect()
+}
+
 /// Each category's anchor: the category's, the scene's, then the text's.
 pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     let Draft {
@@ -50,12 +59,7 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     }
     // "in one corner, facing the window": one anchor per object, and the facing is what a
     // position word cannot give back, so it stays
-    let facing: BTreeSet<usize> = r
-        .anchors
-        .iter()
-        .filter(|(_, a)| matches!(a, Anchor::FaceWindow | Anchor::FaceDoor))
-        .map(|&(mi, _)| mi)
-        .collect();
+    let facing = anchored(r, &[Anchor::FaceWindow, Anchor::FaceDoor]);
     // "a reading nook by the window": the place's main piece (what it cannot do without, else
     // its first default), or what the text names in that piece's role, is where the place is
     if let (Some(a), Some(s)) = (r.place_anchor, scene) {
@@ -78,12 +82,7 @@ pub(super) fn anchors(d: &Draft) -> BTreeMap<String, Anchor> {
     }
     // "a tree in the corner by the window", "a desk against the wall by the door": the window
     // or door says which corner or wall, so it is the anchor
-    let by_opening: BTreeSet<usize> = r
-        .anchors
-        .iter()
-        .filter(|(_, a)| matches!(a, Anchor::Window | Anchor::Door))
-        .map(|&(mi, _)| mi)
-        .collect();
+    let by_opening = anchored(r, &[Anchor::Window, Anchor::Door]);
     for &(mi, a) in &r.anchors {
         let c = meant(d, mi);
         if matches!(a, Anchor::Corner | Anchor::Side) && by_opening.contains(&mi) {
