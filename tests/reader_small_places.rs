@@ -129,6 +129,22 @@ fn unknown_things_put_somewhere_or_counted_are_things() {
     // a bare word put nowhere stays a word
     let p = plan_prompt("a study with sunlight, a desk and a chair").expect("study");
     assert!(!p.spec.objects.keys().any(|c| c.contains("sunlight")));
+    // what a thing is said to have or be loaded with is no thing put at the wall: the place
+    // is said of the thing before
+    for (prompt, word) in [
+        ("a study with a desk with drawers by the window", "drawer"),
+        (
+            "a barn with a cart loaded with hay bundles against the wall",
+            "bundle",
+        ),
+    ] {
+        let p = plan_prompt(prompt).expect(prompt);
+        assert!(
+            !p.spec.objects.keys().any(|c| c.contains(word)),
+            "{prompt}: {:?}",
+            p.spec.objects.keys()
+        );
+    }
     // and a word of its own is not mended into an object's name
     let p = plan_prompt("a roof terrace with planters along the railings").expect("terrace");
     assert!(

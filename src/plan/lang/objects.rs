@@ -234,7 +234,10 @@ pub(super) fn object_spans(
                     _ => ["door", "doors", "window", "windows", "entrance", "wall"]
                         .contains(&word(p)),
                 };
-                if place {
+                // "a dresser loaded with dishes against the wall", "a desk with drawers by
+                // the window": a phrase said after "with" is what the thing before has, and
+                // the place is said of that thing
+                if place && !(bare && k > 0 && all[k - 1].1 == "with") {
                     return true;
                 }
             }
