@@ -77,3 +77,42 @@ fn the_desk_the_text_sets_in_the_room_is_its_one_desk() {
     let s = plan("an office where the desks face the window");
     assert!(number(&s, "desk") >= 2, "{:?}", keys(&s));
 }
+
+/// "no X, Y facing Z": a comma alone carries "no" only through a list an "or" or "nor" ends
+/// ("no rugs, curtains or lamps"); what follows "no X," without one is there.
+#[test]
+fn a_comma_after_what_is_not_there_lists_what_is() {
+    for (prompt, word) in [
+        (
+            "snug den, no television, sofa under the window and a bookcase",
+            "sofa",
+        ),
+        (
+            "attic bedroom - no wardrobe, double bed under the skylight",
+            "bed",
+        ),
+    ] {
+        let s = plan(prompt);
+        assert!(number(&s, word) >= 1, "{prompt}: {:?}", keys(&s));
+    }
+    for (prompt, gone) in [
+        (
+            "a study with no rug, curtains or lamps, just a desk and a chair",
+            ["rug", "curtain", "lamp"],
+        ),
+        (
+            "a guest room without a tv, a mirror, nor a rug",
+            ["tv", "mirror", "rug"],
+        ),
+    ] {
+        let s = plan(prompt);
+        for w in gone {
+            assert_eq!(number(&s, w), 0, "{prompt}: {w} in {:?}", keys(&s));
+        }
+        assert!(
+            number(&s, "desk") + number(&s, "bed") >= 1,
+            "{prompt}: {:?}",
+            keys(&s)
+        );
+    }
+}

@@ -253,7 +253,22 @@ pub(super) fn read_mentions(
             let only_connectors = stop
                 .iter()
                 .all(|w| ["or", "nor", ",", "a", "an", "any", "the"].contains(w));
-            if prev_neg && only_connectors && !stop.is_empty() {
+            // a comma alone carries the negation only in a list an "or" or "nor" ends ("no
+            // rugs, curtains or lamps"); "no coffee table, sofa facing the telly" lists what
+            // is there after what is not
+            let or_said = |w: &&str| ["or", "nor"].contains(w);
+            let clause = t[end..]
+                .split([':', ';', '.', '!', '?'])
+                .next()
+                .unwrap_or("")
+                .split(" - ")
+                .next()
+                .unwrap_or("");
+            let list_ends_in_or = stop.iter().any(or_said)
+                || clause
+                    .split_whitespace()
+                    .any(|w| or_said(&w.trim_matches(',')));
+            if prev_neg && only_connectors && !stop.is_empty() && list_ends_in_or {
                 negated = true;
             }
         }
