@@ -116,11 +116,12 @@ fn tables_of_n_for_the_guests_seat_n() {
     let p = plan_prompt("a banquet hall: twelve round tables of ten for the guests and a stage")
         .expect("planned");
     let s = &p.spec;
-    assert_eq!(count(s, "round table"), 12);
+    // the place's own round tables
+    assert_eq!(count(s, "round banquet table"), 12);
     let around = s
         .relations
         .iter()
-        .filter(|r| r.object.starts_with("round table") && r.relation == RelationKind::Around)
+        .filter(|r| r.object.starts_with("round") && r.relation == RelationKind::Around)
         .count();
     assert_eq!(around, 120, "{:?}", s.objects);
 }

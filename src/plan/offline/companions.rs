@@ -77,18 +77,22 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
     for seat in &cats_now {
         // A rug under a table or a coffee table before a sofa is no companion to count by.
         use crate::plan::spec::RelationKind::{Front, Opposite, Under};
-        let Some((kind, table)) = crate::plan::groups::group_of(&probe, seat) else {
+        let Some((mut kind, mut table)) = crate::plan::groups::group_of(&probe, seat) else {
             continue;
         };
         if matches!(kind, Under | Front | Opposite) {
             continue;
         }
         // A default seat whose own table is gone (the teacher's chair, once "the invigilator's
-        // desk" took the teacher desk's place) is no seat of the others.
+        // desk" took the teacher desk's place) is no seat of the others; one whose own table
+        // is still there (the round tables of a reception that also names its top table) is
+        // counted by it.
         if defaults.contains_key(seat) && !explicit.contains_key(seat) {
-            let was = crate::plan::groups::group_of(&default_probe, seat).map(|g| g.1);
-            if was.is_some_and(|w| w != table) {
-                continue;
+            let was = crate::plan::groups::group_of(&default_probe, seat);
+            match was {
+                Some((k, w)) if w != table && counts.contains_key(&w) => (kind, table) = (k, w),
+                Some((_, w)) if w != table => continue,
+                _ => {}
             }
         }
         let Some(per) = crate::plan::groups::seats_per(&probe, seat, &table) else {
@@ -128,12 +132,24 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 inferred.entry(seat.clone()).or_insert_with(|| said.clone());
             }
             if !table_named {
-                counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+                // "christmas dinner for ten": a place of one table lays that one for them (up
+                // to a dozen, as a home's table is); others take as many as they need
+                let one = (defaults.get(&table) == Some(&1) && p <= 12)
+                    .then(|| super::seats::table_laid(kb, &table, seat, adjectives, p))
+                    .flatten();
+                if let Some(size) = one {
+                    sizes.insert(table.clone(), size);
+                    counts.insert(table.clone(), 1);
+                } else {
+                    counts.insert(table.clone(), p.div_ceil(per.max(1)).max(1));
+                }
                 inferred.entry(table.clone()).or_insert(said);
             }
             continue;
         }
-        if table_named && !seat_named && per < 12 {
+        // (each table takes no more than the defaults give one, or four: a big round table
+        // that could take twelve is laid as the place lays it)
+        if table_named && !seat_named {
             // Seats a table the way the scene's defaults do, within its capacity.
             let (ds, dt) = (defaults.get(seat).copied(), defaults.get(&table).copied());
             let mut each = match (ds, dt) {
@@ -190,7 +206,11 @@ pub(super) fn companions(d: &mut Draft, people: Option<u32>) {
                 .filter(|c| *c != seat && takes(c))
                 .map(|c| counts.get(c).copied().unwrap_or(0))
                 .sum();
-            let n = (counts[&table] * each).saturating_sub(taken);
+            // and the seats of the other tables it sits at that the text names (the top
+            // table's row beside the round tables)
+            let besides =
+                super::seats::other_tables_seats(kb, &table, seat, counts, explicit, sizes, &[]);
+            let n = (counts[&table] * each + besides).saturating_sub(taken);
             counts.insert(seat.clone(), n);
             if let Some(i) = first_mention(&table).filter(|_| !named.contains(seat)) {
                 inferred

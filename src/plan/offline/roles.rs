@@ -539,6 +539,21 @@ fn in_scene(
         return most_its_own(s, s.objects.iter().filter(same_head))
             .unwrap_or_else(|| m.category.clone());
     }
+    // "ten round tables" at a wedding: a kind said in several words that a kind of the
+    // place's own names in full, with more words, is that kind (its round banquet tables,
+    // with their banquet chairs round them)
+    let said_words: Vec<String> = m.text.split(' ').map(lang::singular).collect();
+    if said_words.len() > 1 {
+        let fuller = s.objects.iter().filter(|(c, _)| {
+            let words: Vec<&str> = c.split(' ').collect();
+            words.len() > said_words.len()
+                && words.last().copied() == said_words.last().map(String::as_str)
+                && said_words.iter().all(|w| words.contains(&w.as_str()))
+        });
+        if let Some(c) = most_its_own(s, fuller) {
+            return c;
+        }
+    }
     // "shelving units" in a shop: a thing said by a name that says only its role (`kb/roles.txt`:
     // generic) is the scene's default of that role (the shop's display shelves); a kind said
     // by its own name ("bookcases", "a drinks fridge") stays itself.
@@ -597,12 +612,26 @@ fn in_scene(
     if !bare {
         return m.category.clone();
     }
+    // "one long table for twenty" in a banquet hall: a round kind of the place's is not the
+    // long one said, nor a long kind a round one
+    let round = |c: &str| {
+        c.split(' ').any(|w| w == "round")
+            || kb
+                .object(c)
+                .is_some_and(|o| o.archetype.starts_with("round"))
+    };
+    let said_shape = m.adjectives.iter().find_map(|a| match a.as_str() {
+        "round" | "circular" => Some(true),
+        "long" | "rectangular" | "oblong" | "square" | "trestle" => Some(false),
+        _ => None,
+    });
     let sharing = s.objects.iter().filter(|(c, _)| {
         c.rsplit(' ').next() == Some(head.as_str())
             || kb.object(&head).is_some_and(|o| o.category == **c)
     });
     most_its_own(s, sharing)
         .or_else(|| set_on_its_own(kb, s, &head))
+        .filter(|c| said_shape.is_none_or(|r| round(c) == r))
         .unwrap_or_else(|| m.category.clone())
 }
 

@@ -65,9 +65,12 @@ fn capacity(table: &str, seat: &str, size: [f64; 3]) -> Option<u32> {
 /// The footprint of a `table` laid for `per` people (kb/seating.txt), its height kept: a round
 /// one when its kind or the text says so. Only plain dining-like tables (a picnic table's size
 /// holds its benches, a pool table seats nobody).
-fn table_laid(
+/// A long table grows past the furnishers' line when its seats are wider than the 0.6 m of
+/// edge a place takes there (fourteen office chairs need a longer boardroom table).
+pub(super) fn table_laid(
     kb: &KnowledgeBase,
     table: &str,
+    seat: &str,
     adjectives: &BTreeMap<String, Vec<String>>,
     per: u32,
 ) -> Option<[f64; 3]> {
@@ -80,6 +83,16 @@ fn table_laid(
         return None;
     }
     let [w, d] = crate::plan::seating::table_for(per.max(1), round)?;
+    // one at each end from eight, the rest along the two long sides, each seat and a hand's
+    // width of room beside it
+    let seat_width = kb.object(seat).map_or(0.5, |s| s.size[0]);
+    let ends = if per >= 8 { 2 } else { 0 };
+    let along = per.saturating_sub(ends).div_ceil(2) as f64;
+    let w = if round {
+        w
+    } else {
+        w.max(along * (seat_width + 0.1))
+    };
     Some([w, d, o.size[2]])
 }
 
@@ -161,7 +174,7 @@ pub(super) fn seats_for(d: &mut Draft) -> Option<u32> {
             .collect();
         let mixed = each.iter().any(|&p| p != most) && each.len() == tables as usize;
         if !sizes.contains_key(table) {
-            let laid_for = |p: u32| table_laid(kb, table, adjectives, p);
+            let laid_for = |p: u32| table_laid(kb, table, &seat, adjectives, p);
             let list: Option<Vec<(u32, [f64; 3])>> =
                 each.iter().map(|&p| Some((p, laid_for(p)?))).collect();
             match (mixed, list, laid_for(most), kb.object(table)) {
@@ -245,7 +258,7 @@ pub(super) fn people_at_the_table(d: &mut Draft, people: Option<u32>) {
         });
     let Some((table, seat)) = table else { return };
     if counts[&table] == 1 && !sizes.contains_key(&table) {
-        if let Some(size) = table_laid(kb, &table, adjectives, p) {
+        if let Some(size) = table_laid(kb, &table, &seat, adjectives, p) {
             sizes.insert(table.clone(), size);
         }
     }
