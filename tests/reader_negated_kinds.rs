@@ -116,3 +116,19 @@ fn a_comma_after_what_is_not_there_lists_what_is() {
         );
     }
 }
+
+/// "it's not a sports bar": what the place is said not to be takes no thing of it away (the
+/// bar counter of a pub stays).
+#[test]
+fn what_the_place_is_not_takes_nothing_away() {
+    for prompt in [
+        "a cosy wine bar with a few tables, no telly - it's not a sports bar",
+        "a quiet village pub, open fire, and no it isn't a cocktail bar",
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "bar counter"), 1, "{prompt}: {:?}", keys(&s));
+    }
+    // "no bar" still takes it away
+    let s = plan("a pub with no bar, just tables");
+    assert_eq!(number(&s, "bar counter"), 0, "{:?}", keys(&s));
+}

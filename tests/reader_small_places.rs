@@ -103,8 +103,8 @@ fn a_bunk_is_one_bed_of_a_bunk_bed() {
 fn unknown_things_put_somewhere_or_counted_are_things() {
     for (prompt, word) in [
         (
-            "a games room, pool table in the middle, claw crane by the door",
-            "claw crane",
+            "a games room, pool table in the middle, shuffleboard by the door",
+            "shuffleboard",
         ),
         (
             "my workshop: a workbench, a bandsaw, spindle sander in the corner",
@@ -152,6 +152,26 @@ fn unknown_things_put_somewhere_or_counted_are_things() {
             .objects
             .keys()
             .any(|c| c.contains("trailing") || c.contains("hanging plant")),
+        "{:?}",
+        p.spec.objects.keys()
+    );
+}
+
+/// Everyday names of things and places: an open fire is a fireplace, claw machines are arcade
+/// cabinets, an amusement arcade is a games room, not a beach because it is by the sea.
+#[test]
+fn everyday_names_of_fires_and_arcades() {
+    let p = plan_prompt("a snug with two armchairs by a roaring log fire").expect("snug");
+    assert!(
+        p.spec.objects.contains_key("fireplace"),
+        "{:?}",
+        p.spec.objects.keys()
+    );
+    let p = plan_prompt("a seaside amusement arcade with three claw machines").expect("arcade");
+    assert_eq!(p.spec.scene_type, SceneType::Indoor);
+    assert_eq!(
+        p.spec.objects.get("arcade machine").map(|o| o.number),
+        Some(3),
         "{:?}",
         p.spec.objects.keys()
     );

@@ -325,6 +325,20 @@ pub(super) fn read_mentions(
         // kind as what is replaced, so the words choose which one (its make or material); the
         // kind is wanted, once.
         let mut reference = false;
+        // "no TV, it's not a sports bar", "this isn't a games room": what the place is not,
+        // said of the place, takes away no thing of its
+        let copula = |w: Option<&str>| {
+            matches!(
+                w,
+                Some("it's" | "its" | "is" | "that's" | "thats" | "this's" | "was" | "'s")
+            )
+        };
+        let is_not = matches!(last, Some("a" | "an"))
+            && (back(2) == Some("not") && copula(back(3))
+                || matches!(back(2), Some("isn't" | "isnt" | "wasn't" | "ain't")));
+        if is_not && negated {
+            (negated, count, reference) = (false, None, true);
+        }
         if replaced
             && r.mentions
                 .last()

@@ -111,6 +111,16 @@ pub(super) fn mention_counts(d: &mut Draft) {
     for (c, n) in explicit.iter() {
         counts.insert(c.clone(), *n);
     }
+    // "six washing machines in a row along one wall": one row said along one wall is a run
+    // standing against that wall (`relations`), not a block of rows in the room with a
+    // band before it
+    let one_wall = r.one_wall.clone();
+    for (i, (m, cat)) in r.mentions.iter_mut().zip(cats.iter()).enumerate() {
+        if one_wall.contains(&i) && m.rows <= 1 && !super::relations::hung(cat) {
+            m.rows = 0;
+            m.in_rows = false;
+        }
+    }
     // "rows of chairs": as many rows as make a block a little wider than deep
     for (m, cat) in r.mentions.iter_mut().zip(cats.iter()) {
         if m.in_rows && m.rows == 0 && !m.negated {
