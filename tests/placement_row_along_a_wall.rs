@@ -1,6 +1,7 @@
 //! One row said along one wall ("six washing machines in a row along one wall") is a run
 //! standing against that wall, each beside the one before, not a block of rows out in the
-//! room with a band kept before it. Prompts of no corpus.
+//! room with a band kept before it, in a room with a wall long enough for it. Prompts of no
+//! corpus.
 use dreamscene::plan::check::{relations_unsatisfied, validity_problems, wall_distances, Box2};
 use dreamscene::plan::gcp::{layout, LayoutOptions};
 use dreamscene::plan::offline::plan_prompt;
@@ -17,6 +18,12 @@ fn a_row_said_along_one_wall_stands_against_it() {
             "a utility room, three washing machines in a row against the back wall",
             "washing machine",
             3,
+        ),
+        // a room sized by floor area alone has no wall for nine: the room takes the run
+        (
+            "a dentist's waiting room, a row of nine chairs along one wall, a fish tank",
+            "waiting chair",
+            9,
         ),
     ] {
         let plan = plan_prompt(prompt).expect(prompt);

@@ -83,6 +83,11 @@ pub fn room_for(spec: &SceneSpec, scene: SceneType) -> Room {
         .collect();
     let mut room = choose_room(&grown, scene);
     room.size[2] = choose_room(&instances, scene).size[2];
+    // a run asked along one wall: a wall long enough for it
+    let run = (crate::plan::gcp::longest_run(spec) * 10.0).ceil() / 10.0;
+    if run > room.size[0].max(room.size[1]) {
+        room.size[0] = run;
+    }
     room
 }
 

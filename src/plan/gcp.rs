@@ -26,6 +26,7 @@ mod problem;
 mod room;
 pub mod rows;
 mod runs;
+pub use runs::longest_run;
 mod score;
 mod spacing;
 mod staff;
@@ -119,6 +120,11 @@ pub fn layout(spec: &SceneSpec, opts: LayoutOptions) -> Result<Layout, SpecError
         let need = rows::room_for_rows(spec, [r.size[0], r.size[1]]);
         for (v, n) in r.size.iter_mut().zip(need) {
             *v = v.max((n * 10.0).ceil() / 10.0);
+        }
+        // a run asked along one wall: a wall long enough for it
+        let run = (runs::longest_run(spec) * 10.0).ceil() / 10.0;
+        if run > r.size[0].max(r.size[1]) {
+            r.size[0] = run;
         }
         r
     });

@@ -194,3 +194,31 @@ impl Problem {
         })
     }
 }
+
+/// The length (m) of the longest run `spec` asks along one wall (its widths, the gaps between
+/// them and the room kept at its ends), 0 when none: a room chosen by floor area alone can have
+/// no wall that takes eight washers, and the run would turn the corner.
+pub fn longest_run(spec: &SceneSpec) -> f64 {
+    if spec.scene_type != SceneType::Indoor {
+        return 0.0;
+    }
+    let inst = spec.instances();
+    let anchor = |id: &str| inst.iter().find(|i| i.id == id).map(|i| i.anchor);
+    let next = |a: &str, b: &str| {
+        spec.relations
+            .iter()
+            .any(|r| r.relation == RelationKind::Next && r.subject == a && r.object == b)
+    };
+    spec.objects
+        .iter()
+        .filter(|(_, o)| o.number >= 2 && o.on_wall.is_none())
+        .filter(|(c, o)| {
+            (1..=o.number).all(|k| anchor(&format!("{c}{k}")) == Some(Anchor::Side))
+                && (2..=o.number).all(|k| next(&format!("{c}{k}"), &format!("{c}{}", k - 1)))
+        })
+        .map(|(_, o)| {
+            let n = o.number as f64;
+            n * o.size[0] + (n - 1.0) * RUN_GAP + 2.0 * END
+        })
+        .fold(0.0, f64::max)
+}
