@@ -86,3 +86,61 @@ fn a_distance_places_nothing_and_a_count_beside_by_still_counts() {
     let s = reading::plan("a dining room with a table for six by the window");
     assert_eq!(number(&s, "dining chair"), 6, "{:?}", keys(&s));
 }
+
+#[test]
+fn a_size_said_before_punctuation_is_the_rooms_not_the_next_things() {
+    // The size ends a clause; the thing after the colon or full stop is not that size.
+    for (prompt, w, d, thing) in [
+        (
+            "little sound booth roughly 2m x 2.5m: a microphone on a stand and a stool",
+            2.0,
+            2.5,
+            "microphone",
+        ),
+        (
+            "cloakroom, very small, maybe 1.4 x 1.8m. a toilet and a corner basin",
+            1.4,
+            1.8,
+            "toilet",
+        ),
+        (
+            "a box room of 2.2 x 2.6 m; single bed under the window",
+            2.2,
+            2.6,
+            "bed",
+        ),
+    ] {
+        let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
+        let size = p.spec.room.as_ref().expect("a room").size;
+        assert!(
+            (size[0] - w).abs() < 0.05 && (size[1] - d).abs() < 0.05,
+            "{prompt}: room {size:?}"
+        );
+        let o = p
+            .spec
+            .objects
+            .iter()
+            .find(|o| o.0.contains(thing))
+            .map(|o| o.1)
+            .unwrap_or_else(|| panic!("{prompt}: no {thing}"));
+        assert!(
+            !((o.size[0] - w).abs() < 0.05 && (o.size[1] - d).abs() < 0.05),
+            "{prompt}: {thing} took the room's size {:?}",
+            o.size
+        );
+    }
+    // A size right before its noun is still that thing's.
+    let p = plan_prompt("a living room with a 3 x 2 m rug and a sofa").expect("plans");
+    let rug = p
+        .spec
+        .objects
+        .iter()
+        .find(|o| o.0 == "rug")
+        .map(|o| o.1)
+        .expect("a rug");
+    assert!(
+        (rug.size[0] - 3.0).abs() < 0.05 && (rug.size[1] - 2.0).abs() < 0.05,
+        "{:?}",
+        rug.size
+    );
+}

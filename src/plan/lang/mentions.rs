@@ -56,7 +56,9 @@ pub(super) fn read_mentions(
         }
         // A stated size right before the noun (or its adjectives): "a 2.4 m table", "a 3 x 1 m rug".
         let mut size = [0.0; 3];
-        let np_start = if b > 0 { before[b - 1].0 } else { start };
+        // where the noun phrase begins: its first adjective, else the noun ("2m x 2m: mic"
+        // has punctuation between, so the size is not the mic's)
+        let np_start = before.get(b).map_or(start, |w| w.0);
         for d in dims {
             if d.end <= start && d.end + 24 >= np_start && d.start >= prev_end && d.area.is_none() {
                 let between = &t[d.end..np_start.max(d.end)];
