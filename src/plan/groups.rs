@@ -258,6 +258,15 @@ pub fn apply_named(
     for (rule, present) in passes {
         // the object instances, the first category's first, with what each takes
         let seats = rule.per_object.is_none();
+        // (a shelter the text puts over a table, "a parasol over the table", shelters that
+        // table's seats, not the loungers a rule would bring under it)
+        let sheltering = |id: &str| {
+            rule.relation == RelationKind::Under
+                && spec
+                    .relations
+                    .iter()
+                    .any(|r| r.subject == id && r.relation == RelationKind::Over)
+        };
         let objects: Vec<(String, u32)> = present
             .iter()
             .take(if seats { present.len() } else { 1 })
@@ -265,6 +274,7 @@ pub fn apply_named(
                 let o = &spec.objects[c];
                 (1..=count(c)).map(move |m| (format!("{c}{m}"), capacity(rule, o.size_of(m))))
             })
+            .filter(|(id, _)| !sheltering(id))
             .collect();
         if objects.is_empty() {
             continue;
@@ -466,12 +476,37 @@ fn seats_take_the_wall(spec: &mut SceneSpec) {
 fn shelter_group(spec: &mut SceneSpec) {
     use crate::plan::gcp::classes::{Class, Placements};
     let hung = |id: &str| Placements::builtin().class(base_of(id)) == Class::Ceiling;
-    let mut extra: Vec<Relation> = vec![];
-    for roof in spec
+    // a tall thing set over a table that it is wider than both ways (a parasol through the
+    // table's middle) is a roof over that table too, not a thing on it
+    let size = |id: &str| spec.objects.get(base_of(id)).map(|o| o.size);
+    let canopy = |r: &Relation| {
+        r.relation == RelationKind::Over
+            && !hung(&r.subject)
+            && match (size(&r.subject), size(&r.object)) {
+                (Some(a), Some(b)) => {
+                    a[0] >= b[0].max(b[1]) && a[1] >= b[0].max(b[1]) && a[2] >= 1.5
+                }
+                _ => false,
+            }
+    };
+    let roofs: Vec<Relation> = spec
         .relations
         .iter()
         .filter(|r| r.relation == RelationKind::Under && !hung(&r.object))
-    {
+        .cloned()
+        .chain(
+            spec.relations
+                .iter()
+                .filter(|r| canopy(r))
+                .map(|r| Relation {
+                    subject: r.object.clone(),
+                    relation: RelationKind::Under,
+                    object: r.subject.clone(),
+                }),
+        )
+        .collect();
+    let mut extra: Vec<Relation> = vec![];
+    for roof in &roofs {
         for seat in spec.relations.iter().filter(|r| {
             r.object == roof.subject
                 && matches!(

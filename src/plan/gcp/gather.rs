@@ -148,7 +148,8 @@ impl Problem {
                 let Some(t) = self.seat_table(k) else {
                     continue;
                 };
-                if t == i {
+                // (a shelter over the seat's table, a parasol, keeps no one from sitting down)
+                if t == i || self.is_stacked(i, t) || self.is_stacked(i, k) {
                     continue;
                 }
                 if self.has_spot(bk, t, None, boxes) && !self.has_spot(bk, t, Some(b), boxes) {
@@ -389,7 +390,11 @@ impl Problem {
                 && extra.is_none_or(|e| e.z0 >= HEAD_HEIGHT || overlap_depth(s, e) <= 0.02)
                 && boxes.iter().enumerate().all(|(k, bk)| {
                     let Some((bk, _)) = bk else { return true };
-                    k == t || bk.z0 >= HEAD_HEIGHT || bk.z1 <= 0.05 || overlap_depth(s, bk) <= 0.02
+                    k == t
+                        || self.is_stacked(k, t)
+                        || bk.z0 >= HEAD_HEIGHT
+                        || bk.z1 <= 0.05
+                        || overlap_depth(s, bk) <= 0.02
                 })
         })
     }
