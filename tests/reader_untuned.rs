@@ -241,3 +241,24 @@ fn a_place_named_in_words_of_no_object_is_read_as_english() {
         );
     }
 }
+
+#[test]
+fn raised_veg_beds_are_vegetable_beds_and_the_places_planting_boxes() {
+    // a bed of vegetables is no flower bed, and the beds said are the place's planting: no
+    // default planters beside them
+    for (prompt, n) in [
+        (
+            "a courtyard garden with three raised veg beds, a bench and a bird bath",
+            3,
+        ),
+        ("our roof terrace: two veggie beds, a table and chairs", 2),
+    ] {
+        let s = plan(prompt);
+        assert_eq!(number(&s, "vegetable bed"), n, "{prompt}: {:?}", keys(&s));
+        assert_eq!(number(&s, "planter"), 0, "{prompt}: {:?}", keys(&s));
+    }
+    // planters said with them stay
+    let s = plan("a back yard with two veg beds and four planters");
+    assert_eq!(number(&s, "vegetable bed"), 2, "{:?}", keys(&s));
+    assert_eq!(number(&s, "planter"), 4, "{:?}", keys(&s));
+}

@@ -431,8 +431,16 @@ fn said_of_pronoun(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<
 /// is said with and a comma closes it: "eight round tables, each with four chairs, under a
 /// pergola" puts the tables under it, "a desk with a lamp, by the window" the desk.
 fn with_head(ms: &[Mention], t: &str, thing: usize, pos: usize) -> Option<usize> {
-    if t.get(ms.get(thing)?.end..pos)?.trim() != "," {
+    // "tables with chairs, by the window"; "2 tables with 2 chairs each in the window": the
+    // share word closes what each has, so the place is the tables'
+    let between = t.get(ms.get(thing)?.end..pos)?.trim();
+    let shared =
+        matches!(between, "each" | "apiece" | "each," | "apiece,") && ms[thing].each_of.is_some();
+    if between != "," && !shared {
         return None;
+    }
+    if shared {
+        return ms[thing].each_of.filter(|&h| h < thing && !ms[h].negated);
     }
     let mut k = thing;
     while k > 0 && joined(t, &ms[k - 1], &ms[k]) {
