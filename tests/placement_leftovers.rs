@@ -150,3 +150,27 @@ fn a_named_game_table_is_the_game_rooms_table() {
         }
     }
 }
+
+#[test]
+fn a_lab_of_benches_in_rows_is_laid_out_with_a_microscope_for_each_of_its_benches() {
+    // the lab's microscopes spread over its benches, one each, rather than one on the first
+    // and the rest left to find a bench among the rows (which refused the plan)
+    for prompt in [
+        "biology lab with 6 lab benches in 2 rows of 3 and a fume cupboard against the wall",
+        "a school laboratory: eight lab benches in two rows of four, a whiteboard on the front wall",
+    ] {
+        let plan = dreamscene::plan::offline::plan_prompt(prompt)
+            .unwrap_or_else(|e| panic!("{prompt}: {e}"));
+        let spec = &plan.spec;
+        let n = spec.objects.get("microscope").map_or(0, |o| o.number);
+        let on = spec
+            .relations
+            .iter()
+            .filter(|r| r.subject.starts_with("microscope") && r.object.starts_with("science bench"))
+            .count();
+        assert_eq!(on as u32, n, "{prompt}: {:?}", spec.relations);
+        let l = dreamscene::plan::gcp::layout(spec, dreamscene::plan::gcp::LayoutOptions::seeded(0))
+            .unwrap_or_else(|e| panic!("{prompt}: {e}"));
+        assert!(dreamscene::plan::check::validity_problems(&l, spec).is_empty(), "{prompt}");
+    }
+}
