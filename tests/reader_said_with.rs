@@ -66,29 +66,26 @@ fn a_placement_after_each_with_is_said_of_the_things_before() {
 fn a_placement_after_with_so_many_each_is_said_of_the_things_before() {
     // "each" closes what every one has; the place after it is the tables', and the chairs
     // stand at their tables there
-    for (prompt, table, seat, per) in [
+    for (prompt, table, seat, per, want) in [
         (
             "a deli with a serving counter and 3 small tables with 2 chairs each by the window",
             "table",
             "chair",
             2,
+            Anchor::Window,
         ),
         (
             "juice bar: a bar counter, two high tables with three stools apiece along the wall",
             "table",
             "stool",
             3,
+            Anchor::Side,
         ),
     ] {
         let p = plan_prompt(prompt).unwrap_or_else(|e| panic!("{prompt}: {e}"));
         let s = &p.spec;
         let t = category_where(s, |c| c.ends_with(table) && !c.contains("side"), table);
         let c = category_where(s, |c| c.ends_with(seat), seat);
-        let want = if prompt.contains("window") {
-            Anchor::Window
-        } else {
-            Anchor::Side
-        };
         assert_eq!(
             s.anchors.get(&format!("{t}1")),
             Some(&want),
