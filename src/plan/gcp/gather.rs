@@ -219,13 +219,28 @@ impl Problem {
         extra: Option<&Box2>,
         boxes: &[Option<(Box2, [f64; 4])>],
     ) -> usize {
-        let [w, d, _] = self.room;
         let s = left
             .iter()
             .map(|&f| self.inst[f].size)
             .fold([0.0f64; 3], |a, s| {
                 [a[0].max(s[0]), a[1].max(s[1]), a[2].max(s[2])]
             });
+        self.free_beside(bk, s, left, extra, boxes, false)
+    }
+
+    /// How many of the two spots of size `s` beside box `bk` (backs in line with its back)
+    /// are inside the room and clear of what is placed but what is linked to `left` (and of
+    /// `extra`; of the doors' and windows' zones too when `zones`).
+    fn free_beside(
+        &self,
+        bk: &Box2,
+        s: [f64; 3],
+        left: &[usize],
+        extra: Option<&Box2>,
+        boxes: &[Option<(Box2, [f64; 4])>],
+        zones: bool,
+    ) -> usize {
+        let [w, d, _] = self.room;
         let yaw = (-bk.ey[0]).atan2(bk.ey[1]).to_degrees();
         let [hw, hd] = bk.half;
         let clear = |spot: &Box2, o: &Box2| penetration(spot, o) <= 0.02;
@@ -244,12 +259,66 @@ impl Problem {
                     && y0 >= -0.5 * d
                     && y1 <= 0.5 * d
                     && extra.is_none_or(|e| clear(&spot, e))
+                    && (!zones || self.zones.iter().all(|z| penetration(&spot, z) <= 0.0))
                     && boxes.iter().enumerate().all(|(j, bj)| {
                         let Some((bj, _)) = bj else { return true };
                         left.iter().any(|&f| self.linked(f, j)) || clear(&spot, bj)
                     })
             })
             .count()
+    }
+
+    /// Whether pose box `b` of `i`, set beside a placed thing it flanks, leaves its other
+    /// side free for a thing it flanks that is still to come (one nightstand between two beds:
+    /// the second bed's spot inside the room and clear of what is placed); true when `i`
+    /// flanks no such pair.
+    fn shared_flank_free(
+        &self,
+        i: usize,
+        b: &Box2,
+        placed: &[Option<Pose>],
+        boxes: &[Option<(Box2, [f64; 4])>],
+    ) -> bool {
+        let flanked = |on: bool| {
+            self.rels[i]
+                .iter()
+                .filter(move |&&(rel, k, subject)| {
+                    subject && rel == RelationKind::Flank && placed[k].is_some() == on
+                })
+                .map(|r| r.1)
+        };
+        let (Some(p), Some(k)) = (flanked(true).next(), flanked(false).next()) else {
+            return true;
+        };
+        let Some((bp, _)) = boxes[p] else {
+            return true;
+        };
+        let rel = [bp.c[0] - b.c[0], bp.c[1] - b.c[1]];
+        let side = if rel[0] * b.ex[0] + rel[1] * b.ex[1] >= 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        let s = self.inst[k].size;
+        let [hw, hd] = b.half;
+        let (lx, ly) = (side * (hw + FLANK_SIDE_GAP + 0.5 * s[0]), -hd + 0.5 * s[1]);
+        let c = [
+            b.c[0] + lx * b.ex[0] + ly * b.ey[0],
+            b.c[1] + lx * b.ex[1] + ly * b.ey[1],
+        ];
+        let yaw = (-b.ey[0]).atan2(b.ey[1]).to_degrees();
+        let spot = Box2::new(c, yaw, [s[0], s[1]], 0.0, s[2]);
+        let [x0, y0, x1, y1] = spot.aabb();
+        let [w, d, _] = self.room;
+        x0 >= -0.5 * w
+            && x1 <= 0.5 * w
+            && y0 >= -0.5 * d
+            && y1 <= 0.5 * d
+            && self.zones.iter().all(|z| penetration(&spot, z) <= 0.0)
+            && boxes.iter().enumerate().all(|(j, bj)| {
+                let Some((bj, _)) = bj else { return true };
+                j == i || self.linked(k, j) && j != p || penetration(&spot, bj) <= 0.02
+            })
     }
 
     /// The cost of pose box `b` for `i` keeping flank spots: a thing with flankers to come
@@ -266,9 +335,29 @@ impl Problem {
             return 0.0;
         }
         let mut cost = 0.0;
+        if !self.shared_flank_free(i, b, placed, boxes) {
+            cost += FLANK_WEIGHT;
+        }
         let own = self.flankers_left(i, placed);
         if !own.is_empty() && self.free_flanks(b, &own, None, boxes) < own.len().min(2) {
             cost += ACCESS_WEIGHT;
+        }
+        // a flanker shared with a thing still to come (one nightstand between two beds) needs
+        // a side with room for both, the other thing beyond it
+        for &f in &own {
+            let (sf, gap) = (self.inst[f].size, FLANK_SIDE_GAP);
+            let beyond = self.rels[f].iter().find(|&&(rel, k, subject)| {
+                subject && rel == RelationKind::Flank && k != i && placed[k].is_none()
+            });
+            if let Some(&(_, k, _)) = beyond {
+                let sk = self.inst[k].size;
+                // (with what stands on the flanker: a lamp on the nightstand before a window)
+                let high = (sf[2] + self.load_height(f)).max(sk[2] + self.load_height(k));
+                let both = [sf[0] + gap + sk[0], sf[1].max(sk[1]), high];
+                if self.free_beside(b, both, &[f, k], None, boxes, true) == 0 {
+                    cost += FLANK_WEIGHT;
+                }
+            }
         }
         let ab = b.aabb();
         for (k, bk) in boxes.iter().enumerate() {

@@ -147,9 +147,48 @@ impl Problem {
                 {
                     group.extend(poses);
                 }
+            } else if rel == RelationKind::Flank {
+                group.extend(self.flanked_poses(i, (j, &pj), placed));
             }
         }
         (group, self.all_candidates(i, placed))
+    }
+
+    /// Poses of `i` with its placed FLANK subject `j` at its left or right, backs in line,
+    /// turned as `j`, when `j` already flanks another placed thing: the second of two beds with
+    /// one nightstand between them stands on the nightstand's free side.
+    fn flanked_poses(
+        &self,
+        i: usize,
+        (j, pj): (usize, &Pose),
+        placed: &[Option<Pose>],
+    ) -> Vec<Pose> {
+        let shared = self.rels[j].iter().any(|&(rel, k, subject)| {
+            subject && rel == RelationKind::Flank && k != i && placed[k].is_some()
+        });
+        if !shared {
+            return vec![];
+        }
+        let (s, sj) = (self.inst[i].size, self.inst[j].size);
+        let b = Box2::new([0.0, 0.0], pj.yaw, [s[0], s[1]], 0.0, 0.0);
+        let mut out = vec![];
+        for side in [-1.0, 1.0] {
+            for g in [0.02, 0.08] {
+                let (lx, ly) = (
+                    side * (0.5 * s[0] + g + 0.5 * sj[0]),
+                    -0.5 * s[1] + 0.5 * sj[1],
+                );
+                out.push(Pose {
+                    c: [
+                        pj.c[0] - lx * b.ex[0] - ly * b.ey[0],
+                        pj.c[1] - lx * b.ex[1] - ly * b.ey[1],
+                    ],
+                    yaw: pj.yaw,
+                    z: 0.0,
+                });
+            }
+        }
+        out
     }
 
     /// The room instance `i` keeps between its back and the wall for the seats at its back
