@@ -10,6 +10,9 @@ Two tables, both small:
 - `irregular`: irregular plurals (WordNet's noun.exc) that rules get wrong: "mice" -> "mouse".
 - `noun`: words that are nouns and never adjectives, with a tagged sense (in use): "tape",
   "hamster", "information"; before an unknown head noun they name its kind with it.
+- `person`: nouns in use whose first sense is a person ("teacher", "mechanic", "groomer"):
+  an object word said before one names whom the person works with ("a piano teacher's
+  studio"), not an object.
 
 Run from the repository root: python3 scripts/wordnet_kinds.py [WORDNET_DIR]
 """
@@ -146,6 +149,22 @@ def physical(off, syn):
 
 
 
+def is_person(off, syn, person):
+    """Whether the synset is a kind of person (person.n.01 among its hypernyms)."""
+    seen, level = set(), [off]
+    while level:
+        nxt = []
+        for o in level:
+            if o in seen:
+                continue
+            if o == person:
+                return True
+            seen.add(o)
+            nxt += syn[o][1]
+        level = nxt
+    return False
+
+
 def main():
     names = kb_names()
     syn = read_data()
@@ -166,6 +185,9 @@ def main():
     adjectives = set(index_lemmas("index.adj"))
     nouns = sorted(w for w, tagged in index_lemmas("index.noun").items()
                    if tagged > 0 and re.fullmatch(r"[a-z]+", w) and w not in adjectives)
+    people = sorted(w for w, tagged in index_lemmas("index.noun").items()
+                    if tagged > 0 and re.fullmatch(r"[a-z]+", w) and w not in names
+                    and w in first and is_person(first[w], syn, first["person"]))
     irregular = {}
     for line in open(os.path.join(WN, "noun.exc")):
         f = line.split()
@@ -177,7 +199,7 @@ def main():
         # whole from the package's copyright file
         for line in licence():
             o.write(f"# {line}".rstrip() + "\n")
-        o.write("# kind NOUN | CATEGORY or size CLASS; keep NOUN (singular ending in s); irregular PLURAL | SINGULAR; noun WORD\n")
+        o.write("# kind NOUN | CATEGORY or size CLASS; keep NOUN (singular ending in s); irregular PLURAL | SINGULAR; noun WORD; person WORD\n")
         for w in sorted(kinds):
             o.write(f"kind {w} | {kinds[w]}\n")
         for w in keep:
@@ -186,7 +208,9 @@ def main():
             o.write(f"irregular {w} | {irregular[w]}\n")
         for w in nouns:
             o.write(f"noun {w}\n")
-    print(f"{len(kinds)} kinds, {len(keep)} keep, {len(irregular)} irregular, {len(nouns)} nouns -> {OUT}")
+        for w in people:
+            o.write(f"person {w}\n")
+    print(f"{len(kinds)} kinds, {len(keep)} keep, {len(irregular)} irregular, {len(nouns)} nouns, {len(people)} people -> {OUT}")
 
 
 main()

@@ -92,7 +92,7 @@ fn things_said_to_hang_on_a_wall_hang_there() {
         ),
         (
             "a tiny toilet with a basin and a small framed print on the wall",
-            "print",
+            "picture",
         ),
         (
             "a cocktail bar with a long counter, stools and a neon sign on the wall",

@@ -152,7 +152,8 @@ pub fn read(kb: &KnowledgeBase, text: &str) -> Reading {
     let dims: Vec<Dims> = find_dims(&t);
     scene::read_scene(kb, &t, &mut r, &mut masked);
     setting::read_settings(kb, &t, &mut r, &mut masked);
-    let raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
+    let mut raw = objects::object_spans(kb, &t, r.scene, &masked, &dims);
+    raw.retain(|s| !objects::names_a_person(kb, &t, s));
     mentions::read_mentions(kb, &t, &mut r, &raw, &mut masked, &dims);
     described::read_described(&t, &mut r);
     mentions::place_names(&mut r);

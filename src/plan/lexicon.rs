@@ -19,6 +19,7 @@ struct Lexicon {
     kinds: BTreeMap<&'static str, &'static str>,
     keep: BTreeSet<&'static str>,
     nouns: BTreeSet<&'static str>,
+    people: BTreeSet<&'static str>,
     irregular: BTreeMap<&'static str, &'static str>,
 }
 
@@ -29,6 +30,7 @@ fn lexicon() -> &'static Lexicon {
             kinds: BTreeMap::new(),
             keep: BTreeSet::new(),
             nouns: BTreeSet::new(),
+            people: BTreeSet::new(),
             irregular: BTreeMap::new(),
         };
         for line in include_str!("kb/wordnet.txt").lines() {
@@ -48,6 +50,9 @@ fn lexicon() -> &'static Lexicon {
                 }
                 ("noun", None) => {
                     l.nouns.insert(rest.trim());
+                }
+                ("person", None) => {
+                    l.people.insert(rest.trim());
                 }
                 _ => {}
             }
@@ -70,6 +75,12 @@ pub fn kind(noun: &str) -> Option<Kind<'static>> {
 pub fn is_noun(w: &str) -> bool {
     let l = lexicon();
     l.nouns.contains(w) || l.kinds.contains_key(w)
+}
+
+/// Whether `w` (singular, lower case) is a noun in use whose first sense is a person
+/// ("teacher", "mechanic"): an object word before it names whom the person works with.
+pub fn is_person(w: &str) -> bool {
+    lexicon().people.contains(w)
 }
 
 /// Whether `w` is an English word (WordNet 3.0, any part of speech) one slip away from a word

@@ -44,6 +44,25 @@ pub(super) fn inside(p: usize, spans: &[(usize, usize)]) -> bool {
 
 /// The spans of the objects `t` names, in order and never overlapping; `scene` is the scene's
 /// index and span, `masked` what is already explained.
+/// Whether the object word of `span` is said of the person named right after it ("a piano
+/// teacher's studio", "the bike mechanic", "guitar players"): a noun whose first sense is a
+/// person (WordNet) and no object word itself.
+pub(super) fn names_a_person(kb: &KnowledgeBase, t: &str, span: &Span) -> bool {
+    let rest = &t[span.1..];
+    if !rest.starts_with(' ') {
+        return false;
+    }
+    let Some(next) = rest.split_whitespace().next() else {
+        return false;
+    };
+    let next = next
+        .strip_suffix("'s")
+        .or_else(|| next.strip_suffix('\''))
+        .unwrap_or(next);
+    let one = singular(next);
+    crate::plan::lexicon::is_person(&one) && kb.object(&one).is_none() && kb.object(next).is_none()
+}
+
 pub(super) fn object_spans(
     kb: &KnowledgeBase,
     t: &str,
