@@ -1,7 +1,9 @@
 //! Sizes said in words: "five metres by four", "twelve feet by ten", "four by three meters",
 //! "about ten square metres" are the room's size, never things called "meter" or "foot"; a
 //! length said of a distance ("one metre from the wall") places nothing; a number beside "by"
-//! that is no size ("a table for six by the window") still counts. Prompts of no corpus.
+//! that is no size ("a table for six by the window") still counts; a whole number with its unit
+//! before a noun ("a 55 inch telly", "a 2 metre bench") is the thing's size, not its count.
+//! Prompts of no corpus.
 mod reading;
 use dreamscene::plan::offline::plan_prompt;
 use reading::{keys, number};
@@ -143,4 +145,24 @@ fn a_size_said_before_punctuation_is_the_rooms_not_the_next_things() {
         "{:?}",
         rug.size
     );
+}
+
+#[test]
+fn a_whole_number_with_its_unit_before_a_noun_is_its_size_not_its_count() {
+    for (prompt, cat, n) in [
+        ("a den with a 55 inch telly on the wall and a sofa", "tv", 1),
+        ("a hall with a 2 metre bench and a coat rack", "bench", 1),
+        (
+            "a workshop with three 2 m workbenches and stools",
+            "workbench",
+            3,
+        ),
+        ("a games room with a 7 ft pool table", "pool table", 1),
+    ] {
+        let s = plan_prompt(prompt)
+            .unwrap_or_else(|e| panic!("{prompt}: {e}"))
+            .spec;
+        let got = s.objects.get(cat).map_or(0, |o| o.number);
+        assert_eq!(got, n, "{prompt}: {:?}", keys(&s));
+    }
 }

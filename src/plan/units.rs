@@ -18,6 +18,12 @@ pub struct Dims {
 
 const UNIT: &str = r#"(?:mm|millimet(?:er|re)s?|cm|centimet(?:er|re)s?|m|met(?:er|re)s?|ft|feet|foot|in|inch|inches|'|"|′|″)"#;
 
+/// Whether `w` is a unit word ("m", "metres", "inch", "ft").
+pub fn is_unit_word(w: &str) -> bool {
+    static RE: std::sync::OnceLock<Regex> = std::sync::OnceLock::new();
+    RE.get_or_init(|| re(&format!("^{UNIT}$"))).is_match(w)
+}
+
 /// Metres per unit word.
 fn unit_scale(u: &str) -> Option<f64> {
     let u = u.trim();

@@ -47,7 +47,11 @@ pub(super) fn read_mentions(
             if inside(pos, masked) || dims.iter().any(|d| pos >= d.start && pos < d.end) {
                 break;
             }
-            if is_adjective(w) {
+            // "a 2 metre sofa", "a 65 inch tv": a unit after a number is a size, no adjective
+            let unit = crate::plan::units::is_unit_word(w)
+                && b >= 2
+                && before[b - 2].1.parse::<f64>().is_ok();
+            if is_adjective(w) && !unit {
                 adjectives.insert(0, w.to_string());
                 b -= 1;
             } else {
@@ -107,7 +111,13 @@ pub(super) fn read_mentions(
         let mut count = None;
         let mut definite = false;
         let mut negated = false;
-        let stop: Vec<&str> = before[..b].iter().map(|x| x.1).collect();
+        let mut stop: Vec<&str> = before[..b].iter().map(|x| x.1).collect();
+        // "two 2 m sofas": the size between the count and the noun is no count
+        if let [.., n, u] = stop[..] {
+            if crate::plan::units::is_unit_word(u) && n.parse::<f64>().is_ok() {
+                stop.truncate(stop.len() - 2);
+            }
+        }
         let last = stop.last().copied();
         // "a table that seats six", "a tent which sleeps four": between a relative pronoun and
         // a number a noun's form is the verb of the thing before it, not an object.
@@ -163,6 +173,17 @@ pub(super) fn read_mentions(
                 if prev2.is_some_and(negates) || removes(prev3, prev2) {
                     negated = true;
                 }
+            }
+            // "so we can watch from bed", "to read in bed": a bare singular noun after a
+            // preposition is the thing already there (or the place's own), said as an idiom
+            // (not a unit after a number: "a 65 in tv")
+            Some("from" | "in" | "into" | "to")
+                if b == before.len()
+                    && !plural
+                    && !prev2
+                        .is_some_and(|p| number_of(p).is_some() || p.parse::<f64>().is_ok()) =>
+            {
+                definite = true;
             }
             Some("of") => {
                 // "a pair of", "a couple of", "a dozen", "two sets of", "lots of"
