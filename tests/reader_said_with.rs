@@ -3,7 +3,8 @@
 //! eight for the guests" seats eight; "a vase on each" and "a sink at each" are on or beside
 //! each of the things before; a thing named in a question and again in its answer is one thing;
 //! a window or door said with a corner or wall says which; a thing of the walls said in the
-//! middle of the room stands there. Plan and layout only; prompts of no corpus.
+//! middle of the room stands there; bare "stools" said with a breakfast bar or a counter are its
+//! bar stools, and no default stools come besides. Plan and layout only; prompts of no corpus.
 mod common;
 use common::placed::{all, lay, SEEDS};
 use dreamscene::plan::offline::plan_prompt;
@@ -152,6 +153,31 @@ fn seats_said_with_a_table_are_its_seats_in_any_place() {
         })
         .count();
     assert_eq!(seated, 6, "{:?}", s.relations);
+}
+
+#[test]
+fn bare_stools_said_with_a_bar_are_its_bar_stools() {
+    for (prompt, n) in [
+        ("a galley kitchen with a breakfast bar with two stools", 2),
+        (
+            "open plan kitchen: hob, oven, fridge and a breakfast bar with 4 stools",
+            4,
+        ),
+        (
+            "a kitchen diner, no island, a peninsula breakfast bar with three stools",
+            3,
+        ),
+    ] {
+        let s = plan_prompt(prompt).expect("plan").spec;
+        let stools = total(&s, |c| c.ends_with("stool"));
+        assert_eq!(stools, n, "{prompt}: {:?}", s.objects.keys());
+        assert_eq!(
+            count(&s, "bar stool"),
+            n,
+            "{prompt}: {:?}",
+            s.objects.keys()
+        );
+    }
 }
 
 #[test]

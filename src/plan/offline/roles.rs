@@ -165,10 +165,11 @@ pub(super) fn mention_kinds(d: &mut Draft) {
         // ("a big table in the centre with 8 chairs": what the table is said with, after where)
         let with = (between.trim_start().starts_with("with ") || between.contains(" with "))
             && !between.contains([',', ';', '.']);
-        if cats[i] == m.category || !(with || round_it) {
+        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
+        // (a bare generic noun is read again even where the place has no kind of it)
+        if (cats[i] == m.category && m.category != head) || !(with || round_it) {
             continue;
         }
-        let head = lang::singular(m.text.rsplit(' ').next().unwrap_or(""));
         let table = &cats[i - 1];
         let sits = |c: &str| {
             let one: BTreeMap<String, u32> = [(c.to_string(), 0)].into();
@@ -200,9 +201,13 @@ pub(super) fn mention_kinds(d: &mut Draft) {
             .filter(|c| set_at_such(c))
             .cloned()
             .collect();
+        // (a bare generic noun, "stools" with a breakfast bar, is the table's usual seat of
+        // that noun, its bar stools, before the plain kind)
+        let generic = (m.category == head).then(|| usual.clone()).flatten();
         let seat = named_like
             .into_iter()
             .chain(own)
+            .chain(generic)
             .chain(Some(m.category.clone()))
             .chain(scene_seats.keys().cloned())
             .chain(usual)
